@@ -1,0 +1,289 @@
+//! The batted ball's flight: Eq. (25)–(29), integrated to the landing.
+
+use nalgebra::Vector2;
+use serde::Serialize;
+
+use super::aero::{DragModel, lift_coefficient_times_speed};
+use super::scene::Scene;
+use crate::solve::ode::{self, Control, DenseStep, Outcome, Settings, State, Stats, Tolerance};
+
+/// No flight is followed past this (s): far beyond any hit, but a bound, so
+/// that no input (a ball held up by lift) can run forever.
+pub const MAX_FLIGHT_TIME: f64 = 600.0;
+
+/// The forces on the ball in flight, ready to evaluate (constant spin, as the
+/// paper assumes: spin decays by a few per cent over a flight).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Flight {
+    pub gravity: f64,
+    pub wind: f64,
+    pub drag: DragModel,
+    /// ρA/(2M_b): turns C·|V_r|·V_r into an acceleration (Eq. 26, 28).
+    pub force_per_mass: f64,
+    /// 2r_b/ν: turns |V_r| into Re (Eq. 27).
+    pub reynolds_per_speed: f64,
+    /// r_b·|ω|, the surface speed from spin, and the spin's sign.
+    pub surface_speed: f64,
+    pub spin_sign: f64,
+    pub spin: f64,
+}
+
+impl Flight {
+    pub fn new(scene: &Scene, spin: f64) -> Flight {
+        let ball = scene.ball;
+        let env = scene.environment;
+        let area = std::f64::consts::PI * ball.radius * ball.radius;
+        Flight {
+            gravity: env.gravity,
+            wind: env.wind,
+            drag: scene.drag,
+            force_per_mass: env.air_density * area / (2.0 * ball.mass),
+            reynolds_per_speed: 2.0 * ball.radius / env.kinematic_viscosity,
+            surface_speed: ball.radius * spin.abs(),
+            spin_sign: if spin > 0.0 {
+                1.0
+            } else if spin < 0.0 {
+                -1.0
+            } else {
+                0.0
+            },
+            spin,
+        }
+    }
+
+    /// V_r = V_w − V_b (Eq. 25), the wind being horizontal.
+    #[inline]
+    pub fn relative_wind(&self, velocity: Vector2<f64>) -> Vector2<f64> {
+        Vector2::new(self.wind - velocity.x, -velocity.y)
+    }
+
+    /// Re = 2|V_r|r_b/ν (Eq. 27).
+    #[inline]
+    pub fn reynolds(&self, velocity: Vector2<f64>) -> f64 {
+        self.relative_wind(velocity).norm() * self.reynolds_per_speed
+    }
+
+    /// The ball's acceleration: gravity, drag along V_r (Eq. 26) and lift
+    /// perpendicular to it (Eq. 28).
+    ///
+    /// Eq. (28) as printed, with the minus sign, points the lift of a backspun
+    /// ball moving +x downward in this frame; the lift here is the Magnus
+    /// force along ω × V_b, which is up for backspin (Fig. 4's positive C_L
+    /// for batted backspin).
+    #[inline]
+    pub fn acceleration(&self, velocity: Vector2<f64>) -> Vector2<f64> {
+        let rel = self.relative_wind(velocity);
+        let air_speed = rel.norm();
+        let drag_coefficient = self
+            .drag
+            .drag_coefficient(air_speed * self.reynolds_per_speed);
+        // ẑ × V_b-direction, scaled by |V_r|: (V_r,y, −V_r,x).
+        let lift_direction = Vector2::new(rel.y, -rel.x);
+        let lift = self.spin_sign * lift_coefficient_times_speed(air_speed, self.surface_speed);
+        let aero =
+            (rel * (drag_coefficient * air_speed) + lift_direction * lift) * self.force_per_mass;
+        Vector2::new(aero.x, aero.y - self.gravity)
+    }
+
+    /// d/dt of the state (x, y, v_x, v_y).
+    #[inline]
+    pub fn derivative(&self, state: &State<4>) -> State<4> {
+        let a = self.acceleration(Vector2::new(state[2], state[3]));
+        State::<4>::new(state[2], state[3], a.x, a.y)
+    }
+}
+
+/// Where and how the flight starts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Launch {
+    pub position: Vector2<f64>,
+    pub velocity: Vector2<f64>,
+}
+
+impl Launch {
+    fn state(&self) -> State<4> {
+        State::<4>::new(
+            self.position.x,
+            self.position.y,
+            self.velocity.x,
+            self.velocity.y,
+        )
+    }
+}
+
+/// How accurately to fly.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct FlightOptions {
+    pub tolerance: Tolerance,
+    /// End steps exactly on the drag curve's kinks, so that no step
+    /// integrates across a jump in dC_D/dRe.
+    pub stop_at_kinks: bool,
+}
+
+/// The outcome of one flight.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct FlightSummary {
+    /// Horizontal distance from the contact point to the landing (m); negative
+    /// for a ball that lands behind the plate.
+    pub range: f64,
+    pub flight_time: f64,
+    /// Highest point above the ground (m), and its distance (m).
+    pub apex: f64,
+    pub apex_distance: f64,
+    pub landing_speed: f64,
+    /// Angle of the velocity below the horizontal at landing (rad).
+    pub landing_angle: f64,
+    /// False when the ball was still in the air after [`MAX_FLIGHT_TIME`]
+    /// (or the step limit); the other fields then describe the last point.
+    pub landed: bool,
+    pub stats: Stats,
+}
+
+/// Flies the ball to the ground (y = 0), locating the landing inside the step
+/// with the continuous extension: never the last step's end.
+pub fn fly(flight: &Flight, launch: &Launch, options: &FlightOptions) -> FlightSummary {
+    fly_observed(flight, launch, options, |_| {})
+}
+
+/// As [`fly`], showing each accepted step (with its dense output) to `watch`,
+/// e.g. to sample the trajectory.
+pub fn fly_observed(
+    flight: &Flight,
+    launch: &Launch,
+    options: &FlightOptions,
+    mut watch: impl FnMut(&DenseStep<4>),
+) -> FlightSummary {
+    let settings = Settings::new(options.tolerance);
+    let start = launch.state();
+    let mut apex = (launch.position.y, launch.position.x);
+    let mut landing: Option<(f64, State<4>)> = None;
+    let mut last = (0.0, start);
+    let root_tolerance = 1e-13;
+    let kinks = if options.stop_at_kinks {
+        flight.drag.kinks()
+    } else {
+        &[]
+    };
+    let reynolds = |s: &State<4>| flight.reynolds(Vector2::new(s[2], s[3]));
+
+    let (outcome, stats) = ode::integrate(
+        |_t, s| flight.derivative(s),
+        0.0,
+        start,
+        MAX_FLIGHT_TIME,
+        &settings,
+        |step| {
+            // The earliest kink crossed inside this step, if any.
+            if !step.redone && !kinks.is_empty() {
+                let (re0, re1) = (reynolds(&step.y0), reynolds(&step.y1));
+                let h = step.t1 - step.t0;
+                let mut first: Option<f64> = None;
+                for &kink in kinks {
+                    if (re0 - kink) * (re1 - kink) < 0.0 {
+                        let t = ode::find_root(
+                            |t| reynolds(&step.at(t)) - kink,
+                            step.t0,
+                            step.t1,
+                            root_tolerance,
+                        );
+                        // A crossing at the very start is the kink we just
+                        // stopped on, seen from its other side.
+                        if t - step.t0 > 1e-6 * h && first.is_none_or(|f| t < f) {
+                            first = Some(t);
+                        }
+                    }
+                }
+                if let Some(t_kink) = first {
+                    let lands_first = step.y1[1] <= 0.0 && {
+                        let t_land =
+                            ode::find_root(|t| step.at(t)[1], step.t0, step.t1, root_tolerance);
+                        t_land <= t_kink
+                    };
+                    if !lands_first {
+                        return Control::RedoTo(t_kink);
+                    }
+                }
+            }
+            watch(step);
+            if step.y0[3] > 0.0 && step.y1[3] <= 0.0 {
+                let t = ode::find_root(|t| step.at(t)[3], step.t0, step.t1, root_tolerance);
+                let s = step.at(t);
+                if s[1] > apex.0 {
+                    apex = (s[1], s[0]);
+                }
+            }
+            last = (step.t1, step.y1);
+            if step.y1[1] <= 0.0 {
+                let t = ode::find_root(|t| step.at(t)[1], step.t0, step.t1, root_tolerance);
+                landing = Some((t, step.at(t)));
+                return Control::Stop;
+            }
+            Control::Continue
+        },
+    );
+    let landed = outcome == Outcome::Stopped;
+    let (time, state) = landing.unwrap_or(last);
+    FlightSummary {
+        range: state[0] - launch.position.x,
+        flight_time: time,
+        apex: apex.0,
+        apex_distance: apex.1 - launch.position.x,
+        landing_speed: state.fixed_rows::<2>(2).norm(),
+        landing_angle: (-state[3]).atan2(state[2]),
+        landed,
+        stats,
+    }
+}
+
+/// A point on a drawn trajectory.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct TrajectoryPoint {
+    pub time: f64,
+    pub x: f64,
+    pub y: f64,
+    /// C_D at this point (Fig. 14).
+    pub drag_coefficient: f64,
+}
+
+/// The flight sampled at `samples` equal time intervals from launch to
+/// landing, read off the dense output (two passes: the first finds the flight
+/// time, the second samples), so a drawing costs its resolution, not the
+/// integrator's steps.
+pub fn trajectory(
+    flight: &Flight,
+    launch: &Launch,
+    options: &FlightOptions,
+    samples: usize,
+) -> (FlightSummary, Vec<TrajectoryPoint>) {
+    let summary = fly(flight, launch, options);
+    let samples = samples.max(2);
+    let dt = summary.flight_time / (samples - 1) as f64;
+    let mut points = Vec::with_capacity(samples);
+    let mut push = |time: f64, s: State<4>| {
+        let velocity = Vector2::new(s[2], s[3]);
+        points.push(TrajectoryPoint {
+            time,
+            x: s[0],
+            y: s[1],
+            drag_coefficient: flight.drag.drag_coefficient(flight.reynolds(velocity)),
+        });
+    };
+    push(0.0, launch.state());
+    let mut next = 1;
+    // The same steps as the first pass, so the landing time lies in the last.
+    fly_observed(flight, launch, options, |step| {
+        while next < samples {
+            let t = if next == samples - 1 {
+                summary.flight_time
+            } else {
+                next as f64 * dt
+            };
+            if t > step.t1 {
+                break;
+            }
+            push(t, step.at(t));
+            next += 1;
+        }
+    });
+    (summary, points)
+}

@@ -1,0 +1,288 @@
+//! Planar rigid-body bat–ball impact with friction: Eq. (1)–(2), (5)–(23),
+//! after Stronge, solved as functions of the normal impulse p.
+//!
+//! Sign conventions (derived once, from first principles, and checked against
+//! Table II; see DESIGN.md):
+//! - flight frame x toward centre field, y up; spins are ẑ components
+//!   (counter-clockwise positive), so batted backspin and pitched topspin are
+//!   positive;
+//! - n3 = (cos θ, sin θ) points from the bat's axis to the ball's centre,
+//!   n1 = ẑ × n3 = (−sin θ, cos θ), n2 = +ẑ;
+//! - the impulse p = p1·n1 + p3·n3 acts *on the ball*, the bat gets −p.
+//!   Eq. (22) prints V̂_b(p_f) = V̂_b(0) − p/M_b: that minus belongs to the
+//!   opposite sign for p; with this one it is a plus, and the launch values
+//!   match Table II;
+//! - e* is taken from the approach speed |v3(0)| (Eq. 19 as printed would
+//!   take the negative v3(0) and give e* > 0.6 for every hit).
+
+use nalgebra::{Rotation2, Vector2};
+
+use super::pitch;
+use super::scene::Scene;
+
+/// How the tangential slip ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Regime {
+    /// Slip halts before separation (p_s < p_f) and the contact then sticks:
+    /// for this geometry the stick coefficient μ̄ = β2/β1 = 0 ≤ μ.
+    Stick,
+    /// The contact slips until separation (p_s ≥ p_f).
+    Slip,
+}
+
+/// The ball and bat states at some normal impulse p during contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactState {
+    /// Normal impulse p (N·s).
+    pub impulse: f64,
+    /// Tangential impulse p1 on the ball (N·s).
+    pub tangential_impulse: f64,
+    /// Relative velocity of the contact points, tangential v1 and normal v3 (m/s).
+    pub slip_velocity: f64,
+    pub normal_velocity: f64,
+    /// Ball centre velocity (flight frame, m/s) and spin (rad/s, ẑ).
+    pub ball_velocity: Vector2<f64>,
+    pub ball_spin: f64,
+    /// Bat axis velocity (flight frame, m/s) and spin (rad/s, ẑ).
+    pub bat_velocity: Vector2<f64>,
+    pub bat_spin: f64,
+}
+
+/// Everything about one collision: its inputs in the impact frame, its phases
+/// and the launch state of the ball.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Impact {
+    /// θ, angle of the common normal n3 above the horizontal (Eq. 1).
+    pub normal_angle: f64,
+    /// γ, the pitch's descent angle (Eq. 4).
+    pub descent_angle: f64,
+    /// Rotation from impact-frame components (n1, n3) to flight-frame (x, y)
+    /// is `frame * Vector2::new(c3, c1)` — n3 along the rotated x axis.
+    pub frame: Rotation2<f64>,
+    /// m, effective mass of the pair (Eq. 11).
+    pub pair_mass: f64,
+    /// β1 of Eq. (13) (β2 = 0 and β3 = 1 here because r_b1 = r_B1 = 0).
+    pub beta1: f64,
+    /// μ.
+    pub friction: f64,
+    /// v1(0), v3(0): initial slip and approach (Eq. 16); v3(0) < 0 approaches.
+    pub initial_slip: f64,
+    pub initial_approach: f64,
+    /// e*, energetic coefficient of restitution (Eq. 19).
+    pub restitution: f64,
+    /// p_c, impulse at the end of compression (Eq. 18).
+    pub compression_impulse: f64,
+    /// p_f = p_c(1 + e*), impulse at separation (Eq. 20).
+    pub separation_impulse: f64,
+    /// p_s, impulse at which slip halts (Eq. 17); infinite without friction.
+    pub slip_halt_impulse: f64,
+    pub regime: Regime,
+    /// Pre-impact states (flight frame).
+    pub ball_velocity_before: Vector2<f64>,
+    pub ball_spin_before: f64,
+    pub bat_velocity_before: Vector2<f64>,
+    pub bat_spin_before: f64,
+    /// Ball and bat at separation.
+    pub after: ContactState,
+    pub ball_mass: f64,
+    pub ball_radius: f64,
+    pub ball_inertia: f64,
+    pub bat_mass: f64,
+    pub bat_radius: f64,
+    pub bat_inertia: f64,
+}
+
+impl Impact {
+    /// Solves the collision for a scene (assumed validated).
+    pub fn new(scene: &Scene) -> Impact {
+        let ball = scene.ball;
+        let bat = scene.bat;
+        let contact_distance = ball.radius + bat.radius;
+        // Eq. (1); the clamp only guards rounding at a validated |E| < r_b + r_B.
+        let normal_angle = (bat.undercut / contact_distance).clamp(-1.0, 1.0).asin();
+        let descent_angle = pitch::descent_angle(scene.pitch.speed, scene.environment.gravity);
+        let frame = Rotation2::new(normal_angle);
+        let ball_velocity_before = pitch::velocity(scene.pitch.speed, scene.environment.gravity);
+        let bat_velocity_before =
+            Vector2::new(bat.swing_angle.cos(), bat.swing_angle.sin()) * bat.speed;
+        let ball_spin_before = scene.pitch.spin;
+        // Fig. 9's positive roll is −ẑ (see Scene::bat.spin).
+        let bat_spin_before = -bat.spin;
+
+        let ball_inertia = ball.mass * ball.gyration_radius.powi(2);
+        let bat_inertia = bat.effective_mass * bat.gyration_radius.powi(2);
+        let pair_mass = ball.mass * bat.effective_mass / (ball.mass + bat.effective_mass); // Eq. (11)
+        // Eq. (13) with r_b3 = −r_b, r_B3 = r_B, r_b1 = r_B1 = 0.
+        let beta1 = 1.0
+            + pair_mass * ball.radius.powi(2) / ball_inertia
+            + pair_mass * bat.radius.powi(2) / bat_inertia;
+
+        // Eq. (16): components in the impact frame. The contact point of the
+        // ball is −r_b·n3 from its centre, so ω×r adds −r_b·ω along n1; the
+        // bat's is +r_B·n3, adding +r_B·ω_B along n1.
+        let to_impact = frame.inverse();
+        let ball_local = to_impact * ball_velocity_before; // (n3, n1) components
+        let bat_local = to_impact * bat_velocity_before;
+        let initial_slip = ball_local.y
+            - ball.radius * ball_spin_before
+            - bat_local.y
+            - bat.radius * bat_spin_before;
+        let initial_approach = ball_local.x - bat_local.x;
+
+        // Eq. (19), in the approach speed. A swing that does not approach the
+        // ball (v3(0) ≥ 0) exchanges no impulse: the pitch flies on.
+        let restitution = 0.540 - (initial_approach.abs() - 26.8) / 400.0;
+        let compression_impulse = (-pair_mass * initial_approach).max(0.0); // Eq. (18)
+        let separation_impulse = compression_impulse * (1.0 + restitution); // Eq. (20)
+        // Eq. (17) with s = sign v1(0): p_s = m|v1(0)|/(μβ1).
+        let slip_halt_impulse = if initial_slip == 0.0 {
+            0.0
+        } else if scene.bat.friction == 0.0 {
+            f64::INFINITY
+        } else {
+            pair_mass * initial_slip.abs() / (scene.bat.friction * beta1)
+        };
+        let regime = if slip_halt_impulse < separation_impulse {
+            Regime::Stick
+        } else {
+            Regime::Slip
+        };
+
+        let mut impact = Impact {
+            normal_angle,
+            descent_angle,
+            frame,
+            pair_mass,
+            beta1,
+            friction: scene.bat.friction,
+            initial_slip,
+            initial_approach,
+            restitution,
+            compression_impulse,
+            separation_impulse,
+            slip_halt_impulse,
+            regime,
+            ball_velocity_before,
+            ball_spin_before,
+            bat_velocity_before,
+            bat_spin_before,
+            after: ContactState {
+                impulse: 0.0,
+                tangential_impulse: 0.0,
+                slip_velocity: initial_slip,
+                normal_velocity: initial_approach,
+                ball_velocity: ball_velocity_before,
+                ball_spin: ball_spin_before,
+                bat_velocity: bat_velocity_before,
+                bat_spin: bat_spin_before,
+            },
+            ball_mass: ball.mass,
+            ball_radius: ball.radius,
+            ball_inertia,
+            bat_mass: bat.effective_mass,
+            bat_radius: bat.radius,
+            bat_inertia,
+        };
+        impact.after = impact.at(separation_impulse);
+        impact
+    }
+
+    /// s of Eq. (14) for the initial slip.
+    fn slip_sign(&self) -> f64 {
+        if self.initial_slip > 0.0 {
+            1.0
+        } else if self.initial_slip < 0.0 {
+            -1.0
+        } else {
+            0.0
+        }
+    }
+
+    /// The tangential impulse p1 on the ball when the normal impulse is p
+    /// (Eq. 14 integrated; Eq. 21 at p = p_f): friction −μ·s opposes the slip
+    /// until p_s, after which the contact sticks and p1 stays put.
+    pub fn tangential_impulse(&self, impulse: f64) -> f64 {
+        if self.slip_sign() == 0.0 {
+            return 0.0;
+        }
+        -self.friction * self.slip_sign() * impulse.min(self.slip_halt_impulse)
+    }
+
+    /// The state of both bodies at normal impulse p, 0 ≤ p ≤ p_f (Eq. 7–8, 15).
+    pub fn at(&self, impulse: f64) -> ContactState {
+        let p1 = self.tangential_impulse(impulse);
+        let p3 = impulse;
+        // Eq. (15) with β2 = 0, β3 = 1.
+        let slip_velocity = self.initial_slip + self.beta1 * p1 / self.pair_mass;
+        let normal_velocity = self.initial_approach + p3 / self.pair_mass;
+        let on_ball = self.frame * Vector2::new(p3, p1); // flight-frame impulse
+        // Eq. (8): r × p about ẑ is −r_b·p1 for the ball (r = −r_b n3) and,
+        // for the bat, r_B n3 × (−p) = −r_B·p1 as well.
+        let ball_velocity = self.ball_velocity_before + on_ball / self.ball_mass;
+        let ball_spin = self.ball_spin_before - self.ball_radius * p1 / self.ball_inertia;
+        let bat_velocity = self.bat_velocity_before - on_ball / self.bat_mass;
+        let bat_spin = self.bat_spin_before - self.bat_radius * p1 / self.bat_inertia;
+        ContactState {
+            impulse,
+            tangential_impulse: p1,
+            slip_velocity,
+            normal_velocity,
+            ball_velocity,
+            ball_spin,
+            bat_velocity,
+            bat_spin,
+        }
+    }
+
+    /// p_s if slip halts before separation, else `None`.
+    pub fn stick_impulse(&self) -> Option<f64> {
+        (self.regime == Regime::Stick).then_some(self.slip_halt_impulse)
+    }
+
+    /// V̂_bf, the batted ball's speed.
+    pub fn launch_speed(&self) -> f64 {
+        self.after.ball_velocity.norm()
+    }
+
+    /// ω_bf, the batted ball's spin (backspin positive).
+    pub fn launch_spin(&self) -> f64 {
+        self.after.ball_spin
+    }
+
+    /// ζ, the launch angle above the horizontal (Eq. 23, as atan2 so that a
+    /// ball leaving backwards keeps its true direction).
+    pub fn launch_angle(&self) -> f64 {
+        let v = self.after.ball_velocity;
+        v.y.atan2(v.x)
+    }
+
+    /// Kinetic energy of ball and bat (translation of the bat's equivalent
+    /// mass plus its roll), for the energy check.
+    pub fn kinetic_energy(&self, state: &ContactState) -> f64 {
+        0.5 * self.ball_mass * state.ball_velocity.norm_squared()
+            + 0.5 * self.ball_inertia * state.ball_spin.powi(2)
+            + 0.5 * self.bat_mass * state.bat_velocity.norm_squared()
+            + 0.5 * self.bat_inertia * state.bat_spin.powi(2)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn table_two_fastball_launch() {
+        let impact = Impact::new(&Scene::default());
+        assert!((impact.launch_speed() - 44.30).abs() < 0.02);
+        assert!((impact.launch_spin() - 191.35).abs() < 1.0);
+        assert!((impact.launch_angle() - 0.4600).abs() < 0.002);
+        assert_eq!(impact.regime, Regime::Stick);
+        // With stick, the contact points move together at separation.
+        assert!(impact.after.slip_velocity.abs() < 1e-9);
+        assert!(
+            (impact.after.normal_velocity + impact.restitution * impact.initial_approach).abs()
+                < 1e-9
+        );
+    }
+}

@@ -1,0 +1,48 @@
+//! The paper's model, one file per phase: pitch (Eq. 3–4) → impact
+//! (Eq. 1–2, 5–23) → flight (Eq. 25–29).
+
+pub mod aero;
+pub mod flight;
+pub mod impact;
+pub mod pitch;
+pub mod scene;
+
+use nalgebra::Vector2;
+
+use crate::precision::Purpose;
+use flight::{Flight, FlightSummary, Launch};
+use impact::Impact;
+use scene::Scene;
+
+/// One swing, start to finish.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Swing {
+    pub impact: Impact,
+    pub flight: FlightSummary,
+}
+
+/// The flight's forces and starting point after `impact`.
+pub fn launch(scene: &Scene, impact: &Impact) -> (Flight, Launch) {
+    (
+        Flight::new(scene, impact.launch_spin()),
+        Launch {
+            position: Vector2::new(0.0, scene.environment.contact_height),
+            velocity: impact.after.ball_velocity,
+        },
+    )
+}
+
+/// Simulates a (validated) scene at the precision `purpose` needs.
+pub fn simulate(scene: &Scene, purpose: Purpose) -> Swing {
+    let impact = Impact::new(scene);
+    let (flight, start) = launch(scene, &impact);
+    Swing {
+        impact,
+        flight: flight::fly(&flight, &start, &purpose.flight_options()),
+    }
+}
+
+/// Just the range: what the optimiser and the heatmap need.
+pub fn range(scene: &Scene, purpose: Purpose) -> f64 {
+    simulate(scene, purpose).flight.range
+}

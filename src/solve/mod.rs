@@ -1,0 +1,4 @@
+//! Numerical machinery: the integrator and the optimiser.
+
+pub mod ode;
+pub mod optimize;

@@ -1,0 +1,404 @@
+//! Dormand–Prince 5(4) with step-size control and dense output, after Hairer,
+//! Nørsett & Wanner's DOPRI5.
+//!
+//! Written by hand rather than taken from a crate because the flight needs
+//! three things together that the Rust ODE crates do not offer in one place:
+//! stack-only state (`SVector`, no allocation per step), an observer that
+//! sees each step's continuous extension (to locate the landing and apex by
+//! root finding, and to sample a drawn trajectory), and a way to cut a step
+//! short at a corner of the right-hand side (the drag curve's kinks) so that
+//! no step integrates across one.
+
+use nalgebra::SVector;
+
+pub type State<const N: usize> = SVector<f64, N>;
+
+/// Local error tolerance: each component must satisfy
+/// |err| ≤ absolute + relative·|y|, in Hairer's root-mean-square norm.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Tolerance {
+    pub relative: f64,
+    pub absolute: f64,
+}
+
+impl Tolerance {
+    /// The same number for both.
+    pub const fn uniform(tol: f64) -> Self {
+        Tolerance {
+            relative: tol,
+            absolute: tol,
+        }
+    }
+}
+
+/// Work done by one integration.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Stats {
+    /// Right-hand-side evaluations.
+    pub evaluations: u32,
+    pub accepted: u32,
+    pub rejected: u32,
+}
+
+/// Why an integration ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// The observer asked to stop (an event was found).
+    Stopped,
+    /// `t_end` was reached.
+    ReachedEnd,
+    /// `max_steps` steps were tried.
+    StepLimit,
+    /// The step size fell below what the time's precision can resolve.
+    StepTooSmall,
+}
+
+/// What the observer wants after seeing an accepted step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Control {
+    Continue,
+    Stop,
+    /// Replace this step by a shorter one that ends at the given time (which
+    /// lies inside the step): used to end a step exactly on a kink.
+    RedoTo(f64),
+}
+
+/// One accepted step and its continuous extension (4th order, Shampine's).
+#[derive(Clone, Copy, Debug)]
+pub struct DenseStep<const N: usize> {
+    pub t0: f64,
+    pub t1: f64,
+    pub y0: State<N>,
+    pub y1: State<N>,
+    /// True when this step is the shortened replacement asked for by
+    /// [`Control::RedoTo`].
+    pub redone: bool,
+    coefficients: [State<N>; 4],
+}
+
+impl<const N: usize> DenseStep<N> {
+    /// The solution at `t` in [t0, t1].
+    #[inline]
+    pub fn at(&self, t: f64) -> State<N> {
+        let h = self.t1 - self.t0;
+        let s = (t - self.t0) / h;
+        let s1 = 1.0 - s;
+        let [diff, c3, c4, c5] = &self.coefficients;
+        self.y0 + (diff + (c3 + (c4 + c5 * s1) * s) * s1) * s
+    }
+}
+
+/// How to integrate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub tolerance: Tolerance,
+    /// Upper bound on tried steps, so that no input can hang a caller.
+    pub max_steps: u32,
+    /// First step to try; `None` picks one (Hairer's `hinit`, two evaluations).
+    pub initial_step: Option<f64>,
+    pub max_step: f64,
+}
+
+impl Settings {
+    pub fn new(tolerance: Tolerance) -> Self {
+        Settings {
+            tolerance,
+            max_steps: 100_000,
+            initial_step: None,
+            max_step: f64::INFINITY,
+        }
+    }
+}
+
+// Butcher tableau of Dormand & Prince (1980).
+const C2: f64 = 1.0 / 5.0;
+const C3: f64 = 3.0 / 10.0;
+const C4: f64 = 4.0 / 5.0;
+const C5: f64 = 8.0 / 9.0;
+const A21: f64 = 1.0 / 5.0;
+const A31: f64 = 3.0 / 40.0;
+const A32: f64 = 9.0 / 40.0;
+const A41: f64 = 44.0 / 45.0;
+const A42: f64 = -56.0 / 15.0;
+const A43: f64 = 32.0 / 9.0;
+const A51: f64 = 19372.0 / 6561.0;
+const A52: f64 = -25360.0 / 2187.0;
+const A53: f64 = 64448.0 / 6561.0;
+const A54: f64 = -212.0 / 729.0;
+const A61: f64 = 9017.0 / 3168.0;
+const A62: f64 = -355.0 / 33.0;
+const A63: f64 = 46732.0 / 5247.0;
+const A64: f64 = 49.0 / 176.0;
+const A65: f64 = -5103.0 / 18656.0;
+const A71: f64 = 35.0 / 384.0;
+const A73: f64 = 500.0 / 1113.0;
+const A74: f64 = 125.0 / 192.0;
+const A75: f64 = -2187.0 / 6784.0;
+const A76: f64 = 11.0 / 84.0;
+// Difference between the 5th- and 4th-order weights.
+const E1: f64 = 71.0 / 57600.0;
+const E3: f64 = -71.0 / 16695.0;
+const E4: f64 = 71.0 / 1920.0;
+const E5: f64 = -17253.0 / 339200.0;
+const E6: f64 = 22.0 / 525.0;
+const E7: f64 = -1.0 / 40.0;
+// Dense output weights (Hairer's dopri5.f).
+const D1: f64 = -12715105075.0 / 11282082432.0;
+const D3: f64 = 87487479700.0 / 32700410799.0;
+const D4: f64 = -10690763975.0 / 1880347072.0;
+const D5: f64 = 701980252875.0 / 199316789632.0;
+const D6: f64 = -1453857185.0 / 822651844.0;
+const D7: f64 = 69997945.0 / 29380423.0;
+
+// Step-size control (Hairer's defaults, with Gustafsson's PI stabilisation).
+const SAFETY: f64 = 0.9;
+const MIN_FACTOR: f64 = 0.2;
+const MAX_FACTOR: f64 = 10.0;
+const BETA: f64 = 0.04;
+
+#[inline]
+fn error_norm<const N: usize>(err: &State<N>, y0: &State<N>, y1: &State<N>, tol: Tolerance) -> f64 {
+    let mut sum = 0.0;
+    for i in 0..N {
+        let scale = tol.absolute + tol.relative * y0[i].abs().max(y1[i].abs());
+        let r = err[i] / scale;
+        sum += r * r;
+    }
+    (sum / N as f64).sqrt()
+}
+
+/// Hairer's initial step guess: the step whose first-order local error
+/// estimate would be 1 % of the tolerance.
+fn initial_step<const N: usize, F>(
+    f: &mut F,
+    t0: f64,
+    y0: &State<N>,
+    f0: &State<N>,
+    settings: &Settings,
+    stats: &mut Stats,
+) -> f64
+where
+    F: FnMut(f64, &State<N>) -> State<N>,
+{
+    let tol = settings.tolerance;
+    let scale = y0.map(|y| tol.absolute + tol.relative * y.abs());
+    let rms = |v: &State<N>| (v.component_div(&scale).norm_squared() / N as f64).sqrt();
+    let dnf = rms(f0);
+    let dny = rms(y0);
+    let mut h = if dnf <= 1e-5 || dny <= 1e-5 {
+        1e-6
+    } else {
+        0.01 * dny / dnf
+    };
+    h = h.min(settings.max_step);
+    let f1 = f(t0 + h, &(y0 + f0 * h));
+    stats.evaluations += 1;
+    let der2 = rms(&(f1 - f0)) / h;
+    let der12 = der2.abs().max(dnf);
+    let h1 = if der12 <= 1e-15 {
+        (h * 1e-3).max(1e-6)
+    } else {
+        (0.01 / der12).powf(1.0 / 5.0)
+    };
+    (100.0 * h).min(h1).min(settings.max_step)
+}
+
+/// Integrates y' = f(t, y) from (t0, y0) toward `t_end`, showing each
+/// accepted step to `observe`. Never allocates.
+pub fn integrate<const N: usize, F, O>(
+    mut f: F,
+    t0: f64,
+    y0: State<N>,
+    t_end: f64,
+    settings: &Settings,
+    mut observe: O,
+) -> (Outcome, Stats)
+where
+    F: FnMut(f64, &State<N>) -> State<N>,
+    O: FnMut(&DenseStep<N>) -> Control,
+{
+    let tol = settings.tolerance;
+    let mut stats = Stats::default();
+    let mut t = t0;
+    let mut y = y0;
+    let mut k1 = f(t, &y);
+    stats.evaluations += 1;
+    let mut h = match settings.initial_step {
+        Some(h) => h,
+        None => initial_step(&mut f, t, &y, &k1, settings, &mut stats),
+    };
+    let mut previous_error: f64 = 1e-4;
+    let mut last_rejected = false;
+    // After a RedoTo, the step size the full step would have been followed by.
+    let mut resume_step: Option<f64> = None;
+    let mut redo = false;
+
+    loop {
+        if stats.accepted + stats.rejected >= settings.max_steps {
+            return (Outcome::StepLimit, stats);
+        }
+        if t >= t_end {
+            return (Outcome::ReachedEnd, stats);
+        }
+        h = h.min(settings.max_step).min(t_end - t);
+        if h <= 16.0 * f64::EPSILON * t.abs().max(1.0) {
+            return (Outcome::StepTooSmall, stats);
+        }
+
+        let k2 = f(t + C2 * h, &(y + k1 * (A21 * h)));
+        let k3 = f(t + C3 * h, &(y + (k1 * A31 + k2 * A32) * h));
+        let k4 = f(t + C4 * h, &(y + (k1 * A41 + k2 * A42 + k3 * A43) * h));
+        let k5 = f(
+            t + C5 * h,
+            &(y + (k1 * A51 + k2 * A52 + k3 * A53 + k4 * A54) * h),
+        );
+        let k6 = f(
+            t + h,
+            &(y + (k1 * A61 + k2 * A62 + k3 * A63 + k4 * A64 + k5 * A65) * h),
+        );
+        let y1 = y + (k1 * A71 + k3 * A73 + k4 * A74 + k5 * A75 + k6 * A76) * h;
+        let k7 = f(t + h, &y1);
+        stats.evaluations += 6;
+
+        let err_vec = (k1 * E1 + k3 * E3 + k4 * E4 + k5 * E5 + k6 * E6 + k7 * E7) * h;
+        let err = error_norm(&err_vec, &y, &y1, tol);
+        let fac11 = err.powf(0.2 - BETA * 0.75);
+
+        if err <= 1.0 {
+            // Accept.
+            let fac = (fac11 / previous_error.powf(BETA) / SAFETY)
+                .clamp(1.0 / MAX_FACTOR, 1.0 / MIN_FACTOR);
+            let mut h_next = h / fac;
+            if last_rejected {
+                h_next = h_next.min(h);
+            }
+            let diff = y1 - y;
+            let c3 = k1 * h - diff;
+            let c4 = diff - k7 * h - c3;
+            let c5 = (k1 * D1 + k3 * D3 + k4 * D4 + k5 * D5 + k6 * D6 + k7 * D7) * h;
+            let step = DenseStep {
+                t0: t,
+                t1: t + h,
+                y0: y,
+                y1,
+                redone: redo,
+                coefficients: [diff, c3, c4, c5],
+            };
+            match observe(&step) {
+                Control::RedoTo(t_stop) if !redo && t_stop > t && t_stop < t + h => {
+                    // Throw this step away and take a shorter one to t_stop;
+                    // afterwards resume with the size this step proposed.
+                    stats.rejected += 1;
+                    resume_step = Some(h_next);
+                    h = t_stop - t;
+                    redo = true;
+                    continue;
+                }
+                Control::Stop => {
+                    stats.accepted += 1;
+                    return (Outcome::Stopped, stats);
+                }
+                _ => {}
+            }
+            stats.accepted += 1;
+            previous_error = err.max(1e-4);
+            last_rejected = false;
+            t += h;
+            y = y1;
+            k1 = k7;
+            h = match resume_step.take() {
+                Some(resume) if redo => resume,
+                _ => h_next,
+            };
+            redo = false;
+        } else {
+            // Reject: shrink, never below a fifth.
+            stats.rejected += 1;
+            let shrink = if err.is_finite() {
+                (fac11 / SAFETY).min(1.0 / MIN_FACTOR)
+            } else {
+                1.0 / MIN_FACTOR
+            };
+            h /= shrink;
+            last_rejected = true;
+            redo = false;
+            resume_step = None;
+        }
+    }
+}
+
+/// A root of `g` in [a, b], where g(a) and g(b) differ in sign, to within
+/// `tolerance` in t (Illinois variant of regula falsi: superlinear, and never
+/// leaves the bracket).
+pub fn find_root(mut g: impl FnMut(f64) -> f64, mut a: f64, mut b: f64, tolerance: f64) -> f64 {
+    let mut ga = g(a);
+    let mut gb = g(b);
+    if ga == 0.0 {
+        return a;
+    }
+    if gb == 0.0 {
+        return b;
+    }
+    let mut side = 0;
+    for _ in 0..100 {
+        let c = (a * gb - b * ga) / (gb - ga);
+        let gc = g(c);
+        if gc == 0.0 || (b - a).abs() < tolerance {
+            return c;
+        }
+        if (gc > 0.0) == (gb > 0.0) {
+            b = c;
+            gb = gc;
+            if side == -1 {
+                ga /= 2.0;
+            }
+            side = -1;
+        } else {
+            a = c;
+            ga = gc;
+            if side == 1 {
+                gb /= 2.0;
+            }
+            side = 1;
+        }
+    }
+    (a * gb - b * ga) / (gb - ga)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn harmonic_oscillator_to_tolerance() {
+        let f = |_t: f64, y: &State<2>| State::<2>::new(y[1], -y[0]);
+        let mut end = State::<2>::zeros();
+        let settings = Settings::new(Tolerance::uniform(1e-10));
+        let (outcome, stats) = integrate(f, 0.0, State::<2>::new(1.0, 0.0), 10.0, &settings, |s| {
+            end = s.y1;
+            Control::Continue
+        });
+        assert_eq!(outcome, Outcome::ReachedEnd);
+        assert!((end[0] - 10f64.cos()).abs() < 1e-8, "{end}");
+        assert!(stats.accepted < 400);
+    }
+
+    #[test]
+    fn dense_output_is_fourth_order_accurate() {
+        let f = |_t: f64, y: &State<1>| State::<1>::new(y[0]);
+        let settings = Settings::new(Tolerance::uniform(1e-12));
+        let mut worst: f64 = 0.0;
+        integrate(f, 0.0, State::<1>::new(1.0), 2.0, &settings, |s| {
+            let mid = 0.5 * (s.t0 + s.t1);
+            worst = worst.max((s.at(mid)[0] - mid.exp()).abs());
+            Control::Continue
+        });
+        assert!(worst < 1e-9, "{worst}");
+    }
+
+    #[test]
+    fn illinois_finds_roots() {
+        let r = find_root(|x| x * x - 2.0, 0.0, 2.0, 1e-14);
+        assert!((r - 2f64.sqrt()).abs() < 1e-12);
+    }
+}
