@@ -5,9 +5,12 @@
 //! [`model::scene::Scene`] → [`model::impact::Impact`] → [`model::flight`] →
 //! a summary; [`solve::optimize`] and [`study`] call that chain and nothing else.
 
+pub mod cli;
 pub mod model;
 pub mod precision;
+pub mod preset;
 pub mod solve;
+pub mod study;
 
 pub use model::scene::Scene;
 pub use model::{Swing, range, simulate};

@@ -6,6 +6,8 @@
 //! parsing and the generic get/set all go through that table, so a new input
 //! is added in exactly one place.
 
+use std::f64::consts::FRAC_PI_2;
+
 use serde::{Deserialize, Serialize};
 
 use super::aero::DragModel;
@@ -250,7 +252,7 @@ pub const KEYS: &[Key] = &[
         "ψ",
         "rad",
         "swing angle above horizontal",
-        Bounds::closed(-1.5707963267948966, 1.5707963267948966),
+        Bounds::closed(-FRAC_PI_2, FRAC_PI_2),
         0.01,
         bat.swing_angle
     ),

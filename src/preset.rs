@@ -1,0 +1,402 @@
+//! Presets: TOML files ↔ [`Scene`], with errors that name the key, and a save
+//! that never leaves a broken file (temporary file, then rename).
+//!
+//! The bundled presets (`presets/*.toml`) are compiled into the binary, so
+//! `homerun` works from any directory; a user's own presets live in their
+//! config folder (`$XDG_CONFIG_HOME/homerun/presets`) or a folder given with
+//! `--presets-dir`.
+
+use std::fs;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use crate::model::aero::DragModel;
+use crate::model::scene::{DRAG_KEY, InputError, KEYS, Scene};
+
+/// A fence to clear, drawn by the explorer (not part of the physics).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Fence {
+    /// Horizontal distance from the plate (m).
+    pub distance: f64,
+    /// Height (m).
+    pub height: f64,
+}
+
+/// Where a preset came from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Source {
+    Bundled,
+    File(PathBuf),
+}
+
+/// A named set of inputs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Preset {
+    pub name: String,
+    pub description: String,
+    pub scene: Scene,
+    pub fence: Option<Fence>,
+    pub source: Source,
+}
+
+/// Why a preset could not be read or written.
+#[derive(Debug, thiserror::Error)]
+pub enum PresetError {
+    #[error("{path}: {source}")]
+    Io {
+        path: String,
+        source: std::io::Error,
+    },
+    #[error("{path}: malformed TOML: {message}")]
+    Syntax { path: String, message: String },
+    #[error("{path}: {source}")]
+    Input { path: String, source: InputError },
+    #[error("{path}: {key} = {value}: {expected}")]
+    WrongType {
+        path: String,
+        key: String,
+        value: String,
+        expected: &'static str,
+    },
+    #[error("no preset named `{name}`; bundled: {bundled}{user}")]
+    NotFound {
+        name: String,
+        bundled: String,
+        user: String,
+    },
+    #[error("`{0}` is not a usable preset name: use letters, digits, '-' and '_'")]
+    BadName(String),
+}
+
+/// The presets shipped with homerun: (name, TOML text).
+pub const BUNDLED: &[(&str, &str)] = &[
+    ("fastball", include_str!("../presets/fastball.toml")),
+    ("knuckleball", include_str!("../presets/knuckleball.toml")),
+    ("curveball", include_str!("../presets/curveball.toml")),
+    ("figure5", include_str!("../presets/figure5.toml")),
+];
+
+const FENCE_DISTANCE: &str = "field.fence_distance";
+const FENCE_HEIGHT: &str = "field.fence_height";
+
+impl Preset {
+    /// Parses preset text; `origin` names it in errors (a path or a name).
+    /// Missing keys take the defaults of [`Scene::default`]; unknown keys,
+    /// wrong types and out-of-range values are errors naming the key.
+    pub fn parse(
+        text: &str,
+        name: &str,
+        origin: &str,
+        source: Source,
+    ) -> Result<Preset, PresetError> {
+        let table: toml::Table =
+            text.parse()
+                .map_err(|e: toml::de::Error| PresetError::Syntax {
+                    path: origin.to_owned(),
+                    message: e.to_string().trim().replace('\n', " "),
+                })?;
+        let input = |source| PresetError::Input {
+            path: origin.to_owned(),
+            source,
+        };
+        let wrong = |key: &str, value: &toml::Value, expected| PresetError::WrongType {
+            path: origin.to_owned(),
+            key: key.to_owned(),
+            value: value.to_string(),
+            expected,
+        };
+        let mut scene = Scene::default();
+        let mut description = String::new();
+        let mut fence_distance = None;
+        let mut fence_height = None;
+        for (section, value) in &table {
+            if section == "description" {
+                description = value
+                    .as_str()
+                    .ok_or_else(|| wrong(section, value, "expected a string"))?
+                    .to_owned();
+                continue;
+            }
+            let Some(entries) = value.as_table() else {
+                return Err(input(unknown(section)));
+            };
+            for (name, value) in entries {
+                let key = format!("{section}.{name}");
+                if key == DRAG_KEY {
+                    let text = value.as_str().ok_or_else(|| {
+                        wrong(&key, value, "expected a drag model name in quotes")
+                    })?;
+                    scene.drag = text.parse().map_err(input)?;
+                    continue;
+                }
+                let number = match value {
+                    toml::Value::Float(f) => *f,
+                    toml::Value::Integer(i) => *i as f64,
+                    _ => return Err(wrong(&key, value, "expected a number")),
+                };
+                match key.as_str() {
+                    FENCE_DISTANCE => fence_distance = Some(number),
+                    FENCE_HEIGHT => fence_height = Some(number),
+                    _ => scene.set(&key, number).map_err(input)?,
+                }
+            }
+        }
+        scene.validate().map_err(input)?;
+        let fence = match (fence_distance, fence_height) {
+            (None, None) => None,
+            (distance, height) => {
+                let fence = Fence {
+                    distance: distance.unwrap_or(121.9),
+                    height: height.unwrap_or(3.0),
+                };
+                for (key, value, max) in [
+                    (FENCE_DISTANCE, fence.distance, 1000.0),
+                    (FENCE_HEIGHT, fence.height, 100.0),
+                ] {
+                    if !(value.is_finite() && value > 0.0 && value <= max) {
+                        return Err(PresetError::WrongType {
+                            path: origin.to_owned(),
+                            key: key.to_owned(),
+                            value: value.to_string(),
+                            expected: "must be a finite number in (0, 1000] m for the distance, (0, 100] m for the height",
+                        });
+                    }
+                }
+                Some(fence)
+            }
+        };
+        Ok(Preset {
+            name: name.to_owned(),
+            description,
+            scene,
+            fence,
+            source,
+        })
+    }
+
+    /// Reads a preset file.
+    pub fn read(path: &Path) -> Result<Preset, PresetError> {
+        let origin = path.display().to_string();
+        let text = fs::read_to_string(path).map_err(|source| PresetError::Io {
+            path: origin.clone(),
+            source,
+        })?;
+        let name = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        Preset::parse(&text, &name, &origin, Source::File(path.to_owned()))
+    }
+
+    /// The TOML text of this preset: every key, with the paper's symbol and
+    /// unit in a comment, so a saved file documents itself.
+    pub fn to_toml(&self) -> String {
+        let mut out = String::new();
+        if !self.description.is_empty() {
+            out += &format!(
+                "description = {}\n",
+                toml::Value::from(self.description.clone())
+            );
+        }
+        let mut section = "";
+        for key in KEYS {
+            let (head, name) = key.name.split_once('.').expect("keys are dotted");
+            if head != section {
+                out += &format!("\n[{head}]\n");
+                section = head;
+            }
+            let value = (key.get)(&self.scene);
+            let unit = if key.unit.is_empty() {
+                String::new()
+            } else {
+                format!(" ({})", key.unit)
+            };
+            out += &format!(
+                "{name} = {}  # {}{unit}: {}\n",
+                toml::Value::Float(value),
+                key.symbol,
+                key.description
+            );
+        }
+        out += &format!(
+            "\n[model]\ndrag = \"{}\"  # {}; one of: {}\n",
+            self.scene.drag,
+            self.scene.drag.description(),
+            DragModel::ALL.map(DragModel::name).join(", ")
+        );
+        if let Some(fence) = self.fence {
+            out += &format!(
+                "\n[field]\nfence_distance = {}  # m from the plate\nfence_height = {}  # m\n",
+                toml::Value::Float(fence.distance),
+                toml::Value::Float(fence.height)
+            );
+        }
+        out
+    }
+
+    /// Writes the preset as `dir/name.toml`: first to a temporary file in the
+    /// same folder, flushed to disk, then renamed over the target, so that a
+    /// crash or a full disk never leaves a half-written preset.
+    pub fn save(&self, dir: &Path) -> Result<PathBuf, PresetError> {
+        check_name(&self.name)?;
+        let io = |path: &Path| {
+            let path = path.display().to_string();
+            move |source| PresetError::Io { path, source }
+        };
+        fs::create_dir_all(dir).map_err(io(dir))?;
+        let target = dir.join(format!("{}.toml", self.name));
+        let temporary = dir.join(format!(".{}.toml.{}.tmp", self.name, std::process::id()));
+        let written = (|| {
+            let mut file = fs::File::create(&temporary)?;
+            file.write_all(self.to_toml().as_bytes())?;
+            file.sync_all()?;
+            fs::rename(&temporary, &target)
+        })();
+        if let Err(source) = written {
+            let _ = fs::remove_file(&temporary);
+            return Err(io(&target)(source));
+        }
+        Ok(target)
+    }
+}
+
+fn unknown(key: &str) -> InputError {
+    match Scene::key(key) {
+        Err(e) => e,
+        Ok(_) => unreachable!("a section name is never a full key"),
+    }
+}
+
+fn check_name(name: &str) -> Result<(), PresetError> {
+    let ok = !name.is_empty()
+        && name.len() <= 64
+        && name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_');
+    if ok {
+        Ok(())
+    } else {
+        Err(PresetError::BadName(name.to_owned()))
+    }
+}
+
+/// The user's preset folder: `$XDG_CONFIG_HOME/homerun/presets` (or the
+/// platform's config folder).
+pub fn user_dir() -> Option<PathBuf> {
+    dirs::config_dir().map(|d| d.join("homerun").join("presets"))
+}
+
+/// The bundled presets, parsed.
+pub fn bundled() -> Vec<Preset> {
+    BUNDLED
+        .iter()
+        .map(|(name, text)| {
+            Preset::parse(text, name, &format!("presets/{name}.toml"), Source::Bundled)
+                .expect("bundled presets are valid (tested)")
+        })
+        .collect()
+}
+
+/// Every preset available: bundled first, then each `*.toml` in `dir`. A
+/// broken file is returned as an error beside the others, not fatal.
+pub fn list(dir: Option<&Path>) -> Vec<Result<Preset, PresetError>> {
+    let mut all: Vec<_> = bundled().into_iter().map(Ok).collect();
+    if let Some(dir) = dir
+        && let Ok(entries) = fs::read_dir(dir)
+    {
+        let mut paths: Vec<PathBuf> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| {
+                p.extension().is_some_and(|x| x == "toml")
+                    && !p
+                        .file_name()
+                        .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+            })
+            .collect();
+        paths.sort();
+        all.extend(paths.iter().map(|p| Preset::read(p)));
+    }
+    all
+}
+
+/// Finds a preset by name (user folder first, so a user can shadow a bundled
+/// one) or, if `spec` looks like a path, reads that file.
+pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
+    let as_path = Path::new(spec);
+    if spec.ends_with(".toml") || spec.contains(std::path::MAIN_SEPARATOR) {
+        return Preset::read(as_path);
+    }
+    if let Some(dir) = dir {
+        let candidate = dir.join(format!("{spec}.toml"));
+        if candidate.is_file() {
+            return Preset::read(&candidate);
+        }
+    }
+    if let Some((name, text)) = BUNDLED.iter().find(|(name, _)| *name == spec) {
+        return Preset::parse(text, name, &format!("presets/{name}.toml"), Source::Bundled);
+    }
+    Err(PresetError::NotFound {
+        name: spec.to_owned(),
+        bundled: BUNDLED
+            .iter()
+            .map(|(n, _)| *n)
+            .collect::<Vec<_>>()
+            .join(", "),
+        user: dir
+            .map(|d| format!("; or a file in {}", d.display()))
+            .unwrap_or_default(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bundled_presets_parse_and_round_trip() {
+        for preset in bundled() {
+            let text = preset.to_toml();
+            let again = Preset::parse(&text, &preset.name, "again", Source::Bundled).unwrap();
+            assert_eq!(again.scene, preset.scene, "{}", preset.name);
+            assert_eq!(again.fence, preset.fence);
+            assert_eq!(again.description, preset.description);
+        }
+    }
+
+    #[test]
+    fn errors_name_the_key() {
+        let e = Preset::parse("[bat]\nspeeed = 3", "x", "x.toml", Source::Bundled).unwrap_err();
+        assert!(e.to_string().contains("unknown key `bat.speeed`"), "{e}");
+        let e = Preset::parse("[bat]\nspeed = -3", "x", "x.toml", Source::Bundled).unwrap_err();
+        assert!(e.to_string().contains("bat.speed = -3"), "{e}");
+        let e =
+            Preset::parse("[bat]\nspeed = \"fast\"", "x", "x.toml", Source::Bundled).unwrap_err();
+        assert!(e.to_string().contains("bat.speed"), "{e}");
+        let e = Preset::parse("[model]\ndrag = \"smooth\"", "x", "x.toml", Source::Bundled)
+            .unwrap_err();
+        assert!(e.to_string().contains("sawicki2003"), "{e}");
+        let e = Preset::parse("[bat\n", "x", "x.toml", Source::Bundled).unwrap_err();
+        assert!(e.to_string().contains("malformed TOML"), "{e}");
+    }
+
+    #[test]
+    fn save_is_atomic_and_reloads() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut preset = bundled().remove(0);
+        preset.name = "mine".into();
+        preset.scene.bat.speed = 33.5;
+        let path = preset.save(dir.path()).unwrap();
+        let back = Preset::read(&path).unwrap();
+        assert_eq!(back.scene, preset.scene);
+        let names: Vec<_> = fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(names.len(), 1, "no temporary file left: {names:?}");
+        preset.name = "../escape".into();
+        assert!(matches!(
+            preset.save(dir.path()),
+            Err(PresetError::BadName(_))
+        ));
+    }
+}
