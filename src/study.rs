@@ -143,21 +143,39 @@ pub enum SweepError {
         "{0}: the optimiser chooses this one; sweep another key (e.g. bat.speed, pitch.spin, environment.wind)"
     )]
     ControlVariable(&'static str),
+    #[error(
+        "model.drag is not a number and cannot be swept; run once per model with --set model.drag=NAME"
+    )]
+    NotNumeric,
+    #[error("sweep point {index} of {count}: {source}")]
+    Point {
+        index: usize,
+        count: usize,
+        source: InputError,
+    },
 }
 
 /// The scenes of a sweep of `key` over `values`, each validated, before any
 /// computation: the first bad value is an error naming the key.
 pub fn sweep_scenes(scene: &Scene, key: &str, values: &[f64]) -> Result<Vec<Scene>, SweepError> {
+    if key == crate::model::scene::DRAG_KEY {
+        return Err(SweepError::NotNumeric);
+    }
     let key = Scene::key(key)?;
     if key.name == "bat.undercut" || key.name == "bat.swing_angle" {
         return Err(SweepError::ControlVariable(key.name));
     }
     values
         .iter()
-        .map(|&value| {
+        .enumerate()
+        .map(|(index, &value)| {
             let mut s = *scene;
             (key.set)(&mut s, value);
-            s.validate()?;
+            s.validate().map_err(|source| SweepError::Point {
+                index: index + 1,
+                count: values.len(),
+                source,
+            })?;
             Ok(s)
         })
         .collect()
