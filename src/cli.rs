@@ -299,9 +299,9 @@ fn hit(scene: &Scene, json: bool) -> String {
     );
     let _ = writeln!(
         out,
-        "launch   {:.3} m/s, {:.2} rad/s backspin, {:.4} rad ({:.1}°)",
+        "launch   {:.3} m/s, {}, {:.4} rad ({:.1}°)",
         impact.launch_speed(),
-        impact.launch_spin(),
+        spin_text(impact.launch_spin()),
         impact.launch_angle(),
         impact.launch_angle().to_degrees()
     );
@@ -320,6 +320,15 @@ fn hit(scene: &Scene, json: bool) -> String {
         }
     );
     out
+}
+
+/// A batted spin in words: backspin is positive.
+fn spin_text(spin: f64) -> String {
+    if spin < 0.0 {
+        format!("{:.2} rad/s of topspin", -spin)
+    } else {
+        format!("{spin:.2} rad/s of backspin")
+    }
 }
 
 /// The optimum and the launch it gives, at readout precision.
@@ -369,9 +378,9 @@ fn optimum(scene: &Scene, json: bool) -> String {
     );
     let _ = writeln!(
         out,
-        "launch   {:.3} m/s, {:.2} rad/s backspin, {:.4} rad ({:.1}°)",
+        "launch   {:.3} m/s, {}, {:.4} rad ({:.1}°)",
         impact.launch_speed(),
-        impact.launch_spin(),
+        spin_text(impact.launch_spin()),
         impact.launch_angle(),
         impact.launch_angle().to_degrees()
     );
