@@ -756,7 +756,7 @@ fn sweep(
                 let _ = writeln!(
                     out,
                     "{:>24} {:>10.5} {:>8.4} {:>10.3} {:>9.3} {:>9.2} {:>8.4}{}",
-                    format!("{:.6}", p.value),
+                    trimmed(p.value),
                     p.undercut,
                     p.swing_angle,
                     p.range,
@@ -769,6 +769,12 @@ fn sweep(
         }
     }
     Ok(out)
+}
+
+/// A swept value to six decimals, without trailing zeros.
+fn trimmed(value: f64) -> String {
+    let text = format!("{value:.6}");
+    text.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
 /// Parses "A..B" (a window) for `flag`, inside `bounds`.
