@@ -679,7 +679,14 @@ fn table2(json: bool) -> String {
         tolerance::SWING_ANGLE,
         tolerance::RANGE
     );
-    out
+    trim_lines(&out)
+}
+
+/// Text without the padding that empty columns leave at line ends.
+fn trim_lines(text: &str) -> String {
+    text.lines()
+        .map(|l| l.trim_end().to_owned() + "\n")
+        .collect()
 }
 
 impl Table2Row {
@@ -902,6 +909,7 @@ fn surface(scene: &Scene, grid: Grid, format: Format) -> String {
                     undercuts[i], swing_angles[j], range
                 );
             }
+            return trim_lines(&out);
         }
     }
     out
