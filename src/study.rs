@@ -1,11 +1,18 @@
-//! Studies over many swings: the range surface over (E, ψ) (Fig. 7), computed
-//! in parallel with rayon. Each study calls the model and nothing else.
+//! Studies over many swings: the range surface over (E, ψ) (Fig. 7), the
+//! optimum as one input is swept (Figs. 8–12), a slice in E (Fig. 13), C_D
+//! along a flight (Fig. 14) and the impact against E for several μ
+//! (Figs. 5–6). Parallel with rayon where the points are independent. Each
+//! study calls the model and nothing else.
 
 use rayon::prelude::*;
 use serde::Serialize;
 
+use crate::model::flight::{self, FlightSummary, TrajectoryPoint};
+use crate::model::impact::{Impact, Regime};
+use crate::model::scene::InputError;
 use crate::model::{self, scene::Scene};
 use crate::precision::Purpose;
+use crate::solve::optimize::{OptimizerSettings, optimize_from};
 
 /// A rectangular grid over undercut (columns) and swing angle (rows).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -109,4 +116,216 @@ pub fn surface_until(
         })
         .collect();
     ranges.map(|ranges| Surface { grid, ranges })
+}
+
+/// One point of a sweep: the optimal swing with one input set to `value`
+/// (Figs. 8–12), and the launch it gives.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SweepPoint {
+    /// The swept input's value.
+    pub value: f64,
+    pub undercut: f64,
+    pub swing_angle: f64,
+    pub range: f64,
+    pub launch_speed: f64,
+    pub launch_spin: f64,
+    pub launch_angle: f64,
+    pub evaluations: u32,
+    pub converged: bool,
+}
+
+/// Why a sweep was refused before any computation.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SweepError {
+    #[error(transparent)]
+    Input(#[from] InputError),
+    #[error(
+        "{0}: the optimiser chooses this one; sweep another key (e.g. bat.speed, pitch.spin, environment.wind)"
+    )]
+    ControlVariable(&'static str),
+    #[error(
+        "model.drag is not a number and cannot be swept; run once per model with --set model.drag=NAME"
+    )]
+    NotNumeric,
+    #[error("sweep point {index} of {count}: {source}")]
+    Point {
+        index: usize,
+        count: usize,
+        source: InputError,
+    },
+}
+
+/// The scenes of a sweep of `key` over `values`, each validated, before any
+/// computation: the first bad value is an error naming the key.
+pub fn sweep_scenes(scene: &Scene, key: &str, values: &[f64]) -> Result<Vec<Scene>, SweepError> {
+    if key == crate::model::scene::DRAG_KEY {
+        return Err(SweepError::NotNumeric);
+    }
+    let key = Scene::key(key)?;
+    if key.name == "bat.undercut" || key.name == "bat.swing_angle" {
+        return Err(SweepError::ControlVariable(key.name));
+    }
+    values
+        .iter()
+        .enumerate()
+        .map(|(index, &value)| {
+            let mut s = *scene;
+            (key.set)(&mut s, value);
+            s.validate().map_err(|source| SweepError::Point {
+                index: index + 1,
+                count: values.len(),
+                source,
+            })?;
+            Ok(s)
+        })
+        .collect()
+}
+
+/// `steps` equally spaced values from `from` to `to` (both included).
+pub fn linspace(from: f64, to: f64, steps: usize) -> Vec<f64> {
+    match steps {
+        0 => Vec::new(),
+        1 => vec![from],
+        n => (0..n)
+            .map(|i| from + (to - from) * i as f64 / (n - 1) as f64)
+            .collect(),
+    }
+}
+
+/// The optimum as `key` is swept over `values` (Figs. 8–12). Each point is
+/// warm-started from the previous optimum, which makes the sweep sequential
+/// but about twice as cheap per point, and keeps it on one ridge.
+pub fn sweep(
+    scene: &Scene,
+    key: &str,
+    values: &[f64],
+    settings: OptimizerSettings,
+) -> Result<Vec<SweepPoint>, SweepError> {
+    let scenes = sweep_scenes(scene, key, values)?;
+    let mut start = (scene.bat.undercut, scene.bat.swing_angle);
+    Ok(scenes
+        .iter()
+        .zip(values)
+        .map(|(s, &value)| {
+            let optimum = optimize_from(s, start, settings);
+            start = (optimum.undercut, optimum.swing_angle);
+            let impact = at_swing(s, optimum.undercut, optimum.swing_angle);
+            SweepPoint {
+                value,
+                undercut: optimum.undercut,
+                swing_angle: optimum.swing_angle,
+                range: optimum.range,
+                launch_speed: impact.launch_speed(),
+                launch_spin: impact.launch_spin(),
+                launch_angle: impact.launch_angle(),
+                evaluations: optimum.evaluations,
+                converged: optimum.converged,
+            }
+        })
+        .collect())
+}
+
+fn at_swing(scene: &Scene, undercut: f64, swing_angle: f64) -> Impact {
+    let mut s = *scene;
+    s.bat.undercut = undercut;
+    s.bat.swing_angle = swing_angle;
+    Impact::new(&s)
+}
+
+/// One point of a slice in E at fixed ψ (Fig. 13): launch and range.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SlicePoint {
+    pub undercut: f64,
+    pub launch_speed: f64,
+    pub launch_spin: f64,
+    pub launch_angle: f64,
+    pub range: f64,
+}
+
+/// Launch and range at each undercut in `undercuts`, the swing angle held at
+/// `swing_angle` (Fig. 13), in parallel. Undercuts the bat cannot reach
+/// (|E| ≥ r_b + r_B) are left out.
+pub fn slice(
+    scene: &Scene,
+    swing_angle: f64,
+    undercuts: &[f64],
+    purpose: Purpose,
+) -> Vec<SlicePoint> {
+    let reach = scene.ball.radius + scene.bat.radius;
+    undercuts
+        .par_iter()
+        .filter(|e| e.abs() < reach)
+        .map(|&undercut| {
+            let mut s = *scene;
+            s.bat.undercut = undercut;
+            s.bat.swing_angle = swing_angle;
+            let swing = model::simulate(&s, purpose);
+            SlicePoint {
+                undercut,
+                launch_speed: swing.impact.launch_speed(),
+                launch_spin: swing.impact.launch_spin(),
+                launch_angle: swing.impact.launch_angle(),
+                range: swing.flight.range,
+            }
+        })
+        .collect()
+}
+
+/// C_D (and the whole path) along the flight of `scene`'s own swing at
+/// `samples` equal time steps (Fig. 14: C_D against time).
+pub fn drag_along_flight(
+    scene: &Scene,
+    samples: usize,
+    purpose: Purpose,
+) -> (FlightSummary, Vec<TrajectoryPoint>) {
+    let impact = Impact::new(scene);
+    let (flight, start) = model::launch(scene, &impact);
+    flight::trajectory(&flight, &start, &purpose.flight_options(), samples)
+}
+
+/// One point of Figs. 5–6: the batted spin ω_bf and launch angle ζ at an
+/// undercut, and whether slip halted.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ImpactPoint {
+    pub undercut: f64,
+    pub launch_speed: f64,
+    pub launch_spin: f64,
+    pub launch_angle: f64,
+    pub regime: Regime,
+}
+
+/// The impact alone, against E, for one friction coefficient.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ImpactCurve {
+    pub friction: f64,
+    pub points: Vec<ImpactPoint>,
+}
+
+/// ω_bf and ζ against E for each μ in `frictions` (Figs. 5–6). Impacts are
+/// closed-form and cheap, so this needs no parallelism. Undercuts the bat
+/// cannot reach are left out.
+pub fn impact_curves(scene: &Scene, frictions: &[f64], undercuts: &[f64]) -> Vec<ImpactCurve> {
+    let reach = scene.ball.radius + scene.bat.radius;
+    frictions
+        .iter()
+        .map(|&friction| ImpactCurve {
+            friction,
+            points: undercuts
+                .iter()
+                .filter(|e| e.abs() < reach)
+                .map(|&undercut| {
+                    let mut s = *scene;
+                    s.bat.friction = friction;
+                    let impact = at_swing(&s, undercut, scene.bat.swing_angle);
+                    ImpactPoint {
+                        undercut,
+                        launch_speed: impact.launch_speed(),
+                        launch_spin: impact.launch_spin(),
+                        launch_angle: impact.launch_angle(),
+                        regime: impact.regime,
+                    }
+                })
+                .collect(),
+        })
+        .collect()
 }

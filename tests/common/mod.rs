@@ -1,0 +1,34 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use homerun::Scene;
+use homerun::preset;
+
+/// A bundled preset's scene.
+pub fn scene(name: &str) -> Scene {
+    preset::load(name, None).expect("bundled preset").scene
+}
+
+/// `scene` with its swing replaced by (E, ψ).
+pub fn with_swing(scene: &Scene, undercut: f64, swing_angle: f64) -> Scene {
+    let mut s = *scene;
+    s.bat.undercut = undercut;
+    s.bat.swing_angle = swing_angle;
+    s
+}
+
+/// The point in [lo, hi] where the predicate `f` changes value, found by
+/// bisection to well below a micrometre. `f(lo)` and `f(hi)` must differ.
+pub fn bisect(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> bool) -> f64 {
+    let at_lo = f(lo);
+    assert_ne!(at_lo, f(hi), "no change of the predicate in [{lo}, {hi}]");
+    while hi - lo > 1e-10 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid) == at_lo {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
