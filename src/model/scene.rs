@@ -373,7 +373,7 @@ pub const DRAG_KEY: &str = "model.drag";
 /// what would have been accepted.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum InputError {
-    #[error("{key} = {value}: must be a finite number in {bounds} {unit}")]
+    #[error("{key} = {value}: must be a finite number in {bounds}{}", unit_suffix(.unit))]
     OutOfRange {
         key: &'static str,
         value: f64,
@@ -467,6 +467,14 @@ impl Scene {
             });
         }
         Ok(())
+    }
+}
+
+fn unit_suffix(unit: &str) -> String {
+    if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
     }
 }
 
