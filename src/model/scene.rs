@@ -392,7 +392,7 @@ pub enum InputError {
         vertical: f64,
         minimum: f64,
     },
-    #[error("unknown key `{key}`; known keys: {known}")]
+    #[error("unknown key `{key}`{}; known keys: {known}", suggestion(.key))]
     UnknownKey { key: String, known: String },
     #[error("{key} = {text:?}: not a number")]
     NotANumber { key: String, text: String },
@@ -468,6 +468,18 @@ impl Scene {
         }
         Ok(())
     }
+}
+
+/// " (did you mean `bat.speed`?)" for a near miss of a known key.
+fn suggestion(key: &str) -> String {
+    KEYS.iter()
+        .map(|k| k.name)
+        .chain([DRAG_KEY])
+        .map(|name| (strsim::jaro_winkler(key, name), name))
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+        .filter(|(score, _)| *score > 0.85)
+        .map(|(_, name)| format!(" (did you mean `{name}`?)"))
+        .unwrap_or_default()
 }
 
 fn unit_suffix(unit: &str) -> String {
