@@ -297,14 +297,7 @@ fn hit(scene: &Scene, json: bool) -> String {
             None => "slips until separation".to_owned(),
         }
     );
-    let _ = writeln!(
-        out,
-        "launch   {:.3} m/s, {}, {:.4} rad ({:.1}°)",
-        impact.launch_speed(),
-        spin_text(impact.launch_spin()),
-        impact.launch_angle(),
-        impact.launch_angle().to_degrees()
-    );
+    let _ = writeln!(out, "{}", launch_line(impact));
     let _ = writeln!(
         out,
         "flight   range {:.3} m in {:.3} s, apex {:.2} m, lands at {:.2} m/s, {:.3} rad below horizontal{}",
@@ -323,6 +316,17 @@ fn hit(scene: &Scene, json: bool) -> String {
 }
 
 /// A batted spin in words: backspin is positive.
+/// "launch   44.299 m/s, 191.83 rad/s of backspin, 0.4604 rad (26.4°)"
+fn launch_line(impact: &crate::model::impact::Impact) -> String {
+    format!(
+        "launch   {:.3} m/s, {}, {:.4} rad ({:.1}°)",
+        impact.launch_speed(),
+        spin_text(impact.launch_spin()),
+        impact.launch_angle(),
+        impact.launch_angle().to_degrees()
+    )
+}
+
 fn spin_text(spin: f64) -> String {
     if spin < 0.0 {
         format!("{:.2} rad/s of topspin", -spin)
@@ -376,14 +380,7 @@ fn optimum(scene: &Scene, json: bool) -> String {
         "range    {:.4} m in {:.3} s",
         swing.flight.range, swing.flight.flight_time
     );
-    let _ = writeln!(
-        out,
-        "launch   {:.3} m/s, {}, {:.4} rad ({:.1}°)",
-        impact.launch_speed(),
-        spin_text(impact.launch_spin()),
-        impact.launch_angle(),
-        impact.launch_angle().to_degrees()
-    );
+    let _ = writeln!(out, "{}", launch_line(impact));
     let _ = writeln!(
         out,
         "search   {} range evaluations, {}",
