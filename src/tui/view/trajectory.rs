@@ -1,0 +1,108 @@
+//! The batted flight in braille: the current swing, the optimal swing, the
+//! apex, the landing point and the fence, with axes in metres.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::Span;
+use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, LegendPosition};
+
+use super::{dim, title_style};
+use crate::tui::app::App;
+
+/// A round axis end at or above `value`: 1, 2 or 5 times a power of ten.
+pub fn nice_ceiling(value: f64) -> f64 {
+    if !(value.is_finite() && value > 0.0) {
+        return 1.0;
+    }
+    let power = 10f64.powf(value.log10().floor());
+    [1.0, 2.0, 2.5, 5.0, 10.0]
+        .iter()
+        .map(|m| m * power)
+        .find(|&v| v >= value)
+        .unwrap_or(10.0 * power)
+}
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let flight = &app.swing.flight;
+    let optimal_range = app.optimum.filter(|o| o.done).map_or(0.0, |o| o.best.range);
+    let optimal_apex = app.optimal_path.iter().map(|p| p.1).fold(0.0, f64::max);
+    let fence = app.fence.map_or((0.0, 0.0), |f| (f.distance, f.height));
+    let x_max = nice_ceiling(1.05 * flight.range.max(optimal_range).max(fence.0));
+    let y_max = nice_ceiling(1.1 * flight.apex.max(optimal_apex).max(fence.1));
+
+    let apex = [(flight.apex_distance, flight.apex)];
+    let landing = [(flight.range, 0.0)];
+    let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
+    let mut datasets = Vec::new();
+    if !app.optimal_path.is_empty() {
+        datasets.push(
+            Dataset::default()
+                .name("optimal")
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(Color::Green))
+                .data(&app.optimal_path),
+        );
+    }
+    datasets.push(
+        Dataset::default()
+            .name("this swing")
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(Style::new().fg(Color::Cyan))
+            .data(&app.path),
+    );
+    datasets.push(
+        Dataset::default()
+            .name("apex")
+            .marker(Marker::Dot)
+            .graph_type(GraphType::Scatter)
+            .style(Style::new().fg(Color::Yellow))
+            .data(&apex),
+    );
+    datasets.push(
+        Dataset::default()
+            .name("landing")
+            .marker(Marker::Block)
+            .graph_type(GraphType::Scatter)
+            .style(Style::new().fg(Color::Magenta))
+            .data(&landing),
+    );
+    if app.fence.is_some() {
+        datasets.push(
+            Dataset::default()
+                .name("fence")
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(Color::White))
+                .data(&fence_line),
+        );
+    }
+    let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| Span::styled(format!("{v:.0}"), dim()));
+    let title = format!(
+        " Trajectory: {:.1} m, apex {:.1} m at {:.1} m ",
+        flight.range, flight.apex, flight.apex_distance
+    );
+    let chart = Chart::new(datasets)
+        .block(Block::bordered().title(Span::styled(title, title_style())))
+        .x_axis(
+            Axis::default()
+                .title(Span::styled("x (m)", dim()))
+                .bounds([0.0, x_max])
+                .labels(labels(x_max)),
+        )
+        .y_axis(
+            Axis::default()
+                .title(Span::styled("y (m)", dim()))
+                .bounds([0.0, y_max])
+                .labels(labels(y_max)),
+        )
+        .legend_position(Some(LegendPosition::TopRight))
+        .hidden_legend_constraints((
+            ratatui::layout::Constraint::Percentage(40),
+            ratatui::layout::Constraint::Percentage(60),
+        ));
+    frame.render_widget(chart, area);
+}
