@@ -101,6 +101,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             .data(&normal),
     );
     let chart = Chart::new(datasets)
+        .legend_position(None)
         .x_axis(
             Axis::default()
                 .title(Span::styled("p (N·s)", dim()))
@@ -124,21 +125,23 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let s = impact.at(stop.impulse);
     let lines = vec![
         Line::from(vec![
-            Span::styled("p ", dim()),
-            Span::raw(format!(
-                "{:.3} N·s   p_s {}  p_c {:.3}  p_f {:.3}",
-                stop.impulse,
+            Span::styled("p ", Style::new().fg(Color::White)),
+            Span::raw(format!("{:.3} N·s  ", stop.impulse)),
+            Span::styled("p_s ", Style::new().fg(Color::Magenta)),
+            Span::raw(
                 impact
                     .stick_impulse()
-                    .map_or("—".to_owned(), |p| format!("{p:.3}")),
-                impact.compression_impulse,
-                pf
-            )),
+                    .map_or("— (slips) ".to_owned(), |p| format!("{p:.3}  ")),
+            ),
+            Span::styled("p_c ", Style::new().fg(Color::Blue)),
+            Span::raw(format!("{:.3}  ", impact.compression_impulse)),
+            Span::styled("p_f ", dim()),
+            Span::raw(format!("{pf:.3}")),
         ]),
         Line::from(vec![
-            Span::styled("v1 ", dim()),
+            Span::styled("v1 slip ", Style::new().fg(Color::Cyan)),
             Span::raw(format!("{:+.2}  ", s.slip_velocity)),
-            Span::styled("v3 ", dim()),
+            Span::styled("v3 normal ", Style::new().fg(Color::Yellow)),
             Span::raw(format!("{:+.2} m/s", s.normal_velocity)),
         ]),
         Line::from(vec![

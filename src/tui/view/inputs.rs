@@ -24,7 +24,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let [list, about] = Layout::vertical([Constraint::Fill(1), Constraint::Length(3)]).areas(inner);
-    let wide = inner.width >= 36;
+    let wide = inner.width >= 40;
     let editing = match &app.mode {
         Mode::Edit { text, error, .. } => Some((text, error)),
         _ => None,
@@ -59,7 +59,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             }
         };
         let label = if wide {
-            format!("{symbol:<5} {name:<15}")
+            format!("{symbol:<5} {name:<19}")
         } else if symbol.is_empty() {
             format!("{name:<6}")
         } else {

@@ -79,7 +79,7 @@ const READOUT_HEIGHT: u16 = 10;
 
 pub fn layout(area: Rect, tab: Tab) -> Panes {
     let [body, status] = Layout::vertical([Constraint::Fill(1), Constraint::Length(1)]).areas(area);
-    let inputs_width = if is_wide(area) { 40 } else { 30 };
+    let inputs_width = if is_wide(area) { 44 } else { 30 };
     let [inputs, right] =
         Layout::horizontal([Constraint::Length(inputs_width), Constraint::Fill(1)]).areas(body);
     let mut panes = Panes {

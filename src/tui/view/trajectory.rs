@@ -11,13 +11,13 @@ use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, LegendPosition};
 use super::{dim, title_style};
 use crate::tui::app::App;
 
-/// A round axis end at or above `value`: 1, 2 or 5 times a power of ten.
+/// A round axis end at or above `value`, so that the halfway label is round too.
 pub fn nice_ceiling(value: f64) -> f64 {
     if !(value.is_finite() && value > 0.0) {
         return 1.0;
     }
     let power = 10f64.powf(value.log10().floor());
-    [1.0, 2.0, 2.5, 5.0, 10.0]
+    [1.0, 1.2, 1.6, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0]
         .iter()
         .map(|m| m * power)
         .find(|&v| v >= value)
