@@ -97,11 +97,14 @@ pub struct OptimumState {
     pub done: bool,
 }
 
-/// The range surface for the current inputs, as refined so far.
+/// The range surface as refined so far.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SurfaceState {
     pub surface: Surface,
     pub last: bool,
+    /// The inputs it was computed for; older than the app's while the
+    /// surface for new inputs is being computed.
+    pub generation: u64,
 }
 
 /// A stop of the impact step-through: a name and a normal impulse p.
@@ -228,7 +231,14 @@ impl App {
 
     /// Whether background work for the current inputs is still under way.
     pub fn busy(&self) -> bool {
-        !(self.optimum.is_some_and(|o| o.done) && self.surface.as_ref().is_some_and(|s| s.last))
+        !(self.optimum.is_some_and(|o| o.done) && self.surface_fresh())
+    }
+
+    /// Whether the surface shown is the finest one for the current inputs.
+    pub fn surface_fresh(&self) -> bool {
+        self.surface
+            .as_ref()
+            .is_some_and(|s| s.last && s.generation == self.generation)
     }
 
     /// Recomputes what depends on the inputs, once per batch of events (so a
@@ -244,9 +254,10 @@ impl App {
         let stops = impact_stops(&self.swing.impact).len();
         self.impact_stop = self.impact_stop.min(stops - 1);
         self.generation += 1;
+        // A stale optimum is never shown; the old surface stays, marked
+        // stale, until the new one is at least as fine (see `apply`).
         self.optimum = None;
         self.optimal_path.clear();
-        self.surface = None;
         let start = self
             .warm_start
             .unwrap_or((self.scene.bat.undercut, self.scene.bat.swing_angle));
@@ -294,8 +305,30 @@ impl App {
                     self.optimal_path = self.plot_path(&scene);
                 }
             }
-            Report::Surface { surface, last, .. } => {
-                self.surface = Some(SurfaceState { surface, last });
+            Report::Surface {
+                surface,
+                last,
+                generation,
+            } => {
+                // A coarse surface for new inputs does not replace a finer
+                // one for the old: while a key is held the map then updates
+                // in place, without flashing through blocks, and a repaint
+                // costs only the cells that changed.
+                let cells = |s: &Surface| s.grid.columns * s.grid.rows;
+                let replace = match &self.surface {
+                    None => true,
+                    Some(shown) => {
+                        last || shown.generation == generation
+                            || cells(&surface) >= cells(&shown.surface)
+                    }
+                };
+                if replace {
+                    self.surface = Some(SurfaceState {
+                        surface,
+                        last,
+                        generation,
+                    });
+                }
             }
         }
     }

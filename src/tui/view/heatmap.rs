@@ -60,9 +60,18 @@ fn sample(surface: &Surface, px: usize, py: usize, w: usize, h: usize) -> Option
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let level = app.fence.map(|f| f.distance);
+    let stale = if app
+        .surface
+        .as_ref()
+        .is_some_and(|s| s.generation != app.generation)
+    {
+        " (stale)"
+    } else {
+        ""
+    };
     let title = match level {
-        Some(d) => format!(" Range over (E, ψ) · ── {d:.0} m (fence) "),
-        None => " Range over (E, ψ) ".to_owned(),
+        Some(d) => format!(" Range over (E, ψ){stale} · ── {d:.0} m (fence) "),
+        None => format!(" Range over (E, ψ){stale} "),
     };
     let block = Block::bordered().title(Span::styled(title, title_style()));
     frame.render_widget(block, area);

@@ -227,6 +227,10 @@ fn status_line(frame: &mut Frame, area: Rect, app: &App) {
         None => Span::styled("· optimising… ", Style::new().fg(Color::Yellow)),
     });
     spans.push(match &app.surface {
+        Some(s) if s.generation != app.generation => Span::styled(
+            "· surface stale, updating… ",
+            Style::new().fg(Color::Yellow),
+        ),
         Some(s) if s.last => Span::raw(format!(
             "· surface ✓ {}×{} ",
             s.surface.grid.columns, s.surface.grid.rows
