@@ -366,6 +366,8 @@ impl App {
     }
 
     fn normal_key(&mut self, key: KeyEvent) {
+        // A message lasts until the next key (which may set a new one).
+        self.message = None;
         let shift = key.modifiers.contains(KeyModifiers::SHIFT);
         let alt = key.modifiers.contains(KeyModifiers::ALT);
         let scale = if shift {
@@ -416,7 +418,6 @@ impl App {
             KeyCode::Char(',') | KeyCode::Char('<') => {
                 self.impact_stop = self.impact_stop.saturating_sub(1)
             }
-            KeyCode::Esc => self.message = None,
             _ => {}
         }
     }

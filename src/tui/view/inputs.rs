@@ -100,6 +100,15 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             Style::new().fg(Color::Red).add_modifier(Modifier::BOLD),
         )),
         Some((_, None)) => Paragraph::new(Line::styled("Enter accepts · Esc cancels", dim())),
+        None if app.message.is_some() => {
+            let (message, error) = app.message.as_ref().expect("checked");
+            let style = if *error {
+                Style::new().fg(Color::Red).add_modifier(Modifier::BOLD)
+            } else {
+                Style::new().fg(Color::Green)
+            };
+            Paragraph::new(Line::styled(message.as_str(), style))
+        }
         None => {
             let text = match app.fields[app.selected] {
                 Field::Preset => format!("{} — Enter or o: open a preset", app.description),

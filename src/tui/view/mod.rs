@@ -206,17 +206,9 @@ pub fn draw(frame: &mut Frame, app: &App) {
     }
 }
 
-/// What is being computed and how fresh each result is, or the last message.
+/// What is being computed and how fresh each result is.
 fn status_line(frame: &mut Frame, area: Rect, app: &App) {
     let mut spans = Vec::new();
-    if let Some((message, error)) = &app.message {
-        let style = if *error {
-            Style::new().fg(Color::Red).add_modifier(Modifier::BOLD)
-        } else {
-            Style::new().fg(Color::Green)
-        };
-        spans.push(Span::styled(format!("{message}  "), style));
-    }
     spans.push(Span::raw("readout ✓ "));
     spans.push(match &app.optimum {
         Some(o) if o.done => Span::raw(format!("· optimum ✓ {} evals ", o.evaluations)),

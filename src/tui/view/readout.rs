@@ -101,6 +101,29 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             )),
         ]));
     }
+    // Room to spare (the large layout): the rest of the story.
+    if area.height as usize >= lines.len() + 6 {
+        lines.push(Line::from(vec![
+            label("landing"),
+            Span::raw(format!(
+                "{:.2} m/s at {:.1}° below level",
+                flight.landing_speed,
+                flight.landing_angle.to_degrees()
+            )),
+        ]));
+        lines.push(Line::from(vec![
+            label("pitch"),
+            Span::raw(format!(
+                "{:.1} m/s, descending {:.2}°",
+                app.scene.pitch.speed,
+                impact.descent_angle.to_degrees()
+            )),
+        ]));
+        lines.push(Line::from(vec![
+            label("drag"),
+            Span::raw(app.scene.drag.description()),
+        ]));
+    }
     let block = Block::bordered().title(Span::styled(" Readout ", title_style()));
     frame.render_widget(Paragraph::new(lines).block(block), area);
 }
