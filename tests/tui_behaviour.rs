@@ -164,3 +164,72 @@ fn the_worker_thread_cancels_old_work_and_finishes_the_new() {
     );
     assert!(app.surface.as_ref().unwrap().last);
 }
+
+#[test]
+fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("broken.toml"), "[bat]\nspeed = \"fast\"\n").unwrap();
+    let mut app = app(80, 24, Some(dir.path().to_owned()));
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('L'));
+    key(&mut app, KeyCode::Char('s'));
+    for _ in 0..8 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "quick");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert!(dir.path().join("quick.toml").is_file());
+    assert_eq!(app.preset_name, "quick");
+
+    // Back to the fastball through the picker, then to the saved one.
+    key(&mut app, KeyCode::Char('o'));
+    let Mode::Open { items, .. } = &app.mode else {
+        panic!("the picker is open")
+    };
+    let names: Vec<&str> = items.iter().map(|i| i.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "fastball",
+            "knuckleball",
+            "curveball",
+            "figure5",
+            "broken",
+            "quick"
+        ]
+    );
+    let broken = &items[4];
+    assert!(
+        broken.preset.is_none() && broken.detail.contains("bat.speed"),
+        "{broken:?}"
+    );
+    // Enter on the broken one: its error, and the picker stays.
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Char('k'));
+    }
+    for _ in 0..4 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Open { error: Some(e), .. } => assert!(e.contains("broken.toml"), "{e}"),
+        other => panic!("picker with the error, not {other:?}"),
+    }
+    assert_eq!(app.scene.bat.speed, 35.0);
+    key(&mut app, KeyCode::Char('k'));
+    key(&mut app, KeyCode::Char('k'));
+    key(&mut app, KeyCode::Char('k'));
+    key(&mut app, KeyCode::Char('k'));
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.preset_name, "fastball");
+    assert_eq!(app.scene.bat.speed, 30.0);
+    key(&mut app, KeyCode::Char('o'));
+    key(&mut app, KeyCode::Char('G'));
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.preset_name, "quick");
+    assert_eq!(app.scene.bat.speed, 35.0);
+}

@@ -113,6 +113,7 @@ fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
         "{screen}"
     );
     session.wait_for("optimum ✓");
+    session.wait_for("surface ✓");
     // An idle explorer writes nothing.
     let before = *session.bytes.lock().unwrap();
     thread::sleep(Duration::from_millis(600));
