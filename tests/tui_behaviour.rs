@@ -233,3 +233,17 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
     assert_eq!(app.preset_name, "quick");
     assert_eq!(app.scene.bat.speed, 35.0);
 }
+
+#[test]
+fn colours_fall_back_to_the_256_colour_cube() {
+    use homerun::tui::view::ColorMode;
+    use ratatui::style::Color;
+    let indexed = ColorMode::Indexed;
+    assert_eq!(indexed.rgb((0, 0, 0)), Color::Indexed(16));
+    assert_eq!(indexed.rgb((255, 255, 255)), Color::Indexed(231));
+    // The cube's levels are 0, 95, 135, 175, 215, 255: each channel goes to
+    // the nearest.
+    assert_eq!(indexed.rgb((95, 135, 175)), Color::Indexed(16 + 36 + 12 + 3));
+    assert_eq!(indexed.rgb((100, 130, 180)), Color::Indexed(16 + 36 + 12 + 3));
+    assert_eq!(ColorMode::TrueColor.rgb((1, 2, 3)), Color::Rgb(1, 2, 3));
+}

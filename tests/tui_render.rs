@@ -17,6 +17,14 @@ fn default_screen() {
 }
 
 #[test]
+fn range_surface_tab_on_a_small_screen() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('2'));
+    insta::assert_snapshot!("surface_80x24", screen(&app));
+}
+
+#[test]
 fn impact_phase_view() {
     for (w, h) in SIZES {
         let mut app = app(w, h, None);

@@ -13,6 +13,7 @@ use std::io::{self, IsTerminal, Write};
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::TryRecvError;
 use std::time::Duration;
 
 use ratatui::crossterm::event::{self, Event};
@@ -32,6 +33,8 @@ pub enum TuiError {
         "the explorer needs a terminal (stdin and stdout must be a TTY); for plain numbers use the commands: see `homerun --help`"
     )]
     NoTerminal,
+    #[error("the background worker stopped unexpectedly")]
+    WorkerDied,
     #[error("terminal: {0}")]
     Io(#[from] io::Error),
 }
@@ -92,8 +95,14 @@ pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError>
             }
             app.flush();
         }
-        while let Ok(report) = worker.reports.try_recv() {
-            app.apply(report);
+        loop {
+            match worker.reports.try_recv() {
+                Ok(report) => app.apply(report),
+                Err(TryRecvError::Empty) => break,
+                // The worker is gone (it panicked): stop rather than show a
+                // screen that will never update.
+                Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
+            }
         }
     }
     Ok(())

@@ -156,24 +156,24 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     draw_pixels(frame.buffer_mut(), plot, &colour);
 
     // Markers: the current swing and the optimum.
-    let to_cell = |e: f64, psi: f64| -> Option<(u16, u16)> {
+    // A point outside the window is pinned to its edge.
+    let to_cell = |e: f64, psi: f64| -> (u16, u16, bool) {
         let fx = (e - window.undercut.0) / (window.undercut.1 - window.undercut.0);
         let fy = (psi - window.swing_angle.0) / (window.swing_angle.1 - window.swing_angle.0);
-        ((0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy)).then(|| {
-            let x = plot.x + ((fx * (plot.width - 1) as f64).round() as u16);
-            let y = plot.y + (((1.0 - fy) * (plot.height - 1) as f64).round() as u16);
-            (x, y)
-        })
+        let inside = (0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy);
+        let (fx, fy) = (fx.clamp(0.0, 1.0), fy.clamp(0.0, 1.0));
+        let x = plot.x + ((fx * (plot.width - 1) as f64).round() as u16);
+        let y = plot.y + (((1.0 - fy) * (plot.height - 1) as f64).round() as u16);
+        (x, y, inside)
     };
     let buf = frame.buffer_mut();
-    let mark = |buf: &mut Buffer, at: Option<(u16, u16)>, symbol: &str, colour: Color| {
-        if let Some((x, y)) = at {
-            buf[(x, y)]
-                .set_symbol(symbol)
-                .set_fg(colour)
-                .set_bg(Color::Black)
-                .set_style(Style::new().add_modifier(Modifier::BOLD));
-        }
+    let mark = |buf: &mut Buffer, (x, y, inside): (u16, u16, bool), symbol: &str, colour: Color| {
+        let symbol = if inside { symbol } else { "◆" };
+        buf[(x, y)]
+            .set_symbol(symbol)
+            .set_fg(colour)
+            .set_bg(Color::Black)
+            .set_style(Style::new().add_modifier(Modifier::BOLD));
     };
     if let Some(o) = app.optimum.filter(|o| o.done) {
         mark(
