@@ -75,7 +75,7 @@ pub fn is_wide(area: Rect) -> bool {
     area.width >= 140 && area.height >= 40
 }
 
-const READOUT_HEIGHT: u16 = 10;
+const READOUT_HEIGHT: u16 = 9;
 
 pub fn layout(area: Rect, tab: Tab) -> Panes {
     let [body, status] = Layout::vertical([Constraint::Fill(1), Constraint::Length(1)]).areas(area);
