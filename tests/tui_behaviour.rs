@@ -243,7 +243,13 @@ fn colours_fall_back_to_the_256_colour_cube() {
     assert_eq!(indexed.rgb((255, 255, 255)), Color::Indexed(231));
     // The cube's levels are 0, 95, 135, 175, 215, 255: each channel goes to
     // the nearest.
-    assert_eq!(indexed.rgb((95, 135, 175)), Color::Indexed(16 + 36 + 12 + 3));
-    assert_eq!(indexed.rgb((100, 130, 180)), Color::Indexed(16 + 36 + 12 + 3));
+    assert_eq!(
+        indexed.rgb((95, 135, 175)),
+        Color::Indexed(16 + 36 + 12 + 3)
+    );
+    assert_eq!(
+        indexed.rgb((100, 130, 180)),
+        Color::Indexed(16 + 36 + 12 + 3)
+    );
     assert_eq!(ColorMode::TrueColor.rgb((1, 2, 3)), Color::Rgb(1, 2, 3));
 }

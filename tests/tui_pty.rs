@@ -10,7 +10,9 @@ use portable_pty::{CommandBuilder, PtySize, native_pty_system};
 
 struct Session {
     screen: Arc<Mutex<vt100::Parser>>,
-    bytes: Arc<Mutex<usize>>,
+    /// Everything the explorer wrote.
+    bytes: Arc<Mutex<Vec<u8>>>,
+    reader: Option<thread::JoinHandle<()>>,
     writer: Box<dyn Write + Send>,
     child: Box<dyn portable_pty::Child + Send + Sync>,
     _master: Box<dyn portable_pty::MasterPty + Send>,
@@ -39,21 +41,22 @@ impl Session {
             NonZeroU16::new(cols).unwrap(),
             0,
         )));
-        let bytes = Arc::new(Mutex::new(0));
+        let bytes = Arc::new(Mutex::new(Vec::new()));
         let (s, b) = (Arc::clone(&screen), Arc::clone(&bytes));
-        thread::spawn(move || {
+        let reader = thread::spawn(move || {
             let mut buf = [0u8; 8192];
             while let Ok(n) = reader.read(&mut buf) {
                 if n == 0 {
                     break;
                 }
                 s.lock().unwrap().process(&buf[..n]);
-                *b.lock().unwrap() += n;
+                b.lock().unwrap().extend_from_slice(&buf[..n]);
             }
         });
         Session {
             screen,
             bytes,
+            reader: Some(reader),
             writer,
             child,
             _master: pair.master,
@@ -90,6 +93,10 @@ impl Session {
         let start = Instant::now();
         loop {
             if let Some(status) = self.child.try_wait().unwrap() {
+                // The reader ends when the terminal closes: all output is in.
+                if let Some(reader) = self.reader.take() {
+                    reader.join().unwrap();
+                }
                 return status.exit_code();
             }
             assert!(start.elapsed() < Duration::from_secs(30), "did not exit");
@@ -115,9 +122,9 @@ fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
     session.wait_for("optimum ✓");
     session.wait_for("surface ✓");
     // An idle explorer writes nothing.
-    let before = *session.bytes.lock().unwrap();
+    let before = session.bytes.lock().unwrap().len();
     thread::sleep(Duration::from_millis(600));
-    assert_eq!(*session.bytes.lock().unwrap(), before, "idle output");
+    assert_eq!(session.bytes.lock().unwrap().len(), before, "idle output");
     // Help, then save under a new name.
     session.press("?");
     session.wait_for("this help");
@@ -129,6 +136,19 @@ fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
     assert!(dir.path().join("fast35.toml").is_file());
     session.press("q");
     assert_eq!(session.exit_code(), 0);
+    // Every frame is wrapped in a synchronized update (DEC mode 2026).
+    let count = |pattern: &[u8]| {
+        let bytes = session.bytes.lock().unwrap();
+        bytes
+            .windows(pattern.len())
+            .filter(|w| *w == pattern)
+            .count()
+    };
+    let (begun, ended) = (count(b"\x1b[?2026h"), count(b"\x1b[?2026l"));
+    assert!(
+        begun >= 5 && begun == ended,
+        "synchronized frames {begun}/{ended}"
+    );
 
     // Reopen on the saved preset: the bat speed is back.
     let mut session = Session::start(
