@@ -253,3 +253,16 @@ fn colours_fall_back_to_the_256_colour_cube() {
     );
     assert_eq!(ColorMode::TrueColor.rgb((1, 2, 3)), Color::Rgb(1, 2, 3));
 }
+
+#[test]
+fn feet_are_a_display_choice() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let range = app.swing.flight.range;
+    key(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.swing.flight.range, range, "nothing is recomputed");
+    let screen = screen(&app);
+    // 134.698780 m is 441.925 ft.
+    assert!(screen.contains("range 441.93 ft"), "{screen}");
+    assert!(screen.contains("x (ft)"), "{screen}");
+}

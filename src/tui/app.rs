@@ -184,6 +184,8 @@ pub struct App {
     /// The last converged optimum, whatever the inputs: the warm start.
     pub warm_start: Option<(f64, f64)>,
     pub impact_stop: usize,
+    /// Show distances in feet instead of metres (display only).
+    pub feet: bool,
     pub quit: bool,
     /// Something changed since the last frame.
     pub dirty: bool,
@@ -191,7 +193,19 @@ pub struct App {
     job: Option<Job>,
 }
 
+/// Metres per foot.
+pub const FOOT: f64 = 0.3048;
+
 impl App {
+    /// A distance in the chosen unit: (value, unit).
+    pub fn distance(&self, metres: f64) -> (f64, &'static str) {
+        if self.feet {
+            (metres / FOOT, "ft")
+        } else {
+            (metres, "m")
+        }
+    }
+
     pub fn new(preset: Preset, presets_dir: Option<PathBuf>, color: ColorMode, size: Rect) -> App {
         let swing = simulate(&preset.scene, Purpose::Readout);
         let mut app = App {
@@ -215,6 +229,7 @@ impl App {
             generation: 0,
             warm_start: None,
             impact_stop: 0,
+            feet: false,
             quit: false,
             dirty: true,
             inputs_changed: true,
@@ -400,6 +415,7 @@ impl App {
             }
             KeyCode::Char('o') => self.open_picker(),
             KeyCode::Char('r') => self.reset_to_optimum(),
+            KeyCode::Char('u') => self.feet = !self.feet,
             KeyCode::Tab => {
                 let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);
                 self.tab = Tab::ALL[(k + 1) % Tab::ALL.len()];

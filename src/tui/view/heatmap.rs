@@ -70,7 +70,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         ""
     };
     let title = match level {
-        Some(d) => format!(" Range over (E, ψ){stale} · ── {d:.0} m (fence) "),
+        Some(d) => {
+            let (d, unit) = app.distance(d);
+            format!(" Range over (E, ψ){stale} · ── {d:.0} {unit} (fence) ")
+        }
         None => format!(" Range over (E, ψ){stale} "),
     };
     let block = Block::bordered().title(Span::styled(title, title_style()));
@@ -208,7 +211,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     buf.set_string(
         bar_area.x + 2,
         bar_area.bottom().saturating_sub(1),
-        format!("{min:>5.0}"),
+        format!("{:>5.0}", app.distance(min).0),
         dim(),
     );
 }

@@ -19,6 +19,7 @@ pub const KEY_HELP: &[(&str, &str)] = &[
     ("Enter  e", "type a value (Enter accepts, Esc cancels)"),
     ("g G", "first / last input"),
     ("r", "move the swing (E, ψ) to the optimum"),
+    ("u", "distances in metres / feet"),
     (
         "Tab  1 2 3",
         "flight / range surface / impact (small screens)",

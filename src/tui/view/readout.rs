@@ -14,6 +14,8 @@ use crate::tui::app::App;
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let impact = &app.swing.impact;
     let flight = &app.swing.flight;
+    let u = app.distance(1.0).1;
+    let d = |metres: f64| app.distance(metres).0;
     let label = |s: &'static str| Span::styled(format!("{s:<9}"), dim());
     let mut lines = vec![
         Line::from(vec![
@@ -28,8 +30,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         Line::from(vec![
             label("flight"),
             Span::raw(format!(
-                "range {:.2} m  {:.2} s  apex {:.1} m",
-                flight.range, flight.flight_time, flight.apex
+                "range {:.2} {u}  {:.2} s  apex {:.1} {u}",
+                d(flight.range),
+                flight.flight_time,
+                d(flight.apex)
             )),
         ]),
         Line::from(vec![
@@ -69,10 +73,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 label("optimum"),
                 Span::styled(
                     format!(
-                        "E {:.2} mm  ψ {:.4}  {:.2} m{state}",
+                        "E {:.2} mm  ψ {:.4}  {:.2} {u}{state}",
                         o.best.undercut * 1e3,
                         o.best.swing_angle,
-                        o.best.range
+                        d(o.best.range)
                     ),
                     style,
                 ),
@@ -80,10 +84,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             lines.push(Line::from(vec![
                 label("you −opt"),
                 Span::raw(format!(
-                    "ΔE {:+.2} mm  Δψ {:+.4}  {:+.2} m",
+                    "ΔE {:+.2} mm  Δψ {:+.4}  {:+.2} {u}",
                     (e - o.best.undercut) * 1e3,
                     psi - o.best.swing_angle,
-                    flight.range - o.best.range
+                    d(flight.range - o.best.range)
                 )),
             ]));
         }
@@ -96,8 +100,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         lines.push(Line::from(vec![
             label("fence"),
             Span::raw(format!(
-                "{:.1} m, {:.1} m high",
-                fence.distance, fence.height
+                "{:.1} {u}, {:.1} {u} high",
+                d(fence.distance),
+                d(fence.height)
             )),
         ]));
     }

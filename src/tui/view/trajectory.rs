@@ -26,24 +26,33 @@ pub fn nice_ceiling(value: f64) -> f64 {
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let flight = &app.swing.flight;
+    let (k, unit) = app.distance(1.0);
+    let scaled = |path: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        path.iter().map(|&(x, y)| (k * x, k * y)).collect()
+    };
+    let (path, optimal_path) = (scaled(&app.path), scaled(&app.optimal_path));
     let optimal_range = app.optimum.filter(|o| o.done).map_or(0.0, |o| o.best.range);
     let optimal_apex = app.optimal_path.iter().map(|p| p.1).fold(0.0, f64::max);
-    let fence = app.fence.map_or((0.0, 0.0), |f| (f.distance, f.height));
-    let x_max = nice_ceiling(1.05 * flight.range.max(optimal_range).max(fence.0));
-    let y_max = nice_ceiling(1.1 * flight.apex.max(optimal_apex).max(fence.1));
+    let fence = app
+        .fence
+        .map_or((0.0, 0.0), |f| (k * f.distance, k * f.height));
+    let x_max =
+        nice_ceiling(1.05 * k * flight.range.max(optimal_range)).max(nice_ceiling(1.05 * fence.0));
+    let y_max =
+        nice_ceiling(1.1 * k * flight.apex.max(optimal_apex)).max(nice_ceiling(1.1 * fence.1));
 
-    let apex = [(flight.apex_distance, flight.apex)];
-    let landing = [(flight.range, 0.0)];
+    let apex = [(k * flight.apex_distance, k * flight.apex)];
+    let landing = [(k * flight.range, 0.0)];
     let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
     let mut datasets = Vec::new();
-    if !app.optimal_path.is_empty() {
+    if !optimal_path.is_empty() {
         datasets.push(
             Dataset::default()
                 .name("optimal")
                 .marker(Marker::Braille)
                 .graph_type(GraphType::Line)
                 .style(Style::new().fg(Color::Green))
-                .data(&app.optimal_path),
+                .data(&optimal_path),
         );
     }
     datasets.push(
@@ -52,7 +61,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             .marker(Marker::Braille)
             .graph_type(GraphType::Line)
             .style(Style::new().fg(Color::Cyan))
-            .data(&app.path),
+            .data(&path),
     );
     datasets.push(
         Dataset::default()
@@ -82,20 +91,22 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     }
     let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| Span::styled(format!("{v:.0}"), dim()));
     let title = format!(
-        " Trajectory: {:.1} m, apex {:.1} m at {:.1} m ",
-        flight.range, flight.apex, flight.apex_distance
+        " Trajectory: {:.1} {unit}, apex {:.1} {unit} at {:.1} {unit} ",
+        k * flight.range,
+        k * flight.apex,
+        k * flight.apex_distance
     );
     let chart = Chart::new(datasets)
         .block(Block::bordered().title(Span::styled(title, title_style())))
         .x_axis(
             Axis::default()
-                .title(Span::styled("x (m)", dim()))
+                .title(Span::styled(format!("x ({unit})"), dim()))
                 .bounds([0.0, x_max])
                 .labels(labels(x_max)),
         )
         .y_axis(
             Axis::default()
-                .title(Span::styled("y (m)", dim()))
+                .title(Span::styled(format!("y ({unit})"), dim()))
                 .bounds([0.0, y_max])
                 .labels(labels(y_max)),
         )
