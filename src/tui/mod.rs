@@ -49,13 +49,15 @@ impl Drop for Restore {
     }
 }
 
-/// Runs the explorer on `preset` until the user quits or SIGTERM/SIGHUP.
+/// Runs the explorer on `preset` until the user quits or a signal (TERM,
+/// HUP, INT) asks it to stop; the terminal is restored either way.
 pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError> {
     if !(io::stdin().is_terminal() && io::stdout().is_terminal()) {
         return Err(TuiError::NoTerminal);
     }
     let stop = Arc::new(AtomicBool::new(false));
-    for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP] {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    for signal in [SIGTERM, SIGHUP, SIGINT] {
         signal_hook::flag::register(signal, Arc::clone(&stop))?;
     }
     let mut terminal = ratatui::try_init()?;
