@@ -5,8 +5,8 @@ use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
-use ratatui::text::Span;
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, LegendPosition};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType};
 
 use super::{dim, title_style};
 use crate::tui::app::App;
@@ -90,14 +90,23 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         );
     }
     let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| Span::styled(format!("{v:.0}"), dim()));
+    // The legend sits in the border, where it hides no data.
+    let mut legend = vec![Span::styled("━ now ", Style::new().fg(Color::Cyan))];
+    if !optimal_path.is_empty() {
+        legend.push(Span::styled("━ best ", Style::new().fg(Color::Green)));
+    }
+    let legend = Line::from(legend);
     let title = format!(
-        " Trajectory: {:.1} {unit}, apex {:.1} {unit} at {:.1} {unit} ",
+        " Trajectory {:.1} {unit}, apex {:.1} {unit} ",
         k * flight.range,
-        k * flight.apex,
-        k * flight.apex_distance
+        k * flight.apex
     );
     let chart = Chart::new(datasets)
-        .block(Block::bordered().title(Span::styled(title, title_style())))
+        .block(
+            Block::bordered()
+                .title(Span::styled(title, title_style()))
+                .title_top(legend.right_aligned()),
+        )
         .x_axis(
             Axis::default()
                 .title(Span::styled(format!("x ({unit})"), dim()))
@@ -110,10 +119,6 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 .bounds([0.0, y_max])
                 .labels(labels(y_max)),
         )
-        .legend_position(Some(LegendPosition::TopRight))
-        .hidden_legend_constraints((
-            ratatui::layout::Constraint::Percentage(40),
-            ratatui::layout::Constraint::Percentage(60),
-        ));
+        .legend_position(None);
     frame.render_widget(chart, area);
 }
