@@ -11,6 +11,7 @@ pub mod precision;
 pub mod preset;
 pub mod solve;
 pub mod study;
+pub mod tui;
 
 pub use model::scene::Scene;
 pub use model::{Swing, range, simulate};

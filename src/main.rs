@@ -10,9 +10,7 @@ fn main() -> ExitCode {
     };
     let command = cli.command.as_ref().unwrap_or(&default);
     let result = match command {
-        Command::Tui { .. } => Err(cli::UsageError::Other(
-            "the explorer is not built yet; see `homerun --help` for the commands".into(),
-        )),
+        Command::Tui { preset } => explore(&cli, preset),
         command => cli::run(&cli, command),
     };
     match result {
@@ -22,4 +20,11 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s) folder.
+fn explore(cli: &Cli, preset: &str) -> Result<(), cli::UsageError> {
+    let dir = cli::presets_dir(cli);
+    let preset = homerun::preset::load(preset, dir.as_deref())?;
+    homerun::tui::run(preset, dir).map_err(|e| cli::UsageError::Other(e.to_string()))
 }

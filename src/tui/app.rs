@@ -1,0 +1,662 @@
+//! The explorer's state, the events it understands and `update()`: the only
+//! place the state changes. Drawing (in `view`) only reads it.
+
+use std::path::PathBuf;
+
+use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+use ratatui::layout::Rect;
+use ratatui_textarea::TextArea;
+
+use super::view::{self, ColorMode};
+use super::worker::{Job, Report};
+use crate::model::aero::DragModel;
+use crate::model::flight;
+use crate::model::impact::{Impact, Regime};
+use crate::model::scene::{DRAG_KEY, KEYS, Scene};
+use crate::precision::Purpose;
+use crate::preset::{self, Fence, Preset, PresetError, Source};
+use crate::solve::optimize::Point;
+use crate::study::{Grid, Surface};
+use crate::{Swing, simulate};
+
+/// One row of the inputs pane.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Field {
+    /// The preset's name: Enter opens the picker.
+    Preset,
+    /// A numeric input: an index into [`KEYS`].
+    Key(usize),
+    /// The drag model.
+    Drag,
+}
+
+/// Every row of the inputs pane, top to bottom.
+pub fn fields() -> Vec<Field> {
+    let mut all = vec![Field::Preset];
+    all.extend((0..KEYS.len()).map(Field::Key));
+    all.push(Field::Drag);
+    all
+}
+
+/// The view shown beside the inputs on a small screen (a large one shows all).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tab {
+    Flight,
+    Surface,
+    Impact,
+}
+
+impl Tab {
+    pub const ALL: [Tab; 3] = [Tab::Flight, Tab::Surface, Tab::Impact];
+    pub fn title(self) -> &'static str {
+        match self {
+            Tab::Flight => "1 Flight",
+            Tab::Surface => "2 Range surface",
+            Tab::Impact => "3 Impact",
+        }
+    }
+}
+
+/// A preset in the picker: loadable, or broken with its error.
+#[derive(Clone, Debug)]
+pub struct PickItem {
+    pub name: String,
+    pub detail: String,
+    pub preset: Option<Preset>,
+}
+
+/// What the keyboard is talking to.
+#[derive(Debug)]
+pub enum Mode {
+    Normal,
+    /// Typing a value for `field`; `error` says why the last Enter was refused.
+    Edit {
+        field: Field,
+        text: TextArea<'static>,
+        error: Option<String>,
+    },
+    /// Typing a name to save the inputs under.
+    Save {
+        text: TextArea<'static>,
+        error: Option<String>,
+    },
+    /// Choosing a preset to load.
+    Open {
+        items: Vec<PickItem>,
+        selected: usize,
+        error: Option<String>,
+    },
+    Help,
+}
+
+/// The optimiser's latest word for the current inputs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OptimumState {
+    pub best: Point,
+    pub evaluations: u32,
+    pub done: bool,
+}
+
+/// The range surface as refined so far.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SurfaceState {
+    pub surface: Surface,
+    pub last: bool,
+    /// The inputs it was computed for; older than the app's while the
+    /// surface for new inputs is being computed.
+    pub generation: u64,
+}
+
+/// A stop of the impact step-through: a name and a normal impulse p.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stop {
+    pub name: &'static str,
+    pub impulse: f64,
+}
+
+/// The phases of the collision in order of impulse (paper Fig. 2).
+pub fn impact_stops(impact: &Impact) -> Vec<Stop> {
+    let (pc, pf) = (impact.compression_impulse, impact.separation_impulse);
+    let mut stops = vec![
+        Stop {
+            name: "approach",
+            impulse: 0.0,
+        },
+        Stop {
+            name: "compression",
+            impulse: 0.5 * pc,
+        },
+        Stop {
+            name: "max compression",
+            impulse: pc,
+        },
+        Stop {
+            name: "restitution",
+            impulse: 0.5 * (pc + pf),
+        },
+        Stop {
+            name: "separation",
+            impulse: pf,
+        },
+    ];
+    if impact.regime == Regime::Stick {
+        stops.push(Stop {
+            name: "slip halts, stick",
+            impulse: impact.slip_halt_impulse,
+        });
+    }
+    stops.sort_by(|a, b| a.impulse.total_cmp(&b.impulse));
+    stops
+}
+
+/// The heatmap's window: the paper's Fig. 7, E from 0 to 50 mm, ψ from
+/// −0.6 to 1.0 rad.
+pub fn heatmap_window() -> Grid {
+    Grid::figure7(2, 2)
+}
+
+/// The explorer.
+#[derive(Debug)]
+pub struct App {
+    pub preset_name: String,
+    pub description: String,
+    pub scene: Scene,
+    pub fence: Option<Fence>,
+    pub presets_dir: Option<PathBuf>,
+    pub fields: Vec<Field>,
+    pub selected: usize,
+    pub mode: Mode,
+    pub tab: Tab,
+    /// The last thing worth telling the user, and whether it is an error.
+    pub message: Option<(String, bool)>,
+    pub color: ColorMode,
+    pub size: Rect,
+    /// The current swing at the readout's precision.
+    pub swing: Swing,
+    /// The current swing's path, sampled at the plot's resolution.
+    pub path: Vec<(f64, f64)>,
+    pub optimum: Option<OptimumState>,
+    /// The optimal swing's path, once the optimiser has converged.
+    pub optimal_path: Vec<(f64, f64)>,
+    pub surface: Option<SurfaceState>,
+    /// Bumped on every change of inputs; results for older ones are dropped.
+    pub generation: u64,
+    /// The last converged optimum, whatever the inputs: the warm start.
+    pub warm_start: Option<(f64, f64)>,
+    pub impact_stop: usize,
+    /// Show distances in feet instead of metres (display only).
+    pub feet: bool,
+    pub quit: bool,
+    /// Something changed since the last frame.
+    pub dirty: bool,
+    inputs_changed: bool,
+    job: Option<Job>,
+}
+
+/// Metres per foot.
+pub const FOOT: f64 = 0.3048;
+
+impl App {
+    /// A distance in the chosen unit: (value, unit).
+    pub fn distance(&self, metres: f64) -> (f64, &'static str) {
+        if self.feet {
+            (metres / FOOT, "ft")
+        } else {
+            (metres, "m")
+        }
+    }
+
+    pub fn new(preset: Preset, presets_dir: Option<PathBuf>, color: ColorMode, size: Rect) -> App {
+        let swing = simulate(&preset.scene, Purpose::Readout);
+        let mut app = App {
+            preset_name: preset.name,
+            description: preset.description,
+            scene: preset.scene,
+            fence: preset.fence,
+            presets_dir,
+            fields: fields(),
+            selected: 1 + KEYS.iter().position(|k| k.name == "bat.speed").unwrap_or(0),
+            mode: Mode::Normal,
+            tab: Tab::Flight,
+            message: None,
+            color,
+            size,
+            swing,
+            path: Vec::new(),
+            optimum: None,
+            optimal_path: Vec::new(),
+            surface: None,
+            generation: 0,
+            warm_start: None,
+            impact_stop: 0,
+            feet: false,
+            quit: false,
+            dirty: true,
+            inputs_changed: true,
+            job: None,
+        };
+        app.flush();
+        app
+    }
+
+    /// The work the background should do now, if any (taken once).
+    pub fn take_job(&mut self) -> Option<Job> {
+        self.job.take()
+    }
+
+    /// Whether background work for the current inputs is still under way.
+    pub fn busy(&self) -> bool {
+        !(self.optimum.is_some_and(|o| o.done) && self.surface_fresh())
+    }
+
+    /// Whether the surface shown is the finest one for the current inputs.
+    pub fn surface_fresh(&self) -> bool {
+        self.surface
+            .as_ref()
+            .is_some_and(|s| s.last && s.generation == self.generation)
+    }
+
+    /// Recomputes what depends on the inputs, once per batch of events (so a
+    /// held-down key costs one computation per frame, not per repeat).
+    pub fn flush(&mut self) {
+        if !self.inputs_changed {
+            return;
+        }
+        self.inputs_changed = false;
+        self.dirty = true;
+        self.swing = simulate(&self.scene, Purpose::Readout);
+        self.path = self.plot_path(&self.scene);
+        let stops = impact_stops(&self.swing.impact).len();
+        self.impact_stop = self.impact_stop.min(stops - 1);
+        self.generation += 1;
+        // A stale optimum is never shown; the old surface stays, marked
+        // stale, until the new one is at least as fine (see `apply`).
+        self.optimum = None;
+        self.optimal_path.clear();
+        let start = self
+            .warm_start
+            .unwrap_or((self.scene.bat.undercut, self.scene.bat.swing_angle));
+        self.job = Some(Job {
+            generation: self.generation,
+            scene: self.scene,
+            start,
+            window: heatmap_window(),
+            resolution: view::heatmap_resolution(self.size),
+        });
+    }
+
+    fn plot_path(&self, scene: &Scene) -> Vec<(f64, f64)> {
+        let samples = view::trajectory_samples(self.size);
+        let impact = Impact::new(scene);
+        let (flight, launch) = crate::model::launch(scene, &impact);
+        let (_, points) =
+            flight::trajectory(&flight, &launch, &Purpose::Plot.flight_options(), samples);
+        points.iter().map(|p| (p.x, p.y)).collect()
+    }
+
+    /// Takes in a background result, unless it is for older inputs.
+    pub fn apply(&mut self, report: Report) {
+        if report.generation() != self.generation {
+            return;
+        }
+        self.dirty = true;
+        match report {
+            Report::Optimum {
+                best,
+                evaluations,
+                done,
+                ..
+            } => {
+                self.optimum = Some(OptimumState {
+                    best,
+                    evaluations,
+                    done,
+                });
+                if done {
+                    self.warm_start = Some((best.undercut, best.swing_angle));
+                    let mut scene = self.scene;
+                    scene.bat.undercut = best.undercut;
+                    scene.bat.swing_angle = best.swing_angle;
+                    self.optimal_path = self.plot_path(&scene);
+                }
+            }
+            Report::Surface {
+                surface,
+                last,
+                generation,
+            } => {
+                // A coarse surface for new inputs does not replace a finer
+                // one for the old: while a key is held the map then updates
+                // in place, without flashing through blocks, and a repaint
+                // costs only the cells that changed.
+                let cells = |s: &Surface| s.grid.columns * s.grid.rows;
+                let replace = match &self.surface {
+                    None => true,
+                    Some(shown) => {
+                        last || shown.generation == generation
+                            || cells(&surface) >= cells(&shown.surface)
+                    }
+                };
+                if replace {
+                    self.surface = Some(SurfaceState {
+                        surface,
+                        last,
+                        generation,
+                    });
+                }
+            }
+        }
+    }
+
+    pub fn handle(&mut self, event: &Event) {
+        match event {
+            Event::Key(key) if key.kind != KeyEventKind::Release => self.key(*key),
+            Event::Resize(columns, rows) => {
+                self.size = Rect::new(0, 0, *columns, *rows);
+                self.dirty = true;
+                // The plot and the heatmap follow the new resolution.
+                self.inputs_changed = true;
+            }
+            _ => {}
+        }
+    }
+
+    fn key(&mut self, key: KeyEvent) {
+        if key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL) {
+            self.quit = true;
+            return;
+        }
+        self.dirty = true;
+        match std::mem::replace(&mut self.mode, Mode::Normal) {
+            Mode::Normal => self.normal_key(key),
+            Mode::Help => {}
+            Mode::Edit { field, text, error } => self.edit_key(key, field, text, error),
+            Mode::Save { text, error } => self.save_key(key, text, error),
+            Mode::Open {
+                items,
+                selected,
+                error,
+            } => self.open_key(key, items, selected, error),
+        }
+    }
+
+    fn normal_key(&mut self, key: KeyEvent) {
+        // A message lasts until the next key (which may set a new one).
+        self.message = None;
+        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
+        let alt = key.modifiers.contains(KeyModifiers::ALT);
+        let scale = if shift {
+            10.0
+        } else if alt {
+            0.1
+        } else {
+            1.0
+        };
+        match key.code {
+            KeyCode::Char('q') => self.quit = true,
+            KeyCode::Char('?') => self.mode = Mode::Help,
+            KeyCode::Char('j') | KeyCode::Down => {
+                self.selected = (self.selected + 1).min(self.fields.len() - 1)
+            }
+            KeyCode::Char('k') | KeyCode::Up => self.selected = self.selected.saturating_sub(1),
+            KeyCode::Char('g') | KeyCode::Home => self.selected = 0,
+            KeyCode::Char('G') | KeyCode::End => self.selected = self.fields.len() - 1,
+            KeyCode::Char('l') | KeyCode::Right => self.nudge(scale),
+            KeyCode::Char('h') | KeyCode::Left => self.nudge(-scale),
+            KeyCode::Char('L') => self.nudge(10.0),
+            KeyCode::Char('H') => self.nudge(-10.0),
+            KeyCode::Char(']') => self.nudge(0.1),
+            KeyCode::Char('[') => self.nudge(-0.1),
+            KeyCode::Enter | KeyCode::Char('e') => self.start_edit(),
+            KeyCode::Char('s') => {
+                let mut text = TextArea::new(vec![self.preset_name.clone()]);
+                text.move_cursor(ratatui_textarea::CursorMove::End);
+                self.mode = Mode::Save { text, error: None };
+            }
+            KeyCode::Char('o') => self.open_picker(),
+            KeyCode::Char('r') => self.reset_to_optimum(),
+            KeyCode::Char('u') => self.feet = !self.feet,
+            KeyCode::Tab => {
+                let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);
+                self.tab = Tab::ALL[(k + 1) % Tab::ALL.len()];
+            }
+            KeyCode::BackTab => {
+                let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);
+                self.tab = Tab::ALL[(k + Tab::ALL.len() - 1) % Tab::ALL.len()];
+            }
+            KeyCode::Char('1') => self.tab = Tab::Flight,
+            KeyCode::Char('2') => self.tab = Tab::Surface,
+            KeyCode::Char('3') => self.tab = Tab::Impact,
+            KeyCode::Char('.') | KeyCode::Char('>') => {
+                let last = impact_stops(&self.swing.impact).len() - 1;
+                self.impact_stop = (self.impact_stop + 1).min(last);
+            }
+            KeyCode::Char(',') | KeyCode::Char('<') => {
+                self.impact_stop = self.impact_stop.saturating_sub(1)
+            }
+            _ => {}
+        }
+    }
+
+    /// Moves the selected input by `scale` of its step, if the result is valid.
+    fn nudge(&mut self, scale: f64) {
+        match self.fields[self.selected] {
+            Field::Preset => {}
+            Field::Drag => {
+                let all = DragModel::ALL;
+                let k = all.iter().position(|d| *d == self.scene.drag).unwrap_or(0);
+                let n = all.len() as isize;
+                let next = (k as isize + scale.signum() as isize).rem_euclid(n) as usize;
+                self.scene.drag = all[next];
+                self.inputs_changed = true;
+            }
+            Field::Key(k) => {
+                let key = &KEYS[k];
+                let mut scene = self.scene;
+                let value = (key.get)(&scene) + scale * key.step;
+                // Snap to a thousandth of the step, so repeated nudges do not
+                // accumulate rounding noise in the display.
+                let quantum = key.step * 1e-3;
+                (key.set)(&mut scene, (value / quantum).round() * quantum);
+                match scene.validate() {
+                    Ok(()) => {
+                        self.scene = scene;
+                        self.inputs_changed = true;
+                        self.message = None;
+                    }
+                    Err(error) => self.message = Some((error.to_string(), true)),
+                }
+            }
+        }
+    }
+
+    fn start_edit(&mut self) {
+        let field = self.fields[self.selected];
+        let current = match field {
+            Field::Preset => return self.open_picker(),
+            Field::Drag => self.scene.drag.name().to_owned(),
+            Field::Key(k) => view::format_value(&KEYS[k], (KEYS[k].get)(&self.scene)),
+        };
+        let mut text = TextArea::new(vec![current]);
+        text.move_cursor(ratatui_textarea::CursorMove::End);
+        self.mode = Mode::Edit {
+            field,
+            text,
+            error: None,
+        };
+    }
+
+    fn edit_key(
+        &mut self,
+        key: KeyEvent,
+        field: Field,
+        mut text: TextArea<'static>,
+        error: Option<String>,
+    ) {
+        match key.code {
+            KeyCode::Esc => {}
+            KeyCode::Enter => {
+                let typed = text.lines().join("");
+                let name = match field {
+                    Field::Key(k) => KEYS[k].name,
+                    Field::Drag => DRAG_KEY,
+                    Field::Preset => return,
+                };
+                let mut scene = self.scene;
+                match scene.set_text(name, &typed).and_then(|()| scene.validate()) {
+                    Ok(()) => {
+                        self.scene = scene;
+                        self.inputs_changed = true;
+                        self.message = None;
+                    }
+                    Err(e) => {
+                        self.mode = Mode::Edit {
+                            field,
+                            text,
+                            error: Some(e.to_string()),
+                        }
+                    }
+                }
+            }
+            _ => {
+                text.input(key);
+                self.mode = Mode::Edit { field, text, error };
+            }
+        }
+    }
+
+    fn save_key(&mut self, key: KeyEvent, mut text: TextArea<'static>, error: Option<String>) {
+        match key.code {
+            KeyCode::Esc => {}
+            KeyCode::Enter => {
+                let name = text.lines().join("").trim().to_owned();
+                match self.save(&name) {
+                    Ok(path) => {
+                        self.preset_name = name;
+                        self.message = Some((format!("saved {}", path.display()), false));
+                    }
+                    Err(e) => {
+                        self.mode = Mode::Save {
+                            text,
+                            error: Some(e),
+                        }
+                    }
+                }
+            }
+            _ => {
+                text.input(key);
+                self.mode = Mode::Save { text, error };
+            }
+        }
+    }
+
+    fn save(&self, name: &str) -> Result<PathBuf, String> {
+        let dir = self.presets_dir.as_deref().ok_or_else(|| {
+            "no folder for presets (no config directory); pass --presets-dir DIR".to_owned()
+        })?;
+        let preset = Preset {
+            name: name.to_owned(),
+            description: format!("saved from the explorer (from {})", self.preset_name),
+            scene: self.scene,
+            fence: self.fence,
+            source: Source::Bundled,
+        };
+        preset.save(dir).map_err(|e| format!("not saved: {e}"))
+    }
+
+    fn open_picker(&mut self) {
+        let items: Vec<PickItem> = preset::list(self.presets_dir.as_deref())
+            .into_iter()
+            .map(|entry| match entry {
+                Ok(p) => PickItem {
+                    name: p.name.clone(),
+                    detail: match &p.source {
+                        Source::Bundled => format!("{} (bundled)", p.description),
+                        Source::File(_) => p.description.clone(),
+                    },
+                    preset: Some(p),
+                },
+                Err(e) => PickItem {
+                    name: broken_name(&e),
+                    detail: format!("broken: {e}"),
+                    preset: None,
+                },
+            })
+            .collect();
+        let selected = items
+            .iter()
+            .position(|i| i.name == self.preset_name)
+            .unwrap_or(0);
+        self.mode = Mode::Open {
+            items,
+            selected,
+            error: None,
+        };
+    }
+
+    fn open_key(
+        &mut self,
+        key: KeyEvent,
+        items: Vec<PickItem>,
+        selected: usize,
+        error: Option<String>,
+    ) {
+        let last = items.len().saturating_sub(1);
+        let (selected, error) = match key.code {
+            KeyCode::Esc | KeyCode::Char('q') => return,
+            KeyCode::Char('j') | KeyCode::Down => ((selected + 1).min(last), None),
+            KeyCode::Char('k') | KeyCode::Up => (selected.saturating_sub(1), None),
+            KeyCode::Enter => match items.get(selected).and_then(|i| i.preset.clone()) {
+                Some(preset) => {
+                    self.load(preset);
+                    return;
+                }
+                None => (
+                    selected,
+                    Some(
+                        items
+                            .get(selected)
+                            .map_or(String::new(), |i| i.detail.clone()),
+                    ),
+                ),
+            },
+            _ => (selected, error),
+        };
+        self.mode = Mode::Open {
+            items,
+            selected,
+            error,
+        };
+    }
+
+    /// Replaces the inputs with a preset's.
+    pub fn load(&mut self, preset: Preset) {
+        self.message = Some((format!("loaded {}", preset.name), false));
+        self.preset_name = preset.name;
+        self.description = preset.description;
+        self.scene = preset.scene;
+        self.fence = preset.fence;
+        self.inputs_changed = true;
+        self.dirty = true;
+    }
+
+    /// Moves the swing to the optimum found (key `r`).
+    fn reset_to_optimum(&mut self) {
+        if let Some(o) = self.optimum.filter(|o| o.done) {
+            self.scene.bat.undercut = o.best.undercut;
+            self.scene.bat.swing_angle = o.best.swing_angle;
+            self.inputs_changed = true;
+        } else {
+            self.message = Some(("no optimum yet for these inputs".into(), true));
+        }
+    }
+}
+
+/// A short name for a broken preset: its file's stem, if the error has one.
+fn broken_name(error: &PresetError) -> String {
+    let text = error.to_string();
+    let path = text.split(':').next().unwrap_or("?");
+    std::path::Path::new(path)
+        .file_stem()
+        .map_or_else(|| path.to_owned(), |s| s.to_string_lossy().into_owned())
+}

@@ -1,0 +1,111 @@
+//! The explorer: a terminal app over the physics core. It builds scenes and
+//! calls the core; it computes nothing of its own.
+//!
+//! `app` holds the state and `update`, `view` draws it, `worker` runs the
+//! optimiser and the range surface in the background. This file owns the
+//! terminal: set up, event loop, and restoring it on every way out.
+
+pub mod app;
+pub mod view;
+pub mod worker;
+
+use std::io::{self, IsTerminal, Write};
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::TryRecvError;
+use std::time::Duration;
+
+use ratatui::crossterm::event::{self, Event};
+use ratatui::crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
+use ratatui::crossterm::{execute, queue};
+use ratatui::layout::Rect;
+
+use crate::preset::Preset;
+use app::App;
+use view::ColorMode;
+use worker::Worker;
+
+/// Why the explorer did not run.
+#[derive(Debug, thiserror::Error)]
+pub enum TuiError {
+    #[error(
+        "the explorer needs a terminal (stdin and stdout must be a TTY); for plain numbers use the commands: see `homerun --help`"
+    )]
+    NoTerminal,
+    #[error("the background worker stopped unexpectedly")]
+    WorkerDied,
+    #[error("terminal: {0}")]
+    Io(#[from] io::Error),
+}
+
+/// Restores the terminal when dropped: on quit, on error, and while
+/// unwinding from a panic (ratatui's panic hook restores it too).
+struct Restore;
+
+impl Drop for Restore {
+    fn drop(&mut self) {
+        ratatui::restore();
+    }
+}
+
+/// Runs the explorer on `preset` until the user quits or a signal (TERM,
+/// HUP, INT) asks it to stop; the terminal is restored either way.
+pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError> {
+    if !(io::stdin().is_terminal() && io::stdout().is_terminal()) {
+        return Err(TuiError::NoTerminal);
+    }
+    let stop = Arc::new(AtomicBool::new(false));
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    for signal in [SIGTERM, SIGHUP, SIGINT] {
+        signal_hook::flag::register(signal, Arc::clone(&stop))?;
+    }
+    let mut terminal = ratatui::try_init()?;
+    let _restore = Restore;
+    let size = terminal.size()?;
+    let mut app = App::new(
+        preset,
+        presets_dir,
+        ColorMode::detect(),
+        Rect::new(0, 0, size.width, size.height),
+    );
+    let worker = Worker::spawn();
+
+    while !app.quit && !stop.load(Ordering::Relaxed) {
+        if let Some(job) = app.take_job() {
+            worker.submit(job);
+        }
+        if app.dirty {
+            app.dirty = false;
+            queue!(terminal.backend_mut(), BeginSynchronizedUpdate)?;
+            terminal.draw(|frame| view::draw(frame, &app))?;
+            execute!(terminal.backend_mut(), EndSynchronizedUpdate)?;
+            terminal.backend_mut().flush()?;
+        }
+        // Wait for a key, a result or a signal; poll often only while the
+        // worker is busy. Waiting writes nothing to the terminal.
+        let timeout = Duration::from_millis(if app.busy() { 20 } else { 200 });
+        if event::poll(timeout)? {
+            // Take every pending event before recomputing: a held-down key
+            // costs one recomputation per frame, not one per repeat.
+            loop {
+                let event: Event = event::read()?;
+                app.handle(&event);
+                if app.quit || !event::poll(Duration::ZERO)? {
+                    break;
+                }
+            }
+            app.flush();
+        }
+        loop {
+            match worker.reports.try_recv() {
+                Ok(report) => app.apply(report),
+                Err(TryRecvError::Empty) => break,
+                // The worker is gone (it panicked): stop rather than show a
+                // screen that will never update.
+                Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,232 @@
+//! The range over (E, ψ) as half-block cells (two pixels per character),
+//! with a colour bar, the current swing as a cursor, the optimum, and the
+//! contour of the fence's distance.
+
+use ratatui::Frame;
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph};
+
+use super::{dim, title_style};
+use crate::study::Surface;
+use crate::tui::app::{App, heatmap_window};
+
+const Y_LABELS: u16 = 6;
+const BAR: u16 = 9;
+
+/// The part of the pane covered by pixels.
+pub fn plot_area(area: Rect) -> Rect {
+    let inner = Block::bordered().inner(area);
+    Rect::new(
+        inner.x + Y_LABELS,
+        inner.y,
+        inner.width.saturating_sub(Y_LABELS + BAR),
+        inner.height.saturating_sub(1),
+    )
+}
+
+/// A perceptual ramp (after viridis), t in [0, 1].
+pub fn ramp(t: f64) -> (u8, u8, u8) {
+    const STOPS: [(f64, f64, f64); 6] = [
+        (68.0, 1.0, 84.0),
+        (65.0, 68.0, 135.0),
+        (42.0, 120.0, 142.0),
+        (34.0, 168.0, 132.0),
+        (122.0, 209.0, 81.0),
+        (253.0, 231.0, 37.0),
+    ];
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let x = t * (STOPS.len() - 1) as f64;
+    let k = (x.floor() as usize).min(STOPS.len() - 2);
+    let f = x - k as f64;
+    let (a, b) = (STOPS[k], STOPS[k + 1]);
+    let mix = |p: f64, q: f64| (p + f * (q - p)).round() as u8;
+    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// The surface's value at pixel (px, py) of a w×h picture, py from the top.
+fn sample(surface: &Surface, px: usize, py: usize, w: usize, h: usize) -> Option<f64> {
+    let grid = surface.grid;
+    let i = (px * grid.columns / w.max(1)).min(grid.columns - 1);
+    let j_from_top = (py * grid.rows / h.max(1)).min(grid.rows - 1);
+    surface.get(i, grid.rows - 1 - j_from_top)
+}
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let level = app.fence.map(|f| f.distance);
+    let stale = if app
+        .surface
+        .as_ref()
+        .is_some_and(|s| s.generation != app.generation)
+    {
+        " (stale)"
+    } else {
+        ""
+    };
+    let title = match level {
+        Some(d) => {
+            let (d, unit) = app.distance(d);
+            format!(" Range over (E, ψ){stale} · ── {d:.0} {unit} (fence) ")
+        }
+        None => format!(" Range over (E, ψ){stale} "),
+    };
+    let block = Block::bordered().title(Span::styled(title, title_style()));
+    frame.render_widget(block, area);
+    let plot = plot_area(area);
+    if plot.width < 4 || plot.height < 2 {
+        return;
+    }
+    let window = heatmap_window();
+    let inner = Block::bordered().inner(area);
+    // Axis labels: ψ on the left (top, bottom), E along the bottom.
+    let buf = frame.buffer_mut();
+    buf.set_string(
+        inner.x,
+        plot.y,
+        format!("{:>5}", format!("{:.1}", window.swing_angle.1)),
+        dim(),
+    );
+    buf.set_string(inner.x, plot.y + plot.height / 2, "  ψ ↑", dim());
+    buf.set_string(
+        inner.x,
+        plot.bottom().saturating_sub(1),
+        format!("{:>5}", format!("{:.1}", window.swing_angle.0)),
+        dim(),
+    );
+    let bottom = plot.bottom();
+    buf.set_string(
+        plot.x,
+        bottom,
+        format!("{:.0}", window.undercut.0 * 1e3),
+        dim(),
+    );
+    let e_label = "E (mm) →";
+    buf.set_string(
+        plot.x + plot.width.saturating_sub(e_label.chars().count() as u16) / 2,
+        bottom,
+        e_label,
+        dim(),
+    );
+    let right = format!("{:.0}", window.undercut.1 * 1e3);
+    buf.set_string(
+        plot.right().saturating_sub(right.len() as u16),
+        bottom,
+        &right,
+        dim(),
+    );
+
+    let Some(state) = &app.surface else {
+        frame.render_widget(
+            Paragraph::new(Line::styled("computing the surface…", dim())),
+            plot,
+        );
+        return;
+    };
+    let surface = &state.surface;
+    let values = surface.ranges.iter().flatten();
+    let (min, max) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+        (a.min(v), b.max(v))
+    });
+    let (w, h) = (plot.width as usize, 2 * plot.height as usize);
+    let pixels: Vec<Option<f64>> = (0..h)
+        .flat_map(|py| (0..w).map(move |px| (px, py)))
+        .map(|(px, py)| sample(surface, px, py, w, h))
+        .collect();
+    let at = |px: usize, py: usize| pixels[py * w + px];
+    let above = |v: Option<f64>, l: f64| v.is_some_and(|v| v >= l);
+    let colour = |px: usize, py: usize| -> Color {
+        let v = at(px, py);
+        if let Some(l) = level {
+            // A pixel on the contour: the level lies between it and a neighbour.
+            let here = above(v, l);
+            let edge = (px + 1 < w && above(at(px + 1, py), l) != here)
+                || (py + 1 < h && above(at(px, py + 1), l) != here);
+            if v.is_some() && edge {
+                return Color::White;
+            }
+        }
+        match v {
+            Some(v) => app.color.rgb(ramp((v - min) / (max - min).max(1e-9))),
+            None => Color::Black,
+        }
+    };
+    draw_pixels(frame.buffer_mut(), plot, &colour);
+
+    // Markers: the current swing and the optimum.
+    // A point outside the window is pinned to its edge.
+    let to_cell = |e: f64, psi: f64| -> (u16, u16, bool) {
+        let fx = (e - window.undercut.0) / (window.undercut.1 - window.undercut.0);
+        let fy = (psi - window.swing_angle.0) / (window.swing_angle.1 - window.swing_angle.0);
+        let inside = (0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy);
+        let (fx, fy) = (fx.clamp(0.0, 1.0), fy.clamp(0.0, 1.0));
+        let x = plot.x + ((fx * (plot.width - 1) as f64).round() as u16);
+        let y = plot.y + (((1.0 - fy) * (plot.height - 1) as f64).round() as u16);
+        (x, y, inside)
+    };
+    let buf = frame.buffer_mut();
+    let mark = |buf: &mut Buffer, (x, y, inside): (u16, u16, bool), symbol: &str, colour: Color| {
+        let symbol = if inside { symbol } else { "◆" };
+        buf[(x, y)]
+            .set_symbol(symbol)
+            .set_fg(colour)
+            .set_bg(Color::Black)
+            .set_style(Style::new().add_modifier(Modifier::BOLD));
+    };
+    if let Some(o) = app.optimum.filter(|o| o.done) {
+        mark(
+            buf,
+            to_cell(o.best.undercut, o.best.swing_angle),
+            "★",
+            Color::Yellow,
+        );
+    }
+    mark(
+        buf,
+        to_cell(app.scene.bat.undercut, app.scene.bat.swing_angle),
+        "✚",
+        Color::White,
+    );
+
+    // The colour bar, top = max.
+    let bar = Rect::new(plot.right() + 1, plot.y, BAR - 1, plot.height);
+    let [_, bar_area] = Layout::horizontal([Constraint::Length(0), Constraint::Fill(1)]).areas(bar);
+    for row in 0..bar_area.height {
+        let t = 1.0 - row as f64 / (bar_area.height.max(2) - 1) as f64;
+        let c = app.color.rgb(ramp(t));
+        buf.set_string(bar_area.x, bar_area.y + row, "██", Style::new().fg(c));
+    }
+    buf.set_string(bar_area.x + 2, bar_area.y, format!("{max:>5.0}"), dim());
+    buf.set_string(
+        bar_area.x + 2,
+        bar_area.y + bar_area.height / 2,
+        "    m",
+        dim(),
+    );
+    buf.set_string(
+        bar_area.x + 2,
+        bar_area.bottom().saturating_sub(1),
+        format!("{:>5.0}", app.distance(min).0),
+        dim(),
+    );
+}
+
+/// Fills `area` with half blocks: the upper pixel as foreground, the lower
+/// as background.
+fn draw_pixels(buf: &mut Buffer, area: Rect, colour: &dyn Fn(usize, usize) -> Color) {
+    for row in 0..area.height {
+        for col in 0..area.width {
+            let top = colour(col as usize, 2 * row as usize);
+            let bottom = colour(col as usize, 2 * row as usize + 1);
+            buf[(area.x + col, area.y + row)]
+                .set_symbol("▀")
+                .set_fg(top)
+                .set_bg(bottom);
+        }
+    }
+}

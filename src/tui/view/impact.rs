@@ -1,0 +1,159 @@
+//! The collision step by step (paper Fig. 2): the tangential slip v1 and the
+//! normal approach v3 of the contact points against the normal impulse p,
+//! with p_s, p_c and p_f marked, and the ball's state at the cursor.
+
+use ratatui::Frame;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Color, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph};
+
+use super::{dim, title_style};
+use crate::tui::app::{App, impact_stops};
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let impact = &app.swing.impact;
+    let stops = impact_stops(impact);
+    let stop = stops[app.impact_stop.min(stops.len() - 1)];
+    let block = Block::bordered().title(Span::styled(
+        format!(
+            " Impact: {} ({}/{}) · , . step ",
+            stop.name,
+            app.impact_stop + 1,
+            stops.len()
+        ),
+        title_style(),
+    ));
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let [chart_area, text_area] =
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(3)]).areas(inner);
+
+    let pf = impact.separation_impulse;
+    let samples = (2 * chart_area.width as usize).clamp(8, 400);
+    let state_at = |k: usize| impact.at(pf * k as f64 / (samples - 1) as f64);
+    let slip: Vec<(f64, f64)> = (0..samples)
+        .map(|k| {
+            let s = state_at(k);
+            (s.impulse, s.slip_velocity)
+        })
+        .collect();
+    let normal: Vec<(f64, f64)> = (0..samples)
+        .map(|k| {
+            let s = state_at(k);
+            (s.impulse, s.normal_velocity)
+        })
+        .collect();
+    let (lo, hi) = slip
+        .iter()
+        .chain(&normal)
+        .fold((0.0f64, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    let pad = 0.05 * (hi - lo).max(1e-9);
+    let (lo, hi) = (lo - pad, hi + pad);
+    let vertical = |p: f64| [(p, lo), (p, hi)];
+    let pc_line = vertical(impact.compression_impulse);
+    let ps_line = impact.stick_impulse().map(vertical);
+    let cursor = vertical(stop.impulse);
+    let zero = [(0.0, 0.0), (pf, 0.0)];
+    let mut datasets = vec![
+        Dataset::default()
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(dim())
+            .data(&zero),
+        Dataset::default()
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(Style::new().fg(Color::Blue))
+            .data(&pc_line),
+    ];
+    if let Some(ps) = &ps_line {
+        datasets.push(
+            Dataset::default()
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(Color::Magenta))
+                .data(ps),
+        );
+    }
+    datasets.push(
+        Dataset::default()
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(Style::new().fg(Color::White))
+            .data(&cursor),
+    );
+    datasets.push(
+        Dataset::default()
+            .name("v1 slip")
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(Style::new().fg(Color::Cyan))
+            .data(&slip),
+    );
+    datasets.push(
+        Dataset::default()
+            .name("v3 normal")
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(Style::new().fg(Color::Yellow))
+            .data(&normal),
+    );
+    let chart = Chart::new(datasets)
+        .legend_position(None)
+        .x_axis(
+            Axis::default()
+                .title(Span::styled("p (N·s)", dim()))
+                .bounds([0.0, pf])
+                .labels([
+                    Span::styled("0", dim()),
+                    Span::styled(format!("{pf:.2}"), dim()),
+                ]),
+        )
+        .y_axis(
+            Axis::default()
+                .title(Span::styled("m/s", dim()))
+                .bounds([lo, hi])
+                .labels([
+                    Span::styled(format!("{lo:.0}"), dim()),
+                    Span::styled(format!("{hi:.0}"), dim()),
+                ]),
+        );
+    frame.render_widget(chart, chart_area);
+
+    let s = impact.at(stop.impulse);
+    let lines = vec![
+        Line::from(vec![
+            Span::styled("p ", Style::new().fg(Color::White)),
+            Span::raw(format!("{:.3} N·s  ", stop.impulse)),
+            Span::styled("p_s ", Style::new().fg(Color::Magenta)),
+            Span::raw(
+                impact
+                    .stick_impulse()
+                    .map_or("— (slips) ".to_owned(), |p| format!("{p:.3}  ")),
+            ),
+            Span::styled("p_c ", Style::new().fg(Color::Blue)),
+            Span::raw(format!("{:.3}  ", impact.compression_impulse)),
+            Span::styled("p_f ", dim()),
+            Span::raw(format!("{pf:.3}")),
+        ]),
+        Line::from(vec![
+            Span::styled("v1 slip ", Style::new().fg(Color::Cyan)),
+            Span::raw(format!("{:+.2}  ", s.slip_velocity)),
+            Span::styled("v3 normal ", Style::new().fg(Color::Yellow)),
+            Span::raw(format!("{:+.2} m/s", s.normal_velocity)),
+        ]),
+        Line::from(vec![
+            Span::styled("ball ", dim()),
+            Span::raw(format!(
+                "({:+.2}, {:+.2}) m/s  |v| {:.2}  spin {:+.1} rad/s",
+                s.ball_velocity.x,
+                s.ball_velocity.y,
+                s.ball_velocity.norm(),
+                s.ball_spin
+            )),
+        ]),
+    ];
+    frame.render_widget(Paragraph::new(lines), text_area);
+}

@@ -1,0 +1,142 @@
+//! Pop-ups over the panes: help, the save prompt and the preset picker.
+
+use ratatui::Frame;
+use ratatui::layout::{Constraint, Flex, Layout, Rect};
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap};
+use ratatui_textarea::TextArea;
+
+use super::{dim, title_style};
+use crate::tui::app::{App, PickItem};
+
+/// Every key, in the order the help shows them.
+pub const KEY_HELP: &[(&str, &str)] = &[
+    ("j k ↑ ↓", "move between inputs"),
+    ("h l ← →", "nudge the input by its step"),
+    ("H L  Shift+← →", "nudge ×10"),
+    ("[ ]  Alt+← →", "nudge ×0.1"),
+    ("Enter  e", "type a value (Enter accepts, Esc cancels)"),
+    ("g G", "first / last input"),
+    ("r", "move the swing (E, ψ) to the optimum"),
+    ("u", "distances in metres / feet"),
+    (
+        "Tab  1 2 3",
+        "flight / range surface / impact (small screens)",
+    ),
+    (", .", "step the impact through its phases"),
+    ("s", "save the inputs as a preset"),
+    ("o", "open a preset (bundled or saved)"),
+    ("Esc", "close a pop-up, clear the message"),
+    ("?", "this help"),
+    ("q  Ctrl-C", "quit"),
+];
+
+fn centered(area: Rect, width: u16, height: u16) -> Rect {
+    let [row] = Layout::vertical([Constraint::Length(height.min(area.height))])
+        .flex(Flex::Center)
+        .areas(area);
+    let [cell] = Layout::horizontal([Constraint::Length(width.min(area.width))])
+        .flex(Flex::Center)
+        .areas(row);
+    cell
+}
+
+pub fn help(frame: &mut Frame, area: Rect) {
+    let mut lines: Vec<Line> = KEY_HELP
+        .iter()
+        .map(|(keys, what)| {
+            Line::from(vec![
+                Span::styled(format!("{keys:<16}"), Style::new().fg(Color::Cyan)),
+                Span::raw(*what),
+            ])
+        })
+        .collect();
+    lines.push(Line::styled("any key closes this help", dim()));
+    let popup = centered(area, 68, lines.len() as u16 + 2);
+    frame.render_widget(Clear, popup);
+    frame.render_widget(
+        Paragraph::new(lines).block(Block::bordered().title(Span::styled(" Keys ", title_style()))),
+        popup,
+    );
+}
+
+pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Option<&str>) {
+    let popup = centered(area, 64, 8);
+    frame.render_widget(Clear, popup);
+    let block = Block::bordered().title(Span::styled(" Save preset ", title_style()));
+    let inner = block.inner(popup);
+    frame.render_widget(block, popup);
+    let [folder, input, message] = Layout::vertical([
+        Constraint::Length(1),
+        Constraint::Length(1),
+        Constraint::Fill(1),
+    ])
+    .areas(inner);
+    let dir = app
+        .presets_dir
+        .as_ref()
+        .map_or("(no folder)".to_owned(), |d| d.display().to_string());
+    frame.render_widget(
+        Paragraph::new(Line::styled(format!("name, into {dir}:"), dim())),
+        folder,
+    );
+    frame.render_widget(text, input);
+    let line = match error {
+        Some(e) => Paragraph::new(Line::styled(
+            e,
+            Style::new().fg(Color::Red).add_modifier(Modifier::BOLD),
+        )),
+        None => Paragraph::new(Line::styled(
+            "letters, digits, - and _ · Enter saves · Esc cancels",
+            dim(),
+        )),
+    };
+    frame.render_widget(line.wrap(Wrap { trim: true }), message);
+}
+
+pub fn open(
+    frame: &mut Frame,
+    area: Rect,
+    items: &[PickItem],
+    selected: usize,
+    error: Option<&str>,
+) {
+    let popup = centered(area, 76, items.len() as u16 + 6);
+    frame.render_widget(Clear, popup);
+    let block = Block::bordered().title(Span::styled(" Open preset ", title_style()));
+    let inner = block.inner(popup);
+    frame.render_widget(block, popup);
+    let [list_area, message] =
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(2)]).areas(inner);
+    let list: Vec<ListItem> = items
+        .iter()
+        .map(|item| {
+            let style = if item.preset.is_some() {
+                Style::new()
+            } else {
+                Style::new().fg(Color::Red)
+            };
+            ListItem::new(Line::from(vec![
+                Span::styled(
+                    format!("{:<14}", item.name),
+                    style.add_modifier(Modifier::BOLD),
+                ),
+                Span::styled(item.detail.clone(), style),
+            ]))
+        })
+        .collect();
+    let mut state = ListState::default().with_selected(Some(selected));
+    frame.render_stateful_widget(
+        List::new(list)
+            .highlight_style(Style::new().add_modifier(Modifier::REVERSED))
+            .highlight_symbol("▶ "),
+        list_area,
+        &mut state,
+    );
+    let line = match error {
+        Some(e) => Paragraph::new(Line::styled(e, Style::new().fg(Color::Red))),
+        None => Paragraph::new(Line::styled("Enter loads · Esc cancels", dim())),
+    };
+    frame.render_widget(line.wrap(Wrap { trim: true }), message);
+}

@@ -1,0 +1,134 @@
+//! The numbers: launch state, flight summary, impact summary, and the
+//! optimum beside the current swing.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph};
+
+use super::{dim, title_style};
+use crate::model::impact::Regime;
+use crate::tui::app::App;
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let impact = &app.swing.impact;
+    let flight = &app.swing.flight;
+    let u = app.distance(1.0).1;
+    let d = |metres: f64| app.distance(metres).0;
+    let label = |s: &'static str| Span::styled(format!("{s:<9}"), dim());
+    let mut lines = vec![
+        Line::from(vec![
+            label("launch"),
+            Span::raw(format!(
+                "{:.2} m/s  {:.1} rad/s  {:.2}°",
+                impact.launch_speed(),
+                impact.launch_spin(),
+                impact.launch_angle().to_degrees()
+            )),
+        ]),
+        Line::from(vec![
+            label("flight"),
+            Span::raw(format!(
+                "range {:.2} {u}  {:.2} s  apex {:.1} {u}",
+                d(flight.range),
+                flight.flight_time,
+                d(flight.apex)
+            )),
+        ]),
+        Line::from(vec![
+            label("impact"),
+            Span::raw(format!(
+                "e* {:.4}  {}  θ {:.4} rad",
+                impact.restitution,
+                match impact.regime {
+                    Regime::Stick => "stick",
+                    Regime::Slip => "slip",
+                },
+                impact.normal_angle
+            )),
+        ]),
+        Line::from(vec![
+            label("impulse"),
+            Span::raw(format!(
+                "p_s {} p_c {:.3} p_f {:.3} N·s",
+                impact
+                    .stick_impulse()
+                    .map_or("—".to_owned(), |p| format!("{p:.3}")),
+                impact.compression_impulse,
+                impact.separation_impulse
+            )),
+        ]),
+    ];
+    let (e, psi) = (app.scene.bat.undercut, app.scene.bat.swing_angle);
+    match app.optimum {
+        Some(o) => {
+            let style = if o.done {
+                Style::new().fg(Color::Green)
+            } else {
+                Style::new().fg(Color::Yellow)
+            };
+            let state = if o.done { "" } else { " (searching)" };
+            lines.push(Line::from(vec![
+                label("optimum"),
+                Span::styled(
+                    format!(
+                        "E {:.2} mm  ψ {:.4}  {:.2} {u}{state}",
+                        o.best.undercut * 1e3,
+                        o.best.swing_angle,
+                        d(o.best.range)
+                    ),
+                    style,
+                ),
+            ]));
+            lines.push(Line::from(vec![
+                label("you −opt"),
+                Span::raw(format!(
+                    "ΔE {:+.2} mm  Δψ {:+.4}  {:+.2} {u}",
+                    (e - o.best.undercut) * 1e3,
+                    psi - o.best.swing_angle,
+                    d(flight.range - o.best.range)
+                )),
+            ]));
+        }
+        None => lines.push(Line::from(vec![
+            label("optimum"),
+            Span::styled("searching…", Style::new().fg(Color::Yellow)),
+        ])),
+    }
+    if let Some(fence) = app.fence {
+        lines.push(Line::from(vec![
+            label("fence"),
+            Span::raw(format!(
+                "{:.1} {u}, {:.1} {u} high",
+                d(fence.distance),
+                d(fence.height)
+            )),
+        ]));
+    }
+    // Room to spare (the large layout): the rest of the story.
+    if area.height as usize >= lines.len() + 6 {
+        lines.push(Line::from(vec![
+            label("landing"),
+            Span::raw(format!(
+                "{:.2} m/s at {:.1}° below level",
+                flight.landing_speed,
+                flight.landing_angle.to_degrees()
+            )),
+        ]));
+        lines.push(Line::from(vec![
+            label("pitch"),
+            Span::raw(format!(
+                "{:.1} m/s, descending {:.2}°",
+                app.scene.pitch.speed,
+                impact.descent_angle.to_degrees()
+            )),
+        ]));
+        lines.push(Line::from(vec![
+            label("drag"),
+            Span::raw(app.scene.drag.description()),
+        ]));
+    }
+    let block = Block::bordered().title(Span::styled(" Readout ", title_style()));
+    frame.render_widget(Paragraph::new(lines).block(block), area);
+}

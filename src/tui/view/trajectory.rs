@@ -1,0 +1,124 @@
+//! The batted flight in braille: the current swing, the optimal swing, the
+//! apex, the landing point and the fence, with axes in metres.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType};
+
+use super::{dim, title_style};
+use crate::tui::app::App;
+
+/// A round axis end at or above `value`, so that the halfway label is round too.
+pub fn nice_ceiling(value: f64) -> f64 {
+    if !(value.is_finite() && value > 0.0) {
+        return 1.0;
+    }
+    let power = 10f64.powf(value.log10().floor());
+    [1.0, 1.2, 1.6, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0]
+        .iter()
+        .map(|m| m * power)
+        .find(|&v| v >= value)
+        .unwrap_or(10.0 * power)
+}
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let flight = &app.swing.flight;
+    let (k, unit) = app.distance(1.0);
+    let scaled = |path: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        path.iter().map(|&(x, y)| (k * x, k * y)).collect()
+    };
+    let (path, optimal_path) = (scaled(&app.path), scaled(&app.optimal_path));
+    let optimal_range = app.optimum.filter(|o| o.done).map_or(0.0, |o| o.best.range);
+    let optimal_apex = app.optimal_path.iter().map(|p| p.1).fold(0.0, f64::max);
+    let fence = app
+        .fence
+        .map_or((0.0, 0.0), |f| (k * f.distance, k * f.height));
+    let x_max =
+        nice_ceiling(1.05 * k * flight.range.max(optimal_range)).max(nice_ceiling(1.05 * fence.0));
+    let y_max =
+        nice_ceiling(1.1 * k * flight.apex.max(optimal_apex)).max(nice_ceiling(1.1 * fence.1));
+
+    let apex = [(k * flight.apex_distance, k * flight.apex)];
+    let landing = [(k * flight.range, 0.0)];
+    let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
+    let mut datasets = Vec::new();
+    if !optimal_path.is_empty() {
+        datasets.push(
+            Dataset::default()
+                .name("optimal")
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(Color::Green))
+                .data(&optimal_path),
+        );
+    }
+    datasets.push(
+        Dataset::default()
+            .name("this swing")
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(Style::new().fg(Color::Cyan))
+            .data(&path),
+    );
+    datasets.push(
+        Dataset::default()
+            .name("apex")
+            .marker(Marker::Dot)
+            .graph_type(GraphType::Scatter)
+            .style(Style::new().fg(Color::Yellow))
+            .data(&apex),
+    );
+    datasets.push(
+        Dataset::default()
+            .name("landing")
+            .marker(Marker::Block)
+            .graph_type(GraphType::Scatter)
+            .style(Style::new().fg(Color::Magenta))
+            .data(&landing),
+    );
+    if app.fence.is_some() {
+        datasets.push(
+            Dataset::default()
+                .name("fence")
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::new().fg(Color::White))
+                .data(&fence_line),
+        );
+    }
+    let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| Span::styled(format!("{v:.0}"), dim()));
+    // The legend sits in the border, where it hides no data.
+    let mut legend = vec![Span::styled("━ now ", Style::new().fg(Color::Cyan))];
+    if !optimal_path.is_empty() {
+        legend.push(Span::styled("━ best ", Style::new().fg(Color::Green)));
+    }
+    let legend = Line::from(legend);
+    let title = format!(
+        " Trajectory {:.1} {unit}, apex {:.1} {unit} ",
+        k * flight.range,
+        k * flight.apex
+    );
+    let chart = Chart::new(datasets)
+        .block(
+            Block::bordered()
+                .title(Span::styled(title, title_style()))
+                .title_top(legend.right_aligned()),
+        )
+        .x_axis(
+            Axis::default()
+                .title(Span::styled(format!("x ({unit})"), dim()))
+                .bounds([0.0, x_max])
+                .labels(labels(x_max)),
+        )
+        .y_axis(
+            Axis::default()
+                .title(Span::styled(format!("y ({unit})"), dim()))
+                .bounds([0.0, y_max])
+                .labels(labels(y_max)),
+        )
+        .legend_position(None);
+    frame.render_widget(chart, area);
+}

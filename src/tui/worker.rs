@@ -1,0 +1,173 @@
+//! The background work: the optimiser (warm-started, one Nelder–Mead step at
+//! a time, streaming its best point) and the range surface (coarse to fine).
+//!
+//! Plain std threads and channels, no async runtime. Every job carries a
+//! generation number; the UI bumps it on each input change, the worker polls
+//! it between steps and cells and abandons stale work, and the UI drops any
+//! report whose generation is not the current one.
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::mpsc::{self, Receiver, Sender};
+use std::thread;
+
+use crate::model::scene::Scene;
+use crate::precision::Purpose;
+use crate::solve::optimize::{Optimizer, OptimizerSettings, Point, Status};
+use crate::study::{self, Grid, Surface};
+
+/// What the UI wants computed for one set of inputs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Job {
+    pub generation: u64,
+    pub scene: Scene,
+    /// Where the optimiser starts: the last optimum (warm start) or the
+    /// scene's own swing.
+    pub start: (f64, f64),
+    /// The heatmap's window over (E, ψ).
+    pub window: Grid,
+    /// The finest surface: the heatmap pane's pixels (columns, rows).
+    pub resolution: (usize, usize),
+}
+
+/// A result, tagged with the generation it was computed for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Report {
+    /// The optimiser's best point so far; `done` once it has converged.
+    Optimum {
+        generation: u64,
+        best: Point,
+        evaluations: u32,
+        done: bool,
+    },
+    /// One refinement of the range surface; `last` for the finest.
+    Surface {
+        generation: u64,
+        surface: Surface,
+        last: bool,
+    },
+}
+
+impl Report {
+    pub fn generation(&self) -> u64 {
+        match self {
+            Report::Optimum { generation, .. } | Report::Surface { generation, .. } => *generation,
+        }
+    }
+}
+
+/// The optimiser's progress is reported every this many steps (and at the end).
+const PROGRESS_EVERY: u32 = 8;
+
+/// Runs one job to the end, or until `cancelled()`; each result goes to
+/// `report`. The same function runs on the worker thread and, synchronously,
+/// in the tests.
+pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dyn FnMut(Report)) {
+    let surface = |columns: usize, rows: usize| {
+        let grid = Grid {
+            columns,
+            rows,
+            ..job.window
+        };
+        study::surface_until(&job.scene, grid, Purpose::Surface, cancelled)
+    };
+    let (columns, rows) = (job.resolution.0.max(2), job.resolution.1.max(2));
+    // A first glance at the surface before the optimiser: 64 cells.
+    let Some(coarse) = surface(8.min(columns), 8.min(rows)) else {
+        return;
+    };
+    report(Report::Surface {
+        generation: job.generation,
+        surface: coarse,
+        last: columns <= 8 && rows <= 8,
+    });
+
+    let mut optimizer = Optimizer::new(
+        &job.scene,
+        job.start,
+        Purpose::Optimizer,
+        OptimizerSettings::default(),
+    );
+    let mut steps = 0;
+    loop {
+        if cancelled() {
+            return;
+        }
+        let status = optimizer.step();
+        steps += 1;
+        let done = status != Status::Running;
+        if done || steps % PROGRESS_EVERY == 0 {
+            report(Report::Optimum {
+                generation: job.generation,
+                best: optimizer.best(),
+                evaluations: optimizer.evaluations(),
+                done,
+            });
+        }
+        if done {
+            break;
+        }
+    }
+
+    let mut levels = vec![(32.min(columns), 16.min(rows))];
+    if columns > 32 || rows > 16 {
+        levels.push((columns, rows));
+    }
+    let count = levels.len();
+    for (k, (c, r)) in levels.into_iter().enumerate() {
+        if c <= 8 && r <= 8 {
+            continue;
+        }
+        let Some(surface) = surface(c, r) else {
+            return;
+        };
+        report(Report::Surface {
+            generation: job.generation,
+            surface,
+            last: k + 1 == count,
+        });
+    }
+}
+
+/// The worker thread and its two channels.
+pub struct Worker {
+    jobs: Sender<Job>,
+    latest: Arc<AtomicU64>,
+    pub reports: Receiver<Report>,
+}
+
+impl Worker {
+    pub fn spawn() -> Worker {
+        let (jobs, job_rx) = mpsc::channel::<Job>();
+        let (report_tx, reports) = mpsc::channel();
+        let latest = Arc::new(AtomicU64::new(0));
+        let seen = Arc::clone(&latest);
+        thread::Builder::new()
+            .name("homerun-worker".into())
+            .spawn(move || {
+                while let Ok(mut job) = job_rx.recv() {
+                    // Coalesce: only the newest inputs matter.
+                    while let Ok(newer) = job_rx.try_recv() {
+                        job = newer;
+                    }
+                    let generation = job.generation;
+                    let cancelled = || seen.load(Ordering::Relaxed) != generation;
+                    run_job(&job, &cancelled, &mut |r| {
+                        let _ = report_tx.send(r);
+                    });
+                }
+            })
+            .expect("spawn the worker thread");
+        Worker {
+            jobs,
+            latest,
+            reports,
+        }
+    }
+
+    /// Starts `job`, cancelling whatever is running.
+    pub fn submit(&self, job: Job) {
+        self.latest.store(job.generation, Ordering::Relaxed);
+        let _ = self.jobs.send(job);
+    }
+}

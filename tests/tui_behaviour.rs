@@ -1,0 +1,268 @@
+//! What the explorer does with keys and background results.
+
+mod tui_support;
+
+use std::time::Duration;
+
+use homerun::solve::optimize::{OptimizerSettings, optimize, optimize_from};
+use homerun::tui::app::Mode;
+use homerun::tui::worker::{Report, Worker, run_job};
+use ratatui::crossterm::event::{KeyCode, KeyModifiers};
+use tui_support::*;
+
+#[test]
+fn nudging_the_undercut_up_adds_backspin_and_range() {
+    // The fastball's Table II swing has E = 26.5 mm, below the optimum 27.27
+    // mm: more undercut means more backspin (Fig. 6) and, here, more range.
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.undercut");
+    let (spin, range) = (app.swing.impact.launch_spin(), app.swing.flight.range);
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.scene.bat.undercut, 0.0265 + 0.0005);
+    assert!(app.swing.impact.launch_spin() > spin + 1.0);
+    assert!(app.swing.flight.range > range);
+    // Down again, ten steps with Shift: less spin, less range than at the start.
+    key_with(&mut app, KeyCode::Left, KeyModifiers::SHIFT);
+    assert!((app.scene.bat.undercut - (0.0265 - 0.0045)).abs() < 1e-12);
+    assert!(app.swing.impact.launch_spin() < spin - 10.0);
+    assert!(app.swing.flight.range < range);
+    // A finer nudge: a tenth of the step.
+    key(&mut app, KeyCode::Char(']'));
+    assert!((app.scene.bat.undercut - (0.0265 - 0.0045 + 0.00005)).abs() < 1e-12);
+}
+
+#[test]
+fn a_nudge_out_of_range_is_refused_with_the_reason() {
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.friction");
+    for _ in 0..6 {
+        key_with(&mut app, KeyCode::Char('H'), KeyModifiers::SHIFT);
+    }
+    assert!(app.scene.bat.friction >= 0.0);
+    let (message, error) = app.message.clone().unwrap();
+    assert!(error && message.contains("bat.friction"), "{message}");
+}
+
+#[test]
+fn typed_values_are_parsed_validated_and_kept_or_refused() {
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Enter);
+    for _ in 0..4 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "fast");
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Edit {
+            error: Some(error), ..
+        } => assert!(error.contains("not a number"), "{error}"),
+        other => panic!("still editing with an error, not {other:?}"),
+    }
+    assert_eq!(app.scene.bat.speed, 30.0);
+    key(&mut app, KeyCode::Esc);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_eq!(app.scene.bat.speed, 30.0);
+    key(&mut app, KeyCode::Enter);
+    for _ in 0..4 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "35");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_eq!(app.scene.bat.speed, 35.0);
+}
+
+#[test]
+fn settled_background_optimum_equals_optimize() {
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.speed");
+    // Several changes in one batch: only the last inputs are worked on.
+    key(&mut app, KeyCode::Char('l'));
+    key(&mut app, KeyCode::Char('l'));
+    settle(&mut app);
+    let shown = app.optimum.unwrap();
+    assert!(shown.done);
+    // The first search starts from the scene's own swing, as optimize() does.
+    let direct = optimize(&app.scene, OptimizerSettings::default());
+    assert_eq!(shown.best.undercut, direct.undercut);
+    assert_eq!(shown.best.swing_angle, direct.swing_angle);
+    assert_eq!(shown.best.range, direct.range);
+    assert_eq!(shown.evaluations, direct.evaluations);
+
+    // The next search is warm-started from that optimum: the same as
+    // optimize_from() there, and the same optimum as a cold search to within
+    // the optimiser's tolerance on range (1e-4 m).
+    let warm = (shown.best.undercut, shown.best.swing_angle);
+    key(&mut app, KeyCode::Char('l'));
+    settle(&mut app);
+    let shown = app.optimum.unwrap();
+    let direct = optimize_from(&app.scene, warm, OptimizerSettings::default());
+    assert_eq!(shown.best.range, direct.range);
+    assert_eq!(shown.best.undercut, direct.undercut);
+    let cold = optimize(&app.scene, OptimizerSettings::default());
+    assert!(
+        (shown.best.range - cold.range).abs() < 2e-4,
+        "{shown:?} vs {cold:?}"
+    );
+    assert!((shown.best.undercut - cold.undercut).abs() < 2e-4);
+}
+
+#[test]
+fn a_stale_result_is_never_shown_for_new_inputs() {
+    let mut app = app(80, 24, None);
+    let old_job = app.take_job().unwrap();
+    let mut old_reports = Vec::new();
+    run_job(&old_job, &|| false, &mut |r| old_reports.push(r));
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('L'));
+    assert!(app.generation > old_job.generation);
+    for report in old_reports {
+        app.apply(report);
+    }
+    assert_eq!(app.optimum, None);
+    assert_eq!(app.surface, None);
+    assert!(app.optimal_path.is_empty());
+    // The status line says it is still working, not a stale figure.
+    let screen = screen(&app);
+    assert!(screen.contains("optimising…"), "{screen}");
+    assert!(!screen.contains("134.79"), "{screen}");
+}
+
+#[test]
+fn the_worker_thread_cancels_old_work_and_finishes_the_new() {
+    let mut app = app(80, 24, None);
+    let worker = Worker::spawn();
+    let first = app.take_job().unwrap();
+    worker.submit(first);
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('l'));
+    let second = app.take_job().unwrap();
+    worker.submit(second);
+    // Collect reports until the new job's optimiser and finest surface are in.
+    let (mut optimum_done, mut surface_done) = (false, false);
+    while !(optimum_done && surface_done) {
+        let report = worker
+            .reports
+            .recv_timeout(Duration::from_secs(120))
+            .expect("the worker answers");
+        match &report {
+            Report::Optimum {
+                generation, done, ..
+            } if *generation == second.generation => optimum_done |= *done,
+            Report::Surface {
+                generation, last, ..
+            } if *generation == second.generation => surface_done |= *last,
+            _ => {}
+        }
+        app.apply(report);
+    }
+    let shown = app.optimum.unwrap();
+    assert_eq!(
+        shown.best.range,
+        optimize(&second.scene, OptimizerSettings::default()).range
+    );
+    assert!(app.surface.as_ref().unwrap().last);
+}
+
+#[test]
+fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("broken.toml"), "[bat]\nspeed = \"fast\"\n").unwrap();
+    let mut app = app(80, 24, Some(dir.path().to_owned()));
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('L'));
+    key(&mut app, KeyCode::Char('s'));
+    for _ in 0..8 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "quick");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert!(dir.path().join("quick.toml").is_file());
+    assert_eq!(app.preset_name, "quick");
+
+    // Back to the fastball through the picker, then to the saved one.
+    key(&mut app, KeyCode::Char('o'));
+    let Mode::Open { items, .. } = &app.mode else {
+        panic!("the picker is open")
+    };
+    let names: Vec<&str> = items.iter().map(|i| i.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "fastball",
+            "knuckleball",
+            "curveball",
+            "figure5",
+            "broken",
+            "quick"
+        ]
+    );
+    let broken = &items[4];
+    assert!(
+        broken.preset.is_none() && broken.detail.contains("bat.speed"),
+        "{broken:?}"
+    );
+    // Enter on the broken one: its error, and the picker stays.
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Char('k'));
+    }
+    for _ in 0..4 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Open { error: Some(e), .. } => assert!(e.contains("broken.toml"), "{e}"),
+        other => panic!("picker with the error, not {other:?}"),
+    }
+    assert_eq!(app.scene.bat.speed, 35.0);
+    key(&mut app, KeyCode::Char('k'));
+    key(&mut app, KeyCode::Char('k'));
+    key(&mut app, KeyCode::Char('k'));
+    key(&mut app, KeyCode::Char('k'));
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.preset_name, "fastball");
+    assert_eq!(app.scene.bat.speed, 30.0);
+    key(&mut app, KeyCode::Char('o'));
+    key(&mut app, KeyCode::Char('G'));
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.preset_name, "quick");
+    assert_eq!(app.scene.bat.speed, 35.0);
+}
+
+#[test]
+fn colours_fall_back_to_the_256_colour_cube() {
+    use homerun::tui::view::ColorMode;
+    use ratatui::style::Color;
+    let indexed = ColorMode::Indexed;
+    assert_eq!(indexed.rgb((0, 0, 0)), Color::Indexed(16));
+    assert_eq!(indexed.rgb((255, 255, 255)), Color::Indexed(231));
+    // The cube's levels are 0, 95, 135, 175, 215, 255: each channel goes to
+    // the nearest.
+    assert_eq!(
+        indexed.rgb((95, 135, 175)),
+        Color::Indexed(16 + 36 + 12 + 3)
+    );
+    assert_eq!(
+        indexed.rgb((100, 130, 180)),
+        Color::Indexed(16 + 36 + 12 + 3)
+    );
+    assert_eq!(ColorMode::TrueColor.rgb((1, 2, 3)), Color::Rgb(1, 2, 3));
+}
+
+#[test]
+fn feet_are_a_display_choice() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let range = app.swing.flight.range;
+    key(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.swing.flight.range, range, "nothing is recomputed");
+    let screen = screen(&app);
+    // 134.698780 m is 441.925 ft.
+    assert!(screen.contains("range 441.93 ft"), "{screen}");
+    assert!(screen.contains("x (ft)"), "{screen}");
+}

@@ -1,0 +1,197 @@
+//! End to end: the real binary in a pseudo-terminal, keys in, screen out.
+
+use std::io::{Read, Write};
+use std::num::NonZeroU16;
+use std::sync::{Arc, Mutex};
+use std::thread;
+use std::time::{Duration, Instant};
+
+use portable_pty::{CommandBuilder, PtySize, native_pty_system};
+
+struct Session {
+    screen: Arc<Mutex<vt100::Parser>>,
+    /// Everything the explorer wrote.
+    bytes: Arc<Mutex<Vec<u8>>>,
+    reader: Option<thread::JoinHandle<()>>,
+    writer: Box<dyn Write + Send>,
+    child: Box<dyn portable_pty::Child + Send + Sync>,
+    _master: Box<dyn portable_pty::MasterPty + Send>,
+}
+
+impl Session {
+    fn start(args: &[&str], cols: u16, rows: u16) -> Session {
+        let pair = native_pty_system()
+            .openpty(PtySize {
+                rows,
+                cols,
+                pixel_width: 0,
+                pixel_height: 0,
+            })
+            .unwrap();
+        let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_homerun"));
+        command.args(args);
+        command.env("TERM", "xterm-256color");
+        command.env_remove("COLORTERM");
+        let child = pair.slave.spawn_command(command).unwrap();
+        drop(pair.slave);
+        let mut reader = pair.master.try_clone_reader().unwrap();
+        let writer = pair.master.take_writer().unwrap();
+        let screen = Arc::new(Mutex::new(vt100::Parser::new(
+            NonZeroU16::new(rows).unwrap(),
+            NonZeroU16::new(cols).unwrap(),
+            0,
+        )));
+        let bytes = Arc::new(Mutex::new(Vec::new()));
+        let (s, b) = (Arc::clone(&screen), Arc::clone(&bytes));
+        let reader = thread::spawn(move || {
+            let mut buf = [0u8; 8192];
+            while let Ok(n) = reader.read(&mut buf) {
+                if n == 0 {
+                    break;
+                }
+                s.lock().unwrap().process(&buf[..n]);
+                b.lock().unwrap().extend_from_slice(&buf[..n]);
+            }
+        });
+        Session {
+            screen,
+            bytes,
+            reader: Some(reader),
+            writer,
+            child,
+            _master: pair.master,
+        }
+    }
+
+    fn contents(&self) -> String {
+        self.screen.lock().unwrap().screen().contents()
+    }
+
+    /// Waits (up to a generous bound, so a broken build fails rather than
+    /// hangs) until the screen shows `text`.
+    fn wait_for(&self, text: &str) -> String {
+        let start = Instant::now();
+        loop {
+            let contents = self.contents();
+            if contents.contains(text) {
+                return contents;
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(60),
+                "never saw {text:?}; screen:\n{contents}"
+            );
+            thread::sleep(Duration::from_millis(20));
+        }
+    }
+
+    fn press(&mut self, keys: &str) {
+        self.writer.write_all(keys.as_bytes()).unwrap();
+        self.writer.flush().unwrap();
+    }
+
+    fn exit_code(&mut self) -> u32 {
+        let start = Instant::now();
+        loop {
+            if let Some(status) = self.child.try_wait().unwrap() {
+                // The reader ends when the terminal closes: all output is in.
+                if let Some(reader) = self.reader.take() {
+                    reader.join().unwrap();
+                }
+                return status.exit_code();
+            }
+            assert!(start.elapsed() < Duration::from_secs(30), "did not exit");
+            thread::sleep(Duration::from_millis(20));
+        }
+    }
+}
+
+#[test]
+fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
+    let dir = tempfile::tempdir().unwrap();
+    let dir_arg = dir.path().to_str().unwrap();
+    let mut session = Session::start(&["--presets-dir", dir_arg], 80, 24);
+    session.wait_for("Trajectory");
+    session.wait_for("optimum ✓");
+    // The bat speed is selected: nudge it up by 10 steps (5 m/s).
+    session.press("L");
+    let screen = session.wait_for("35 m/s");
+    assert!(
+        screen.contains("V̂_B0") || screen.contains("V_B0"),
+        "{screen}"
+    );
+    session.wait_for("optimum ✓");
+    session.wait_for("surface ✓");
+    // An idle explorer writes nothing.
+    let before = session.bytes.lock().unwrap().len();
+    thread::sleep(Duration::from_millis(600));
+    assert_eq!(session.bytes.lock().unwrap().len(), before, "idle output");
+    // Help, then save under a new name.
+    session.press("?");
+    session.wait_for("this help");
+    session.press("x");
+    session.press("s");
+    session.wait_for("Save preset");
+    session.press("\u{7f}\u{7f}\u{7f}\u{7f}\u{7f}\u{7f}\u{7f}\u{7f}fast35\r");
+    session.wait_for("saved ");
+    assert!(dir.path().join("fast35.toml").is_file());
+    session.press("q");
+    assert_eq!(session.exit_code(), 0);
+    // Every frame is wrapped in a synchronized update (DEC mode 2026).
+    let count = |pattern: &[u8]| {
+        let bytes = session.bytes.lock().unwrap();
+        bytes
+            .windows(pattern.len())
+            .filter(|w| *w == pattern)
+            .count()
+    };
+    let (begun, ended) = (count(b"\x1b[?2026h"), count(b"\x1b[?2026l"));
+    assert!(
+        begun >= 5 && begun == ended,
+        "synchronized frames {begun}/{ended}"
+    );
+
+    // Reopen on the saved preset: the bat speed is back.
+    let mut session = Session::start(
+        &["--presets-dir", dir_arg, "tui", "--preset", "fast35"],
+        80,
+        24,
+    );
+    let screen = session.wait_for("Trajectory");
+    assert!(
+        screen.contains("fast35") && screen.contains("35 m/s"),
+        "{screen}"
+    );
+    session.press("\u{3}"); // Ctrl-C
+    assert_eq!(session.exit_code(), 0);
+}
+
+#[test]
+fn sigterm_restores_the_terminal_and_exits() {
+    let mut session = Session::start(&[], 100, 30);
+    session.wait_for("Trajectory");
+    let pid = session.child.process_id().unwrap();
+    let status = std::process::Command::new("kill")
+        .args(["-TERM", &pid.to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    assert_eq!(session.exit_code(), 0);
+    // The alternate screen is left: the normal screen is back (empty here).
+    let screen = session.contents();
+    assert!(!screen.contains("Trajectory"), "{screen}");
+}
+
+#[test]
+fn without_a_terminal_it_points_at_the_cli() {
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .stdin(std::process::Stdio::null())
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("needs a terminal") && stderr.contains("homerun --help"),
+        "{stderr}"
+    );
+    assert!(output.stdout.is_empty());
+}

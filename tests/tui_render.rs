@@ -1,0 +1,100 @@
+//! Snapshots of whole screens at 80×24 and 160×48, drawn headlessly.
+
+mod tui_support;
+
+use ratatui::crossterm::event::KeyCode;
+use tui_support::*;
+
+const SIZES: [(u16, u16); 2] = [(80, 24), (160, 48)];
+
+#[test]
+fn default_screen() {
+    for (w, h) in SIZES {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        insta::assert_snapshot!(format!("default_{w}x{h}"), screen(&app));
+    }
+}
+
+#[test]
+fn range_surface_tab_on_a_small_screen() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('2'));
+    insta::assert_snapshot!("surface_80x24", screen(&app));
+}
+
+#[test]
+fn impact_phase_view() {
+    for (w, h) in SIZES {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        key(&mut app, KeyCode::Char('3'));
+        key(&mut app, KeyCode::Char('.'));
+        key(&mut app, KeyCode::Char('.'));
+        insta::assert_snapshot!(format!("impact_{w}x{h}"), screen(&app));
+    }
+}
+
+#[test]
+fn help() {
+    for (w, h) in SIZES {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        key(&mut app, KeyCode::Char('?'));
+        insta::assert_snapshot!(format!("help_{w}x{h}"), screen(&app));
+    }
+}
+
+#[test]
+fn input_edited_with_an_invalid_value() {
+    for (w, h) in SIZES {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        select(&mut app, "bat.undercut");
+        key(&mut app, KeyCode::Enter);
+        for _ in 0..10 {
+            key(&mut app, KeyCode::Backspace);
+        }
+        typed(&mut app, "0.09");
+        key(&mut app, KeyCode::Enter);
+        assert_eq!(app.scene.bat.undercut, 0.0265, "the old value is kept");
+        insta::assert_snapshot!(format!("invalid_edit_{w}x{h}"), screen(&app));
+    }
+}
+
+#[test]
+fn failed_save() {
+    for (w, h) in SIZES {
+        // A folder that cannot be created: /dev/null is not a directory.
+        let mut app = app(w, h, Some("/dev/null/presets".into()));
+        settle(&mut app);
+        let before = app.scene;
+        key(&mut app, KeyCode::Char('s'));
+        typed(&mut app, "-mine");
+        key(&mut app, KeyCode::Enter);
+        assert_eq!(app.scene, before, "the inputs stay");
+        insta::assert_snapshot!(format!("failed_save_{w}x{h}"), screen(&app));
+    }
+}
+
+#[test]
+fn tiny_and_odd_sizes_never_panic() {
+    for (w, h) in [
+        (1, 1),
+        (20, 5),
+        (59, 15),
+        (60, 16),
+        (61, 40),
+        (139, 40),
+        (140, 40),
+        (300, 100),
+    ] {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        for tab in ['1', '2', '3'] {
+            key(&mut app, KeyCode::Char(tab));
+            let _ = screen(&app);
+        }
+    }
+}

@@ -1,0 +1,68 @@
+//! Drives the explorer headlessly: key events in, the worker's job run
+//! synchronously (so results never race the snapshot), a TestBackend out.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
+
+use homerun::preset;
+use homerun::tui::app::App;
+use homerun::tui::view::{self, ColorMode};
+use homerun::tui::worker::run_job;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
+use ratatui::layout::Rect;
+
+pub fn app(width: u16, height: u16, presets_dir: Option<PathBuf>) -> App {
+    let fastball = preset::load("fastball", None).unwrap();
+    App::new(
+        fastball,
+        presets_dir,
+        ColorMode::Indexed,
+        Rect::new(0, 0, width, height),
+    )
+}
+
+pub fn key(app: &mut App, code: KeyCode) {
+    key_with(app, code, KeyModifiers::NONE);
+}
+
+pub fn key_with(app: &mut App, code: KeyCode, modifiers: KeyModifiers) {
+    app.handle(&Event::Key(KeyEvent::new(code, modifiers)));
+    app.flush();
+}
+
+pub fn typed(app: &mut App, text: &str) {
+    for c in text.chars() {
+        key(app, KeyCode::Char(c));
+    }
+}
+
+/// Runs the pending background job to the end, here, and applies its results.
+pub fn settle(app: &mut App) {
+    app.flush();
+    while let Some(job) = app.take_job() {
+        let mut reports = Vec::new();
+        run_job(&job, &|| false, &mut |r| reports.push(r));
+        for report in reports {
+            app.apply(report);
+        }
+    }
+}
+
+/// Selects the input row whose key is `name`.
+pub fn select(app: &mut App, name: &str) {
+    use homerun::model::scene::KEYS;
+    use homerun::tui::app::Field;
+    app.selected = app
+        .fields
+        .iter()
+        .position(|f| matches!(f, Field::Key(k) if KEYS[*k].name == name))
+        .unwrap();
+}
+
+pub fn screen(app: &App) -> String {
+    let mut terminal = Terminal::new(TestBackend::new(app.size.width, app.size.height)).unwrap();
+    terminal.draw(|frame| view::draw(frame, app)).unwrap();
+    terminal.backend().to_string()
+}
