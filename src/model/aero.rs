@@ -73,7 +73,7 @@ const CRISIS_START: f64 = 160_000.0;
 const CRISIS_END: f64 = 175_000.0;
 /// Where the subcritical exponential reaches 0.5 and the `min` takes over:
 /// 160 000 − 8784.46·ln(1 + 0.35/0.0416812) ≈ 140 319.
-const SAWICKI_KINKS: [f64; 3] = [140_318.788_587_386_1, CRISIS_START, CRISIS_END];
+const SAWICKI_KINKS: [f64; 3] = [140_319.312_894_860_5, CRISIS_START, CRISIS_END];
 
 impl std::str::FromStr for DragModel {
     type Err = InputError;
@@ -132,6 +132,10 @@ mod tests {
             assert!((below - above).abs() < 1e-9, "jump at {re}");
         }
         assert!((m.drag_coefficient(SAWICKI_KINKS[0]) - 0.5).abs() < 1e-9);
+        // The first kink is where the rising exponential itself reaches 0.5
+        // (not merely where the `min` clips it).
+        let rise = |re: f64| 0.15 + 0.0416812 * (((CRISIS_START - re) / 8784.46).exp() - 1.0);
+        assert!((rise(SAWICKI_KINKS[0]) - 0.5).abs() < 1e-12);
     }
 
     #[test]
