@@ -58,9 +58,13 @@ pub enum Outcome {
 pub enum Control {
     Continue,
     Stop,
-    /// Replace this step by a shorter one that ends at the given time (which
-    /// lies inside the step): used to end a step exactly on a kink.
-    RedoTo(f64),
+    /// End this step early at the given time (inside the step, read off the
+    /// continuous extension) and go on from there with a fresh derivative:
+    /// the right-hand side has changed there (the flight has crossed one of
+    /// the drag curve's kinks and switched to the formula on its other side).
+    /// The observer should have shown itself the step truncated at that time
+    /// ([`DenseStep::truncated`]).
+    RestartAt(f64),
 }
 
 /// One accepted step and its continuous extension (4th order, Shampine's).
@@ -70,9 +74,8 @@ pub struct DenseStep<const N: usize> {
     pub t1: f64,
     pub y0: State<N>,
     pub y1: State<N>,
-    /// True when this step is the shortened replacement asked for by
-    /// [`Control::RedoTo`].
-    pub redone: bool,
+    /// The step size the extension was built on (t1 − t0 unless truncated).
+    h: f64,
     coefficients: [State<N>; 4],
 }
 
@@ -80,11 +83,19 @@ impl<const N: usize> DenseStep<N> {
     /// The solution at `t` in [t0, t1].
     #[inline]
     pub fn at(&self, t: f64) -> State<N> {
-        let h = self.t1 - self.t0;
-        let s = (t - self.t0) / h;
+        let s = (t - self.t0) / self.h;
         let s1 = 1.0 - s;
         let [diff, c3, c4, c5] = &self.coefficients;
         self.y0 + (diff + (c3 + (c4 + c5 * s1) * s) * s1) * s
+    }
+
+    /// The same step, ending at `t` (t0 < t ≤ t1) instead.
+    pub fn truncated(&self, t: f64) -> DenseStep<N> {
+        DenseStep {
+            t1: t,
+            y1: self.at(t),
+            ..*self
+        }
     }
 }
 
@@ -229,9 +240,6 @@ where
     };
     let mut previous_error: f64 = 1e-4;
     let mut last_rejected = false;
-    // After a RedoTo, the step size the full step would have been followed by.
-    let mut resume_step: Option<f64> = None;
-    let mut redo = false;
 
     loop {
         if stats.accepted + stats.rejected >= settings.max_steps {
@@ -281,36 +289,28 @@ where
                 t1: t + h,
                 y0: y,
                 y1,
-                redone: redo,
+                h,
                 coefficients: [diff, c3, c4, c5],
             };
-            match observe(&step) {
-                Control::RedoTo(t_stop) if !redo && t_stop > t && t_stop < t + h => {
-                    // Throw this step away and take a shorter one to t_stop;
-                    // afterwards resume with the size this step proposed.
-                    stats.rejected += 1;
-                    resume_step = Some(h_next);
-                    h = t_stop - t;
-                    redo = true;
-                    continue;
-                }
-                Control::Stop => {
-                    stats.accepted += 1;
-                    return (Outcome::Stopped, stats);
-                }
-                _ => {}
-            }
             stats.accepted += 1;
             previous_error = err.max(1e-4);
             last_rejected = false;
-            t += h;
-            y = y1;
-            k1 = k7;
-            h = match resume_step.take() {
-                Some(resume) if redo => resume,
-                _ => h_next,
-            };
-            redo = false;
+            h = h_next;
+            match observe(&step) {
+                Control::Stop => return (Outcome::Stopped, stats),
+                Control::RestartAt(t_restart) if t_restart < step.t1 => {
+                    // One evaluation, where a redone step would cost six.
+                    t = t_restart.max(step.t0);
+                    y = step.at(t);
+                    k1 = f(t, &y);
+                    stats.evaluations += 1;
+                }
+                _ => {
+                    t = step.t1;
+                    y = y1;
+                    k1 = k7;
+                }
+            }
         } else {
             // Reject: shrink, never below a fifth.
             stats.rejected += 1;
@@ -321,8 +321,6 @@ where
             };
             h /= shrink;
             last_rejected = true;
-            redo = false;
-            resume_step = None;
         }
     }
 }
