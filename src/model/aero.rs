@@ -54,15 +54,25 @@ impl DragModel {
     /// C_D by the formula of piece `piece`, continued smoothly past the
     /// piece's ends: an integrator step that starts on a piece keeps its
     /// formula, so it sees a smooth right-hand side, and the flight switches
-    /// formula where the step crosses the kink.
+    /// formula where the step crosses the kink. The continuation holds for
+    /// [`CONTINUATION`] past a kink and is constant beyond, so that a long
+    /// step cannot meet an exploding exponential (C_D ≈ 37 at Re = 10⁵ on the
+    /// rising piece; at most 2.3 here) or a negative drag (the recovery piece,
+    /// continued, turns negative below Re ≈ 155 000).
     #[inline]
     pub fn drag_coefficient_on(self, piece: usize, re: f64) -> f64 {
         match self {
             DragModel::Sawicki2003 => match piece {
                 0 => SUBCRITICAL_DRAG,
-                1 => DRAG_FLOOR + 0.0416812 * (((CRISIS_START - re) / 8784.46).exp() - 1.0),
+                1 => {
+                    let re = re.max(SAWICKI_KINKS[0] - CONTINUATION);
+                    DRAG_FLOOR + 0.0416812 * (((CRISIS_START - re) / 8784.46).exp() - 1.0)
+                }
                 2 => DRAG_FLOOR,
-                _ => DRAG_FLOOR + 0.309620 * (1.0 - (-(re - CRISIS_END) / 49808.6).exp()),
+                _ => {
+                    let re = re.max(CRISIS_END - CONTINUATION);
+                    DRAG_FLOOR + 0.309620 * (1.0 - (-(re - CRISIS_END) / 49808.6).exp())
+                }
             },
             DragModel::Constant => SUBCRITICAL_DRAG,
         }
@@ -79,6 +89,9 @@ impl DragModel {
     }
 }
 
+/// How far (in Re) a piece's formula is continued past its kinks: ~3 m/s
+/// of air speed, more than any accurate step overshoots.
+pub const CONTINUATION: f64 = 15_000.0;
 const DRAG_FLOOR: f64 = 0.15;
 const SUBCRITICAL_DRAG: f64 = 0.5;
 const CRISIS_START: f64 = 160_000.0;
@@ -163,6 +176,13 @@ mod tests {
         // keeps falling, so a step that overshoots a kink stays smooth.
         assert!(m.drag_coefficient_on(1, 139_000.0) > 0.5);
         assert!(m.drag_coefficient_on(3, 170_000.0) < 0.15);
+        // …but not without bound.
+        assert!(m.drag_coefficient_on(1, 50_000.0) < 2.5);
+        assert_eq!(
+            m.drag_coefficient_on(1, 50_000.0),
+            m.drag_coefficient_on(1, SAWICKI_KINKS[0] - CONTINUATION)
+        );
+        assert!(m.drag_coefficient_on(3, 0.0) > 0.0);
         for (piece, &re) in m.kinks().iter().enumerate() {
             let below = m.drag_coefficient_on(piece, re);
             let above = m.drag_coefficient_on(piece + 1, re);
