@@ -189,18 +189,46 @@ pub fn fly_observed(
     flight: &Flight,
     launch: &Launch,
     options: &FlightOptions,
+    watch: impl FnMut(&DenseStep<4>),
+) -> FlightSummary {
+    let stepper = Stepper::Adaptive(Settings::new(options.tolerance));
+    fly_with(flight, launch, stepper, options.stop_at_kinks, watch)
+}
+
+/// As [`fly`], with the classical fixed-step Runge–Kutta method (step in s):
+/// the benchmark's comparison for the adaptive default.
+pub fn fly_fixed_step(
+    flight: &Flight,
+    launch: &Launch,
+    step: f64,
+    stop_at_kinks: bool,
+) -> FlightSummary {
+    fly_with(flight, launch, Stepper::Fixed(step), stop_at_kinks, |_| {})
+}
+
+/// Which integrator carries the flight.
+enum Stepper {
+    Adaptive(Settings),
+    Fixed(f64),
+}
+
+fn fly_with(
+    flight: &Flight,
+    launch: &Launch,
+    stepper: Stepper,
+    stop_at_kinks: bool,
     mut watch: impl FnMut(&DenseStep<4>),
 ) -> FlightSummary {
-    let settings = Settings::new(options.tolerance);
     let start = launch.state();
     let mut apex = (launch.position.y, launch.position.x);
     let mut landing: Option<(f64, State<4>)> = None;
     let mut last = (0.0, start);
     let root_tolerance = 1e-13;
     let kinks = flight.drag.kinks();
-    let switching = options.stop_at_kinks && !kinks.is_empty();
+    let switching = stop_at_kinks && !kinks.is_empty();
     // The drag piece the current step uses (when switching).
     let piece = Cell::new(flight.drag_piece(&start));
+    let last_switch = Cell::new(f64::NEG_INFINITY);
     let reynolds = |s: &State<4>| flight.reynolds(Vector2::new(s[2], s[3]));
 
     // Where the step leaves its drag piece, and the piece it enters.
@@ -232,46 +260,54 @@ pub fn fly_observed(
     let landing_time =
         |step: &DenseStep<4>| ode::find_root(|t| step.at(t)[1], step.t0, step.t1, root_tolerance);
 
-    let (outcome, stats) = ode::integrate(
-        |_t, s| {
-            if switching {
-                flight.derivative_on(s, Some(piece.get()))
-            } else {
-                flight.derivative(s)
+    let rhs = |_t: f64, s: &State<4>| {
+        if switching {
+            flight.derivative_on(s, Some(piece.get()))
+        } else {
+            flight.derivative(s)
+        }
+    };
+    let observe = |step: &DenseStep<4>| {
+        let mut shown = *step;
+        let mut control = Control::Continue;
+        if switching && let Some((t_kink, next)) = crossing(step) {
+            let lands_first = step.y1[1] <= 0.0 && landing_time(step) <= t_kink;
+            // A second switch at the same instant would undo the first (Re
+            // turning right at a kink): go on without it, so that every
+            // switch is followed by progress in time.
+            let stalls = t_kink <= last_switch.get();
+            if !lands_first && !stalls {
+                last_switch.set(t_kink);
+                shown = step.truncated(t_kink);
+                piece.set(next);
+                control = Control::RestartAt(t_kink);
             }
-        },
-        0.0,
-        start,
-        MAX_FLIGHT_TIME,
-        &settings,
-        |step| {
-            let mut shown = *step;
-            let mut control = Control::Continue;
-            if switching && let Some((t_kink, next)) = crossing(step) {
-                let lands_first = step.y1[1] <= 0.0 && landing_time(step) <= t_kink;
-                if !lands_first {
-                    shown = step.truncated(t_kink);
-                    piece.set(next);
-                    control = Control::RestartAt(t_kink);
-                }
+        }
+        watch(&shown);
+        if shown.y0[3] > 0.0 && shown.y1[3] <= 0.0 {
+            let t = ode::find_root(|t| shown.at(t)[3], shown.t0, shown.t1, root_tolerance);
+            let s = shown.at(t);
+            if s[1] > apex.0 {
+                apex = (s[1], s[0]);
             }
-            watch(&shown);
-            if shown.y0[3] > 0.0 && shown.y1[3] <= 0.0 {
-                let t = ode::find_root(|t| shown.at(t)[3], shown.t0, shown.t1, root_tolerance);
-                let s = shown.at(t);
-                if s[1] > apex.0 {
-                    apex = (s[1], s[0]);
-                }
-            }
-            last = (shown.t1, shown.y1);
-            if shown.y1[1] <= 0.0 {
-                let t = landing_time(&shown);
-                landing = Some((t, shown.at(t)));
-                return Control::Stop;
-            }
-            control
-        },
-    );
+        }
+        last = (shown.t1, shown.y1);
+        if shown.y1[1] <= 0.0 {
+            let t = landing_time(&shown);
+            landing = Some((t, shown.at(t)));
+            return Control::Stop;
+        }
+        control
+    };
+    let (outcome, stats) = match stepper {
+        Stepper::Adaptive(settings) => {
+            ode::integrate(rhs, 0.0, start, MAX_FLIGHT_TIME, &settings, observe)
+        }
+        Stepper::Fixed(step) => {
+            let max_steps = Settings::new(Tolerance::uniform(1.0)).max_steps;
+            ode::integrate_fixed(rhs, 0.0, start, MAX_FLIGHT_TIME, step, max_steps, observe)
+        }
+    };
     let landed = outcome == Outcome::Stopped;
     let (time, state) = landing.unwrap_or(last);
     FlightSummary {
