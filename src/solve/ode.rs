@@ -238,7 +238,9 @@ where
         Some(h) => h,
         None => initial_step(&mut f, t, &y, &k1, settings, &mut stats),
     };
-    let mut previous_error: f64 = 1e-4;
+    // ln of the last accepted step's error (floored at 1e-4), for the PI
+    // controller; logarithms make its two powers one exp (pow costs 2×).
+    let mut previous_ln_error: f64 = 1e-4f64.ln();
     let mut last_rejected = false;
 
     loop {
@@ -270,12 +272,13 @@ where
 
         let err_vec = (k1 * E1 + k3 * E3 + k4 * E4 + k5 * E5 + k6 * E6 + k7 * E7) * h;
         let err = error_norm(&err_vec, &y, &y1, tol);
-        let fac11 = err.powf(0.2 - BETA * 0.75);
 
         if err <= 1.0 {
             // Accept.
-            let fac = (fac11 / previous_error.powf(BETA) / SAFETY)
-                .clamp(1.0 / MAX_FACTOR, 1.0 / MIN_FACTOR);
+            // err^(0.2 − 0.75β) / previous^β / SAFETY, with err = 0 → 0.
+            let ln_error = err.ln();
+            let fac = ((0.2 - BETA * 0.75) * ln_error - BETA * previous_ln_error).exp() / SAFETY;
+            let fac = fac.clamp(1.0 / MAX_FACTOR, 1.0 / MIN_FACTOR);
             let mut h_next = h / fac;
             if last_rejected {
                 h_next = h_next.min(h);
@@ -293,7 +296,7 @@ where
                 coefficients: [diff, c3, c4, c5],
             };
             stats.accepted += 1;
-            previous_error = err.max(1e-4);
+            previous_ln_error = ln_error.max(1e-4f64.ln());
             last_rejected = false;
             h = h_next;
             match observe(&step) {
@@ -315,7 +318,7 @@ where
             // Reject: shrink, never below a fifth.
             stats.rejected += 1;
             let shrink = if err.is_finite() {
-                (fac11 / SAFETY).min(1.0 / MIN_FACTOR)
+                (err.powf(0.2 - BETA * 0.75) / SAFETY).min(1.0 / MIN_FACTOR)
             } else {
                 1.0 / MIN_FACTOR
             };
