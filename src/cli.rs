@@ -104,6 +104,14 @@ pub enum Command {
     },
     /// The presets and what they are.
     Presets,
+    /// Speed against error on this machine: the work–precision tables.
+    Bench {
+        #[arg(long)]
+        json: bool,
+        /// A reduced version (seconds).
+        #[arg(long)]
+        quick: bool,
+    },
     /// Open the explorer (the default with no command).
     Tui {
         /// The preset to start from.
@@ -151,6 +159,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
     let dir = dir.as_deref();
     match command {
         Command::Hit { scene, json } => hit(&scene.resolve(dir)?.scene, *json),
+        Command::Bench { json, quick } => crate::bench::print(*json, *quick),
         _ => Err(UsageError::Other("not implemented yet".into())),
     }
 }
