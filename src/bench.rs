@@ -20,10 +20,14 @@ use crate::study::{self, Grid};
 /// reference/model.py's range for the Table II fastball launch (m).
 pub const PYTHON_REFERENCE_RANGE: f64 = 134.698780;
 
+/// Flights per timed batch (so that reading the CPU clock costs nothing).
+const TRAJECTORY_BATCH: usize = 50;
+
 /// How much to measure.
 #[derive(Clone, Copy, Debug)]
 struct Effort {
-    trajectory_runs: usize,
+    /// Batches of `TRAJECTORY_BATCH` flights.
+    trajectory_batches: usize,
     optimisation_runs: usize,
     surface_runs: usize,
     surface_size: usize,
@@ -33,14 +37,14 @@ impl Effort {
     fn new(quick: bool) -> Effort {
         if quick {
             Effort {
-                trajectory_runs: 101,
+                trajectory_batches: 5,
                 optimisation_runs: 1,
                 surface_runs: 1,
                 surface_size: 64,
             }
         } else {
             Effort {
-                trajectory_runs: 1001,
+                trajectory_batches: 41,
                 optimisation_runs: 7,
                 surface_runs: 5,
                 surface_size: 64,
@@ -82,7 +86,10 @@ pub struct TrajectoryRow {
     pub evaluations: u32,
     pub accepted: u32,
     pub rejected: u32,
+    /// Median wall time per trajectory.
     pub time_us: f64,
+    /// Median CPU time per trajectory (Unix only).
+    pub cpu_us: Option<f64>,
     pub range_error: f64,
 }
 
@@ -95,7 +102,10 @@ pub struct OptimisationRow {
     pub integrator_tolerance: f64,
     pub evaluations: u32,
     pub converged: bool,
+    /// Median wall time.
     pub time_ms: f64,
+    /// Median CPU time (Unix only).
+    pub cpu_ms: Option<f64>,
     pub undercut_error: f64,
     pub swing_angle_error: f64,
     pub range_error: f64,
@@ -107,7 +117,11 @@ pub struct SurfaceRow {
     pub cells: usize,
     pub integrator_tolerance: f64,
     pub threads: usize,
+    /// Median wall time.
     pub time_ms: f64,
+    /// Median CPU time summed over the threads (Unix only): on an idle
+    /// machine, the wall time is about this divided by `threads`.
+    pub cpu_ms: Option<f64>,
     pub max_cell_error: f64,
 }
 
@@ -125,17 +139,47 @@ fn median(mut samples: Vec<f64>) -> f64 {
     samples[samples.len() / 2]
 }
 
-/// Median wall time (s) of `runs` calls of `work`, after one warm-up call.
-fn time_median<T>(runs: usize, mut work: impl FnMut() -> T) -> f64 {
+/// Time on a CPU (ns) of all this process's threads (POSIX
+/// `CLOCK_PROCESS_CPUTIME_ID`); `None` where that is unavailable. Unlike the
+/// wall clock, it does not count time spent waiting for a core that other
+/// programs hold, so it measures the code on a shared machine.
+#[cfg(unix)]
+fn cpu_ns() -> Option<u64> {
+    let mut now = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: clock_gettime writes one timespec to a valid pointer.
+    let status = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut now) };
+    (status == 0).then(|| now.tv_sec as u64 * 1_000_000_000 + now.tv_nsec as u64)
+}
+
+#[cfg(not(unix))]
+fn cpu_ns() -> Option<u64> {
+    None
+}
+
+/// Per call of `work`: the median wall time (s) and the median CPU time (s,
+/// summed over threads) over `batches` batches of `batch` calls, after one
+/// warm-up call.
+fn time_median<T>(batches: usize, batch: usize, mut work: impl FnMut() -> T) -> (f64, Option<f64>) {
     std::hint::black_box(work());
-    let samples = (0..runs.max(1))
-        .map(|_| {
-            let start = Instant::now();
+    let batch = batch.max(1);
+    let mut wall = Vec::new();
+    let mut cpu = Vec::new();
+    for _ in 0..batches.max(1) {
+        let cpu_start = cpu_ns();
+        let start = Instant::now();
+        for _ in 0..batch {
             std::hint::black_box(work());
-            start.elapsed().as_secs_f64()
-        })
-        .collect();
-    median(samples)
+        }
+        wall.push(start.elapsed().as_secs_f64() / batch as f64);
+        if let (Some(a), Some(b)) = (cpu_start, cpu_ns()) {
+            cpu.push(b.saturating_sub(a) as f64 * 1e-9 / batch as f64);
+        }
+    }
+    let cpu = (!cpu.is_empty()).then(|| median(cpu));
+    (median(wall), cpu)
 }
 
 fn stated(exponent: i32, stop_at_kinks: bool) -> Purpose {
@@ -170,7 +214,7 @@ fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
         for exponent in 3..=12 {
             let options = stated(exponent, stop_at_kinks).flight_options();
             let summary = flight::fly(&flight, &launch, &options);
-            let time = time_median(effort.trajectory_runs, || {
+            let (time, cpu) = time_median(effort.trajectory_batches, TRAJECTORY_BATCH, || {
                 flight::fly(std::hint::black_box(&flight), &launch, &options)
             });
             rows.push(TrajectoryRow {
@@ -182,6 +226,7 @@ fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
                 accepted: summary.stats.accepted,
                 rejected: summary.stats.rejected,
                 time_us: time * 1e6,
+                cpu_us: cpu.map(|c| c * 1e6),
                 range_error: summary.range - reference,
             });
         }
@@ -189,7 +234,7 @@ fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
     for stop_at_kinks in [false, true] {
         for step in [0.2, 0.1, 0.05, 0.02, 0.01] {
             let summary = flight::fly_fixed_step(&flight, &launch, step, stop_at_kinks);
-            let time = time_median(effort.trajectory_runs, || {
+            let (time, cpu) = time_median(effort.trajectory_batches, TRAJECTORY_BATCH, || {
                 flight::fly_fixed_step(std::hint::black_box(&flight), &launch, step, stop_at_kinks)
             });
             rows.push(TrajectoryRow {
@@ -201,6 +246,7 @@ fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
                 accepted: summary.stats.accepted,
                 rejected: summary.stats.rejected,
                 time_us: time * 1e6,
+                cpu_us: cpu.map(|c| c * 1e6),
                 range_error: summary.range - reference,
             });
         }
@@ -267,7 +313,7 @@ fn optimisations(effort: Effort, quick: bool) -> Vec<OptimisationRow> {
             let purpose = stated(exponent, true);
             let settings = optimizer_settings(tolerance);
             let (e, psi, range, evaluations, converged) = optimise(&scene, purpose, settings);
-            let time = time_median(effort.optimisation_runs, || {
+            let (time, cpu) = time_median(effort.optimisation_runs, 1, || {
                 let mut optimizer = Optimizer::new(
                     &scene,
                     (scene.bat.undercut, scene.bat.swing_angle),
@@ -283,6 +329,7 @@ fn optimisations(effort: Effort, quick: bool) -> Vec<OptimisationRow> {
                 evaluations,
                 converged,
                 time_ms: time * 1e3,
+                cpu_ms: cpu.map(|c| c * 1e3),
                 undercut_error: e - e_ref,
                 swing_angle_error: psi - psi_ref,
                 range_error: range - range_ref,
@@ -321,7 +368,7 @@ fn surfaces(effort: Effort, threads: usize, quick: bool) -> Vec<SurfaceRow> {
                 .num_threads(n)
                 .build()
                 .expect("a thread pool");
-            let time = time_median(effort.surface_runs, || {
+            let (time, cpu) = time_median(effort.surface_runs, 1, || {
                 pool.install(|| study::surface(&scene, grid, purpose))
             });
             rows.push(SurfaceRow {
@@ -329,6 +376,7 @@ fn surfaces(effort: Effort, threads: usize, quick: bool) -> Vec<SurfaceRow> {
                 integrator_tolerance: 10f64.powi(-exponent),
                 threads: n,
                 time_ms: time * 1e3,
+                cpu_ms: cpu.map(|c| c * 1e3),
                 max_cell_error: error,
             });
         }
@@ -386,7 +434,7 @@ pub fn render(report: &Report) -> String {
     let _ = writeln!(out, "\none trajectory (Table II fastball launch)");
     let _ = writeln!(
         out,
-        "{:<7} {:>9} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9} {:>11}",
+        "{:<7} {:>9} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9} {:>8} {:>11}",
         "method",
         "tolerance",
         "step",
@@ -395,12 +443,13 @@ pub fn render(report: &Report) -> String {
         "accepted",
         "rejected",
         "time_us",
+        "cpu_us",
         "range_error"
     );
     for row in &report.trajectory {
         let _ = writeln!(
             out,
-            "{:<7} {:>9} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9.2} {:>11.2e}",
+            "{:<7} {:>9} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9.2} {:>8} {:>11.2e}",
             row.method,
             or_dash(row.tolerance, |t| format!("{t:.0e}")),
             or_dash(row.step, |h| format!("{h}")),
@@ -409,6 +458,7 @@ pub fn render(report: &Report) -> String {
             row.accepted,
             row.rejected,
             row.time_us,
+            or_dash(row.cpu_us, |c| format!("{c:.2}")),
             row.range_error
         );
     }
@@ -418,13 +468,14 @@ pub fn render(report: &Report) -> String {
     );
     let _ = writeln!(
         out,
-        "{:<12} {:>19} {:>20} {:>11} {:>9} {:>7} {:>14} {:>17} {:>11}",
+        "{:<12} {:>19} {:>20} {:>11} {:>9} {:>7} {:>6} {:>14} {:>17} {:>11}",
         "pitch",
         "optimizer_tolerance",
         "integrator_tolerance",
         "evaluations",
         "converged",
         "time_ms",
+        "cpu_ms",
         "undercut_error",
         "swing_angle_error",
         "range_error"
@@ -432,13 +483,14 @@ pub fn render(report: &Report) -> String {
     for row in &report.optimisation {
         let _ = writeln!(
             out,
-            "{:<12} {:>19.0e} {:>20.0e} {:>11} {:>9} {:>7.2} {:>14.1e} {:>17.1e} {:>11.1e}",
+            "{:<12} {:>19.0e} {:>20.0e} {:>11} {:>9} {:>7.2} {:>6} {:>14.1e} {:>17.1e} {:>11.1e}",
             row.pitch,
             row.optimizer_tolerance,
             row.integrator_tolerance,
             row.evaluations,
             row.converged,
             row.time_ms,
+            or_dash(row.cpu_ms, |c| format!("{c:.2}")),
             row.undercut_error,
             row.swing_angle_error,
             row.range_error
@@ -450,14 +502,19 @@ pub fn render(report: &Report) -> String {
     );
     let _ = writeln!(
         out,
-        "{:>6} {:>20} {:>7} {:>8} {:>14}",
-        "cells", "integrator_tolerance", "threads", "time_ms", "max_cell_error"
+        "{:>6} {:>20} {:>7} {:>8} {:>8} {:>14}",
+        "cells", "integrator_tolerance", "threads", "time_ms", "cpu_ms", "max_cell_error"
     );
     for row in &report.surface {
         let _ = writeln!(
             out,
-            "{:>6} {:>20.0e} {:>7} {:>8.1} {:>14.2e}",
-            row.cells, row.integrator_tolerance, row.threads, row.time_ms, row.max_cell_error
+            "{:>6} {:>20.0e} {:>7} {:>8.1} {:>8} {:>14.2e}",
+            row.cells,
+            row.integrator_tolerance,
+            row.threads,
+            row.time_ms,
+            or_dash(row.cpu_ms, |c| format!("{c:.1}")),
+            row.max_cell_error
         );
     }
     let _ = writeln!(
@@ -476,7 +533,12 @@ pub fn render(report: &Report) -> String {
             row.purpose, row.range_budget, row.tolerance, row.range_error
         );
     }
-    let _ = writeln!(out, "\n(all cores = {} threads)", report.threads);
+    let _ = writeln!(
+        out,
+        "\n(all cores = {} threads; time = median wall clock, cpu = median CPU time summed over threads; \
+         on a machine shared with other work, the wall clock counts waiting for a core)",
+        report.threads
+    );
     out
 }
 
