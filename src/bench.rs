@@ -78,8 +78,10 @@ pub struct ReferenceCheck {
 #[derive(Clone, Debug, Serialize)]
 pub struct TrajectoryRow {
     pub method: &'static str,
-    /// Relative = absolute tolerance (adaptive methods).
+    /// Relative tolerance (adaptive methods).
     pub tolerance: Option<f64>,
+    /// Absolute tolerance (adaptive methods).
+    pub absolute: Option<f64>,
     /// Step size (s) (fixed-step methods).
     pub step: Option<f64>,
     pub stop_at_kinks: bool,
@@ -115,7 +117,10 @@ pub struct OptimisationRow {
 #[derive(Clone, Debug, Serialize)]
 pub struct SurfaceRow {
     pub cells: usize,
+    /// Relative tolerance.
     pub integrator_tolerance: f64,
+    /// Absolute tolerance.
+    pub absolute: f64,
     pub threads: usize,
     /// Median wall time.
     pub time_ms: f64,
@@ -182,9 +187,15 @@ fn time_median<T>(batches: usize, batch: usize, mut work: impl FnMut() -> T) -> 
     (median(wall), cpu)
 }
 
+/// Relative and absolute tolerance 10^−exponent.
 fn stated(exponent: i32, stop_at_kinks: bool) -> Purpose {
+    stated_mixed(exponent, exponent, stop_at_kinks)
+}
+
+fn stated_mixed(relative_exponent: i32, absolute_exponent: i32, stop_at_kinks: bool) -> Purpose {
     Purpose::Stated {
-        tolerance_exponent: exponent,
+        relative_exponent,
+        absolute_exponent,
         stop_at_kinks,
     }
 }
@@ -210,26 +221,34 @@ fn fastball_launch() -> (Flight, Launch) {
 fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
     let (flight, launch) = fastball_launch();
     let mut rows = Vec::new();
+    // (relative exponent, absolute exponent, stop at kinks): uniform
+    // tolerances with and without kinks, then an absolute tolerance ten
+    // times the relative one (positions ~100 m and speeds ~40 m/s need no
+    // finer absolute floor than a relative one gives them).
+    let mut settings: Vec<(i32, i32, bool)> = Vec::new();
     for stop_at_kinks in [false, true] {
-        for exponent in 3..=12 {
-            let options = stated(exponent, stop_at_kinks).flight_options();
-            let summary = flight::fly(&flight, &launch, &options);
-            let (time, cpu) = time_median(effort.trajectory_batches, TRAJECTORY_BATCH, || {
-                flight::fly(std::hint::black_box(&flight), &launch, &options)
-            });
-            rows.push(TrajectoryRow {
-                method: "dopri5",
-                tolerance: Some(options.tolerance.relative),
-                step: None,
-                stop_at_kinks,
-                evaluations: summary.stats.evaluations,
-                accepted: summary.stats.accepted,
-                rejected: summary.stats.rejected,
-                time_us: time * 1e6,
-                cpu_us: cpu.map(|c| c * 1e6),
-                range_error: summary.range - reference,
-            });
-        }
+        settings.extend((3..=12).map(|e| (e, e, stop_at_kinks)));
+    }
+    settings.extend((3..=10).map(|e| (e, e - 1, true)));
+    for (relative, absolute, stop_at_kinks) in settings {
+        let options = stated_mixed(relative, absolute, stop_at_kinks).flight_options();
+        let summary = flight::fly(&flight, &launch, &options);
+        let (time, cpu) = time_median(effort.trajectory_batches, TRAJECTORY_BATCH, || {
+            flight::fly(std::hint::black_box(&flight), &launch, &options)
+        });
+        rows.push(TrajectoryRow {
+            method: "dopri5",
+            tolerance: Some(options.tolerance.relative),
+            absolute: Some(options.tolerance.absolute),
+            step: None,
+            stop_at_kinks,
+            evaluations: summary.stats.evaluations,
+            accepted: summary.stats.accepted,
+            rejected: summary.stats.rejected,
+            time_us: time * 1e6,
+            cpu_us: cpu.map(|c| c * 1e6),
+            range_error: summary.range - reference,
+        });
     }
     for stop_at_kinks in [false, true] {
         for step in [0.2, 0.1, 0.05, 0.02, 0.01] {
@@ -240,6 +259,7 @@ fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
             rows.push(TrajectoryRow {
                 method: "rk4",
                 tolerance: None,
+                absolute: None,
                 step: Some(step),
                 stop_at_kinks,
                 evaluations: summary.stats.evaluations,
@@ -355,10 +375,23 @@ fn surfaces(effort: Effort, threads: usize, quick: bool) -> Vec<SurfaceRow> {
     let scene = Scene::default();
     let grid = Grid::figure7(effort.surface_size, effort.surface_size);
     let tight = study::surface(&scene, grid, Purpose::Reference);
-    let exponents: &[i32] = if quick { &[3, 5] } else { &[2, 3, 4, 5, 6, 8] };
+    let settings: &[(i32, i32)] = if quick {
+        &[(3, 3), (5, 5), (5, 4)]
+    } else {
+        &[
+            (2, 2),
+            (3, 3),
+            (4, 4),
+            (5, 5),
+            (6, 6),
+            (8, 8),
+            (4, 3),
+            (5, 4),
+        ]
+    };
     let mut rows = Vec::new();
-    for &exponent in exponents {
-        let purpose = stated(exponent, true);
+    for &(relative, absolute) in settings {
+        let purpose = stated_mixed(relative, absolute, true);
         let cheap = study::surface(&scene, grid, purpose);
         let error = max_difference(&cheap, &tight);
         let mut counts = vec![1, threads];
@@ -373,7 +406,8 @@ fn surfaces(effort: Effort, threads: usize, quick: bool) -> Vec<SurfaceRow> {
             });
             rows.push(SurfaceRow {
                 cells: grid.columns * grid.rows,
-                integrator_tolerance: 10f64.powi(-exponent),
+                integrator_tolerance: 10f64.powi(-relative),
+                absolute: 10f64.powi(-absolute),
                 threads: n,
                 time_ms: time * 1e3,
                 cpu_ms: cpu.map(|c| c * 1e3),
@@ -434,9 +468,10 @@ pub fn render(report: &Report) -> String {
     let _ = writeln!(out, "\none trajectory (Table II fastball launch)");
     let _ = writeln!(
         out,
-        "{:<7} {:>9} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9} {:>8} {:>11}",
+        "{:<7} {:>9} {:>8} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9} {:>8} {:>11}",
         "method",
         "tolerance",
+        "absolute",
         "step",
         "stop_at_kinks",
         "evaluations",
@@ -449,9 +484,10 @@ pub fn render(report: &Report) -> String {
     for row in &report.trajectory {
         let _ = writeln!(
             out,
-            "{:<7} {:>9} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9.2} {:>8} {:>11.2e}",
+            "{:<7} {:>9} {:>8} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9.2} {:>8} {:>11.2e}",
             row.method,
             or_dash(row.tolerance, |t| format!("{t:.0e}")),
+            or_dash(row.absolute, |t| format!("{t:.0e}")),
             or_dash(row.step, |h| format!("{h}")),
             row.stop_at_kinks,
             row.evaluations,
@@ -502,15 +538,22 @@ pub fn render(report: &Report) -> String {
     );
     let _ = writeln!(
         out,
-        "{:>6} {:>20} {:>7} {:>8} {:>8} {:>14}",
-        "cells", "integrator_tolerance", "threads", "time_ms", "cpu_ms", "max_cell_error"
+        "{:>6} {:>20} {:>8} {:>7} {:>8} {:>8} {:>14}",
+        "cells",
+        "integrator_tolerance",
+        "absolute",
+        "threads",
+        "time_ms",
+        "cpu_ms",
+        "max_cell_error"
     );
     for row in &report.surface {
         let _ = writeln!(
             out,
-            "{:>6} {:>20.0e} {:>7} {:>8.1} {:>8} {:>14.2e}",
+            "{:>6} {:>20.0e} {:>8.0e} {:>7} {:>8.1} {:>8} {:>14.2e}",
             row.cells,
             row.integrator_tolerance,
+            row.absolute,
             row.threads,
             row.time_ms,
             or_dash(row.cpu_ms, |c| format!("{c:.1}")),

@@ -32,10 +32,12 @@ pub enum Purpose {
     Plot,
     /// The reference for the benchmarks and tests: as tight as f64 allows.
     Reference,
-    /// A stated tolerance, 10^−`tolerance_exponent`: for the benchmark's
-    /// work–precision table and for tests, never for a consumer.
+    /// A stated tolerance, relative 10^−`relative_exponent` and absolute
+    /// 10^−`absolute_exponent`: for the benchmark's work–precision table and
+    /// for tests, never for a consumer.
     Stated {
-        tolerance_exponent: i32,
+        relative_exponent: i32,
+        absolute_exponent: i32,
         stop_at_kinks: bool,
     },
 }
@@ -65,16 +67,33 @@ impl Purpose {
         }
     }
 
+    /// The loosest tolerance that keeps the range error well inside the
+    /// budget, from `homerun bench` (Table II fastball; errors against
+    /// Purpose::Reference):
     pub fn tolerance(self) -> Tolerance {
         match self {
+            // 5e-8 m, 20× inside the budget, for ~25 µs: one solve per
+            // keystroke can afford it.
             Purpose::Readout => Tolerance::uniform(1e-10),
+            // ≤ 4e-6 m near the optimum, inside TolFun/10; 1e-7 gives 3e-5 m
+            // (over it). The optima it finds equal those at 1e-10 to 1e-7 m in
+            // E and 2e-6 rad in ψ, at ~1.7 ms per Table II pitch.
             Purpose::Optimizer => Tolerance::uniform(1e-8),
+            // Worst of 64×64 Fig. 7 cells: 0.055 m, 11× inside a quarter
+            // colour step; 1e-4 leaves only 2× (0.32 m) to save ~15 % of time.
             Purpose::Surface => Tolerance::uniform(1e-5),
+            // 1e-4 m at the landing and a few mm between steps on the dense
+            // output: far inside a braille dot for < 10 µs a drawing.
             Purpose::Plot => Tolerance::uniform(1e-6),
             Purpose::Reference => Tolerance::uniform(1e-13),
             Purpose::Stated {
-                tolerance_exponent, ..
-            } => Tolerance::uniform(10f64.powi(-tolerance_exponent)),
+                relative_exponent,
+                absolute_exponent,
+                ..
+            } => Tolerance {
+                relative: 10f64.powi(-relative_exponent),
+                absolute: 10f64.powi(-absolute_exponent),
+            },
         }
     }
 
@@ -132,6 +151,25 @@ mod tests {
         }
         assert!(worst <= Purpose::Optimizer.range_budget(), "{worst:e}");
         assert!(Purpose::Optimizer.range_budget() <= 1e-4 / 10.0);
+    }
+
+    #[test]
+    fn a_plotted_trajectory_stays_within_its_budget_between_steps() {
+        use crate::model::flight::trajectory;
+        for scene in table_two() {
+            let impact = crate::model::impact::Impact::new(&scene);
+            let (flight, launch) = model::launch(&scene, &impact);
+            let plot =
+                |purpose: Purpose| trajectory(&flight, &launch, &purpose.flight_options(), 300).1;
+            let (drawn, tight) = (plot(Purpose::Plot), plot(Purpose::Reference));
+            assert_eq!(drawn.len(), 300);
+            let worst = drawn
+                .iter()
+                .zip(&tight)
+                .map(|(a, b)| (a.x - b.x).abs().max((a.y - b.y).abs()))
+                .fold(0.0, f64::max);
+            assert!(worst <= Purpose::Plot.range_budget(), "{worst}");
+        }
     }
 
     #[test]

@@ -345,7 +345,8 @@ fn extreme_tolerances_end_with_bounded_work() {
     let grid = homerun::study::Grid::figure7(6, 6);
     for (exponent, max_steps) in [(2, 60), (13, 4000)] {
         let purpose = Purpose::Stated {
-            tolerance_exponent: exponent,
+            relative_exponent: exponent,
+            absolute_exponent: exponent,
             stop_at_kinks: true,
         };
         for i in 0..grid.columns {
