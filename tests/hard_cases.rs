@@ -424,3 +424,45 @@ fn the_optimiser_agrees_from_far_starts() {
         }
     }
 }
+
+#[test]
+fn random_valid_scenes_give_finite_numbers() {
+    // Every input drawn anywhere in its accepted range (half of them left at
+    // the fastball's values), deterministic (xorshift). Balloons, gales and
+    // feather-light bats included: the numbers must stay finite and the
+    // work bounded, landed or not.
+    use homerun::model::scene::KEYS;
+    let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut uniform = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut checked = 0;
+    while checked < 300 {
+        let mut scene = Scene::default();
+        for key in KEYS.iter() {
+            if uniform() < 0.5 {
+                continue;
+            }
+            let (lo, hi) = (key.bounds.min.max(-1e3), key.bounds.max.min(1e3));
+            let _ = scene.set(key.name, lo + (hi - lo) * uniform());
+        }
+        if scene.validate().is_err() {
+            continue;
+        }
+        checked += 1;
+        let swing = model::simulate(&scene, Purpose::Surface);
+        let f = swing.flight;
+        let numbers = [
+            f.range,
+            f.flight_time,
+            f.apex,
+            f.landing_speed,
+            f.landing_angle,
+        ];
+        assert!(numbers.iter().all(|x| x.is_finite()), "{scene:?}: {f:?}");
+        assert!(f.stats.accepted + f.stats.rejected <= 100_000);
+    }
+}
