@@ -297,6 +297,50 @@ fn fly_with(
             landing = Some((t, shown.at(t)));
             return Control::Stop;
         }
+        if control == Control::Continue {
+            // When the next event is near, end the next step a little past
+            // it rather than wherever the error control would.
+            let h = shown.t1 - shown.t0;
+            let mut soonest = f64::INFINITY;
+            // The landing: y(τ) ≈ y + v_y τ + a_y τ²/2, a_y from the step.
+            let (y, vy) = (shown.y1[1], shown.y1[3]);
+            let ay = (shown.y1[3] - shown.y0[3]) / h;
+            let disc = vy * vy - 2.0 * ay * y;
+            if disc >= 0.0 && ay != 0.0 {
+                for tau in [(-vy + disc.sqrt()) / ay, (-vy - disc.sqrt()) / ay] {
+                    if tau > 0.0 {
+                        soonest = soonest.min(tau);
+                    }
+                }
+            } else if ay == 0.0 && vy < 0.0 {
+                soonest = -y / vy;
+            }
+            // The next kink, from the Reynolds number's rate over the step.
+            if switching {
+                let (re0, re1) = (reynolds(&shown.y0), reynolds(&shown.y1));
+                let rate = (re1 - re0) / h;
+                let p = piece.get();
+                let target = if rate < 0.0 && p > 0 {
+                    Some(kinks[p - 1])
+                } else if rate > 0.0 && p < kinks.len() {
+                    Some(kinks[p])
+                } else {
+                    None
+                };
+                if let Some(kink) = target {
+                    soonest = soonest.min((kink - re1) / rate);
+                }
+            }
+            // Past the predicted event by half its distance, so that the
+            // event falls inside the next step despite the prediction's
+            // error; and not for events closer than a tenth of this step,
+            // lest a Reynolds number creeping up on a kink shrink the steps
+            // without end. (bench: at 1e-5 the landing error falls ~4× and a
+            // Fig. 7 surface's worst cell 10×, for the same evaluations.)
+            if soonest.is_finite() && soonest > 0.1 * h {
+                return Control::EndNextBy(shown.t1 + 1.5 * soonest);
+            }
+        }
         control
     };
     let (outcome, stats) = match stepper {

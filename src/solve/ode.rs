@@ -65,6 +65,10 @@ pub enum Control {
     /// The observer should have shown itself the step truncated at that time
     /// ([`DenseStep::truncated`]).
     RestartAt(f64),
+    /// Go on, ending the next step no later than the given time: the
+    /// observer expects an event (a kink, the landing) a little before it,
+    /// so that the step that meets the event wastes little beyond it.
+    EndNextBy(f64),
 }
 
 /// One accepted step and its continuous extension (4th order, Shampine's).
@@ -308,10 +312,15 @@ where
                     k1 = f(t, &y);
                     stats.evaluations += 1;
                 }
-                _ => {
+                control => {
                     t = step.t1;
                     y = y1;
                     k1 = k7;
+                    if let Control::EndNextBy(t_end_next) = control
+                        && t_end_next > t
+                    {
+                        h = h.min(t_end_next - t);
+                    }
                 }
             }
         } else {
