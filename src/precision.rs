@@ -77,12 +77,12 @@ impl Purpose {
             Purpose::Readout => Tolerance::uniform(1e-10),
             // ≤ 4e-6 m near the optimum, inside TolFun/10; 1e-7 gives 3e-5 m
             // (over it). The optima it finds equal those at 1e-10 to 1e-7 m in
-            // E and 2e-6 rad in ψ, at ~1.7 ms per Table II pitch.
+            // E and 2e-6 rad in ψ, at ~1.7 ms of CPU per Table II pitch.
             Purpose::Optimizer => Tolerance::uniform(1e-8),
-            // Worst of 64×64 Fig. 7 cells: 0.055 m, 11× inside a quarter
-            // colour step; 1e-4 leaves only 2× (0.32 m) to save ~15 % of time.
+            // Worst of 64×64 Fig. 7 cells: 0.0054 m, 100× inside a quarter
+            // colour step; 1e-4 leaves under 3× (0.23 m) to save ~10 % of time.
             Purpose::Surface => Tolerance::uniform(1e-5),
-            // 1e-4 m at the landing and a few mm between steps on the dense
+            // 5e-5 m at the landing and a few mm between steps on the dense
             // output: far inside a braille dot for < 10 µs a drawing.
             Purpose::Plot => Tolerance::uniform(1e-6),
             Purpose::Reference => Tolerance::uniform(1e-13),
