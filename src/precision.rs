@@ -82,8 +82,8 @@ impl Purpose {
             // Worst of 64×64 Fig. 7 cells: 0.0054 m, 100× inside a quarter
             // colour step; 1e-4 leaves under 3× (0.23 m) to save ~10 % of time.
             Purpose::Surface => Tolerance::uniform(1e-5),
-            // 5e-5 m at the landing and a few mm between steps on the dense
-            // output: far inside a braille dot for < 10 µs a drawing.
+            // ≤ 5e-5 m at every one of 300 points read off the dense output
+            // (Table II): far inside a braille dot, for < 10 µs a drawing.
             Purpose::Plot => Tolerance::uniform(1e-6),
             Purpose::Reference => Tolerance::uniform(1e-13),
             Purpose::Stated {
