@@ -106,6 +106,7 @@ pub enum Command {
     Presets,
     /// Speed against error on this machine: the work–precision tables.
     Bench {
+        /// Print JSON, with the tables' field names.
         #[arg(long)]
         json: bool,
         /// A reduced version (seconds).
