@@ -113,6 +113,15 @@ pub enum Command {
     },
     /// The presets and what they are.
     Presets,
+    /// Speed against error on this machine: the work–precision tables.
+    Bench {
+        /// Print JSON, with the tables' field names.
+        #[arg(long)]
+        json: bool,
+        /// A reduced version (seconds).
+        #[arg(long)]
+        quick: bool,
+    },
     /// Open the explorer (the default with no command).
     Tui {
         /// The preset to start from.
@@ -178,6 +187,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         Command::Hit { scene, json } => Ok(hit(&scene.resolve(dir)?.scene, *json)),
         Command::Optimize { scene, json } => Ok(optimum(&scene.resolve(dir)?.scene, *json)),
         Command::Table2 { json } => Ok(table2(*json)),
+        Command::Bench { json, quick } => Ok(crate::bench::output(*json, *quick)),
         Command::Sweep {
             key,
             from,

@@ -5,6 +5,7 @@
 //! [`model::scene::Scene`] → [`model::impact::Impact`] → [`model::flight`] →
 //! a summary; [`solve::optimize`] and [`study`] call that chain and nothing else.
 
+pub mod bench;
 pub mod cli;
 pub mod model;
 pub mod precision;

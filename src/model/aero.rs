@@ -41,17 +41,39 @@ impl DragModel {
     /// C_D at Reynolds number `re`.
     #[inline]
     pub fn drag_coefficient(self, re: f64) -> f64 {
+        self.drag_coefficient_on(self.piece(re), re)
+    }
+
+    /// Which smooth piece of C_D(Re) holds at `re`: the number of kinks at
+    /// or below it.
+    #[inline]
+    pub fn piece(self, re: f64) -> usize {
+        self.kinks().iter().take_while(|&&kink| re >= kink).count()
+    }
+
+    /// C_D by the formula of piece `piece`, continued smoothly past the
+    /// piece's ends: an integrator step that starts on a piece keeps its
+    /// formula, so it sees a smooth right-hand side, and the flight switches
+    /// formula where the step crosses the kink. The continuation holds for
+    /// [`CONTINUATION`] past a kink and is constant beyond, so that a long
+    /// step cannot meet an exploding exponential (C_D ≈ 37 at Re = 10⁵ on the
+    /// rising piece; at most 2.3 here) or a negative drag (the recovery piece,
+    /// continued, turns negative below Re ≈ 155 000).
+    #[inline]
+    pub fn drag_coefficient_on(self, piece: usize, re: f64) -> f64 {
         match self {
-            DragModel::Sawicki2003 => {
-                if re < CRISIS_START {
-                    let rise = 0.0416812 * (((CRISIS_START - re) / 8784.46).exp() - 1.0);
-                    (DRAG_FLOOR + rise).min(SUBCRITICAL_DRAG)
-                } else if re <= CRISIS_END {
-                    DRAG_FLOOR
-                } else {
+            DragModel::Sawicki2003 => match piece {
+                0 => SUBCRITICAL_DRAG,
+                1 => {
+                    let re = re.max(SAWICKI_KINKS[0] - CONTINUATION);
+                    DRAG_FLOOR + 0.0416812 * (((CRISIS_START - re) / 8784.46).exp() - 1.0)
+                }
+                2 => DRAG_FLOOR,
+                _ => {
+                    let re = re.max(CRISIS_END - CONTINUATION);
                     DRAG_FLOOR + 0.309620 * (1.0 - (-(re - CRISIS_END) / 49808.6).exp())
                 }
-            }
+            },
             DragModel::Constant => SUBCRITICAL_DRAG,
         }
     }
@@ -67,13 +89,16 @@ impl DragModel {
     }
 }
 
+/// How far (in Re) a piece's formula is continued past its kinks: ~3 m/s
+/// of air speed, more than any accurate step overshoots.
+pub const CONTINUATION: f64 = 15_000.0;
 const DRAG_FLOOR: f64 = 0.15;
 const SUBCRITICAL_DRAG: f64 = 0.5;
 const CRISIS_START: f64 = 160_000.0;
 const CRISIS_END: f64 = 175_000.0;
 /// Where the subcritical exponential reaches 0.5 and the `min` takes over:
 /// 160 000 − 8784.46·ln(1 + 0.35/0.0416812) ≈ 140 319.
-const SAWICKI_KINKS: [f64; 3] = [140_318.788_587_386_1, CRISIS_START, CRISIS_END];
+const SAWICKI_KINKS: [f64; 3] = [140_319.312_894_860_5, CRISIS_START, CRISIS_END];
 
 impl std::str::FromStr for DragModel {
     type Err = InputError;
@@ -132,6 +157,42 @@ mod tests {
             assert!((below - above).abs() < 1e-9, "jump at {re}");
         }
         assert!((m.drag_coefficient(SAWICKI_KINKS[0]) - 0.5).abs() < 1e-9);
+        // The first kink is where the rising exponential itself reaches 0.5
+        // (not merely where the `min` clips it).
+        let rise = |re: f64| 0.15 + 0.0416812 * (((CRISIS_START - re) / 8784.46).exp() - 1.0);
+        assert!((rise(SAWICKI_KINKS[0]) - 0.5).abs() < 1e-12);
+        assert_eq!(m.drag_coefficient(140_000.0), 0.5);
+        assert!(m.drag_coefficient(150_000.0) < 0.5 && m.drag_coefficient(150_000.0) > 0.15);
+    }
+
+    #[test]
+    fn each_piece_continues_its_own_formula() {
+        let m = DragModel::Sawicki2003;
+        assert_eq!(m.piece(100_000.0), 0);
+        assert_eq!(m.piece(150_000.0), 1);
+        assert_eq!(m.piece(CRISIS_START), 2);
+        assert_eq!(m.piece(200_000.0), 3);
+        // Past its end, the rising piece keeps rising and the recovery piece
+        // keeps falling, so a step that overshoots a kink stays smooth.
+        assert!(m.drag_coefficient_on(1, 139_000.0) > 0.5);
+        assert!(m.drag_coefficient_on(3, 170_000.0) < 0.15);
+        // …but not without bound.
+        assert!(m.drag_coefficient_on(1, 50_000.0) < 2.5);
+        assert_eq!(
+            m.drag_coefficient_on(1, 50_000.0),
+            m.drag_coefficient_on(1, SAWICKI_KINKS[0] - CONTINUATION)
+        );
+        assert!(m.drag_coefficient_on(3, 0.0) > 0.0);
+        for (piece, &re) in m.kinks().iter().enumerate() {
+            let below = m.drag_coefficient_on(piece, re);
+            let above = m.drag_coefficient_on(piece + 1, re);
+            assert!(
+                (below - above).abs() < 1e-9,
+                "pieces {piece}, {} at {re}",
+                piece + 1
+            );
+        }
+        assert_eq!(DragModel::Constant.piece(150_000.0), 0);
     }
 
     #[test]

@@ -1,0 +1,596 @@
+//! `homerun bench`: speed against error, measured on this machine.
+//!
+//! Three tables: one trajectory per integrator setting, one optimisation per
+//! Table II pitch per tolerance pair, and one 64×64 range surface per
+//! tolerance on one thread and on all cores. Every error is measured against
+//! a solve at the tightest setting; times are medians over repeated runs.
+//! The JSON output uses the tables' field names.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::model::flight::{self, Flight, Launch};
+use crate::model::impact::Impact;
+use crate::model::{self, scene::Scene};
+use crate::precision::Purpose;
+use crate::solve::optimize::{Optimizer, OptimizerSettings, Status};
+use crate::study::{self, Grid};
+
+/// reference/model.py's range for the Table II fastball launch (m).
+pub const PYTHON_REFERENCE_RANGE: f64 = 134.698780;
+
+/// Flights per timed batch (so that reading the CPU clock costs nothing).
+const TRAJECTORY_BATCH: usize = 50;
+
+/// How much to measure.
+#[derive(Clone, Copy, Debug)]
+struct Effort {
+    /// Batches of `TRAJECTORY_BATCH` flights.
+    trajectory_batches: usize,
+    optimisation_runs: usize,
+    surface_runs: usize,
+    surface_size: usize,
+}
+
+impl Effort {
+    fn new(quick: bool) -> Effort {
+        if quick {
+            Effort {
+                trajectory_batches: 5,
+                optimisation_runs: 1,
+                surface_runs: 1,
+                surface_size: 64,
+            }
+        } else {
+            Effort {
+                trajectory_batches: 41,
+                optimisation_runs: 7,
+                surface_runs: 5,
+                surface_size: 64,
+            }
+        }
+    }
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Report {
+    /// Threads "all cores" used.
+    pub threads: usize,
+    pub quick: bool,
+    pub reference: ReferenceCheck,
+    pub trajectory: Vec<TrajectoryRow>,
+    pub optimisation: Vec<OptimisationRow>,
+    pub surface: Vec<SurfaceRow>,
+    /// The tolerances each consumer uses now (src/precision.rs).
+    pub defaults: Vec<DefaultRow>,
+}
+
+/// The reference solve checked against reference/model.py.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct ReferenceCheck {
+    pub range: f64,
+    pub python_range: f64,
+    pub difference: f64,
+}
+
+/// One trajectory (the Table II fastball launch) at one integrator setting.
+#[derive(Clone, Debug, Serialize)]
+pub struct TrajectoryRow {
+    pub method: &'static str,
+    /// Relative tolerance (adaptive methods).
+    pub tolerance: Option<f64>,
+    /// Absolute tolerance (adaptive methods).
+    pub absolute: Option<f64>,
+    /// Step size (s) (fixed-step methods).
+    pub step: Option<f64>,
+    pub stop_at_kinks: bool,
+    pub evaluations: u32,
+    pub accepted: u32,
+    pub rejected: u32,
+    /// Median wall time per trajectory.
+    pub time_us: f64,
+    /// Median CPU time per trajectory (Unix only).
+    pub cpu_us: Option<f64>,
+    pub range_error: f64,
+}
+
+/// One optimisation of one Table II pitch at one tolerance pair.
+#[derive(Clone, Debug, Serialize)]
+pub struct OptimisationRow {
+    pub pitch: String,
+    /// The optimiser's stopping tolerance on range (m) (and, in scaled units, on the simplex size).
+    pub optimizer_tolerance: f64,
+    pub integrator_tolerance: f64,
+    pub evaluations: u32,
+    pub converged: bool,
+    /// Median wall time.
+    pub time_ms: f64,
+    /// Median CPU time (Unix only).
+    pub cpu_ms: Option<f64>,
+    pub undercut_error: f64,
+    pub swing_angle_error: f64,
+    pub range_error: f64,
+}
+
+/// One range surface over Fig. 7's window.
+#[derive(Clone, Debug, Serialize)]
+pub struct SurfaceRow {
+    pub cells: usize,
+    /// Relative tolerance.
+    pub integrator_tolerance: f64,
+    /// Absolute tolerance.
+    pub absolute: f64,
+    pub threads: usize,
+    /// Median wall time.
+    pub time_ms: f64,
+    /// Median CPU time summed over the threads (Unix only): on an idle
+    /// machine, the wall time is about this divided by `threads`.
+    pub cpu_ms: Option<f64>,
+    pub max_cell_error: f64,
+}
+
+/// A consumer's budget and tolerance.
+#[derive(Clone, Debug, Serialize)]
+pub struct DefaultRow {
+    pub purpose: String,
+    pub range_budget: f64,
+    pub tolerance: f64,
+    pub range_error: f64,
+}
+
+fn median(mut samples: Vec<f64>) -> f64 {
+    samples.sort_by(f64::total_cmp);
+    samples[samples.len() / 2]
+}
+
+/// Time on a CPU (ns) of all this process's threads (POSIX
+/// `CLOCK_PROCESS_CPUTIME_ID`); `None` where that is unavailable. Unlike the
+/// wall clock, it does not count time spent waiting for a core that other
+/// programs hold, so it measures the code on a shared machine.
+#[cfg(unix)]
+fn cpu_ns() -> Option<u64> {
+    let mut now = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: clock_gettime writes one timespec to a valid pointer.
+    let status = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut now) };
+    (status == 0).then(|| now.tv_sec as u64 * 1_000_000_000 + now.tv_nsec as u64)
+}
+
+#[cfg(not(unix))]
+fn cpu_ns() -> Option<u64> {
+    None
+}
+
+/// Per call of `work`: the median wall time (s) and the median CPU time (s,
+/// summed over threads) over `batches` batches of `batch` calls, after one
+/// warm-up call.
+fn time_median<T>(batches: usize, batch: usize, mut work: impl FnMut() -> T) -> (f64, Option<f64>) {
+    std::hint::black_box(work());
+    let batch = batch.max(1);
+    let mut wall = Vec::new();
+    let mut cpu = Vec::new();
+    for _ in 0..batches.max(1) {
+        let cpu_start = cpu_ns();
+        let start = Instant::now();
+        for _ in 0..batch {
+            std::hint::black_box(work());
+        }
+        wall.push(start.elapsed().as_secs_f64() / batch as f64);
+        if let (Some(a), Some(b)) = (cpu_start, cpu_ns()) {
+            cpu.push(b.saturating_sub(a) as f64 * 1e-9 / batch as f64);
+        }
+    }
+    let cpu = (!cpu.is_empty()).then(|| median(cpu));
+    (median(wall), cpu)
+}
+
+/// Relative and absolute tolerance 10^−exponent.
+fn stated(exponent: i32, stop_at_kinks: bool) -> Purpose {
+    stated_mixed(exponent, exponent, stop_at_kinks)
+}
+
+fn stated_mixed(relative_exponent: i32, absolute_exponent: i32, stop_at_kinks: bool) -> Purpose {
+    Purpose::Stated {
+        relative_exponent,
+        absolute_exponent,
+        stop_at_kinks,
+    }
+}
+
+/// The Table II pitches, at their published swings.
+pub fn table_two() -> Vec<(String, Scene)> {
+    ["fastball", "knuckleball", "curveball"]
+        .iter()
+        .map(|name| {
+            let scene = crate::preset::load(name, None)
+                .expect("bundled presets load")
+                .scene;
+            (name.to_string(), scene)
+        })
+        .collect()
+}
+
+fn fastball_launch() -> (Flight, Launch) {
+    let scene = Scene::default();
+    model::launch(&scene, &Impact::new(&scene))
+}
+
+fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
+    let (flight, launch) = fastball_launch();
+    let mut rows = Vec::new();
+    // (relative exponent, absolute exponent, stop at kinks): uniform
+    // tolerances with and without kinks, then an absolute tolerance ten
+    // times the relative one (positions ~100 m and speeds ~40 m/s need no
+    // finer absolute floor than a relative one gives them).
+    let mut settings: Vec<(i32, i32, bool)> = Vec::new();
+    for stop_at_kinks in [false, true] {
+        settings.extend((3..=12).map(|e| (e, e, stop_at_kinks)));
+    }
+    settings.extend((3..=10).map(|e| (e, e - 1, true)));
+    for (relative, absolute, stop_at_kinks) in settings {
+        let options = stated_mixed(relative, absolute, stop_at_kinks).flight_options();
+        let summary = flight::fly(&flight, &launch, &options);
+        let (time, cpu) = time_median(effort.trajectory_batches, TRAJECTORY_BATCH, || {
+            flight::fly(std::hint::black_box(&flight), &launch, &options)
+        });
+        rows.push(TrajectoryRow {
+            method: "dopri5",
+            tolerance: Some(options.tolerance.relative),
+            absolute: Some(options.tolerance.absolute),
+            step: None,
+            stop_at_kinks,
+            evaluations: summary.stats.evaluations,
+            accepted: summary.stats.accepted,
+            rejected: summary.stats.rejected,
+            time_us: time * 1e6,
+            cpu_us: cpu.map(|c| c * 1e6),
+            range_error: summary.range - reference,
+        });
+    }
+    for stop_at_kinks in [false, true] {
+        for step in [0.2, 0.1, 0.05, 0.02, 0.01] {
+            let summary = flight::fly_fixed_step(&flight, &launch, step, stop_at_kinks);
+            let (time, cpu) = time_median(effort.trajectory_batches, TRAJECTORY_BATCH, || {
+                flight::fly_fixed_step(std::hint::black_box(&flight), &launch, step, stop_at_kinks)
+            });
+            rows.push(TrajectoryRow {
+                method: "rk4",
+                tolerance: None,
+                absolute: None,
+                step: Some(step),
+                stop_at_kinks,
+                evaluations: summary.stats.evaluations,
+                accepted: summary.stats.accepted,
+                rejected: summary.stats.rejected,
+                time_us: time * 1e6,
+                cpu_us: cpu.map(|c| c * 1e6),
+                range_error: summary.range - reference,
+            });
+        }
+    }
+    rows
+}
+
+/// The optimiser's settings for a stopping tolerance on range (m): the
+/// simplex size in scaled units follows it (1e-4 m ↔ 1e-4, the default).
+fn optimizer_settings(tolerance: f64) -> OptimizerSettings {
+    OptimizerSettings {
+        tolerance_x: tolerance,
+        tolerance_range: tolerance,
+        max_evaluations: 10_000,
+        ..OptimizerSettings::default()
+    }
+}
+
+fn optimise(
+    scene: &Scene,
+    purpose: Purpose,
+    settings: OptimizerSettings,
+) -> (f64, f64, f64, u32, bool) {
+    let start = (scene.bat.undercut, scene.bat.swing_angle);
+    let mut optimizer = Optimizer::new(scene, start, purpose, settings);
+    let best = optimizer.run(|| false).unwrap_or_else(|| optimizer.best());
+    // The range at the optimum, re-solved tightly: what a user is shown.
+    let mut at = *scene;
+    at.bat.undercut = best.undercut;
+    at.bat.swing_angle = best.swing_angle;
+    (
+        best.undercut,
+        best.swing_angle,
+        model::range(&at, Purpose::Reference),
+        optimizer.evaluations(),
+        optimizer.status() == Status::Converged,
+    )
+}
+
+/// (optimiser stopping tolerance on range, integrator tolerance exponent).
+fn optimisation_pairs(quick: bool) -> Vec<(f64, i32)> {
+    if quick {
+        vec![(1e-3, 6), (1e-4, 6), (1e-4, 8)]
+    } else {
+        vec![
+            (1e-3, 5),
+            (1e-3, 6),
+            (1e-4, 6),
+            (1e-4, 7),
+            (1e-4, 8),
+            (1e-4, 10),
+            (1e-5, 8),
+            (1e-6, 10),
+        ]
+    }
+}
+
+fn optimisations(effort: Effort, quick: bool) -> Vec<OptimisationRow> {
+    let mut rows = Vec::new();
+    for (pitch, scene) in table_two() {
+        let (e_ref, psi_ref, range_ref, _, _) =
+            optimise(&scene, stated(12, true), optimizer_settings(1e-9));
+        for (tolerance, exponent) in optimisation_pairs(quick) {
+            let purpose = stated(exponent, true);
+            let settings = optimizer_settings(tolerance);
+            let (e, psi, range, evaluations, converged) = optimise(&scene, purpose, settings);
+            let (time, cpu) = time_median(effort.optimisation_runs, 1, || {
+                let mut optimizer = Optimizer::new(
+                    &scene,
+                    (scene.bat.undercut, scene.bat.swing_angle),
+                    purpose,
+                    settings,
+                );
+                optimizer.run(|| false)
+            });
+            rows.push(OptimisationRow {
+                pitch: pitch.clone(),
+                optimizer_tolerance: tolerance,
+                integrator_tolerance: 10f64.powi(-exponent),
+                evaluations,
+                converged,
+                time_ms: time * 1e3,
+                cpu_ms: cpu.map(|c| c * 1e3),
+                undercut_error: e - e_ref,
+                swing_angle_error: psi - psi_ref,
+                range_error: range - range_ref,
+            });
+        }
+    }
+    rows
+}
+
+fn max_difference(a: &study::Surface, b: &study::Surface) -> f64 {
+    a.ranges
+        .iter()
+        .zip(&b.ranges)
+        .map(|(a, b)| match (a, b) {
+            (Some(a), Some(b)) => (a - b).abs(),
+            (None, None) => 0.0,
+            _ => f64::INFINITY,
+        })
+        .fold(0.0, f64::max)
+}
+
+fn surfaces(effort: Effort, threads: usize, quick: bool) -> Vec<SurfaceRow> {
+    let scene = Scene::default();
+    let grid = Grid::figure7(effort.surface_size, effort.surface_size);
+    let tight = study::surface(&scene, grid, Purpose::Reference);
+    let settings: &[(i32, i32)] = if quick {
+        &[(3, 3), (5, 5), (5, 4)]
+    } else {
+        &[
+            (2, 2),
+            (3, 3),
+            (4, 4),
+            (5, 5),
+            (6, 6),
+            (8, 8),
+            (4, 3),
+            (5, 4),
+        ]
+    };
+    let mut rows = Vec::new();
+    for &(relative, absolute) in settings {
+        let purpose = stated_mixed(relative, absolute, true);
+        let cheap = study::surface(&scene, grid, purpose);
+        let error = max_difference(&cheap, &tight);
+        let mut counts = vec![1, threads];
+        counts.dedup();
+        for n in counts {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .expect("a thread pool");
+            let (time, cpu) = time_median(effort.surface_runs, 1, || {
+                pool.install(|| study::surface(&scene, grid, purpose))
+            });
+            rows.push(SurfaceRow {
+                cells: grid.columns * grid.rows,
+                integrator_tolerance: 10f64.powi(-relative),
+                absolute: 10f64.powi(-absolute),
+                threads: n,
+                time_ms: time * 1e3,
+                cpu_ms: cpu.map(|c| c * 1e3),
+                max_cell_error: error,
+            });
+        }
+    }
+    rows
+}
+
+fn defaults(reference: f64) -> Vec<DefaultRow> {
+    let scene = Scene::default();
+    Purpose::CONSUMERS
+        .iter()
+        .map(|&purpose| DefaultRow {
+            purpose: format!("{purpose:?}"),
+            range_budget: purpose.range_budget(),
+            tolerance: purpose.tolerance().relative,
+            range_error: model::range(&scene, purpose) - reference,
+        })
+        .collect()
+}
+
+/// Measures everything (`quick`: a reduced version, seconds in release).
+pub fn run(quick: bool) -> Report {
+    let effort = Effort::new(quick);
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let reference = model::range(&Scene::default(), Purpose::Reference);
+    Report {
+        threads,
+        quick,
+        reference: ReferenceCheck {
+            range: reference,
+            python_range: PYTHON_REFERENCE_RANGE,
+            difference: reference - PYTHON_REFERENCE_RANGE,
+        },
+        trajectory: trajectories(effort, reference),
+        optimisation: optimisations(effort, quick),
+        surface: surfaces(effort, threads, quick),
+        defaults: defaults(reference),
+    }
+}
+
+fn or_dash(value: Option<f64>, format: impl Fn(f64) -> String) -> String {
+    value.map_or("-".to_string(), format)
+}
+
+/// The report as text tables.
+pub fn render(report: &Report) -> String {
+    use std::fmt::Write;
+    let mut out = String::new();
+    let r = &report.reference;
+    let _ = writeln!(
+        out,
+        "reference (Purpose::Reference, Table II fastball): range {:.6} m; reference/model.py {:.6} m; difference {:+.1e} m",
+        r.range, r.python_range, r.difference
+    );
+    let _ = writeln!(out, "\none trajectory (Table II fastball launch)");
+    let _ = writeln!(
+        out,
+        "{:<7} {:>9} {:>8} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9} {:>8} {:>11}",
+        "method",
+        "tolerance",
+        "absolute",
+        "step",
+        "stop_at_kinks",
+        "evaluations",
+        "accepted",
+        "rejected",
+        "time_us",
+        "cpu_us",
+        "range_error"
+    );
+    for row in &report.trajectory {
+        let _ = writeln!(
+            out,
+            "{:<7} {:>9} {:>8} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9.2} {:>8} {:>11.2e}",
+            row.method,
+            or_dash(row.tolerance, |t| format!("{t:.0e}")),
+            or_dash(row.absolute, |t| format!("{t:.0e}")),
+            or_dash(row.step, |h| format!("{h}")),
+            row.stop_at_kinks,
+            row.evaluations,
+            row.accepted,
+            row.rejected,
+            row.time_us,
+            or_dash(row.cpu_us, |c| format!("{c:.2}")),
+            row.range_error
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\none optimisation per Table II pitch (errors against optimiser 1e-9, integrator 1e-12)"
+    );
+    let _ = writeln!(
+        out,
+        "{:<12} {:>19} {:>20} {:>11} {:>9} {:>7} {:>6} {:>14} {:>17} {:>11}",
+        "pitch",
+        "optimizer_tolerance",
+        "integrator_tolerance",
+        "evaluations",
+        "converged",
+        "time_ms",
+        "cpu_ms",
+        "undercut_error",
+        "swing_angle_error",
+        "range_error"
+    );
+    for row in &report.optimisation {
+        let _ = writeln!(
+            out,
+            "{:<12} {:>19.0e} {:>20.0e} {:>11} {:>9} {:>7.2} {:>6} {:>14.1e} {:>17.1e} {:>11.1e}",
+            row.pitch,
+            row.optimizer_tolerance,
+            row.integrator_tolerance,
+            row.evaluations,
+            row.converged,
+            row.time_ms,
+            or_dash(row.cpu_ms, |c| format!("{c:.2}")),
+            row.undercut_error,
+            row.swing_angle_error,
+            row.range_error
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\none range surface over Fig. 7's window (errors against Purpose::Reference)"
+    );
+    let _ = writeln!(
+        out,
+        "{:>6} {:>20} {:>8} {:>7} {:>8} {:>8} {:>14}",
+        "cells",
+        "integrator_tolerance",
+        "absolute",
+        "threads",
+        "time_ms",
+        "cpu_ms",
+        "max_cell_error"
+    );
+    for row in &report.surface {
+        let _ = writeln!(
+            out,
+            "{:>6} {:>20.0e} {:>8.0e} {:>7} {:>8.1} {:>8} {:>14.2e}",
+            row.cells,
+            row.integrator_tolerance,
+            row.absolute,
+            row.threads,
+            row.time_ms,
+            or_dash(row.cpu_ms, |c| format!("{c:.1}")),
+            row.max_cell_error
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\ndefaults (src/precision.rs), range error on the Table II fastball"
+    );
+    let _ = writeln!(
+        out,
+        "{:<10} {:>12} {:>9} {:>11}",
+        "purpose", "range_budget", "tolerance", "range_error"
+    );
+    for row in &report.defaults {
+        let _ = writeln!(
+            out,
+            "{:<10} {:>12.1e} {:>9.0e} {:>11.1e}",
+            row.purpose, row.range_budget, row.tolerance, row.range_error
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\n(all cores = {} threads; time = median wall clock, cpu = median CPU time summed over threads; \
+         on a machine shared with other work, the wall clock counts waiting for a core)",
+        report.threads
+    );
+    out
+}
+
+/// `homerun bench [--json] [--quick]`.
+pub fn output(json: bool, quick: bool) -> String {
+    let report = run(quick);
+    if json {
+        serde_json::to_string_pretty(&report).expect("plain numbers") + "\n"
+    } else {
+        render(&report)
+    }
+}
