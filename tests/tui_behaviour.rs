@@ -166,6 +166,23 @@ fn the_worker_thread_cancels_old_work_and_finishes_the_new() {
 }
 
 #[test]
+fn typing_replaces_the_shown_value_and_end_keeps_it() {
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.speed");
+    // The field opens with "30" selected, as in a form: typing replaces it.
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "31");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.scene.bat.speed, 31.0);
+    // End drops the selection and keeps the text for editing: "31" + ".5".
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::End);
+    typed(&mut app, ".5");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.scene.bat.speed, 31.5);
+}
+
+#[test]
 fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("broken.toml"), "[bat]\nspeed = \"fast\"\n").unwrap();

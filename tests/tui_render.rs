@@ -71,7 +71,7 @@ fn failed_save() {
         settle(&mut app);
         let before = app.scene;
         key(&mut app, KeyCode::Char('s'));
-        typed(&mut app, "-mine");
+        typed(&mut app, "mine");
         key(&mut app, KeyCode::Enter);
         assert_eq!(app.scene, before, "the inputs stay");
         insta::assert_snapshot!(format!("failed_save_{w}x{h}"), screen(&app));

@@ -409,9 +409,10 @@ impl App {
             KeyCode::Char('[') => self.nudge(-0.1),
             KeyCode::Enter | KeyCode::Char('e') => self.start_edit(),
             KeyCode::Char('s') => {
-                let mut text = TextArea::new(vec![self.preset_name.clone()]);
-                text.move_cursor(ratatui_textarea::CursorMove::End);
-                self.mode = Mode::Save { text, error: None };
+                self.mode = Mode::Save {
+                    text: prefilled(self.preset_name.clone()),
+                    error: None,
+                };
             }
             KeyCode::Char('o') => self.open_picker(),
             KeyCode::Char('r') => self.reset_to_optimum(),
@@ -477,11 +478,9 @@ impl App {
             Field::Drag => self.scene.drag.name().to_owned(),
             Field::Key(k) => view::format_value(&KEYS[k], (KEYS[k].get)(&self.scene)),
         };
-        let mut text = TextArea::new(vec![current]);
-        text.move_cursor(ratatui_textarea::CursorMove::End);
         self.mode = Mode::Edit {
             field,
-            text,
+            text: prefilled(current),
             error: None,
         };
     }
@@ -659,4 +658,12 @@ fn broken_name(error: &PresetError) -> String {
     std::path::Path::new(path)
         .file_stem()
         .map_or_else(|| path.to_owned(), |s| s.to_string_lossy().into_owned())
+}
+
+/// A one-line text field holding `value`, all of it selected: typing
+/// replaces it (as in a form), while ← → or End keep and edit it.
+fn prefilled(value: String) -> TextArea<'static> {
+    let mut text = TextArea::new(vec![value]);
+    text.select_all();
+    text
 }
