@@ -195,3 +195,85 @@ fn without_a_terminal_it_points_at_the_cli() {
     );
     assert!(output.stdout.is_empty());
 }
+
+/// A terminal that goes away (a dropped SSH connection, a killed tmux) under
+/// a shell: the shell, not the explorer, leads the session and gets SIGHUP,
+/// and the explorer must still notice and end instead of spinning on the dead
+/// TTY (crossterm 0.29 loops forever there).
+#[cfg(target_os = "linux")]
+#[test]
+fn a_terminal_that_goes_away_ends_the_explorer() {
+    let pair = native_pty_system()
+        .openpty(PtySize {
+            rows: 24,
+            cols: 80,
+            pixel_width: 0,
+            pixel_height: 0,
+        })
+        .unwrap();
+    let mut command = CommandBuilder::new("sh");
+    // Not `exec`: the shell stays the session's leader, as in tmux or ssh.
+    command.args(["-c", "\"$0\"; echo after", env!("CARGO_BIN_EXE_homerun")]);
+    command.env("TERM", "xterm-256color");
+    let mut shell = pair.slave.spawn_command(command).unwrap();
+    drop(pair.slave);
+    // Read the screen without cloning the master (a clone would keep the
+    // terminal open): non-blocking reads on the master's own descriptor.
+    let fd = pair.master.as_raw_fd().unwrap();
+    // SAFETY: fcntl and read on a descriptor the master owns for this scope.
+    unsafe {
+        let flags = libc::fcntl(fd, libc::F_GETFL);
+        libc::fcntl(fd, libc::F_SETFL, flags | libc::O_NONBLOCK);
+    }
+    let mut seen = Vec::new();
+    let start = Instant::now();
+    while !String::from_utf8_lossy(&seen).contains("Trajectory") {
+        assert!(start.elapsed() < Duration::from_secs(60), "never started");
+        let mut buf = [0u8; 8192];
+        let n = unsafe { libc::read(fd, buf.as_mut_ptr().cast(), buf.len()) };
+        if n > 0 {
+            seen.extend_from_slice(&buf[..n as usize]);
+        } else {
+            thread::sleep(Duration::from_millis(20));
+        }
+    }
+    let explorer = child_named(shell.process_id().unwrap(), "homerun").expect("the explorer runs");
+    drop(pair.master); // the terminal goes away
+    let start = Instant::now();
+    while running(explorer) {
+        if start.elapsed() > Duration::from_secs(10) {
+            // Leave no spinning process behind a failed run.
+            let _ = std::process::Command::new("kill")
+                .args(["-KILL", &explorer.to_string()])
+                .status();
+            panic!("the explorer outlived its terminal");
+        }
+        thread::sleep(Duration::from_millis(50));
+    }
+    let _ = shell.wait();
+}
+
+/// A child of `parent` whose command name is `name`, from /proc.
+#[cfg(target_os = "linux")]
+fn child_named(parent: u32, name: &str) -> Option<u32> {
+    std::fs::read_dir("/proc").ok()?.find_map(|entry| {
+        let pid: u32 = entry.ok()?.file_name().to_str()?.parse().ok()?;
+        let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+        // "pid (comm) state ppid ..."
+        let (comm, rest) = stat.split_once(") ")?;
+        let ppid: u32 = rest.split(' ').nth(1)?.parse().ok()?;
+        (ppid == parent && comm.ends_with(&format!("({name}"))).then_some(pid)
+    })
+}
+
+/// Whether `pid` is alive and not a zombie awaiting its reaper.
+#[cfg(target_os = "linux")]
+fn running(pid: u32) -> bool {
+    std::fs::read_to_string(format!("/proc/{pid}/stat"))
+        .ok()
+        .and_then(|stat| {
+            stat.split_once(") ")
+                .map(|(_, rest)| !rest.starts_with('Z'))
+        })
+        .unwrap_or(false)
+}

@@ -39,6 +39,45 @@ pub enum TuiError {
     Io(#[from] io::Error),
 }
 
+/// Ends the process when the terminal goes away (a dropped SSH connection,
+/// a killed tmux). SIGHUP then reaches only the session's leader, often the
+/// shell, not us; and crossterm 0.29 spins forever inside `event::poll` on a
+/// hung-up TTY (each read returns 0 bytes and it reads again), so the event
+/// loop never comes round to notice. There is no terminal left to restore.
+fn watch_for_hang_up() -> io::Result<()> {
+    std::thread::Builder::new()
+        .name("hang-up watch".into())
+        .spawn(|| {
+            loop {
+                std::thread::sleep(Duration::from_millis(250));
+                if terminal_hung_up() {
+                    std::process::exit(0);
+                }
+            }
+        })
+        .map(drop)
+}
+
+/// Whether standard input's terminal has hung up: Linux's `poll(2)` reports
+/// POLLHUP on a TTY whose other end is gone. Written with libc because
+/// crossterm only reports keys, and keeps polling the dead TTY.
+#[cfg(unix)]
+fn terminal_hung_up() -> bool {
+    let mut stdin = libc::pollfd {
+        fd: libc::STDIN_FILENO,
+        events: libc::POLLIN,
+        revents: 0,
+    };
+    // SAFETY: one valid pollfd, a zero timeout; no memory is shared.
+    let ready = unsafe { libc::poll(&mut stdin, 1, 0) };
+    ready > 0 && stdin.revents & (libc::POLLHUP | libc::POLLERR | libc::POLLNVAL) != 0
+}
+
+#[cfg(not(unix))]
+fn terminal_hung_up() -> bool {
+    false
+}
+
 /// Restores the terminal when dropped: on quit, on error, and while
 /// unwinding from a panic (ratatui's panic hook restores it too).
 struct Restore;
@@ -70,6 +109,7 @@ pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError>
         Rect::new(0, 0, size.width, size.height),
     );
     let worker = Worker::spawn();
+    watch_for_hang_up()?;
 
     while !app.quit && !stop.load(Ordering::Relaxed) {
         if let Some(job) = app.take_job() {
