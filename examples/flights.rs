@@ -15,7 +15,10 @@ fn main() {
     let absolute: f64 = args
         .next()
         .map_or(relative, |a| a.parse().expect("absolute tolerance"));
-    let scene = Scene::default();
+    let mut scene = Scene::default();
+    if std::env::var_os("CONSTANT_DRAG").is_some() {
+        scene.drag = homerun::model::aero::DragModel::Constant;
+    }
     let (flight, launch) = model::launch(&scene, &Impact::new(&scene));
     let options = FlightOptions {
         tolerance: Tolerance { relative, absolute },
