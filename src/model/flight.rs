@@ -243,8 +243,17 @@ fn fly_with(
             return None;
         };
         let t = if (re0 - kink) * (re1 - kink) < 0.0 {
-            ode::find_root(
-                |t| reynolds(&step.at(t)) - kink,
+            // Where |V_r|² = (kink/(2r_b/ν))²: the same root as Re = kink,
+            // without a square root per iteration.
+            let speed = kink / flight.reynolds_per_speed;
+            ode::find_root_newton(
+                |t| {
+                    let (s, slope) = (step.at(t), step.slope_at(t));
+                    let rel = flight.relative_wind(Vector2::new(s[2], s[3]));
+                    // d/dt |V_r|² = 2 V_r·dV_r/dt = −2 V_r·a.
+                    let rate = -2.0 * (rel.x * slope[2] + rel.y * slope[3]);
+                    (rel.norm_squared() - speed * speed, rate)
+                },
                 step.t0,
                 step.t1,
                 root_tolerance,
@@ -256,8 +265,14 @@ fn fly_with(
         };
         Some((t, next))
     };
-    let landing_time =
-        |step: &DenseStep<4>| ode::find_root(|t| step.at(t)[1], step.t0, step.t1, root_tolerance);
+    let landing_time = |step: &DenseStep<4>| {
+        ode::find_root_newton(
+            |t| (step.at(t)[1], step.slope_at(t)[1]),
+            step.t0,
+            step.t1,
+            root_tolerance,
+        )
+    };
 
     let rhs = |_t: f64, s: &State<4>| {
         if switching {
@@ -295,7 +310,12 @@ fn fly_with(
         }
         watch(shown);
         if shown.y0[3] > 0.0 && shown.y1[3] <= 0.0 {
-            let t = ode::find_root(|t| shown.at(t)[3], shown.t0, shown.t1, root_tolerance);
+            let t = ode::find_root_newton(
+                |t| (shown.at(t)[3], shown.slope_at(t)[3]),
+                shown.t0,
+                shown.t1,
+                root_tolerance,
+            );
             let s = shown.at(t);
             if s[1] > apex.0 {
                 apex = (s[1], s[0]);
