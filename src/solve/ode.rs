@@ -78,8 +78,11 @@ pub struct DenseStep<const N: usize> {
     pub t1: f64,
     pub y0: State<N>,
     pub y1: State<N>,
-    /// The step size the extension was built on (t1 − t0 unless truncated).
-    h: f64,
+    /// 1/h, h being the step size the extension was built on (t1 − t0
+    /// unless truncated): `at` and `slope_at` multiply by it, as the event
+    /// roots call them in a dependent chain where a division would be the
+    /// slowest link.
+    inverse_h: f64,
     coefficients: [State<N>; 4],
 }
 
@@ -87,7 +90,7 @@ impl<const N: usize> DenseStep<N> {
     /// The solution at `t` in [t0, t1].
     #[inline]
     pub fn at(&self, t: f64) -> State<N> {
-        let s = (t - self.t0) / self.h;
+        let s = (t - self.t0) * self.inverse_h;
         let s1 = 1.0 - s;
         let [diff, c3, c4, c5] = &self.coefficients;
         self.y0 + (diff + (c3 + (c4 + c5 * s1) * s) * s1) * s
@@ -97,7 +100,7 @@ impl<const N: usize> DenseStep<N> {
     /// [t0, t1] (at t1 it equals the right-hand side there, k7).
     #[inline]
     pub fn slope_at(&self, t: f64) -> State<N> {
-        let s = (t - self.t0) / self.h;
+        let s = (t - self.t0) * self.inverse_h;
         let s1 = 1.0 - s;
         let [diff, c3, c4, c5] = &self.coefficients;
         // y = y0 + P·s, P = diff + Q·s1, Q = c3 + (c4 + c5·s1)·s.
@@ -105,7 +108,7 @@ impl<const N: usize> DenseStep<N> {
         let dq = c4 + c5 * (s1 - s);
         let p = diff + q * s1;
         let dp = dq * s1 - q;
-        (p + dp * s) / self.h
+        (p + dp * s) * self.inverse_h
     }
 
     /// The same step, ending at `t` (t0 < t ≤ t1) instead.
@@ -311,7 +314,7 @@ where
                 t1: t + h,
                 y0: y,
                 y1,
-                h,
+                inverse_h: 1.0 / h,
                 coefficients: [diff, c3, c4, c5],
             };
             stats.accepted += 1;
@@ -397,7 +400,7 @@ where
             t1: t + h,
             y0: y,
             y1,
-            h,
+            inverse_h: 1.0 / h,
             coefficients: [diff, c3, c4, State::<N>::zeros()],
         };
         match observe(&dense) {
