@@ -66,12 +66,12 @@ impl DragModel {
                 0 => SUBCRITICAL_DRAG,
                 1 => {
                     let re = re.max(SAWICKI_KINKS[0] - CONTINUATION);
-                    DRAG_FLOOR + 0.0416812 * (((CRISIS_START - re) / 8784.46).exp() - 1.0)
+                    DRAG_FLOOR + 0.0416812 * (((CRISIS_START - re) * (1.0 / 8784.46)).exp() - 1.0)
                 }
                 2 => DRAG_FLOOR,
                 _ => {
                     let re = re.max(CRISIS_END - CONTINUATION);
-                    DRAG_FLOOR + 0.309620 * (1.0 - (-(re - CRISIS_END) / 49808.6).exp())
+                    DRAG_FLOOR + 0.309620 * (1.0 - ((CRISIS_END - re) * (1.0 / 49808.6)).exp())
                 }
             },
             DragModel::Constant => SUBCRITICAL_DRAG,

@@ -231,10 +231,10 @@ fn fly_with(
     let last_switch = Cell::new(f64::NEG_INFINITY);
     let reynolds = |s: &State<4>| flight.reynolds(Vector2::new(s[2], s[3]));
 
-    // Where the step leaves its drag piece, and the piece it enters.
-    let crossing = |step: &DenseStep<4>| -> Option<(f64, usize)> {
+    // Where the step leaves its drag piece, and the piece it enters, given
+    // the Reynolds numbers at its ends.
+    let crossing = |step: &DenseStep<4>, re0: f64, re1: f64| -> Option<(f64, usize)> {
         let p = piece.get();
-        let re1 = reynolds(&step.y1);
         let (kink, next) = if p > 0 && re1 < kinks[p - 1] {
             (kinks[p - 1], p - 1)
         } else if p < kinks.len() && re1 > kinks[p] {
@@ -242,10 +242,18 @@ fn fly_with(
         } else {
             return None;
         };
-        let re0 = reynolds(&step.y0);
         let t = if (re0 - kink) * (re1 - kink) < 0.0 {
-            ode::find_root(
-                |t| reynolds(&step.at(t)) - kink,
+            // Where |V_r|² = (kink/(2r_b/ν))²: the same root as Re = kink,
+            // without a square root per iteration.
+            let speed = kink / flight.reynolds_per_speed;
+            ode::find_root_newton(
+                |t| {
+                    let (s, slope) = (step.at(t), step.slope_at(t));
+                    let rel = flight.relative_wind(Vector2::new(s[2], s[3]));
+                    // d/dt |V_r|² = 2 V_r·dV_r/dt = −2 V_r·a.
+                    let rate = -2.0 * (rel.x * slope[2] + rel.y * slope[3]);
+                    (rel.norm_squared() - speed * speed, rate)
+                },
                 step.t0,
                 step.t1,
                 root_tolerance,
@@ -257,8 +265,14 @@ fn fly_with(
         };
         Some((t, next))
     };
-    let landing_time =
-        |step: &DenseStep<4>| ode::find_root(|t| step.at(t)[1], step.t0, step.t1, root_tolerance);
+    let landing_time = |step: &DenseStep<4>| {
+        ode::find_root_newton(
+            |t| (step.at(t)[1], step.slope_at(t)[1]),
+            step.t0,
+            step.t1,
+            root_tolerance,
+        )
+    };
 
     let rhs = |_t: f64, s: &State<4>| {
         if switching {
@@ -268,9 +282,19 @@ fn fly_with(
         }
     };
     let observe = |step: &DenseStep<4>| {
-        let mut shown = *step;
+        // The Reynolds numbers at the step's ends (each costs a square root:
+        // computed once, for the kink check and the kink prediction).
+        let (re0, re1) = if switching {
+            (reynolds(&step.y0), reynolds(&step.y1))
+        } else {
+            (0.0, 0.0)
+        };
+        // The step as shown: cut at a kink, or the step itself (by reference:
+        // a DenseStep is 27 numbers, not worth copying on every step).
+        let truncated;
+        let mut shown = step;
         let mut control = Control::Continue;
-        if switching && let Some((t_kink, next)) = crossing(step) {
+        if switching && let Some((t_kink, next)) = crossing(step, re0, re1) {
             let lands_first = step.y1[1] <= 0.0 && landing_time(step) <= t_kink;
             // A second switch at the same instant would undo the first (Re
             // turning right at a kink): go on without it, so that every
@@ -278,14 +302,20 @@ fn fly_with(
             let stalls = t_kink <= last_switch.get();
             if !lands_first && !stalls {
                 last_switch.set(t_kink);
-                shown = step.truncated(t_kink);
+                truncated = step.truncated(t_kink);
+                shown = &truncated;
                 piece.set(next);
                 control = Control::RestartAt(t_kink);
             }
         }
-        watch(&shown);
+        watch(shown);
         if shown.y0[3] > 0.0 && shown.y1[3] <= 0.0 {
-            let t = ode::find_root(|t| shown.at(t)[3], shown.t0, shown.t1, root_tolerance);
+            let t = ode::find_root_newton(
+                |t| (shown.at(t)[3], shown.slope_at(t)[3]),
+                shown.t0,
+                shown.t1,
+                root_tolerance,
+            );
             let s = shown.at(t);
             if s[1] > apex.0 {
                 apex = (s[1], s[0]);
@@ -293,7 +323,7 @@ fn fly_with(
         }
         last = (shown.t1, shown.y1);
         if shown.y1[1] <= 0.0 {
-            let t = landing_time(&shown);
+            let t = landing_time(shown);
             landing = Some((t, shown.at(t)));
             return Control::Stop;
         }
@@ -316,8 +346,8 @@ fn fly_with(
                 soonest = -y / vy;
             }
             // The next kink, from the Reynolds number's rate over the step.
+            // (Not cut here, so `shown` is `step` and re0, re1 are its ends.)
             if switching {
-                let (re0, re1) = (reynolds(&shown.y0), reynolds(&shown.y1));
                 let rate = (re1 - re0) / h;
                 let p = piece.get();
                 let target = if rate < 0.0 && p > 0 {

@@ -78,8 +78,11 @@ pub struct DenseStep<const N: usize> {
     pub t1: f64,
     pub y0: State<N>,
     pub y1: State<N>,
-    /// The step size the extension was built on (t1 − t0 unless truncated).
-    h: f64,
+    /// 1/h, h being the step size the extension was built on (t1 − t0
+    /// unless truncated): `at` and `slope_at` multiply by it, as the event
+    /// roots call them in a dependent chain where a division would be the
+    /// slowest link.
+    inverse_h: f64,
     coefficients: [State<N>; 4],
 }
 
@@ -87,10 +90,25 @@ impl<const N: usize> DenseStep<N> {
     /// The solution at `t` in [t0, t1].
     #[inline]
     pub fn at(&self, t: f64) -> State<N> {
-        let s = (t - self.t0) / self.h;
+        let s = (t - self.t0) * self.inverse_h;
         let s1 = 1.0 - s;
         let [diff, c3, c4, c5] = &self.coefficients;
         self.y0 + (diff + (c3 + (c4 + c5 * s1) * s) * s1) * s
+    }
+
+    /// The derivative of the continuous extension, dy/dt at `t` in
+    /// [t0, t1] (at t1 it equals the right-hand side there, k7).
+    #[inline]
+    pub fn slope_at(&self, t: f64) -> State<N> {
+        let s = (t - self.t0) * self.inverse_h;
+        let s1 = 1.0 - s;
+        let [diff, c3, c4, c5] = &self.coefficients;
+        // y = y0 + P·s, P = diff + Q·s1, Q = c3 + (c4 + c5·s1)·s.
+        let q = c3 + (c4 + c5 * s1) * s;
+        let dq = c4 + c5 * (s1 - s);
+        let p = diff + q * s1;
+        let dp = dq * s1 - q;
+        (p + dp * s) * self.inverse_h
     }
 
     /// The same step, ending at `t` (t0 < t ≤ t1) instead.
@@ -296,7 +314,7 @@ where
                 t1: t + h,
                 y0: y,
                 y1,
-                h,
+                inverse_h: 1.0 / h,
                 coefficients: [diff, c3, c4, c5],
             };
             stats.accepted += 1;
@@ -382,7 +400,7 @@ where
             t1: t + h,
             y0: y,
             y1,
-            h,
+            inverse_h: 1.0 / h,
             coefficients: [diff, c3, c4, State::<N>::zeros()],
         };
         match observe(&dense) {
@@ -440,6 +458,58 @@ pub fn find_root(mut g: impl FnMut(f64) -> f64, mut a: f64, mut b: f64, toleranc
     (a * gb - b * ga) / (gb - ga)
 }
 
+/// A root of `g` in [a, b], where g(a) and g(b) differ in sign, to within
+/// `tolerance` in t, `g` returning its value and its derivative: Newton's
+/// method from the secant through the ends, falling back to bisection when a
+/// Newton step would leave the bracket. On a step's continuous extension
+/// (a polynomial, its derivative exact) it converges in about four
+/// iterations where [`find_root`] takes about seven (a fastball's five
+/// events: 20 against 36); the iterations form a dependent chain, so their
+/// number is the cost.
+pub fn find_root_newton(
+    mut g: impl FnMut(f64) -> (f64, f64),
+    mut a: f64,
+    mut b: f64,
+    tolerance: f64,
+) -> f64 {
+    let (ga, _) = g(a);
+    let (gb, _) = g(b);
+    if ga == 0.0 {
+        return a;
+    }
+    if gb == 0.0 {
+        return b;
+    }
+    let b_positive = gb > 0.0;
+    let mut t = (a * gb - b * ga) / (gb - ga);
+    for _ in 0..100 {
+        let (gt, slope) = g(t);
+        if gt == 0.0 {
+            return t;
+        }
+        // Keep the root bracketed: b on g(b)'s side, a on the other.
+        if (gt > 0.0) == b_positive {
+            b = t;
+        } else {
+            a = t;
+        }
+        let newton = t - gt / slope;
+        let (low, high) = if a < b { (a, b) } else { (b, a) };
+        let inside = newton >= low && newton <= high;
+        // Converged (the test is on the Newton step, as the new point may
+        // be the bracket's end itself).
+        if inside && (newton - t).abs() < tolerance {
+            return newton;
+        }
+        let next = if inside { newton } else { 0.5 * (a + b) };
+        if (b - a).abs() < tolerance {
+            return next;
+        }
+        t = next;
+    }
+    t
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -484,6 +554,34 @@ mod tests {
         };
         let ratio = error(0.02) / error(0.01);
         assert!((ratio - 16.0).abs() < 1.0, "{ratio}");
+    }
+
+    #[test]
+    fn newton_finds_roots_and_stays_in_the_bracket() {
+        let r = find_root_newton(|x| (x * x - 2.0, 2.0 * x), 0.0, 2.0, 1e-14);
+        assert!((r - 2f64.sqrt()).abs() < 1e-12);
+        // A zero slope at the secant's guess: bisection, not a jump to ±∞.
+        let r = find_root_newton(|x| (x * x * x, 3.0 * x * x), -1.0, 1.0, 1e-14);
+        assert!(r.abs() < 1e-4, "{r}");
+        let r = find_root_newton(|x| (x.cos(), -x.sin()), 0.0, 3.0, 1e-14);
+        assert!((r - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn slope_is_the_derivative_of_the_extension() {
+        let f = |_t: f64, y: &State<2>| State::<2>::new(y[1], -y[0]);
+        let settings = Settings::new(Tolerance::uniform(1e-6));
+        integrate(f, 0.0, State::<2>::new(1.0, 0.0), 3.0, &settings, |s| {
+            for t in [s.t0, 0.3 * s.t0 + 0.7 * s.t1, s.t1] {
+                let d = 1e-6 * (s.t1 - s.t0);
+                let (lo, hi) = ((t - d).max(s.t0), (t + d).min(s.t1));
+                let numeric = (s.at(hi) - s.at(lo)) / (hi - lo);
+                assert!((s.slope_at(t) - numeric).norm() < 1e-5, "{t}");
+            }
+            // At the end, the extension's slope is the right-hand side.
+            assert!((s.slope_at(s.t1) - f(s.t1, &s.y1)).norm() < 1e-12);
+            Control::Continue
+        });
     }
 
     #[test]
