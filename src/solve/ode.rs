@@ -421,49 +421,11 @@ where
 }
 
 /// A root of `g` in [a, b], where g(a) and g(b) differ in sign, to within
-/// `tolerance` in t (Illinois variant of regula falsi: superlinear, and never
-/// leaves the bracket).
-pub fn find_root(mut g: impl FnMut(f64) -> f64, mut a: f64, mut b: f64, tolerance: f64) -> f64 {
-    let mut ga = g(a);
-    let mut gb = g(b);
-    if ga == 0.0 {
-        return a;
-    }
-    if gb == 0.0 {
-        return b;
-    }
-    let mut side = 0;
-    for _ in 0..100 {
-        let c = (a * gb - b * ga) / (gb - ga);
-        let gc = g(c);
-        if gc == 0.0 || (b - a).abs() < tolerance {
-            return c;
-        }
-        if (gc > 0.0) == (gb > 0.0) {
-            b = c;
-            gb = gc;
-            if side == -1 {
-                ga /= 2.0;
-            }
-            side = -1;
-        } else {
-            a = c;
-            ga = gc;
-            if side == 1 {
-                gb /= 2.0;
-            }
-            side = 1;
-        }
-    }
-    (a * gb - b * ga) / (gb - ga)
-}
-
-/// A root of `g` in [a, b], where g(a) and g(b) differ in sign, to within
 /// `tolerance` in t, `g` returning its value and its derivative: Newton's
 /// method from the secant through the ends, falling back to bisection when a
 /// Newton step would leave the bracket. On a step's continuous extension
 /// (a polynomial, its derivative exact) it converges in about four
-/// iterations where [`find_root`] takes about seven (a fastball's five
+/// iterations where regula falsi (Illinois) took about seven (a fastball's five
 /// events: 20 against 36); the iterations form a dependent chain, so their
 /// number is the cost.
 pub fn find_root_newton(
@@ -582,11 +544,5 @@ mod tests {
             assert!((s.slope_at(s.t1) - f(s.t1, &s.y1)).norm() < 1e-12);
             Control::Continue
         });
-    }
-
-    #[test]
-    fn illinois_finds_roots() {
-        let r = find_root(|x| x * x - 2.0, 0.0, 2.0, 1e-14);
-        assert!((r - 2f64.sqrt()).abs() < 1e-12);
     }
 }
