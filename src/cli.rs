@@ -123,8 +123,10 @@ pub enum Command {
         /// Change one input, with the same keys as the TOML (e.g. bat.speed=32).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
+        /// Print JSON: title, conditions, one object per row, the paper's numbers beside ours.
         #[arg(long, conflicts_with = "csv")]
         json: bool,
+        /// Print CSV: a header of column names, one line per row (to plot).
         #[arg(long)]
         csv: bool,
     },
