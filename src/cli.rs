@@ -54,6 +54,20 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The batted ball's path: time, x, y and C_D, sampled evenly in time.
+    Trajectory {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// How many points, launch and landing included (2 to 100000).
+        #[arg(long, default_value_t = 51)]
+        samples: usize,
+        #[arg(long, conflicts_with = "csv")]
+        json: bool,
+        #[arg(long)]
+        csv: bool,
+    },
+    /// Every input key: symbol, unit, accepted range and the fastball's value.
+    Keys,
     /// The undercut and swing angle that maximise range (§II.E).
     Optimize {
         #[command(flatten)]
@@ -232,6 +246,17 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             Ok(surface(&scene, grid, Format::new(*json, *csv)))
         }
         Command::Presets => Ok(presets(dir)),
+        Command::Keys => Ok(keys()),
+        Command::Trajectory {
+            scene,
+            samples,
+            json,
+            csv,
+        } => trajectory(
+            &scene.resolve(dir)?.scene,
+            *samples,
+            Format::new(*json, *csv),
+        ),
         Command::Figure {
             number,
             preset,
@@ -1876,4 +1901,96 @@ impl FigureData {
         }
         trim_lines(&out)
     }
+}
+
+/// The flight at readout precision, sampled from the dense output.
+fn trajectory(scene: &Scene, samples: usize, format: Format) -> Result<String, UsageError> {
+    if !(2..=100_000).contains(&samples) {
+        return Err(UsageError::Other(format!(
+            "--samples {samples}: must be a whole number in [2, 100000]"
+        )));
+    }
+    let impact = crate::model::impact::Impact::new(scene);
+    let (flight, launch) = crate::model::launch(scene, &impact);
+    let options = Purpose::Readout.flight_options();
+    let (summary, points) = crate::model::flight::trajectory(&flight, &launch, &options, samples);
+    Ok(match format {
+        Format::Json => pretty(&serde_json::json!({
+            "range": summary.range,
+            "flight_time": summary.flight_time,
+            "landed": summary.landed,
+            "points": points,
+        })),
+        Format::Csv => {
+            let mut out = String::from("time,x,y,drag_coefficient\n");
+            for p in &points {
+                let _ = writeln!(out, "{},{},{},{}", p.time, p.x, p.y, p.drag_coefficient);
+            }
+            out
+        }
+        Format::Text => {
+            let mut out = format!(
+                "flight of {:.3} m in {:.3} s{}\n{:>8} {:>9} {:>8} {:>6}\n",
+                summary.range,
+                summary.flight_time,
+                if summary.landed {
+                    ""
+                } else {
+                    " (still in the air at the step limit)"
+                },
+                "t (s)",
+                "x (m)",
+                "y (m)",
+                "C_D"
+            );
+            for p in &points {
+                let _ = writeln!(
+                    out,
+                    "{:>8.3} {:>9.3} {:>8.3} {:>6.3}",
+                    p.time, p.x, p.y, p.drag_coefficient
+                );
+            }
+            out
+        }
+    })
+}
+
+/// The input keys, as `--set` and the TOML presets take them.
+fn keys() -> String {
+    use crate::model::scene::{DRAG_KEY, KEYS};
+    let defaults = Scene::default();
+    let mut out = format!(
+        "{:<33} {:<6} {:<7} {:<24} {:>10}  {}\n",
+        "key", "symbol", "unit", "accepted", "fastball", "meaning"
+    );
+    for key in KEYS {
+        let _ = writeln!(
+            out,
+            "{:<33} {:<6} {:<7} {:<24} {:>10}  {}",
+            key.name,
+            key.symbol,
+            key.unit,
+            key.bounds.to_string(),
+            (key.get)(&defaults),
+            key.description
+        );
+    }
+    let _ = writeln!(
+        out,
+        "{:<33} {:<6} {:<7} {:<24} {:>10}  {}",
+        DRAG_KEY,
+        "C_D",
+        "",
+        crate::model::aero::DragModel::ALL
+            .map(|m| m.name())
+            .join(" | "),
+        defaults.drag.name(),
+        "drag model"
+    );
+    let _ = writeln!(
+        out,
+        "\nAlso: bat.undercut must stay below r_b + r_B in size (the bat must reach the ball), and\n\
+         pitch.speed must be fast enough for Eq. (3) to hold at the chosen gravity."
+    );
+    out
 }

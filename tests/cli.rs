@@ -460,3 +460,51 @@ fn every_bad_input_is_one_clear_line_and_status_2() {
     refuses(d, &["table2", "--csv"], &["--csv"]);
     refuses(d, &["frobnicate"], &["frobnicate"]);
 }
+
+#[test]
+fn trajectory_runs_from_the_contact_point_to_the_landing_of_hit() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let hit = json(d, &["hit", "--json"]);
+    let flight = json(d, &["trajectory", "--samples", "41", "--json"]);
+    let points = flight["points"].as_array().unwrap();
+    assert_eq!(points.len(), 41);
+    let first = &points[0];
+    assert_eq!((number(first, "x"), number(first, "y")), (0.0, 1.0));
+    let last = &points[40];
+    // The same flight as `hit`: it lands at hit's range, on the ground.
+    assert!((number(last, "x") - number(&hit, "flight.range")).abs() < 1e-9);
+    assert_eq!(number(last, "y"), 0.0);
+    assert!((number(last, "time") - number(&hit, "flight.flight_time")).abs() < 1e-12);
+    let apex = points.iter().map(|p| number(p, "y")).fold(0.0, f64::max);
+    assert!(apex <= number(&hit, "flight.apex") + 1e-9 && apex > number(&hit, "flight.apex") - 0.5);
+    let csv = homerun(d)
+        .args(["trajectory", "--samples", "5", "--csv"])
+        .output()
+        .unwrap();
+    let csv = String::from_utf8(csv.stdout).unwrap();
+    assert_eq!(csv.lines().next(), Some("time,x,y,drag_coefficient"));
+    assert_eq!(csv.lines().count(), 6);
+    refuses(
+        d,
+        &["trajectory", "--samples", "1"],
+        &["--samples 1", "[2, 100000]"],
+    );
+}
+
+#[test]
+fn keys_lists_every_input_with_its_range() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = homerun(dir.path()).arg("keys").output().unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    for key in homerun::model::scene::KEYS {
+        let line = text
+            .lines()
+            .find(|l| l.starts_with(&format!("{} ", key.name)))
+            .unwrap_or_else(|| panic!("{} missing", key.name));
+        assert!(line.contains(&key.bounds.to_string()), "{line}");
+    }
+    assert!(text.contains("model.drag") && text.contains("sawicki2003 | constant"));
+    assert!(text.contains("[-π/2, π/2]"));
+}

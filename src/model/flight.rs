@@ -442,7 +442,11 @@ pub fn trajectory(
             if t > step.t1 {
                 break;
             }
-            push(t, step.at(t));
+            let mut state = step.at(t);
+            if next == samples - 1 && summary.landed {
+                state[1] = 0.0; // the landing event defines y = 0 there
+            }
+            push(t, state);
             next += 1;
         }
     });

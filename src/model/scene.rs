@@ -157,7 +157,23 @@ impl Bounds {
 impl std::fmt::Display for Bounds {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let open = if self.min_exclusive { '(' } else { '[' };
-        write!(f, "{open}{}, {}]", self.min, self.max)
+        write!(
+            f,
+            "{open}{}, {}]",
+            bound_text(self.min),
+            bound_text(self.max)
+        )
+    }
+}
+
+/// A bound as a person reads it: ±π/2 rather than ±1.5707963267948966.
+fn bound_text(value: f64) -> String {
+    if value == FRAC_PI_2 {
+        "π/2".to_owned()
+    } else if value == -FRAC_PI_2 {
+        "-π/2".to_owned()
+    } else {
+        value.to_string()
     }
 }
 
