@@ -1975,17 +1975,18 @@ fn keys() -> String {
             key.description
         );
     }
+    let (symbol, unit, meaning) = ("C_D", "", "drag model");
     let _ = writeln!(
         out,
         "{:<33} {:<6} {:<7} {:<24} {:>10}  {}",
         DRAG_KEY,
-        "C_D",
-        "",
+        symbol,
+        unit,
         crate::model::aero::DragModel::ALL
             .map(|m| m.name())
             .join(" | "),
         defaults.drag.name(),
-        "drag model"
+        meaning
     );
     let _ = writeln!(
         out,
