@@ -377,10 +377,15 @@ fn fly_with(
         Stepper::Adaptive(settings) => {
             ode::integrate(rhs, 0.0, start, MAX_FLIGHT_TIME, &settings, observe)
         }
-        Stepper::Fixed(step) => {
-            let max_steps = Settings::new(Tolerance::uniform(1.0)).max_steps;
-            ode::integrate_fixed(rhs, 0.0, start, MAX_FLIGHT_TIME, step, max_steps, observe)
-        }
+        Stepper::Fixed(step) => ode::integrate_fixed(
+            rhs,
+            0.0,
+            start,
+            MAX_FLIGHT_TIME,
+            step,
+            ode::MAX_STEPS,
+            observe,
+        ),
     };
     let landed = outcome == Outcome::Stopped;
     let (time, state) = landing.unwrap_or(last);

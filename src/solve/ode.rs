@@ -121,6 +121,10 @@ impl<const N: usize> DenseStep<N> {
     }
 }
 
+/// The default bound on steps: no flight needs more than a few thousand, and
+/// a bound means no input can hang a caller.
+pub const MAX_STEPS: u32 = 100_000;
+
 /// How to integrate.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
@@ -136,7 +140,7 @@ impl Settings {
     pub fn new(tolerance: Tolerance) -> Self {
         Settings {
             tolerance,
-            max_steps: 100_000,
+            max_steps: MAX_STEPS,
             initial_step: None,
             max_step: f64::INFINITY,
         }
