@@ -417,6 +417,21 @@ pub enum InputError {
 }
 
 impl Scene {
+    /// This scene with its swing replaced by undercut E and swing angle ψ:
+    /// the one change the optimiser, the surface and the studies make.
+    pub fn with_swing(&self, undercut: f64, swing_angle: f64) -> Scene {
+        let mut scene = *self;
+        scene.bat.undercut = undercut;
+        scene.bat.swing_angle = swing_angle;
+        scene
+    }
+
+    /// r_b + r_B: the centre distance at contact, so |E| must stay below it
+    /// for the bat to meet the ball.
+    pub fn reach(&self) -> f64 {
+        self.ball.radius + self.bat.radius
+    }
+
     /// Looks up a numeric key.
     pub fn key(name: &str) -> Result<&'static Key, InputError> {
         KEYS.iter()
@@ -467,7 +482,7 @@ impl Scene {
                 });
             }
         }
-        let limit = self.ball.radius + self.bat.radius;
+        let limit = self.reach();
         if self.bat.undercut.abs() >= limit {
             return Err(InputError::Miss {
                 value: self.bat.undercut,
