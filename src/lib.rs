@@ -1,19 +1,30 @@
 //! homerun: the physics of hitting a baseball as far as possible, after
 //! Sawicki, Hubbard & Stronge, "How to hit home runs", Am. J. Phys. 71 (2003).
 //!
-//! The core is pure functions over small `Copy` structs, in SI units:
-//! [`model::scene::Scene`] → [`model::impact::Impact`] → [`model::flight`] →
-//! a summary; [`solve::optimize`] and [`study`] call that chain and nothing else.
+//! Every arrow points down, and a module's folder says what it may import:
+//! - [`numerics`]: the integrator, root finding and the simplex search;
+//!   imports nothing of the crate.
+//! - [`model`]: the paper, each equation once: [`model::scene::Scene`] →
+//!   [`model::impact::Impact`] → [`model::flight`] → a summary.
+//! - [`analysis`]: precision budgets, the optimal swing, the studies behind
+//!   the figures, the benchmark; calls the model and the numerics.
+//! - [`preset`]: scenes in TOML files.
+//! - [`cli`] and [`tui`]: the frontends; nothing below imports them.
 
-pub mod bench;
+pub mod analysis;
 pub mod cli;
 pub mod model;
-pub mod precision;
+pub mod numerics;
 pub mod preset;
-pub mod solve;
-pub mod study;
 pub mod tui;
 
+pub use analysis::precision::Purpose;
 pub use model::scene::Scene;
 pub use model::{Swing, range, simulate};
-pub use precision::Purpose;
+
+// Old paths, kept while the frontends move over (removed before this lands).
+pub use analysis::{bench, precision, study};
+pub mod solve {
+    pub use crate::analysis::optimum as optimize;
+    pub use crate::numerics::ode;
+}

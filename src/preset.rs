@@ -10,7 +10,7 @@ use std::fs;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use crate::model::aero::DragModel;
+use crate::model::aero::{DragModel, UnknownModel};
 use crate::model::scene::{DRAG_KEY, InputError, KEYS, Scene};
 
 /// A fence to clear, drawn by the explorer (not part of the physics).
@@ -126,7 +126,7 @@ impl Preset {
                     let text = value.as_str().ok_or_else(|| {
                         wrong(&key, value, "expected a drag model name in quotes")
                     })?;
-                    scene.drag = text.parse().map_err(input)?;
+                    scene.drag = text.parse().map_err(|e: UnknownModel| input(e.into()))?;
                     continue;
                 }
                 let number = match value {

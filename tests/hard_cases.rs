@@ -2,9 +2,10 @@
 //! physically sensible result and, where the physics is continuous, a
 //! continuous one. No test here is timed; every flight's work is bounded.
 
-use homerun::model::flight::{self, Flight, FlightSummary, Launch};
+use homerun::model::flight::{self, Flight, FlightOptions, FlightSummary, Launch};
 use homerun::model::impact::Impact;
 use homerun::model::{self, aero::DragModel};
+use homerun::numerics::ode::Tolerance;
 use homerun::solve::optimize::{OptimizerSettings, optimize_from};
 use homerun::{Purpose, Scene};
 use nalgebra::Vector2;
@@ -50,7 +51,7 @@ fn assert_sane(summary: &FlightSummary, what: &str) {
     );
 }
 
-fn fly(scene: &Scene, purpose: Purpose) -> homerun::Swing {
+fn fly(scene: &Scene, purpose: impl Into<FlightOptions>) -> homerun::Swing {
     let swing = model::simulate(scene, purpose);
     assert!(
         swing.impact.launch_speed().is_finite()
@@ -344,9 +345,8 @@ fn extreme_tolerances_end_with_bounded_work() {
     let scene = Scene::default();
     let grid = homerun::study::Grid::figure7(6, 6);
     for (exponent, max_steps) in [(2, 60), (13, 4000)] {
-        let purpose = Purpose::Stated {
-            relative_exponent: exponent,
-            absolute_exponent: exponent,
+        let purpose = FlightOptions {
+            tolerance: Tolerance::uniform(10f64.powi(-exponent)),
             stop_at_kinks: true,
         };
         for i in 0..grid.columns {

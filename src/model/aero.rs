@@ -2,8 +2,6 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::scene::InputError;
-
 /// Which drag curve the flight uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
 #[serde(rename_all = "lowercase")]
@@ -100,13 +98,21 @@ const CRISIS_END: f64 = 175_000.0;
 /// 160 000 − 8784.46·ln(1 + 0.35/0.0416812) ≈ 140 319.
 const SAWICKI_KINKS: [f64; 3] = [140_319.312_894_860_5, CRISIS_START, CRISIS_END];
 
+/// A model name that is not one of the accepted ones.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("model.drag = {text:?}: unknown drag model; accepted: {accepted}")]
+pub struct UnknownModel {
+    pub text: String,
+    pub accepted: String,
+}
+
 impl std::str::FromStr for DragModel {
-    type Err = InputError;
+    type Err = UnknownModel;
     fn from_str(text: &str) -> Result<Self, Self::Err> {
         DragModel::ALL
             .into_iter()
             .find(|m| m.name() == text.trim())
-            .ok_or_else(|| InputError::UnknownDrag {
+            .ok_or_else(|| UnknownModel {
                 text: text.to_owned(),
                 accepted: DragModel::ALL.map(DragModel::name).join(", "),
             })

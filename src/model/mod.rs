@@ -1,16 +1,19 @@
 //! The paper's model, one file per phase: pitch (Eq. 3–4) → impact
-//! (Eq. 1–2, 5–23) → flight (Eq. 25–29).
+//! (Eq. 1–2, 5–23) → flight (Eq. 25–29); the inputs in `scene` and their
+//! names, bounds and validation in `keys`. It knows nothing of who asks or
+//! how precisely: callers pass [`FlightOptions`] (or anything that becomes
+//! them, such as `analysis::precision::Purpose`).
 
 pub mod aero;
 pub mod flight;
 pub mod impact;
+pub mod keys;
 pub mod pitch;
 pub mod scene;
 
 use nalgebra::Vector2;
 
-use crate::precision::Purpose;
-use flight::{Flight, FlightSummary, Launch};
+use flight::{Flight, FlightOptions, FlightSummary, Launch};
 use impact::Impact;
 use scene::Scene;
 
@@ -32,17 +35,17 @@ pub fn launch(scene: &Scene, impact: &Impact) -> (Flight, Launch) {
     )
 }
 
-/// Simulates a (validated) scene at the precision `purpose` needs.
-pub fn simulate(scene: &Scene, purpose: Purpose) -> Swing {
+/// Simulates a (validated) scene as precisely as `options` says.
+pub fn simulate(scene: &Scene, options: impl Into<FlightOptions>) -> Swing {
     let impact = Impact::new(scene);
     let (flight, start) = launch(scene, &impact);
     Swing {
         impact,
-        flight: flight::fly(&flight, &start, &purpose.flight_options()),
+        flight: flight::fly(&flight, &start, &options.into()),
     }
 }
 
 /// Just the range: what the optimiser and the heatmap need.
-pub fn range(scene: &Scene, purpose: Purpose) -> f64 {
-    simulate(scene, purpose).flight.range
+pub fn range(scene: &Scene, options: impl Into<FlightOptions>) -> f64 {
+    simulate(scene, options).flight.range
 }

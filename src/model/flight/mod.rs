@@ -1,5 +1,7 @@
 //! The batted ball's flight: Eq. (25)–(29), integrated to the landing.
 
+mod events;
+
 use std::cell::Cell;
 
 use nalgebra::Vector2;
@@ -7,7 +9,20 @@ use serde::Serialize;
 
 use super::aero::{DragModel, lift_coefficient_times_speed};
 use super::scene::Scene;
-use crate::solve::ode::{self, Control, DenseStep, Outcome, Settings, State, Stats, Tolerance};
+use crate::numerics::ode::{self, DenseStep, Outcome, Settings, State, Stats, Tolerance};
+use events::Events;
+
+/// The flight's state is (x, y, v_x, v_y): these name its components.
+const DISTANCE: usize = 0;
+const HEIGHT: usize = 1;
+const VELOCITY_X: usize = 2;
+const VERTICAL_VELOCITY: usize = 3;
+
+/// The velocity part of a state (or of its derivative, the acceleration).
+#[inline]
+fn velocity(state: &State<4>) -> Vector2<f64> {
+    Vector2::new(state[VELOCITY_X], state[VERTICAL_VELOCITY])
+}
 
 /// No flight is followed past this (s): far beyond any hit, but a bound, so
 /// that no input (a ball held up by lift) can run forever.
@@ -106,14 +121,14 @@ impl Flight {
     /// d/dt of the state on a given piece of the drag curve.
     #[inline]
     pub fn derivative_on(&self, state: &State<4>, piece: Option<usize>) -> State<4> {
-        let a = self.acceleration_on(Vector2::new(state[2], state[3]), piece);
-        State::<4>::new(state[2], state[3], a.x, a.y)
+        let a = self.acceleration_on(velocity(state), piece);
+        State::<4>::new(state[VELOCITY_X], state[VERTICAL_VELOCITY], a.x, a.y)
     }
 
     /// The piece of the drag curve the ball is on at `state`, or about to
     /// enter: at a kink, the one the Reynolds number is moving into.
     pub fn drag_piece(&self, state: &State<4>) -> usize {
-        let velocity = Vector2::new(state[2], state[3]);
+        let velocity = velocity(state);
         let rel = self.relative_wind(velocity);
         let re = rel.norm() * self.reynolds_per_speed;
         // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters.
@@ -220,60 +235,9 @@ fn fly_with(
     mut watch: impl FnMut(&DenseStep<4>),
 ) -> FlightSummary {
     let start = launch.state();
-    let mut apex = (launch.position.y, launch.position.x);
-    let mut landing: Option<(f64, State<4>)> = None;
-    let mut last = (0.0, start);
-    let root_tolerance = 1e-13;
-    let kinks = flight.drag.kinks();
-    let switching = stop_at_kinks && !kinks.is_empty();
-    // The drag piece the current step uses (when switching).
+    let switching = stop_at_kinks && !flight.drag.kinks().is_empty();
     let piece = Cell::new(flight.drag_piece(&start));
-    let last_switch = Cell::new(f64::NEG_INFINITY);
-    let reynolds = |s: &State<4>| flight.reynolds(Vector2::new(s[2], s[3]));
-
-    // Where the step leaves its drag piece, and the piece it enters, given
-    // the Reynolds numbers at its ends.
-    let crossing = |step: &DenseStep<4>, re0: f64, re1: f64| -> Option<(f64, usize)> {
-        let p = piece.get();
-        let (kink, next) = if p > 0 && re1 < kinks[p - 1] {
-            (kinks[p - 1], p - 1)
-        } else if p < kinks.len() && re1 > kinks[p] {
-            (kinks[p], p + 1)
-        } else {
-            return None;
-        };
-        let t = if (re0 - kink) * (re1 - kink) < 0.0 {
-            // Where |V_r|² = (kink/(2r_b/ν))²: the same root as Re = kink,
-            // without a square root per iteration.
-            let speed = kink / flight.reynolds_per_speed;
-            ode::find_root_newton(
-                |t| {
-                    let (s, slope) = (step.at(t), step.slope_at(t));
-                    let rel = flight.relative_wind(Vector2::new(s[2], s[3]));
-                    // d/dt |V_r|² = 2 V_r·dV_r/dt = −2 V_r·a.
-                    let rate = -2.0 * (rel.x * slope[2] + rel.y * slope[3]);
-                    (rel.norm_squared() - speed * speed, rate)
-                },
-                step.t0,
-                step.t1,
-                root_tolerance,
-            )
-        } else {
-            // Already across at the start (it came back over the kink it
-            // was just switched at): switch at once.
-            step.t0
-        };
-        Some((t, next))
-    };
-    let landing_time = |step: &DenseStep<4>| {
-        ode::find_root_newton(
-            |t| (step.at(t)[1], step.slope_at(t)[1]),
-            step.t0,
-            step.t1,
-            root_tolerance,
-        )
-    };
-
+    let mut events = Events::new(flight, &start, &piece, switching);
     let rhs = |_t: f64, s: &State<4>| {
         if switching {
             flight.derivative_on(s, Some(piece.get()))
@@ -281,98 +245,7 @@ fn fly_with(
             flight.derivative(s)
         }
     };
-    let observe = |step: &DenseStep<4>| {
-        // The Reynolds numbers at the step's ends (each costs a square root:
-        // computed once, for the kink check and the kink prediction).
-        let (re0, re1) = if switching {
-            (reynolds(&step.y0), reynolds(&step.y1))
-        } else {
-            (0.0, 0.0)
-        };
-        // The step as shown: cut at a kink, or the step itself (by reference:
-        // a DenseStep is 27 numbers, not worth copying on every step).
-        let truncated;
-        let mut shown = step;
-        let mut control = Control::Continue;
-        if switching && let Some((t_kink, next)) = crossing(step, re0, re1) {
-            let lands_first = step.y1[1] <= 0.0 && landing_time(step) <= t_kink;
-            // A second switch at the same instant would undo the first (Re
-            // turning right at a kink): go on without it, so that every
-            // switch is followed by progress in time.
-            let stalls = t_kink <= last_switch.get();
-            if !lands_first && !stalls {
-                last_switch.set(t_kink);
-                truncated = step.truncated(t_kink);
-                shown = &truncated;
-                piece.set(next);
-                control = Control::RestartAt(t_kink);
-            }
-        }
-        watch(shown);
-        if shown.y0[3] > 0.0 && shown.y1[3] <= 0.0 {
-            let t = ode::find_root_newton(
-                |t| (shown.at(t)[3], shown.slope_at(t)[3]),
-                shown.t0,
-                shown.t1,
-                root_tolerance,
-            );
-            let s = shown.at(t);
-            if s[1] > apex.0 {
-                apex = (s[1], s[0]);
-            }
-        }
-        last = (shown.t1, shown.y1);
-        if shown.y1[1] <= 0.0 {
-            let t = landing_time(shown);
-            landing = Some((t, shown.at(t)));
-            return Control::Stop;
-        }
-        if control == Control::Continue {
-            // When the next event is near, end the next step a little past
-            // it rather than wherever the error control would.
-            let h = shown.t1 - shown.t0;
-            let mut soonest = f64::INFINITY;
-            // The landing: y(τ) ≈ y + v_y τ + a_y τ²/2, a_y from the step.
-            let (y, vy) = (shown.y1[1], shown.y1[3]);
-            let ay = (shown.y1[3] - shown.y0[3]) / h;
-            let disc = vy * vy - 2.0 * ay * y;
-            if disc >= 0.0 && ay != 0.0 {
-                for tau in [(-vy + disc.sqrt()) / ay, (-vy - disc.sqrt()) / ay] {
-                    if tau > 0.0 {
-                        soonest = soonest.min(tau);
-                    }
-                }
-            } else if ay == 0.0 && vy < 0.0 {
-                soonest = -y / vy;
-            }
-            // The next kink, from the Reynolds number's rate over the step.
-            // (Not cut here, so `shown` is `step` and re0, re1 are its ends.)
-            if switching {
-                let rate = (re1 - re0) / h;
-                let p = piece.get();
-                let target = if rate < 0.0 && p > 0 {
-                    Some(kinks[p - 1])
-                } else if rate > 0.0 && p < kinks.len() {
-                    Some(kinks[p])
-                } else {
-                    None
-                };
-                if let Some(kink) = target {
-                    soonest = soonest.min((kink - re1) / rate);
-                }
-            }
-            // Past the predicted event by half its distance, so that the
-            // event falls inside the next step despite the prediction's
-            // error; and not for events closer than a tenth of this step,
-            // lest a Reynolds number creeping up on a kink shrink the steps
-            // without end. (bench: at 1e-5 the landing error falls ~4× and a
-            // Fig. 7 surface's worst cell 10×, for the same evaluations.)
-            if soonest.is_finite() && soonest > 0.1 * h {
-                return Control::EndNextBy(shown.t1 + 1.5 * soonest);
-            }
-        }
-        control
-    };
+    let observe = |step: &DenseStep<4>| events.observe(step, &mut watch);
     let (outcome, stats) = match stepper {
         Stepper::Adaptive(settings) => {
             ode::integrate(rhs, 0.0, start, MAX_FLIGHT_TIME, &settings, observe)
@@ -388,14 +261,14 @@ fn fly_with(
         ),
     };
     let landed = outcome == Outcome::Stopped;
-    let (time, state) = landing.unwrap_or(last);
+    let (time, state) = events.landing.unwrap_or(events.last);
     FlightSummary {
-        range: state[0] - launch.position.x,
+        range: state[DISTANCE] - launch.position.x,
         flight_time: time,
-        apex: apex.0,
-        apex_distance: apex.1 - launch.position.x,
-        landing_speed: state.fixed_rows::<2>(2).norm(),
-        landing_angle: (-state[3]).atan2(state[2]),
+        apex: events.apex.0,
+        apex_distance: events.apex.1 - launch.position.x,
+        landing_speed: velocity(&state).norm(),
+        landing_angle: (-state[VERTICAL_VELOCITY]).atan2(state[VELOCITY_X]),
         landed,
         stats,
     }
@@ -426,12 +299,11 @@ pub fn trajectory(
     let dt = summary.flight_time / (samples - 1) as f64;
     let mut points = Vec::with_capacity(samples);
     let mut push = |time: f64, s: State<4>| {
-        let velocity = Vector2::new(s[2], s[3]);
         points.push(TrajectoryPoint {
             time,
-            x: s[0],
-            y: s[1],
-            drag_coefficient: flight.drag.drag_coefficient(flight.reynolds(velocity)),
+            x: s[DISTANCE],
+            y: s[HEIGHT],
+            drag_coefficient: flight.drag.drag_coefficient(flight.reynolds(velocity(&s))),
         });
     };
     push(0.0, launch.state());
@@ -449,7 +321,7 @@ pub fn trajectory(
             }
             let mut state = step.at(t);
             if next == samples - 1 && summary.landed {
-                state[1] = 0.0; // the landing event defines y = 0 there
+                state[HEIGHT] = 0.0; // the landing event defines y = 0 there
             }
             push(t, state);
             next += 1;

@@ -8,13 +8,7 @@
 //! it (tested below and in `tests/hard_cases.rs`).
 
 use crate::model::flight::FlightOptions;
-use crate::solve::ode::Tolerance;
-
-/// The heatmap the surface is drawn for: at most this many colour steps…
-pub const HEATMAP_COLOUR_STEPS: f64 = 16.0;
-/// …over a span of ranges this wide (m): Fig. 7's window spans ~40 m between
-/// its lowest contour of interest and the optimum.
-pub const HEATMAP_RANGE_SPAN: f64 = 40.0;
+use crate::numerics::ode::Tolerance;
 
 /// Who is asking for a flight.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -32,14 +26,6 @@ pub enum Purpose {
     Plot,
     /// The reference for the benchmarks and tests: as tight as f64 allows.
     Reference,
-    /// A stated tolerance, relative 10^−`relative_exponent` and absolute
-    /// 10^−`absolute_exponent`: for the benchmark's work–precision table and
-    /// for tests, never for a consumer.
-    Stated {
-        relative_exponent: i32,
-        absolute_exponent: i32,
-        stop_at_kinks: bool,
-    },
 }
 
 impl Purpose {
@@ -58,12 +44,14 @@ impl Purpose {
             // A tenth of the optimiser's TolFun of 1e-4 m: the simplex
             // compares ranges that differ by ~TolFun when it stops.
             Purpose::Optimizer => 1e-5,
-            // A quarter of one colour step: 40 m / 16 / 4 = 0.625 m.
-            Purpose::Surface => 0.25 * HEATMAP_RANGE_SPAN / HEATMAP_COLOUR_STEPS,
+            // A quarter of one colour step of a surface drawn in at most 16
+            // colours over a 40 m span (Fig. 7's window spans ~40 m between
+            // its lowest contour of interest and the optimum):
+            // 40 m / 16 / 4 = 0.625 m.
+            Purpose::Surface => 0.25 * 40.0 / 16.0,
             // A quarter of a braille dot at the smallest zoom.
             Purpose::Plot => 0.1,
             Purpose::Reference => 1e-8,
-            Purpose::Stated { .. } => f64::INFINITY,
         }
     }
 
@@ -86,25 +74,20 @@ impl Purpose {
             // (Table II): far inside a braille dot, for < 10 µs a drawing.
             Purpose::Plot => Tolerance::uniform(1e-6),
             Purpose::Reference => Tolerance::uniform(1e-13),
-            Purpose::Stated {
-                relative_exponent,
-                absolute_exponent,
-                ..
-            } => Tolerance {
-                relative: 10f64.powi(-relative_exponent),
-                absolute: 10f64.powi(-absolute_exponent),
-            },
         }
     }
 
     pub fn flight_options(self) -> FlightOptions {
         FlightOptions {
             tolerance: self.tolerance(),
-            stop_at_kinks: match self {
-                Purpose::Stated { stop_at_kinks, .. } => stop_at_kinks,
-                _ => true,
-            },
+            stop_at_kinks: true,
         }
+    }
+}
+
+impl From<Purpose> for FlightOptions {
+    fn from(purpose: Purpose) -> FlightOptions {
+        purpose.flight_options()
     }
 }
 

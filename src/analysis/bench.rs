@@ -10,12 +10,13 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::model::flight::{self, Flight, Launch};
+use super::optimum::{Optimizer, OptimizerSettings, Status};
+use super::precision::Purpose;
+use super::study::{self, Grid};
+use crate::model::flight::{self, Flight, FlightOptions, Launch};
 use crate::model::impact::Impact;
 use crate::model::{self, scene::Scene};
-use crate::precision::Purpose;
-use crate::solve::optimize::{Optimizer, OptimizerSettings, Status};
-use crate::study::{self, Grid};
+use crate::numerics::ode::Tolerance;
 
 /// reference/model.py's range for the Table II fastball launch (m).
 pub const PYTHON_REFERENCE_RANGE: f64 = 134.698780;
@@ -187,15 +188,22 @@ fn time_median<T>(batches: usize, batch: usize, mut work: impl FnMut() -> T) -> 
     (median(wall), cpu)
 }
 
-/// Relative and absolute tolerance 10^−exponent.
-fn stated(exponent: i32, stop_at_kinks: bool) -> Purpose {
+/// Relative and absolute tolerance 10^−exponent: a stated tolerance for the
+/// work–precision tables, not a consumer's (those are in `precision`).
+fn stated(exponent: i32, stop_at_kinks: bool) -> FlightOptions {
     stated_mixed(exponent, exponent, stop_at_kinks)
 }
 
-fn stated_mixed(relative_exponent: i32, absolute_exponent: i32, stop_at_kinks: bool) -> Purpose {
-    Purpose::Stated {
-        relative_exponent,
-        absolute_exponent,
+fn stated_mixed(
+    relative_exponent: i32,
+    absolute_exponent: i32,
+    stop_at_kinks: bool,
+) -> FlightOptions {
+    FlightOptions {
+        tolerance: Tolerance {
+            relative: 10f64.powi(-relative_exponent),
+            absolute: 10f64.powi(-absolute_exponent),
+        },
         stop_at_kinks,
     }
 }
@@ -231,7 +239,7 @@ fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
     }
     settings.extend((3..=10).map(|e| (e, e - 1, true)));
     for (relative, absolute, stop_at_kinks) in settings {
-        let options = stated_mixed(relative, absolute, stop_at_kinks).flight_options();
+        let options = stated_mixed(relative, absolute, stop_at_kinks);
         let summary = flight::fly(&flight, &launch, &options);
         let (time, cpu) = time_median(effort.trajectory_batches, TRAJECTORY_BATCH, || {
             flight::fly(std::hint::black_box(&flight), &launch, &options)
@@ -287,16 +295,14 @@ fn optimizer_settings(tolerance: f64) -> OptimizerSettings {
 
 fn optimise(
     scene: &Scene,
-    purpose: Purpose,
+    options: FlightOptions,
     settings: OptimizerSettings,
 ) -> (f64, f64, f64, u32, bool) {
     let start = (scene.bat.undercut, scene.bat.swing_angle);
-    let mut optimizer = Optimizer::new(scene, start, purpose, settings);
+    let mut optimizer = Optimizer::new(scene, start, options, settings);
     let best = optimizer.run(|| false).unwrap_or_else(|| optimizer.best());
     // The range at the optimum, re-solved tightly: what a user is shown.
-    let mut at = *scene;
-    at.bat.undercut = best.undercut;
-    at.bat.swing_angle = best.swing_angle;
+    let at = scene.with_swing(best.undercut, best.swing_angle);
     (
         best.undercut,
         best.swing_angle,

@@ -7,12 +7,11 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::model::flight::{self, FlightSummary, TrajectoryPoint};
+use super::optimum::{OptimizerSettings, optimize_from};
+use crate::model::flight::{self, FlightOptions, FlightSummary, TrajectoryPoint};
 use crate::model::impact::{Impact, Regime};
-use crate::model::scene::InputError;
+use crate::model::keys::{DRAG_KEY, InputError};
 use crate::model::{self, scene::Scene};
-use crate::precision::Purpose;
-use crate::solve::optimize::{OptimizerSettings, optimize_from};
 
 /// A rectangular grid over undercut (columns) and swing angle (rows).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -80,16 +79,19 @@ impl Surface {
 }
 
 /// The range of `scene` with its swing replaced by (E, ψ), if the bat reaches.
-pub fn range_at(scene: &Scene, undercut: f64, swing_angle: f64, purpose: Purpose) -> Option<f64> {
-    let mut s = *scene;
-    s.bat.undercut = undercut;
-    s.bat.swing_angle = swing_angle;
-    (undercut.abs() < s.ball.radius + s.bat.radius).then(|| model::range(&s, purpose))
+pub fn range_at(
+    scene: &Scene,
+    undercut: f64,
+    swing_angle: f64,
+    options: impl Into<FlightOptions>,
+) -> Option<f64> {
+    (undercut.abs() < scene.reach())
+        .then(|| model::range(&scene.with_swing(undercut, swing_angle), options))
 }
 
 /// The range surface, in parallel over rows.
-pub fn surface(scene: &Scene, grid: Grid, purpose: Purpose) -> Surface {
-    surface_until(scene, grid, purpose, &|| false).expect("never cancelled")
+pub fn surface(scene: &Scene, grid: Grid, options: impl Into<FlightOptions>) -> Surface {
+    surface_until(scene, grid, options, &|| false).expect("never cancelled")
 }
 
 /// As [`surface`], giving up (`None`) as soon as `cancelled()` turns true:
@@ -97,9 +99,10 @@ pub fn surface(scene: &Scene, grid: Grid, purpose: Purpose) -> Surface {
 pub fn surface_until(
     scene: &Scene,
     grid: Grid,
-    purpose: Purpose,
+    options: impl Into<FlightOptions>,
     cancelled: &(dyn Fn() -> bool + Sync),
 ) -> Option<Surface> {
+    let options = options.into();
     let ranges: Option<Vec<Option<f64>>> = (0..grid.rows * grid.columns)
         .into_par_iter()
         .map(|k| {
@@ -111,7 +114,7 @@ pub fn surface_until(
                 scene,
                 grid.undercut_at(i),
                 grid.swing_angle_at(j),
-                purpose,
+                options,
             ))
         })
         .collect();
@@ -158,7 +161,7 @@ pub enum SweepError {
 /// The scenes of a sweep of `key` over `values`, each validated, before any
 /// computation: the first bad value is an error naming the key.
 pub fn sweep_scenes(scene: &Scene, key: &str, values: &[f64]) -> Result<Vec<Scene>, SweepError> {
-    if key == crate::model::scene::DRAG_KEY {
+    if key == DRAG_KEY {
         return Err(SweepError::NotNumeric);
     }
     let key = Scene::key(key)?;
@@ -209,7 +212,7 @@ pub fn sweep(
         .map(|(s, &value)| {
             let optimum = optimize_from(s, start, settings);
             start = (optimum.undercut, optimum.swing_angle);
-            let impact = at_swing(s, optimum.undercut, optimum.swing_angle);
+            let impact = Impact::new(&s.with_swing(optimum.undercut, optimum.swing_angle));
             SweepPoint {
                 value,
                 undercut: optimum.undercut,
@@ -223,13 +226,6 @@ pub fn sweep(
             }
         })
         .collect())
-}
-
-fn at_swing(scene: &Scene, undercut: f64, swing_angle: f64) -> Impact {
-    let mut s = *scene;
-    s.bat.undercut = undercut;
-    s.bat.swing_angle = swing_angle;
-    Impact::new(&s)
 }
 
 /// One point of a slice in E at fixed ψ (Fig. 13): launch and range.
@@ -249,17 +245,14 @@ pub fn slice(
     scene: &Scene,
     swing_angle: f64,
     undercuts: &[f64],
-    purpose: Purpose,
+    options: impl Into<FlightOptions>,
 ) -> Vec<SlicePoint> {
-    let reach = scene.ball.radius + scene.bat.radius;
+    let options = options.into();
     undercuts
         .par_iter()
-        .filter(|e| e.abs() < reach)
+        .filter(|e| e.abs() < scene.reach())
         .map(|&undercut| {
-            let mut s = *scene;
-            s.bat.undercut = undercut;
-            s.bat.swing_angle = swing_angle;
-            let swing = model::simulate(&s, purpose);
+            let swing = model::simulate(&scene.with_swing(undercut, swing_angle), options);
             SlicePoint {
                 undercut,
                 launch_speed: swing.impact.launch_speed(),
@@ -276,11 +269,11 @@ pub fn slice(
 pub fn drag_along_flight(
     scene: &Scene,
     samples: usize,
-    purpose: Purpose,
+    options: impl Into<FlightOptions>,
 ) -> (FlightSummary, Vec<TrajectoryPoint>) {
     let impact = Impact::new(scene);
     let (flight, start) = model::launch(scene, &impact);
-    flight::trajectory(&flight, &start, &purpose.flight_options(), samples)
+    flight::trajectory(&flight, &start, &options.into(), samples)
 }
 
 /// One point of Figs. 5–6: the batted spin ω_bf and launch angle ζ at an
@@ -305,7 +298,7 @@ pub struct ImpactCurve {
 /// closed-form and cheap, so this needs no parallelism. Undercuts the bat
 /// cannot reach are left out.
 pub fn impact_curves(scene: &Scene, frictions: &[f64], undercuts: &[f64]) -> Vec<ImpactCurve> {
-    let reach = scene.ball.radius + scene.bat.radius;
+    let reach = scene.reach();
     frictions
         .iter()
         .map(|&friction| ImpactCurve {
@@ -316,7 +309,7 @@ pub fn impact_curves(scene: &Scene, frictions: &[f64], undercuts: &[f64]) -> Vec
                 .map(|&undercut| {
                     let mut s = *scene;
                     s.bat.friction = friction;
-                    let impact = at_swing(&s, undercut, scene.bat.swing_angle);
+                    let impact = Impact::new(&s.with_swing(undercut, scene.bat.swing_angle));
                     ImpactPoint {
                         undercut,
                         launch_speed: impact.launch_speed(),

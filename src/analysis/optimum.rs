@@ -1,0 +1,207 @@
+//! The swing that maximises range (§II.E): Nelder–Mead over the undercut E
+//! and swing angle ψ, as the paper did with MATLAB's `fminsearch`, through
+//! [`crate::numerics::nelder_mead`], with the range as the (negated) cost and
+//! the geometric bound |E| < r_b + r_B as an infeasible region.
+
+use serde::Serialize;
+
+use super::precision::Purpose;
+use crate::model::flight::FlightOptions;
+use crate::model::{self, scene::Scene};
+use crate::numerics::nelder_mead::{self, NelderMead};
+
+/// E and ψ are searched in scaled units, so that one unit is a comparable
+/// change in range for both (Fig. 7: the ridge is ~10× longer along ψ).
+const UNDERCUT_SCALE: f64 = 0.01; // m
+const SWING_ANGLE_SCALE: f64 = 0.1; // rad
+const MAX_SWING_ANGLE: f64 = std::f64::consts::FRAC_PI_2;
+
+/// When to stop.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct OptimizerSettings {
+    /// The simplex's size in scaled units (1e-4: 1 µm in E, 1e-5 rad in ψ,
+    /// tighter than the paper's `fminsearch` TolX of 1e-4 in raw units).
+    pub tolerance_x: f64,
+    /// The spread of range over the simplex (m): the paper's TolFun, 1e-4.
+    pub tolerance_range: f64,
+    pub max_evaluations: u32,
+    /// Restarts from the best point after the first convergence.
+    pub max_restarts: u32,
+    /// The size of a (re)started simplex, in scaled units.
+    pub initial_size: f64,
+}
+
+impl Default for OptimizerSettings {
+    fn default() -> Self {
+        OptimizerSettings {
+            tolerance_x: 1e-4,
+            tolerance_range: 1e-4,
+            max_evaluations: 2000,
+            max_restarts: 4,
+            initial_size: 0.25,
+        }
+    }
+}
+
+/// A swing and its range.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Point {
+    pub undercut: f64,
+    pub swing_angle: f64,
+    pub range: f64,
+}
+
+/// Where the search stands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    Running,
+    Converged,
+    /// Stopped by `max_evaluations` before converging.
+    OutOfEvaluations,
+}
+
+/// An incremental search for the maximum range.
+#[derive(Clone, Debug)]
+pub struct Optimizer {
+    objective: Objective,
+    max_evaluations: u32,
+    search: NelderMead<2, 3>,
+    status: Status,
+}
+
+/// The range as a cost over scaled (E, ψ), counting the flights it flies.
+#[derive(Clone, Copy, Debug)]
+struct Objective {
+    scene: Scene,
+    options: FlightOptions,
+    evaluations: u32,
+}
+
+impl Objective {
+    fn cost(&mut self, u: &nelder_mead::Point<2>) -> f64 {
+        let undercut = u[0] * UNDERCUT_SCALE;
+        let swing_angle = u[1] * SWING_ANGLE_SCALE;
+        if undercut.abs() >= self.scene.reach() || swing_angle.abs() > MAX_SWING_ANGLE {
+            return f64::INFINITY;
+        }
+        self.evaluations += 1;
+        let range = model::range(&self.scene.with_swing(undercut, swing_angle), self.options);
+        if range.is_finite() {
+            -range
+        } else {
+            f64::INFINITY
+        }
+    }
+}
+
+impl Optimizer {
+    /// Starts a search at `start` = (E, ψ), e.g. the last optimum (warm
+    /// start) or the scene's own swing, flying each swing as precisely as
+    /// `options` says (normally `Purpose::Optimizer`). The scene must be valid.
+    pub fn new(
+        scene: &Scene,
+        start: (f64, f64),
+        options: impl Into<FlightOptions>,
+        settings: OptimizerSettings,
+    ) -> Optimizer {
+        let mut objective = Objective {
+            scene: *scene,
+            options: options.into(),
+            evaluations: 0,
+        };
+        let limit = scene.reach();
+        let start = nelder_mead::Point::<2>::new(
+            start.0.clamp(-0.99 * limit, 0.99 * limit) / UNDERCUT_SCALE,
+            start.1.clamp(-MAX_SWING_ANGLE, MAX_SWING_ANGLE) / SWING_ANGLE_SCALE,
+        );
+        let search = NelderMead::new(
+            start,
+            nelder_mead::Settings {
+                tolerance_x: settings.tolerance_x,
+                tolerance_cost: settings.tolerance_range,
+                max_restarts: settings.max_restarts,
+                initial_size: settings.initial_size,
+            },
+            &mut |u| objective.cost(u),
+        );
+        Optimizer {
+            objective,
+            max_evaluations: settings.max_evaluations,
+            search,
+            status: Status::Running,
+        }
+    }
+
+    /// One Nelder–Mead iteration (reflect, expand, contract or shrink:
+    /// one to four range evaluations), or a restart once converged.
+    pub fn step(&mut self) -> Status {
+        if self.status != Status::Running {
+            return self.status;
+        }
+        if self.objective.evaluations >= self.max_evaluations {
+            self.status = Status::OutOfEvaluations;
+            return self.status;
+        }
+        let objective = &mut self.objective;
+        if self.search.step(&mut |u| objective.cost(u)) == nelder_mead::Status::Converged {
+            self.status = Status::Converged;
+        }
+        self.status
+    }
+
+    /// Steps until converged, or until `stop()` says so (then `None`).
+    pub fn run(&mut self, mut stop: impl FnMut() -> bool) -> Option<Point> {
+        while self.step() == Status::Running {
+            if stop() {
+                return None;
+            }
+        }
+        Some(self.best())
+    }
+
+    /// The best swing found so far.
+    pub fn best(&self) -> Point {
+        let v = self.search.best();
+        Point {
+            undercut: v.point[0] * UNDERCUT_SCALE,
+            swing_angle: v.point[1] * SWING_ANGLE_SCALE,
+            range: -v.cost,
+        }
+    }
+
+    pub fn evaluations(&self) -> u32 {
+        self.objective.evaluations
+    }
+
+    pub fn status(&self) -> Status {
+        self.status
+    }
+}
+
+/// The optimum of a finished search.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Optimum {
+    pub undercut: f64,
+    pub swing_angle: f64,
+    pub range: f64,
+    pub evaluations: u32,
+    pub converged: bool,
+}
+
+/// Runs a search to the end from the scene's own (E, ψ).
+pub fn optimize(scene: &Scene, settings: OptimizerSettings) -> Optimum {
+    optimize_from(scene, (scene.bat.undercut, scene.bat.swing_angle), settings)
+}
+
+/// Runs a search to the end from `start`.
+pub fn optimize_from(scene: &Scene, start: (f64, f64), settings: OptimizerSettings) -> Optimum {
+    let mut optimizer = Optimizer::new(scene, start, Purpose::Optimizer, settings);
+    let best = optimizer.run(|| false).unwrap_or_else(|| optimizer.best());
+    Optimum {
+        undercut: best.undercut,
+        swing_angle: best.swing_angle,
+        range: best.range,
+        evaluations: optimizer.evaluations(),
+        converged: optimizer.status() == Status::Converged,
+    }
+}

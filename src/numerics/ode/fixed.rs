@@ -1,0 +1,68 @@
+//! Fixed-step RK4: the benchmark's comparison for the adaptive integrator.
+
+use super::{Control, DenseStep, Outcome, State, Stats};
+
+/// The classical fixed-step Runge–Kutta method (4th order, four
+/// evaluations a step), with a cubic Hermite continuous extension: the
+/// benchmark's comparison for [`integrate`], with the same observer protocol.
+/// The last step is shortened to end on `t_end`.
+pub fn integrate_fixed<const N: usize, F, O>(
+    mut f: F,
+    t0: f64,
+    y0: State<N>,
+    t_end: f64,
+    step: f64,
+    max_steps: u32,
+    mut observe: O,
+) -> (Outcome, Stats)
+where
+    F: FnMut(f64, &State<N>) -> State<N>,
+    O: FnMut(&DenseStep<N>) -> Control,
+{
+    let mut stats = Stats::default();
+    let (mut t, mut y) = (t0, y0);
+    let mut k1 = f(t, &y);
+    stats.evaluations += 1;
+    loop {
+        if stats.accepted >= max_steps {
+            return (Outcome::StepLimit, stats);
+        }
+        let h = step.min(t_end - t);
+        if h <= 16.0 * f64::EPSILON * t.abs().max(1.0) {
+            return (Outcome::ReachedEnd, stats);
+        }
+        let k2 = f(t + 0.5 * h, &(y + k1 * (0.5 * h)));
+        let k3 = f(t + 0.5 * h, &(y + k2 * (0.5 * h)));
+        let k4 = f(t + h, &(y + k3 * h));
+        let y1 = y + (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0);
+        // The next step's first stage, and the Hermite extension's end slope.
+        let k_end = f(t + h, &y1);
+        stats.evaluations += 4;
+        stats.accepted += 1;
+        let diff = y1 - y;
+        let c3 = k1 * h - diff;
+        let c4 = diff - k_end * h - c3;
+        let dense = DenseStep {
+            t0: t,
+            t1: t + h,
+            y0: y,
+            y1,
+            inverse_h: 1.0 / h,
+            coefficients: [diff, c3, c4, State::<N>::zeros()],
+        };
+        match observe(&dense) {
+            Control::Stop => return (Outcome::Stopped, stats),
+            Control::RestartAt(t_restart) if t_restart < dense.t1 => {
+                t = t_restart.max(dense.t0);
+                y = dense.at(t);
+                k1 = f(t, &y);
+                stats.evaluations += 1;
+            }
+            _ => {
+                t = dense.t1;
+                y = y1;
+                k1 = k_end;
+            }
+        }
+    }
+}

@@ -1,4 +1,0 @@
-//! Numerical machinery: the integrator and the optimiser.
-
-pub mod ode;
-pub mod optimize;
