@@ -57,21 +57,22 @@ impl Purpose {
 
     /// The loosest tolerance that keeps the range error well inside the
     /// budget, from `homerun bench` (Table II fastball; errors against
-    /// Purpose::Reference):
+    /// Purpose::Reference). What each costs is in the bench's tables and the
+    /// README, not here, where it would go stale.
     pub fn tolerance(self) -> Tolerance {
         match self {
-            // 5e-8 m, 20× inside the budget, for ~25 µs: one solve per
-            // keystroke can afford it.
+            // 5e-8 m, 20× inside the budget: one solve per keystroke can
+            // afford it.
             Purpose::Readout => Tolerance::uniform(1e-10),
             // ≤ 4e-6 m near the optimum, inside TolFun/10; 1e-7 gives 3e-5 m
             // (over it). The optima it finds equal those at 1e-10 to 1e-7 m in
-            // E and 2e-6 rad in ψ, at ~1.7 ms of CPU per Table II pitch.
+            // E and 2e-6 rad in ψ.
             Purpose::Optimizer => Tolerance::uniform(1e-8),
             // Worst of 64×64 Fig. 7 cells: 0.0054 m, 100× inside a quarter
             // colour step; 1e-4 leaves under 3× (0.23 m) to save ~10 % of time.
             Purpose::Surface => Tolerance::uniform(1e-5),
             // ≤ 5e-5 m at every one of 300 points read off the dense output
-            // (Table II): far inside a braille dot, for < 10 µs a drawing.
+            // (Table II): far inside a braille dot.
             Purpose::Plot => Tolerance::uniform(1e-6),
             Purpose::Reference => Tolerance::uniform(1e-13),
         }

@@ -2,7 +2,8 @@
 //! after Stronge, solved as functions of the normal impulse p.
 //!
 //! Sign conventions (derived once, from first principles, and checked against
-//! Table II; see DESIGN.md):
+//! all nine launch values of Table II; the README's errata list the paper's
+//! misprints they settle):
 //! - flight frame x toward centre field, y up; spins are ẑ components
 //!   (counter-clockwise positive), so batted backspin and pitched topspin are
 //!   positive;
@@ -98,7 +99,7 @@ impl Impact {
     pub fn new(scene: &Scene) -> Impact {
         let ball = scene.ball;
         let bat = scene.bat;
-        let contact_distance = ball.radius + bat.radius;
+        let contact_distance = scene.reach();
         // Eq. (1); the clamp only guards rounding at a validated |E| < r_b + r_B.
         let normal_angle = (bat.undercut / contact_distance).clamp(-1.0, 1.0).asin();
         let descent_angle = pitch::descent_angle(scene.pitch.speed, scene.environment.gravity);
