@@ -85,9 +85,11 @@ impl Objective {
             return f64::INFINITY;
         }
         self.evaluations += 1;
-        let range = model::range(&self.scene.with_swing(undercut, swing_angle), self.options);
-        if range.is_finite() {
-            -range
+        let flight =
+            model::simulate(&self.scene.with_swing(undercut, swing_angle), self.options).flight;
+        // A ball that never lands has no range: that swing is infeasible.
+        if flight.landed && flight.range.is_finite() {
+            -flight.range
         } else {
             f64::INFINITY
         }

@@ -171,57 +171,70 @@ pub const KEYS: &[Key] = &[
         0.01,
         bat.friction
     ),
+    // From well below any bat (a 0.9 kg bat weighs ~0.6–0.8 kg at its sweet
+    // spot) to a sledgehammer; away from 0, where Eq. (12)'s inverse inertia
+    // overflows.
     key!(
         "bat.effective_mass",
         "M_B",
         "kg",
         "bat mass equivalent at the centre of percussion",
-        Bounds::positive(10.0),
+        Bounds::closed(0.05, 10.0),
         0.05,
         bat.effective_mass
     ),
+    // A broomstick (1 cm) to a log; away from 0, where the bat's moment of
+    // inertia underflows.
     key!(
         "bat.radius",
         "r_B",
         "m",
         "bat barrel radius",
-        Bounds::positive(0.2),
+        Bounds::closed(0.01, 0.2),
         0.001,
         bat.radius
     ),
+    // Also tied to r_B in `validate`: between 0.2·r_B (all mass at the core)
+    // and r_B (a thin tube), as for any body of revolution of that radius.
     key!(
         "bat.gyration_radius",
         "k_B2",
         "m",
         "bat radius of gyration about its axis",
-        Bounds::positive(0.2),
+        Bounds::closed(0.001, 0.2),
         0.001,
         bat.gyration_radius
     ),
+    // Also tied to r_b in `validate`: the model ignores buoyancy and the air
+    // a ball drags along, fair only for a ball far denser than air.
     key!(
         "ball.mass",
         "M_b",
         "kg",
         "ball mass",
-        Bounds::positive(10.0),
+        Bounds::closed(0.001, 10.0),
         0.005,
         ball.mass
     ),
+    // A marble (1 cm) to a volleyball-and-more (20 cm); away from 0, where
+    // the ball's moment of inertia underflows.
     key!(
         "ball.radius",
         "r_b",
         "m",
         "ball radius",
-        Bounds::positive(0.2),
+        Bounds::closed(0.01, 0.2),
         0.001,
         ball.radius
     ),
+    // Also tied to r_b in `validate`: between 0.2·r_b (a heavy core) and
+    // √(2/3)·r_b (a thin shell, the most a sphere's mass can spread).
     key!(
         "ball.gyration_radius",
         "k_b",
         "m",
         "ball radius of gyration",
-        Bounds::positive(0.2),
+        Bounds::closed(0.001, 0.2),
         0.001,
         ball.gyration_radius
     ),
@@ -279,7 +292,7 @@ pub const DRAG_KEY: &str = "model.drag";
 /// what would have been accepted.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum InputError {
-    #[error("{key} = {value}: must be a finite number in {bounds}{}", unit_suffix(.unit))]
+    #[error("{key} = {}: must be a finite number in {bounds}{}", number_text(*.value), unit_suffix(.unit))]
     OutOfRange {
         key: &'static str,
         value: f64,
@@ -304,6 +317,29 @@ pub enum InputError {
     NotANumber { key: String, text: String },
     #[error(transparent)]
     UnknownModel(#[from] UnknownModel),
+    #[error(
+        "ball.mass = {mass} kg: with ball.radius = {radius} m the ball is {density:.3} kg/m³ on average; the model ignores buoyancy and needs at least {MIN_BALL_DENSITY} kg/m³ (a ping-pong ball is ~80), so ball.mass ≥ {minimum:.4} kg"
+    )]
+    BallTooLight {
+        mass: f64,
+        radius: f64,
+        density: f64,
+        minimum: f64,
+    },
+    #[error(
+        "{key} = {value} m: must be in [{min:.4}, {max:.4}] m, from {} to {} of {radius_key} = {radius} m",
+        GYRATION_CORE, .shape
+    )]
+    GyrationRadius {
+        key: &'static str,
+        value: f64,
+        radius_key: &'static str,
+        radius: f64,
+        min: f64,
+        max: f64,
+        /// The largest ratio, in words.
+        shape: &'static str,
+    },
 }
 
 impl Scene {
@@ -357,6 +393,28 @@ impl Scene {
                 });
             }
         }
+        let density =
+            self.ball.mass / (4.0 / 3.0 * std::f64::consts::PI * self.ball.radius.powi(3));
+        if density < MIN_BALL_DENSITY {
+            return Err(InputError::BallTooLight {
+                mass: self.ball.mass,
+                radius: self.ball.radius,
+                density,
+                minimum: self.ball.mass * MIN_BALL_DENSITY / density,
+            });
+        }
+        check_gyration(
+            "ball.gyration_radius",
+            self.ball.gyration_radius,
+            ("ball.radius", self.ball.radius),
+            (SHELL_GYRATION, "√(2/3) (a thin shell)"),
+        )?;
+        check_gyration(
+            "bat.gyration_radius",
+            self.bat.gyration_radius,
+            ("bat.radius", self.bat.radius),
+            (1.0, "1 (a thin tube)"),
+        )?;
         let limit = self.reach();
         if self.bat.undercut.abs() >= limit {
             return Err(InputError::Miss {
@@ -376,6 +434,40 @@ impl Scene {
     }
 }
 
+/// The lightest ball the model is fair to (kg/m³, mean density): buoyancy,
+/// which it ignores, is then at most ρ/50 of the weight (2.5 % at sea
+/// level). A ping-pong ball is ~80 kg/m³, a baseball ~700.
+pub const MIN_BALL_DENSITY: f64 = 50.0;
+/// The smallest radius of gyration accepted, as a fraction of the radius:
+/// a body with nearly all its mass at the centre.
+const GYRATION_CORE: f64 = 0.2;
+/// A thin spherical shell's k/r = √(2/3): no sphere spreads its mass further.
+const SHELL_GYRATION: f64 = 0.816_496_580_927_726;
+
+/// A radius of gyration between `GYRATION_CORE` and `max_ratio` times its
+/// body's radius.
+fn check_gyration(
+    key: &'static str,
+    value: f64,
+    (radius_key, radius): (&'static str, f64),
+    (max_ratio, shape): (f64, &'static str),
+) -> Result<(), InputError> {
+    let (min, max) = (GYRATION_CORE * radius, max_ratio * radius);
+    if (min..=max).contains(&value) {
+        Ok(())
+    } else {
+        Err(InputError::GyrationRadius {
+            key,
+            value,
+            radius_key,
+            radius,
+            min,
+            max,
+            shape,
+        })
+    }
+}
+
 /// " (did you mean `bat.speed`?)" for a near miss of a known key.
 fn suggestion(key: &str) -> String {
     KEYS.iter()
@@ -386,6 +478,17 @@ fn suggestion(key: &str) -> String {
         .filter(|(score, _)| *score > 0.85)
         .map(|(_, name)| format!(" (did you mean `{name}`?)"))
         .unwrap_or_default()
+}
+
+/// A number as typed when that is short (0.09, 1000, NaN), in scientific
+/// notation when Rust's plain form would run to hundreds of digits (1e-200).
+pub fn number_text(value: f64) -> String {
+    let plain = value.to_string();
+    if plain.len() <= 16 {
+        plain
+    } else {
+        format!("{value:e}")
+    }
 }
 
 fn unit_suffix(unit: &str) -> String {
@@ -426,5 +529,57 @@ mod tests {
         let mut scene = Scene::default();
         scene.bat.undercut = 0.0716;
         assert!(matches!(scene.validate(), Err(InputError::Miss { .. })));
+    }
+
+    #[test]
+    fn tiny_values_are_refused_in_short_form() {
+        let mut scene = Scene::default();
+        scene.ball.mass = 5e-324;
+        let message = scene.validate().unwrap_err().to_string();
+        assert_eq!(
+            message,
+            "ball.mass = 5e-324: must be a finite number in [0.001, 10] kg"
+        );
+    }
+
+    #[test]
+    fn a_ball_lighter_than_the_model_allows_is_refused_with_its_minimum() {
+        // A baseball-sized ball of 1 g is 4.9 kg/m³: a balloon.
+        let mut scene = Scene::default();
+        scene.ball.mass = 0.001;
+        let Err(InputError::BallTooLight { minimum, .. }) = scene.validate() else {
+            panic!("accepted a balloon");
+        };
+        // The minimum itself is accepted: 50 kg/m³ × (4/3)π(0.0366 m)³.
+        let expected = MIN_BALL_DENSITY * 4.0 / 3.0 * std::f64::consts::PI * 0.0366f64.powi(3);
+        assert!(
+            (minimum - expected).abs() < 1e-12,
+            "{minimum} vs {expected}"
+        );
+        scene.ball.mass = minimum * (1.0 + 1e-12);
+        scene.validate().unwrap();
+    }
+
+    #[test]
+    fn radii_of_gyration_stay_within_their_bodies() {
+        // A thin shell's k = √(2/3)·r is the largest a sphere can have.
+        let mut scene = Scene::default();
+        scene.ball.gyration_radius = 0.817 * scene.ball.radius;
+        assert!(matches!(
+            scene.validate(),
+            Err(InputError::GyrationRadius {
+                key: "ball.gyration_radius",
+                ..
+            })
+        ));
+        scene.ball.gyration_radius = 0.816 * scene.ball.radius;
+        scene.validate().unwrap();
+        // A bat's k about its own axis is at most its radius (a thin tube).
+        let mut scene = Scene::default();
+        scene.bat.gyration_radius = 1.01 * scene.bat.radius;
+        let message = scene.validate().unwrap_err().to_string();
+        assert!(message.starts_with("bat.gyration_radius = "), "{message}");
+        scene.bat.gyration_radius = 0.19 * scene.bat.radius;
+        assert!(scene.validate().is_err());
     }
 }

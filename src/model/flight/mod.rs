@@ -28,6 +28,13 @@ fn velocity(state: &State<4>) -> Vector2<f64> {
 /// that no input (a ball held up by lift) can run forever.
 pub const MAX_FLIGHT_TIME: f64 = 600.0;
 
+/// A flight is followed for at most this many times the longest it could
+/// stay up in a vacuum (launched straight up at its speed): drag only
+/// shortens a flight, and lift that keeps a ball up ten times longer makes
+/// it hover or loop, which is no batted ball. Bounds the work by the scene's
+/// own time scale rather than by [`MAX_FLIGHT_TIME`] alone.
+const VACUUM_TIMES: f64 = 10.0;
+
 /// The forces on the ball in flight, ready to evaluate (constant spin, as the
 /// paper assumes: spin decays by a few per cent over a flight).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -150,6 +157,16 @@ pub struct Launch {
 }
 
 impl Launch {
+    /// How long the flight is followed before it counts as not landing:
+    /// [`VACUUM_TIMES`] the vacuum flight time of this speed straight up
+    /// from this height, at least a second and at most [`MAX_FLIGHT_TIME`].
+    pub fn time_limit(&self, gravity: f64) -> f64 {
+        let speed = self.velocity.norm();
+        let height = self.position.y.max(0.0);
+        let vacuum = (speed + (speed * speed + 2.0 * gravity * height).sqrt()) / gravity;
+        (VACUUM_TIMES * vacuum).clamp(1.0, MAX_FLIGHT_TIME)
+    }
+
     fn state(&self) -> State<4> {
         State::<4>::new(
             self.position.x,
@@ -186,8 +203,9 @@ pub struct FlightSummary {
     pub landing_speed: f64,
     /// Angle of the velocity below the horizontal at landing (rad).
     pub landing_angle: f64,
-    /// False when the ball was still in the air after [`MAX_FLIGHT_TIME`]
-    /// (or the step limit); the other fields then describe the last point.
+    /// False when the ball was still in the air at its time limit
+    /// ([`Launch::time_limit`]) or the step limit; the other fields then
+    /// describe the last point, and `range` is no range.
     pub landed: bool,
     pub stats: Stats,
 }
@@ -246,19 +264,14 @@ fn fly_with(
         }
     };
     let observe = |step: &DenseStep<4>| events.observe(step, &mut watch);
+    let time_limit = launch.time_limit(flight.gravity);
     let (outcome, stats) = match stepper {
         Stepper::Adaptive(settings) => {
-            ode::integrate(rhs, 0.0, start, MAX_FLIGHT_TIME, &settings, observe)
+            ode::integrate(rhs, 0.0, start, time_limit, &settings, observe)
         }
-        Stepper::Fixed(step) => ode::integrate_fixed(
-            rhs,
-            0.0,
-            start,
-            MAX_FLIGHT_TIME,
-            step,
-            ode::MAX_STEPS,
-            observe,
-        ),
+        Stepper::Fixed(step) => {
+            ode::integrate_fixed(rhs, 0.0, start, time_limit, step, ode::MAX_STEPS, observe)
+        }
     };
     let landed = outcome == Outcome::Stopped;
     let (time, state) = events.landing.unwrap_or(events.last);
@@ -328,4 +341,46 @@ pub fn trajectory(
         }
     });
     (summary, points)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_time_limit_is_ten_vacuum_flights_straight_up() {
+        // 45 m/s from 1 m at g = 9.81: (45 + √(45² + 2·9.81·1))/9.81 = 9.196 s.
+        let launch = Launch {
+            position: Vector2::new(0.0, 1.0),
+            velocity: Vector2::new(36.0, 27.0),
+        };
+        let vacuum = (45.0 + (45.0f64.powi(2) + 2.0 * 9.81).sqrt()) / 9.81;
+        assert!((launch.time_limit(9.81) - 10.0 * vacuum).abs() < 1e-12);
+        // Never past MAX_FLIGHT_TIME, never under a second.
+        assert_eq!(launch.time_limit(1e-6), MAX_FLIGHT_TIME);
+        let resting = Launch {
+            position: Vector2::new(0.0, 0.0),
+            velocity: Vector2::new(0.0, 0.0),
+        };
+        assert_eq!(resting.time_limit(9.81), 1.0);
+    }
+
+    #[test]
+    fn a_hovering_ball_is_not_landed_and_stops_at_its_limit() {
+        // At a thousandth of Earth's gravity a fastball climbs for minutes.
+        let mut scene = Scene::default();
+        scene.environment.gravity = 1e-3;
+        let launch = Launch {
+            position: Vector2::new(0.0, 1.0),
+            velocity: Vector2::new(40.0, 20.0),
+        };
+        let flight = Flight::new(&scene, 200.0);
+        let options = FlightOptions {
+            tolerance: Tolerance::uniform(1e-8),
+            stop_at_kinks: true,
+        };
+        let summary = fly(&flight, &launch, &options);
+        assert!(!summary.landed);
+        assert_eq!(summary.flight_time, launch.time_limit(1e-3));
+    }
 }
