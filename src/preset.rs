@@ -260,10 +260,13 @@ impl Preset {
     }
 }
 
+/// The error for a key that is not an input. A quoted top-level key that
+/// names one (`"bat.speed" = 3`, not a `[bat]` table) is shown quoted, as
+/// written.
 fn unknown(key: &str) -> InputError {
     match Scene::key(key) {
         Err(e) => e,
-        Ok(_) => unreachable!("a section name is never a full key"),
+        Ok(_) => unknown(&format!("\"{key}\"")),
     }
 }
 
@@ -398,5 +401,11 @@ mod tests {
             preset.save(dir.path()),
             Err(PresetError::BadName(_))
         ));
+    }
+
+    #[test]
+    fn a_quoted_top_level_key_naming_an_input_is_an_error_not_a_panic() {
+        let e = Preset::parse("\"bat.speed\" = 3", "x", "x.toml", Source::Bundled).unwrap_err();
+        assert!(e.to_string().contains("unknown key `\"bat.speed\"`"), "{e}");
     }
 }
