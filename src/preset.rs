@@ -93,7 +93,7 @@ impl Preset {
             text.parse()
                 .map_err(|e: toml::de::Error| PresetError::Syntax {
                     path: origin.to_owned(),
-                    message: e.to_string().trim().replace('\n', " "),
+                    message: syntax_message(&e),
                 })?;
         let input = |source| PresetError::Input {
             path: origin.to_owned(),
@@ -101,8 +101,8 @@ impl Preset {
         };
         let wrong = |key: &str, value: &toml::Value, expected| PresetError::WrongType {
             path: origin.to_owned(),
-            key: key.to_owned(),
-            value: value.to_string(),
+            key: escape_for_terminal(key),
+            value: escape_for_terminal(&value.to_string()),
             expected,
         };
         let mut scene = Scene::default();
@@ -118,7 +118,7 @@ impl Preset {
                 continue;
             }
             let Some(entries) = value.as_table() else {
-                return Err(input(unknown(section)));
+                return Err(input(unknown(&escape_for_terminal(section))));
             };
             for (name, value) in entries {
                 let key = format!("{section}.{name}");
@@ -126,7 +126,14 @@ impl Preset {
                     let text = value.as_str().ok_or_else(|| {
                         wrong(&key, value, "expected a drag model name in quotes")
                     })?;
-                    scene.drag = text.parse().map_err(input)?;
+                    // A name too long to be one is shown cut (the error
+                    // quotes it, escaping control characters).
+                    let shown: String = if text.chars().count() > 80 {
+                        text.chars().take(79).chain(['…']).collect()
+                    } else {
+                        text.to_owned()
+                    };
+                    scene.drag = shown.parse().map_err(input)?;
                     continue;
                 }
                 let number = match value {
@@ -137,7 +144,10 @@ impl Preset {
                 match key.as_str() {
                     FENCE_DISTANCE => fence_distance = Some(number),
                     FENCE_HEIGHT => fence_height = Some(number),
-                    _ => scene.set(&key, number).map_err(input)?,
+                    _ => scene.set(&key, number).map_err(|e| {
+                        let shown = escape_for_terminal(&key);
+                        input(if shown == key { e } else { unknown(&shown) })
+                    })?,
                 }
             }
         }
@@ -176,7 +186,7 @@ impl Preset {
 
     /// Reads a preset file.
     pub fn read(path: &Path) -> Result<Preset, PresetError> {
-        let origin = path.display().to_string();
+        let origin = shown(path);
         let text = fs::read_to_string(path).map_err(|source| PresetError::Io {
             path: origin.clone(),
             source,
@@ -260,6 +270,23 @@ impl Preset {
     }
 }
 
+/// A TOML error on one line, as the toml crate words it, with the quoted
+/// source line escaped and cut (a hostile file may hold a megabyte on one
+/// line, or terminal escapes), and the caret line dropped if it was cut.
+fn syntax_message(error: &toml::de::Error) -> String {
+    error
+        .to_string()
+        .trim()
+        .split('\n')
+        .filter_map(|line| {
+            let cut = escape_cut(line, 200);
+            let pointer = |c| matches!(c, ' ' | '|' | '^' | '…');
+            (cut == line || !cut.chars().all(pointer)).then_some(cut)
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
 /// The error for a key that is not an input. A quoted top-level key that
 /// names one (`"bat.speed" = 3`, not a `[bat]` table) is shown quoted, as
 /// written.
@@ -279,8 +306,58 @@ fn check_name(name: &str) -> Result<(), PresetError> {
     if ok {
         Ok(())
     } else {
-        Err(PresetError::BadName(name.to_owned()))
+        Err(PresetError::BadName(escape_for_terminal(name)))
     }
+}
+
+/// `text` made safe to print on one terminal line: control characters (ESC,
+/// newline, C1 codes such as U+009B), bidirectional overrides and other
+/// invisible format characters are written as `\u{1b}`-style escapes, and
+/// anything longer than 80 characters is cut with "…".
+pub fn escape_for_terminal(text: &str) -> String {
+    escape_cut(text, 80)
+}
+
+/// Escapes like [`escape_for_terminal`], cutting at `max` characters (the
+/// "…" included), never inside an escape.
+fn escape_cut(text: &str, max: usize) -> String {
+    let mut out = String::new();
+    let mut count = 0;
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
+        let piece = if needs_escape(c) {
+            c.escape_unicode().to_string()
+        } else {
+            c.to_string()
+        };
+        let len = piece.chars().count();
+        let last = chars.peek().is_none();
+        // Room for this piece, and for the "…" if more follows.
+        if max.saturating_sub(count) < len + usize::from(!last) {
+            out.push('…');
+            return out;
+        }
+        out += &piece;
+        count += len;
+    }
+    out
+}
+
+fn needs_escape(c: char) -> bool {
+    c.is_control()
+        || matches!(
+            c,
+            '\u{61c}'
+                | '\u{200b}'..='\u{200f}'
+                | '\u{2028}'..='\u{202e}'
+                | '\u{2060}'..='\u{2069}'
+                | '\u{feff}'
+        )
+}
+
+/// A path as messages show it: escaped, never cut (the user needs all of it).
+fn shown(path: &Path) -> String {
+    escape_cut(&path.display().to_string(), usize::MAX)
 }
 
 /// The user's preset folder: `$XDG_CONFIG_HOME/homerun/presets` (or the
@@ -339,14 +416,14 @@ pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
         return Preset::parse(text, name, &format!("presets/{name}.toml"), Source::Bundled);
     }
     Err(PresetError::NotFound {
-        name: spec.to_owned(),
+        name: escape_for_terminal(spec),
         bundled: BUNDLED
             .iter()
             .map(|(n, _)| *n)
             .collect::<Vec<_>>()
             .join(", "),
         user: dir
-            .map(|d| format!("; or a file in {}", d.display()))
+            .map(|d| format!("; or a file in {}", shown(d)))
             .unwrap_or_default(),
     })
 }
@@ -401,6 +478,23 @@ mod tests {
             preset.save(dir.path()),
             Err(PresetError::BadName(_))
         ));
+    }
+
+    #[test]
+    fn escape_for_terminal_escapes_control_characters_and_cuts() {
+        assert_eq!(escape_for_terminal("fastball.toml"), "fastball.toml");
+        assert_eq!(
+            escape_for_terminal("a\x1b[2J\nb\u{9b}c\u{202e}d\té"),
+            "a\\u{1b}[2J\\u{a}b\\u{9b}c\\u{202e}d\\u{9}é"
+        );
+        let long = "x".repeat(81);
+        let cut = escape_for_terminal(&long);
+        assert_eq!(cut.chars().count(), 80);
+        assert!(cut.ends_with("x…"), "{cut}");
+        assert_eq!(escape_for_terminal(&long[..80]), long[..80]);
+        // Never cut inside an escape.
+        let cut = escape_for_terminal(&format!("{}\x1b", "x".repeat(77)));
+        assert_eq!(cut, format!("{}…", "x".repeat(77)));
     }
 
     #[test]
