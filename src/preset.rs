@@ -7,7 +7,7 @@
 //! `--presets-dir`.
 
 use std::fs;
-use std::io::Write;
+use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 
 use crate::model::aero::DragModel;
@@ -66,7 +66,104 @@ pub enum PresetError {
     },
     #[error("`{0}` is not a usable preset name: use letters, digits, '-' and '_'")]
     BadName(String),
+    /// A FIFO, a device, a folder or a socket where a preset file should be:
+    /// refused without reading it (a FIFO would block, `/dev/zero` never ends).
+    #[error("{path}: not a regular file ({kind}{})", through(.link))]
+    NotAFile {
+        path: String,
+        kind: FileKind,
+        /// Where the symlink at `path` leads, if it is one.
+        link: Option<String>,
+    },
+    /// Larger than [`MAX_BYTES`]: refused before parsing.
+    #[error("{path}: {}, presets are at most 1 MiB", size_text(*.size))]
+    TooBig {
+        path: String,
+        /// The size, if known (`None`: it grew past the cap while read).
+        size: Option<u64>,
+    },
+    #[error("{path}: a symlink loop (too many levels of symbolic links)")]
+    SymlinkLoop { path: String },
+    #[error("{path}: a symlink to {target}, which does not exist")]
+    DanglingLink { path: String, target: String },
+    #[error("{path}: not a text file (a NUL byte at byte {offset})")]
+    Binary { path: String, offset: usize },
+    #[error("{path}: not UTF-8 text (an invalid byte at byte {offset})")]
+    NotUtf8 { path: String, offset: usize },
 }
+
+/// What a path is, for messages: "not a regular file (a FIFO)".
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileKind {
+    File,
+    Folder,
+    Fifo,
+    CharDevice,
+    BlockDevice,
+    Socket,
+    Other,
+}
+
+impl FileKind {
+    /// The kind of `file_type` (of metadata that followed symlinks).
+    pub fn of(file_type: fs::FileType) -> FileKind {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            if file_type.is_fifo() {
+                return FileKind::Fifo;
+            }
+            if file_type.is_char_device() {
+                return FileKind::CharDevice;
+            }
+            if file_type.is_block_device() {
+                return FileKind::BlockDevice;
+            }
+            if file_type.is_socket() {
+                return FileKind::Socket;
+            }
+        }
+        if file_type.is_file() {
+            FileKind::File
+        } else if file_type.is_dir() {
+            FileKind::Folder
+        } else {
+            FileKind::Other
+        }
+    }
+}
+
+impl std::fmt::Display for FileKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            FileKind::File => "a regular file",
+            FileKind::Folder => "a folder",
+            FileKind::Fifo => "a FIFO",
+            FileKind::CharDevice => "a character device",
+            FileKind::BlockDevice => "a block device",
+            FileKind::Socket => "a socket",
+            FileKind::Other => "an unknown kind of file",
+        })
+    }
+}
+
+fn through(link: &Option<String>) -> String {
+    link.as_ref()
+        .map(|target| format!(", through a symlink to {target}"))
+        .unwrap_or_default()
+}
+
+fn size_text(size: Option<u64>) -> String {
+    match size {
+        Some(bytes) if bytes >= 10 << 20 => format!("{} MiB", bytes >> 20),
+        Some(bytes) => format!("{bytes} bytes"),
+        None => "more than 1 MiB".to_owned(),
+    }
+}
+
+/// The largest preset file read, in bytes: a preset is a few hundred bytes,
+/// and anything larger is refused before it costs memory or parsing time.
+pub const MAX_BYTES: u64 = 1 << 20;
 
 /// The presets shipped with homerun: (name, TOML text).
 pub const BUNDLED: &[(&str, &str)] = &[
@@ -184,13 +281,10 @@ impl Preset {
         })
     }
 
-    /// Reads a preset file.
+    /// Reads a preset file, safely (see [`read_text`]).
     pub fn read(path: &Path) -> Result<Preset, PresetError> {
         let origin = shown(path);
-        let text = fs::read_to_string(path).map_err(|source| PresetError::Io {
-            path: origin.clone(),
-            source,
-        })?;
+        let text = read_text(path)?;
         let name = path
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
@@ -360,6 +454,125 @@ fn shown(path: &Path) -> String {
     escape_cut(&path.display().to_string(), usize::MAX)
 }
 
+/// Reads a preset file's text, safely whatever the path holds: symlinks are
+/// followed, anything but a regular file (a FIFO, a device such as
+/// `/dev/zero`, a folder, a socket) is refused from its metadata without
+/// being opened, the file is opened without blocking and checked again once
+/// open (it may have been swapped), at most [`MAX_BYTES`] + 1 bytes are read,
+/// and the text must be UTF-8 without NUL bytes. Every refusal is a
+/// [`PresetError`] naming the file.
+pub fn read_text(path: &Path) -> Result<String, PresetError> {
+    let name = shown(path);
+    let io = |source| PresetError::Io {
+        path: name.clone(),
+        source,
+    };
+    let metadata = fs::metadata(path).map_err(|e| stat_error(path, &name, e))?;
+    check_file(path, &name, &metadata)?;
+    let mut file = open_nonblocking(path).map_err(|e| stat_error(path, &name, e))?;
+    let metadata = file.metadata().map_err(io)?;
+    check_file(path, &name, &metadata)?;
+    let mut bytes = Vec::with_capacity(metadata.len() as usize + 1);
+    (&mut file)
+        .take(MAX_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > MAX_BYTES {
+        return Err(PresetError::TooBig {
+            path: name,
+            size: None,
+        });
+    }
+    if let Some(offset) = bytes.iter().position(|&b| b == 0) {
+        return Err(PresetError::Binary { path: name, offset });
+    }
+    String::from_utf8(bytes).map_err(|e| PresetError::NotUtf8 {
+        path: name,
+        offset: e.utf8_error().valid_up_to(),
+    })
+}
+
+/// Opens `path` for reading without ever blocking: `O_NONBLOCK` makes
+/// opening a FIFO return at once (and is harmless for a regular file), and
+/// `O_NOCTTY` keeps a terminal device from becoming ours.
+fn open_nonblocking(path: &Path) -> std::io::Result<fs::File> {
+    let mut options = fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK | libc::O_NOCTTY);
+    }
+    options.open(path)
+}
+
+/// Refuses anything but a regular file of at most [`MAX_BYTES`].
+fn check_file(path: &Path, name: &str, metadata: &fs::Metadata) -> Result<(), PresetError> {
+    if !metadata.is_file() {
+        let link = fs::symlink_metadata(path)
+            .is_ok_and(|m| m.file_type().is_symlink())
+            .then(|| {
+                fs::canonicalize(path)
+                    .or_else(|_| fs::read_link(path))
+                    .map_or_else(|_| "?".to_owned(), |target| shown(&target))
+            });
+        return Err(PresetError::NotAFile {
+            path: name.to_owned(),
+            kind: FileKind::of(metadata.file_type()),
+            link,
+        });
+    }
+    if metadata.len() > MAX_BYTES {
+        return Err(PresetError::TooBig {
+            path: name.to_owned(),
+            size: Some(metadata.len()),
+        });
+    }
+    Ok(())
+}
+
+/// The error for a path whose metadata cannot be read: a symlink loop and a
+/// dangling symlink are named as such.
+fn stat_error(path: &Path, name: &str, source: std::io::Error) -> PresetError {
+    #[cfg(unix)]
+    if source.raw_os_error() == Some(libc::ELOOP) {
+        return PresetError::SymlinkLoop {
+            path: name.to_owned(),
+        };
+    }
+    if source.kind() == std::io::ErrorKind::NotFound
+        && let Ok(target) = fs::read_link(path)
+    {
+        return PresetError::DanglingLink {
+            path: name.to_owned(),
+            target: shown(&target),
+        };
+    }
+    PresetError::Io {
+        path: name.to_owned(),
+        source,
+    }
+}
+
+/// The `*.toml` files in a presets folder (not hidden ones), sorted; none if
+/// the folder cannot be read.
+fn preset_files(dir: &Path) -> Vec<PathBuf> {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut paths: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            p.extension().is_some_and(|x| x == "toml")
+                && !p
+                    .file_name()
+                    .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+        })
+        .collect();
+    paths.sort();
+    paths
+}
+
 /// The user's preset folder: `$XDG_CONFIG_HOME/homerun/presets` (or the
 /// platform's config folder).
 pub fn user_dir() -> Option<PathBuf> {
@@ -377,30 +590,21 @@ pub fn bundled() -> Vec<Preset> {
         .collect()
 }
 
-/// Every preset available: bundled first, then each `*.toml` in `dir`. A
-/// broken file is returned as an error beside the others, not fatal.
+/// Every preset available: bundled first, then each `*.toml` in `dir`, each
+/// file read once with [`read_text`] (so nothing in the folder can block or
+/// flood it). A broken file is returned as an error beside the others, not
+/// fatal.
 pub fn list(dir: Option<&Path>) -> Vec<Result<Preset, PresetError>> {
     let mut all: Vec<_> = bundled().into_iter().map(Ok).collect();
-    if let Some(dir) = dir
-        && let Ok(entries) = fs::read_dir(dir)
-    {
-        let mut paths: Vec<PathBuf> = entries
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| {
-                p.extension().is_some_and(|x| x == "toml")
-                    && !p
-                        .file_name()
-                        .is_some_and(|n| n.to_string_lossy().starts_with('.'))
-            })
-            .collect();
-        paths.sort();
-        all.extend(paths.iter().map(|p| Preset::read(p)));
+    if let Some(dir) = dir {
+        all.extend(preset_files(dir).iter().map(|p| Preset::read(p)));
     }
     all
 }
 
 /// Finds a preset by name (user folder first, so a user can shadow a bundled
-/// one) or, if `spec` looks like a path, reads that file.
+/// one) or, if `spec` looks like a path, reads that file. Any file in `dir`
+/// with that name is read, so a broken one is reported rather than skipped.
 pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
     let as_path = Path::new(spec);
     if spec.ends_with(".toml") || spec.contains(std::path::MAIN_SEPARATOR) {
@@ -408,7 +612,7 @@ pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
     }
     if let Some(dir) = dir {
         let candidate = dir.join(format!("{spec}.toml"));
-        if candidate.is_file() {
+        if fs::symlink_metadata(&candidate).is_ok() {
             return Preset::read(&candidate);
         }
     }
@@ -495,6 +699,58 @@ mod tests {
         // Never cut inside an escape.
         let cut = escape_for_terminal(&format!("{}\x1b", "x".repeat(77)));
         assert_eq!(cut, format!("{}…", "x".repeat(77)));
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn read_text_refuses_what_is_not_a_small_text_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let at = |name: &str| dir.path().join(name);
+        assert!(matches!(
+            read_text(Path::new("/dev/zero")),
+            Err(PresetError::NotAFile {
+                kind: FileKind::CharDevice,
+                link: None,
+                ..
+            })
+        ));
+        assert!(matches!(
+            read_text(dir.path()),
+            Err(PresetError::NotAFile {
+                kind: FileKind::Folder,
+                ..
+            })
+        ));
+        std::os::unix::fs::symlink("/dev/zero", at("zero.toml")).unwrap();
+        let e = read_text(&at("zero.toml")).unwrap_err();
+        assert!(
+            e.to_string().ends_with(
+                "zero.toml: not a regular file (a character device, through a symlink to /dev/zero)"
+            ),
+            "{e}"
+        );
+        std::os::unix::fs::symlink(at("loop.toml"), at("loop.toml")).unwrap();
+        assert!(matches!(
+            read_text(&at("loop.toml")),
+            Err(PresetError::SymlinkLoop { .. })
+        ));
+        fs::write(at("big.toml"), vec![b'#'; MAX_BYTES as usize + 1]).unwrap();
+        assert!(matches!(
+            read_text(&at("big.toml")),
+            Err(PresetError::TooBig {
+                size: Some(1_048_577),
+                ..
+            })
+        ));
+        fs::write(at("nul.toml"), b"a = 1\0").unwrap();
+        assert!(matches!(
+            read_text(&at("nul.toml")),
+            Err(PresetError::Binary { offset: 5, .. })
+        ));
+        fs::write(at("ok.toml"), "a = 1\n").unwrap();
+        assert_eq!(read_text(&at("ok.toml")).unwrap(), "a = 1\n");
+        let e = read_text(&at("absent.toml")).unwrap_err();
+        assert!(matches!(e, PresetError::Io { .. }), "{e}");
     }
 
     #[test]
