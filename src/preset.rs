@@ -90,6 +90,9 @@ pub enum PresetError {
     Binary { path: String, offset: usize },
     #[error("{path}: not UTF-8 text (an invalid byte at byte {offset})")]
     NotUtf8 { path: String, offset: usize },
+    /// The presets folder exists but is not a folder.
+    #[error("{path}: not a folder ({kind}), so it cannot hold presets")]
+    NotAFolder { path: String, kind: FileKind },
 }
 
 /// What a path is, for messages: "not a regular file (a FIFO)".
@@ -554,11 +557,41 @@ fn stat_error(path: &Path, name: &str, source: std::io::Error) -> PresetError {
     }
 }
 
+/// Checks that a presets folder is usable: `Ok` if it is a folder or does
+/// not exist (a missing folder simply holds no presets), an error if it is
+/// something else (a file, a FIFO…) or cannot be looked at. Returns `dir`,
+/// to be used inline.
+pub fn check_dir(dir: Option<&Path>) -> Result<Option<&Path>, PresetError> {
+    let Some(path) = dir else {
+        return Ok(None);
+    };
+    let name = shown(path);
+    match fs::metadata(path) {
+        Ok(metadata) if metadata.is_dir() => Ok(dir),
+        Ok(metadata) => Err(PresetError::NotAFolder {
+            path: name,
+            kind: FileKind::of(metadata.file_type()),
+        }),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound && fs::read_link(path).is_err() => {
+            Ok(dir)
+        }
+        Err(e) => Err(stat_error(path, &name, e)),
+    }
+}
+
 /// The `*.toml` files in a presets folder (not hidden ones), sorted; none if
-/// the folder cannot be read.
-fn preset_files(dir: &Path) -> Vec<PathBuf> {
-    let Ok(entries) = fs::read_dir(dir) else {
-        return Vec::new();
+/// the folder does not exist.
+fn preset_files(dir: &Path) -> Result<Vec<PathBuf>, PresetError> {
+    check_dir(Some(dir))?;
+    let entries = match fs::read_dir(dir) {
+        Ok(entries) => entries,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(source) => {
+            return Err(PresetError::Io {
+                path: shown(dir),
+                source,
+            });
+        }
     };
     let mut paths: Vec<PathBuf> = entries
         .filter_map(|e| e.ok().map(|e| e.path()))
@@ -570,7 +603,7 @@ fn preset_files(dir: &Path) -> Vec<PathBuf> {
         })
         .collect();
     paths.sort();
-    paths
+    Ok(paths)
 }
 
 /// The user's preset folder: `$XDG_CONFIG_HOME/homerun/presets` (or the
@@ -593,24 +626,29 @@ pub fn bundled() -> Vec<Preset> {
 /// Every preset available: bundled first, then each `*.toml` in `dir`, each
 /// file read once with [`read_text`] (so nothing in the folder can block or
 /// flood it). A broken file is returned as an error beside the others, not
-/// fatal.
+/// fatal; so is a `dir` that exists but is not a folder (see [`check_dir`]).
+/// A missing `dir` holds no presets.
 pub fn list(dir: Option<&Path>) -> Vec<Result<Preset, PresetError>> {
     let mut all: Vec<_> = bundled().into_iter().map(Ok).collect();
     if let Some(dir) = dir {
-        all.extend(preset_files(dir).iter().map(|p| Preset::read(p)));
+        match preset_files(dir) {
+            Ok(paths) => all.extend(paths.iter().map(|p| Preset::read(p))),
+            Err(e) => all.push(Err(e)),
+        }
     }
     all
 }
 
 /// Finds a preset by name (user folder first, so a user can shadow a bundled
-/// one) or, if `spec` looks like a path, reads that file. Any file in `dir`
-/// with that name is read, so a broken one is reported rather than skipped.
+/// one) or, if `spec` looks like a path, reads that file. A name is looked up
+/// in `dir` only if `dir` is usable ([`check_dir`]); any file there with that
+/// name is read, so a broken one is reported rather than skipped.
 pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
     let as_path = Path::new(spec);
     if spec.ends_with(".toml") || spec.contains(std::path::MAIN_SEPARATOR) {
         return Preset::read(as_path);
     }
-    if let Some(dir) = dir {
+    if let Some(dir) = check_dir(dir)? {
         let candidate = dir.join(format!("{spec}.toml"));
         if fs::symlink_metadata(&candidate).is_ok() {
             return Preset::read(&candidate);
@@ -751,6 +789,30 @@ mod tests {
         assert_eq!(read_text(&at("ok.toml")).unwrap(), "a = 1\n");
         let e = read_text(&at("absent.toml")).unwrap_err();
         assert!(matches!(e, PresetError::Io { .. }), "{e}");
+    }
+
+    #[test]
+    fn check_dir_accepts_a_folder_or_nothing_and_refuses_a_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("file");
+        fs::write(&file, "").unwrap();
+        assert!(check_dir(None).unwrap().is_none());
+        assert!(check_dir(Some(dir.path())).is_ok());
+        assert!(check_dir(Some(&dir.path().join("missing"))).is_ok());
+        assert!(matches!(
+            check_dir(Some(&file)),
+            Err(PresetError::NotAFolder {
+                kind: FileKind::File,
+                ..
+            })
+        ));
+        // Listing shows a bad folder as a broken entry, after the bundled.
+        let all = list(Some(&file));
+        assert_eq!(all.len(), BUNDLED.len() + 1);
+        assert!(matches!(
+            all.last(),
+            Some(Err(PresetError::NotAFolder { .. }))
+        ));
     }
 
     #[test]
