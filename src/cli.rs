@@ -245,7 +245,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             let grid = parse_grid(undercut, swing_angle, grid)?;
             Ok(surface(&scene, grid, Format::new(*json, *csv)))
         }
-        Command::Presets => Ok(presets(dir)),
+        Command::Presets => Ok(presets(preset::check_dir(dir)?)),
         Command::Keys => Ok(keys()),
         Command::Trajectory {
             scene,

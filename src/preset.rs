@@ -7,7 +7,7 @@
 //! `--presets-dir`.
 
 use std::fs;
-use std::io::Write;
+use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 
 use crate::model::aero::{DragModel, UnknownModel};
@@ -66,7 +66,107 @@ pub enum PresetError {
     },
     #[error("`{0}` is not a usable preset name: use letters, digits, '-' and '_'")]
     BadName(String),
+    /// A FIFO, a device, a folder or a socket where a preset file should be:
+    /// refused without reading it (a FIFO would block, `/dev/zero` never ends).
+    #[error("{path}: not a regular file ({kind}{})", through(.link))]
+    NotAFile {
+        path: String,
+        kind: FileKind,
+        /// Where the symlink at `path` leads, if it is one.
+        link: Option<String>,
+    },
+    /// Larger than [`MAX_BYTES`]: refused before parsing.
+    #[error("{path}: {}, presets are at most 1 MiB", size_text(*.size))]
+    TooBig {
+        path: String,
+        /// The size, if known (`None`: it grew past the cap while read).
+        size: Option<u64>,
+    },
+    #[error("{path}: a symlink loop (too many levels of symbolic links)")]
+    SymlinkLoop { path: String },
+    #[error("{path}: a symlink to {target}, which does not exist")]
+    DanglingLink { path: String, target: String },
+    #[error("{path}: not a text file (a NUL byte at byte {offset})")]
+    Binary { path: String, offset: usize },
+    #[error("{path}: not UTF-8 text (an invalid byte at byte {offset})")]
+    NotUtf8 { path: String, offset: usize },
+    /// The presets folder exists but is not a folder.
+    #[error("{path}: not a folder ({kind}), so it cannot hold presets")]
+    NotAFolder { path: String, kind: FileKind },
 }
+
+/// What a path is, for messages: "not a regular file (a FIFO)".
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileKind {
+    File,
+    Folder,
+    Fifo,
+    CharDevice,
+    BlockDevice,
+    Socket,
+    Other,
+}
+
+impl FileKind {
+    /// The kind of `file_type` (of metadata that followed symlinks).
+    pub fn of(file_type: fs::FileType) -> FileKind {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            if file_type.is_fifo() {
+                return FileKind::Fifo;
+            }
+            if file_type.is_char_device() {
+                return FileKind::CharDevice;
+            }
+            if file_type.is_block_device() {
+                return FileKind::BlockDevice;
+            }
+            if file_type.is_socket() {
+                return FileKind::Socket;
+            }
+        }
+        if file_type.is_file() {
+            FileKind::File
+        } else if file_type.is_dir() {
+            FileKind::Folder
+        } else {
+            FileKind::Other
+        }
+    }
+}
+
+impl std::fmt::Display for FileKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            FileKind::File => "a regular file",
+            FileKind::Folder => "a folder",
+            FileKind::Fifo => "a FIFO",
+            FileKind::CharDevice => "a character device",
+            FileKind::BlockDevice => "a block device",
+            FileKind::Socket => "a socket",
+            FileKind::Other => "an unknown kind of file",
+        })
+    }
+}
+
+fn through(link: &Option<String>) -> String {
+    link.as_ref()
+        .map(|target| format!(", through a symlink to {target}"))
+        .unwrap_or_default()
+}
+
+fn size_text(size: Option<u64>) -> String {
+    match size {
+        Some(bytes) if bytes >= 10 << 20 => format!("{} MiB", bytes >> 20),
+        Some(bytes) => format!("{bytes} bytes"),
+        None => "more than 1 MiB".to_owned(),
+    }
+}
+
+/// The largest preset file read, in bytes: a preset is a few hundred bytes,
+/// and anything larger is refused before it costs memory or parsing time.
+pub const MAX_BYTES: u64 = 1 << 20;
 
 /// The presets shipped with homerun: (name, TOML text).
 pub const BUNDLED: &[(&str, &str)] = &[
@@ -93,7 +193,7 @@ impl Preset {
             text.parse()
                 .map_err(|e: toml::de::Error| PresetError::Syntax {
                     path: origin.to_owned(),
-                    message: e.to_string().trim().replace('\n', " "),
+                    message: syntax_message(&e),
                 })?;
         let input = |source| PresetError::Input {
             path: origin.to_owned(),
@@ -101,8 +201,8 @@ impl Preset {
         };
         let wrong = |key: &str, value: &toml::Value, expected| PresetError::WrongType {
             path: origin.to_owned(),
-            key: key.to_owned(),
-            value: value.to_string(),
+            key: escape_for_terminal(key),
+            value: escape_for_terminal(&value.to_string()),
             expected,
         };
         let mut scene = Scene::default();
@@ -118,7 +218,7 @@ impl Preset {
                 continue;
             }
             let Some(entries) = value.as_table() else {
-                return Err(input(unknown(section)));
+                return Err(input(unknown(&escape_for_terminal(section))));
             };
             for (name, value) in entries {
                 let key = format!("{section}.{name}");
@@ -126,7 +226,14 @@ impl Preset {
                     let text = value.as_str().ok_or_else(|| {
                         wrong(&key, value, "expected a drag model name in quotes")
                     })?;
-                    scene.drag = text.parse().map_err(|e: UnknownModel| input(e.into()))?;
+                    // A name too long to be one is shown cut (the error
+                    // quotes it, escaping control characters).
+                    let shown: String = if text.chars().count() > 80 {
+                        text.chars().take(79).chain(['…']).collect()
+                    } else {
+                        text.to_owned()
+                    };
+                    scene.drag = shown.parse().map_err(|e: UnknownModel| input(e.into()))?;
                     continue;
                 }
                 let number = match value {
@@ -137,7 +244,10 @@ impl Preset {
                 match key.as_str() {
                     FENCE_DISTANCE => fence_distance = Some(number),
                     FENCE_HEIGHT => fence_height = Some(number),
-                    _ => scene.set(&key, number).map_err(input)?,
+                    _ => scene.set(&key, number).map_err(|e| {
+                        let shown = escape_for_terminal(&key);
+                        input(if shown == key { e } else { unknown(&shown) })
+                    })?,
                 }
             }
         }
@@ -174,13 +284,10 @@ impl Preset {
         })
     }
 
-    /// Reads a preset file.
+    /// Reads a preset file, safely (see [`read_text`]).
     pub fn read(path: &Path) -> Result<Preset, PresetError> {
-        let origin = path.display().to_string();
-        let text = fs::read_to_string(path).map_err(|source| PresetError::Io {
-            path: origin.clone(),
-            source,
-        })?;
+        let origin = shown(path);
+        let text = read_text(path)?;
         let name = path
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
@@ -260,10 +367,30 @@ impl Preset {
     }
 }
 
+/// A TOML error on one line, as the toml crate words it, with the quoted
+/// source line escaped and cut (a hostile file may hold a megabyte on one
+/// line, or terminal escapes), and the caret line dropped if it was cut.
+fn syntax_message(error: &toml::de::Error) -> String {
+    error
+        .to_string()
+        .trim()
+        .split('\n')
+        .filter_map(|line| {
+            let cut = escape_cut(line, 200);
+            let pointer = |c| matches!(c, ' ' | '|' | '^' | '…');
+            (cut == line || !cut.chars().all(pointer)).then_some(cut)
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The error for a key that is not an input. A quoted top-level key that
+/// names one (`"bat.speed" = 3`, not a `[bat]` table) is shown quoted, as
+/// written.
 fn unknown(key: &str) -> InputError {
     match Scene::key(key) {
         Err(e) => e,
-        Ok(_) => unreachable!("a section name is never a full key"),
+        Ok(_) => unknown(&format!("\"{key}\"")),
     }
 }
 
@@ -276,8 +403,207 @@ fn check_name(name: &str) -> Result<(), PresetError> {
     if ok {
         Ok(())
     } else {
-        Err(PresetError::BadName(name.to_owned()))
+        Err(PresetError::BadName(escape_for_terminal(name)))
     }
+}
+
+/// `text` made safe to print on one terminal line: control characters (ESC,
+/// newline, C1 codes such as U+009B), bidirectional overrides and other
+/// invisible format characters are written as `\u{1b}`-style escapes, and
+/// anything longer than 80 characters is cut with "…".
+pub fn escape_for_terminal(text: &str) -> String {
+    escape_cut(text, 80)
+}
+
+/// Escapes like [`escape_for_terminal`], cutting at `max` characters (the
+/// "…" included), never inside an escape.
+fn escape_cut(text: &str, max: usize) -> String {
+    let mut out = String::new();
+    let mut count = 0;
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
+        let piece = if needs_escape(c) {
+            c.escape_unicode().to_string()
+        } else {
+            c.to_string()
+        };
+        let len = piece.chars().count();
+        let last = chars.peek().is_none();
+        // Room for this piece, and for the "…" if more follows.
+        if max.saturating_sub(count) < len + usize::from(!last) {
+            out.push('…');
+            return out;
+        }
+        out += &piece;
+        count += len;
+    }
+    out
+}
+
+fn needs_escape(c: char) -> bool {
+    c.is_control()
+        || matches!(
+            c,
+            '\u{61c}'
+                | '\u{200b}'..='\u{200f}'
+                | '\u{2028}'..='\u{202e}'
+                | '\u{2060}'..='\u{2069}'
+                | '\u{feff}'
+        )
+}
+
+/// A path as messages show it: escaped, never cut (the user needs all of it).
+fn shown(path: &Path) -> String {
+    escape_cut(&path.display().to_string(), usize::MAX)
+}
+
+/// Reads a preset file's text, safely whatever the path holds: symlinks are
+/// followed, anything but a regular file (a FIFO, a device such as
+/// `/dev/zero`, a folder, a socket) is refused from its metadata without
+/// being opened, the file is opened without blocking and checked again once
+/// open (it may have been swapped), at most [`MAX_BYTES`] + 1 bytes are read,
+/// and the text must be UTF-8 without NUL bytes. Every refusal is a
+/// [`PresetError`] naming the file.
+pub fn read_text(path: &Path) -> Result<String, PresetError> {
+    let name = shown(path);
+    let io = |source| PresetError::Io {
+        path: name.clone(),
+        source,
+    };
+    let metadata = fs::metadata(path).map_err(|e| stat_error(path, &name, e))?;
+    check_file(path, &name, &metadata)?;
+    let mut file = open_nonblocking(path).map_err(|e| stat_error(path, &name, e))?;
+    let metadata = file.metadata().map_err(io)?;
+    check_file(path, &name, &metadata)?;
+    let mut bytes = Vec::with_capacity(metadata.len() as usize + 1);
+    (&mut file)
+        .take(MAX_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > MAX_BYTES {
+        return Err(PresetError::TooBig {
+            path: name,
+            size: None,
+        });
+    }
+    if let Some(offset) = bytes.iter().position(|&b| b == 0) {
+        return Err(PresetError::Binary { path: name, offset });
+    }
+    String::from_utf8(bytes).map_err(|e| PresetError::NotUtf8 {
+        path: name,
+        offset: e.utf8_error().valid_up_to(),
+    })
+}
+
+/// Opens `path` for reading without ever blocking: `O_NONBLOCK` makes
+/// opening a FIFO return at once (and is harmless for a regular file), and
+/// `O_NOCTTY` keeps a terminal device from becoming ours.
+fn open_nonblocking(path: &Path) -> std::io::Result<fs::File> {
+    let mut options = fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK | libc::O_NOCTTY);
+    }
+    options.open(path)
+}
+
+/// Refuses anything but a regular file of at most [`MAX_BYTES`].
+fn check_file(path: &Path, name: &str, metadata: &fs::Metadata) -> Result<(), PresetError> {
+    if !metadata.is_file() {
+        let link = fs::symlink_metadata(path)
+            .is_ok_and(|m| m.file_type().is_symlink())
+            .then(|| {
+                fs::canonicalize(path)
+                    .or_else(|_| fs::read_link(path))
+                    .map_or_else(|_| "?".to_owned(), |target| shown(&target))
+            });
+        return Err(PresetError::NotAFile {
+            path: name.to_owned(),
+            kind: FileKind::of(metadata.file_type()),
+            link,
+        });
+    }
+    if metadata.len() > MAX_BYTES {
+        return Err(PresetError::TooBig {
+            path: name.to_owned(),
+            size: Some(metadata.len()),
+        });
+    }
+    Ok(())
+}
+
+/// The error for a path whose metadata cannot be read: a symlink loop and a
+/// dangling symlink are named as such.
+fn stat_error(path: &Path, name: &str, source: std::io::Error) -> PresetError {
+    #[cfg(unix)]
+    if source.raw_os_error() == Some(libc::ELOOP) {
+        return PresetError::SymlinkLoop {
+            path: name.to_owned(),
+        };
+    }
+    if source.kind() == std::io::ErrorKind::NotFound
+        && let Ok(target) = fs::read_link(path)
+    {
+        return PresetError::DanglingLink {
+            path: name.to_owned(),
+            target: shown(&target),
+        };
+    }
+    PresetError::Io {
+        path: name.to_owned(),
+        source,
+    }
+}
+
+/// Checks that a presets folder is usable: `Ok` if it is a folder or does
+/// not exist (a missing folder simply holds no presets), an error if it is
+/// something else (a file, a FIFO…) or cannot be looked at. Returns `dir`,
+/// to be used inline.
+pub fn check_dir(dir: Option<&Path>) -> Result<Option<&Path>, PresetError> {
+    let Some(path) = dir else {
+        return Ok(None);
+    };
+    let name = shown(path);
+    match fs::metadata(path) {
+        Ok(metadata) if metadata.is_dir() => Ok(dir),
+        Ok(metadata) => Err(PresetError::NotAFolder {
+            path: name,
+            kind: FileKind::of(metadata.file_type()),
+        }),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound && fs::read_link(path).is_err() => {
+            Ok(dir)
+        }
+        Err(e) => Err(stat_error(path, &name, e)),
+    }
+}
+
+/// The `*.toml` files in a presets folder (not hidden ones), sorted; none if
+/// the folder does not exist.
+fn preset_files(dir: &Path) -> Result<Vec<PathBuf>, PresetError> {
+    check_dir(Some(dir))?;
+    let entries = match fs::read_dir(dir) {
+        Ok(entries) => entries,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(source) => {
+            return Err(PresetError::Io {
+                path: shown(dir),
+                source,
+            });
+        }
+    };
+    let mut paths: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            p.extension().is_some_and(|x| x == "toml")
+                && !p
+                    .file_name()
+                    .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+        })
+        .collect();
+    paths.sort();
+    Ok(paths)
 }
 
 /// The user's preset folder: `$XDG_CONFIG_HOME/homerun/presets` (or the
@@ -297,38 +623,34 @@ pub fn bundled() -> Vec<Preset> {
         .collect()
 }
 
-/// Every preset available: bundled first, then each `*.toml` in `dir`. A
-/// broken file is returned as an error beside the others, not fatal.
+/// Every preset available: bundled first, then each `*.toml` in `dir`, each
+/// file read once with [`read_text`] (so nothing in the folder can block or
+/// flood it). A broken file is returned as an error beside the others, not
+/// fatal; so is a `dir` that exists but is not a folder (see [`check_dir`]).
+/// A missing `dir` holds no presets.
 pub fn list(dir: Option<&Path>) -> Vec<Result<Preset, PresetError>> {
     let mut all: Vec<_> = bundled().into_iter().map(Ok).collect();
-    if let Some(dir) = dir
-        && let Ok(entries) = fs::read_dir(dir)
-    {
-        let mut paths: Vec<PathBuf> = entries
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| {
-                p.extension().is_some_and(|x| x == "toml")
-                    && !p
-                        .file_name()
-                        .is_some_and(|n| n.to_string_lossy().starts_with('.'))
-            })
-            .collect();
-        paths.sort();
-        all.extend(paths.iter().map(|p| Preset::read(p)));
+    if let Some(dir) = dir {
+        match preset_files(dir) {
+            Ok(paths) => all.extend(paths.iter().map(|p| Preset::read(p))),
+            Err(e) => all.push(Err(e)),
+        }
     }
     all
 }
 
 /// Finds a preset by name (user folder first, so a user can shadow a bundled
-/// one) or, if `spec` looks like a path, reads that file.
+/// one) or, if `spec` looks like a path, reads that file. A name is looked up
+/// in `dir` only if `dir` is usable ([`check_dir`]); any file there with that
+/// name is read, so a broken one is reported rather than skipped.
 pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
     let as_path = Path::new(spec);
     if spec.ends_with(".toml") || spec.contains(std::path::MAIN_SEPARATOR) {
         return Preset::read(as_path);
     }
-    if let Some(dir) = dir {
+    if let Some(dir) = check_dir(dir)? {
         let candidate = dir.join(format!("{spec}.toml"));
-        if candidate.is_file() {
+        if fs::symlink_metadata(&candidate).is_ok() {
             return Preset::read(&candidate);
         }
     }
@@ -336,14 +658,14 @@ pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
         return Preset::parse(text, name, &format!("presets/{name}.toml"), Source::Bundled);
     }
     Err(PresetError::NotFound {
-        name: spec.to_owned(),
+        name: escape_for_terminal(spec),
         bundled: BUNDLED
             .iter()
             .map(|(n, _)| *n)
             .collect::<Vec<_>>()
             .join(", "),
         user: dir
-            .map(|d| format!("; or a file in {}", d.display()))
+            .map(|d| format!("; or a file in {}", shown(d)))
             .unwrap_or_default(),
     })
 }
@@ -398,5 +720,104 @@ mod tests {
             preset.save(dir.path()),
             Err(PresetError::BadName(_))
         ));
+    }
+
+    #[test]
+    fn escape_for_terminal_escapes_control_characters_and_cuts() {
+        assert_eq!(escape_for_terminal("fastball.toml"), "fastball.toml");
+        assert_eq!(
+            escape_for_terminal("a\x1b[2J\nb\u{9b}c\u{202e}d\té"),
+            "a\\u{1b}[2J\\u{a}b\\u{9b}c\\u{202e}d\\u{9}é"
+        );
+        let long = "x".repeat(81);
+        let cut = escape_for_terminal(&long);
+        assert_eq!(cut.chars().count(), 80);
+        assert!(cut.ends_with("x…"), "{cut}");
+        assert_eq!(escape_for_terminal(&long[..80]), long[..80]);
+        // Never cut inside an escape.
+        let cut = escape_for_terminal(&format!("{}\x1b", "x".repeat(77)));
+        assert_eq!(cut, format!("{}…", "x".repeat(77)));
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn read_text_refuses_what_is_not_a_small_text_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let at = |name: &str| dir.path().join(name);
+        assert!(matches!(
+            read_text(Path::new("/dev/zero")),
+            Err(PresetError::NotAFile {
+                kind: FileKind::CharDevice,
+                link: None,
+                ..
+            })
+        ));
+        assert!(matches!(
+            read_text(dir.path()),
+            Err(PresetError::NotAFile {
+                kind: FileKind::Folder,
+                ..
+            })
+        ));
+        std::os::unix::fs::symlink("/dev/zero", at("zero.toml")).unwrap();
+        let e = read_text(&at("zero.toml")).unwrap_err();
+        assert!(
+            e.to_string().ends_with(
+                "zero.toml: not a regular file (a character device, through a symlink to /dev/zero)"
+            ),
+            "{e}"
+        );
+        std::os::unix::fs::symlink(at("loop.toml"), at("loop.toml")).unwrap();
+        assert!(matches!(
+            read_text(&at("loop.toml")),
+            Err(PresetError::SymlinkLoop { .. })
+        ));
+        fs::write(at("big.toml"), vec![b'#'; MAX_BYTES as usize + 1]).unwrap();
+        assert!(matches!(
+            read_text(&at("big.toml")),
+            Err(PresetError::TooBig {
+                size: Some(1_048_577),
+                ..
+            })
+        ));
+        fs::write(at("nul.toml"), b"a = 1\0").unwrap();
+        assert!(matches!(
+            read_text(&at("nul.toml")),
+            Err(PresetError::Binary { offset: 5, .. })
+        ));
+        fs::write(at("ok.toml"), "a = 1\n").unwrap();
+        assert_eq!(read_text(&at("ok.toml")).unwrap(), "a = 1\n");
+        let e = read_text(&at("absent.toml")).unwrap_err();
+        assert!(matches!(e, PresetError::Io { .. }), "{e}");
+    }
+
+    #[test]
+    fn check_dir_accepts_a_folder_or_nothing_and_refuses_a_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("file");
+        fs::write(&file, "").unwrap();
+        assert!(check_dir(None).unwrap().is_none());
+        assert!(check_dir(Some(dir.path())).is_ok());
+        assert!(check_dir(Some(&dir.path().join("missing"))).is_ok());
+        assert!(matches!(
+            check_dir(Some(&file)),
+            Err(PresetError::NotAFolder {
+                kind: FileKind::File,
+                ..
+            })
+        ));
+        // Listing shows a bad folder as a broken entry, after the bundled.
+        let all = list(Some(&file));
+        assert_eq!(all.len(), BUNDLED.len() + 1);
+        assert!(matches!(
+            all.last(),
+            Some(Err(PresetError::NotAFolder { .. }))
+        ));
+    }
+
+    #[test]
+    fn a_quoted_top_level_key_naming_an_input_is_an_error_not_a_panic() {
+        let e = Preset::parse("\"bat.speed\" = 3", "x", "x.toml", Source::Bundled).unwrap_err();
+        assert!(e.to_string().contains("unknown key `\"bat.speed\"`"), "{e}");
     }
 }

@@ -1,0 +1,358 @@
+//! Hostile preset files: whatever a path given as a preset (or found in the
+//! presets folder) holds, `homerun` answers at once, with one line naming the
+//! file and why, and never blocks or floods its memory. Every run has a time
+//! limit and a memory limit, so a regression fails here instead of hanging
+//! or eating the machine.
+#![cfg(unix)]
+
+use std::ffi::CString;
+use std::os::unix::ffi::OsStrExt;
+use std::os::unix::process::CommandExt;
+use std::path::{Path, PathBuf};
+use std::process::Output;
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+
+use assert_cmd::Command;
+
+const LIMIT: Duration = Duration::from_secs(10);
+
+/// `homerun ARGS`, with `--presets-dir dir` (the machine's own presets never
+/// count), at most [`LIMIT`] of time and 1 GiB of address space.
+fn run(dir: &Path, args: &[&str]) -> Output {
+    let mut std = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"));
+    std.arg("--presets-dir").arg(dir).args(args);
+    // SAFETY: `setrlimit` is async-signal-safe and touches no memory of ours.
+    unsafe {
+        std.pre_exec(|| {
+            let limit = libc::rlimit {
+                rlim_cur: 1 << 30,
+                rlim_max: 1 << 30,
+            };
+            if libc::setrlimit(libc::RLIMIT_AS, &limit) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+    let start = Instant::now();
+    let output = Command::from_std(std).timeout(LIMIT).output().unwrap();
+    assert!(
+        output.status.code().is_some() && start.elapsed() < LIMIT,
+        "{args:?} did not finish by itself in {LIMIT:?}: {:?}",
+        output.status
+    );
+    output
+}
+
+/// Runs `args`, expecting exit status 2, nothing on stdout, and exactly one
+/// line on stderr, `homerun: …`, containing every needle and no control
+/// character; returns that line.
+fn refused(dir: &Path, args: &[&str], needles: &[&str]) -> String {
+    let output = run(dir, args);
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    assert_eq!(output.status.code(), Some(2), "{args:?}: {stderr}");
+    assert!(output.stdout.is_empty(), "{args:?}: {output:?}");
+    one_line(&stderr, args);
+    assert!(stderr.starts_with("homerun: "), "{args:?}: {stderr}");
+    for needle in needles {
+        assert!(
+            stderr.contains(needle),
+            "{args:?}: {needle:?} not in {stderr}"
+        );
+    }
+    stderr
+}
+
+/// `text` is exactly one line, with no control character in it.
+fn one_line(text: &str, args: &[&str]) {
+    let line = text.strip_suffix('\n').unwrap_or(text);
+    assert!(!line.is_empty(), "{args:?}: empty");
+    assert!(
+        !line.chars().any(char::is_control),
+        "{args:?}: more than one line, or a control character: {text:?}"
+    );
+}
+
+/// `homerun presets`, expecting it to list everything (status 0, nothing on
+/// stderr) with exactly one `(broken)` line containing every needle.
+fn listed_broken(dir: &Path, needles: &[&str]) {
+    let output = run(dir, &["presets"]);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    assert!(output.stderr.is_empty(), "{output:?}");
+    assert!(stdout.contains("fastball"), "{stdout}");
+    let broken: Vec<_> = stdout
+        .lines()
+        .filter(|l| l.starts_with("(broken)"))
+        .collect();
+    assert_eq!(broken.len(), 1, "{stdout}");
+    one_line(broken[0], &["presets"]);
+    for needle in needles {
+        assert!(broken[0].contains(needle), "{needle:?} not in {stdout}");
+    }
+}
+
+fn mkfifo(path: &Path) {
+    let c = CString::new(path.as_os_str().as_bytes()).unwrap();
+    // SAFETY: a valid NUL-terminated path.
+    assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o644) }, 0, "{path:?}");
+}
+
+fn text(path: &Path) -> &str {
+    path.to_str().unwrap()
+}
+
+/// A temporary folder (the presets folder) and a path inside it.
+fn folder() -> (tempfile::TempDir, impl Fn(&str) -> PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path().to_owned();
+    (dir, move |name: &str| root.join(name))
+}
+
+#[test]
+fn dev_zero_as_preset() {
+    let (dir, _) = folder();
+    refused(
+        dir.path(),
+        &["hit", "--preset", "/dev/zero"],
+        &["/dev/zero: not a regular file (a character device)"],
+    );
+}
+
+#[test]
+fn fifo_as_preset_path() {
+    let (dir, at) = folder();
+    mkfifo(&at("f.toml"));
+    refused(
+        dir.path(),
+        &["hit", "--preset", text(&at("f.toml"))],
+        &["f.toml: not a regular file (a FIFO)"],
+    );
+}
+
+#[test]
+fn fifo_in_the_presets_folder() {
+    let (dir, at) = folder();
+    mkfifo(&at("fifo.toml"));
+    listed_broken(dir.path(), &["fifo.toml: not a regular file (a FIFO)"]);
+    refused(
+        dir.path(),
+        &["hit", "--preset", "fifo"],
+        &["fifo.toml: not a regular file (a FIFO)"],
+    );
+}
+
+#[test]
+fn symlink_to_dev_zero_in_the_presets_folder() {
+    let (dir, at) = folder();
+    std::os::unix::fs::symlink("/dev/zero", at("zero.toml")).unwrap();
+    let why = "zero.toml: not a regular file (a character device, through a symlink to /dev/zero)";
+    listed_broken(dir.path(), &[why]);
+    refused(dir.path(), &["hit", "--preset", "zero"], &[why]);
+}
+
+#[test]
+fn symlink_loop() {
+    let (dir, at) = folder();
+    std::os::unix::fs::symlink(at("loop.toml"), at("loop.toml")).unwrap();
+    let why = "loop.toml: a symlink loop";
+    listed_broken(dir.path(), &[why]);
+    refused(dir.path(), &["hit", "--preset", "loop"], &[why]);
+    refused(
+        dir.path(),
+        &["hit", "--preset", text(&at("loop.toml"))],
+        &[why],
+    );
+}
+
+#[test]
+fn dangling_symlink() {
+    let (dir, at) = folder();
+    std::os::unix::fs::symlink(at("nowhere"), at("gone.toml")).unwrap();
+    let why = "gone.toml: a symlink to ";
+    listed_broken(dir.path(), &[why, "which does not exist"]);
+    refused(dir.path(), &["hit", "--preset", "gone"], &[why]);
+}
+
+#[test]
+fn folder_named_like_a_preset() {
+    let (dir, at) = folder();
+    std::fs::create_dir(at("x.toml")).unwrap();
+    let why = "x.toml: not a regular file (a folder)";
+    listed_broken(dir.path(), &[why]);
+    refused(dir.path(), &["hit", "--preset", "x"], &[why]);
+    refused(
+        dir.path(),
+        &["hit", "--preset", text(&at("x.toml"))],
+        &[why],
+    );
+}
+
+#[test]
+fn millions_of_tiny_tables_are_refused_by_size() {
+    let (dir, at) = folder();
+    // 5 million tiny tables, as the tester's file: "[t0]\n[t1]\n…" (~54 MB).
+    let mut tables = Vec::with_capacity(54 << 20);
+    for i in 0..5_000_000 {
+        use std::io::Write;
+        writeln!(tables, "[t{i}]").unwrap();
+    }
+    std::fs::write(at("big.toml"), &tables).unwrap();
+    drop(tables);
+    refused(
+        dir.path(),
+        &["hit", "--preset", text(&at("big.toml"))],
+        &["big.toml: 51 MiB, presets are at most 1 MiB"],
+    );
+    listed_broken(dir.path(), &["big.toml: 51 MiB"]);
+    // One byte over the cap is refused; the cap itself is allowed.
+    std::fs::remove_file(at("big.toml")).unwrap();
+    std::fs::write(at("over.toml"), "#".repeat((1 << 20) + 1)).unwrap();
+    refused(
+        dir.path(),
+        &["hit", "--preset", "over"],
+        &["over.toml: 1048577 bytes, presets are at most 1 MiB"],
+    );
+    std::fs::write(at("over.toml"), "#".repeat(1 << 20)).unwrap();
+    assert_eq!(
+        run(dir.path(), &["hit", "--preset", "over"]).status.code(),
+        Some(0)
+    );
+}
+
+#[test]
+fn a_megabyte_of_nesting_or_of_one_line_errors_fast_and_short() {
+    let (dir, at) = folder();
+    let half = (1 << 20) / 2 - 8;
+    for (name, text, why) in [
+        (
+            "arrays",
+            format!("a = {}{}", "[".repeat(half), "]".repeat(half)),
+            "recursion",
+        ),
+        (
+            "tables",
+            format!("a = {}{}", "{b=".repeat(half / 2), "}".repeat(half / 2)),
+            "recursion",
+        ),
+        ("dotted", format!("a{} = 1", ".a".repeat(half)), "recursion"),
+        (
+            "line",
+            format!("a = \"{}", "x".repeat(2 * half)),
+            "expected `\"`",
+        ),
+    ] {
+        std::fs::write(at(&format!("{name}.toml")), text).unwrap();
+        let line = refused(dir.path(), &["hit", "--preset", name], &[why]);
+        assert!(line.len() < 1000, "{name}: {} bytes", line.len());
+    }
+}
+
+#[test]
+fn binary_garbage() {
+    let (dir, at) = folder();
+    let garbage: Vec<u8> = (0..4096u32)
+        .map(|i| (i.wrapping_mul(2_654_435_761) >> 13) as u8)
+        .collect();
+    std::fs::write(at("garbage.toml"), garbage).unwrap();
+    refused(
+        dir.path(),
+        &["hit", "--preset", "garbage"],
+        &["garbage.toml: not a text file (a NUL byte at byte "],
+    );
+    std::fs::write(at("garbage.toml"), b"description = \"caf\xe9\"\n").unwrap();
+    refused(
+        dir.path(),
+        &["hit", "--preset", "garbage"],
+        &["garbage.toml: not UTF-8 text (an invalid byte at byte 18)"],
+    );
+    listed_broken(dir.path(), &["garbage.toml: not UTF-8 text"]);
+}
+
+#[test]
+fn terminal_escapes_in_the_file_and_in_its_name() {
+    let (dir, at) = folder();
+    // Raw escapes are not valid TOML: refused, the quoted line escaped.
+    std::fs::write(
+        at("raw.toml"),
+        "description = \"\x1b[31mred\x1b]0;title\x07\"\n",
+    )
+    .unwrap();
+    refused(
+        dir.path(),
+        &["hit", "--preset", "raw"],
+        &["raw.toml: malformed TOML", "\\u{1b}[31mred"],
+    );
+    // Escaped in TOML, they are a valid description: loaded without panic
+    // (how the listing prints them is the CLI's business).
+    std::fs::remove_file(at("raw.toml")).unwrap();
+    std::fs::write(
+        at("quoted.toml"),
+        "description = \"\\u001b[31mred\\u001b]0;title\\u0007\"\n",
+    )
+    .unwrap();
+    assert_eq!(
+        run(dir.path(), &["hit", "--preset", "quoted"])
+            .status
+            .code(),
+        Some(0)
+    );
+    assert_eq!(run(dir.path(), &["presets"]).status.code(), Some(0));
+    // A key full of escapes, and a file name with ESC and a newline.
+    std::fs::write(at("quoted.toml"), "[bat]\n\"\\u001b[2J\" = 1\n").unwrap();
+    refused(
+        dir.path(),
+        &["hit", "--preset", "quoted"],
+        &["unknown key `bat.\\u{1b}[2J`"],
+    );
+    std::fs::remove_file(at("quoted.toml")).unwrap();
+    let name = at("a\x1b[2J\nb.toml");
+    mkfifo(&name);
+    let why = "a\\u{1b}[2J\\u{a}b.toml: not a regular file (a FIFO)";
+    refused(dir.path(), &["hit", "--preset", text(&name)], &[why]);
+    listed_broken(dir.path(), &[why]);
+}
+
+#[test]
+fn a_file_as_the_presets_folder() {
+    let (_dir, at) = folder();
+    std::fs::write(at("file"), "").unwrap();
+    let why = "file: not a folder (a regular file), so it cannot hold presets";
+    refused(&at("file"), &["presets"], &[why]);
+    // Looking a name up in it is refused too.
+    refused(&at("file"), &["hit", "--preset", "fastball"], &[why]);
+    refused(
+        Path::new("/etc/passwd"),
+        &["presets"],
+        &["/etc/passwd: not a folder (a regular file)"],
+    );
+    mkfifo(&at("fifo"));
+    refused(&at("fifo"), &["presets"], &["fifo: not a folder (a FIFO)"]);
+    // A missing folder holds no presets, as before.
+    let output = run(&at("missing"), &["presets"]);
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    assert!(output.stderr.is_empty());
+}
+
+/// The explorer's picker (`o`) lists the folder with `preset::list`, on its
+/// UI thread: it must return at once whatever the folder holds.
+#[test]
+fn listing_a_hostile_folder_returns_at_once() {
+    let (dir, at) = folder();
+    mkfifo(&at("fifo.toml"));
+    std::os::unix::fs::symlink("/dev/zero", at("zero.toml")).unwrap();
+    std::os::unix::fs::symlink(at("loop.toml"), at("loop.toml")).unwrap();
+    std::fs::create_dir(at("dir.toml")).unwrap();
+    std::fs::write(at("ok.toml"), "[bat]\nspeed = 31\n").unwrap();
+    let root = dir.path().to_owned();
+    let (send, receive) = mpsc::channel();
+    std::thread::spawn(move || send.send(homerun::preset::list(Some(&root))));
+    let all = receive.recv_timeout(LIMIT).expect("list returned");
+    let broken: Vec<String> = all
+        .iter()
+        .filter_map(|p| p.as_ref().err().map(ToString::to_string))
+        .collect();
+    assert_eq!(broken.len(), 4, "{broken:?}");
+    assert!(all.iter().any(|p| p.as_ref().is_ok_and(|p| p.name == "ok")));
+}
