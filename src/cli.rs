@@ -6,14 +6,14 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
-use rayon::prelude::*;
-use serde::Serialize;
-
 use crate::model::pitch;
 use crate::model::scene::Scene;
+use crate::paper::{
+    Best, FIGURES, POINT_A_SPIN, POINT_B_SPIN, Table2Row, best_swing, table2_rows, tolerance,
+};
 use crate::precision::Purpose;
 use crate::preset::{self, Preset, Source};
-use crate::solve::optimize::{self, OptimizerSettings, Optimum};
+use crate::solve::optimize::{self, OptimizerSettings};
 use crate::study::{self, Grid};
 
 #[derive(Parser, Debug)]
@@ -400,23 +400,6 @@ fn spin_text(spin: f64) -> String {
     }
 }
 
-/// The optimum and the launch it gives, at readout precision.
-struct Best {
-    optimum: Optimum,
-    swing: crate::Swing,
-}
-
-fn best_swing(scene: &Scene) -> Best {
-    let optimum = optimize::optimize(scene, OptimizerSettings::default());
-    let mut at = *scene;
-    at.bat.undercut = optimum.undercut;
-    at.bat.swing_angle = optimum.swing_angle;
-    Best {
-        optimum,
-        swing: crate::simulate(&at, Purpose::Readout),
-    }
-}
-
 fn optimum(scene: &Scene, json: bool) -> String {
     let Best { optimum, swing } = best_swing(scene);
     let impact = &swing.impact;
@@ -457,161 +440,6 @@ fn optimum(scene: &Scene, json: bool) -> String {
         }
     );
     out
-}
-
-/// One row of Table II, or ours in the same columns.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct TableRow {
-    pub pitch_speed: f64,
-    pub bat_speed: f64,
-    pub pitch_spin: f64,
-    pub launch_speed: f64,
-    pub launch_spin: f64,
-    pub launch_angle: f64,
-    pub undercut: f64,
-    pub swing_angle: f64,
-    pub range: f64,
-}
-
-/// The paper's Table II as printed: (pitch, bundled preset, row).
-pub const TABLE2: [(&str, &str, TableRow); 3] = [
-    (
-        "fast",
-        "fastball",
-        TableRow {
-            pitch_speed: 42.0,
-            bat_speed: 30.0,
-            pitch_spin: -200.0,
-            launch_speed: 44.30,
-            launch_spin: 191.35,
-            launch_angle: 0.4600,
-            undercut: 0.0265,
-            swing_angle: 0.1594,
-            range: 134.798,
-        },
-    ),
-    (
-        "knuckle",
-        "knuckleball",
-        TableRow {
-            pitch_speed: 36.0,
-            bat_speed: 30.0,
-            pitch_spin: 0.0,
-            launch_speed: 44.04,
-            launch_spin: 226.87,
-            launch_angle: 0.4499,
-            undercut: 0.0250,
-            swing_angle: 0.1549,
-            range: 135.771,
-        },
-    ),
-    (
-        "curve",
-        "curveball",
-        TableRow {
-            pitch_speed: 35.0,
-            bat_speed: 30.0,
-            pitch_spin: 200.0,
-            // A misprint for 44.04: the spin and launch angle beside it match
-            // ours to rounding, and so does 44.04. See `CURVE_LAUNCH_SPEED`.
-            launch_speed: 43.04,
-            launch_spin: 276.78,
-            launch_angle: 0.4245,
-            undercut: 0.0223,
-            swing_angle: 0.1152,
-            range: 138.831,
-        },
-    ),
-];
-
-/// Table II's curve-ball launch speed, corrected (printed as 43.04).
-pub const CURVE_LAUNCH_SPEED: f64 = 44.04;
-
-/// How close ours must be to the paper's (the tests hold the same numbers).
-pub mod tolerance {
-    /// At the paper's (E, ψ): launch speed (m/s), spin (rad/s), angle (rad).
-    pub const LAUNCH_SPEED: f64 = 0.02;
-    pub const LAUNCH_SPIN: f64 = 1.0;
-    pub const LAUNCH_ANGLE: f64 = 0.002;
-    /// The optimum: E (m), ψ (rad), range (m). ψ is loose because the
-    /// optimum lies on a flat ridge along ψ (the paper calls ψ its least
-    /// accurate output).
-    pub const UNDERCUT: f64 = 0.001;
-    pub const SWING_ANGLE: f64 = 0.03;
-    pub const RANGE: f64 = 0.1;
-}
-
-/// One pitch of Table II, ours beside the paper's.
-#[derive(Clone, Debug, Serialize)]
-pub struct Table2Row {
-    pub pitch: &'static str,
-    /// As printed.
-    pub paper: TableRow,
-    /// Our optimum and the launch at it.
-    pub ours: TableRow,
-    /// Ours at the paper's own (E, ψ): the launch to compare with the
-    /// printed launch columns.
-    pub ours_at_paper_swing: TableRow,
-    /// Misprints in the paper's row: (column, printed, corrected).
-    pub errata: Vec<(&'static str, f64, f64)>,
-    /// Whether every compared column is inside [`tolerance`].
-    pub within_tolerance: bool,
-}
-
-fn row_of(scene: &Scene, swing: &crate::Swing) -> TableRow {
-    TableRow {
-        pitch_speed: scene.pitch.speed,
-        bat_speed: scene.bat.speed,
-        pitch_spin: scene.pitch.spin,
-        launch_speed: swing.impact.launch_speed(),
-        launch_spin: swing.impact.launch_spin(),
-        launch_angle: swing.impact.launch_angle(),
-        undercut: scene.bat.undercut,
-        swing_angle: scene.bat.swing_angle,
-        range: swing.flight.range,
-    }
-}
-
-/// Table II recomputed: the three optimisations run in parallel.
-pub fn table2_rows() -> Vec<Table2Row> {
-    TABLE2
-        .par_iter()
-        .map(|&(pitch, preset_name, paper)| {
-            let mut scene = preset::load(preset_name, None)
-                .expect("bundled presets load")
-                .scene;
-            scene.bat.undercut = paper.undercut;
-            scene.bat.swing_angle = paper.swing_angle;
-            let ours_at_paper_swing = row_of(&scene, &crate::simulate(&scene, Purpose::Readout));
-            let best = best_swing(&scene);
-            scene.bat.undercut = best.optimum.undercut;
-            scene.bat.swing_angle = best.optimum.swing_angle;
-            let ours = row_of(&scene, &best.swing);
-            let errata = if pitch == "curve" {
-                vec![("launch_speed", paper.launch_speed, CURVE_LAUNCH_SPEED)]
-            } else {
-                Vec::new()
-            };
-            let corrected_speed = errata.first().map_or(paper.launch_speed, |e| e.2);
-            let within_tolerance = (ours_at_paper_swing.launch_speed - corrected_speed).abs()
-                <= tolerance::LAUNCH_SPEED
-                && (ours_at_paper_swing.launch_spin - paper.launch_spin).abs()
-                    <= tolerance::LAUNCH_SPIN
-                && (ours_at_paper_swing.launch_angle - paper.launch_angle).abs()
-                    <= tolerance::LAUNCH_ANGLE
-                && (ours.undercut - paper.undercut).abs() <= tolerance::UNDERCUT
-                && (ours.swing_angle - paper.swing_angle).abs() <= tolerance::SWING_ANGLE
-                && (ours.range - paper.range).abs() <= tolerance::RANGE;
-            Table2Row {
-                pitch,
-                paper,
-                ours,
-                ours_at_paper_swing,
-                errata,
-                within_tolerance,
-            }
-        })
-        .collect()
 }
 
 fn table2(json: bool) -> String {
@@ -1018,26 +846,6 @@ fn presets(dir: Option<&std::path::Path>) -> String {
 
 // `homerun figure N`: the data behind the paper's Figs. 3–14, computed by the
 // core and the studies, in a form to plot beside the paper's.
-
-/// The figures `homerun figure` prints, with what each shows.
-pub const FIGURES: [(u32, &str); 12] = [
-    (3, "C_D against Re"),
-    (4, "C_L against S"),
-    (5, "batted spin against E for three μ"),
-    (6, "launch angle against E for three μ"),
-    (7, "range over (E, ψ)"),
-    (8, "optimum against bat speed"),
-    (9, "optimum against bat roll"),
-    (10, "optimum against pitch speed"),
-    (11, "optimum against pitch spin"),
-    (12, "optimum against wind"),
-    (13, "range against E at fixed ψ, points A and B"),
-    (14, "C_D against time for A and B"),
-];
-
-/// Fig. 13's points A and B, named by the batted spin the paper gives them.
-const POINT_A_SPIN: f64 = 182.4;
-const POINT_B_SPIN: f64 = 308.3;
 
 /// One table cell: a number, a label, or nothing (null in JSON).
 enum Cell {

@@ -8,6 +8,7 @@
 pub mod bench;
 pub mod cli;
 pub mod model;
+pub mod paper;
 pub mod precision;
 pub mod preset;
 pub mod solve;
