@@ -6,14 +6,13 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
+use crate::figures::{self, Cell, Figure, FigureData, FigureError, SurfaceFigure, trimmed};
 use crate::model::pitch;
 use crate::model::scene::Scene;
-use crate::paper::{
-    Best, FIGURES, POINT_A_SPIN, POINT_B_SPIN, Table2Row, best_swing, table2_rows, tolerance,
-};
+use crate::paper::{self, Best, Table2Row, best_swing, table2_rows, tolerance};
 use crate::precision::Purpose;
 use crate::preset::{self, Preset, Source};
-use crate::solve::optimize::{self, OptimizerSettings};
+use crate::solve::optimize::OptimizerSettings;
 use crate::study::{self, Grid};
 
 #[derive(Parser, Debug)]
@@ -668,12 +667,6 @@ fn sweep(
     Ok(out)
 }
 
-/// A swept value to six decimals, without trailing zeros.
-fn trimmed(value: f64) -> String {
-    let text = format!("{value:.6}");
-    text.trim_end_matches('0').trim_end_matches('.').to_owned()
-}
-
 /// Parses "A..B" (a window) for `flag`, inside `bounds`.
 fn parse_window(flag: &str, text: &str, bounds: (f64, f64)) -> Result<(f64, f64), UsageError> {
     let bad = |why: &str| {
@@ -736,7 +729,11 @@ fn parse_grid(undercut: &str, swing_angle: &str, grid: &str) -> Result<Grid, Usa
 }
 
 fn surface(scene: &Scene, grid: Grid, format: Format) -> String {
-    let surface = study::surface(scene, grid, Purpose::Surface);
+    render_surface(&study::surface(scene, grid, Purpose::Surface), format)
+}
+
+fn render_surface(surface: &study::Surface, format: Format) -> String {
+    let grid = surface.grid;
     let undercuts: Vec<f64> = (0..grid.columns).map(|i| grid.undercut_at(i)).collect();
     let swing_angles: Vec<f64> = (0..grid.rows).map(|j| grid.swing_angle_at(j)).collect();
     let best = surface.best();
@@ -844,59 +841,8 @@ fn presets(dir: Option<&std::path::Path>) -> String {
     out
 }
 
-// `homerun figure N`: the data behind the paper's Figs. 3–14, computed by the
-// core and the studies, in a form to plot beside the paper's.
-
-/// One table cell: a number, a label, or nothing (null in JSON).
-enum Cell {
-    Num(f64),
-    Text(String),
-    Blank,
-}
-
-struct Column {
-    /// Name in JSON and CSV.
-    key: String,
-    /// Heading in the text table, with the unit.
-    head: String,
-    /// Decimals in the text table (JSON and CSV keep every digit).
-    decimals: usize,
-}
-
-fn column(key: &str, head: &str, decimals: usize) -> Column {
-    Column {
-        key: key.to_owned(),
-        head: head.to_owned(),
-        decimals,
-    }
-}
-
-/// A number the paper states about the figure, beside ours.
-struct Comparison {
-    what: String,
-    unit: &'static str,
-    paper: f64,
-    ours: f64,
-}
-
-fn compare(what: &str, unit: &'static str, paper: f64, ours: f64) -> Comparison {
-    Comparison {
-        what: what.to_owned(),
-        unit,
-        paper,
-        ours,
-    }
-}
-
-struct FigureData {
-    number: u32,
-    title: String,
-    conditions: String,
-    columns: Vec<Column>,
-    rows: Vec<Vec<Cell>>,
-    comparisons: Vec<Comparison>,
-    notes: Vec<String>,
-}
+// `homerun figure N`: the data behind the paper's Figs. 3–14, from
+// `crate::figures`, printed as text, CSV or JSON.
 
 fn figure(
     number: u32,
@@ -905,653 +851,55 @@ fn figure(
     dir: Option<&std::path::Path>,
     format: Format,
 ) -> Result<String, UsageError> {
-    if !FIGURES.iter().any(|(n, _)| *n == number) {
-        let list: Vec<String> = FIGURES
-            .iter()
-            .map(|(n, what)| format!("{n} {what}"))
-            .collect();
-        return Err(UsageError::Other(format!(
-            "figure {number}: no such figure; accepted 3 to 14: {}",
-            list.join(", ")
-        )));
-    }
-    let default = if matches!(number, 5 | 6) {
-        "figure5"
-    } else {
-        "fastball"
-    };
+    let other = |e: FigureError| UsageError::Other(e.to_string());
+    figures::known(number).map_err(other)?;
     let args = SceneArgs {
-        preset: preset.unwrap_or(default).to_owned(),
+        preset: preset.unwrap_or(paper::figure_preset(number)).to_owned(),
         set: set.to_vec(),
     };
     let preset = args.resolve(dir)?;
-    let scene = preset.scene;
-    let conditions = conditions(&preset.name, &scene);
-    let data = match number {
-        3 => figure3(&scene),
-        4 => figure4(),
-        5 | 6 => impact_figure(number, &scene),
-        7 => return Ok(figure7(&scene, conditions, format)),
-        8..=12 => sweep_figure(number, &scene)?,
-        13 => figure13(&scene),
-        _ => figure14(&scene),
-    };
-    Ok(FigureData { conditions, ..data }.render(format))
-}
-
-/// The inputs a figure was computed with, in one line.
-fn conditions(name: &str, s: &Scene) -> String {
-    format!(
-        "preset {name}: pitch {} m/s, spin {} rad/s; bat {} m/s, roll {} rad/s, E {} m, ψ {} rad, μ {}; wind {} m/s; drag {}",
-        trimmed(s.pitch.speed),
-        trimmed(s.pitch.spin),
-        trimmed(s.bat.speed),
-        trimmed(s.bat.spin),
-        trimmed(s.bat.undercut),
-        trimmed(s.bat.swing_angle),
-        trimmed(s.bat.friction),
-        trimmed(s.environment.wind),
-        s.drag
+    Ok(
+        match figures::figure_data(number, &preset.scene, &preset.name).map_err(other)? {
+            Figure::Table(data) => data.render(format),
+            Figure::Surface(surface) => figure7(&surface, format),
+        },
     )
 }
 
-/// Where `f` changes value in [lo, hi], to well below a micrometre in E;
-/// `None` if it has the same value at both ends.
-fn bisect(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> bool) -> Option<f64> {
-    let at_lo = f(lo);
-    if at_lo == f(hi) {
-        return None;
-    }
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if f(mid) == at_lo {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Some(0.5 * (lo + hi))
-}
-
-/// The grid `base` with the marked points added, sorted; a mark that falls
-/// on a grid point labels it.
-fn with_marks(base: Vec<f64>, marks: Vec<(f64, String)>) -> Vec<(f64, String)> {
-    let mut all: Vec<(f64, String)> = base.into_iter().map(|x| (x, String::new())).collect();
-    for (x, label) in marks {
-        match all
-            .iter_mut()
-            .find(|(y, _)| (x - *y).abs() <= 1e-9 * x.abs().max(1e-6))
-        {
-            Some((_, existing)) if existing.is_empty() => *existing = label,
-            Some((_, existing)) => *existing = format!("{existing}; {label}"),
-            None => all.push((x, label)),
-        }
-    }
-    all.sort_by(|a, b| a.0.total_cmp(&b.0));
-    all
-}
-
-fn mark_cell(label: &str) -> Cell {
-    if label.is_empty() {
-        Cell::Blank
-    } else {
-        Cell::Text(label.to_owned())
-    }
-}
-
-fn figure3(scene: &Scene) -> FigureData {
-    let model = scene.drag;
-    let speed_per_re = scene.environment.kinematic_viscosity / (2.0 * scene.ball.radius);
-    let mut marks: Vec<(f64, String)> = model
-        .kinks()
-        .iter()
-        .map(|&re| (re, "kink".to_owned()))
-        .collect();
-    marks.push((208_000.0, "Dryden's point (paper: C_D = 0.3)".to_owned()));
-    let rows = with_marks(study::linspace(50_000.0, 300_000.0, 26), marks)
-        .into_iter()
-        .map(|(re, mark)| {
-            vec![
-                Cell::Num(re),
-                Cell::Num(re * speed_per_re),
-                Cell::Num(model.drag_coefficient(re)),
-                mark_cell(&mark),
-            ]
-        })
-        .collect();
-    FigureData {
-        number: 3,
-        title: format!(
-            "drag coefficient C_D against Reynolds number Re = 2|V_r|r_b/ν (model {}: {})",
-            model,
-            model.description()
-        ),
-        conditions: String::new(),
-        columns: vec![
-            column("reynolds", "Re", 0),
-            column("air_speed", "|V_r| (m/s)", 2),
-            column("drag_coefficient", "C_D", 4),
-            column("mark", "", 0),
-        ],
-        rows,
-        comparisons: vec![
-            compare(
-                "C_D at the floor of the crisis, Re = 165 000",
-                "",
-                0.15,
-                model.drag_coefficient(165_000.0),
-            ),
-            compare(
-                "C_D at Re = 208 000 (Dryden, recovering)",
-                "",
-                0.30,
-                model.drag_coefficient(208_000.0),
-            ),
-            compare(
-                "air speed at Re = 160 000, where drag falls",
-                "m/s",
-                32.0,
-                160_000.0 * speed_per_re,
-            ),
-        ],
-        notes: vec![
-            "The paper gives its fit only as a figure; ours is reconstructed (see DragModel)."
-                .to_owned(),
-        ],
-    }
-}
-
-fn figure4() -> FigureData {
-    let rows = with_marks(
-        study::linspace(0.0, 1.0, 21),
-        vec![(0.1, "kink: 1.5S below, 0.09 + 0.6S above".to_owned())],
-    )
-    .into_iter()
-    .map(|(s, mark)| {
-        vec![
-            Cell::Num(s),
-            Cell::Num(crate::model::aero::lift_coefficient(s)),
-            mark_cell(&mark),
-        ]
-    })
-    .collect();
-    FigureData {
-        number: 4,
-        title: "lift coefficient C_L against spin parameter S = r_b|ω|/|V_r| (Eq. 29, the bilinear fit)"
-            .to_owned(),
-        conditions: String::new(),
-        columns: vec![
-            column("spin_parameter", "S", 3),
-            column("lift_coefficient", "C_L", 4),
-            column("mark", "", 0),
-        ],
-        rows,
-        comparisons: Vec::new(),
-        notes: vec![
-            "Eq. 29 is the paper's own formula, so ours is the paper's line; the measured points of Fig. 4 are not reproduced."
-                .to_owned(),
-        ],
-    }
-}
-
-/// The impact of `scene` with its swing's undercut set to `undercut` and μ to `friction`.
-fn impact_with(scene: &Scene, undercut: f64, friction: f64) -> crate::model::impact::Impact {
-    let mut s = *scene;
-    s.bat.undercut = undercut;
-    s.bat.friction = friction;
-    crate::model::impact::Impact::new(&s)
-}
-
-/// Figs. 5 (ω_bf) and 6 (ζ) against E for μ = 0.05, 0.35, 0.5, with the
-/// cusp where slip halts exactly at separation.
-fn impact_figure(number: u32, scene: &Scene) -> FigureData {
-    use crate::model::impact::Regime;
-    const FRICTIONS: [f64; 3] = [0.05, 0.35, 0.5];
-    let reach = scene.ball.radius + scene.bat.radius;
-    let top = 0.07_f64.min(reach * (1.0 - 1e-9));
-    let cusp = |friction: f64| {
-        bisect(0.0, top, |e| {
-            impact_with(scene, e, friction).regime == Regime::Stick
-        })
-    };
-    let cusps: Vec<Option<f64>> = FRICTIONS.iter().map(|&mu| cusp(mu)).collect();
-    let mut marks: Vec<(f64, String)> = FRICTIONS
-        .iter()
-        .zip(&cusps)
-        .filter_map(|(mu, c)| c.map(|e| (e, format!("cusp μ = {mu}: slip halts at separation"))))
-        .collect();
-    // Fig. 5: 1000 rad/s on the rising side (below the cusp, where spin peaks).
-    let thousand = cusps[2]
-        .and_then(|c| {
-            bisect(0.0, c, |e| {
-                impact_with(scene, e, 0.5).launch_spin() > 1000.0
-            })
-        })
-        // A jump across 1000 rad/s is not a crossing.
-        .filter(|&e| (impact_with(scene, e, 0.5).launch_spin() - 1000.0).abs() < 0.1);
-    if number == 5 {
-        marks.extend(thousand.map(|e| (e, "1000 rad/s at μ = 0.5".to_owned())));
-    } else {
-        marks.push((0.040, "E = 0.040 m (paper's ζ)".to_owned()));
-    }
-    let grid = with_marks(study::linspace(0.0, top, 29), marks);
-    let undercuts: Vec<f64> = grid.iter().map(|g| g.0).collect();
-    let curves = study::impact_curves(scene, &FRICTIONS, &undercuts);
-    let value = |p: &study::ImpactPoint| {
-        if number == 5 {
-            p.launch_spin
-        } else {
-            p.launch_angle
-        }
-    };
-    let rows = grid
-        .iter()
-        .enumerate()
-        .map(|(k, (e, mark))| {
-            let mut row = vec![Cell::Num(*e)];
-            row.extend(curves.iter().map(|c| Cell::Num(value(&c.points[k]))));
-            row.push(mark_cell(mark));
-            row
-        })
-        .collect();
-    let (what, key, decimals) = if number == 5 {
-        ("ω_bf (rad/s)", "launch_spin", 1)
-    } else {
-        ("ζ (rad)", "launch_angle", 4)
-    };
-    let mut columns = vec![column("undercut", "E (m)", 5)];
-    columns.extend(FRICTIONS.iter().map(|mu| Column {
-        key: format!("{key}_mu_{mu}"),
-        head: format!("{what} μ={mu}"),
-        decimals,
-    }));
-    columns.push(column("mark", "", 0));
-    let mut comparisons = Vec::new();
-    let mut notes = Vec::new();
-    if let Some(c) = cusps[1] {
-        comparisons.push(compare(
-            if number == 5 {
-                "μ = 0.35: slip halts during impact below E"
-            } else {
-                "μ = 0.35 and 0.5 give the same ζ up to E"
-            },
-            "m",
-            0.064,
-            c,
-        ));
-    }
-    if number == 5 {
-        if let Some(e) = thousand {
-            comparisons.push(compare(
-                "E for 1000 rad/s of backspin (μ = 0.5)",
-                "m",
-                0.068,
-                e,
-            ));
-        }
-        notes.push(
-            "The paper prints the μ = 0.35 threshold as \"E = 0.64\", a misprint for 0.064 m."
-                .to_owned(),
-        );
-    } else {
-        let zeta = |mu| impact_with(scene, 0.040, mu).launch_angle();
-        let (realistic, slippery) = (zeta(0.5), zeta(0.05));
-        comparisons.push(compare(
-            "ζ at E = 0.040 m, μ = 0.35–0.5",
-            "rad",
-            0.731,
-            realistic,
-        ));
-        comparisons.push(compare(
-            "ζ at E = 0.040 m, μ = 0.05",
-            "rad",
-            0.881,
-            slippery,
-        ));
-        comparisons.push(compare(
-            "their difference",
-            "°",
-            8.6,
-            (slippery - realistic).to_degrees(),
-        ));
-    }
-    for (mu, c) in FRICTIONS.iter().zip(&cusps) {
-        if c.is_none() {
-            let regime = impact_with(scene, 0.0, *mu).regime;
-            notes.push(format!(
-                "μ = {mu}: no cusp below E = {top:.4} m ({} throughout)",
-                if regime == Regime::Stick {
-                    "slip halts"
-                } else {
-                    "slips"
-                }
-            ));
-        }
-    }
-    FigureData {
-        number,
-        title: if number == 5 {
-            "batted spin ω_bf (rad/s, backspin positive) against undercut E (m), impact only, for μ = 0.05, 0.35, 0.5"
-        } else {
-            "launch angle ζ (rad) against undercut E (m), impact only, for μ = 0.05, 0.35, 0.5"
-        }
-        .to_owned(),
-        conditions: String::new(),
-        columns,
-        rows,
-        comparisons,
-        notes,
-    }
-}
-
-/// Fig. 7: the `surface` command's range surface over the paper's window,
-/// with the optimiser's optimum (point O).
-fn figure7(scene: &Scene, conditions: String, format: Format) -> String {
-    let body = surface(scene, Grid::figure7(21, 17), format);
-    let o = optimize::optimize(scene, OptimizerSettings::default());
-    let title = "range (m) over undercut E (m) and swing angle ψ (rad), the window of Fig. 7";
+/// Fig. 7: the `surface` command's output, with the optimum O beside the paper's.
+fn figure7(figure: &SurfaceFigure, format: Format) -> String {
+    let body = render_surface(&figure.surface, format);
+    let o = &figure.optimum;
+    let (undercut, swing_angle, range) = figure.paper;
     match format {
         Format::Csv => body,
         Format::Json => {
             let surface: serde_json::Value =
                 serde_json::from_str(&body).expect("the surface's own JSON");
             pretty(&serde_json::json!({
-                "figure": 7,
-                "title": title,
-                "conditions": conditions,
+                "figure": figure.number,
+                "title": figure.title,
+                "conditions": figure.conditions,
                 "surface": surface,
                 "optimum": {
                     "undercut": o.undercut, "swing_angle": o.swing_angle, "range": o.range,
                 },
-                "paper": {"undercut": 0.0265, "swing_angle": 0.159, "range": 134.80},
+                "paper": {"undercut": undercut, "swing_angle": swing_angle, "range": range},
             }))
         }
         Format::Text => {
-            let mut out = format!("Fig. 7: {title}\n{conditions}\n");
+            let mut out = format!(
+                "Fig. {}: {}\n{}\n",
+                figure.number, figure.title, figure.conditions
+            );
             out.push_str(&body);
             let _ = writeln!(
                 out,
-                "optimum O (Nelder–Mead): E = {:.4} m, ψ = {:.4} rad, range {:.2} m; paper: E = 0.0265 m, ψ = 0.159 rad, 134.80 m",
+                "optimum O (Nelder–Mead): E = {:.4} m, ψ = {:.4} rad, range {:.2} m; paper: E = {undercut:.4} m, ψ = {swing_angle:.3} rad, {range:.2} m",
                 o.undercut, o.swing_angle, o.range
             );
             out
         }
-    }
-}
-
-/// Figs. 8–12: the optimum against one input, as the paper varied it.
-fn sweep_figure(number: u32, scene: &Scene) -> Result<FigureData, UsageError> {
-    let (key, from, to, what) = match number {
-        8 => ("bat.speed", 20.0, 45.0, "bat speed V_B0 (m/s)"),
-        9 => ("bat.spin", 0.0, 60.0, "bat roll ω_B0 (rad/s)"),
-        10 => ("pitch.speed", 35.0, 45.0, "pitch speed V_b0 (m/s)"),
-        11 => (
-            "pitch.spin",
-            -200.0,
-            200.0,
-            "pitch spin ω_b0 (rad/s, topspin positive)",
-        ),
-        _ => (
-            "environment.wind",
-            -10.0,
-            10.0,
-            "wind V_w (m/s, tailwind positive)",
-        ),
-    };
-    let values = study::linspace(from, to, 11);
-    let points = study::sweep(scene, key, &values, OptimizerSettings::default())
-        .map_err(|e| UsageError::Other(e.to_string()))?;
-    let current = Scene::key(key).map(|k| (k.get)(scene)).ok();
-    let rows = points
-        .iter()
-        .map(|p| {
-            let mut mark = Vec::new();
-            if current.is_some_and(|c| (c - p.value).abs() < 1e-9) {
-                mark.push("the preset's value");
-            }
-            if !p.converged {
-                mark.push("not converged");
-            }
-            vec![
-                Cell::Num(p.value),
-                Cell::Num(p.undercut),
-                Cell::Num(p.swing_angle),
-                Cell::Num(p.range),
-                Cell::Num(p.launch_speed),
-                Cell::Num(p.launch_spin),
-                Cell::Num(p.launch_angle),
-                mark_cell(&mark.join("; ")),
-            ]
-        })
-        .collect();
-    let at = |value: f64| points.iter().find(|p| (p.value - value).abs() < 1e-9);
-    let gain = |a: f64, b: f64| at(b).zip(at(a)).map(|(b, a)| b.range - a.range);
-    let mut comparisons = Vec::new();
-    let mut notes = Vec::new();
-    match number {
-        8 => {
-            if let Some(g) = gain(27.5, 32.5) {
-                comparisons.push(compare(
-                    "range gained per 1 m/s of bat speed near 30 m/s",
-                    "m",
-                    5.0,
-                    g / 5.0,
-                ));
-            }
-            let level = points.windows(2).find_map(|w| {
-                (w[0].swing_angle > 0.0 && w[1].swing_angle <= 0.0).then(|| {
-                    w[0].value
-                        + (w[1].value - w[0].value) * w[0].swing_angle
-                            / (w[0].swing_angle - w[1].swing_angle)
-                })
-            });
-            if let Some(v) = level {
-                comparisons.push(compare(
-                    "bat speed where a level swing (ψ_opt = 0) becomes optimal",
-                    "m/s",
-                    42.0,
-                    v,
-                ));
-            }
-            notes.push(
-                "paper: \"nearly 5 m\" per 1 m/s; ψ_opt falls to 0 at 42 m/s and below it after."
-                    .to_owned(),
-            );
-        }
-        9 => {
-            if let Some(g) = gain(0.0, 60.0) {
-                comparisons.push(compare("range gained by 60 rad/s of roll", "m", 1.8, g));
-            }
-        }
-        10 => {
-            if let Some(g) = gain(35.0, 45.0) {
-                comparisons.push(compare(
-                    "range gained from 35 to 45 m/s (\"about 3 m\")",
-                    "m",
-                    3.0,
-                    g,
-                ));
-            }
-        }
-        11 => {
-            if let Some(g) = gain(-200.0, 200.0) {
-                comparisons.push(compare(
-                    "range gained from −200 to 200 rad/s (\"about 8 m\")",
-                    "m",
-                    8.0,
-                    g,
-                ));
-            }
-            notes.push("paper: E_opt and ψ_opt both fall as pitched topspin grows.".to_owned());
-        }
-        _ => {
-            if let (Some(head), Some(tail)) = (at(-10.0), at(10.0)) {
-                notes.push(format!(
-                    "paper: with a tailwind the optimum undercuts more; ours: E_opt {:.5} m at −10 m/s, {:.5} m at +10 m/s",
-                    head.undercut, tail.undercut
-                ));
-            }
-        }
-    }
-    let unit = Scene::key(key).map(|k| k.unit).unwrap_or("");
-    Ok(FigureData {
-        number,
-        title: format!("the optimum (E_opt m, ψ_opt rad, range m) and its launch against {what}"),
-        conditions: String::new(),
-        columns: vec![
-            column(&key.replace('.', "_"), &format!("{key} ({unit})"), 2),
-            column("undercut", "E_opt (m)", 5),
-            column("swing_angle", "ψ_opt (rad)", 4),
-            column("range", "range (m)", 2),
-            column("launch_speed", "V_bf (m/s)", 2),
-            column("launch_spin", "ω_bf (rad/s)", 1),
-            column("launch_angle", "ζ (rad)", 4),
-            column("mark", "", 0),
-        ],
-        rows,
-        comparisons,
-        notes,
-    })
-}
-
-/// Fig. 13's A and B: the undercuts, at the scene's ψ, that give the batted
-/// spins the paper states; `None` where the spin is out of reach.
-fn points_a_b(scene: &Scene) -> [Option<f64>; 2] {
-    let reach = scene.ball.radius + scene.bat.radius;
-    let spin_at = |e| impact_with(scene, e, scene.bat.friction).launch_spin();
-    [POINT_A_SPIN, POINT_B_SPIN].map(|spin| {
-        bisect(0.0, 0.06_f64.min(reach * (1.0 - 1e-9)), |e| {
-            spin_at(e) > spin
-        })
-        // A jump across the spin is not a crossing.
-        .filter(|&e| (spin_at(e) - spin).abs() < 0.01)
-    })
-}
-
-fn figure13(scene: &Scene) -> FigureData {
-    let [a, b] = points_a_b(scene);
-    let mut marks = Vec::new();
-    marks.extend(a.map(|e| (e, format!("A ({POINT_A_SPIN} rad/s)"))));
-    marks.extend(b.map(|e| (e, format!("B ({POINT_B_SPIN} rad/s)"))));
-    let reach = scene.ball.radius + scene.bat.radius;
-    let grid = with_marks(study::linspace(0.0, 0.05_f64.min(reach * 0.99), 26), marks);
-    let undercuts: Vec<f64> = grid.iter().map(|g| g.0).collect();
-    let slice = study::slice(scene, scene.bat.swing_angle, &undercuts, Purpose::Readout);
-    let best = slice
-        .iter()
-        .map(|p| p.range)
-        .fold(f64::NEG_INFINITY, f64::max);
-    let rows = slice
-        .iter()
-        .zip(&grid)
-        .map(|(p, (_, mark))| {
-            let mark = if p.range == best {
-                if mark.is_empty() {
-                    "highest".to_owned()
-                } else {
-                    format!("{mark}; highest")
-                }
-            } else {
-                mark.clone()
-            };
-            vec![
-                Cell::Num(p.undercut),
-                Cell::Num(p.range),
-                Cell::Num(p.launch_speed),
-                Cell::Num(p.launch_spin),
-                Cell::Num(p.launch_angle),
-                mark_cell(&mark),
-            ]
-        })
-        .collect();
-    let mut comparisons = Vec::new();
-    let find = |e: f64| slice.iter().find(|p| p.undercut == e);
-    if let (Some(pa), Some(pb)) = (a.and_then(find), b.and_then(find)) {
-        comparisons.extend([
-            compare("A: V_bf", "m/s", 44.34, pa.launch_speed),
-            compare("A: ζ", "rad", 0.448, pa.launch_angle),
-            compare("B: V_bf", "m/s", 43.63, pb.launch_speed),
-            compare("B: ζ", "rad", 0.615, pb.launch_angle),
-            compare(
-                "undercut from A to B",
-                "mm",
-                6.5,
-                (pb.undercut - pa.undercut) * 1000.0,
-            ),
-            compare("range of A less range of B", "m", 7.3, pa.range - pb.range),
-        ]);
-    }
-    FigureData {
-        number: 13,
-        title: format!(
-            "range (m) against undercut E (m) at ψ = {} rad, with launch; A and B are the E giving ω_bf = {POINT_A_SPIN} and {POINT_B_SPIN} rad/s",
-            trimmed(scene.bat.swing_angle)
-        ),
-        conditions: String::new(),
-        columns: vec![
-            column("undercut", "E (m)", 5),
-            column("range", "range (m)", 2),
-            column("launch_speed", "V_bf (m/s)", 2),
-            column("launch_spin", "ω_bf (rad/s)", 1),
-            column("launch_angle", "ζ (rad)", 4),
-            column("mark", "", 0),
-        ],
-        rows,
-        comparisons,
-        notes: Vec::new(),
-    }
-}
-
-fn figure14(scene: &Scene) -> FigureData {
-    let mut rows = Vec::new();
-    let mut notes = Vec::new();
-    for (name, e) in ["A", "B"].into_iter().zip(points_a_b(scene)) {
-        let Some(e) = e else {
-            notes.push(format!("{name}: no undercut gives its batted spin here"));
-            continue;
-        };
-        let mut s = *scene;
-        s.bat.undercut = e;
-        let (summary, points) = study::drag_along_flight(&s, 31, Purpose::Plot);
-        rows.extend(points.iter().map(|p| {
-            vec![
-                Cell::Text(name.to_owned()),
-                Cell::Num(p.time),
-                Cell::Num(p.drag_coefficient),
-                Cell::Num(p.x),
-                Cell::Num(p.y),
-            ]
-        }));
-        // Time at high (subcritical) drag, from a fine sampling.
-        let (_, fine) = study::drag_along_flight(&s, 2001, Purpose::Plot);
-        let dt = summary.flight_time / 2000.0;
-        let high = fine.iter().filter(|p| p.drag_coefficient > 0.45).count() as f64 * dt;
-        notes.push(format!(
-            "{name}: E = {e:.4} m, range {:.2} m in {:.2} s, {high:.2} s of it at C_D > 0.45",
-            summary.range, summary.flight_time
-        ));
-    }
-    notes.push(
-        "paper: both pass through the drag crisis rising and stay below it descending; B spends longer at high drag."
-            .to_owned(),
-    );
-    FigureData {
-        number: 14,
-        title: format!(
-            "drag coefficient C_D against time t (s) along the flights of Fig. 13's A and B (ψ = {} rad), with the path x, y (m)",
-            trimmed(scene.bat.swing_angle)
-        ),
-        conditions: String::new(),
-        columns: vec![
-            column("point", "point", 0),
-            column("time", "t (s)", 3),
-            column("drag_coefficient", "C_D", 4),
-            column("x", "x (m)", 2),
-            column("y", "y (m)", 2),
-        ],
-        rows,
-        comparisons: Vec::new(),
-        notes,
     }
 }
 

@@ -7,6 +7,7 @@
 
 pub mod bench;
 pub mod cli;
+pub mod figures;
 pub mod model;
 pub mod paper;
 pub mod precision;
