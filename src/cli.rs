@@ -8,12 +8,15 @@ use clap::{Args, Parser, Subcommand};
 
 use crate::figures::{self, Cell, Figure, FigureData, FigureError, SurfaceFigure, trimmed};
 use crate::model::pitch;
+use crate::model::scene::InputError;
 use crate::model::scene::Scene;
 use crate::paper::{self, Best, Table2Row, best_swing, table2_rows, tolerance};
 use crate::precision::Purpose;
 use crate::preset::{self, Preset, Source};
 use crate::solve::optimize::OptimizerSettings;
+use crate::study::SweepError;
 use crate::study::{self, Grid};
+use crate::tui::TuiError;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -166,9 +169,54 @@ pub enum UsageError {
     #[error(transparent)]
     Preset(#[from] preset::PresetError),
     #[error(transparent)]
-    Input(#[from] crate::model::scene::InputError),
-    #[error("{0}")]
-    Other(String),
+    Input(#[from] InputError),
+    #[error(transparent)]
+    Sweep(#[from] SweepError),
+    #[error(transparent)]
+    Figure(#[from] FigureError),
+    #[error(transparent)]
+    Tui(#[from] TuiError),
+    #[error("--set {assignment:?}: expected KEY=VALUE, e.g. bat.speed=32")]
+    BadAssignment { assignment: String },
+    #[error("--steps {steps}: must be an integer in [1, {max}]", max = MAX_STEPS)]
+    BadSteps { steps: usize },
+    #[error("--samples {samples}: must be a whole number in [2, {max}]", max = MAX_SAMPLES)]
+    BadSamples { samples: usize },
+    #[error(
+        "{flag} {text:?}: {fault}; expected A..B with finite A < B in {accepted}, e.g. {example}"
+    )]
+    BadWindow {
+        flag: &'static str,
+        text: String,
+        fault: WindowFault,
+        /// The accepted interval, with its unit.
+        accepted: String,
+        example: &'static str,
+    },
+    #[error(
+        "--grid {text:?}: expected NxM, columns (undercut) x rows (swing angle), each an integer in [1, {max}], e.g. 21x17",
+        max = MAX_GRID
+    )]
+    BadGrid { text: String },
+    #[error("this command opens the explorer; it is not a headless command")]
+    NotHeadless,
+    #[error("writing the output: {0}")]
+    Output(#[source] std::io::Error),
+}
+
+/// What is wrong with an A..B window.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum WindowFault {
+    #[error("no `..`")]
+    NoDots,
+    #[error("{0:?} is not a number")]
+    NotANumber(String),
+    #[error("not finite")]
+    NotFinite,
+    #[error("A must be below B")]
+    Reversed,
+    #[error("out of range")]
+    OutOfRange,
 }
 
 impl SceneArgs {
@@ -176,11 +224,12 @@ impl SceneArgs {
     pub fn resolve(&self, presets_dir: Option<&std::path::Path>) -> Result<Preset, UsageError> {
         let mut preset = preset::load(&self.preset, presets_dir)?;
         for assignment in &self.set {
-            let (key, value) = assignment.split_once('=').ok_or_else(|| {
-                UsageError::Other(format!(
-                    "--set {assignment:?}: expected KEY=VALUE, e.g. bat.speed=32"
-                ))
-            })?;
+            let (key, value) =
+                assignment
+                    .split_once('=')
+                    .ok_or_else(|| UsageError::BadAssignment {
+                        assignment: assignment.clone(),
+                    })?;
             preset.scene.set_text(key.trim(), value)?;
         }
         preset.scene.validate()?;
@@ -202,9 +251,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
         .write_all(text.as_bytes())
         .and_then(|()| stdout.flush())
     {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
-            Err(UsageError::Other(format!("writing the output: {e}")))
-        }
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
         _ => Ok(()),
     }
 }
@@ -269,11 +316,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             dir,
             Format::new(*json, *csv),
         ),
-        // The explorer, and any command that is not headless.
-        #[allow(unreachable_patterns)]
-        _ => Err(UsageError::Other(
-            "this command opens the explorer; it is not a headless command".into(),
-        )),
+        Command::Tui { .. } => Err(UsageError::NotHeadless),
     }
 }
 
@@ -599,13 +642,10 @@ fn sweep(
     format: Format,
 ) -> Result<String, UsageError> {
     if !(1..=MAX_STEPS).contains(&steps) {
-        return Err(UsageError::Other(format!(
-            "--steps {steps}: must be an integer in [1, {MAX_STEPS}]"
-        )));
+        return Err(UsageError::BadSteps { steps });
     }
     let values = study::linspace(from, to, steps);
-    let points = study::sweep(scene, key, &values, OptimizerSettings::default())
-        .map_err(|e| UsageError::Other(e.to_string()))?;
+    let points = study::sweep(scene, key, &values, OptimizerSettings::default())?;
     let unit = Scene::key(key).map(|k| k.unit).unwrap_or("");
     let mut out = String::new();
     match format {
@@ -668,32 +708,42 @@ fn sweep(
 }
 
 /// Parses "A..B" (a window) for `flag`, inside `bounds`.
-fn parse_window(flag: &str, text: &str, bounds: (f64, f64)) -> Result<(f64, f64), UsageError> {
-    let bad = |why: &str| {
+fn parse_window(
+    flag: &'static str,
+    text: &str,
+    bounds: (f64, f64),
+) -> Result<(f64, f64), UsageError> {
+    let bad = |fault| {
         let (accepted, example) = if flag == "--undercut" {
             (format!("[{}, {}] m", bounds.0, bounds.1), "0..0.05")
         } else {
             ("[-π/2, π/2] rad".to_owned(), "-0.6..1.0")
         };
-        UsageError::Other(format!(
-            "{flag} {text:?}: {why}; expected A..B with finite A < B in {accepted}, e.g. {example}"
-        ))
+        UsageError::BadWindow {
+            flag,
+            text: text.to_owned(),
+            fault,
+            accepted,
+            example,
+        }
     };
-    let (a, b) = text.split_once("..").ok_or_else(|| bad("no `..`"))?;
+    let (a, b) = text
+        .split_once("..")
+        .ok_or_else(|| bad(WindowFault::NoDots))?;
     let parse = |s: &str| {
         s.trim()
             .parse::<f64>()
-            .map_err(|_| bad(&format!("{:?} is not a number", s.trim())))
+            .map_err(|_| bad(WindowFault::NotANumber(s.trim().to_owned())))
     };
     let (a, b) = (parse(a)?, parse(b)?);
     if !(a.is_finite() && b.is_finite()) {
-        return Err(bad("not finite"));
+        return Err(bad(WindowFault::NotFinite));
     }
     if a >= b {
-        return Err(bad("A must be below B"));
+        return Err(bad(WindowFault::Reversed));
     }
     if a < bounds.0 || b > bounds.1 {
-        return Err(bad("out of range"));
+        return Err(bad(WindowFault::OutOfRange));
     }
     Ok((a, b))
 }
@@ -706,10 +756,8 @@ fn parse_grid(undercut: &str, swing_angle: &str, grid: &str) -> Result<Grid, Usa
     };
     let undercut = parse_window("--undercut", undercut, key_bounds("bat.undercut"))?;
     let swing_angle = parse_window("--swing-angle", swing_angle, key_bounds("bat.swing_angle"))?;
-    let bad = || {
-        UsageError::Other(format!(
-            "--grid {grid:?}: expected NxM, columns (undercut) x rows (swing angle), each an integer in [1, {MAX_GRID}], e.g. 21x17"
-        ))
+    let bad = || UsageError::BadGrid {
+        text: grid.to_owned(),
     };
     let (columns, rows) = grid
         .to_ascii_lowercase()
@@ -851,15 +899,14 @@ fn figure(
     dir: Option<&std::path::Path>,
     format: Format,
 ) -> Result<String, UsageError> {
-    let other = |e: FigureError| UsageError::Other(e.to_string());
-    figures::known(number).map_err(other)?;
+    figures::known(number)?;
     let args = SceneArgs {
         preset: preset.unwrap_or(paper::figure_preset(number)).to_owned(),
         set: set.to_vec(),
     };
     let preset = args.resolve(dir)?;
     Ok(
-        match figures::figure_data(number, &preset.scene, &preset.name).map_err(other)? {
+        match figures::figure_data(number, &preset.scene, &preset.name)? {
             Figure::Table(data) => data.render(format),
             Figure::Surface(surface) => figure7(&surface, format),
         },
@@ -1059,12 +1106,13 @@ impl FigureData {
     }
 }
 
+/// The most points `trajectory` samples.
+pub const MAX_SAMPLES: usize = 100_000;
+
 /// The flight at readout precision, sampled from the dense output.
 fn trajectory(scene: &Scene, samples: usize, format: Format) -> Result<String, UsageError> {
-    if !(2..=100_000).contains(&samples) {
-        return Err(UsageError::Other(format!(
-            "--samples {samples}: must be a whole number in [2, 100000]"
-        )));
+    if !(2..=MAX_SAMPLES).contains(&samples) {
+        return Err(UsageError::BadSamples { samples });
     }
     let impact = crate::model::impact::Impact::new(scene);
     let (flight, launch) = crate::model::launch(scene, &impact);
