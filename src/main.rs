@@ -26,5 +26,5 @@ fn main() -> ExitCode {
 fn explore(cli: &Cli, preset: &str) -> Result<(), cli::UsageError> {
     let dir = cli::presets_dir(cli);
     let preset = homerun::preset::load(preset, dir.as_deref())?;
-    homerun::tui::run(preset, dir).map_err(|e| cli::UsageError::Other(e.to_string()))
+    Ok(homerun::tui::run(preset, dir)?)
 }

@@ -2,7 +2,7 @@
 
 mod common;
 
-use homerun::cli::{CURVE_LAUNCH_SPEED, TABLE2, table2_rows, tolerance};
+use homerun::analysis::paper::{CURVE_LAUNCH_SPEED, TABLE2, table2_rows, tolerance};
 use homerun::model::impact::Impact;
 use homerun::solve::optimize::{OptimizerSettings, optimize};
 use homerun::{Purpose, range};

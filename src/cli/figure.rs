@@ -1,0 +1,179 @@
+//! `figure N`: the data behind one of the paper's figures, from
+//! [`crate::analysis::figures`], printed as text, CSV or JSON.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use super::optimize::{render_surface, surface_json};
+use super::table::{Align, Cell, Column, Digits, Table, Width, trim_lines};
+use super::{Format, SceneArgs, UsageError, pretty};
+use crate::analysis::figures::{self, Figure, FigureData, SurfaceFigure};
+use crate::analysis::paper;
+
+pub(super) fn figure(
+    number: u32,
+    preset: Option<&str>,
+    set: &[String],
+    dir: Option<&Path>,
+    format: Format,
+) -> Result<String, UsageError> {
+    // An unknown figure is reported before any preset error.
+    figures::known(number)?;
+    let args = SceneArgs {
+        preset: preset.unwrap_or(paper::figure_preset(number)).to_owned(),
+        set: set.to_vec(),
+    };
+    let preset = args.resolve(dir)?;
+    Ok(
+        match figures::figure_data(number, &preset.scene, &preset.name)? {
+            Figure::Table(data) => render(&data, format),
+            Figure::Surface(surface) => render_figure7(&surface, format),
+        },
+    )
+}
+
+/// Fig. 7: the `surface` command's output, with the optimum O beside the paper's.
+fn render_figure7(figure: &SurfaceFigure, format: Format) -> String {
+    let o = &figure.optimum;
+    let (undercut, swing_angle, range) = figure.paper;
+    match format {
+        Format::Csv => render_surface(&figure.surface, format),
+        Format::Json => pretty(&serde_json::json!({
+            "figure": figure.number,
+            "title": figure.title,
+            "conditions": figure.conditions,
+            "surface": reparsed(&surface_json(&figure.surface)),
+            "optimum": {
+                "undercut": o.undercut, "swing_angle": o.swing_angle, "range": o.range,
+            },
+            "paper": {"undercut": undercut, "swing_angle": swing_angle, "range": range},
+        })),
+        Format::Text => {
+            let mut out = heading(figure.number, &figure.title, &figure.conditions);
+            out.push_str(&render_surface(&figure.surface, format));
+            let _ = writeln!(
+                out,
+                "optimum O (Nelder–Mead): E = {:.4} m, ψ = {:.4} rad, range {:.2} m; paper: E = {undercut:.4} m, ψ = {swing_angle:.3} rad, {range:.2} m",
+                o.undercut, o.swing_angle, o.range
+            );
+            out
+        }
+    }
+}
+
+/// `value` printed and read back, as Fig. 7 has always embedded the surface:
+/// serde_json's default parser may move a number by an ulp, so this keeps
+/// those digits (they differ from `surface --json`'s in the last place).
+fn reparsed(value: &serde_json::Value) -> serde_json::Value {
+    serde_json::from_str(&value.to_string()).expect("our own JSON")
+}
+
+fn heading(number: u32, title: &str, conditions: &str) -> String {
+    format!("Fig. {number}: {title}\n{conditions}\n")
+}
+
+/// A figure's table: a column of numbers is right-aligned, one with labels left.
+fn table(data: &FigureData) -> Table {
+    let columns = data
+        .columns
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            let numeric = data.rows.iter().all(|r| !matches!(r[k], Cell::Text(_)));
+            Column {
+                key: Some(c.key.clone()),
+                head: Some(c.head.clone()),
+                digits: Digits::Fixed(c.decimals),
+                align: if numeric { Align::Right } else { Align::Left },
+                width: Width::Fit,
+                gap: "  ",
+            }
+        })
+        .collect();
+    Table {
+        columns,
+        rows: data.rows.clone(),
+    }
+}
+
+fn render(data: &FigureData, format: Format) -> String {
+    let table = table(data);
+    match format {
+        Format::Json => json(data, &table),
+        Format::Csv => table.csv(),
+        Format::Text => text(data, table),
+    }
+}
+
+fn json(data: &FigureData, table: &Table) -> String {
+    let comparisons: Vec<serde_json::Value> = data
+        .comparisons
+        .iter()
+        .map(|c| {
+            serde_json::json!({
+                "quantity": c.what, "unit": c.unit, "paper": c.paper, "ours": c.ours,
+            })
+        })
+        .collect();
+    pretty(&serde_json::json!({
+        "figure": data.number,
+        "title": data.title,
+        "conditions": data.conditions,
+        "columns": data.columns.iter().map(|c| c.key.as_str()).collect::<Vec<_>>(),
+        "rows": table.json_rows(),
+        "paper": comparisons,
+        "notes": data.notes,
+    }))
+}
+
+fn text(data: &FigureData, mut table: Table) -> String {
+    // A number that is not finite shows as a gap.
+    for cell in table.rows.iter_mut().flatten() {
+        if matches!(cell, Cell::Num(x) if !x.is_finite()) {
+            *cell = Cell::Blank;
+        }
+    }
+    let mut out = heading(data.number, &data.title, &data.conditions);
+    out.push_str(&table.text());
+    if !data.comparisons.is_empty() {
+        out.push_str("the paper (for its own conditions, the default preset's) beside ours:\n");
+        out.push_str(&comparisons(data).text_rows());
+    }
+    for note in &data.notes {
+        let _ = writeln!(out, "{note}");
+    }
+    trim_lines(&out)
+}
+
+/// The paper's numbers beside ours, one line each.
+fn comparisons(data: &FigureData) -> Table {
+    let word = |w: &str, gap| Column::text(w, Width::AtLeast(0), Align::Left, gap);
+    let number = |width, digits| Column {
+        digits,
+        ..Column::text("", Width::AtLeast(width), Align::Left, " ")
+    };
+    Table {
+        columns: vec![
+            Column::text("", Width::Fit, Align::Left, ""),
+            word("", "  "),
+            number(8, Digits::Trimmed),
+            word("", " "),
+            number(10, Digits::Fixed(4)),
+            word("", " "),
+        ],
+        rows: data
+            .comparisons
+            .iter()
+            .map(|c| {
+                vec![
+                    Cell::Text(format!("  {}", c.what)),
+                    Cell::Text("paper".to_owned()),
+                    Cell::Num(c.paper),
+                    Cell::Text("ours".to_owned()),
+                    Cell::Num(c.ours),
+                    Cell::Text(c.unit.to_owned()),
+                ]
+            })
+            .collect(),
+    }
+}

@@ -1,0 +1,230 @@
+//! One swing: `hit` (every impact quantity and the flight summary),
+//! `trajectory` (the path, sampled) and `keys` (every input).
+
+use std::fmt::Write as _;
+
+use super::table::{Align, Cell, Column, Digits, Table, Width};
+use super::{Format, UsageError, pretty};
+use crate::Scene;
+use crate::model::aero::DragModel;
+use crate::model::impact::Impact;
+use crate::model::pitch;
+use crate::model::scene::{DRAG_KEY, KEYS};
+use crate::precision::Purpose;
+
+/// The most points `trajectory` samples.
+pub const MAX_SAMPLES: usize = 100_000;
+
+pub(super) fn hit(scene: &Scene, json: bool) -> String {
+    let swing = crate::simulate(scene, Purpose::Readout);
+    let impact = &swing.impact;
+    let flight = &swing.flight;
+    let vertical = pitch::vertical_velocity(scene.pitch.speed, scene.environment.gravity);
+    if json {
+        return pretty(&serde_json::json!({
+            "pitch": {
+                "speed": scene.pitch.speed,
+                "vertical_velocity": vertical,
+                "angle": impact.descent_angle,
+            },
+            "impact": {
+                "normal_angle": impact.normal_angle,
+                "restitution": impact.restitution,
+                "regime": impact.regime,
+                "compression_impulse": impact.compression_impulse,
+                "separation_impulse": impact.separation_impulse,
+                "stick_impulse": impact.stick_impulse(),
+                "launch_speed": impact.launch_speed(),
+                "launch_spin": impact.launch_spin(),
+                "launch_angle": impact.launch_angle(),
+            },
+            "flight": {
+                "range": flight.range,
+                "flight_time": flight.flight_time,
+                "apex": flight.apex,
+                "landing_speed": flight.landing_speed,
+                "landing_angle": flight.landing_angle,
+            },
+        }));
+    }
+    let bat = &scene.bat;
+    let descent = impact.descent_angle;
+    let stick = match impact.stick_impulse() {
+        Some(p) => format!("slip halts at p_s = {p:.4} N·s (stick)"),
+        None => "slips until separation".to_owned(),
+    };
+    let aloft = if flight.landed {
+        ""
+    } else {
+        " (still in the air at the time limit)"
+    };
+    labelled(&[
+        (
+            "pitch",
+            format!(
+                "{:.2} m/s at the plate, vertical velocity {vertical:.3} m/s, descending at {descent:.4} rad ({:.1}°)",
+                scene.pitch.speed,
+                descent.to_degrees()
+            ),
+        ),
+        (
+            "swing",
+            format!(
+                "E = {:.4} m, ψ = {:.4} rad, bat {:.2} m/s, μ = {}",
+                bat.undercut, bat.swing_angle, bat.speed, bat.friction
+            ),
+        ),
+        (
+            "impact",
+            format!(
+                "θ = {:.4} rad, v1(0) = {:.3} m/s, v3(0) = {:.3} m/s, e* = {:.4}",
+                impact.normal_angle,
+                impact.initial_slip,
+                impact.initial_approach,
+                impact.restitution
+            ),
+        ),
+        (
+            "",
+            format!(
+                "p_c = {:.4} N·s, p_f = {:.4} N·s, {stick}",
+                impact.compression_impulse, impact.separation_impulse
+            ),
+        ),
+        ("launch", launch_text(impact)),
+        (
+            "flight",
+            format!(
+                "range {:.3} m in {:.3} s, apex {:.2} m, lands at {:.2} m/s, {:.3} rad below horizontal{aloft}",
+                flight.range,
+                flight.flight_time,
+                flight.apex,
+                flight.landing_speed,
+                flight.landing_angle
+            ),
+        ),
+    ])
+}
+
+/// Lines under a label, as `hit` and `optimize` print them: "launch   …".
+pub(super) fn labelled(lines: &[(&str, String)]) -> String {
+    lines
+        .iter()
+        .map(|(label, text)| format!("{label:<9}{text}\n"))
+        .collect()
+}
+
+/// The launch: speed, spin in words and angle.
+/// "44.299 m/s, 191.83 rad/s of backspin, 0.4604 rad (26.4°)"
+pub(super) fn launch_text(impact: &Impact) -> String {
+    format!(
+        "{:.3} m/s, {}, {:.4} rad ({:.1}°)",
+        impact.launch_speed(),
+        spin_text(impact.launch_spin()),
+        impact.launch_angle(),
+        impact.launch_angle().to_degrees()
+    )
+}
+
+/// A batted spin in words: backspin is positive.
+fn spin_text(spin: f64) -> String {
+    if spin < 0.0 {
+        format!("{:.2} rad/s of topspin", -spin)
+    } else {
+        format!("{spin:.2} rad/s of backspin")
+    }
+}
+
+/// The flight at readout precision, sampled from the dense output.
+pub(super) fn trajectory(
+    scene: &Scene,
+    samples: usize,
+    format: Format,
+) -> Result<String, UsageError> {
+    if !(2..=MAX_SAMPLES).contains(&samples) {
+        return Err(UsageError::BadSamples { samples });
+    }
+    let impact = Impact::new(scene);
+    let (flight, launch) = crate::model::launch(scene, &impact);
+    let options = Purpose::Readout.flight_options();
+    let (summary, points) = crate::model::flight::trajectory(&flight, &launch, &options, samples);
+    let table = Table {
+        columns: vec![
+            Column::right("time", "t (s)", 8, Digits::Fixed(3)),
+            Column::right("x", "x (m)", 9, Digits::Fixed(3)),
+            Column::right("y", "y (m)", 8, Digits::Fixed(3)),
+            Column::right("drag_coefficient", "C_D", 6, Digits::Fixed(3)),
+        ],
+        rows: points
+            .iter()
+            .map(|p| {
+                [p.time, p.x, p.y, p.drag_coefficient]
+                    .map(Cell::Num)
+                    .to_vec()
+            })
+            .collect(),
+    };
+    Ok(match format {
+        Format::Json => pretty(&serde_json::json!({
+            "range": summary.range,
+            "flight_time": summary.flight_time,
+            "landed": summary.landed,
+            "points": table.json_rows(),
+        })),
+        Format::Csv => table.csv(),
+        Format::Text => format!(
+            "flight of {:.3} m in {:.3} s{}\n{}",
+            summary.range,
+            summary.flight_time,
+            if summary.landed {
+                ""
+            } else {
+                " (still in the air at the step limit)"
+            },
+            table.text()
+        ),
+    })
+}
+
+/// The input keys, as `--set` and the TOML presets take them.
+pub(super) fn keys() -> String {
+    let defaults = Scene::default();
+    let left = |head, width| Column::text(head, Width::AtLeast(width), Align::Left, " ");
+    let columns = vec![
+        left("key", 33),
+        left("symbol", 6),
+        left("unit", 7),
+        left("accepted", 24),
+        Column::text("fastball", Width::AtLeast(10), Align::Right, " "),
+        left("meaning", 0).after("  "),
+    ];
+    let text = |s: &str| Cell::Text(s.to_owned());
+    let mut rows: Vec<Vec<Cell>> = KEYS
+        .iter()
+        .map(|key| {
+            vec![
+                text(key.name),
+                text(key.symbol),
+                text(key.unit),
+                Cell::Text(key.bounds.to_string()),
+                Cell::Num((key.get)(&defaults)),
+                text(key.description),
+            ]
+        })
+        .collect();
+    rows.push(vec![
+        text(DRAG_KEY),
+        text("C_D"),
+        text(""),
+        Cell::Text(DragModel::ALL.map(|m| m.name()).join(" | ")),
+        text(defaults.drag.name()),
+        text("drag model"),
+    ]);
+    let mut out = Table { columns, rows }.text();
+    let _ = writeln!(
+        out,
+        "\nAlso: bat.undercut must stay below r_b + r_B in size (the bat must reach the ball), and\n\
+         pitch.speed must be fast enough for Eq. (3) to hold at the chosen gravity."
+    );
+    out
+}

@@ -1,0 +1,352 @@
+//! The headless command line: clap commands → core → text, JSON or CSV.
+//!
+//! One file per command group; every table goes through [`table`].
+
+mod figure;
+mod hit;
+mod optimize;
+mod presets;
+mod table;
+mod table2;
+
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+
+use clap::{Args, Parser, Subcommand};
+
+use crate::analysis::figures::FigureError;
+use crate::model::scene::InputError;
+use crate::preset::{self, Preset};
+use crate::study::SweepError;
+use crate::tui::TuiError;
+
+pub use optimize::{MAX_GRID, MAX_STEPS};
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "homerun",
+    version,
+    about = "The physics of hitting a baseball as far as possible (Sawicki, Hubbard & Stronge 2003).",
+    long_about = "The physics of hitting a baseball as far as possible, after Sawicki, Hubbard & Stronge, \
+                  \"How to hit home runs\", Am. J. Phys. 71 (2003).\n\n\
+                  With no command, opens the explorer (a terminal app); the commands below print numbers."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// Folder for the user's own presets (default: $XDG_CONFIG_HOME/homerun/presets).
+    #[arg(long, global = true, value_name = "DIR")]
+    pub presets_dir: Option<PathBuf>,
+}
+
+/// Which preset to start from, and changes to it.
+#[derive(Args, Debug, Clone, Default)]
+pub struct SceneArgs {
+    /// A preset name (see `homerun presets`) or a path to a TOML file.
+    #[arg(long, short, value_name = "P", default_value = "fastball")]
+    pub preset: String,
+    /// Change one input, with the same keys as the TOML (e.g. bat.speed=32).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// One swing: pitch, every impact quantity, flight summary.
+    Hit {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The batted ball's path: time, x, y and C_D, sampled evenly in time.
+    Trajectory {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// How many points, launch and landing included (2 to 100000).
+        #[arg(long, default_value_t = 51)]
+        samples: usize,
+        #[arg(long, conflicts_with = "csv")]
+        json: bool,
+        #[arg(long)]
+        csv: bool,
+    },
+    /// Every input key: symbol, unit, accepted range and the fastball's value.
+    Keys,
+    /// The undercut and swing angle that maximise range (§II.E).
+    Optimize {
+        #[command(flatten)]
+        scene: SceneArgs,
+        #[arg(long)]
+        json: bool,
+    },
+    /// Table II: the paper's numbers beside ours, with the differences.
+    Table2 {
+        #[arg(long)]
+        json: bool,
+    },
+    /// The optimum (undercut, swing angle, range) against any numeric key.
+    Sweep {
+        /// The key to sweep, e.g. bat.speed.
+        key: String,
+        #[arg(long, allow_hyphen_values = true)]
+        from: f64,
+        #[arg(long, allow_hyphen_values = true)]
+        to: f64,
+        #[arg(long, default_value_t = 11)]
+        steps: usize,
+        #[command(flatten)]
+        scene: SceneArgs,
+        #[arg(long, conflicts_with = "csv")]
+        json: bool,
+        #[arg(long)]
+        csv: bool,
+    },
+    /// The range over a grid of (undercut, swing angle), as in Fig. 7.
+    Surface {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Undercut window A..B (m).
+        #[arg(
+            long,
+            value_name = "A..B",
+            default_value = "0..0.05",
+            allow_hyphen_values = true
+        )]
+        undercut: String,
+        /// Swing-angle window C..D (rad).
+        #[arg(
+            long,
+            value_name = "C..D",
+            default_value = "-0.6..1.0",
+            allow_hyphen_values = true
+        )]
+        swing_angle: String,
+        /// Columns (undercut) x rows (swing angle).
+        #[arg(long, value_name = "NxM", default_value = "21x17")]
+        grid: String,
+        #[arg(long, conflicts_with = "csv")]
+        json: bool,
+        #[arg(long)]
+        csv: bool,
+    },
+    /// The presets and what they are.
+    Presets,
+    /// The data behind one of the paper's figures (3–14), to plot beside it.
+    Figure {
+        /// The figure's number in the paper: 3 to 14.
+        number: u32,
+        /// A preset name or TOML path (default: figure5 for Figs. 5–6, fastball otherwise).
+        #[arg(long, short, value_name = "P")]
+        preset: Option<String>,
+        /// Change one input, with the same keys as the TOML (e.g. bat.speed=32).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Print JSON: title, conditions, one object per row, the paper's numbers beside ours.
+        #[arg(long, conflicts_with = "csv")]
+        json: bool,
+        /// Print CSV: a header of column names, one line per row (to plot).
+        #[arg(long)]
+        csv: bool,
+    },
+    /// Speed against error on this machine: the work–precision tables.
+    Bench {
+        /// Print JSON, with the tables' field names.
+        #[arg(long)]
+        json: bool,
+        /// A reduced version (seconds).
+        #[arg(long)]
+        quick: bool,
+    },
+    /// Open the explorer (the default with no command).
+    Tui {
+        /// The preset to start from.
+        #[arg(long, short, value_name = "P", default_value = "fastball")]
+        preset: String,
+    },
+}
+
+/// A failure the user can fix: printed as one line, exit status 2.
+#[derive(Debug, thiserror::Error)]
+pub enum UsageError {
+    #[error(transparent)]
+    Preset(#[from] preset::PresetError),
+    #[error(transparent)]
+    Input(#[from] InputError),
+    #[error(transparent)]
+    Sweep(#[from] SweepError),
+    #[error(transparent)]
+    Figure(#[from] FigureError),
+    #[error(transparent)]
+    Tui(#[from] TuiError),
+    #[error("--set {assignment:?}: expected KEY=VALUE, e.g. bat.speed=32")]
+    BadAssignment { assignment: String },
+    #[error("--steps {steps}: must be an integer in [1, {max}]", max = MAX_STEPS)]
+    BadSteps { steps: usize },
+    #[error("--samples {samples}: must be a whole number in [2, {max}]", max = hit::MAX_SAMPLES)]
+    BadSamples { samples: usize },
+    #[error(
+        "{flag} {text:?}: {fault}; expected A..B with finite A < B in {accepted}, e.g. {example}"
+    )]
+    BadWindow {
+        flag: &'static str,
+        text: String,
+        fault: WindowFault,
+        /// The accepted interval, with its unit.
+        accepted: String,
+        example: &'static str,
+    },
+    #[error(
+        "--grid {text:?}: expected NxM, columns (undercut) x rows (swing angle), each an integer in [1, {max}], e.g. 21x17",
+        max = MAX_GRID
+    )]
+    BadGrid { text: String },
+    #[error("this command opens the explorer; it is not a headless command")]
+    NotHeadless,
+    #[error("writing the output: {0}")]
+    Output(#[source] std::io::Error),
+}
+
+/// What is wrong with an A..B window.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum WindowFault {
+    #[error("no `..`")]
+    NoDots,
+    #[error("{0:?} is not a number")]
+    NotANumber(String),
+    #[error("not finite")]
+    NotFinite,
+    #[error("A must be below B")]
+    Reversed,
+    #[error("out of range")]
+    OutOfRange,
+}
+
+impl SceneArgs {
+    /// The preset, with every `--set` applied, validated.
+    pub fn resolve(&self, presets_dir: Option<&Path>) -> Result<Preset, UsageError> {
+        let mut preset = preset::load(&self.preset, presets_dir)?;
+        for assignment in &self.set {
+            let (key, value) =
+                assignment
+                    .split_once('=')
+                    .ok_or_else(|| UsageError::BadAssignment {
+                        assignment: assignment.clone(),
+                    })?;
+            preset.scene.set_text(key.trim(), value)?;
+        }
+        preset.scene.validate()?;
+        Ok(preset)
+    }
+}
+
+/// The user's preset folder: `--presets-dir` or the XDG default.
+pub fn presets_dir(cli: &Cli) -> Option<PathBuf> {
+    cli.presets_dir.clone().or_else(preset::user_dir)
+}
+
+/// Runs a headless command, writing to stdout. A closed pipe (`| head`)
+/// ends the output quietly.
+pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
+    let text = render(cli, command)?;
+    let mut stdout = std::io::stdout().lock();
+    match stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
+        _ => Ok(()),
+    }
+}
+
+/// The output of a headless command, as text.
+pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
+    let dir = presets_dir(cli);
+    let dir = dir.as_deref();
+    match command {
+        Command::Hit { scene, json } => Ok(hit::hit(&scene.resolve(dir)?.scene, *json)),
+        Command::Optimize { scene, json } => {
+            Ok(optimize::optimum(&scene.resolve(dir)?.scene, *json))
+        }
+        Command::Table2 { json } => Ok(table2::table2(*json)),
+        Command::Bench { json, quick } => Ok(crate::bench::output(*json, *quick)),
+        Command::Sweep {
+            key,
+            from,
+            to,
+            steps,
+            scene,
+            json,
+            csv,
+        } => optimize::sweep(
+            &scene.resolve(dir)?.scene,
+            key,
+            (*from, *to, *steps),
+            Format::new(*json, *csv),
+        ),
+        Command::Surface {
+            scene,
+            undercut,
+            swing_angle,
+            grid,
+            json,
+            csv,
+        } => {
+            let scene = scene.resolve(dir)?.scene;
+            let grid = optimize::parse_grid(undercut, swing_angle, grid)?;
+            Ok(optimize::surface(&scene, grid, Format::new(*json, *csv)))
+        }
+        Command::Presets => Ok(presets::presets(preset::check_dir(dir)?)),
+        Command::Keys => Ok(hit::keys()),
+        Command::Trajectory {
+            scene,
+            samples,
+            json,
+            csv,
+        } => hit::trajectory(
+            &scene.resolve(dir)?.scene,
+            *samples,
+            Format::new(*json, *csv),
+        ),
+        Command::Figure {
+            number,
+            preset,
+            set,
+            json,
+            csv,
+        } => figure::figure(
+            *number,
+            preset.as_deref(),
+            set,
+            dir,
+            Format::new(*json, *csv),
+        ),
+        Command::Tui { .. } => Err(UsageError::NotHeadless),
+    }
+}
+
+/// How a command prints: text for people, JSON or CSV for programs.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Format {
+    Text,
+    Json,
+    Csv,
+}
+
+impl Format {
+    fn new(json: bool, csv: bool) -> Format {
+        if json {
+            Format::Json
+        } else if csv {
+            Format::Csv
+        } else {
+            Format::Text
+        }
+    }
+}
+
+/// Pretty JSON, with a final newline.
+fn pretty(value: &serde_json::Value) -> String {
+    serde_json::to_string_pretty(value).expect("plain numbers") + "\n"
+}
