@@ -11,7 +11,7 @@ use super::view::{self, ColorMode};
 use super::worker::{Job, Report};
 use crate::model::aero::DragModel;
 use crate::model::flight;
-use crate::model::impact::{Impact, Regime};
+use crate::model::impact::Impact;
 use crate::model::scene::{DRAG_KEY, KEYS, Scene};
 use crate::precision::Purpose;
 use crate::preset::{self, Fence, Preset, PresetError, Source};
@@ -105,54 +105,6 @@ pub struct SurfaceState {
     /// The inputs it was computed for; older than the app's while the
     /// surface for new inputs is being computed.
     pub generation: u64,
-}
-
-/// A stop of the impact step-through: a name and a normal impulse p.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Stop {
-    pub name: &'static str,
-    pub impulse: f64,
-}
-
-/// The phases of the collision in order of impulse (paper Fig. 2).
-pub fn impact_stops(impact: &Impact) -> Vec<Stop> {
-    let (pc, pf) = (impact.compression_impulse, impact.separation_impulse);
-    let mut stops = vec![
-        Stop {
-            name: "approach",
-            impulse: 0.0,
-        },
-        Stop {
-            name: "compression",
-            impulse: 0.5 * pc,
-        },
-        Stop {
-            name: "max compression",
-            impulse: pc,
-        },
-        Stop {
-            name: "restitution",
-            impulse: 0.5 * (pc + pf),
-        },
-        Stop {
-            name: "separation",
-            impulse: pf,
-        },
-    ];
-    if impact.regime == Regime::Stick {
-        stops.push(Stop {
-            name: "slip halts, stick",
-            impulse: impact.slip_halt_impulse,
-        });
-    }
-    stops.sort_by(|a, b| a.impulse.total_cmp(&b.impulse));
-    stops
-}
-
-/// The heatmap's window: the paper's Fig. 7, E from 0 to 50 mm, ψ from
-/// −0.6 to 1.0 rad.
-pub fn heatmap_window() -> Grid {
-    Grid::figure7(2, 2)
 }
 
 /// The explorer.
@@ -266,7 +218,7 @@ impl App {
         self.dirty = true;
         self.swing = simulate(&self.scene, Purpose::Readout);
         self.path = self.plot_path(&self.scene);
-        let stops = impact_stops(&self.swing.impact).len();
+        let stops = self.swing.impact.stops().len();
         self.impact_stop = self.impact_stop.min(stops - 1);
         self.generation += 1;
         // A stale optimum is never shown; the old surface stays, marked
@@ -280,7 +232,7 @@ impl App {
             generation: self.generation,
             scene: self.scene,
             start,
-            window: heatmap_window(),
+            window: Grid::explorer_window(),
             resolution: view::heatmap_resolution(self.size),
         });
     }
@@ -314,9 +266,7 @@ impl App {
                 });
                 if done {
                     self.warm_start = Some((best.undercut, best.swing_angle));
-                    let mut scene = self.scene;
-                    scene.bat.undercut = best.undercut;
-                    scene.bat.swing_angle = best.swing_angle;
+                    let scene = self.scene.with_swing(best.undercut, best.swing_angle);
                     self.optimal_path = self.plot_path(&scene);
                 }
             }
@@ -429,7 +379,7 @@ impl App {
             KeyCode::Char('2') => self.tab = Tab::Surface,
             KeyCode::Char('3') => self.tab = Tab::Impact,
             KeyCode::Char('.') | KeyCode::Char('>') => {
-                let last = impact_stops(&self.swing.impact).len() - 1;
+                let last = self.swing.impact.stops().len() - 1;
                 self.impact_stop = (self.impact_stop + 1).min(last);
             }
             KeyCode::Char(',') | KeyCode::Char('<') => {
@@ -642,8 +592,7 @@ impl App {
     /// Moves the swing to the optimum found (key `r`).
     fn reset_to_optimum(&mut self) {
         if let Some(o) = self.optimum.filter(|o| o.done) {
-            self.scene.bat.undercut = o.best.undercut;
-            self.scene.bat.swing_angle = o.best.swing_angle;
+            self.scene = self.scene.with_swing(o.best.undercut, o.best.swing_angle);
             self.inputs_changed = true;
         } else {
             self.message = Some(("no optimum yet for these inputs".into(), true));

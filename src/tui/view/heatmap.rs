@@ -10,8 +10,8 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
 use super::{dim, title_style};
-use crate::study::Surface;
-use crate::tui::app::{App, heatmap_window};
+use crate::study::{Grid, Surface};
+use crate::tui::app::App;
 
 const Y_LABELS: u16 = 6;
 const BAR: u16 = 9;
@@ -82,7 +82,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     if plot.width < 4 || plot.height < 2 {
         return;
     }
-    let window = heatmap_window();
+    let window = Grid::explorer_window();
     let inner = Block::bordered().inner(area);
     // Axis labels: ψ on the left (top, bottom), E along the bottom.
     let buf = frame.buffer_mut();

@@ -10,11 +10,11 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph};
 
 use super::{dim, title_style};
-use crate::tui::app::{App, impact_stops};
+use crate::tui::app::App;
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let impact = &app.swing.impact;
-    let stops = impact_stops(impact);
+    let stops = impact.stops();
     let stop = stops[app.impact_stop.min(stops.len() - 1)];
     let block = Block::bordered().title(Span::styled(
         format!(
