@@ -7,7 +7,8 @@ use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModif
 use ratatui::layout::Rect;
 use ratatui_textarea::TextArea;
 
-use super::view::{self, ColorMode};
+use super::theme::ColorMode;
+use super::view;
 use super::worker::{Job, Report};
 use crate::model::aero::DragModel;
 use crate::model::flight;

@@ -6,6 +6,7 @@
 //! terminal: set up, event loop, and restoring it on every way out.
 
 pub mod app;
+pub mod theme;
 pub mod view;
 pub mod worker;
 
@@ -23,7 +24,7 @@ use ratatui::layout::Rect;
 
 use crate::preset::Preset;
 use app::App;
-use view::ColorMode;
+use theme::ColorMode;
 use worker::Worker;
 
 /// Why the explorer did not run.

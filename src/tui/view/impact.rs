@@ -4,13 +4,12 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph};
 
-use super::{dim, title_style};
 use crate::tui::app::App;
+use crate::tui::theme::{self, dim, title_style};
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let impact = &app.swing.impact;
@@ -65,7 +64,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         Dataset::default()
             .marker(Marker::Braille)
             .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::Blue))
+            .style(theme::COMPRESSION)
             .data(&pc_line),
     ];
     if let Some(ps) = &ps_line {
@@ -73,7 +72,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             Dataset::default()
                 .marker(Marker::Braille)
                 .graph_type(GraphType::Line)
-                .style(Style::new().fg(Color::Magenta))
+                .style(theme::STICK)
                 .data(ps),
         );
     }
@@ -81,7 +80,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         Dataset::default()
             .marker(Marker::Braille)
             .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::White))
+            .style(theme::CURSOR)
             .data(&cursor),
     );
     datasets.push(
@@ -89,7 +88,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             .name("v1 slip")
             .marker(Marker::Braille)
             .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::Cyan))
+            .style(theme::SLIP)
             .data(&slip),
     );
     datasets.push(
@@ -97,7 +96,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             .name("v3 normal")
             .marker(Marker::Braille)
             .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::Yellow))
+            .style(theme::APPROACH)
             .data(&normal),
     );
     let chart = Chart::new(datasets)
@@ -125,23 +124,23 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let s = impact.at(stop.impulse);
     let lines = vec![
         Line::from(vec![
-            Span::styled("p ", Style::new().fg(Color::White)),
+            Span::styled("p ", theme::CURSOR),
             Span::raw(format!("{:.3} N·s  ", stop.impulse)),
-            Span::styled("p_s ", Style::new().fg(Color::Magenta)),
+            Span::styled("p_s ", theme::STICK),
             Span::raw(
                 impact
                     .stick_impulse()
                     .map_or("— (slips) ".to_owned(), |p| format!("{p:.3}  ")),
             ),
-            Span::styled("p_c ", Style::new().fg(Color::Blue)),
+            Span::styled("p_c ", theme::COMPRESSION),
             Span::raw(format!("{:.3}  ", impact.compression_impulse)),
             Span::styled("p_f ", dim()),
             Span::raw(format!("{pf:.3}")),
         ]),
         Line::from(vec![
-            Span::styled("v1 slip ", Style::new().fg(Color::Cyan)),
+            Span::styled("v1 slip ", theme::SLIP),
             Span::raw(format!("{:+.2}  ", s.slip_velocity)),
-            Span::styled("v3 normal ", Style::new().fg(Color::Yellow)),
+            Span::styled("v3 normal ", theme::APPROACH),
             Span::raw(format!("{:+.2} m/s", s.normal_velocity)),
         ]),
         Line::from(vec![

@@ -10,50 +10,12 @@ mod trajectory;
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Tabs};
 
 use super::app::{App, Mode, Tab};
+use super::theme::{self, dim};
 use crate::model::scene::Key;
-
-/// How many colours the terminal shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ColorMode {
-    TrueColor,
-    /// The xterm 256-colour palette: the heatmap is quantised to its 6×6×6 cube.
-    Indexed,
-}
-
-impl ColorMode {
-    /// Truecolor only when the terminal says so (`COLORTERM`); 256 colours
-    /// otherwise, which every terminal and tmux over SSH shows.
-    pub fn detect() -> ColorMode {
-        match std::env::var("COLORTERM") {
-            Ok(v) if v.contains("truecolor") || v.contains("24bit") => ColorMode::TrueColor,
-            _ => ColorMode::Indexed,
-        }
-    }
-
-    pub fn rgb(self, (r, g, b): (u8, u8, u8)) -> Color {
-        match self {
-            ColorMode::TrueColor => Color::Rgb(r, g, b),
-            ColorMode::Indexed => {
-                // The cube's levels are 0, 95, 135, 175, 215, 255.
-                let level = |c: u8| -> u8 {
-                    if c < 48 {
-                        0
-                    } else if c < 115 {
-                        1
-                    } else {
-                        ((c as u16 - 35) / 40).min(5) as u8
-                    }
-                };
-                Color::Indexed(16 + 36 * level(r) + 6 * level(g) + level(b))
-            }
-        }
-    }
-}
 
 /// The smallest screen the explorer draws on.
 pub const MIN_SIZE: (u16, u16) = (60, 16);
@@ -147,14 +109,6 @@ pub fn format_value(key: &Key, value: f64) -> String {
     if text == "-0" { "0".to_owned() } else { text }
 }
 
-pub fn title_style() -> Style {
-    Style::new().add_modifier(Modifier::BOLD)
-}
-
-pub fn dim() -> Style {
-    Style::new().fg(Color::DarkGray)
-}
-
 /// Draws the whole screen from the app's state.
 pub fn draw(frame: &mut Frame, app: &App) {
     let area = frame.area();
@@ -176,7 +130,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
         frame.render_widget(
             Tabs::new(Tab::ALL.iter().map(|t| t.title()))
                 .select(selected)
-                .highlight_style(Style::new().add_modifier(Modifier::REVERSED))
+                .highlight_style(theme::SELECTED)
                 .divider("│"),
             tabs,
         );
@@ -214,15 +168,14 @@ fn status_line(frame: &mut Frame, area: Rect, app: &App) {
         Some(o) if o.done => Span::raw(format!("· optimum ✓ {} evals ", o.evaluations)),
         Some(o) => Span::styled(
             format!("· optimising… {} evals ", o.evaluations),
-            Style::new().fg(Color::Yellow),
+            theme::BUSY,
         ),
-        None => Span::styled("· optimising… ", Style::new().fg(Color::Yellow)),
+        None => Span::styled("· optimising… ", theme::BUSY),
     });
     spans.push(match &app.surface {
-        Some(s) if s.generation != app.generation => Span::styled(
-            "· surface stale, updating… ",
-            Style::new().fg(Color::Yellow),
-        ),
+        Some(s) if s.generation != app.generation => {
+            Span::styled("· surface stale, updating… ", theme::BUSY)
+        }
         Some(s) if s.last => Span::raw(format!(
             "· surface ✓ {}×{} ",
             s.surface.grid.columns, s.surface.grid.rows
@@ -232,9 +185,9 @@ fn status_line(frame: &mut Frame, area: Rect, app: &App) {
                 "· surface {}×{}, refining… ",
                 s.surface.grid.columns, s.surface.grid.rows
             ),
-            Style::new().fg(Color::Yellow),
+            theme::BUSY,
         ),
-        None => Span::styled("· surface… ", Style::new().fg(Color::Yellow)),
+        None => Span::styled("· surface… ", theme::BUSY),
     });
     spans.push(Span::styled("· ? help  q quit", dim()));
     frame.render_widget(Paragraph::new(Line::from(spans)), area);

@@ -2,13 +2,12 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Flex, Layout, Rect};
-use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap};
 use ratatui_textarea::TextArea;
 
-use super::{dim, title_style};
 use crate::tui::app::{App, PickItem};
+use crate::tui::theme::{self, dim, title_style};
 
 /// Every key, in the order the help shows them.
 pub const KEY_HELP: &[(&str, &str)] = &[
@@ -47,7 +46,7 @@ pub fn help(frame: &mut Frame, area: Rect) {
         .iter()
         .map(|(keys, what)| {
             Line::from(vec![
-                Span::styled(format!("{keys:<16}"), Style::new().fg(Color::Cyan)),
+                Span::styled(format!("{keys:<16}"), theme::KEY),
                 Span::raw(*what),
             ])
         })
@@ -83,10 +82,7 @@ pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Op
     );
     frame.render_widget(text, input);
     let line = match error {
-        Some(e) => Paragraph::new(Line::styled(
-            e,
-            Style::new().fg(Color::Red).add_modifier(Modifier::BOLD),
-        )),
+        Some(e) => Paragraph::new(Line::styled(e, theme::ERROR)),
         None => Paragraph::new(Line::styled(
             "letters, digits, - and _ · Enter saves · Esc cancels",
             dim(),
@@ -113,15 +109,12 @@ pub fn open(
         .iter()
         .map(|item| {
             let style = if item.preset.is_some() {
-                Style::new()
+                theme::PLAIN
             } else {
-                Style::new().fg(Color::Red)
+                theme::BROKEN
             };
             ListItem::new(Line::from(vec![
-                Span::styled(
-                    format!("{:<14}", item.name),
-                    style.add_modifier(Modifier::BOLD),
-                ),
+                Span::styled(format!("{:<14}", item.name), theme::strong(style)),
                 Span::styled(item.detail.clone(), style),
             ]))
         })
@@ -129,13 +122,13 @@ pub fn open(
     let mut state = ListState::default().with_selected(Some(selected));
     frame.render_stateful_widget(
         List::new(list)
-            .highlight_style(Style::new().add_modifier(Modifier::REVERSED))
+            .highlight_style(theme::SELECTED)
             .highlight_symbol("▶ "),
         list_area,
         &mut state,
     );
     let line = match error {
-        Some(e) => Paragraph::new(Line::styled(e, Style::new().fg(Color::Red))),
+        Some(e) => Paragraph::new(Line::styled(e, theme::BROKEN)),
         None => Paragraph::new(Line::styled("Enter loads · Esc cancels", dim())),
     };
     frame.render_widget(line.wrap(Wrap { trim: true }), message);

@@ -3,13 +3,12 @@
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
-use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType};
 
-use super::{dim, title_style};
 use crate::tui::app::App;
+use crate::tui::theme::{self, dim, title_style};
 
 /// A round axis end at or above `value`, so that the halfway label is round too.
 pub fn nice_ceiling(value: f64) -> f64 {
@@ -51,7 +50,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 .name("optimal")
                 .marker(Marker::Braille)
                 .graph_type(GraphType::Line)
-                .style(Style::new().fg(Color::Green))
+                .style(theme::OPTIMAL)
                 .data(&optimal_path),
         );
     }
@@ -60,7 +59,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             .name("this swing")
             .marker(Marker::Braille)
             .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::Cyan))
+            .style(theme::SWING)
             .data(&path),
     );
     datasets.push(
@@ -68,7 +67,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             .name("apex")
             .marker(Marker::Dot)
             .graph_type(GraphType::Scatter)
-            .style(Style::new().fg(Color::Yellow))
+            .style(theme::APEX)
             .data(&apex),
     );
     datasets.push(
@@ -76,7 +75,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             .name("landing")
             .marker(Marker::Block)
             .graph_type(GraphType::Scatter)
-            .style(Style::new().fg(Color::Magenta))
+            .style(theme::LANDING)
             .data(&landing),
     );
     if app.fence.is_some() {
@@ -85,15 +84,15 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 .name("fence")
                 .marker(Marker::Braille)
                 .graph_type(GraphType::Line)
-                .style(Style::new().fg(Color::White))
+                .style(theme::FENCE)
                 .data(&fence_line),
         );
     }
     let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| Span::styled(format!("{v:.0}"), dim()));
     // The legend sits in the border, where it hides no data.
-    let mut legend = vec![Span::styled("━ now ", Style::new().fg(Color::Cyan))];
+    let mut legend = vec![Span::styled("━ now ", theme::SWING)];
     if !optimal_path.is_empty() {
-        legend.push(Span::styled("━ best ", Style::new().fg(Color::Green)));
+        legend.push(Span::styled("━ best ", theme::OPTIMAL));
     }
     let legend = Line::from(legend);
     let title = format!(
