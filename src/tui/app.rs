@@ -1,5 +1,5 @@
 //! The explorer's state, the events it understands and `update()`: the only
-//! place the state changes. Drawing (in `view`) only reads it.
+//! place the state changes. Drawing only reads it.
 
 use std::path::PathBuf;
 
@@ -7,8 +7,9 @@ use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModif
 use ratatui::layout::Rect;
 use ratatui_textarea::TextArea;
 
+use super::format::format_value;
+use super::layout::{Tab, heatmap_resolution, trajectory_samples};
 use super::theme::ColorMode;
-use super::view;
 use super::worker::{Job, Report};
 use crate::model::aero::DragModel;
 use crate::model::flight;
@@ -37,25 +38,6 @@ pub fn fields() -> Vec<Field> {
     all.extend((0..KEYS.len()).map(Field::Key));
     all.push(Field::Drag);
     all
-}
-
-/// The view shown beside the inputs on a small screen (a large one shows all).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Tab {
-    Flight,
-    Surface,
-    Impact,
-}
-
-impl Tab {
-    pub const ALL: [Tab; 3] = [Tab::Flight, Tab::Surface, Tab::Impact];
-    pub fn title(self) -> &'static str {
-        match self {
-            Tab::Flight => "1 Flight",
-            Tab::Surface => "2 Range surface",
-            Tab::Impact => "3 Impact",
-        }
-    }
 }
 
 /// A preset in the picker: loadable, or broken with its error.
@@ -234,12 +216,12 @@ impl App {
             scene: self.scene,
             start,
             window: Grid::explorer_window(),
-            resolution: view::heatmap_resolution(self.size),
+            resolution: heatmap_resolution(self.size),
         });
     }
 
     fn plot_path(&self, scene: &Scene) -> Vec<(f64, f64)> {
-        let samples = view::trajectory_samples(self.size);
+        let samples = trajectory_samples(self.size);
         let impact = Impact::new(scene);
         let (flight, launch) = crate::model::launch(scene, &impact);
         let (_, points) =
@@ -427,7 +409,7 @@ impl App {
         let current = match field {
             Field::Preset => return self.open_picker(),
             Field::Drag => self.scene.drag.name().to_owned(),
-            Field::Key(k) => view::format_value(&KEYS[k], (KEYS[k].get)(&self.scene)),
+            Field::Key(k) => format_value(&KEYS[k], (KEYS[k].get)(&self.scene)),
         };
         self.mode = Mode::Edit {
             field,

@@ -2,10 +2,15 @@
 //! calls the core; it computes nothing of its own.
 //!
 //! `app` holds the state and `update`, `view` draws it, `worker` runs the
-//! optimiser and the range surface in the background. This file owns the
-//! terminal: set up, event loop, and restoring it on every way out.
+//! optimiser and the range surface in the background. Beneath both app and
+//! view: `layout` (where the panes go), `theme` (colours and styles) and
+//! `format` (numbers as shown). Every arrow points down: `view` reads `app`,
+//! and `app` never reads `view`. This file owns the terminal: set up, event
+//! loop, and restoring it on every way out.
 
 pub mod app;
+pub mod format;
+pub mod layout;
 pub mod theme;
 pub mod view;
 pub mod worker;

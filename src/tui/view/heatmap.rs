@@ -11,21 +11,8 @@ use ratatui::widgets::{Block, Paragraph};
 
 use crate::study::{Grid, Surface};
 use crate::tui::app::App;
+use crate::tui::layout::{HEATMAP_BAR, heatmap_plot};
 use crate::tui::theme::{self, dim, ramp, title_style};
-
-const Y_LABELS: u16 = 6;
-const BAR: u16 = 9;
-
-/// The part of the pane covered by pixels.
-pub fn plot_area(area: Rect) -> Rect {
-    let inner = Block::bordered().inner(area);
-    Rect::new(
-        inner.x + Y_LABELS,
-        inner.y,
-        inner.width.saturating_sub(Y_LABELS + BAR),
-        inner.height.saturating_sub(1),
-    )
-}
 
 /// The surface's value at pixel (px, py) of a w×h picture, py from the top.
 fn sample(surface: &Surface, px: usize, py: usize, w: usize, h: usize) -> Option<f64> {
@@ -55,7 +42,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     };
     let block = Block::bordered().title(Span::styled(title, title_style()));
     frame.render_widget(block, area);
-    let plot = plot_area(area);
+    let plot = heatmap_plot(area);
     if plot.width < 4 || plot.height < 2 {
         return;
     }
@@ -169,7 +156,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     );
 
     // The colour bar, top = max.
-    let bar = Rect::new(plot.right() + 1, plot.y, BAR - 1, plot.height);
+    let bar = Rect::new(plot.right() + 1, plot.y, HEATMAP_BAR - 1, plot.height);
     let [_, bar_area] = Layout::horizontal([Constraint::Length(0), Constraint::Fill(1)]).areas(bar);
     for row in 0..bar_area.height {
         let t = 1.0 - row as f64 / (bar_area.height.max(2) - 1) as f64;

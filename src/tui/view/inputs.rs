@@ -6,9 +6,9 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Wrap};
 
-use super::format_value;
 use crate::model::scene::KEYS;
 use crate::tui::app::{App, Field, Mode};
+use crate::tui::format::format_value;
 use crate::tui::theme::{self, dim, title_style};
 
 fn section(field: Field) -> &'static str {

@@ -9,105 +9,13 @@ mod readout;
 mod trajectory;
 
 use ratatui::Frame;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Tabs};
 
-use super::app::{App, Mode, Tab};
+use super::app::{App, Mode};
+use super::layout::{MIN_SIZE, Tab, layout};
 use super::theme::{self, dim};
-use crate::model::scene::Key;
-
-/// The smallest screen the explorer draws on.
-pub const MIN_SIZE: (u16, u16) = (60, 16);
-
-/// Where each pane goes; `None` for a pane not shown at this size and tab.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Panes {
-    pub inputs: Rect,
-    pub tabs: Option<Rect>,
-    pub trajectory: Option<Rect>,
-    pub readout: Option<Rect>,
-    pub heatmap: Option<Rect>,
-    pub impact: Option<Rect>,
-    pub status: Rect,
-}
-
-/// Whether everything fits at once.
-pub fn is_wide(area: Rect) -> bool {
-    area.width >= 140 && area.height >= 40
-}
-
-const READOUT_HEIGHT: u16 = 9;
-
-pub fn layout(area: Rect, tab: Tab) -> Panes {
-    let [body, status] = Layout::vertical([Constraint::Fill(1), Constraint::Length(1)]).areas(area);
-    let inputs_width = if is_wide(area) { 44 } else { 30 };
-    let [inputs, right] =
-        Layout::horizontal([Constraint::Length(inputs_width), Constraint::Fill(1)]).areas(body);
-    let mut panes = Panes {
-        inputs,
-        status,
-        ..Panes::default()
-    };
-    if is_wide(area) {
-        let [top, bottom] =
-            Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
-        let [trajectory, readout] =
-            Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(top);
-        let [heatmap, impact] =
-            Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
-        panes.trajectory = Some(trajectory);
-        panes.readout = Some(readout);
-        panes.heatmap = Some(heatmap);
-        panes.impact = Some(impact);
-    } else {
-        let [tabs, content] =
-            Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(right);
-        panes.tabs = Some(tabs);
-        match tab {
-            Tab::Flight => {
-                let [trajectory, readout] =
-                    Layout::vertical([Constraint::Fill(1), Constraint::Length(READOUT_HEIGHT)])
-                        .areas(content);
-                panes.trajectory = Some(trajectory);
-                panes.readout = Some(readout);
-            }
-            Tab::Surface => panes.heatmap = Some(content),
-            Tab::Impact => panes.impact = Some(content),
-        }
-    }
-    panes
-}
-
-/// Trajectory samples for a screen: two per braille column of the plot.
-pub fn trajectory_samples(size: Rect) -> usize {
-    let width = layout(size, Tab::Flight).trajectory.map_or(80, |r| r.width);
-    (2 * width as usize).clamp(16, 800)
-}
-
-/// The heatmap's resolution in (columns, rows) of pixels: one column per
-/// cell, two rows per line (half blocks).
-pub fn heatmap_resolution(size: Rect) -> (usize, usize) {
-    let area = layout(size, Tab::Surface).heatmap.unwrap_or(size);
-    let plot = heatmap::plot_area(area);
-    (
-        (plot.width as usize).clamp(2, 200),
-        (2 * plot.height as usize).clamp(2, 120),
-    )
-}
-
-/// A value as the inputs pane shows it: enough digits for a thousandth of
-/// the key's step, trailing zeros trimmed.
-pub fn format_value(key: &Key, value: f64) -> String {
-    let decimals = ((-key.step.log10()).ceil() as i32 + 3).clamp(0, 12) as usize;
-    let text = format!("{value:.decimals$}");
-    let text = if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_owned()
-    } else {
-        text
-    };
-    if text == "-0" { "0".to_owned() } else { text }
-}
 
 /// Draws the whole screen from the app's state.
 pub fn draw(frame: &mut Frame, app: &App) {
