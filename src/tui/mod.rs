@@ -3,13 +3,15 @@
 //!
 //! `app` holds the state and `update`, `view` draws it, `worker` runs the
 //! optimiser and the range surface in the background. Beneath both app and
-//! view: `layout` (where the panes go), `theme` (colours and styles) and
-//! `format` (numbers as shown). Every arrow points down: `view` reads `app`,
+//! view: `keymap` (every key, what it does and its help), `layout` (where
+//! the panes go), `theme` (colours and styles) and `format` (numbers as
+//! shown). Every arrow points down: `view` reads `app`,
 //! and `app` never reads `view`. This file owns the terminal: set up, event
 //! loop, and restoring it on every way out.
 
 pub mod app;
 pub mod format;
+pub mod keymap;
 pub mod layout;
 pub mod theme;
 pub mod view;

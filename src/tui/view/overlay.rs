@@ -7,29 +7,8 @@ use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap}
 use ratatui_textarea::TextArea;
 
 use crate::tui::app::{App, PickItem};
+use crate::tui::keymap;
 use crate::tui::theme::{self, dim, title_style};
-
-/// Every key, in the order the help shows them.
-pub const KEY_HELP: &[(&str, &str)] = &[
-    ("j k ↑ ↓", "move between inputs"),
-    ("h l ← →", "nudge the input by its step"),
-    ("H L  Shift+← →", "nudge ×10"),
-    ("[ ]  Alt+← →", "nudge ×0.1"),
-    ("Enter  e", "type a value (Enter accepts, Esc cancels)"),
-    ("g G", "first / last input"),
-    ("r", "move the swing (E, ψ) to the optimum"),
-    ("u", "distances in metres / feet"),
-    (
-        "Tab  1 2 3",
-        "flight / range surface / impact (small screens)",
-    ),
-    (", .", "step the impact through its phases"),
-    ("s", "save the inputs as a preset"),
-    ("o", "open a preset (bundled or saved)"),
-    ("Esc", "close a pop-up, clear the message"),
-    ("?", "this help"),
-    ("q  Ctrl-C", "quit"),
-];
 
 fn centered(area: Rect, width: u16, height: u16) -> Rect {
     let [row] = Layout::vertical([Constraint::Length(height.min(area.height))])
@@ -42,12 +21,12 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
 }
 
 pub fn help(frame: &mut Frame, area: Rect) {
-    let mut lines: Vec<Line> = KEY_HELP
-        .iter()
+    let mut lines: Vec<Line> = keymap::help()
+        .into_iter()
         .map(|(keys, what)| {
             Line::from(vec![
                 Span::styled(format!("{keys:<16}"), theme::KEY),
-                Span::raw(*what),
+                Span::raw(what),
             ])
         })
         .collect();
