@@ -4,10 +4,10 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph};
+use ratatui::widgets::{Block, Chart, Paragraph};
 
+use super::chart;
 use crate::tui::app::App;
 use crate::tui::theme::{self, dim, title_style};
 
@@ -31,18 +31,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
 
     let pf = impact.separation_impulse;
     let samples = (2 * chart_area.width as usize).clamp(8, 400);
-    let state_at = |k: usize| impact.at(pf * k as f64 / (samples - 1) as f64);
-    let slip: Vec<(f64, f64)> = (0..samples)
-        .map(|k| {
-            let s = state_at(k);
-            (s.impulse, s.slip_velocity)
-        })
+    let states: Vec<_> = (0..samples)
+        .map(|k| impact.at(pf * k as f64 / (samples - 1) as f64))
         .collect();
-    let normal: Vec<(f64, f64)> = (0..samples)
-        .map(|k| {
-            let s = state_at(k);
-            (s.impulse, s.normal_velocity)
-        })
+    let slip: Vec<(f64, f64)> = states
+        .iter()
+        .map(|s| (s.impulse, s.slip_velocity))
+        .collect();
+    let normal: Vec<(f64, f64)> = states
+        .iter()
+        .map(|s| (s.impulse, s.normal_velocity))
         .collect();
     let (lo, hi) = slip
         .iter()
@@ -56,69 +54,27 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let cursor = vertical(stop.impulse);
     let zero = [(0.0, 0.0), (pf, 0.0)];
     let mut datasets = vec![
-        Dataset::default()
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(dim())
-            .data(&zero),
-        Dataset::default()
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(theme::COMPRESSION)
-            .data(&pc_line),
+        chart::line(dim(), &zero),
+        chart::line(theme::COMPRESSION, &pc_line),
     ];
     if let Some(ps) = &ps_line {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(theme::STICK)
-                .data(ps),
-        );
+        datasets.push(chart::line(theme::STICK, ps));
     }
-    datasets.push(
-        Dataset::default()
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(theme::CURSOR)
-            .data(&cursor),
-    );
-    datasets.push(
-        Dataset::default()
-            .name("v1 slip")
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(theme::SLIP)
-            .data(&slip),
-    );
-    datasets.push(
-        Dataset::default()
-            .name("v3 normal")
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(theme::APPROACH)
-            .data(&normal),
-    );
+    datasets.push(chart::line(theme::CURSOR, &cursor));
+    datasets.push(chart::line(theme::SLIP, &slip).name("v1 slip"));
+    datasets.push(chart::line(theme::APPROACH, &normal).name("v3 normal"));
     let chart = Chart::new(datasets)
         .legend_position(None)
-        .x_axis(
-            Axis::default()
-                .title(Span::styled("p (N·s)", dim()))
-                .bounds([0.0, pf])
-                .labels([
-                    Span::styled("0", dim()),
-                    Span::styled(format!("{pf:.2}"), dim()),
-                ]),
-        )
-        .y_axis(
-            Axis::default()
-                .title(Span::styled("m/s", dim()))
-                .bounds([lo, hi])
-                .labels([
-                    Span::styled(format!("{lo:.0}"), dim()),
-                    Span::styled(format!("{hi:.0}"), dim()),
-                ]),
-        );
+        .x_axis(chart::axis(
+            "p (N·s)",
+            [0.0, pf],
+            ["0".into(), format!("{pf:.2}")],
+        ))
+        .y_axis(chart::axis(
+            "m/s",
+            [lo, hi],
+            [format!("{lo:.0}"), format!("{hi:.0}")],
+        ));
     frame.render_widget(chart, chart_area);
 
     let s = impact.at(stop.impulse);

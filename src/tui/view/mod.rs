@@ -1,6 +1,7 @@
 //! Drawing: pure functions from the app's state to a frame, one per pane.
 //! Nothing here changes the state or computes physics.
 
+mod chart;
 mod heatmap;
 mod impact;
 mod inputs;

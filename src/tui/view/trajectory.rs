@@ -5,10 +5,11 @@ use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType};
+use ratatui::widgets::{Block, Chart};
 
+use super::chart;
 use crate::tui::app::App;
-use crate::tui::theme::{self, dim, title_style};
+use crate::tui::theme::{self, title_style};
 
 /// A round axis end at or above `value`, so that the halfway label is round too.
 pub fn nice_ceiling(value: f64) -> f64 {
@@ -45,50 +46,15 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
     let mut datasets = Vec::new();
     if !optimal_path.is_empty() {
-        datasets.push(
-            Dataset::default()
-                .name("optimal")
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(theme::OPTIMAL)
-                .data(&optimal_path),
-        );
+        datasets.push(chart::line(theme::OPTIMAL, &optimal_path).name("optimal"));
     }
-    datasets.push(
-        Dataset::default()
-            .name("this swing")
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(theme::SWING)
-            .data(&path),
-    );
-    datasets.push(
-        Dataset::default()
-            .name("apex")
-            .marker(Marker::Dot)
-            .graph_type(GraphType::Scatter)
-            .style(theme::APEX)
-            .data(&apex),
-    );
-    datasets.push(
-        Dataset::default()
-            .name("landing")
-            .marker(Marker::Block)
-            .graph_type(GraphType::Scatter)
-            .style(theme::LANDING)
-            .data(&landing),
-    );
+    datasets.push(chart::line(theme::SWING, &path).name("this swing"));
+    datasets.push(chart::points(Marker::Dot, theme::APEX, &apex).name("apex"));
+    datasets.push(chart::points(Marker::Block, theme::LANDING, &landing).name("landing"));
     if app.fence.is_some() {
-        datasets.push(
-            Dataset::default()
-                .name("fence")
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(theme::FENCE)
-                .data(&fence_line),
-        );
+        datasets.push(chart::line(theme::FENCE, &fence_line).name("fence"));
     }
-    let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| Span::styled(format!("{v:.0}"), dim()));
+    let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| format!("{v:.0}"));
     // The legend sits in the border, where it hides no data.
     let mut legend = vec![Span::styled("━ now ", theme::SWING)];
     if !optimal_path.is_empty() {
@@ -106,18 +72,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 .title(Span::styled(title, title_style()))
                 .title_top(legend.right_aligned()),
         )
-        .x_axis(
-            Axis::default()
-                .title(Span::styled(format!("x ({unit})"), dim()))
-                .bounds([0.0, x_max])
-                .labels(labels(x_max)),
-        )
-        .y_axis(
-            Axis::default()
-                .title(Span::styled(format!("y ({unit})"), dim()))
-                .bounds([0.0, y_max])
-                .labels(labels(y_max)),
-        )
+        .x_axis(chart::axis(
+            format!("x ({unit})"),
+            [0.0, x_max],
+            labels(x_max),
+        ))
+        .y_axis(chart::axis(
+            format!("y ({unit})"),
+            [0.0, y_max],
+            labels(y_max),
+        ))
         .legend_position(None);
     frame.render_widget(chart, area);
 }
