@@ -142,6 +142,19 @@ const fn ch(c: char, action: Action) -> Binding {
     key(KeyCode::Char(c), action)
 }
 
+/// A nudge by `step`: its own keys (down, up), then ← → with `held`, and
+/// h l with `held` (unnamed).
+const fn nudges([down, up]: [char; 2], held: KeyModifiers, step: Step) -> [Binding; 6] {
+    [
+        ch(down, Lower(step)),
+        ch(up, Raise(step)),
+        key(Left, Lower(step)).with(held),
+        key(Right, Raise(step)).with(held),
+        ch('h', Lower(step)).with(held).alias(),
+        ch('l', Raise(step)).with(held).alias(),
+    ]
+}
+
 /// One line of the help: its keys, in the order it names them, and what
 /// they do.
 #[derive(Debug)]
@@ -150,114 +163,83 @@ pub struct Row {
     pub what: &'static str,
 }
 
+const fn row(keys: &'static [Binding], what: &'static str) -> Row {
+    Row { keys, what }
+}
+
 const SHIFT: KeyModifiers = KeyModifiers::SHIFT;
 const ALT: KeyModifiers = KeyModifiers::ALT;
 
 /// Every key, in the order the help shows them.
 pub const KEYMAP: &[Row] = &[
-    Row {
-        keys: &[
+    row(
+        &[
             ch('j', Down),
             ch('k', Up),
             key(KeyCode::Up, Up),
             key(KeyCode::Down, Down),
         ],
-        what: "move between inputs",
-    },
-    Row {
-        keys: &[
+        "move between inputs",
+    ),
+    row(
+        &[
             ch('h', Lower(Step::One)),
             ch('l', Raise(Step::One)),
             key(Left, Lower(Step::One)),
             key(Right, Raise(Step::One)),
         ],
-        what: "nudge the input by its step",
-    },
-    Row {
-        keys: &[
-            ch('H', Lower(Step::Ten)),
-            ch('L', Raise(Step::Ten)),
-            key(Left, Lower(Step::Ten)).with(SHIFT),
-            key(Right, Raise(Step::Ten)).with(SHIFT),
-            ch('h', Lower(Step::Ten)).with(SHIFT).alias(),
-            ch('l', Raise(Step::Ten)).with(SHIFT).alias(),
-        ],
-        what: "nudge ×10",
-    },
-    Row {
-        keys: &[
-            ch('[', Lower(Step::Tenth)),
-            ch(']', Raise(Step::Tenth)),
-            key(Left, Lower(Step::Tenth)).with(ALT),
-            key(Right, Raise(Step::Tenth)).with(ALT),
-            ch('h', Lower(Step::Tenth)).with(ALT).alias(),
-            ch('l', Raise(Step::Tenth)).with(ALT).alias(),
-        ],
-        what: "nudge ×0.1",
-    },
-    Row {
-        keys: &[key(Enter, Confirm), ch('e', Edit)],
-        what: "type a value (Enter accepts, Esc cancels)",
-    },
-    Row {
-        keys: &[
+        "nudge the input by its step",
+    ),
+    row(&nudges(['H', 'L'], SHIFT, Step::Ten), "nudge ×10"),
+    row(&nudges(['[', ']'], ALT, Step::Tenth), "nudge ×0.1"),
+    row(
+        &[key(Enter, Confirm), ch('e', Edit)],
+        "type a value (Enter accepts, Esc cancels)",
+    ),
+    row(
+        &[
             ch('g', First),
             ch('G', Last),
             key(Home, First).alias(),
             key(End, Last).alias(),
         ],
-        what: "first / last input",
-    },
-    Row {
-        keys: &[ch('r', ToOptimum)],
-        what: "move the swing (E, ψ) to the optimum",
-    },
-    Row {
-        keys: &[ch('u', Units)],
-        what: "distances in metres / feet",
-    },
-    Row {
-        keys: &[
+        "first / last input",
+    ),
+    row(
+        &[ch('r', ToOptimum)],
+        "move the swing (E, ψ) to the optimum",
+    ),
+    row(&[ch('u', Units)], "distances in metres / feet"),
+    row(
+        &[
             key(KeyCode::Tab, NextTab),
             key(BackTab, PreviousTab).alias(),
             ch('1', ShowTab(Tab::Flight)),
             ch('2', ShowTab(Tab::Surface)),
             ch('3', ShowTab(Tab::Impact)),
         ],
-        what: "flight / range surface / impact (small screens)",
-    },
-    Row {
-        keys: &[
+        "flight / range surface / impact (small screens)",
+    ),
+    row(
+        &[
             ch(',', PreviousStop),
             ch('.', NextStop),
             ch('<', PreviousStop).alias(),
             ch('>', NextStop).alias(),
         ],
-        what: "step the impact through its phases",
-    },
-    Row {
-        keys: &[ch('s', Save)],
-        what: "save the inputs as a preset",
-    },
-    Row {
-        keys: &[ch('o', Open)],
-        what: "open a preset (bundled or saved)",
-    },
-    Row {
-        keys: &[key(Esc, Close)],
-        what: "close a pop-up, clear the message",
-    },
-    Row {
-        keys: &[ch('?', Help)],
-        what: "this help",
-    },
-    Row {
-        keys: &[
+        "step the impact through its phases",
+    ),
+    row(&[ch('s', Save)], "save the inputs as a preset"),
+    row(&[ch('o', Open)], "open a preset (bundled or saved)"),
+    row(&[key(Esc, Close)], "close a pop-up, clear the message"),
+    row(&[ch('?', Help)], "this help"),
+    row(
+        &[
             ch('q', Quit),
             ch('c', Interrupt).with(KeyModifiers::CONTROL),
         ],
-        what: "quit",
-    },
+        "quit",
+    ),
 ];
 
 fn bindings() -> impl Iterator<Item = &'static Binding> {
@@ -320,52 +302,9 @@ pub fn help() -> Vec<(String, &'static str)> {
 mod tests {
     use super::*;
 
-    /// Every action there is; the match fails to build when one is added
-    /// and not listed here.
-    fn every_action() -> Vec<Action> {
-        let all = vec![
-            Down,
-            Up,
-            First,
-            Last,
-            Raise(Step::Tenth),
-            Raise(Step::One),
-            Raise(Step::Ten),
-            Lower(Step::Tenth),
-            Lower(Step::One),
-            Lower(Step::Ten),
-            Confirm,
-            Edit,
-            Close,
-            ToOptimum,
-            Units,
-            NextTab,
-            PreviousTab,
-            ShowTab(Tab::Flight),
-            ShowTab(Tab::Surface),
-            ShowTab(Tab::Impact),
-            NextStop,
-            PreviousStop,
-            Save,
-            Open,
-            Help,
-            Quit,
-            Interrupt,
-        ];
-        for action in &all {
-            match action {
-                Down | Up | First | Last | Raise(_) | Lower(_) | Confirm | Edit | Close
-                | ToOptimum | Units | NextTab | PreviousTab | ShowTab(_) | NextStop
-                | PreviousStop | Save | Open | Help | Quit | Interrupt => {}
-            }
-        }
-        all
-    }
-
     #[test]
     fn the_help_lists_every_action_in_the_keymap() {
         let help = help();
-        let bound = |action| bindings().any(|b| b.action == action);
         // Named in the help: one of its keys stands on its row's line.
         let listed = |action| {
             KEYMAP.iter().zip(&help).any(|(row, (keys, _))| {
@@ -375,11 +314,11 @@ mod tests {
                     .any(|b| keys.contains(&b.name()) || keys.contains(&b.glyph()))
             })
         };
-        let unlisted: Vec<Action> = every_action()
-            .into_iter()
-            .inspect(|&a| assert!(bound(a), "{a:?} has no key"))
+        let mut unlisted: Vec<Action> = bindings()
+            .map(|b| b.action)
             .filter(|&a| !listed(a))
             .collect();
+        unlisted.dedup();
         // Shift+Tab (the tabs backwards) has never been in the help; it
         // stands with Tab on its line, unnamed. Nothing else may hide.
         assert_eq!(unlisted, [PreviousTab], "{help:?}");
