@@ -253,7 +253,7 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
 
 #[test]
 fn colours_fall_back_to_the_256_colour_cube() {
-    use homerun::tui::view::ColorMode;
+    use homerun::tui::theme::ColorMode;
     use ratatui::style::Color;
     let indexed = ColorMode::Indexed;
     assert_eq!(indexed.rgb((0, 0, 0)), Color::Indexed(16));

@@ -322,3 +322,11 @@ pub fn impact_curves(scene: &Scene, frictions: &[f64], undercuts: &[f64]) -> Vec
         })
         .collect()
 }
+
+impl Grid {
+    /// The explorer's heatmap window: the paper's Fig. 7, E from 0 to 50 mm,
+    /// ψ from −0.6 to 1.0 rad (the explorer sets the resolution per job).
+    pub fn explorer_window() -> Grid {
+        Grid::figure7(2, 2)
+    }
+}

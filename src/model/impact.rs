@@ -287,3 +287,33 @@ mod tests {
         );
     }
 }
+
+/// A stop of the collision step by step: a phase's name and its normal
+/// impulse p.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stop {
+    pub name: &'static str,
+    pub impulse: f64,
+}
+
+impl Impact {
+    /// The phases of the collision in order of impulse (paper Fig. 2):
+    /// approach, compression, maximum compression (p_c), restitution and
+    /// separation (p_f), with the halt of slip (p_s) where the contact sticks.
+    pub fn stops(&self) -> Vec<Stop> {
+        let (pc, pf) = (self.compression_impulse, self.separation_impulse);
+        let stop = |name, impulse| Stop { name, impulse };
+        let mut stops = vec![
+            stop("approach", 0.0),
+            stop("compression", 0.5 * pc),
+            stop("max compression", pc),
+            stop("restitution", 0.5 * (pc + pf)),
+            stop("separation", pf),
+        ];
+        if let Some(ps) = self.stick_impulse() {
+            stops.push(stop("slip halts, stick", ps));
+        }
+        stops.sort_by(|a, b| a.impulse.total_cmp(&b.impulse));
+        stops
+    }
+}

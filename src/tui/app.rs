@@ -1,17 +1,20 @@
 //! The explorer's state, the events it understands and `update()`: the only
-//! place the state changes. Drawing (in `view`) only reads it.
+//! place the state changes. Drawing only reads it.
 
 use std::path::PathBuf;
 
-use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+use ratatui::crossterm::event::{Event, KeyEvent, KeyEventKind};
 use ratatui::layout::Rect;
 use ratatui_textarea::TextArea;
 
-use super::view::{self, ColorMode};
+use super::format::format_value;
+use super::keymap::{self, Action};
+use super::layout::{Tab, heatmap_resolution, trajectory_samples};
+use super::theme::ColorMode;
 use super::worker::{Job, Report};
 use crate::model::aero::DragModel;
 use crate::model::flight;
-use crate::model::impact::{Impact, Regime};
+use crate::model::impact::Impact;
 use crate::model::scene::{DRAG_KEY, KEYS, Scene};
 use crate::precision::Purpose;
 use crate::preset::{self, Fence, Preset, PresetError, Source};
@@ -36,25 +39,6 @@ pub fn fields() -> Vec<Field> {
     all.extend((0..KEYS.len()).map(Field::Key));
     all.push(Field::Drag);
     all
-}
-
-/// The view shown beside the inputs on a small screen (a large one shows all).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Tab {
-    Flight,
-    Surface,
-    Impact,
-}
-
-impl Tab {
-    pub const ALL: [Tab; 3] = [Tab::Flight, Tab::Surface, Tab::Impact];
-    pub fn title(self) -> &'static str {
-        match self {
-            Tab::Flight => "1 Flight",
-            Tab::Surface => "2 Range surface",
-            Tab::Impact => "3 Impact",
-        }
-    }
 }
 
 /// A preset in the picker: loadable, or broken with its error.
@@ -105,54 +89,6 @@ pub struct SurfaceState {
     /// The inputs it was computed for; older than the app's while the
     /// surface for new inputs is being computed.
     pub generation: u64,
-}
-
-/// A stop of the impact step-through: a name and a normal impulse p.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Stop {
-    pub name: &'static str,
-    pub impulse: f64,
-}
-
-/// The phases of the collision in order of impulse (paper Fig. 2).
-pub fn impact_stops(impact: &Impact) -> Vec<Stop> {
-    let (pc, pf) = (impact.compression_impulse, impact.separation_impulse);
-    let mut stops = vec![
-        Stop {
-            name: "approach",
-            impulse: 0.0,
-        },
-        Stop {
-            name: "compression",
-            impulse: 0.5 * pc,
-        },
-        Stop {
-            name: "max compression",
-            impulse: pc,
-        },
-        Stop {
-            name: "restitution",
-            impulse: 0.5 * (pc + pf),
-        },
-        Stop {
-            name: "separation",
-            impulse: pf,
-        },
-    ];
-    if impact.regime == Regime::Stick {
-        stops.push(Stop {
-            name: "slip halts, stick",
-            impulse: impact.slip_halt_impulse,
-        });
-    }
-    stops.sort_by(|a, b| a.impulse.total_cmp(&b.impulse));
-    stops
-}
-
-/// The heatmap's window: the paper's Fig. 7, E from 0 to 50 mm, ψ from
-/// −0.6 to 1.0 rad.
-pub fn heatmap_window() -> Grid {
-    Grid::figure7(2, 2)
 }
 
 /// The explorer.
@@ -266,7 +202,7 @@ impl App {
         self.dirty = true;
         self.swing = simulate(&self.scene, Purpose::Readout);
         self.path = self.plot_path(&self.scene);
-        let stops = impact_stops(&self.swing.impact).len();
+        let stops = self.swing.impact.stops().len();
         self.impact_stop = self.impact_stop.min(stops - 1);
         self.generation += 1;
         // A stale optimum is never shown; the old surface stays, marked
@@ -280,13 +216,13 @@ impl App {
             generation: self.generation,
             scene: self.scene,
             start,
-            window: heatmap_window(),
-            resolution: view::heatmap_resolution(self.size),
+            window: Grid::explorer_window(),
+            resolution: heatmap_resolution(self.size),
         });
     }
 
     fn plot_path(&self, scene: &Scene) -> Vec<(f64, f64)> {
-        let samples = view::trajectory_samples(self.size);
+        let samples = trajectory_samples(self.size);
         let impact = Impact::new(scene);
         let (flight, launch) = crate::model::launch(scene, &impact);
         let (_, points) =
@@ -314,9 +250,7 @@ impl App {
                 });
                 if done {
                     self.warm_start = Some((best.undercut, best.swing_angle));
-                    let mut scene = self.scene;
-                    scene.bat.undercut = best.undercut;
-                    scene.bat.swing_angle = best.swing_angle;
+                    let scene = self.scene.with_swing(best.undercut, best.swing_angle);
                     self.optimal_path = self.plot_path(&scene);
                 }
             }
@@ -362,80 +296,70 @@ impl App {
     }
 
     fn key(&mut self, key: KeyEvent) {
-        if key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL) {
+        let action = keymap::action(&key);
+        if action == Some(Action::Interrupt) {
             self.quit = true;
             return;
         }
         self.dirty = true;
         match std::mem::replace(&mut self.mode, Mode::Normal) {
-            Mode::Normal => self.normal_key(key),
+            Mode::Normal => {
+                // A message lasts until the next key (which may set a new one).
+                self.message = None;
+                if let Some(action) = action {
+                    self.act(action);
+                }
+            }
             Mode::Help => {}
-            Mode::Edit { field, text, error } => self.edit_key(key, field, text, error),
-            Mode::Save { text, error } => self.save_key(key, text, error),
+            Mode::Edit { field, text, error } => self.edit_key(key, action, field, text, error),
+            Mode::Save { text, error } => self.save_key(key, action, text, error),
             Mode::Open {
                 items,
                 selected,
                 error,
-            } => self.open_key(key, items, selected, error),
+            } => self.open_key(action, items, selected, error),
         }
     }
 
-    fn normal_key(&mut self, key: KeyEvent) {
-        // A message lasts until the next key (which may set a new one).
-        self.message = None;
-        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
-        let alt = key.modifiers.contains(KeyModifiers::ALT);
-        let scale = if shift {
-            10.0
-        } else if alt {
-            0.1
-        } else {
-            1.0
-        };
-        match key.code {
-            KeyCode::Char('q') => self.quit = true,
-            KeyCode::Char('?') => self.mode = Mode::Help,
-            KeyCode::Char('j') | KeyCode::Down => {
-                self.selected = (self.selected + 1).min(self.fields.len() - 1)
-            }
-            KeyCode::Char('k') | KeyCode::Up => self.selected = self.selected.saturating_sub(1),
-            KeyCode::Char('g') | KeyCode::Home => self.selected = 0,
-            KeyCode::Char('G') | KeyCode::End => self.selected = self.fields.len() - 1,
-            KeyCode::Char('l') | KeyCode::Right => self.nudge(scale),
-            KeyCode::Char('h') | KeyCode::Left => self.nudge(-scale),
-            KeyCode::Char('L') => self.nudge(10.0),
-            KeyCode::Char('H') => self.nudge(-10.0),
-            KeyCode::Char(']') => self.nudge(0.1),
-            KeyCode::Char('[') => self.nudge(-0.1),
-            KeyCode::Enter | KeyCode::Char('e') => self.start_edit(),
-            KeyCode::Char('s') => {
+    /// Does what a key asks for over the panes (no pop-up open).
+    fn act(&mut self, action: Action) {
+        match action {
+            Action::Quit | Action::Interrupt => self.quit = true,
+            Action::Help => self.mode = Mode::Help,
+            Action::Down => self.selected = (self.selected + 1).min(self.fields.len() - 1),
+            Action::Up => self.selected = self.selected.saturating_sub(1),
+            Action::First => self.selected = 0,
+            Action::Last => self.selected = self.fields.len() - 1,
+            Action::Raise(step) => self.nudge(step.factor()),
+            Action::Lower(step) => self.nudge(-step.factor()),
+            Action::Confirm | Action::Edit => self.start_edit(),
+            Action::Save => {
                 self.mode = Mode::Save {
                     text: prefilled(self.preset_name.clone()),
                     error: None,
                 };
             }
-            KeyCode::Char('o') => self.open_picker(),
-            KeyCode::Char('r') => self.reset_to_optimum(),
-            KeyCode::Char('u') => self.feet = !self.feet,
-            KeyCode::Tab => {
+            Action::Open => self.open_picker(),
+            Action::ToOptimum => self.reset_to_optimum(),
+            Action::Units => self.feet = !self.feet,
+            Action::NextTab | Action::PreviousTab => {
+                let n = Tab::ALL.len();
                 let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);
-                self.tab = Tab::ALL[(k + 1) % Tab::ALL.len()];
+                let next = if action == Action::NextTab {
+                    k + 1
+                } else {
+                    k + n - 1
+                };
+                self.tab = Tab::ALL[next % n];
             }
-            KeyCode::BackTab => {
-                let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);
-                self.tab = Tab::ALL[(k + Tab::ALL.len() - 1) % Tab::ALL.len()];
-            }
-            KeyCode::Char('1') => self.tab = Tab::Flight,
-            KeyCode::Char('2') => self.tab = Tab::Surface,
-            KeyCode::Char('3') => self.tab = Tab::Impact,
-            KeyCode::Char('.') | KeyCode::Char('>') => {
-                let last = impact_stops(&self.swing.impact).len() - 1;
+            Action::ShowTab(tab) => self.tab = tab,
+            Action::NextStop => {
+                let last = self.swing.impact.stops().len() - 1;
                 self.impact_stop = (self.impact_stop + 1).min(last);
             }
-            KeyCode::Char(',') | KeyCode::Char('<') => {
-                self.impact_stop = self.impact_stop.saturating_sub(1)
-            }
-            _ => {}
+            Action::PreviousStop => self.impact_stop = self.impact_stop.saturating_sub(1),
+            // The message is cleared already.
+            Action::Close => {}
         }
     }
 
@@ -476,7 +400,7 @@ impl App {
         let current = match field {
             Field::Preset => return self.open_picker(),
             Field::Drag => self.scene.drag.name().to_owned(),
-            Field::Key(k) => view::format_value(&KEYS[k], (KEYS[k].get)(&self.scene)),
+            Field::Key(k) => format_value(&KEYS[k], (KEYS[k].get)(&self.scene)),
         };
         self.mode = Mode::Edit {
             field,
@@ -488,13 +412,14 @@ impl App {
     fn edit_key(
         &mut self,
         key: KeyEvent,
+        action: Option<Action>,
         field: Field,
         mut text: TextArea<'static>,
         error: Option<String>,
     ) {
-        match key.code {
-            KeyCode::Esc => {}
-            KeyCode::Enter => {
+        match action {
+            Some(Action::Close) => {}
+            Some(Action::Confirm) => {
                 let typed = text.lines().join("");
                 let name = match field {
                     Field::Key(k) => KEYS[k].name,
@@ -524,10 +449,16 @@ impl App {
         }
     }
 
-    fn save_key(&mut self, key: KeyEvent, mut text: TextArea<'static>, error: Option<String>) {
-        match key.code {
-            KeyCode::Esc => {}
-            KeyCode::Enter => {
+    fn save_key(
+        &mut self,
+        key: KeyEvent,
+        action: Option<Action>,
+        mut text: TextArea<'static>,
+        error: Option<String>,
+    ) {
+        match action {
+            Some(Action::Close) => {}
+            Some(Action::Confirm) => {
                 let name = text.lines().join("").trim().to_owned();
                 match self.save(&name) {
                     Ok(path) => {
@@ -595,17 +526,17 @@ impl App {
 
     fn open_key(
         &mut self,
-        key: KeyEvent,
+        action: Option<Action>,
         items: Vec<PickItem>,
         selected: usize,
         error: Option<String>,
     ) {
         let last = items.len().saturating_sub(1);
-        let (selected, error) = match key.code {
-            KeyCode::Esc | KeyCode::Char('q') => return,
-            KeyCode::Char('j') | KeyCode::Down => ((selected + 1).min(last), None),
-            KeyCode::Char('k') | KeyCode::Up => (selected.saturating_sub(1), None),
-            KeyCode::Enter => match items.get(selected).and_then(|i| i.preset.clone()) {
+        let (selected, error) = match action {
+            Some(Action::Close | Action::Quit) => return,
+            Some(Action::Down) => ((selected + 1).min(last), None),
+            Some(Action::Up) => (selected.saturating_sub(1), None),
+            Some(Action::Confirm) => match items.get(selected).and_then(|i| i.preset.clone()) {
                 Some(preset) => {
                     self.load(preset);
                     return;
@@ -642,8 +573,7 @@ impl App {
     /// Moves the swing to the optimum found (key `r`).
     fn reset_to_optimum(&mut self) {
         if let Some(o) = self.optimum.filter(|o| o.done) {
-            self.scene.bat.undercut = o.best.undercut;
-            self.scene.bat.swing_angle = o.best.swing_angle;
+            self.scene = self.scene.with_swing(o.best.undercut, o.best.swing_angle);
             self.inputs_changed = true;
         } else {
             self.message = Some(("no optimum yet for these inputs".into(), true));

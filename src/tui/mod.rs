@@ -2,10 +2,18 @@
 //! calls the core; it computes nothing of its own.
 //!
 //! `app` holds the state and `update`, `view` draws it, `worker` runs the
-//! optimiser and the range surface in the background. This file owns the
-//! terminal: set up, event loop, and restoring it on every way out.
+//! optimiser and the range surface in the background. Beneath both app and
+//! view: `keymap` (every key, what it does and its help), `layout` (where
+//! the panes go), `theme` (colours and styles) and `format` (numbers as
+//! shown). Every arrow points down: `view` reads `app`,
+//! and `app` never reads `view`. This file owns the terminal: set up, event
+//! loop, and restoring it on every way out.
 
 pub mod app;
+pub mod format;
+pub mod keymap;
+pub mod layout;
+pub mod theme;
 pub mod view;
 pub mod worker;
 
@@ -23,7 +31,7 @@ use ratatui::layout::Rect;
 
 use crate::preset::Preset;
 use app::App;
-use view::ColorMode;
+use theme::ColorMode;
 use worker::Worker;
 
 /// Why the explorer did not run.

@@ -6,7 +6,8 @@ use std::path::PathBuf;
 
 use homerun::preset;
 use homerun::tui::app::App;
-use homerun::tui::view::{self, ColorMode};
+use homerun::tui::theme::ColorMode;
+use homerun::tui::view;
 use homerun::tui::worker::run_job;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;

@@ -5,50 +5,14 @@
 use ratatui::Frame;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::{Color, Modifier, Style};
+use ratatui::style::Color;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
-use super::{dim, title_style};
-use crate::study::Surface;
-use crate::tui::app::{App, heatmap_window};
-
-const Y_LABELS: u16 = 6;
-const BAR: u16 = 9;
-
-/// The part of the pane covered by pixels.
-pub fn plot_area(area: Rect) -> Rect {
-    let inner = Block::bordered().inner(area);
-    Rect::new(
-        inner.x + Y_LABELS,
-        inner.y,
-        inner.width.saturating_sub(Y_LABELS + BAR),
-        inner.height.saturating_sub(1),
-    )
-}
-
-/// A perceptual ramp (after viridis), t in [0, 1].
-pub fn ramp(t: f64) -> (u8, u8, u8) {
-    const STOPS: [(f64, f64, f64); 6] = [
-        (68.0, 1.0, 84.0),
-        (65.0, 68.0, 135.0),
-        (42.0, 120.0, 142.0),
-        (34.0, 168.0, 132.0),
-        (122.0, 209.0, 81.0),
-        (253.0, 231.0, 37.0),
-    ];
-    let t = if t.is_finite() {
-        t.clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let x = t * (STOPS.len() - 1) as f64;
-    let k = (x.floor() as usize).min(STOPS.len() - 2);
-    let f = x - k as f64;
-    let (a, b) = (STOPS[k], STOPS[k + 1]);
-    let mix = |p: f64, q: f64| (p + f * (q - p)).round() as u8;
-    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
-}
+use crate::study::{Grid, Surface};
+use crate::tui::app::App;
+use crate::tui::layout::{HEATMAP_BAR, heatmap_plot};
+use crate::tui::theme::{self, dim, ramp, title_style};
 
 /// The surface's value at pixel (px, py) of a w×h picture, py from the top.
 fn sample(surface: &Surface, px: usize, py: usize, w: usize, h: usize) -> Option<f64> {
@@ -78,11 +42,11 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     };
     let block = Block::bordered().title(Span::styled(title, title_style()));
     frame.render_widget(block, area);
-    let plot = plot_area(area);
+    let plot = heatmap_plot(area);
     if plot.width < 4 || plot.height < 2 {
         return;
     }
-    let window = heatmap_window();
+    let window = Grid::explorer_window();
     let inner = Block::bordered().inner(area);
     // Axis labels: ψ on the left (top, bottom), E along the bottom.
     let buf = frame.buffer_mut();
@@ -148,12 +112,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             let edge = (px + 1 < w && above(at(px + 1, py), l) != here)
                 || (py + 1 < h && above(at(px, py + 1), l) != here);
             if v.is_some() && edge {
-                return Color::White;
+                return theme::CONTOUR;
             }
         }
         match v {
             Some(v) => app.color.rgb(ramp((v - min) / (max - min).max(1e-9))),
-            None => Color::Black,
+            None => theme::NO_RANGE,
         }
     };
     draw_pixels(frame.buffer_mut(), plot, &colour);
@@ -174,32 +138,30 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         let symbol = if inside { symbol } else { "◆" };
         buf[(x, y)]
             .set_symbol(symbol)
-            .set_fg(colour)
-            .set_bg(Color::Black)
-            .set_style(Style::new().add_modifier(Modifier::BOLD));
+            .set_style(theme::mark(colour));
     };
     if let Some(o) = app.optimum.filter(|o| o.done) {
         mark(
             buf,
             to_cell(o.best.undercut, o.best.swing_angle),
             "★",
-            Color::Yellow,
+            theme::OPTIMUM_MARK,
         );
     }
     mark(
         buf,
         to_cell(app.scene.bat.undercut, app.scene.bat.swing_angle),
         "✚",
-        Color::White,
+        theme::SWING_MARK,
     );
 
     // The colour bar, top = max.
-    let bar = Rect::new(plot.right() + 1, plot.y, BAR - 1, plot.height);
+    let bar = Rect::new(plot.right() + 1, plot.y, HEATMAP_BAR - 1, plot.height);
     let [_, bar_area] = Layout::horizontal([Constraint::Length(0), Constraint::Fill(1)]).areas(bar);
     for row in 0..bar_area.height {
         let t = 1.0 - row as f64 / (bar_area.height.max(2) - 1) as f64;
         let c = app.color.rgb(ramp(t));
-        buf.set_string(bar_area.x, bar_area.y + row, "██", Style::new().fg(c));
+        buf.set_string(bar_area.x, bar_area.y + row, "██", theme::swatch(c));
     }
     buf.set_string(bar_area.x + 2, bar_area.y, format!("{max:>5.0}"), dim());
     buf.set_string(

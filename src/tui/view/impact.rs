@@ -4,17 +4,16 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::{Color, Style};
-use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph};
+use ratatui::widgets::{Block, Chart, Paragraph};
 
-use super::{dim, title_style};
-use crate::tui::app::{App, impact_stops};
+use super::chart;
+use crate::tui::app::App;
+use crate::tui::theme::{self, dim, title_style};
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let impact = &app.swing.impact;
-    let stops = impact_stops(impact);
+    let stops = impact.stops();
     let stop = stops[app.impact_stop.min(stops.len() - 1)];
     let block = Block::bordered().title(Span::styled(
         format!(
@@ -32,18 +31,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
 
     let pf = impact.separation_impulse;
     let samples = (2 * chart_area.width as usize).clamp(8, 400);
-    let state_at = |k: usize| impact.at(pf * k as f64 / (samples - 1) as f64);
-    let slip: Vec<(f64, f64)> = (0..samples)
-        .map(|k| {
-            let s = state_at(k);
-            (s.impulse, s.slip_velocity)
-        })
+    let states: Vec<_> = (0..samples)
+        .map(|k| impact.at(pf * k as f64 / (samples - 1) as f64))
         .collect();
-    let normal: Vec<(f64, f64)> = (0..samples)
-        .map(|k| {
-            let s = state_at(k);
-            (s.impulse, s.normal_velocity)
-        })
+    let slip: Vec<(f64, f64)> = states
+        .iter()
+        .map(|s| (s.impulse, s.slip_velocity))
+        .collect();
+    let normal: Vec<(f64, f64)> = states
+        .iter()
+        .map(|s| (s.impulse, s.normal_velocity))
         .collect();
     let (lo, hi) = slip
         .iter()
@@ -57,91 +54,49 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let cursor = vertical(stop.impulse);
     let zero = [(0.0, 0.0), (pf, 0.0)];
     let mut datasets = vec![
-        Dataset::default()
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(dim())
-            .data(&zero),
-        Dataset::default()
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::Blue))
-            .data(&pc_line),
+        chart::line(dim(), &zero),
+        chart::line(theme::COMPRESSION, &pc_line),
     ];
     if let Some(ps) = &ps_line {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(Color::Magenta))
-                .data(ps),
-        );
+        datasets.push(chart::line(theme::STICK, ps));
     }
-    datasets.push(
-        Dataset::default()
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::White))
-            .data(&cursor),
-    );
-    datasets.push(
-        Dataset::default()
-            .name("v1 slip")
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::Cyan))
-            .data(&slip),
-    );
-    datasets.push(
-        Dataset::default()
-            .name("v3 normal")
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::Yellow))
-            .data(&normal),
-    );
+    datasets.push(chart::line(theme::CURSOR, &cursor));
+    datasets.push(chart::line(theme::SLIP, &slip).name("v1 slip"));
+    datasets.push(chart::line(theme::APPROACH, &normal).name("v3 normal"));
     let chart = Chart::new(datasets)
         .legend_position(None)
-        .x_axis(
-            Axis::default()
-                .title(Span::styled("p (N·s)", dim()))
-                .bounds([0.0, pf])
-                .labels([
-                    Span::styled("0", dim()),
-                    Span::styled(format!("{pf:.2}"), dim()),
-                ]),
-        )
-        .y_axis(
-            Axis::default()
-                .title(Span::styled("m/s", dim()))
-                .bounds([lo, hi])
-                .labels([
-                    Span::styled(format!("{lo:.0}"), dim()),
-                    Span::styled(format!("{hi:.0}"), dim()),
-                ]),
-        );
+        .x_axis(chart::axis(
+            "p (N·s)",
+            [0.0, pf],
+            ["0".into(), format!("{pf:.2}")],
+        ))
+        .y_axis(chart::axis(
+            "m/s",
+            [lo, hi],
+            [format!("{lo:.0}"), format!("{hi:.0}")],
+        ));
     frame.render_widget(chart, chart_area);
 
     let s = impact.at(stop.impulse);
     let lines = vec![
         Line::from(vec![
-            Span::styled("p ", Style::new().fg(Color::White)),
+            Span::styled("p ", theme::CURSOR),
             Span::raw(format!("{:.3} N·s  ", stop.impulse)),
-            Span::styled("p_s ", Style::new().fg(Color::Magenta)),
+            Span::styled("p_s ", theme::STICK),
             Span::raw(
                 impact
                     .stick_impulse()
                     .map_or("— (slips) ".to_owned(), |p| format!("{p:.3}  ")),
             ),
-            Span::styled("p_c ", Style::new().fg(Color::Blue)),
+            Span::styled("p_c ", theme::COMPRESSION),
             Span::raw(format!("{:.3}  ", impact.compression_impulse)),
             Span::styled("p_f ", dim()),
             Span::raw(format!("{pf:.3}")),
         ]),
         Line::from(vec![
-            Span::styled("v1 slip ", Style::new().fg(Color::Cyan)),
+            Span::styled("v1 slip ", theme::SLIP),
             Span::raw(format!("{:+.2}  ", s.slip_velocity)),
-            Span::styled("v3 normal ", Style::new().fg(Color::Yellow)),
+            Span::styled("v3 normal ", theme::APPROACH),
             Span::raw(format!("{:+.2} m/s", s.normal_velocity)),
         ]),
         Line::from(vec![

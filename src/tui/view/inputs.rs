@@ -3,13 +3,13 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Wrap};
 
-use super::{dim, format_value, title_style};
 use crate::model::scene::KEYS;
 use crate::tui::app::{App, Field, Mode};
+use crate::tui::format::format_value;
+use crate::tui::theme::{self, dim, title_style};
 
 fn section(field: Field) -> &'static str {
     match field {
@@ -67,9 +67,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         };
         let marker = if selected { "▶" } else { " " };
         let style = if selected {
-            Style::new().add_modifier(Modifier::REVERSED)
+            theme::SELECTED
         } else {
-            Style::new()
+            theme::PLAIN
         };
         let value_width = (inner.width as usize).saturating_sub(label.chars().count() + 2 + 7);
         rows.push(Line::from(vec![
@@ -95,18 +95,11 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     }
 
     let about_text = match editing {
-        Some((_, Some(error))) => Paragraph::new(Line::styled(
-            error.as_str(),
-            Style::new().fg(Color::Red).add_modifier(Modifier::BOLD),
-        )),
+        Some((_, Some(error))) => Paragraph::new(Line::styled(error.as_str(), theme::ERROR)),
         Some((_, None)) => Paragraph::new(Line::styled("Enter accepts · Esc cancels", dim())),
         None if app.message.is_some() => {
             let (message, error) = app.message.as_ref().expect("checked");
-            let style = if *error {
-                Style::new().fg(Color::Red).add_modifier(Modifier::BOLD)
-            } else {
-                Style::new().fg(Color::Green)
-            };
+            let style = if *error { theme::ERROR } else { theme::GOOD };
             Paragraph::new(Line::styled(message.as_str(), style))
         }
         None => {

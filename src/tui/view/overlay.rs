@@ -2,35 +2,13 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Flex, Layout, Rect};
-use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap};
 use ratatui_textarea::TextArea;
 
-use super::{dim, title_style};
 use crate::tui::app::{App, PickItem};
-
-/// Every key, in the order the help shows them.
-pub const KEY_HELP: &[(&str, &str)] = &[
-    ("j k ↑ ↓", "move between inputs"),
-    ("h l ← →", "nudge the input by its step"),
-    ("H L  Shift+← →", "nudge ×10"),
-    ("[ ]  Alt+← →", "nudge ×0.1"),
-    ("Enter  e", "type a value (Enter accepts, Esc cancels)"),
-    ("g G", "first / last input"),
-    ("r", "move the swing (E, ψ) to the optimum"),
-    ("u", "distances in metres / feet"),
-    (
-        "Tab  1 2 3",
-        "flight / range surface / impact (small screens)",
-    ),
-    (", .", "step the impact through its phases"),
-    ("s", "save the inputs as a preset"),
-    ("o", "open a preset (bundled or saved)"),
-    ("Esc", "close a pop-up, clear the message"),
-    ("?", "this help"),
-    ("q  Ctrl-C", "quit"),
-];
+use crate::tui::keymap;
+use crate::tui::theme::{self, dim, title_style};
 
 fn centered(area: Rect, width: u16, height: u16) -> Rect {
     let [row] = Layout::vertical([Constraint::Length(height.min(area.height))])
@@ -43,12 +21,12 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
 }
 
 pub fn help(frame: &mut Frame, area: Rect) {
-    let mut lines: Vec<Line> = KEY_HELP
-        .iter()
+    let mut lines: Vec<Line> = keymap::help()
+        .into_iter()
         .map(|(keys, what)| {
             Line::from(vec![
-                Span::styled(format!("{keys:<16}"), Style::new().fg(Color::Cyan)),
-                Span::raw(*what),
+                Span::styled(format!("{keys:<16}"), theme::KEY),
+                Span::raw(what),
             ])
         })
         .collect();
@@ -83,10 +61,7 @@ pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Op
     );
     frame.render_widget(text, input);
     let line = match error {
-        Some(e) => Paragraph::new(Line::styled(
-            e,
-            Style::new().fg(Color::Red).add_modifier(Modifier::BOLD),
-        )),
+        Some(e) => Paragraph::new(Line::styled(e, theme::ERROR)),
         None => Paragraph::new(Line::styled(
             "letters, digits, - and _ · Enter saves · Esc cancels",
             dim(),
@@ -113,15 +88,12 @@ pub fn open(
         .iter()
         .map(|item| {
             let style = if item.preset.is_some() {
-                Style::new()
+                theme::PLAIN
             } else {
-                Style::new().fg(Color::Red)
+                theme::BROKEN
             };
             ListItem::new(Line::from(vec![
-                Span::styled(
-                    format!("{:<14}", item.name),
-                    style.add_modifier(Modifier::BOLD),
-                ),
+                Span::styled(format!("{:<14}", item.name), theme::strong(style)),
                 Span::styled(item.detail.clone(), style),
             ]))
         })
@@ -129,13 +101,13 @@ pub fn open(
     let mut state = ListState::default().with_selected(Some(selected));
     frame.render_stateful_widget(
         List::new(list)
-            .highlight_style(Style::new().add_modifier(Modifier::REVERSED))
+            .highlight_style(theme::SELECTED)
             .highlight_symbol("▶ "),
         list_area,
         &mut state,
     );
     let line = match error {
-        Some(e) => Paragraph::new(Line::styled(e, Style::new().fg(Color::Red))),
+        Some(e) => Paragraph::new(Line::styled(e, theme::BROKEN)),
         None => Paragraph::new(Line::styled("Enter loads · Esc cancels", dim())),
     };
     frame.render_widget(line.wrap(Wrap { trim: true }), message);

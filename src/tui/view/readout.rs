@@ -3,13 +3,12 @@
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
-use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
-use super::{dim, title_style};
 use crate::model::impact::Regime;
 use crate::tui::app::App;
+use crate::tui::theme::{self, dim, title_style};
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let impact = &app.swing.impact;
@@ -63,11 +62,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let (e, psi) = (app.scene.bat.undercut, app.scene.bat.swing_angle);
     match app.optimum {
         Some(o) => {
-            let style = if o.done {
-                Style::new().fg(Color::Green)
-            } else {
-                Style::new().fg(Color::Yellow)
-            };
+            let style = if o.done { theme::GOOD } else { theme::BUSY };
             let state = if o.done { "" } else { " (searching)" };
             lines.push(Line::from(vec![
                 label("optimum"),
@@ -93,7 +88,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
         None => lines.push(Line::from(vec![
             label("optimum"),
-            Span::styled("searching…", Style::new().fg(Color::Yellow)),
+            Span::styled("searching…", theme::BUSY),
         ])),
     }
     if let Some(fence) = app.fence {

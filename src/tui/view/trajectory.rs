@@ -3,13 +3,13 @@
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
-use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType};
+use ratatui::widgets::{Block, Chart};
 
-use super::{dim, title_style};
+use super::chart;
 use crate::tui::app::App;
+use crate::tui::theme::{self, title_style};
 
 /// A round axis end at or above `value`, so that the halfway label is round too.
 pub fn nice_ceiling(value: f64) -> f64 {
@@ -46,54 +46,19 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
     let mut datasets = Vec::new();
     if !optimal_path.is_empty() {
-        datasets.push(
-            Dataset::default()
-                .name("optimal")
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(Color::Green))
-                .data(&optimal_path),
-        );
+        datasets.push(chart::line(theme::OPTIMAL, &optimal_path).name("optimal"));
     }
-    datasets.push(
-        Dataset::default()
-            .name("this swing")
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(Style::new().fg(Color::Cyan))
-            .data(&path),
-    );
-    datasets.push(
-        Dataset::default()
-            .name("apex")
-            .marker(Marker::Dot)
-            .graph_type(GraphType::Scatter)
-            .style(Style::new().fg(Color::Yellow))
-            .data(&apex),
-    );
-    datasets.push(
-        Dataset::default()
-            .name("landing")
-            .marker(Marker::Block)
-            .graph_type(GraphType::Scatter)
-            .style(Style::new().fg(Color::Magenta))
-            .data(&landing),
-    );
+    datasets.push(chart::line(theme::SWING, &path).name("this swing"));
+    datasets.push(chart::points(Marker::Dot, theme::APEX, &apex).name("apex"));
+    datasets.push(chart::points(Marker::Block, theme::LANDING, &landing).name("landing"));
     if app.fence.is_some() {
-        datasets.push(
-            Dataset::default()
-                .name("fence")
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::new().fg(Color::White))
-                .data(&fence_line),
-        );
+        datasets.push(chart::line(theme::FENCE, &fence_line).name("fence"));
     }
-    let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| Span::styled(format!("{v:.0}"), dim()));
+    let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| format!("{v:.0}"));
     // The legend sits in the border, where it hides no data.
-    let mut legend = vec![Span::styled("━ now ", Style::new().fg(Color::Cyan))];
+    let mut legend = vec![Span::styled("━ now ", theme::SWING)];
     if !optimal_path.is_empty() {
-        legend.push(Span::styled("━ best ", Style::new().fg(Color::Green)));
+        legend.push(Span::styled("━ best ", theme::OPTIMAL));
     }
     let legend = Line::from(legend);
     let title = format!(
@@ -107,18 +72,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 .title(Span::styled(title, title_style()))
                 .title_top(legend.right_aligned()),
         )
-        .x_axis(
-            Axis::default()
-                .title(Span::styled(format!("x ({unit})"), dim()))
-                .bounds([0.0, x_max])
-                .labels(labels(x_max)),
-        )
-        .y_axis(
-            Axis::default()
-                .title(Span::styled(format!("y ({unit})"), dim()))
-                .bounds([0.0, y_max])
-                .labels(labels(y_max)),
-        )
+        .x_axis(chart::axis(
+            format!("x ({unit})"),
+            [0.0, x_max],
+            labels(x_max),
+        ))
+        .y_axis(chart::axis(
+            format!("y ({unit})"),
+            [0.0, y_max],
+            labels(y_max),
+        ))
         .legend_position(None);
     frame.render_widget(chart, area);
 }

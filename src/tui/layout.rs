@@ -1,0 +1,121 @@
+//! Where each pane goes at a given screen size. The view draws into these
+//! rectangles; the app reads them too, because what it computes follows the
+//! screen (a trajectory sample per half braille column, a surface pixel per
+//! half block).
+
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::widgets::Block;
+
+/// The view shown beside the inputs on a small screen (a large one shows all).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tab {
+    Flight,
+    Surface,
+    Impact,
+}
+
+impl Tab {
+    pub const ALL: [Tab; 3] = [Tab::Flight, Tab::Surface, Tab::Impact];
+    pub fn title(self) -> &'static str {
+        match self {
+            Tab::Flight => "1 Flight",
+            Tab::Surface => "2 Range surface",
+            Tab::Impact => "3 Impact",
+        }
+    }
+}
+
+/// The smallest screen the explorer draws on.
+pub const MIN_SIZE: (u16, u16) = (60, 16);
+
+/// Where each pane goes; `None` for a pane not shown at this size and tab.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Panes {
+    pub inputs: Rect,
+    pub tabs: Option<Rect>,
+    pub trajectory: Option<Rect>,
+    pub readout: Option<Rect>,
+    pub heatmap: Option<Rect>,
+    pub impact: Option<Rect>,
+    pub status: Rect,
+}
+
+/// Whether everything fits at once.
+pub fn is_wide(area: Rect) -> bool {
+    area.width >= 140 && area.height >= 40
+}
+
+const READOUT_HEIGHT: u16 = 9;
+
+pub fn layout(area: Rect, tab: Tab) -> Panes {
+    let [body, status] = Layout::vertical([Constraint::Fill(1), Constraint::Length(1)]).areas(area);
+    let inputs_width = if is_wide(area) { 44 } else { 30 };
+    let [inputs, right] =
+        Layout::horizontal([Constraint::Length(inputs_width), Constraint::Fill(1)]).areas(body);
+    let mut panes = Panes {
+        inputs,
+        status,
+        ..Panes::default()
+    };
+    if is_wide(area) {
+        let [top, bottom] =
+            Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
+        let [trajectory, readout] =
+            Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(top);
+        let [heatmap, impact] =
+            Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
+        panes.trajectory = Some(trajectory);
+        panes.readout = Some(readout);
+        panes.heatmap = Some(heatmap);
+        panes.impact = Some(impact);
+    } else {
+        let [tabs, content] =
+            Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(right);
+        panes.tabs = Some(tabs);
+        match tab {
+            Tab::Flight => {
+                let [trajectory, readout] =
+                    Layout::vertical([Constraint::Fill(1), Constraint::Length(READOUT_HEIGHT)])
+                        .areas(content);
+                panes.trajectory = Some(trajectory);
+                panes.readout = Some(readout);
+            }
+            Tab::Surface => panes.heatmap = Some(content),
+            Tab::Impact => panes.impact = Some(content),
+        }
+    }
+    panes
+}
+
+/// Trajectory samples for a screen: two per braille column of the plot.
+pub fn trajectory_samples(size: Rect) -> usize {
+    let width = layout(size, Tab::Flight).trajectory.map_or(80, |r| r.width);
+    (2 * width as usize).clamp(16, 800)
+}
+
+/// Columns left of the heatmap's pixels for the ψ labels.
+const HEATMAP_LABELS: u16 = 6;
+/// Columns right of the heatmap's pixels for the colour bar.
+pub const HEATMAP_BAR: u16 = 9;
+
+/// The part of the heatmap's pane covered by pixels.
+pub fn heatmap_plot(area: Rect) -> Rect {
+    let inner = Block::bordered().inner(area);
+    Rect::new(
+        inner.x + HEATMAP_LABELS,
+        inner.y,
+        inner.width.saturating_sub(HEATMAP_LABELS + HEATMAP_BAR),
+        inner.height.saturating_sub(1),
+    )
+}
+
+/// The heatmap's resolution in (columns, rows) of pixels: one column per
+/// cell, two rows per line (half blocks).
+pub fn heatmap_resolution(size: Rect) -> (usize, usize) {
+    let area = layout(size, Tab::Surface).heatmap.unwrap_or(size);
+    let plot = heatmap_plot(area);
+    (
+        (plot.width as usize).clamp(2, 200),
+        (2 * plot.height as usize).clamp(2, 120),
+    )
+}
