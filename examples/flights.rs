@@ -4,7 +4,7 @@
 
 use homerun::model::flight::{self, FlightOptions};
 use homerun::model::{self, impact::Impact, scene::Scene};
-use homerun::solve::ode::Tolerance;
+use homerun::numerics::ode::Tolerance;
 
 fn main() {
     let mut args = std::env::args().skip(1);

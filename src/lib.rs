@@ -21,10 +21,3 @@ pub mod tui;
 pub use analysis::precision::Purpose;
 pub use model::scene::Scene;
 pub use model::{Swing, range, simulate};
-
-// Old paths, kept while the frontends move over (removed before this lands).
-pub use analysis::{bench, precision, study};
-pub mod solve {
-    pub use crate::analysis::optimum as optimize;
-    pub use crate::numerics::ode;
-}

@@ -11,7 +11,8 @@ use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 
 use crate::model::aero::{DragModel, UnknownModel};
-use crate::model::scene::{DRAG_KEY, InputError, KEYS, Scene};
+use crate::model::keys::{DRAG_KEY, InputError, KEYS};
+use crate::model::scene::Scene;
 
 /// A fence to clear, drawn by the explorer (not part of the physics).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]

@@ -498,7 +498,7 @@ fn keys_lists_every_input_with_its_range() {
     let out = homerun(dir.path()).arg("keys").output().unwrap();
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
-    for key in homerun::model::scene::KEYS {
+    for key in homerun::model::keys::KEYS {
         let line = text
             .lines()
             .find(|l| l.starts_with(&format!("{} ", key.name)))

@@ -2,11 +2,11 @@
 //! physically sensible result and, where the physics is continuous, a
 //! continuous one. No test here is timed; every flight's work is bounded.
 
+use homerun::analysis::optimum::{OptimizerSettings, optimize_from};
 use homerun::model::flight::{self, Flight, FlightOptions, FlightSummary, Launch};
 use homerun::model::impact::Impact;
 use homerun::model::{self, aero::DragModel};
 use homerun::numerics::ode::Tolerance;
-use homerun::solve::optimize::{OptimizerSettings, optimize_from};
 use homerun::{Purpose, Scene};
 use nalgebra::Vector2;
 
@@ -343,7 +343,7 @@ fn a_headwind_carries_the_ball_back_behind_the_plate() {
 #[test]
 fn extreme_tolerances_end_with_bounded_work() {
     let scene = Scene::default();
-    let grid = homerun::study::Grid::figure7(6, 6);
+    let grid = homerun::analysis::study::Grid::figure7(6, 6);
     for (exponent, max_steps) in [(2, 60), (13, 4000)] {
         let purpose = FlightOptions {
             tolerance: Tolerance::uniform(10f64.powi(-exponent)),
@@ -431,7 +431,7 @@ fn random_valid_scenes_give_finite_numbers() {
     // the fastball's values), deterministic (xorshift). Balloons, gales and
     // feather-light bats included: the numbers must stay finite and the
     // work bounded, landed or not.
-    use homerun::model::scene::KEYS;
+    use homerun::model::keys::KEYS;
     let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
     let mut uniform = move || {
         seed ^= seed << 13;

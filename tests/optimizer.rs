@@ -6,8 +6,8 @@ mod common;
 use argmin::core::{CostFunction, Error, Executor, State};
 use argmin::solver::neldermead::NelderMead;
 use homerun::Scene;
-use homerun::solve::optimize::{Optimizer, OptimizerSettings, Status, optimize, optimize_from};
-use homerun::study::{self, Grid};
+use homerun::analysis::optimum::{Optimizer, OptimizerSettings, Status, optimize, optimize_from};
+use homerun::analysis::study::{self, Grid};
 use homerun::{Purpose, range};
 
 /// −range over (E, ψ), as our optimiser sees it (Optimizer precision).

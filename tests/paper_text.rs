@@ -4,7 +4,8 @@ mod common;
 
 use homerun::model::impact::{Impact, Regime};
 use homerun::model::pitch;
-use homerun::{Purpose, study};
+use homerun::Purpose;
+use homerun::analysis::study;
 
 #[test]
 fn vertical_velocity_at_38_m_per_s() {

@@ -2,9 +2,9 @@
 
 mod common;
 
+use homerun::analysis::optimum::{OptimizerSettings, optimize};
 use homerun::analysis::paper::{CURVE_LAUNCH_SPEED, TABLE2, table2_rows, tolerance};
 use homerun::model::impact::Impact;
-use homerun::solve::optimize::{OptimizerSettings, optimize};
 use homerun::{Purpose, range};
 
 /// Ranges at Table II's (E, ψ) with the `sawicki2003` drag model (issue 2),

@@ -4,7 +4,7 @@ mod tui_support;
 
 use std::time::Duration;
 
-use homerun::solve::optimize::{OptimizerSettings, optimize, optimize_from};
+use homerun::analysis::optimum::{OptimizerSettings, optimize, optimize_from};
 use homerun::tui::app::Mode;
 use homerun::tui::worker::{Report, Worker, run_job};
 use ratatui::crossterm::event::{KeyCode, KeyModifiers};

@@ -8,9 +8,9 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::Scene;
+use crate::analysis::optimum::{self, OptimizerSettings, Optimum};
+use crate::analysis::precision::Purpose;
 use crate::model::{self, Swing};
-use crate::precision::Purpose;
-use crate::solve::optimize::{self, OptimizerSettings, Optimum};
 
 /// One row of Table II, or ours in the same columns.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -119,7 +119,7 @@ pub struct Best {
 
 /// Optimises `scene`'s (E, ψ) and simulates the optimum at readout precision.
 pub fn best_swing(scene: &Scene) -> Best {
-    let optimum = optimize::optimize(scene, OptimizerSettings::default());
+    let optimum = optimum::optimize(scene, OptimizerSettings::default());
     let at = scene.with_swing(optimum.undercut, optimum.swing_angle);
     Best {
         optimum,

@@ -95,8 +95,8 @@ impl From<Purpose> for FlightOptions {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::analysis::study::{self, Grid};
     use crate::model::{self, scene::Scene};
-    use crate::study::{self, Grid};
 
     fn table_two() -> [Scene; 3] {
         ["fastball", "knuckleball", "curveball"]

@@ -6,11 +6,11 @@ use std::fmt::Write as _;
 use super::table::{Align, Cell, Column, Digits, Table, Width};
 use super::{Format, UsageError, pretty};
 use crate::Scene;
+use crate::analysis::precision::Purpose;
 use crate::model::aero::DragModel;
 use crate::model::impact::Impact;
+use crate::model::keys::{DRAG_KEY, KEYS};
 use crate::model::pitch;
-use crate::model::scene::{DRAG_KEY, KEYS};
-use crate::precision::Purpose;
 
 /// The most points `trajectory` samples.
 pub const MAX_SAMPLES: usize = 100_000;

@@ -15,9 +15,9 @@ use std::path::{Path, PathBuf};
 use clap::{Args, Parser, Subcommand};
 
 use crate::analysis::figures::FigureError;
-use crate::model::scene::InputError;
+use crate::analysis::study::SweepError;
+use crate::model::keys::InputError;
 use crate::preset::{self, Preset};
-use crate::study::SweepError;
 use crate::tui::TuiError;
 
 pub use optimize::{MAX_GRID, MAX_STEPS};
@@ -270,7 +270,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             Ok(optimize::optimum(&scene.resolve(dir)?.scene, *json))
         }
         Command::Table2 { json } => Ok(table2::table2(*json)),
-        Command::Bench { json, quick } => Ok(crate::bench::output(*json, *quick)),
+        Command::Bench { json, quick } => Ok(crate::analysis::bench::output(*json, *quick)),
         Command::Sweep {
             key,
             from,

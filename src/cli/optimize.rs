@@ -7,10 +7,10 @@ use super::hit::{labelled, launch_text};
 use super::table::{Align, Cell, Column, Digits, Table, Width};
 use super::{Format, UsageError, WindowFault, pretty};
 use crate::Scene;
+use crate::analysis::optimum::OptimizerSettings;
 use crate::analysis::paper::{Best, best_swing};
-use crate::precision::Purpose;
-use crate::solve::optimize::OptimizerSettings;
-use crate::study::{self, Grid, Surface};
+use crate::analysis::precision::Purpose;
+use crate::analysis::study::{self, Grid, Surface};
 
 /// The largest sweep (points) and grid side (cells) accepted.
 pub const MAX_STEPS: usize = 1000;

@@ -129,6 +129,3 @@ impl Scene {
         self.ball.radius + self.bat.radius
     }
 }
-
-// Old paths, kept while the frontends move over (removed before this lands).
-pub use super::keys::{DRAG_KEY, InputError, KEYS, Key};

@@ -12,14 +12,15 @@ use super::keymap::{self, Action};
 use super::layout::{Tab, heatmap_resolution, trajectory_samples};
 use super::theme::ColorMode;
 use super::worker::{Job, Report};
+use crate::analysis::optimum::Point;
+use crate::analysis::precision::Purpose;
+use crate::analysis::study::{Grid, Surface};
 use crate::model::aero::DragModel;
 use crate::model::flight;
 use crate::model::impact::Impact;
-use crate::model::scene::{DRAG_KEY, KEYS, Scene};
-use crate::precision::Purpose;
+use crate::model::keys::{DRAG_KEY, KEYS};
+use crate::model::scene::Scene;
 use crate::preset::{self, Fence, Preset, PresetError, Source};
-use crate::solve::optimize::Point;
-use crate::study::{Grid, Surface};
 use crate::{Swing, simulate};
 
 /// One row of the inputs pane.

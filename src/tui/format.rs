@@ -1,7 +1,7 @@
 //! Numbers as the explorer writes them: the inputs pane shows a value this
 //! way, and an edit starts from the same text.
 
-use crate::model::scene::Key;
+use crate::model::keys::Key;
 
 /// A value as the inputs pane shows it: enough digits for a thousandth of
 /// the key's step, trailing zeros trimmed.

@@ -11,10 +11,10 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread;
 
+use crate::analysis::optimum::{Optimizer, OptimizerSettings, Point, Status};
+use crate::analysis::precision::Purpose;
+use crate::analysis::study::{self, Grid, Surface};
 use crate::model::scene::Scene;
-use crate::precision::Purpose;
-use crate::solve::optimize::{Optimizer, OptimizerSettings, Point, Status};
-use crate::study::{self, Grid, Surface};
 
 /// What the UI wants computed for one set of inputs.
 #[derive(Clone, Copy, Debug, PartialEq)]

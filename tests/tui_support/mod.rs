@@ -53,7 +53,7 @@ pub fn settle(app: &mut App) {
 
 /// Selects the input row whose key is `name`.
 pub fn select(app: &mut App, name: &str) {
-    use homerun::model::scene::KEYS;
+    use homerun::model::keys::KEYS;
     use homerun::tui::app::Field;
     app.selected = app
         .fields

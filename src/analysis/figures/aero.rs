@@ -3,8 +3,8 @@
 use super::{FigureData, MARK, columns, compare, marked_row, with_marks};
 use crate::Scene;
 use crate::analysis::paper;
+use crate::analysis::study;
 use crate::model::aero::lift_coefficient;
-use crate::study;
 
 /// Fig. 3: C_D against Re, with the model's kinks and Dryden's point.
 pub(super) fn figure3(scene: &Scene) -> FigureData {

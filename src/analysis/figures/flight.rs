@@ -7,8 +7,8 @@ use super::{
 };
 use crate::Scene;
 use crate::analysis::paper::{self, POINT_A_SPIN, POINT_B_SPIN};
-use crate::precision::Purpose;
-use crate::study;
+use crate::analysis::precision::Purpose;
+use crate::analysis::study;
 
 /// Fig. 13's A and B: the undercuts, at the scene's ψ, that give the batted
 /// spins the paper states; `None` where the spin is out of reach.

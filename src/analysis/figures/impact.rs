@@ -6,8 +6,8 @@ use super::{
 };
 use crate::Scene;
 use crate::analysis::paper::{self, FIGURE5_FRICTIONS as FRICTIONS};
+use crate::analysis::study;
 use crate::model::impact::Regime;
-use crate::study;
 
 /// Figs. 5 (ω_bf) and 6 (ζ) against E for μ = 0.05, 0.35, 0.5, with the
 /// cusp where slip halts exactly at separation.

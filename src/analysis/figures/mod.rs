@@ -11,10 +11,10 @@ mod impact;
 mod optimum;
 
 use crate::Scene;
+use crate::analysis::optimum::Optimum;
 use crate::analysis::paper::{FIGURES, Stated};
+use crate::analysis::study::{self, SweepError};
 use crate::model::impact::Impact;
-use crate::solve::optimize::Optimum;
-use crate::study::{self, SweepError};
 
 /// One table cell: a number, a label, or nothing (null in JSON).
 #[derive(Clone, Debug, PartialEq)]

@@ -2,10 +2,10 @@
 
 use super::{FigureData, LAUNCH, MARK, SurfaceFigure, column, columns, compare, marked_row};
 use crate::Scene;
+use crate::analysis::optimum::{self, OptimizerSettings};
 use crate::analysis::paper;
-use crate::precision::Purpose;
-use crate::solve::optimize::{self, OptimizerSettings};
-use crate::study::{self, Grid, SweepError};
+use crate::analysis::precision::Purpose;
+use crate::analysis::study::{self, Grid, SweepError};
 
 /// Fig. 7: the range surface over the paper's window, with the optimiser's
 /// optimum (point O).
@@ -16,7 +16,7 @@ pub(super) fn figure7(scene: &Scene) -> SurfaceFigure {
             .to_owned(),
         conditions: String::new(),
         surface: study::surface(scene, Grid::figure7(21, 17), Purpose::Surface),
-        optimum: optimize::optimize(scene, OptimizerSettings::default()),
+        optimum: optimum::optimize(scene, OptimizerSettings::default()),
         paper: (
             paper::FIGURE7_UNDERCUT,
             paper::FIGURE7_SWING_ANGLE,

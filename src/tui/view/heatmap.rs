@@ -9,7 +9,7 @@ use ratatui::style::Color;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
-use crate::study::{Grid, Surface};
+use crate::analysis::study::{Grid, Surface};
 use crate::tui::app::App;
 use crate::tui::layout::{HEATMAP_BAR, heatmap_plot};
 use crate::tui::theme::{self, dim, ramp, title_style};

@@ -6,7 +6,7 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Wrap};
 
-use crate::model::scene::KEYS;
+use crate::model::keys::KEYS;
 use crate::tui::app::{App, Field, Mode};
 use crate::tui::format::format_value;
 use crate::tui::theme::{self, dim, title_style};
