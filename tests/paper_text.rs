@@ -2,10 +2,10 @@
 
 mod common;
 
-use homerun::model::impact::{Impact, Regime};
-use homerun::model::pitch;
 use homerun::Purpose;
 use homerun::analysis::study;
+use homerun::model::impact::{Impact, Regime};
+use homerun::model::pitch;
 
 #[test]
 fn vertical_velocity_at_38_m_per_s() {
