@@ -13,11 +13,46 @@ pub struct DenseStep<const N: usize> {
     /// unless truncated): `at` and `slope_at` multiply by it, as the event
     /// roots call them in a dependent chain where a division would be the
     /// slowest link.
-    pub(super) inverse_h: f64,
-    pub(super) coefficients: [State<N>; 4],
+    inverse_h: f64,
+    coefficients: [State<N>; 4],
 }
 
 impl<const N: usize> DenseStep<N> {
+    /// The step from (t0, y0) over `h` to y1, with slopes `k_start` and
+    /// `k_end` at its ends: a cubic Hermite extension, raised to Shampine's
+    /// quartic by `c5` (zero for the plain cubic).
+    #[inline]
+    pub(super) fn new(
+        t0: f64,
+        h: f64,
+        (y0, y1): (State<N>, State<N>),
+        (k_start, k_end): (&State<N>, &State<N>),
+        c5: State<N>,
+    ) -> Self {
+        let diff = y1 - y0;
+        let c3 = k_start * h - diff;
+        let c4 = diff - k_end * h - c3;
+        DenseStep {
+            t0,
+            t1: t0 + h,
+            y0,
+            y1,
+            inverse_h: 1.0 / h,
+            coefficients: [diff, c3, c4, c5],
+        }
+    }
+
+    /// Where to go on from, if the observer's `control` asks for a restart
+    /// inside this step: there the right-hand side changed, so the next step
+    /// starts from the extension with a fresh derivative.
+    #[inline]
+    pub(super) fn restart_time(&self, control: super::Control) -> Option<f64> {
+        match control {
+            super::Control::RestartAt(t) if t < self.t1 => Some(t.max(self.t0)),
+            _ => None,
+        }
+    }
+
     /// The solution at `t` in [t0, t1].
     #[inline]
     pub fn at(&self, t: f64) -> State<N> {

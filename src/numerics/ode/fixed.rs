@@ -39,30 +39,20 @@ where
         let k_end = f(t + h, &y1);
         stats.evaluations += 4;
         stats.accepted += 1;
-        let diff = y1 - y;
-        let c3 = k1 * h - diff;
-        let c4 = diff - k_end * h - c3;
-        let dense = DenseStep {
-            t0: t,
-            t1: t + h,
-            y0: y,
-            y1,
-            inverse_h: 1.0 / h,
-            coefficients: [diff, c3, c4, State::<N>::zeros()],
-        };
-        match observe(&dense) {
-            Control::Stop => return (Outcome::Stopped, stats),
-            Control::RestartAt(t_restart) if t_restart < dense.t1 => {
-                t = t_restart.max(dense.t0);
-                y = dense.at(t);
-                k1 = f(t, &y);
-                stats.evaluations += 1;
-            }
-            _ => {
-                t = dense.t1;
-                y = y1;
-                k1 = k_end;
-            }
+        let dense = DenseStep::new(t, h, (y, y1), (&k1, &k_end), State::<N>::zeros());
+        let control = observe(&dense);
+        if control == Control::Stop {
+            return (Outcome::Stopped, stats);
+        }
+        if let Some(t_restart) = dense.restart_time(control) {
+            t = t_restart;
+            y = dense.at(t);
+            k1 = f(t, &y);
+            stats.evaluations += 1;
+        } else {
+            t = dense.t1;
+            y = y1;
+            k1 = k_end;
         }
     }
 }

@@ -176,40 +176,30 @@ where
             if last_rejected {
                 h_next = h_next.min(h);
             }
-            let diff = y1 - y;
-            let c3 = k1 * h - diff;
-            let c4 = diff - k7 * h - c3;
             let c5 = (k1 * D1 + k3 * D3 + k4 * D4 + k5 * D5 + k6 * D6 + k7 * D7) * h;
-            let step = DenseStep {
-                t0: t,
-                t1: t + h,
-                y0: y,
-                y1,
-                inverse_h: 1.0 / h,
-                coefficients: [diff, c3, c4, c5],
-            };
+            let step = DenseStep::new(t, h, (y, y1), (&k1, &k7), c5);
             stats.accepted += 1;
             previous_ln_error = ln_error.max(1e-4f64.ln());
             last_rejected = false;
             h = h_next;
-            match observe(&step) {
-                Control::Stop => return (Outcome::Stopped, stats),
-                Control::RestartAt(t_restart) if t_restart < step.t1 => {
-                    // One evaluation, where a redone step would cost six.
-                    t = t_restart.max(step.t0);
-                    y = step.at(t);
-                    k1 = f(t, &y);
-                    stats.evaluations += 1;
-                }
-                control => {
-                    t = step.t1;
-                    y = y1;
-                    k1 = k7;
-                    if let Control::EndNextBy(t_end_next) = control
-                        && t_end_next > t
-                    {
-                        h = h.min(t_end_next - t);
-                    }
+            let control = observe(&step);
+            if control == Control::Stop {
+                return (Outcome::Stopped, stats);
+            }
+            if let Some(t_restart) = step.restart_time(control) {
+                // One evaluation, where a redone step would cost six.
+                t = t_restart;
+                y = step.at(t);
+                k1 = f(t, &y);
+                stats.evaluations += 1;
+            } else {
+                t = step.t1;
+                y = y1;
+                k1 = k7;
+                if let Control::EndNextBy(t_end_next) = control
+                    && t_end_next > t
+                {
+                    h = h.min(t_end_next - t);
                 }
             }
         } else {
