@@ -3,6 +3,7 @@
 //! continuous one. No test here is timed; every flight's work is bounded.
 
 use homerun::analysis::optimum::{OptimizerSettings, optimize_from};
+use homerun::analysis::paper::table_two;
 use homerun::model::flight::{self, Flight, FlightOptions, FlightSummary, Launch};
 use homerun::model::impact::Impact;
 use homerun::model::{self, aero::DragModel};
@@ -10,18 +11,8 @@ use homerun::numerics::ode::Tolerance;
 use homerun::{Purpose, Scene};
 use nalgebra::Vector2;
 
-fn table_two() -> Vec<(&'static str, Scene)> {
-    ["fastball", "knuckleball", "curveball"]
-        .into_iter()
-        .map(|name| (name, homerun::preset::load(name, None).unwrap().scene))
-        .collect()
-}
-
 fn with_swing(scene: &Scene, undercut: f64, swing_angle: f64) -> Scene {
-    let mut s = *scene;
-    s.bat.undercut = undercut;
-    s.bat.swing_angle = swing_angle;
-    s
+    scene.with_swing(undercut, swing_angle)
 }
 
 /// Finite everywhere, landed, and the work bounded.
@@ -87,7 +78,7 @@ fn fly_launch(flight: &Flight, launch: &Launch) -> FlightSummary {
 #[test]
 fn grazing_contact_is_finite_and_continuous() {
     let scene = Scene::default();
-    let limit = scene.ball.radius + scene.bat.radius;
+    let limit = scene.reach();
     for sign in [1.0, -1.0] {
         let ranges: Vec<f64> = [1e-4, 1e-7, 1e-10, 1e-13]
             .iter()

@@ -11,6 +11,7 @@ use std::time::Instant;
 use serde::Serialize;
 
 use super::optimum::{Optimizer, OptimizerSettings, Status};
+use super::paper::table_two;
 use super::precision::Purpose;
 use super::study::{self, Grid};
 use crate::model::flight::{self, Flight, FlightOptions, Launch};
@@ -208,19 +209,6 @@ fn stated_mixed(
     }
 }
 
-/// The Table II pitches, at their published swings.
-pub fn table_two() -> Vec<(String, Scene)> {
-    ["fastball", "knuckleball", "curveball"]
-        .iter()
-        .map(|name| {
-            let scene = crate::preset::load(name, None)
-                .expect("bundled presets load")
-                .scene;
-            (name.to_string(), scene)
-        })
-        .collect()
-}
-
 fn fastball_launch() -> (Flight, Launch) {
     let scene = Scene::default();
     model::launch(&scene, &Impact::new(&scene))
@@ -349,7 +337,7 @@ fn optimisations(effort: Effort, quick: bool) -> Vec<OptimisationRow> {
                 optimizer.run(|| false)
             });
             rows.push(OptimisationRow {
-                pitch: pitch.clone(),
+                pitch: pitch.to_owned(),
                 optimizer_tolerance: tolerance,
                 integrator_tolerance: 10f64.powi(-exponent),
                 evaluations,

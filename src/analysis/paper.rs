@@ -138,6 +138,12 @@ pub fn table2_scene(row: &TableRow) -> Scene {
     scene
 }
 
+/// The three Table II scenes at their published swings, named by their
+/// bundled presets.
+pub fn table_two() -> [(&'static str, Scene); 3] {
+    TABLE2.map(|(_, preset, row)| (preset, table2_scene(&row)))
+}
+
 fn row_of(scene: &Scene, swing: &Swing) -> TableRow {
     TableRow {
         pitch_speed: scene.pitch.speed,

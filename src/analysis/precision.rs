@@ -99,8 +99,7 @@ mod tests {
     use crate::model::{self, scene::Scene};
 
     fn table_two() -> [Scene; 3] {
-        ["fastball", "knuckleball", "curveball"]
-            .map(|name| crate::preset::load(name, None).expect("bundled").scene)
+        crate::analysis::paper::table_two().map(|(_, scene)| scene)
     }
 
     #[test]

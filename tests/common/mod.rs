@@ -11,10 +11,7 @@ pub fn scene(name: &str) -> Scene {
 
 /// `scene` with its swing replaced by (E, ψ).
 pub fn with_swing(scene: &Scene, undercut: f64, swing_angle: f64) -> Scene {
-    let mut s = *scene;
-    s.bat.undercut = undercut;
-    s.bat.swing_angle = swing_angle;
-    s
+    scene.with_swing(undercut, swing_angle)
 }
 
 /// The point in [lo, hi] where the predicate `f` changes value, found by
