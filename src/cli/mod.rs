@@ -2,6 +2,7 @@
 //!
 //! One file per command group; every table goes through [`table`].
 
+mod bench;
 mod figure;
 mod hit;
 mod optimize;
@@ -270,7 +271,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             Ok(optimize::optimum(&scene.resolve(dir)?.scene, *json))
         }
         Command::Table2 { json } => Ok(table2::table2(*json)),
-        Command::Bench { json, quick } => Ok(crate::analysis::bench::output(*json, *quick)),
+        Command::Bench { json, quick } => Ok(bench::output(*json, *quick)),
         Command::Sweep {
             key,
             from,

@@ -1,0 +1,148 @@
+//! `homerun bench`: the work–precision report (measured by
+//! `analysis::bench`) as text tables, or as JSON.
+
+use crate::analysis::bench::{self, Report};
+
+fn or_dash(value: Option<f64>, format: impl Fn(f64) -> String) -> String {
+    value.map_or("-".to_string(), format)
+}
+
+/// The report as text tables.
+fn render(report: &Report) -> String {
+    use std::fmt::Write;
+    let mut out = String::new();
+    let r = &report.reference;
+    let _ = writeln!(
+        out,
+        "reference (Purpose::Reference, Table II fastball): range {:.6} m; reference/model.py {:.6} m; difference {:+.1e} m",
+        r.range, r.python_range, r.difference
+    );
+    let _ = writeln!(out, "\none trajectory (Table II fastball launch)");
+    let _ = writeln!(
+        out,
+        "{:<7} {:>9} {:>8} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9} {:>8} {:>11}",
+        "method",
+        "tolerance",
+        "absolute",
+        "step",
+        "stop_at_kinks",
+        "evaluations",
+        "accepted",
+        "rejected",
+        "time_us",
+        "cpu_us",
+        "range_error"
+    );
+    for row in &report.trajectory {
+        let _ = writeln!(
+            out,
+            "{:<7} {:>9} {:>8} {:>6} {:>13} {:>11} {:>8} {:>8} {:>9.2} {:>8} {:>11.2e}",
+            row.method,
+            or_dash(row.tolerance, |t| format!("{t:.0e}")),
+            or_dash(row.absolute, |t| format!("{t:.0e}")),
+            or_dash(row.step, |h| format!("{h}")),
+            row.stop_at_kinks,
+            row.evaluations,
+            row.accepted,
+            row.rejected,
+            row.time_us,
+            or_dash(row.cpu_us, |c| format!("{c:.2}")),
+            row.range_error
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\none optimisation per Table II pitch (errors against optimiser 1e-9, integrator 1e-12)"
+    );
+    let _ = writeln!(
+        out,
+        "{:<12} {:>19} {:>20} {:>11} {:>9} {:>7} {:>6} {:>14} {:>17} {:>11}",
+        "pitch",
+        "optimizer_tolerance",
+        "integrator_tolerance",
+        "evaluations",
+        "converged",
+        "time_ms",
+        "cpu_ms",
+        "undercut_error",
+        "swing_angle_error",
+        "range_error"
+    );
+    for row in &report.optimisation {
+        let _ = writeln!(
+            out,
+            "{:<12} {:>19.0e} {:>20.0e} {:>11} {:>9} {:>7.2} {:>6} {:>14.1e} {:>17.1e} {:>11.1e}",
+            row.pitch,
+            row.optimizer_tolerance,
+            row.integrator_tolerance,
+            row.evaluations,
+            row.converged,
+            row.time_ms,
+            or_dash(row.cpu_ms, |c| format!("{c:.2}")),
+            row.undercut_error,
+            row.swing_angle_error,
+            row.range_error
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\none range surface over Fig. 7's window (errors against Purpose::Reference)"
+    );
+    let _ = writeln!(
+        out,
+        "{:>6} {:>20} {:>8} {:>7} {:>8} {:>8} {:>14}",
+        "cells",
+        "integrator_tolerance",
+        "absolute",
+        "threads",
+        "time_ms",
+        "cpu_ms",
+        "max_cell_error"
+    );
+    for row in &report.surface {
+        let _ = writeln!(
+            out,
+            "{:>6} {:>20.0e} {:>8.0e} {:>7} {:>8.1} {:>8} {:>14.2e}",
+            row.cells,
+            row.integrator_tolerance,
+            row.absolute,
+            row.threads,
+            row.time_ms,
+            or_dash(row.cpu_ms, |c| format!("{c:.1}")),
+            row.max_cell_error
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\ndefaults (src/analysis/precision.rs), range error on the Table II fastball"
+    );
+    let _ = writeln!(
+        out,
+        "{:<10} {:>12} {:>9} {:>11}",
+        "purpose", "range_budget", "tolerance", "range_error"
+    );
+    for row in &report.defaults {
+        let _ = writeln!(
+            out,
+            "{:<10} {:>12.1e} {:>9.0e} {:>11.1e}",
+            row.purpose, row.range_budget, row.tolerance, row.range_error
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\n(all cores = {} threads; time = median wall clock, cpu = median CPU time summed over threads; \
+         on a machine shared with other work, the wall clock counts waiting for a core)",
+        report.threads
+    );
+    out
+}
+
+/// `homerun bench [--json] [--quick]`.
+pub fn output(json: bool, quick: bool) -> String {
+    let report = bench::run(quick);
+    if json {
+        serde_json::to_string_pretty(&report).expect("plain numbers") + "\n"
+    } else {
+        render(&report)
+    }
+}
