@@ -50,16 +50,19 @@ impl<'a> Events<'a> {
         }
     }
 
+    #[inline]
     fn switching(&self) -> bool {
         !self.kinks.is_empty()
     }
 
+    #[inline]
     fn reynolds(&self, state: &State<4>) -> f64 {
         self.flight.reynolds(velocity(state))
     }
 
     /// Where the step leaves its drag piece, and the piece it enters, given
     /// the Reynolds numbers at its ends.
+    #[inline]
     fn crossing(&self, step: &DenseStep<4>, re0: f64, re1: f64) -> Option<(f64, usize)> {
         let (kinks, p) = (self.kinks, self.piece.get());
         let (kink, next) = if p > 0 && re1 < kinks[p - 1] {
@@ -95,6 +98,7 @@ impl<'a> Events<'a> {
     }
 
     /// Where a component of the state crosses zero inside the step.
+    #[inline]
     fn zero_of(step: &DenseStep<4>, component: usize) -> f64 {
         find_root_newton(
             |t| (step.at(t)[component], step.slope_at(t)[component]),
@@ -107,6 +111,7 @@ impl<'a> Events<'a> {
     /// Sees one accepted step: switches the drag piece at a kink (cutting
     /// the step there), records the apex and the landing, and says how to go
     /// on. `watch` is shown the step as kept.
+    #[inline]
     pub fn observe(
         &mut self,
         step: &DenseStep<4>,
@@ -164,6 +169,7 @@ impl<'a> Events<'a> {
     /// When the next event is near, the time by which the next step should
     /// end: a little past it rather than wherever the error control would.
     /// `step` was not cut, so re0 and re1 are its ends' Reynolds numbers.
+    #[inline]
     fn next_event_by(&self, step: &DenseStep<4>, re0: f64, re1: f64) -> Option<f64> {
         let h = step.t1 - step.t0;
         let mut soonest = f64::INFINITY;

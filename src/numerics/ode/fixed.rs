@@ -41,7 +41,7 @@ where
         stats.accepted += 1;
         let dense = DenseStep::new(t, h, (y, y1), (&k1, &k_end), State::<N>::zeros());
         let control = observe(&dense);
-        if control == Control::Stop {
+        if matches!(control, Control::Stop) {
             return (Outcome::Stopped, stats);
         }
         if let Some(t_restart) = dense.restart_time(control) {

@@ -183,7 +183,7 @@ where
             last_rejected = false;
             h = h_next;
             let control = observe(&step);
-            if control == Control::Stop {
+            if matches!(control, Control::Stop) {
                 return (Outcome::Stopped, stats);
             }
             if let Some(t_restart) = step.restart_time(control) {
