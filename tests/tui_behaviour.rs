@@ -283,3 +283,39 @@ fn feet_are_a_display_choice() {
     assert!(screen.contains("range 441.93 ft"), "{screen}");
     assert!(screen.contains("x (ft)"), "{screen}");
 }
+
+#[test]
+fn a_save_never_hides_a_bundled_preset_unless_asked_twice() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = app(80, 24, Some(dir.path().to_owned()));
+    // The proposed name hides nothing: the fastball is bundled.
+    key(&mut app, KeyCode::Char('s'));
+    let Mode::Save { text, .. } = &app.mode else {
+        panic!("the save prompt is open")
+    };
+    assert_eq!(text.lines().join(""), "fastball-1");
+    // Typing the bundled name warns, and saves nothing.
+    typed(&mut app, "fastball");
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Save { error: Some(e), .. } => assert!(e.contains("is bundled"), "{e}"),
+        other => panic!("a warning, not {other:?}"),
+    }
+    assert!(!dir.path().join("fastball.toml").exists());
+    // Enter again: saved, and the picker says which fastball is which.
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert!(dir.path().join("fastball.toml").is_file());
+    key(&mut app, KeyCode::Char('o'));
+    let Mode::Open { items, .. } = &app.mode else {
+        panic!("the picker is open")
+    };
+    let details: Vec<&str> = items
+        .iter()
+        .filter(|i| i.name == "fastball")
+        .map(|i| i.detail.as_str())
+        .collect();
+    assert_eq!(details.len(), 2);
+    assert!(details[0].ends_with("(bundled; hidden by yours of that name)"));
+    assert!(details[1].ends_with("(yours; hides the bundled one)"));
+}

@@ -10,7 +10,7 @@ pub fn escape_for_terminal(text: &str) -> String {
 
 /// Escapes like [`escape_for_terminal`], cutting at `max` characters (the
 /// "…" included), never inside an escape.
-pub(super) fn escape_cut(text: &str, max: usize) -> String {
+pub fn escape_cut(text: &str, max: usize) -> String {
     let mut out = String::new();
     let mut count = 0;
     let mut chars = text.chars().peekable();

@@ -82,7 +82,7 @@ pub(super) fn size_text(size: Option<u64>) -> String {
 pub const MAX_BYTES: u64 = 1 << 20;
 
 /// A path as messages show it: escaped, never cut (the user needs all of it).
-pub(super) fn shown(path: &Path) -> String {
+pub fn shown(path: &Path) -> String {
     escape_cut(&path.display().to_string(), usize::MAX)
 }
 

@@ -13,10 +13,10 @@ use std::path::{Path, PathBuf};
 mod escape;
 mod file;
 
-use escape::escape_cut;
-pub use escape::escape_for_terminal;
+pub use escape::{escape_cut, escape_for_terminal};
+pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
-use file::{preset_files, shown, size_text, through};
+use file::{preset_files, size_text, through};
 
 use crate::model::aero::{DragModel, UnknownModel};
 use crate::model::keys::{DRAG_KEY, InputError, KEYS};
@@ -379,8 +379,43 @@ pub fn list(dir: Option<&Path>) -> Vec<Result<Preset, PresetError>> {
     all
 }
 
+/// Whether `name` is one of the bundled presets.
+pub fn is_bundled(name: &str) -> bool {
+    BUNDLED.iter().any(|(n, _)| *n == name)
+}
+
+/// The user's file that `load` reads for `name` in `dir`, if there is one:
+/// when names collide, the user's file wins over a bundled preset (so a
+/// bundled preset listed beside it is hidden from `--preset NAME`).
+pub fn user_file(name: &str, dir: Option<&Path>) -> Option<PathBuf> {
+    let candidate = dir?.join(format!("{name}.toml"));
+    fs::symlink_metadata(&candidate)
+        .is_ok()
+        .then_some(candidate)
+}
+
+/// A name to save under that hides nothing and overwrites nothing: `base`
+/// itself if it is neither bundled nor taken in `dir`, else `base-1`,
+/// `base-2`, … (a trailing `-N` on `base` is counted on from).
+pub fn fresh_name(base: &str, dir: Option<&Path>) -> String {
+    let free = |name: &str| !is_bundled(name) && user_file(name, dir).is_none();
+    if free(base) {
+        return base.to_owned();
+    }
+    let (stem, first) = match base.rsplit_once('-') {
+        Some((stem, n)) if !stem.is_empty() && n.parse::<u32>().is_ok() => {
+            (stem, n.parse::<u32>().unwrap_or(0) + 1)
+        }
+        _ => (base, 1),
+    };
+    (first..first + 10_000)
+        .map(|n| format!("{stem}-{n}"))
+        .find(|name| free(name))
+        .unwrap_or_else(|| format!("{stem}-new"))
+}
+
 /// Finds a preset by name (user folder first, so a user can shadow a bundled
-/// one) or, if `spec` looks like a path, reads that file. A name is looked up
+/// one: see [`user_file`]) or, if `spec` looks like a path, reads that file. A name is looked up
 /// in `dir` only if `dir` is usable ([`check_dir`]); any file there with that
 /// name is read, so a broken one is reported rather than skipped.
 pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
@@ -388,11 +423,8 @@ pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
     if spec.ends_with(".toml") || spec.contains(std::path::MAIN_SEPARATOR) {
         return Preset::read(as_path);
     }
-    if let Some(dir) = check_dir(dir)? {
-        let candidate = dir.join(format!("{spec}.toml"));
-        if fs::symlink_metadata(&candidate).is_ok() {
-            return Preset::read(&candidate);
-        }
+    if let Some(file) = user_file(spec, check_dir(dir)?) {
+        return Preset::read(&file);
     }
     if let Some((name, text)) = BUNDLED.iter().find(|(name, _)| *name == spec) {
         return Preset::parse(text, name, &format!("presets/{name}.toml"), Source::Bundled);
@@ -413,6 +445,22 @@ pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fresh_names_hide_nothing_and_overwrite_nothing() {
+        let folder = tempfile::tempdir().unwrap();
+        let dir = Some(folder.path());
+        assert_eq!(fresh_name("mine", dir), "mine");
+        assert_eq!(fresh_name("fastball", dir), "fastball-1");
+        std::fs::write(folder.path().join("fastball-1.toml"), "").unwrap();
+        assert_eq!(fresh_name("fastball", dir), "fastball-2");
+        assert_eq!(fresh_name("fastball-1", dir), "fastball-2");
+        assert_eq!(fresh_name("fastball", None), "fastball-1");
+        // The user's file wins a collision, and is the one `load` reads.
+        std::fs::write(folder.path().join("curveball.toml"), "[bat]\nspeed = 33\n").unwrap();
+        assert!(user_file("curveball", dir).is_some());
+        assert_eq!(load("curveball", dir).unwrap().scene.bat.speed, 33.0);
+    }
 
     #[test]
     fn bundled_presets_parse_and_round_trip() {

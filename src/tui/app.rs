@@ -60,10 +60,12 @@ pub enum Mode {
         text: TextArea<'static>,
         error: Option<String>,
     },
-    /// Typing a name to save the inputs under.
+    /// Typing a name to save the inputs under. `overwrite` is the bundled
+    /// name the user was warned about: Enter on it again saves anyway.
     Save {
         text: TextArea<'static>,
         error: Option<String>,
+        overwrite: Option<String>,
     },
     /// Choosing a preset to load.
     Open {
@@ -313,7 +315,11 @@ impl App {
             }
             Mode::Help => {}
             Mode::Edit { field, text, error } => self.edit_key(key, action, field, text, error),
-            Mode::Save { text, error } => self.save_key(key, action, text, error),
+            Mode::Save {
+                text,
+                error,
+                overwrite,
+            } => self.save_key(key, action, text, error, overwrite),
             Mode::Open {
                 items,
                 selected,
@@ -335,9 +341,12 @@ impl App {
             Action::Lower(step) => self.nudge(-step.factor()),
             Action::Confirm | Action::Edit => self.start_edit(),
             Action::Save => {
+                // A name that hides no bundled preset and overwrites no file.
+                let name = preset::fresh_name(&self.preset_name, self.presets_dir.as_deref());
                 self.mode = Mode::Save {
-                    text: prefilled(self.preset_name.clone()),
+                    text: prefilled(name),
                     error: None,
+                    overwrite: None,
                 };
             }
             Action::Open => self.open_picker(),
@@ -456,11 +465,24 @@ impl App {
         action: Option<Action>,
         mut text: TextArea<'static>,
         error: Option<String>,
+        overwrite: Option<String>,
     ) {
         match action {
             Some(Action::Close) => {}
             Some(Action::Confirm) => {
                 let name = text.lines().join("").trim().to_owned();
+                // Taking a bundled name hides the bundled preset from
+                // `--preset NAME` and from `o`: only when asked twice.
+                if preset::is_bundled(&name) && overwrite.as_deref() != Some(name.as_str()) {
+                    self.mode = Mode::Save {
+                        text,
+                        error: Some(format!(
+                            "`{name}` is bundled: your file would hide it (--preset {name} and o load yours); Enter again to save anyway"
+                        )),
+                        overwrite: Some(name),
+                    };
+                    return;
+                }
                 match self.save(&name) {
                     Ok(path) => {
                         self.preset_name = name;
@@ -470,13 +492,18 @@ impl App {
                         self.mode = Mode::Save {
                             text,
                             error: Some(e),
+                            overwrite,
                         }
                     }
                 }
             }
             _ => {
                 text.input(key);
-                self.mode = Mode::Save { text, error };
+                self.mode = Mode::Save {
+                    text,
+                    error,
+                    overwrite,
+                };
             }
         }
     }
@@ -502,7 +529,16 @@ impl App {
                 Ok(p) => PickItem {
                     name: p.name.clone(),
                     detail: match &p.source {
+                        Source::Bundled
+                            if preset::user_file(&p.name, self.presets_dir.as_deref())
+                                .is_some() =>
+                        {
+                            format!("{} (bundled; hidden by yours of that name)", p.description)
+                        }
                         Source::Bundled => format!("{} (bundled)", p.description),
+                        Source::File(_) if preset::is_bundled(&p.name) => {
+                            format!("{} (yours; hides the bundled one)", p.description)
+                        }
                         Source::File(_) => p.description.clone(),
                     },
                     preset: Some(p),

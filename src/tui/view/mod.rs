@@ -59,7 +59,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
     status_line(frame, panes.status, app);
     match &app.mode {
         Mode::Help => overlay::help(frame, area),
-        Mode::Save { text, error } => overlay::save(frame, area, app, text, error.as_deref()),
+        Mode::Save { text, error, .. } => overlay::save(frame, area, app, text, error.as_deref()),
         Mode::Open {
             items,
             selected,
