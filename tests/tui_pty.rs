@@ -277,3 +277,21 @@ fn running(pid: u32) -> bool {
         })
         .unwrap_or(false)
 }
+
+#[test]
+fn a_fifo_among_the_presets_leaves_the_picker_and_q_working() {
+    // Reading a FIFO would block until a writer came: the picker must list
+    // it as broken at once, and q must still quit.
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("fifo.toml");
+    let path = std::ffi::CString::new(fifo.to_str().unwrap()).unwrap();
+    // SAFETY: a plain libc call on a NUL-terminated path we own.
+    assert_eq!(unsafe { libc::mkfifo(path.as_ptr(), 0o644) }, 0);
+    let mut session = Session::start(&["--presets-dir", dir.path().to_str().unwrap()], 100, 30);
+    session.wait_for("Trajectory");
+    session.press("o");
+    session.wait_for("fifo.toml: not a regular file");
+    session.press("\u{1b}");
+    session.press("q");
+    assert_eq!(session.exit_code(), 0);
+}
