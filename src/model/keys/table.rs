@@ -1,0 +1,205 @@
+//! The key table: every numeric input's name, symbol, unit, bounds (with
+//! the reason beside each where it is not obvious), nudge step and accessors.
+
+use std::f64::consts::FRAC_PI_2;
+
+use super::{Bounds, Key};
+
+macro_rules! key {
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, $($field:ident).+) => {
+        Key {
+            name: $name,
+            symbol: $symbol,
+            unit: $unit,
+            description: $desc,
+            bounds: $bounds,
+            step: $step,
+            get: |s| s.$($field).+,
+            set: |s, v| s.$($field).+ = v,
+        }
+    };
+}
+
+/// Every numeric input. Bounds are what the model can meaningfully take:
+/// Eq. (19) keeps e* in (0, 1) for approach speeds below about 240 m/s, so
+/// speeds stop at 100 m/s each.
+pub const KEYS: &[Key] = &[
+    key!(
+        "pitch.speed",
+        "V̂_b0",
+        "m/s",
+        "pitch speed at the plate",
+        Bounds::positive(100.0),
+        0.5,
+        pitch.speed
+    ),
+    key!(
+        "pitch.spin",
+        "ω_b0",
+        "rad/s",
+        "pitch spin (topspin positive, fastball backspin negative)",
+        Bounds::closed(-1000.0, 1000.0),
+        10.0,
+        pitch.spin
+    ),
+    key!(
+        "bat.speed",
+        "V̂_B0",
+        "m/s",
+        "bat speed at the contact point",
+        Bounds::positive(100.0),
+        0.5,
+        bat.speed
+    ),
+    key!(
+        "bat.spin",
+        "ω_B0",
+        "rad/s",
+        "bat roll about its axis (positive adds backspin, Fig. 9)",
+        Bounds::closed(-200.0, 200.0),
+        5.0,
+        bat.spin
+    ),
+    key!(
+        "bat.undercut",
+        "E",
+        "m",
+        "undercut: ball centre above bat axis",
+        Bounds::closed(-0.4, 0.4),
+        0.0005,
+        bat.undercut
+    ),
+    key!(
+        "bat.swing_angle",
+        "ψ",
+        "rad",
+        "swing angle above horizontal",
+        Bounds::closed(-FRAC_PI_2, FRAC_PI_2),
+        0.01,
+        bat.swing_angle
+    ),
+    key!(
+        "bat.friction",
+        "μ",
+        "",
+        "bat–ball coefficient of friction",
+        Bounds::closed(0.0, 2.0),
+        0.01,
+        bat.friction
+    ),
+    // From well below any bat (a 0.9 kg bat weighs ~0.6–0.8 kg at its sweet
+    // spot) to a sledgehammer; away from 0, where Eq. (12)'s inverse inertia
+    // overflows.
+    key!(
+        "bat.effective_mass",
+        "M_B",
+        "kg",
+        "bat mass equivalent at the centre of percussion",
+        Bounds::closed(0.05, 10.0),
+        0.05,
+        bat.effective_mass
+    ),
+    // A broomstick (1 cm) to a log; away from 0, where the bat's moment of
+    // inertia underflows.
+    key!(
+        "bat.radius",
+        "r_B",
+        "m",
+        "bat barrel radius",
+        Bounds::closed(0.01, 0.2),
+        0.001,
+        bat.radius
+    ),
+    // Also tied to r_B in `validate`: between 0.2·r_B (all mass at the core)
+    // and r_B (a thin tube), as for any body of revolution of that radius.
+    key!(
+        "bat.gyration_radius",
+        "k_B2",
+        "m",
+        "bat radius of gyration about its axis",
+        Bounds::closed(0.001, 0.2),
+        0.001,
+        bat.gyration_radius
+    ),
+    // Also tied to r_b in `validate`: the model ignores buoyancy and the air
+    // a ball drags along, fair only for a ball far denser than air.
+    key!(
+        "ball.mass",
+        "M_b",
+        "kg",
+        "ball mass",
+        Bounds::closed(0.001, 10.0),
+        0.005,
+        ball.mass
+    ),
+    // A marble (1 cm) to a volleyball-and-more (20 cm); away from 0, where
+    // the ball's moment of inertia underflows.
+    key!(
+        "ball.radius",
+        "r_b",
+        "m",
+        "ball radius",
+        Bounds::closed(0.01, 0.2),
+        0.001,
+        ball.radius
+    ),
+    // Also tied to r_b in `validate`: between 0.2·r_b (a heavy core) and
+    // √(2/3)·r_b (a thin shell, the most a sphere's mass can spread).
+    key!(
+        "ball.gyration_radius",
+        "k_b",
+        "m",
+        "ball radius of gyration",
+        Bounds::closed(0.001, 0.2),
+        0.001,
+        ball.gyration_radius
+    ),
+    key!(
+        "environment.wind",
+        "V_w",
+        "m/s",
+        "horizontal wind, positive toward centre field",
+        Bounds::closed(-50.0, 50.0),
+        1.0,
+        environment.wind
+    ),
+    key!(
+        "environment.air_density",
+        "ρ",
+        "kg/m³",
+        "air density",
+        Bounds::closed(0.0, 5.0),
+        0.01,
+        environment.air_density
+    ),
+    key!(
+        "environment.kinematic_viscosity",
+        "ν",
+        "m²/s",
+        "kinematic viscosity of air",
+        Bounds::positive(1e-3),
+        1e-7,
+        environment.kinematic_viscosity
+    ),
+    key!(
+        "environment.gravity",
+        "g",
+        "m/s²",
+        "gravitational acceleration",
+        Bounds::positive(30.0),
+        0.1,
+        environment.gravity
+    ),
+    key!(
+        "environment.contact_height",
+        "y(0)",
+        "m",
+        "height of the ball at contact",
+        Bounds::closed(0.0, 10.0),
+        0.1,
+        environment.contact_height
+    ),
+];
+
+/// The one non-numeric input.
+pub const DRAG_KEY: &str = "model.drag";
