@@ -3,7 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::aero::DragModel;
+use super::aero::{DragModel, LiftModel};
 
 /// The pitched ball as it reaches the plate.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -71,6 +71,12 @@ pub struct Scene {
     pub ball: Ball,
     pub environment: Environment,
     pub drag: DragModel,
+    #[serde(default)]
+    pub lift: LiftModel,
+    /// τ (s), the spin's decay time in flight, ω(t) = ω₀·e^(−t/τ); 0 for
+    /// none (the paper's constant spin).
+    #[serde(default)]
+    pub spin_decay: f64,
 }
 
 impl Default for Scene {
@@ -109,6 +115,8 @@ impl Default for Scene {
                 contact_height: 1.0,
             },
             drag: DragModel::Sawicki2003,
+            lift: LiftModel::Sawicki2003,
+            spin_decay: 0.0,
         }
     }
 }
@@ -131,4 +139,4 @@ impl Scene {
 }
 
 // Old paths, kept while the frontends move over (removed before this lands).
-pub use super::keys::{DRAG_KEY, InputError, KEYS, Key};
+pub use super::keys::{DRAG_KEY, InputError, KEYS, Key, LIFT_KEY};

@@ -12,7 +12,7 @@ use super::scene::Scene;
 
 mod table;
 
-pub use table::{DRAG_KEY, KEYS};
+pub use table::{DRAG_KEY, EXTENDED_KEYS, KEYS, LIFT_KEY, all_keys};
 
 /// A closed or half-open interval of accepted values.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -150,7 +150,7 @@ pub enum InputError {
 impl Scene {
     /// Looks up a numeric key.
     pub fn key(name: &str) -> Result<&'static Key, InputError> {
-        KEYS.iter()
+        all_keys()
             .find(|k| k.name == name)
             .ok_or_else(|| InputError::UnknownKey {
                 key: name.to_owned(),
@@ -175,6 +175,10 @@ impl Scene {
             self.drag = text.parse()?;
             return Ok(());
         }
+        if name == LIFT_KEY {
+            self.lift = text.parse()?;
+            return Ok(());
+        }
         let key = Self::key(name)?;
         let value: f64 = text.trim().parse().map_err(|_| InputError::NotANumber {
             key: name.to_owned(),
@@ -187,7 +191,7 @@ impl Scene {
     /// Checks every input before any computation. The first problem found is
     /// returned; ranges first, then the relations between inputs.
     pub fn validate(&self) -> Result<(), InputError> {
-        for key in KEYS {
+        for key in all_keys() {
             let value = (key.get)(self);
             if !key.bounds.contains(value) {
                 return Err(InputError::OutOfRange {
@@ -275,9 +279,9 @@ fn check_gyration(
 
 /// " (did you mean `bat.speed`?)" for a near miss of a known key.
 fn suggestion(key: &str) -> String {
-    KEYS.iter()
+    all_keys()
         .map(|k| k.name)
-        .chain([DRAG_KEY])
+        .chain([DRAG_KEY, LIFT_KEY])
         .map(|name| (strsim::jaro_winkler(key, name), name))
         .max_by(|a, b| a.0.total_cmp(&b.0))
         .filter(|(score, _)| *score > 0.85)
@@ -305,8 +309,8 @@ fn unit_suffix(unit: &str) -> String {
 }
 
 fn known_keys() -> String {
-    let mut names: Vec<&str> = KEYS.iter().map(|k| k.name).collect();
-    names.push(DRAG_KEY);
+    let mut names: Vec<&str> = all_keys().map(|k| k.name).collect();
+    names.extend([DRAG_KEY, LIFT_KEY]);
     names.join(", ")
 }
 

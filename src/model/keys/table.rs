@@ -201,5 +201,29 @@ pub const KEYS: &[Key] = &[
     ),
 ];
 
-/// The one non-numeric input.
+/// The inputs beyond the paper, from Alan Nathan's trajectory calculator.
+/// Kept apart from [`KEYS`] while the explorer's rows, a saved preset's
+/// lines and `homerun keys` are built from that table alone; `Scene::key`,
+/// `Scene::set` and `Scene::validate` take both (see [`all_keys`]).
+pub const EXTENDED_KEYS: &[Key] = &[
+    // §II.D: ~30–50 s for a baseball, ~16 s measured on golf balls. Up to
+    // 1000 s, where a 6 s flight loses 0.6 % of its spin.
+    key!(
+        "model.spin_decay",
+        "τ",
+        "s",
+        "spin decay time, ω(t) = ω₀·e^(−t/τ); 0 = no decay (the paper's constant spin)",
+        Bounds::closed(0.0, 1000.0),
+        1.0,
+        spin_decay
+    ),
+];
+
+/// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`].
+pub fn all_keys() -> impl Iterator<Item = &'static Key> {
+    KEYS.iter().chain(EXTENDED_KEYS)
+}
+
+/// The non-numeric inputs: the drag and lift models.
 pub const DRAG_KEY: &str = "model.drag";
+pub const LIFT_KEY: &str = "model.lift";
