@@ -1,10 +1,12 @@
 //! The paper's model, one file per phase: pitch (Eq. 3–4) → impact
-//! (Eq. 1–2, 5–23) → flight (Eq. 25–29); the inputs in `scene` and their
-//! names, bounds and validation in `keys`. It knows nothing of who asks or
+//! (Eq. 1–2, 5–23) → flight (Eq. 25–29), with the aerodynamic models in
+//! `aero` and the air from the weather in `atmosphere`; the inputs in `scene`
+//! and their names, bounds and validation in `keys`. It knows nothing of who asks or
 //! how precisely: callers pass [`FlightOptions`] (or anything that becomes
 //! them, such as `analysis::precision::Purpose`).
 
 pub mod aero;
+pub mod atmosphere;
 pub mod flight;
 pub mod impact;
 pub mod keys;

@@ -10,8 +10,11 @@ use super::aero::UnknownModel;
 use super::pitch;
 use super::scene::Scene;
 
+mod batch;
 mod table;
 
+pub use batch::InputBatch;
+use table::{AIR_KEYS, ATMOSPHERE_KEYS};
 pub use table::{DRAG_KEY, EXTENDED_KEYS, KEYS, LIFT_KEY, all_keys};
 
 /// A closed or half-open interval of accepted values.
@@ -123,6 +126,16 @@ pub enum InputError {
     #[error(transparent)]
     UnknownModel(#[from] UnknownModel),
     #[error(
+        "{given} and {weather} set together: the weather keys ({}) derive ρ and ν; give either ρ and ν or the weather",
+        ATMOSPHERE_KEYS.join(", ")
+    )]
+    AirGivenTwice {
+        /// The ρ or ν key given.
+        given: &'static str,
+        /// The weather key given.
+        weather: &'static str,
+    },
+    #[error(
         "ball.mass = {mass} kg: with ball.radius = {radius} m the ball is {density:.3} kg/m³ on average; the model ignores buoyancy and needs at least {MIN_BALL_DENSITY} kg/m³ (a ping-pong ball is ~80), so ball.mass ≥ {minimum:.4} kg"
     )]
     BallTooLight {
@@ -191,7 +204,14 @@ impl Scene {
     /// Checks every input before any computation. The first problem found is
     /// returned; ranges first, then the relations between inputs.
     pub fn validate(&self) -> Result<(), InputError> {
-        for key in all_keys() {
+        // Derived, ρ and ν are checked after the weather they come from, so
+        // that a bad temperature is named rather than the density it gave.
+        let derived = self.environment.atmosphere().is_some();
+        let later = |key: &&Key| derived && AIR_KEYS.contains(&key.name);
+        let ordered = all_keys()
+            .filter(|k| !later(k))
+            .chain(all_keys().filter(later));
+        for key in ordered {
             let value = (key.get)(self);
             if !key.bounds.contains(value) {
                 return Err(InputError::OutOfRange {

@@ -4,6 +4,7 @@
 use std::f64::consts::FRAC_PI_2;
 
 use super::{Bounds, Key};
+use crate::model::atmosphere::Atmosphere;
 
 macro_rules! key {
     ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, $($field:ident).+) => {
@@ -17,6 +18,39 @@ macro_rules! key {
             get: |s| s.$($field).+,
             set: |s, v| s.$($field).+ = v,
         }
+    };
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, get: $get:expr, set: $set:expr) => {
+        Key {
+            name: $name,
+            symbol: $symbol,
+            unit: $unit,
+            description: $desc,
+            bounds: $bounds,
+            step: $step,
+            get: $get,
+            set: $set,
+        }
+    };
+}
+
+/// A key of the weather: reads the atmosphere in force (the standard one
+/// while ρ and ν are given), and writing it derives ρ and ν.
+macro_rules! atmosphere_key {
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, $field:ident) => {
+        key!(
+            $name,
+            $symbol,
+            $unit,
+            $desc,
+            $bounds,
+            $step,
+            get: |s| s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD).$field,
+            set: |s, v| {
+                let mut atmosphere = s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD);
+                atmosphere.$field = v;
+                s.environment.set_atmosphere(atmosphere)
+            }
+        )
     };
 }
 
@@ -163,6 +197,7 @@ pub const KEYS: &[Key] = &[
         1.0,
         environment.wind
     ),
+    // Given, ρ and ν replace any atmosphere's (see `environment.temperature`).
     key!(
         "environment.air_density",
         "ρ",
@@ -170,7 +205,8 @@ pub const KEYS: &[Key] = &[
         "air density",
         Bounds::closed(0.0, 5.0),
         0.01,
-        environment.air_density
+        get: |s| s.environment.air_density,
+        set: |s, v| s.environment.set_air_density(v)
     ),
     key!(
         "environment.kinematic_viscosity",
@@ -179,7 +215,8 @@ pub const KEYS: &[Key] = &[
         "kinematic viscosity of air",
         Bounds::positive(1e-3),
         1e-7,
-        environment.kinematic_viscosity
+        get: |s| s.environment.kinematic_viscosity,
+        set: |s, v| s.environment.set_kinematic_viscosity(v)
     ),
     key!(
         "environment.gravity",
@@ -201,10 +238,16 @@ pub const KEYS: &[Key] = &[
     ),
 ];
 
-/// The inputs beyond the paper, from Alan Nathan's trajectory calculator.
-/// Kept apart from [`KEYS`] while the explorer's rows, a saved preset's
-/// lines and `homerun keys` are built from that table alone; `Scene::key`,
-/// `Scene::set` and `Scene::validate` take both (see [`all_keys`]).
+/// The inputs beyond the paper, from Alan Nathan's trajectory calculator:
+/// the spin's decay and the weather. Kept apart from [`KEYS`] while the
+/// explorer's rows, a saved preset's lines and `homerun keys` are built from
+/// that table alone; `Scene::key`, `Scene::set` and `Scene::validate` take
+/// both (see [`all_keys`]).
+///
+/// Setting any weather key derives ρ and ν from the four (the others at
+/// their standard values, [`Atmosphere::STANDARD`]); giving ρ or ν
+/// afterwards replaces the derived value. One source of inputs may not give
+/// both: see [`super::InputBatch`].
 pub const EXTENDED_KEYS: &[Key] = &[
     // §II.D: ~30–50 s for a baseball, ~16 s measured on golf balls. Up to
     // 1000 s, where a 6 s flight loses 0.6 % of its spin.
@@ -217,12 +260,67 @@ pub const EXTENDED_KEYS: &[Key] = &[
         1.0,
         spin_decay
     ),
+    // From colder than any game (−50 °C) to above the hottest air recorded
+    // (56.7 °C); Sutherland's law and the vapour-pressure fit hold there.
+    atmosphere_key!(
+        "environment.temperature",
+        "T",
+        "°C",
+        "air temperature (setting it derives ρ and ν)",
+        Bounds::closed(-50.0, 60.0),
+        1.0,
+        temperature
+    ),
+    // From the Dead Sea shore (−430 m) to above the highest cities (El Alto,
+    // 4150 m); the e^(−βh) pressure law stays within a few per cent of the
+    // standard atmosphere's there.
+    atmosphere_key!(
+        "environment.elevation",
+        "h",
+        "m",
+        "field elevation above sea level (setting it derives ρ and ν)",
+        Bounds::closed(-500.0, 5000.0),
+        10.0,
+        elevation
+    ),
+    // Sea-level-corrected, as weather reports give it: from the lowest ever
+    // recorded (870 hPa, typhoon Tip) to the highest (1084.8 hPa, Siberia).
+    atmosphere_key!(
+        "environment.pressure",
+        "p",
+        "hPa",
+        "barometric pressure corrected to sea level (setting it derives ρ and ν)",
+        Bounds::closed(870.0, 1085.0),
+        1.0,
+        pressure
+    ),
+    atmosphere_key!(
+        "environment.humidity",
+        "RH",
+        "%",
+        "relative humidity (setting it derives ρ and ν)",
+        Bounds::closed(0.0, 100.0),
+        5.0,
+        humidity
+    ),
 ];
 
 /// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`].
 pub fn all_keys() -> impl Iterator<Item = &'static Key> {
     KEYS.iter().chain(EXTENDED_KEYS)
 }
+
+/// The given air: ρ and ν.
+pub(super) const AIR_KEYS: [&str; 2] =
+    ["environment.air_density", "environment.kinematic_viscosity"];
+
+/// The weather keys, which derive ρ and ν.
+pub(super) const ATMOSPHERE_KEYS: [&str; 4] = [
+    "environment.temperature",
+    "environment.elevation",
+    "environment.pressure",
+    "environment.humidity",
+];
 
 /// The non-numeric inputs: the drag and lift models.
 pub const DRAG_KEY: &str = "model.drag";
