@@ -47,6 +47,24 @@ pub fn simulate(scene: &Scene, options: impl Into<FlightOptions>) -> Swing {
     }
 }
 
+/// Flies a batted ball from a launch given directly (speed in m/s, angle
+/// above the horizontal in rad, spin in rad/s with backspin positive), from
+/// the scene's contact height, with no pitch and no impact: the scene gives
+/// only the ball, the air, the field and the aerodynamic models.
+pub fn fly_launch(
+    scene: &Scene,
+    launch_speed: f64,
+    launch_angle: f64,
+    launch_spin: f64,
+    options: impl Into<FlightOptions>,
+) -> FlightSummary {
+    let start = Launch {
+        position: Vector2::new(0.0, scene.environment.contact_height),
+        velocity: Vector2::new(launch_angle.cos(), launch_angle.sin()) * launch_speed,
+    };
+    flight::fly(&Flight::new(scene, launch_spin), &start, &options.into())
+}
+
 /// Just the range: what the optimiser and the heatmap need.
 pub fn range(scene: &Scene, options: impl Into<FlightOptions>) -> f64 {
     simulate(scene, options).flight.range
