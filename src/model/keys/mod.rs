@@ -1,8 +1,10 @@
-//! Every numeric input has one entry in [`KEYS`]: its dotted key (the same in
-//! TOML presets, `--set`, sweeps and the explorer), its symbol in the paper, its
-//! unit, its accepted range and a nudge step for the explorer. Validation,
-//! parsing and the generic get/set all go through that table, so a new input
-//! is added in exactly one place.
+//! Every numeric input has one entry in [`KEYS`] (or, for the inputs beyond
+//! the paper, [`EXTENDED_KEYS`]): its dotted key (the same in TOML presets,
+//! `--set`, sweeps and the explorer), its symbol in the paper, its unit, its
+//! accepted range and a nudge step for the explorer. Validation, parsing and
+//! the generic get/set all go through those tables, so a new input is added
+//! in exactly one place. [`InputBatch`] sets the keys of one source of
+//! inputs, refusing contradictory ones.
 
 use std::f64::consts::FRAC_PI_2;
 
