@@ -1,6 +1,7 @@
 //! `homerun bench`: speed against error, measured on this machine.
 //!
-//! Three tables: one trajectory per integrator setting, one optimisation per
+//! Four tables: one trajectory per integrator setting, the same launch per
+//! aero model (drag × lift, spin decay), one optimisation per
 //! Table II pitch per tolerance pair, and one 64×64 range surface per
 //! tolerance on one thread and on all cores. Every error is measured against
 //! a solve at the tightest setting; times are medians over repeated runs.
@@ -62,6 +63,7 @@ pub struct Report {
     pub quick: bool,
     pub reference: ReferenceCheck,
     pub trajectory: Vec<TrajectoryRow>,
+    pub aero: Vec<AeroRow>,
     pub optimisation: Vec<OptimisationRow>,
     pub surface: Vec<SurfaceRow>,
     /// The tolerances each consumer uses now (src/precision.rs).
@@ -93,6 +95,23 @@ pub struct TrajectoryRow {
     /// Median wall time per trajectory.
     pub time_us: f64,
     /// Median CPU time per trajectory (Unix only).
+    pub cpu_us: Option<f64>,
+    pub range_error: f64,
+}
+
+/// The Table II fastball launch under one drag × lift pair (and spin decay
+/// time, 0 for none) at one tolerance (dopri5, stopping at kinks), its error
+/// against Purpose::Reference for the same models.
+#[derive(Clone, Debug, Serialize)]
+pub struct AeroRow {
+    pub drag: &'static str,
+    pub lift: &'static str,
+    pub spin_decay: f64,
+    pub tolerance: f64,
+    pub absolute: f64,
+    pub evaluations: u32,
+    pub rejected: u32,
+    pub time_us: f64,
     pub cpu_us: Option<f64>,
     pub range_error: f64,
 }
@@ -270,6 +289,53 @@ fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
     rows
 }
 
+fn aero_trajectories(effort: Effort, quick: bool) -> Vec<AeroRow> {
+    use crate::model::aero::{DragModel as D, LiftModel as L};
+    let (_, launch) = fastball_launch();
+    let spin = Impact::new(&Scene::default()).launch_spin();
+    let models = [
+        (D::Sawicki2003, L::Sawicki2003, 0.0),
+        (D::Constant, L::Sawicki2003, 0.0),
+        (D::Nathan, L::Nathan, 0.0),
+        (D::Nathan, L::Nathan, 25.0),
+        (D::Nathan, L::Sawicki2003, 0.0),
+        (D::Sawicki2003, L::Nathan, 0.0),
+        (D::Nathan, L::None, 0.0),
+    ];
+    let exponents: &[i32] = if quick { &[5, 8] } else { &[4, 5, 6, 7, 8, 10] };
+    let mut rows = Vec::new();
+    for (drag, lift, spin_decay) in models {
+        let scene = Scene {
+            drag,
+            lift,
+            spin_decay,
+            ..Scene::default()
+        };
+        let flight = Flight::new(&scene, spin);
+        let reference = flight::fly(&flight, &launch, &Purpose::Reference.flight_options());
+        for &e in exponents {
+            let options = stated_mixed(e, e - 1, true);
+            let summary = flight::fly(&flight, &launch, &options);
+            let (time, cpu) = time_median(effort.trajectory_batches, TRAJECTORY_BATCH, || {
+                flight::fly(std::hint::black_box(&flight), &launch, &options)
+            });
+            rows.push(AeroRow {
+                drag: drag.name(),
+                lift: lift.name(),
+                spin_decay,
+                tolerance: options.tolerance.relative,
+                absolute: options.tolerance.absolute,
+                evaluations: summary.stats.evaluations,
+                rejected: summary.stats.rejected,
+                time_us: time * 1e6,
+                cpu_us: cpu.map(|c| c * 1e6),
+                range_error: summary.range - reference.range,
+            });
+        }
+    }
+    rows
+}
+
 /// The optimiser's settings for a stopping tolerance on range (m): the
 /// simplex size in scaled units follows it (1e-4 m ↔ 1e-4, the default).
 fn optimizer_settings(tolerance: f64) -> OptimizerSettings {
@@ -439,6 +505,7 @@ pub fn run(quick: bool) -> Report {
             difference: reference - PYTHON_REFERENCE_RANGE,
         },
         trajectory: trajectories(effort, reference),
+        aero: aero_trajectories(effort, quick),
         optimisation: optimisations(effort, quick),
         surface: surfaces(effort, threads, quick),
         defaults: defaults(reference),

@@ -52,6 +52,36 @@ fn render(report: &Report) -> String {
     }
     let _ = writeln!(
         out,
+        "\none trajectory per aero model (Table II fastball launch, dopri5 stopping at kinks; errors against Purpose::Reference for the same models)\n{:<11} {:<11} {:>10} {:>9} {:>8} {:>11} {:>8} {:>9} {:>8} {:>11}",
+        "drag",
+        "lift",
+        "spin_decay",
+        "tolerance",
+        "absolute",
+        "evaluations",
+        "rejected",
+        "time_us",
+        "cpu_us",
+        "range_error"
+    );
+    for r in &report.aero {
+        let _ = writeln!(
+            out,
+            "{:<11} {:<11} {:>10} {:>9.0e} {:>8.0e} {:>11} {:>8} {:>9.2} {:>8} {:>11.2e}",
+            r.drag,
+            r.lift,
+            r.spin_decay,
+            r.tolerance,
+            r.absolute,
+            r.evaluations,
+            r.rejected,
+            r.time_us,
+            or_dash(r.cpu_us, |c| format!("{c:.2}")),
+            r.range_error
+        );
+    }
+    let _ = writeln!(
+        out,
         "\none optimisation per Table II pitch (errors against optimiser 1e-9, integrator 1e-12)"
     );
     let _ = writeln!(

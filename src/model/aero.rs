@@ -1,6 +1,43 @@
-//! Aerodynamic coefficients: drag C_D(Re) (Fig. 3) and lift C_L(S) (Eq. 29).
+//! Aerodynamic coefficients, one small type per model behind two
+//! interfaces: [`DragCurve`] (C_D) and [`LiftCurve`] (C_L). The flight holds
+//! a [`DragModel`] and a [`LiftModel`], enums that dispatch to them, and
+//! never asks which it has.
+//!
+//! - Drag: the paper's C_D(Re) with the drag crisis (Fig. 3), a constant 0.5,
+//!   or Alan Nathan's spin-dependent C_D.
+//! - Lift: the paper's bilinear C_L(S) (Eq. 29), Nathan's C_L(S), or none.
+//!
+//! Nathan's formulas are those of his trajectory calculator (A. M. Nathan,
+//! "Trajectory calculator", baseball.physics.illinois.edu, 2012 onward).
 
 use serde::{Deserialize, Serialize};
+
+/// What a drag model gives the flight.
+pub trait DragCurve {
+    /// C_D at Reynolds number `reynolds` and spin rate `spin_rate` = |ω|
+    /// (rad/s), by the formula of smooth piece `piece` (see
+    /// [`DragModel::drag_coefficient_on`]); a curve without kinks has one
+    /// piece and ignores it.
+    fn coefficient_on(&self, piece: usize, reynolds: f64, spin_rate: f64) -> f64;
+
+    /// Reynolds numbers where C_D(Re) has a corner (its derivative jumps),
+    /// in increasing order. An integrator that steps across one loses an
+    /// order of accuracy, so the flight can stop its steps there.
+    fn kinks(&self) -> &'static [f64] {
+        &[]
+    }
+}
+
+/// What a lift model gives the flight.
+pub trait LiftCurve {
+    /// C_L at spin parameter S = r_b|ω|/|V_r|.
+    fn coefficient(&self, spin_parameter: f64) -> f64;
+
+    /// C_L·|V_r| from |V_r| and the surface speed r_b|ω|, written without
+    /// dividing by |V_r|, so that a zero relative wind or a zero spin gives
+    /// exactly zero lift, never 0/0.
+    fn coefficient_times_speed(&self, air_speed: f64, surface_speed: f64) -> f64;
+}
 
 /// Which drag curve the flight uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
@@ -17,15 +54,23 @@ pub enum DragModel {
     Sawicki2003,
     /// C_D = 0.5 throughout, as Watts & Baroni assumed: no drag crisis.
     Constant,
+    /// Nathan's C_D = 0.3008 + 0.0292·(ω/1000 rpm): no crisis, more drag
+    /// with more spin.
+    Nathan,
 }
 
 impl DragModel {
-    pub const ALL: [DragModel; 2] = [DragModel::Sawicki2003, DragModel::Constant];
+    pub const ALL: [DragModel; 3] = [
+        DragModel::Sawicki2003,
+        DragModel::Constant,
+        DragModel::Nathan,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
             DragModel::Sawicki2003 => "sawicki2003",
             DragModel::Constant => "constant",
+            DragModel::Nathan => "nathan",
         }
     }
 
@@ -33,10 +78,12 @@ impl DragModel {
         match self {
             DragModel::Sawicki2003 => "drag crisis at Re ≈ 160 000 (the paper's Fig. 3)",
             DragModel::Constant => "C_D = 0.5 at every Re (no drag crisis)",
+            DragModel::Nathan => "C_D = 0.3008 + 0.0292·(spin/1000 rpm) (Nathan's calculator)",
         }
     }
 
-    /// C_D at Reynolds number `re`.
+    /// C_D at Reynolds number `re`, for a ball without spin (only Nathan's
+    /// C_D depends on spin: see [`DragCurve::coefficient_on`]).
     #[inline]
     pub fn drag_coefficient(self, re: f64) -> f64 {
         self.drag_coefficient_on(self.piece(re), re)
@@ -50,42 +97,97 @@ impl DragModel {
     }
 
     /// C_D by the formula of piece `piece`, continued smoothly past the
-    /// piece's ends: an integrator step that starts on a piece keeps its
-    /// formula, so it sees a smooth right-hand side, and the flight switches
-    /// formula where the step crosses the kink. The continuation holds for
-    /// [`CONTINUATION`] past a kink and is constant beyond, so that a long
-    /// step cannot meet an exploding exponential (C_D ≈ 37 at Re = 10⁵ on the
-    /// rising piece; at most 2.3 here) or a negative drag (the recovery piece,
-    /// continued, turns negative below Re ≈ 155 000).
+    /// piece's ends (see [`Sawicki2003Drag`]), for a ball without spin.
     #[inline]
     pub fn drag_coefficient_on(self, piece: usize, re: f64) -> f64 {
+        self.coefficient_on(piece, re, 0.0)
+    }
+
+    /// Reynolds numbers where C_D(Re) has a corner (see [`DragCurve::kinks`]).
+    pub fn kinks(self) -> &'static [f64] {
+        DragCurve::kinks(&self)
+    }
+}
+
+impl DragCurve for DragModel {
+    #[inline]
+    fn coefficient_on(&self, piece: usize, reynolds: f64, spin_rate: f64) -> f64 {
         match self {
-            DragModel::Sawicki2003 => match piece {
-                0 => SUBCRITICAL_DRAG,
-                1 => {
-                    let re = re.max(SAWICKI_KINKS[0] - CONTINUATION);
-                    DRAG_FLOOR + 0.0416812 * (((CRISIS_START - re) * (1.0 / 8784.46)).exp() - 1.0)
-                }
-                2 => DRAG_FLOOR,
-                _ => {
-                    let re = re.max(CRISIS_END - CONTINUATION);
-                    DRAG_FLOOR + 0.309620 * (1.0 - ((CRISIS_END - re) * (1.0 / 49808.6)).exp())
-                }
-            },
-            DragModel::Constant => SUBCRITICAL_DRAG,
+            DragModel::Sawicki2003 => Sawicki2003Drag.coefficient_on(piece, reynolds, spin_rate),
+            DragModel::Constant => ConstantDrag.coefficient_on(piece, reynolds, spin_rate),
+            DragModel::Nathan => NathanDrag.coefficient_on(piece, reynolds, spin_rate),
         }
     }
 
-    /// Reynolds numbers where C_D(Re) has a corner (its derivative jumps).
-    /// An integrator that steps across one loses an order of accuracy, so the
-    /// flight can stop its steps there.
-    pub fn kinks(self) -> &'static [f64] {
+    fn kinks(&self) -> &'static [f64] {
         match self {
-            DragModel::Sawicki2003 => &SAWICKI_KINKS,
-            DragModel::Constant => &[],
+            DragModel::Sawicki2003 => Sawicki2003Drag.kinks(),
+            DragModel::Constant => ConstantDrag.kinks(),
+            DragModel::Nathan => NathanDrag.kinks(),
         }
     }
 }
+
+/// The paper's C_D(Re) (Fig. 3), in four pieces split at its three kinks.
+///
+/// Each piece's formula is continued smoothly past the piece's ends: an
+/// integrator step that starts on a piece keeps its formula, so it sees a
+/// smooth right-hand side, and the flight switches formula where the step
+/// crosses the kink. The continuation holds for [`CONTINUATION`] past a kink
+/// and is constant beyond, so that a long step cannot meet an exploding
+/// exponential (C_D ≈ 37 at Re = 10⁵ on the rising piece; at most 2.3 here)
+/// or a negative drag (the recovery piece, continued, turns negative below
+/// Re ≈ 155 000).
+#[derive(Clone, Copy, Debug)]
+pub struct Sawicki2003Drag;
+
+impl DragCurve for Sawicki2003Drag {
+    #[inline]
+    fn coefficient_on(&self, piece: usize, re: f64, _spin_rate: f64) -> f64 {
+        match piece {
+            0 => SUBCRITICAL_DRAG,
+            1 => {
+                let re = re.max(SAWICKI_KINKS[0] - CONTINUATION);
+                DRAG_FLOOR + 0.0416812 * (((CRISIS_START - re) * (1.0 / 8784.46)).exp() - 1.0)
+            }
+            2 => DRAG_FLOOR,
+            _ => {
+                let re = re.max(CRISIS_END - CONTINUATION);
+                DRAG_FLOOR + 0.309620 * (1.0 - ((CRISIS_END - re) * (1.0 / 49808.6)).exp())
+            }
+        }
+    }
+
+    fn kinks(&self) -> &'static [f64] {
+        &SAWICKI_KINKS
+    }
+}
+
+/// C_D = 0.5 at every Re and spin.
+#[derive(Clone, Copy, Debug)]
+pub struct ConstantDrag;
+
+impl DragCurve for ConstantDrag {
+    #[inline]
+    fn coefficient_on(&self, _piece: usize, _reynolds: f64, _spin_rate: f64) -> f64 {
+        SUBCRITICAL_DRAG
+    }
+}
+
+/// Nathan's C_D = 0.3008 + 0.0292·(ω/1000), ω in rpm: linear in the spin,
+/// independent of Re.
+#[derive(Clone, Copy, Debug)]
+pub struct NathanDrag;
+
+impl DragCurve for NathanDrag {
+    #[inline]
+    fn coefficient_on(&self, _piece: usize, _reynolds: f64, spin_rate: f64) -> f64 {
+        0.3008 + 0.0292 * (spin_rate * THOUSAND_RPM_PER_RAD_PER_S)
+    }
+}
+
+/// 1 rad/s in units of 1000 rpm: 60/(2π·1000).
+const THOUSAND_RPM_PER_RAD_PER_S: f64 = 60.0 / (2.0 * std::f64::consts::PI * 1000.0);
 
 /// How far (in Re) a piece's formula is continued past its kinks: ~3 m/s
 /// of air speed, more than any accurate step overshoots.
@@ -98,28 +200,178 @@ const CRISIS_END: f64 = 175_000.0;
 /// 160 000 − 8784.46·ln(1 + 0.35/0.0416812) ≈ 140 319.
 const SAWICKI_KINKS: [f64; 3] = [140_319.312_894_860_5, CRISIS_START, CRISIS_END];
 
+/// Which lift curve the flight uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum LiftModel {
+    /// The paper's bilinear fit (Eq. 29, Fig. 4).
+    #[default]
+    Sawicki2003,
+    /// Nathan's C_L = 1.120·S/(0.583 + 2.333·S): saturating at large S.
+    Nathan,
+    /// No lift: the Magnus force left out.
+    None,
+}
+
+impl LiftModel {
+    pub const ALL: [LiftModel; 3] = [LiftModel::Sawicki2003, LiftModel::Nathan, LiftModel::None];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            LiftModel::Sawicki2003 => "sawicki2003",
+            LiftModel::Nathan => "nathan",
+            LiftModel::None => "none",
+        }
+    }
+
+    pub fn description(self) -> &'static str {
+        match self {
+            LiftModel::Sawicki2003 => "C_L = 1.5S up to S = 0.1, 0.09 + 0.6S beyond (Eq. 29)",
+            LiftModel::Nathan => "C_L = 1.120S/(0.583 + 2.333S) (Nathan's calculator)",
+            LiftModel::None => "C_L = 0: no Magnus force",
+        }
+    }
+}
+
+impl LiftCurve for LiftModel {
+    #[inline]
+    fn coefficient(&self, spin_parameter: f64) -> f64 {
+        match self {
+            LiftModel::Sawicki2003 => Sawicki2003Lift.coefficient(spin_parameter),
+            LiftModel::Nathan => NathanLift.coefficient(spin_parameter),
+            LiftModel::None => NoLift.coefficient(spin_parameter),
+        }
+    }
+
+    #[inline]
+    fn coefficient_times_speed(&self, air_speed: f64, surface_speed: f64) -> f64 {
+        match self {
+            LiftModel::Sawicki2003 => {
+                Sawicki2003Lift.coefficient_times_speed(air_speed, surface_speed)
+            }
+            LiftModel::Nathan => NathanLift.coefficient_times_speed(air_speed, surface_speed),
+            LiftModel::None => NoLift.coefficient_times_speed(air_speed, surface_speed),
+        }
+    }
+}
+
+/// The paper's C_L(S) (Eq. 29): see [`lift_coefficient`].
+#[derive(Clone, Copy, Debug)]
+pub struct Sawicki2003Lift;
+
+impl LiftCurve for Sawicki2003Lift {
+    fn coefficient(&self, spin_parameter: f64) -> f64 {
+        lift_coefficient(spin_parameter)
+    }
+
+    #[inline]
+    fn coefficient_times_speed(&self, air_speed: f64, surface_speed: f64) -> f64 {
+        lift_coefficient_times_speed(air_speed, surface_speed)
+    }
+}
+
+/// Nathan's C_L = 1.120·S/(0.583 + 2.333·S).
+#[derive(Clone, Copy, Debug)]
+pub struct NathanLift;
+
+const NATHAN_LIFT_SCALE: f64 = 1.120;
+const NATHAN_LIFT_OFFSET: f64 = 0.583;
+const NATHAN_LIFT_SATURATION: f64 = 2.333;
+
+impl LiftCurve for NathanLift {
+    fn coefficient(&self, spin_parameter: f64) -> f64 {
+        NATHAN_LIFT_SCALE * spin_parameter
+            / (NATHAN_LIFT_OFFSET + NATHAN_LIFT_SATURATION * spin_parameter)
+    }
+
+    /// With S = w/|V| (w = r_b|ω|), numerator and denominator times |V|:
+    /// C_L·|V| = 1.120·w·|V|/(0.583·|V| + 2.333·w), whose denominator is
+    /// positive whenever w is; without spin it is exactly zero.
+    #[inline]
+    fn coefficient_times_speed(&self, air_speed: f64, surface_speed: f64) -> f64 {
+        if surface_speed == 0.0 {
+            return 0.0;
+        }
+        NATHAN_LIFT_SCALE * surface_speed * air_speed
+            / (NATHAN_LIFT_OFFSET * air_speed + NATHAN_LIFT_SATURATION * surface_speed)
+    }
+}
+
+/// C_L = 0.
+#[derive(Clone, Copy, Debug)]
+pub struct NoLift;
+
+impl LiftCurve for NoLift {
+    fn coefficient(&self, _spin_parameter: f64) -> f64 {
+        0.0
+    }
+
+    #[inline]
+    fn coefficient_times_speed(&self, _air_speed: f64, _surface_speed: f64) -> f64 {
+        0.0
+    }
+}
+
 /// A model name that is not one of the accepted ones.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("model.drag = {text:?}: unknown drag model; accepted: {accepted}")]
+#[error("{key} = {text:?}: unknown {kind} model; accepted: {accepted}")]
 pub struct UnknownModel {
+    /// The key that was given it (`model.drag`, `model.lift`).
+    pub key: &'static str,
+    /// What it chooses: "drag", "lift".
+    pub kind: &'static str,
     pub text: String,
     pub accepted: String,
+}
+
+/// The model among `all` named `text`, or an error listing the names.
+fn parse_model<M: Copy, const N: usize>(
+    text: &str,
+    all: [M; N],
+    name: fn(M) -> &'static str,
+    (key, kind): (&'static str, &'static str),
+) -> Result<M, UnknownModel> {
+    all.into_iter()
+        .find(|&m| name(m) == text.trim())
+        .ok_or_else(|| UnknownModel {
+            key,
+            kind,
+            text: text.to_owned(),
+            accepted: all.map(name).join(", "),
+        })
 }
 
 impl std::str::FromStr for DragModel {
     type Err = UnknownModel;
     fn from_str(text: &str) -> Result<Self, Self::Err> {
-        DragModel::ALL
-            .into_iter()
-            .find(|m| m.name() == text.trim())
-            .ok_or_else(|| UnknownModel {
-                text: text.to_owned(),
-                accepted: DragModel::ALL.map(DragModel::name).join(", "),
-            })
+        parse_model(
+            text,
+            DragModel::ALL,
+            DragModel::name,
+            (super::keys::DRAG_KEY, "drag"),
+        )
+    }
+}
+
+impl std::str::FromStr for LiftModel {
+    type Err = UnknownModel;
+    fn from_str(text: &str) -> Result<Self, Self::Err> {
+        parse_model(
+            text,
+            LiftModel::ALL,
+            LiftModel::name,
+            (super::keys::LIFT_KEY, "lift"),
+        )
     }
 }
 
 impl std::fmt::Display for DragModel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::fmt::Display for LiftModel {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(self.name())
     }
@@ -134,8 +386,8 @@ pub fn lift_coefficient(spin_parameter: f64) -> f64 {
     }
 }
 
-/// C_L·|V_r|, written without dividing by |V_r| (S·|V_r| = r_b|ω|), so that a
-/// zero relative wind or a zero spin gives exactly zero lift, never 0/0.
+/// Eq. (29)'s C_L·|V_r|, written without dividing by |V_r| (S·|V_r| = r_b|ω|),
+/// so that a zero relative wind or a zero spin gives exactly zero lift, never 0/0.
 #[inline]
 pub fn lift_coefficient_times_speed(air_speed: f64, surface_speed: f64) -> f64 {
     // S ≤ 0.1  ⇔  r_b|ω| ≤ 0.1·|V_r|.
@@ -199,6 +451,62 @@ mod tests {
             );
         }
         assert_eq!(DragModel::Constant.piece(150_000.0), 0);
+    }
+
+    #[test]
+    fn nathan_drag_grows_with_spin_and_has_no_kinks() {
+        let m = DragModel::Nathan;
+        assert!(m.kinks().is_empty() && DragModel::Constant.kinks().is_empty());
+        // 2500 rpm = 261.8 rad/s: 0.3008 + 0.0292·2.5 = 0.3738, at any Re.
+        let rad_per_s = 2500.0 * 2.0 * std::f64::consts::PI / 60.0;
+        for re in [5e4, 1.6e5, 3e5] {
+            assert!((m.coefficient_on(0, re, rad_per_s) - 0.3738).abs() < 1e-15);
+        }
+        assert_eq!(m.drag_coefficient(1e5), 0.3008);
+        // The paper's curve and the constant ignore the spin.
+        for model in [DragModel::Sawicki2003, DragModel::Constant] {
+            for re in [1e5, 1.5e5, 1.65e5, 2.5e5] {
+                let piece = model.piece(re);
+                assert_eq!(
+                    model.coefficient_on(piece, re, 300.0),
+                    model.drag_coefficient(re)
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn every_lift_times_speed_is_its_coefficient_times_the_speed() {
+        for model in LiftModel::ALL {
+            assert_eq!(model.coefficient_times_speed(0.0, 0.0), 0.0, "{model}");
+            assert_eq!(model.coefficient_times_speed(40.0, 0.0), 0.0, "{model}");
+            assert!(model.coefficient_times_speed(0.0, 5.0).is_finite());
+            for (speed, surface) in [(40.0, 2.0), (40.0, 4.0), (30.0, 9.0), (5.0, 20.0)] {
+                let direct = model.coefficient(surface / speed) * speed;
+                let written = model.coefficient_times_speed(speed, surface);
+                assert!(
+                    (direct - written).abs() < 1e-13,
+                    "{model}: {direct} {written}"
+                );
+            }
+        }
+        // Nathan's saturates at 1.120/2.333 ≈ 0.48 and is 1.120/0.583·S at small S.
+        let nathan = LiftModel::Nathan;
+        assert!((nathan.coefficient(1e6) - 1.120 / 2.333).abs() < 1e-6);
+        assert!((nathan.coefficient(1e-9) / 1e-9 - 1.120 / 0.583).abs() < 1e-6);
+        assert_eq!(LiftModel::None.coefficient(0.3), 0.0);
+    }
+
+    #[test]
+    fn models_parse_by_name() {
+        for m in DragModel::ALL {
+            assert_eq!(m.name().parse::<DragModel>(), Ok(m));
+        }
+        for m in LiftModel::ALL {
+            assert_eq!(format!(" {m} ").parse::<LiftModel>(), Ok(m));
+        }
+        let e = "magnus".parse::<LiftModel>().unwrap_err();
+        assert_eq!(e.accepted, "sawicki2003, nathan, none");
     }
 
     #[test]

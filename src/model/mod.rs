@@ -1,10 +1,12 @@
 //! The paper's model, one file per phase: pitch (Eq. 3–4) → impact
-//! (Eq. 1–2, 5–23) → flight (Eq. 25–29); the inputs in `scene` and their
-//! names, bounds and validation in `keys`. It knows nothing of who asks or
+//! (Eq. 1–2, 5–23) → flight (Eq. 25–29), with the aerodynamic models in
+//! `aero` and the air from the weather in `atmosphere`; the inputs in `scene`
+//! and their names, bounds and validation in `keys`. It knows nothing of who asks or
 //! how precisely: callers pass [`FlightOptions`] (or anything that becomes
 //! them, such as `analysis::precision::Purpose`).
 
 pub mod aero;
+pub mod atmosphere;
 pub mod flight;
 pub mod impact;
 pub mod keys;
@@ -43,6 +45,24 @@ pub fn simulate(scene: &Scene, options: impl Into<FlightOptions>) -> Swing {
         impact,
         flight: flight::fly(&flight, &start, &options.into()),
     }
+}
+
+/// Flies a batted ball from a launch given directly (speed in m/s, angle
+/// above the horizontal in rad, spin in rad/s with backspin positive), from
+/// the scene's contact height, with no pitch and no impact: the scene gives
+/// only the ball, the air, the field and the aerodynamic models.
+pub fn fly_launch(
+    scene: &Scene,
+    launch_speed: f64,
+    launch_angle: f64,
+    launch_spin: f64,
+    options: impl Into<FlightOptions>,
+) -> FlightSummary {
+    let start = Launch {
+        position: Vector2::new(0.0, scene.environment.contact_height),
+        velocity: Vector2::new(launch_angle.cos(), launch_angle.sin()) * launch_speed,
+    };
+    flight::fly(&Flight::new(scene, launch_spin), &start, &options.into())
 }
 
 /// Just the range: what the optimiser and the heatmap need.

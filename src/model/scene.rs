@@ -3,7 +3,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::aero::DragModel;
+use super::aero::{DragModel, LiftModel};
+use super::atmosphere::{Air, Atmosphere};
 
 /// The pitched ball as it reaches the plate.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -53,14 +54,59 @@ pub struct Ball {
 pub struct Environment {
     /// Horizontal wind (m/s), positive toward centre field (a tailwind).
     pub wind: f64,
-    /// ρ (kg/m³).
+    /// ρ (kg/m³) in force: given, or derived from `atmosphere` (set it with
+    /// [`Environment::set_air_density`] when an atmosphere may be in force).
     pub air_density: f64,
-    /// ν (m²/s).
+    /// ν (m²/s) in force: given, or derived from `atmosphere` (set it with
+    /// [`Environment::set_kinematic_viscosity`]).
     pub kinematic_viscosity: f64,
     /// g (m/s²).
     pub gravity: f64,
     /// Height of the ball at contact, where the flight starts (m).
     pub contact_height: f64,
+    /// The weather ρ and ν were derived from; `None` (the paper's presets)
+    /// when they were given. Private, so that ρ and ν cannot fall out of step
+    /// with it: [`Environment::set_atmosphere`] derives them.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    atmosphere: Option<Atmosphere>,
+}
+
+impl Environment {
+    /// The ρ and ν in force, and where they come from.
+    pub fn air(&self) -> Air {
+        Air {
+            density: self.air_density,
+            kinematic_viscosity: self.kinematic_viscosity,
+            atmosphere: self.atmosphere,
+        }
+    }
+
+    /// The weather ρ and ν were derived from, if they were.
+    pub fn atmosphere(&self) -> Option<Atmosphere> {
+        self.atmosphere
+    }
+
+    /// Derives ρ and ν from `atmosphere`: they follow it until one of them
+    /// is given.
+    pub fn set_atmosphere(&mut self, atmosphere: Atmosphere) {
+        self.atmosphere = Some(atmosphere);
+        self.air_density = atmosphere.air_density();
+        self.kinematic_viscosity = atmosphere.kinematic_viscosity();
+    }
+
+    /// Gives ρ: no atmosphere derives the air any more, and ν keeps the
+    /// value it had.
+    pub fn set_air_density(&mut self, air_density: f64) {
+        self.atmosphere = None;
+        self.air_density = air_density;
+    }
+
+    /// Gives ν: no atmosphere derives the air any more, and ρ keeps the
+    /// value it had.
+    pub fn set_kinematic_viscosity(&mut self, kinematic_viscosity: f64) {
+        self.atmosphere = None;
+        self.kinematic_viscosity = kinematic_viscosity;
+    }
 }
 
 /// Everything that determines one swing's outcome.
@@ -71,6 +117,12 @@ pub struct Scene {
     pub ball: Ball,
     pub environment: Environment,
     pub drag: DragModel,
+    #[serde(default)]
+    pub lift: LiftModel,
+    /// τ (s), the spin's decay time in flight, ω(t) = ω₀·e^(−t/τ); 0 for
+    /// none (the paper's constant spin).
+    #[serde(default)]
+    pub spin_decay: f64,
 }
 
 impl Default for Scene {
@@ -107,8 +159,11 @@ impl Default for Scene {
                 kinematic_viscosity: 1.5e-5,
                 gravity: 9.81,
                 contact_height: 1.0,
+                atmosphere: None,
             },
             drag: DragModel::Sawicki2003,
+            lift: LiftModel::Sawicki2003,
+            spin_decay: 0.0,
         }
     }
 }

@@ -1,4 +1,6 @@
-//! The batted ball's flight: Eq. (25)–(29), integrated to the landing.
+//! The batted ball's flight: Eq. (25)–(29), integrated to the landing, with
+//! the drag and lift of [`super::aero`]'s models and, if the scene gives it a
+//! decay time, a spin that decays as ω₀·e^(−t/τ).
 
 mod events;
 
@@ -7,7 +9,7 @@ use std::cell::Cell;
 use nalgebra::Vector2;
 use serde::Serialize;
 
-use super::aero::{DragModel, lift_coefficient_times_speed};
+use super::aero::{DragCurve, DragModel, LiftCurve, LiftModel};
 use super::scene::Scene;
 use crate::numerics::ode::{self, DenseStep, Outcome, Settings, State, Stats, Tolerance};
 use events::Events;
@@ -35,21 +37,36 @@ pub const MAX_FLIGHT_TIME: f64 = 600.0;
 /// own time scale rather than by [`MAX_FLIGHT_TIME`] alone.
 const VACUUM_TIMES: f64 = 10.0;
 
-/// The forces on the ball in flight, ready to evaluate (constant spin, as the
-/// paper assumes: spin decays by a few per cent over a flight).
+/// The forces on the ball in flight, ready to evaluate. Which drag and lift
+/// models they use is the models' business ([`DragCurve`], [`LiftCurve`]).
+/// The spin is constant, as the paper assumes (it decays by a few per cent
+/// over a flight), unless the scene gives it a decay time.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Flight {
     pub gravity: f64,
     pub wind: f64,
     pub drag: DragModel,
+    pub lift: LiftModel,
     /// ρA/(2M_b): turns C·|V_r|·V_r into an acceleration (Eq. 26, 28).
     pub force_per_mass: f64,
     /// 2r_b/ν: turns |V_r| into Re (Eq. 27).
     pub reynolds_per_speed: f64,
-    /// r_b·|ω|, the surface speed from spin, and the spin's sign.
+    /// r_b·|ω|, the surface speed from the launch spin, and the spin's sign.
     pub surface_speed: f64,
     pub spin_sign: f64,
+    /// ω at launch (rad/s, backspin positive).
     pub spin: f64,
+    /// 1/τ (1/s): the spin decays as ω(t) = ω₀·e^(−t/τ); 0 for constant spin.
+    pub spin_decay_rate: f64,
+}
+
+/// The spin as the aerodynamic coefficients take it, at one instant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpinNow {
+    /// |ω| (rad/s).
+    pub rate: f64,
+    /// r_b·|ω| (m/s).
+    pub surface_speed: f64,
 }
 
 impl Flight {
@@ -61,6 +78,7 @@ impl Flight {
             gravity: env.gravity,
             wind: env.wind,
             drag: scene.drag,
+            lift: scene.lift,
             force_per_mass: env.air_density * area / (2.0 * ball.mass),
             reynolds_per_speed: 2.0 * ball.radius / env.kinematic_viscosity,
             surface_speed: ball.radius * spin.abs(),
@@ -72,6 +90,11 @@ impl Flight {
                 0.0
             },
             spin,
+            spin_decay_rate: if scene.spin_decay > 0.0 {
+                1.0 / scene.spin_decay
+            } else {
+                0.0
+            },
         }
     }
 
@@ -87,8 +110,40 @@ impl Flight {
         self.relative_wind(velocity).norm() * self.reynolds_per_speed
     }
 
-    /// The ball's acceleration: gravity, drag along V_r (Eq. 26) and lift
-    /// perpendicular to it (Eq. 28).
+    /// Whether the spin changes during the flight.
+    #[inline]
+    pub fn spin_decays(&self) -> bool {
+        self.spin_decay_rate != 0.0
+    }
+
+    /// The spin at time `t` after launch: ω(t) = ω₀·e^(−t/τ), or ω₀ without
+    /// decay (then no exponential is taken).
+    #[inline]
+    pub fn spin_at(&self, t: f64) -> SpinNow {
+        let launch = SpinNow {
+            rate: self.spin.abs(),
+            surface_speed: self.surface_speed,
+        };
+        if !self.spin_decays() {
+            return launch;
+        }
+        let remaining = (-t * self.spin_decay_rate).exp();
+        SpinNow {
+            rate: launch.rate * remaining,
+            surface_speed: launch.surface_speed * remaining,
+        }
+    }
+
+    /// C_D at time `t` and `velocity`, on the piece of the drag curve its
+    /// Reynolds number lies on.
+    pub fn drag_coefficient_at(&self, t: f64, velocity: Vector2<f64>) -> f64 {
+        let re = self.reynolds(velocity);
+        self.drag
+            .coefficient_on(self.drag.piece(re), re, self.spin_at(t).rate)
+    }
+
+    /// The ball's acceleration at the launch spin: gravity, drag along V_r
+    /// (Eq. 26) and lift perpendicular to it (Eq. 28).
     ///
     /// Eq. (28) as printed, with the minus sign, points the lift of a backspun
     /// ball moving +x downward in this frame; the lift here is the Magnus
@@ -104,35 +159,50 @@ impl Flight {
     /// Reynolds number lies on.
     #[inline]
     pub fn acceleration_on(&self, velocity: Vector2<f64>, piece: Option<usize>) -> Vector2<f64> {
+        self.acceleration_at(0.0, velocity, piece)
+    }
+
+    /// As [`Flight::acceleration_on`], at time `t` after launch (which
+    /// matters only when the spin decays).
+    #[inline]
+    pub fn acceleration_at(
+        &self,
+        t: f64,
+        velocity: Vector2<f64>,
+        piece: Option<usize>,
+    ) -> Vector2<f64> {
+        let spin = self.spin_at(t);
         let rel = self.relative_wind(velocity);
         let air_speed = rel.norm();
         let re = air_speed * self.reynolds_per_speed;
-        let drag_coefficient = match piece {
-            Some(piece) => self.drag.drag_coefficient_on(piece, re),
-            None => self.drag.drag_coefficient(re),
-        };
+        let piece = piece.unwrap_or_else(|| self.drag.piece(re));
+        let drag_coefficient = self.drag.coefficient_on(piece, re, spin.rate);
         // ẑ × V_b-direction, scaled by |V_r|: (V_r,y, −V_r,x).
         let lift_direction = Vector2::new(rel.y, -rel.x);
-        let lift = self.spin_sign * lift_coefficient_times_speed(air_speed, self.surface_speed);
+        let lift = self.spin_sign
+            * self
+                .lift
+                .coefficient_times_speed(air_speed, spin.surface_speed);
         let aero =
             (rel * (drag_coefficient * air_speed) + lift_direction * lift) * self.force_per_mass;
         Vector2::new(aero.x, aero.y - self.gravity)
     }
 
-    /// d/dt of the state (x, y, v_x, v_y).
+    /// d/dt of the state (x, y, v_x, v_y) at the launch spin.
     #[inline]
     pub fn derivative(&self, state: &State<4>) -> State<4> {
-        self.derivative_on(state, None)
+        self.derivative_at(0.0, state, None)
     }
 
-    /// d/dt of the state on a given piece of the drag curve.
+    /// d/dt of the state at time `t`, on a given piece of the drag curve
+    /// (or the one its Reynolds number lies on).
     #[inline]
-    pub fn derivative_on(&self, state: &State<4>, piece: Option<usize>) -> State<4> {
-        let a = self.acceleration_on(velocity(state), piece);
+    pub fn derivative_at(&self, t: f64, state: &State<4>, piece: Option<usize>) -> State<4> {
+        let a = self.acceleration_at(t, velocity(state), piece);
         State::<4>::new(state[VELOCITY_X], state[VERTICAL_VELOCITY], a.x, a.y)
     }
 
-    /// The piece of the drag curve the ball is on at `state`, or about to
+    /// The piece of the drag curve the ball is on at launch, or about to
     /// enter: at a kink, the one the Reynolds number is moving into.
     pub fn drag_piece(&self, state: &State<4>) -> usize {
         let velocity = velocity(state);
@@ -256,12 +326,9 @@ fn fly_with(
     let switching = stop_at_kinks && !flight.drag.kinks().is_empty();
     let piece = Cell::new(flight.drag_piece(&start));
     let mut events = Events::new(flight, &start, &piece, switching);
-    let rhs = |_t: f64, s: &State<4>| {
-        if switching {
-            flight.derivative_on(s, Some(piece.get()))
-        } else {
-            flight.derivative(s)
-        }
+    let rhs = |t: f64, s: &State<4>| {
+        let piece = if switching { Some(piece.get()) } else { None };
+        flight.derivative_at(t, s, piece)
     };
     let observe = |step: &DenseStep<4>| events.observe(step, &mut watch);
     let time_limit = launch.time_limit(flight.gravity);
@@ -316,7 +383,7 @@ pub fn trajectory(
             time,
             x: s[DISTANCE],
             y: s[HEIGHT],
-            drag_coefficient: flight.drag.drag_coefficient(flight.reynolds(velocity(&s))),
+            drag_coefficient: flight.drag_coefficient_at(time, velocity(&s)),
         });
     };
     push(0.0, launch.state());

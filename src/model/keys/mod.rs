@@ -1,14 +1,23 @@
-//! Every numeric input has one entry in [`KEYS`]: its dotted key (the same in
-//! TOML presets, `--set`, sweeps and the explorer), its symbol in the paper, its
-//! unit, its accepted range and a nudge step for the explorer. Validation,
-//! parsing and the generic get/set all go through that table, so a new input
-//! is added in exactly one place.
+//! Every numeric input has one entry in [`KEYS`] (or, for the inputs beyond
+//! the paper, [`EXTENDED_KEYS`]): its dotted key (the same in TOML presets,
+//! `--set`, sweeps and the explorer), its symbol in the paper, its unit, its
+//! accepted range and a nudge step for the explorer. Validation, parsing and
+//! the generic get/set all go through those tables, so a new input is added
+//! in exactly one place. [`InputBatch`] sets the keys of one source of
+//! inputs, refusing contradictory ones.
 
 use std::f64::consts::FRAC_PI_2;
 
 use super::aero::UnknownModel;
 use super::pitch;
 use super::scene::Scene;
+
+mod batch;
+mod table;
+
+pub use batch::InputBatch;
+use table::{AIR_KEYS, ATMOSPHERE_KEYS};
+pub use table::{DRAG_KEY, EXTENDED_KEYS, KEYS, LIFT_KEY, all_keys};
 
 /// A closed or half-open interval of accepted values.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -89,205 +98,6 @@ impl std::fmt::Debug for Key {
     }
 }
 
-macro_rules! key {
-    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, $($field:ident).+) => {
-        Key {
-            name: $name,
-            symbol: $symbol,
-            unit: $unit,
-            description: $desc,
-            bounds: $bounds,
-            step: $step,
-            get: |s| s.$($field).+,
-            set: |s, v| s.$($field).+ = v,
-        }
-    };
-}
-
-/// Every numeric input. Bounds are what the model can meaningfully take:
-/// Eq. (19) keeps e* in (0, 1) for approach speeds below about 240 m/s, so
-/// speeds stop at 100 m/s each.
-pub const KEYS: &[Key] = &[
-    key!(
-        "pitch.speed",
-        "V̂_b0",
-        "m/s",
-        "pitch speed at the plate",
-        Bounds::positive(100.0),
-        0.5,
-        pitch.speed
-    ),
-    key!(
-        "pitch.spin",
-        "ω_b0",
-        "rad/s",
-        "pitch spin (topspin positive, fastball backspin negative)",
-        Bounds::closed(-1000.0, 1000.0),
-        10.0,
-        pitch.spin
-    ),
-    key!(
-        "bat.speed",
-        "V̂_B0",
-        "m/s",
-        "bat speed at the contact point",
-        Bounds::positive(100.0),
-        0.5,
-        bat.speed
-    ),
-    key!(
-        "bat.spin",
-        "ω_B0",
-        "rad/s",
-        "bat roll about its axis (positive adds backspin, Fig. 9)",
-        Bounds::closed(-200.0, 200.0),
-        5.0,
-        bat.spin
-    ),
-    key!(
-        "bat.undercut",
-        "E",
-        "m",
-        "undercut: ball centre above bat axis",
-        Bounds::closed(-0.4, 0.4),
-        0.0005,
-        bat.undercut
-    ),
-    key!(
-        "bat.swing_angle",
-        "ψ",
-        "rad",
-        "swing angle above horizontal",
-        Bounds::closed(-FRAC_PI_2, FRAC_PI_2),
-        0.01,
-        bat.swing_angle
-    ),
-    key!(
-        "bat.friction",
-        "μ",
-        "",
-        "bat–ball coefficient of friction",
-        Bounds::closed(0.0, 2.0),
-        0.01,
-        bat.friction
-    ),
-    // From well below any bat (a 0.9 kg bat weighs ~0.6–0.8 kg at its sweet
-    // spot) to a sledgehammer; away from 0, where Eq. (12)'s inverse inertia
-    // overflows.
-    key!(
-        "bat.effective_mass",
-        "M_B",
-        "kg",
-        "bat mass equivalent at the centre of percussion",
-        Bounds::closed(0.05, 10.0),
-        0.05,
-        bat.effective_mass
-    ),
-    // A broomstick (1 cm) to a log; away from 0, where the bat's moment of
-    // inertia underflows.
-    key!(
-        "bat.radius",
-        "r_B",
-        "m",
-        "bat barrel radius",
-        Bounds::closed(0.01, 0.2),
-        0.001,
-        bat.radius
-    ),
-    // Also tied to r_B in `validate`: between 0.2·r_B (all mass at the core)
-    // and r_B (a thin tube), as for any body of revolution of that radius.
-    key!(
-        "bat.gyration_radius",
-        "k_B2",
-        "m",
-        "bat radius of gyration about its axis",
-        Bounds::closed(0.001, 0.2),
-        0.001,
-        bat.gyration_radius
-    ),
-    // Also tied to r_b in `validate`: the model ignores buoyancy and the air
-    // a ball drags along, fair only for a ball far denser than air.
-    key!(
-        "ball.mass",
-        "M_b",
-        "kg",
-        "ball mass",
-        Bounds::closed(0.001, 10.0),
-        0.005,
-        ball.mass
-    ),
-    // A marble (1 cm) to a volleyball-and-more (20 cm); away from 0, where
-    // the ball's moment of inertia underflows.
-    key!(
-        "ball.radius",
-        "r_b",
-        "m",
-        "ball radius",
-        Bounds::closed(0.01, 0.2),
-        0.001,
-        ball.radius
-    ),
-    // Also tied to r_b in `validate`: between 0.2·r_b (a heavy core) and
-    // √(2/3)·r_b (a thin shell, the most a sphere's mass can spread).
-    key!(
-        "ball.gyration_radius",
-        "k_b",
-        "m",
-        "ball radius of gyration",
-        Bounds::closed(0.001, 0.2),
-        0.001,
-        ball.gyration_radius
-    ),
-    key!(
-        "environment.wind",
-        "V_w",
-        "m/s",
-        "horizontal wind, positive toward centre field",
-        Bounds::closed(-50.0, 50.0),
-        1.0,
-        environment.wind
-    ),
-    key!(
-        "environment.air_density",
-        "ρ",
-        "kg/m³",
-        "air density",
-        Bounds::closed(0.0, 5.0),
-        0.01,
-        environment.air_density
-    ),
-    key!(
-        "environment.kinematic_viscosity",
-        "ν",
-        "m²/s",
-        "kinematic viscosity of air",
-        Bounds::positive(1e-3),
-        1e-7,
-        environment.kinematic_viscosity
-    ),
-    key!(
-        "environment.gravity",
-        "g",
-        "m/s²",
-        "gravitational acceleration",
-        Bounds::positive(30.0),
-        0.1,
-        environment.gravity
-    ),
-    key!(
-        "environment.contact_height",
-        "y(0)",
-        "m",
-        "height of the ball at contact",
-        Bounds::closed(0.0, 10.0),
-        0.1,
-        environment.contact_height
-    ),
-];
-
-/// The one non-numeric input.
-pub const DRAG_KEY: &str = "model.drag";
-
 /// Why a set of inputs was refused. Each message names the key, the value and
 /// what would have been accepted.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -318,6 +128,16 @@ pub enum InputError {
     #[error(transparent)]
     UnknownModel(#[from] UnknownModel),
     #[error(
+        "{given} and {weather} set together: the weather keys ({}) derive ρ and ν; give either ρ and ν or the weather",
+        ATMOSPHERE_KEYS.join(", ")
+    )]
+    AirGivenTwice {
+        /// The ρ or ν key given.
+        given: &'static str,
+        /// The weather key given.
+        weather: &'static str,
+    },
+    #[error(
         "ball.mass = {mass} kg: with ball.radius = {radius} m the ball is {density:.3} kg/m³ on average; the model ignores buoyancy and needs at least {MIN_BALL_DENSITY} kg/m³ (a ping-pong ball is ~80), so ball.mass ≥ {minimum:.4} kg"
     )]
     BallTooLight {
@@ -345,7 +165,7 @@ pub enum InputError {
 impl Scene {
     /// Looks up a numeric key.
     pub fn key(name: &str) -> Result<&'static Key, InputError> {
-        KEYS.iter()
+        all_keys()
             .find(|k| k.name == name)
             .ok_or_else(|| InputError::UnknownKey {
                 key: name.to_owned(),
@@ -370,6 +190,10 @@ impl Scene {
             self.drag = text.parse()?;
             return Ok(());
         }
+        if name == LIFT_KEY {
+            self.lift = text.parse()?;
+            return Ok(());
+        }
         let key = Self::key(name)?;
         let value: f64 = text.trim().parse().map_err(|_| InputError::NotANumber {
             key: name.to_owned(),
@@ -382,7 +206,14 @@ impl Scene {
     /// Checks every input before any computation. The first problem found is
     /// returned; ranges first, then the relations between inputs.
     pub fn validate(&self) -> Result<(), InputError> {
-        for key in KEYS {
+        // Derived, ρ and ν are checked after the weather they come from, so
+        // that a bad temperature is named rather than the density it gave.
+        let derived = self.environment.atmosphere().is_some();
+        let later = |key: &&Key| derived && AIR_KEYS.contains(&key.name);
+        let ordered = all_keys()
+            .filter(|k| !later(k))
+            .chain(all_keys().filter(later));
+        for key in ordered {
             let value = (key.get)(self);
             if !key.bounds.contains(value) {
                 return Err(InputError::OutOfRange {
@@ -470,9 +301,9 @@ fn check_gyration(
 
 /// " (did you mean `bat.speed`?)" for a near miss of a known key.
 fn suggestion(key: &str) -> String {
-    KEYS.iter()
+    all_keys()
         .map(|k| k.name)
-        .chain([DRAG_KEY])
+        .chain([DRAG_KEY, LIFT_KEY])
         .map(|name| (strsim::jaro_winkler(key, name), name))
         .max_by(|a, b| a.0.total_cmp(&b.0))
         .filter(|(score, _)| *score > 0.85)
@@ -500,8 +331,8 @@ fn unit_suffix(unit: &str) -> String {
 }
 
 fn known_keys() -> String {
-    let mut names: Vec<&str> = KEYS.iter().map(|k| k.name).collect();
-    names.push(DRAG_KEY);
+    let mut names: Vec<&str> = all_keys().map(|k| k.name).collect();
+    names.extend([DRAG_KEY, LIFT_KEY]);
     names.join(", ")
 }
 

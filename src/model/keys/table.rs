@@ -1,0 +1,327 @@
+//! The key table: every numeric input's name, symbol, unit, bounds (with
+//! the reason beside each where it is not obvious), nudge step and accessors.
+
+use std::f64::consts::FRAC_PI_2;
+
+use super::{Bounds, Key};
+use crate::model::atmosphere::Atmosphere;
+
+macro_rules! key {
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, $($field:ident).+) => {
+        Key {
+            name: $name,
+            symbol: $symbol,
+            unit: $unit,
+            description: $desc,
+            bounds: $bounds,
+            step: $step,
+            get: |s| s.$($field).+,
+            set: |s, v| s.$($field).+ = v,
+        }
+    };
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, get: $get:expr, set: $set:expr) => {
+        Key {
+            name: $name,
+            symbol: $symbol,
+            unit: $unit,
+            description: $desc,
+            bounds: $bounds,
+            step: $step,
+            get: $get,
+            set: $set,
+        }
+    };
+}
+
+/// A key of the weather: reads the atmosphere in force (the standard one
+/// while ρ and ν are given), and writing it derives ρ and ν.
+macro_rules! atmosphere_key {
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, $field:ident) => {
+        key!(
+            $name,
+            $symbol,
+            $unit,
+            $desc,
+            $bounds,
+            $step,
+            get: |s| s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD).$field,
+            set: |s, v| {
+                let mut atmosphere = s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD);
+                atmosphere.$field = v;
+                s.environment.set_atmosphere(atmosphere)
+            }
+        )
+    };
+}
+
+/// Every numeric input. Bounds are what the model can meaningfully take:
+/// Eq. (19) keeps e* in (0, 1) for approach speeds below about 240 m/s, so
+/// speeds stop at 100 m/s each.
+pub const KEYS: &[Key] = &[
+    key!(
+        "pitch.speed",
+        "V̂_b0",
+        "m/s",
+        "pitch speed at the plate",
+        Bounds::positive(100.0),
+        0.5,
+        pitch.speed
+    ),
+    key!(
+        "pitch.spin",
+        "ω_b0",
+        "rad/s",
+        "pitch spin (topspin positive, fastball backspin negative)",
+        Bounds::closed(-1000.0, 1000.0),
+        10.0,
+        pitch.spin
+    ),
+    key!(
+        "bat.speed",
+        "V̂_B0",
+        "m/s",
+        "bat speed at the contact point",
+        Bounds::positive(100.0),
+        0.5,
+        bat.speed
+    ),
+    key!(
+        "bat.spin",
+        "ω_B0",
+        "rad/s",
+        "bat roll about its axis (positive adds backspin, Fig. 9)",
+        Bounds::closed(-200.0, 200.0),
+        5.0,
+        bat.spin
+    ),
+    key!(
+        "bat.undercut",
+        "E",
+        "m",
+        "undercut: ball centre above bat axis",
+        Bounds::closed(-0.4, 0.4),
+        0.0005,
+        bat.undercut
+    ),
+    key!(
+        "bat.swing_angle",
+        "ψ",
+        "rad",
+        "swing angle above horizontal",
+        Bounds::closed(-FRAC_PI_2, FRAC_PI_2),
+        0.01,
+        bat.swing_angle
+    ),
+    key!(
+        "bat.friction",
+        "μ",
+        "",
+        "bat–ball coefficient of friction",
+        Bounds::closed(0.0, 2.0),
+        0.01,
+        bat.friction
+    ),
+    // From well below any bat (a 0.9 kg bat weighs ~0.6–0.8 kg at its sweet
+    // spot) to a sledgehammer; away from 0, where Eq. (12)'s inverse inertia
+    // overflows.
+    key!(
+        "bat.effective_mass",
+        "M_B",
+        "kg",
+        "bat mass equivalent at the centre of percussion",
+        Bounds::closed(0.05, 10.0),
+        0.05,
+        bat.effective_mass
+    ),
+    // A broomstick (1 cm) to a log; away from 0, where the bat's moment of
+    // inertia underflows.
+    key!(
+        "bat.radius",
+        "r_B",
+        "m",
+        "bat barrel radius",
+        Bounds::closed(0.01, 0.2),
+        0.001,
+        bat.radius
+    ),
+    // Also tied to r_B in `validate`: between 0.2·r_B (all mass at the core)
+    // and r_B (a thin tube), as for any body of revolution of that radius.
+    key!(
+        "bat.gyration_radius",
+        "k_B2",
+        "m",
+        "bat radius of gyration about its axis",
+        Bounds::closed(0.001, 0.2),
+        0.001,
+        bat.gyration_radius
+    ),
+    // Also tied to r_b in `validate`: the model ignores buoyancy and the air
+    // a ball drags along, fair only for a ball far denser than air.
+    key!(
+        "ball.mass",
+        "M_b",
+        "kg",
+        "ball mass",
+        Bounds::closed(0.001, 10.0),
+        0.005,
+        ball.mass
+    ),
+    // A marble (1 cm) to a volleyball-and-more (20 cm); away from 0, where
+    // the ball's moment of inertia underflows.
+    key!(
+        "ball.radius",
+        "r_b",
+        "m",
+        "ball radius",
+        Bounds::closed(0.01, 0.2),
+        0.001,
+        ball.radius
+    ),
+    // Also tied to r_b in `validate`: between 0.2·r_b (a heavy core) and
+    // √(2/3)·r_b (a thin shell, the most a sphere's mass can spread).
+    key!(
+        "ball.gyration_radius",
+        "k_b",
+        "m",
+        "ball radius of gyration",
+        Bounds::closed(0.001, 0.2),
+        0.001,
+        ball.gyration_radius
+    ),
+    key!(
+        "environment.wind",
+        "V_w",
+        "m/s",
+        "horizontal wind, positive toward centre field",
+        Bounds::closed(-50.0, 50.0),
+        1.0,
+        environment.wind
+    ),
+    // Given, ρ and ν replace any atmosphere's (see `environment.temperature`).
+    key!(
+        "environment.air_density",
+        "ρ",
+        "kg/m³",
+        "air density",
+        Bounds::closed(0.0, 5.0),
+        0.01,
+        get: |s| s.environment.air_density,
+        set: |s, v| s.environment.set_air_density(v)
+    ),
+    key!(
+        "environment.kinematic_viscosity",
+        "ν",
+        "m²/s",
+        "kinematic viscosity of air",
+        Bounds::positive(1e-3),
+        1e-7,
+        get: |s| s.environment.kinematic_viscosity,
+        set: |s, v| s.environment.set_kinematic_viscosity(v)
+    ),
+    key!(
+        "environment.gravity",
+        "g",
+        "m/s²",
+        "gravitational acceleration",
+        Bounds::positive(30.0),
+        0.1,
+        environment.gravity
+    ),
+    key!(
+        "environment.contact_height",
+        "y(0)",
+        "m",
+        "height of the ball at contact",
+        Bounds::closed(0.0, 10.0),
+        0.1,
+        environment.contact_height
+    ),
+];
+
+/// The inputs beyond the paper, from Alan Nathan's trajectory calculator:
+/// the spin's decay and the weather. Kept apart from [`KEYS`] while the
+/// explorer's rows, a saved preset's lines and `homerun keys` are built from
+/// that table alone; `Scene::key`, `Scene::set` and `Scene::validate` take
+/// both (see [`all_keys`]).
+///
+/// Setting any weather key derives ρ and ν from the four (the others at
+/// their standard values, [`Atmosphere::STANDARD`]); giving ρ or ν
+/// afterwards replaces the derived value. One source of inputs may not give
+/// both: see [`super::InputBatch`].
+pub const EXTENDED_KEYS: &[Key] = &[
+    // §II.D: ~30–50 s for a baseball, ~16 s measured on golf balls. Up to
+    // 1000 s, where a 6 s flight loses 0.6 % of its spin.
+    key!(
+        "model.spin_decay",
+        "τ",
+        "s",
+        "spin decay time, ω(t) = ω₀·e^(−t/τ); 0 = no decay (the paper's constant spin)",
+        Bounds::closed(0.0, 1000.0),
+        1.0,
+        spin_decay
+    ),
+    // From colder than any game (−50 °C) to above the hottest air recorded
+    // (56.7 °C); Sutherland's law and the vapour-pressure fit hold there.
+    atmosphere_key!(
+        "environment.temperature",
+        "T",
+        "°C",
+        "air temperature (setting it derives ρ and ν)",
+        Bounds::closed(-50.0, 60.0),
+        1.0,
+        temperature
+    ),
+    // From the Dead Sea shore (−430 m) to above the highest cities (El Alto,
+    // 4150 m); the e^(−βh) pressure law stays within a few per cent of the
+    // standard atmosphere's there.
+    atmosphere_key!(
+        "environment.elevation",
+        "h",
+        "m",
+        "field elevation above sea level (setting it derives ρ and ν)",
+        Bounds::closed(-500.0, 5000.0),
+        10.0,
+        elevation
+    ),
+    // Sea-level-corrected, as weather reports give it: from the lowest ever
+    // recorded (870 hPa, typhoon Tip) to the highest (1084.8 hPa, Siberia).
+    atmosphere_key!(
+        "environment.pressure",
+        "p",
+        "hPa",
+        "barometric pressure corrected to sea level (setting it derives ρ and ν)",
+        Bounds::closed(870.0, 1085.0),
+        1.0,
+        pressure
+    ),
+    atmosphere_key!(
+        "environment.humidity",
+        "RH",
+        "%",
+        "relative humidity (setting it derives ρ and ν)",
+        Bounds::closed(0.0, 100.0),
+        5.0,
+        humidity
+    ),
+];
+
+/// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`].
+pub fn all_keys() -> impl Iterator<Item = &'static Key> {
+    KEYS.iter().chain(EXTENDED_KEYS)
+}
+
+/// The given air: ρ and ν.
+pub(super) const AIR_KEYS: [&str; 2] =
+    ["environment.air_density", "environment.kinematic_viscosity"];
+
+/// The weather keys, which derive ρ and ν.
+pub(super) const ATMOSPHERE_KEYS: [&str; 4] = [
+    "environment.temperature",
+    "environment.elevation",
+    "environment.pressure",
+    "environment.humidity",
+];
+
+/// The non-numeric inputs: the drag and lift models.
+pub const DRAG_KEY: &str = "model.drag";
+pub const LIFT_KEY: &str = "model.lift";
