@@ -18,8 +18,10 @@ pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
 use file::{preset_files, size_text, through};
 
-use crate::model::aero::{DragModel, UnknownModel};
-use crate::model::keys::{DRAG_KEY, InputError, KEYS};
+use crate::model::aero::{DragModel, LiftModel};
+use crate::model::keys::{
+    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, InputBatch, InputError, Key, LIFT_KEY, all_keys,
+};
 use crate::model::scene::Scene;
 
 /// A fence to clear, drawn by the explorer (not part of the physics).
@@ -145,6 +147,8 @@ impl Preset {
             expected,
         };
         let mut scene = Scene::default();
+        // One file is one source: ρ or ν beside the weather is refused.
+        let mut batch = InputBatch::new();
         let mut description = String::new();
         let mut fence_distance = None;
         let mut fence_height = None;
@@ -161,10 +165,10 @@ impl Preset {
             };
             for (name, value) in entries {
                 let key = format!("{section}.{name}");
-                if key == DRAG_KEY {
-                    let text = value.as_str().ok_or_else(|| {
-                        wrong(&key, value, "expected a drag model name in quotes")
-                    })?;
+                if key == DRAG_KEY || key == LIFT_KEY {
+                    let text = value
+                        .as_str()
+                        .ok_or_else(|| wrong(&key, value, "expected a model name in quotes"))?;
                     // A name too long to be one is shown cut (the error
                     // quotes it, escaping control characters).
                     let shown: String = if text.chars().count() > 80 {
@@ -172,7 +176,7 @@ impl Preset {
                     } else {
                         text.to_owned()
                     };
-                    scene.drag = shown.parse().map_err(|e: UnknownModel| input(e.into()))?;
+                    batch.set_text(&mut scene, &key, &shown).map_err(input)?;
                     continue;
                 }
                 let number = match value {
@@ -183,7 +187,7 @@ impl Preset {
                 match key.as_str() {
                     FENCE_DISTANCE => fence_distance = Some(number),
                     FENCE_HEIGHT => fence_height = Some(number),
-                    _ => scene.set(&key, number).map_err(|e| {
+                    _ => batch.set(&mut scene, &key, number).map_err(|e| {
                         let shown = escape_for_terminal(&key);
                         input(if shown == key { e } else { unknown(&shown) })
                     })?,
@@ -244,32 +248,52 @@ impl Preset {
                 toml::Value::from(self.description.clone())
             );
         }
-        let mut section = "";
-        for key in KEYS {
-            let (head, name) = key.name.split_once('.').expect("keys are dotted");
-            if head != section {
-                out += &format!("\n[{head}]\n");
-                section = head;
+        // Every input, grouped by section: the weather when it set ρ and ν,
+        // else ρ and ν themselves (never both: that would be refused).
+        let weather = self.scene.environment.atmosphere().is_some();
+        let skipped: &[&str] = if weather { &AIR_KEYS } else { &ATMOSPHERE_KEYS };
+        let keys: Vec<&Key> = all_keys().filter(|k| !skipped.contains(&k.name)).collect();
+        let mut sections: Vec<&str> = Vec::new();
+        for key in &keys {
+            let head = key.name.split_once('.').expect("keys are dotted").0;
+            if !sections.contains(&head) {
+                sections.push(head);
             }
-            let value = (key.get)(&self.scene);
-            let unit = if key.unit.is_empty() {
-                String::new()
-            } else {
-                format!(" ({})", key.unit)
-            };
-            out += &format!(
-                "{name} = {}  # {}{unit}: {}\n",
-                toml::Value::Float(value),
-                key.symbol,
-                key.description
-            );
         }
-        out += &format!(
-            "\n[model]\ndrag = \"{}\"  # {}; one of: {}\n",
-            self.scene.drag,
-            self.scene.drag.description(),
-            DragModel::ALL.map(DragModel::name).join(", ")
-        );
+        for head in sections {
+            out += &format!("\n[{head}]\n");
+            if head == "model" {
+                out += &format!(
+                    "drag = \"{}\"  # {}; one of: {}\n",
+                    self.scene.drag,
+                    self.scene.drag.description(),
+                    DragModel::ALL.map(DragModel::name).join(", ")
+                );
+                out += &format!(
+                    "lift = \"{}\"  # {}; one of: {}\n",
+                    self.scene.lift,
+                    self.scene.lift.description(),
+                    LiftModel::ALL.map(LiftModel::name).join(", ")
+                );
+            }
+            for key in keys
+                .iter()
+                .filter(|k| k.name.starts_with(&format!("{head}.")))
+            {
+                let name = &key.name[head.len() + 1..];
+                let unit = if key.unit.is_empty() {
+                    String::new()
+                } else {
+                    format!(" ({})", key.unit)
+                };
+                out += &format!(
+                    "{name} = {}  # {}{unit}: {}\n",
+                    toml::Value::Float((key.get)(&self.scene)),
+                    key.symbol,
+                    key.description
+                );
+            }
+        }
         if let Some(fence) = self.fence {
             out += &format!(
                 "\n[field]\nfence_distance = {}  # m from the plate\nfence_height = {}  # m\n",
@@ -445,6 +469,26 @@ pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn weather_and_models_round_trip_and_air_given_twice_is_refused() {
+        let text = "[environment]\ntemperature = 30\nelevation = 1580\n\n[model]\ndrag = \"nathan\"\nlift = \"nathan\"\nspin_decay = 40\n";
+        let preset = Preset::parse(text, "coors", "coors.toml", Source::Bundled).unwrap();
+        let air = preset.scene.environment.air();
+        assert!(air.density < 1.0 && air.atmosphere.is_some(), "{air:?}");
+        let again = Preset::parse(&preset.to_toml(), "coors", "again", Source::Bundled).unwrap();
+        assert_eq!(again.scene, preset.scene);
+        assert!(!preset.to_toml().contains("air_density"));
+        // ρ beside the weather, in one file: refused, naming both.
+        let both = "[environment]\nair_density = 1.1\ntemperature = 30\n";
+        let e = Preset::parse(both, "x", "x.toml", Source::Bundled).unwrap_err();
+        let message = e.to_string();
+        assert!(
+            message.contains("environment.air_density")
+                && message.contains("environment.temperature"),
+            "{message}"
+        );
+    }
 
     #[test]
     fn fresh_names_hide_nothing_and_overwrite_nothing() {

@@ -16,8 +16,7 @@ mod batch;
 mod table;
 
 pub use batch::InputBatch;
-use table::{AIR_KEYS, ATMOSPHERE_KEYS};
-pub use table::{DRAG_KEY, EXTENDED_KEYS, KEYS, LIFT_KEY, all_keys};
+pub use table::{AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, EXTENDED_KEYS, KEYS, LIFT_KEY, all_keys};
 
 /// A closed or half-open interval of accepted values.
 #[derive(Clone, Copy, Debug, PartialEq)]

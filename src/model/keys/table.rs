@@ -311,11 +311,10 @@ pub fn all_keys() -> impl Iterator<Item = &'static Key> {
 }
 
 /// The given air: ρ and ν.
-pub(super) const AIR_KEYS: [&str; 2] =
-    ["environment.air_density", "environment.kinematic_viscosity"];
+pub const AIR_KEYS: [&str; 2] = ["environment.air_density", "environment.kinematic_viscosity"];
 
 /// The weather keys, which derive ρ and ν.
-pub(super) const ATMOSPHERE_KEYS: [&str; 4] = [
+pub const ATMOSPHERE_KEYS: [&str; 4] = [
     "environment.temperature",
     "environment.elevation",
     "environment.pressure",
