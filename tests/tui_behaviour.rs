@@ -212,11 +212,12 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
             "knuckleball",
             "curveball",
             "figure5",
+            "mile-high",
             "broken",
             "quick"
         ]
     );
-    let broken = &items[4];
+    let broken = &items[5];
     assert!(
         broken.preset.is_none() && broken.detail.contains("bat.speed"),
         "{broken:?}"
@@ -225,7 +226,7 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
     for _ in 0..10 {
         key(&mut app, KeyCode::Char('k'));
     }
-    for _ in 0..4 {
+    for _ in 0..5 {
         key(&mut app, KeyCode::Char('j'));
     }
     key(&mut app, KeyCode::Enter);
@@ -234,10 +235,9 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
         other => panic!("picker with the error, not {other:?}"),
     }
     assert_eq!(app.scene.bat.speed, 35.0);
-    key(&mut app, KeyCode::Char('k'));
-    key(&mut app, KeyCode::Char('k'));
-    key(&mut app, KeyCode::Char('k'));
-    key(&mut app, KeyCode::Char('k'));
+    for _ in 0..5 {
+        key(&mut app, KeyCode::Char('k'));
+    }
     key(&mut app, KeyCode::Enter);
     assert_eq!(app.preset_name, "fastball");
     assert_eq!(app.scene.bat.speed, 30.0);

@@ -115,6 +115,7 @@ pub const BUNDLED: &[(&str, &str)] = &[
     ),
     ("curveball", include_str!("../../presets/curveball.toml")),
     ("figure5", include_str!("../../presets/figure5.toml")),
+    ("mile-high", include_str!("../../presets/mile-high.toml")),
 ];
 
 const FENCE_DISTANCE: &str = "field.fence_distance";
