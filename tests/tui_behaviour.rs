@@ -319,3 +319,36 @@ fn a_save_never_hides_a_bundled_preset_unless_asked_twice() {
     assert!(details[0].ends_with("(bundled; hidden by yours of that name)"));
     assert!(details[1].ends_with("(yours; hides the bundled one)"));
 }
+
+#[test]
+fn a_pin_survives_a_nudge_and_a_preset_load_and_p_clears_it() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('p'));
+    let pin = app.pin.clone().expect("pinned");
+    assert_eq!(pin.scene, app.scene);
+    assert_eq!(pin.path, app.path);
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('L'));
+    settle(&mut app);
+    let after = app.pin.clone().expect("still pinned");
+    assert_eq!(after.scene, pin.scene, "the pinned scene is unchanged");
+    assert_eq!(after.swing, pin.swing);
+    assert_ne!(app.scene, pin.scene);
+    // The readout's now − pin is non-zero: 5 m/s more bat speed.
+    let dv = app.swing.impact.launch_speed() - pin.swing.impact.launch_speed();
+    assert!(dv > 1.0, "{dv}");
+    let shown = screen(&app);
+    assert!(
+        shown.contains(&format!("{dv:+.2} m/s")),
+        "the readout shows now − pin: {shown}"
+    );
+    assert!(shown.contains("━ pin"), "the legend names the pin: {shown}");
+    // A preset load keeps it too.
+    app.load(homerun::preset::load("fastball", None).unwrap());
+    app.flush();
+    assert_eq!(app.pin.as_ref().map(|p| p.scene), Some(pin.scene));
+    key_with(&mut app, KeyCode::Char('P'), KeyModifiers::SHIFT);
+    assert_eq!(app.pin, None);
+    assert!(!screen(&app).contains("now−pin"));
+}

@@ -98,3 +98,16 @@ fn tiny_and_odd_sizes_never_panic() {
         }
     }
 }
+
+#[test]
+fn readout_with_a_pin() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('p'));
+    select(&mut app, "bat.speed");
+    for _ in 0..3 {
+        key(&mut app, KeyCode::Char('l'));
+    }
+    settle(&mut app);
+    insta::assert_snapshot!("pinned_80x24", screen(&app));
+}

@@ -94,6 +94,16 @@ pub struct SurfaceState {
     pub generation: u64,
 }
 
+/// A scene kept for comparison (key `p`): it stays while the inputs change.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pin {
+    pub scene: Scene,
+    /// Its swing at the readout's precision.
+    pub swing: Swing,
+    /// Its path, sampled at the plot's resolution.
+    pub path: Vec<(f64, f64)>,
+}
+
 /// The explorer.
 #[derive(Debug)]
 pub struct App {
@@ -123,6 +133,8 @@ pub struct App {
     /// The last converged optimum, whatever the inputs: the warm start.
     pub warm_start: Option<(f64, f64)>,
     pub impact_stop: usize,
+    /// The pinned scene, if any: drawn and compared beside the current one.
+    pub pin: Option<Pin>,
     /// Show distances in feet instead of metres (display only).
     pub feet: bool,
     pub quit: bool,
@@ -168,6 +180,7 @@ impl App {
             generation: 0,
             warm_start: None,
             impact_stop: 0,
+            pin: None,
             feet: false,
             quit: false,
             dirty: true,
@@ -205,6 +218,13 @@ impl App {
         self.dirty = true;
         self.swing = simulate(&self.scene, Purpose::Readout);
         self.path = self.plot_path(&self.scene);
+        // The pin's scene stays; its path follows the plot's resolution.
+        if let Some(pin) = self.pin.take() {
+            self.pin = Some(Pin {
+                path: self.plot_path(&pin.scene),
+                ..pin
+            });
+        }
         let stops = self.swing.impact.stops().len();
         self.impact_stop = self.impact_stop.min(stops - 1);
         self.generation += 1;
@@ -352,6 +372,18 @@ impl App {
             Action::Open => self.open_picker(),
             Action::ToOptimum => self.reset_to_optimum(),
             Action::Units => self.feet = !self.feet,
+            Action::Pin => {
+                self.pin = Some(Pin {
+                    scene: self.scene,
+                    swing: self.swing,
+                    path: self.path.clone(),
+                });
+                self.message = Some((
+                    "pinned: the trajectory and readout compare with it (P clears)".into(),
+                    false,
+                ));
+            }
+            Action::Unpin => self.pin = None,
             Action::NextTab | Action::PreviousTab => {
                 let n = Tab::ALL.len();
                 let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);

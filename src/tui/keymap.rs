@@ -49,6 +49,9 @@ pub enum Action {
     Close,
     ToOptimum,
     Units,
+    /// Keep the current scene to compare with.
+    Pin,
+    Unpin,
     NextTab,
     PreviousTab,
     ShowTab(Tab),
@@ -211,6 +214,10 @@ pub const KEYMAP: &[Row] = &[
     ),
     row(&[ch('u', Units)], "distances in metres / feet"),
     row(
+        &[ch('p', Pin), ch('P', Unpin)],
+        "pin the scene to compare with / clear the pin",
+    ),
+    row(
         &[
             key(KeyCode::Tab, NextTab),
             key(BackTab, PreviousTab).alias(),
@@ -352,6 +359,7 @@ mod tests {
                 "g G",
                 "r",
                 "u",
+                "p P",
                 "Tab  1 2 3",
                 ", .",
                 "s",
