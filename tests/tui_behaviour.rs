@@ -5,9 +5,16 @@ mod tui_support;
 use std::time::Duration;
 
 use homerun::analysis::optimum::{OptimizerSettings, optimize, optimize_from};
+use homerun::analysis::study::Grid;
+use homerun::model::keys::KEYS;
+use homerun::tui::app::Field;
 use homerun::tui::app::Mode;
+use homerun::tui::layout::{heatmap_plot, layout};
 use homerun::tui::worker::{Report, Worker, run_job};
-use ratatui::crossterm::event::{KeyCode, KeyModifiers};
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{
+    Event, KeyCode, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
+};
 use tui_support::*;
 
 #[test]
@@ -351,4 +358,75 @@ fn a_pin_survives_a_nudge_and_a_preset_load_and_p_clears_it() {
     key_with(&mut app, KeyCode::Char('P'), KeyModifiers::SHIFT);
     assert_eq!(app.pin, None);
     assert!(!screen(&app).contains("now−pin"));
+}
+
+fn mouse(app: &mut homerun::tui::app::App, kind: MouseEventKind, column: u16, row: u16) {
+    app.handle(&Event::Mouse(MouseEvent {
+        kind,
+        column,
+        row,
+        modifiers: KeyModifiers::NONE,
+    }));
+    app.flush();
+}
+
+#[test]
+fn a_click_on_the_heatmap_moves_the_swing_to_that_cells_centre() {
+    for (w, h, tab) in [(80, 24, '2'), (200, 60, '1')] {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        key(&mut app, KeyCode::Char(tab));
+        let area = layout(app.size, app.tab).heatmap.unwrap();
+        let plot = heatmap_plot(area);
+        // A cell a third of the way across and two thirds down.
+        let (column, row) = (plot.width / 3, 2 * plot.height / 3);
+        let (x, y) = (plot.x + column, plot.y + row);
+        mouse(&mut app, MouseEventKind::Down(MouseButton::Left), x, y);
+        // One grid column per character, two grid rows (half blocks) per
+        // line, the first row at the bottom, over the explorer's window.
+        let window = Grid::explorer_window();
+        let (columns, rows) = (plot.width as f64, 2.0 * plot.height as f64);
+        let e = window.undercut.0
+            + (window.undercut.1 - window.undercut.0) * column as f64 / (columns - 1.0);
+        // The mean of the cell's two rows, rows − 1 − 2·row and the one below.
+        let j = rows - 1.5 - 2.0 * row as f64;
+        let psi =
+            window.swing_angle.0 + (window.swing_angle.1 - window.swing_angle.0) * j / (rows - 1.0);
+        assert!((app.scene.bat.undercut - e).abs() < 1e-12, "{w}x{h}");
+        assert!((app.scene.bat.swing_angle - psi).abs() < 1e-12, "{w}x{h}");
+        // The swing's mark is drawn in the cell clicked.
+        let mut terminal = ratatui::Terminal::new(TestBackend::new(w, h)).unwrap();
+        terminal
+            .draw(|frame| homerun::tui::view::draw(frame, &app))
+            .unwrap();
+        assert_eq!(terminal.backend().buffer()[(x, y)].symbol(), "✚");
+    }
+}
+
+#[test]
+fn a_click_on_an_input_selects_it_and_the_wheel_nudges_it() {
+    let mut app = app(80, 24, None);
+    let screen = screen(&app);
+    // The row on screen whose label is ω_B0 (the bat's roll).
+    let line = screen.lines().position(|l| l.contains("ω_B0")).unwrap() as u16;
+    mouse(&mut app, MouseEventKind::Down(MouseButton::Left), 5, line);
+    let spin = app.fields[app.selected];
+    assert!(
+        matches!(spin, Field::Key(k) if KEYS[k].name == "bat.spin"),
+        "{spin:?}"
+    );
+    // The wheel over another input: that one, up a step, then down two.
+    let speed = screen.lines().position(|l| l.contains("V̂_b0")).unwrap() as u16;
+    mouse(&mut app, MouseEventKind::ScrollUp, 10, speed);
+    assert_eq!(app.scene.pitch.speed, 42.0 + 0.5);
+    mouse(&mut app, MouseEventKind::ScrollDown, 10, speed);
+    mouse(&mut app, MouseEventKind::ScrollDown, 10, speed);
+    assert_eq!(app.scene.pitch.speed, 42.0 - 0.5);
+    assert!(matches!(app.fields[app.selected], Field::Key(k) if KEYS[k].name == "pitch.speed"));
+    // A click on a group's header or outside the panes changes nothing.
+    let before = (app.selected, app.scene);
+    let header = screen.lines().position(|l| l.contains("─ bat")).unwrap() as u16;
+    mouse(&mut app, MouseEventKind::Down(MouseButton::Left), 5, header);
+    mouse(&mut app, MouseEventKind::Down(MouseButton::Left), 79, 23);
+    assert_eq!((app.selected, app.scene), before);
 }

@@ -7,6 +7,8 @@ use ratatui::crossterm::event::{Event, KeyEvent, KeyEventKind};
 use ratatui::layout::Rect;
 use ratatui_textarea::TextArea;
 
+mod mouse;
+
 use super::format::format_value;
 use super::keymap::{self, Action};
 use super::layout::{Tab, heatmap_resolution, trajectory_samples};
@@ -32,6 +34,17 @@ pub enum Field {
     Key(usize),
     /// The drag model.
     Drag,
+}
+
+impl Field {
+    /// The group it is listed under in the inputs pane.
+    pub fn group(self) -> &'static str {
+        match self {
+            Field::Preset => "",
+            Field::Key(k) => KEYS[k].name.split('.').next().unwrap_or(""),
+            Field::Drag => "model",
+        }
+    }
 }
 
 /// Every row of the inputs pane, top to bottom.
@@ -308,6 +321,7 @@ impl App {
     pub fn handle(&mut self, event: &Event) {
         match event {
             Event::Key(key) if key.kind != KeyEventKind::Release => self.key(*key),
+            Event::Mouse(mouse) => self.mouse(*mouse),
             Event::Resize(columns, rows) => {
                 self.size = Rect::new(0, 0, *columns, *rows);
                 self.dirty = true;
@@ -403,6 +417,12 @@ impl App {
             // The message is cleared already.
             Action::Close => {}
         }
+    }
+
+    /// The inputs list's lines: `None` for a group's header, else the field's index.
+    pub fn input_lines(&self) -> Vec<Option<usize>> {
+        let groups: Vec<&str> = self.fields.iter().map(|f| f.group()).collect();
+        super::layout::input_lines(&groups)
     }
 
     /// Moves the selected input by `scale` of its step, if the result is valid.

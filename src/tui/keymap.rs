@@ -249,6 +249,16 @@ pub const KEYMAP: &[Row] = &[
     ),
 ];
 
+/// What the mouse does, for the help (the app handles it in `app/mouse.rs`).
+pub const MOUSE: &[(&str, &str)] = &[
+    ("click", "surface: move (E, ψ) there · input: select it"),
+    ("wheel", "over an input: nudge it (up raises)"),
+    (
+        "Shift-drag",
+        "select text (mouse capture is on; in tmux too)",
+    ),
+];
+
 fn bindings() -> impl Iterator<Item = &'static Binding> {
     KEYMAP.iter().flat_map(|row| row.keys)
 }
@@ -297,11 +307,12 @@ pub fn keys_text(row: &Row) -> String {
     text
 }
 
-/// The help's lines: (keys, what they do).
+/// The help's lines: (keys, what they do), then the mouse's.
 pub fn help() -> Vec<(String, &'static str)> {
     KEYMAP
         .iter()
         .map(|row| (keys_text(row), row.what))
+        .chain(MOUSE.iter().map(|&(how, what)| (how.to_owned(), what)))
         .collect()
 }
 
@@ -314,12 +325,15 @@ mod tests {
         let help = help();
         // Named in the help: one of its keys stands on its row's line.
         let listed = |action| {
-            KEYMAP.iter().zip(&help).any(|(row, (keys, _))| {
-                row.keys
-                    .iter()
-                    .filter(|b| b.shown && b.action == action)
-                    .any(|b| keys.contains(&b.name()) || keys.contains(&b.glyph()))
-            })
+            KEYMAP
+                .iter()
+                .zip(&help[..KEYMAP.len()])
+                .any(|(row, (keys, _))| {
+                    row.keys
+                        .iter()
+                        .filter(|b| b.shown && b.action == action)
+                        .any(|b| keys.contains(&b.name()) || keys.contains(&b.glyph()))
+                })
         };
         let mut unlisted: Vec<Action> = bindings()
             .map(|b| b.action)
@@ -367,6 +381,9 @@ mod tests {
                 "Esc",
                 "?",
                 "q  Ctrl-C",
+                "click",
+                "wheel",
+                "Shift-drag",
             ]
         );
     }
