@@ -430,3 +430,39 @@ fn a_click_on_an_input_selects_it_and_the_wheel_nudges_it() {
     mouse(&mut app, MouseEventKind::Down(MouseButton::Left), 79, 23);
     assert_eq!((app.selected, app.scene), before);
 }
+
+#[test]
+fn the_figure_shown_is_figure_data_for_the_scene_and_follows_the_inputs() {
+    use homerun::analysis::figures::{Figure, figure_data};
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    // Not computed until the figures tab shows.
+    assert_eq!(app.figure, None);
+    assert!(app.take_figure_job().is_none());
+    key(&mut app, KeyCode::Char('4'));
+    let all = homerun::tui::app::FIGURES;
+    let first = all.iter().position(|&n| n == app.figure_number).unwrap();
+    for k in 0..all.len() {
+        let number = all[(first + k) % all.len()];
+        settle(&mut app);
+        let shown = app.figure.clone().unwrap();
+        assert_eq!(shown.number, number);
+        let Ok(Figure::Table(direct)) = figure_data(number, &app.scene, &app.preset_name) else {
+            panic!("figure {number}");
+        };
+        assert_eq!(shown.data, Ok(direct), "figure {number}");
+        println!("Fig. {number}: {:?}", shown.elapsed);
+        key(&mut app, KeyCode::Char('f'));
+    }
+    // A nudge makes the figure stale: its job's result for the old inputs is dropped.
+    settle(&mut app);
+    let old = app.take_figure_job();
+    assert!(old.is_none());
+    let generation = app.figure_generation;
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('l'));
+    assert!(app.figure_generation > generation);
+    assert!(!app.figure_fresh());
+    settle(&mut app);
+    assert!(app.figure_fresh());
+}

@@ -57,6 +57,8 @@ pub enum Action {
     ShowTab(Tab),
     NextStop,
     PreviousStop,
+    NextFigure,
+    PreviousFigure,
     Save,
     Open,
     Help,
@@ -224,8 +226,13 @@ pub const KEYMAP: &[Row] = &[
             ch('1', ShowTab(Tab::Flight)),
             ch('2', ShowTab(Tab::Surface)),
             ch('3', ShowTab(Tab::Impact)),
+            ch('4', ShowTab(Tab::Figures)),
         ],
-        "flight / range surface / impact (small screens)",
+        "flight / surface / impact / the paper's figures",
+    ),
+    row(
+        &[ch('f', NextFigure), ch('F', PreviousFigure)],
+        "next / previous figure (Figs. 3–6, 8–14)",
     ),
     row(
         &[
@@ -374,7 +381,8 @@ mod tests {
                 "r",
                 "u",
                 "p P",
-                "Tab  1 2 3",
+                "Tab  1 2 3 4",
+                "f F",
                 ", .",
                 "s",
                 "o",

@@ -14,15 +14,18 @@ pub enum Tab {
     Flight,
     Surface,
     Impact,
+    /// The paper's figures for the current inputs.
+    Figures,
 }
 
 impl Tab {
-    pub const ALL: [Tab; 3] = [Tab::Flight, Tab::Surface, Tab::Impact];
+    pub const ALL: [Tab; 4] = [Tab::Flight, Tab::Surface, Tab::Impact, Tab::Figures];
     pub fn title(self) -> &'static str {
         match self {
             Tab::Flight => "1 Flight",
             Tab::Surface => "2 Range surface",
             Tab::Impact => "3 Impact",
+            Tab::Figures => "4 Figures",
         }
     }
 }
@@ -39,6 +42,7 @@ pub struct Panes {
     pub readout: Option<Rect>,
     pub heatmap: Option<Rect>,
     pub impact: Option<Rect>,
+    pub figure: Option<Rect>,
     pub status: Rect,
 }
 
@@ -64,12 +68,17 @@ pub fn layout(area: Rect, tab: Tab) -> Panes {
             Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
         let [trajectory, readout] =
             Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(top);
-        let [heatmap, impact] =
+        let [heatmap, other] =
             Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
         panes.trajectory = Some(trajectory);
         panes.readout = Some(readout);
         panes.heatmap = Some(heatmap);
-        panes.impact = Some(impact);
+        // The figures take the impact's place when chosen (`4`).
+        if tab == Tab::Figures {
+            panes.figure = Some(other);
+        } else {
+            panes.impact = Some(other);
+        }
     } else {
         let [tabs, content] =
             Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(right);
@@ -84,6 +93,7 @@ pub fn layout(area: Rect, tab: Tab) -> Panes {
             }
             Tab::Surface => panes.heatmap = Some(content),
             Tab::Impact => panes.impact = Some(content),
+            Tab::Figures => panes.figure = Some(content),
         }
     }
     panes

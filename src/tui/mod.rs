@@ -126,6 +126,9 @@ pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError>
         if let Some(job) = app.take_job() {
             worker.submit(job);
         }
+        if let Some(job) = app.take_figure_job() {
+            worker.submit_figure(job);
+        }
         if app.dirty {
             app.dirty = false;
             queue!(terminal.backend_mut(), BeginSynchronizedUpdate)?;
@@ -154,6 +157,13 @@ pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError>
                 Err(TryRecvError::Empty) => break,
                 // The worker is gone (it panicked): stop rather than show a
                 // screen that will never update.
+                Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
+            }
+        }
+        loop {
+            match worker.figures.try_recv() {
+                Ok(report) => app.apply_figure(report),
+                Err(TryRecvError::Empty) => break,
                 Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
             }
         }

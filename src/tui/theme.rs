@@ -86,6 +86,16 @@ pub const APEX: Style = Style::new().fg(Color::Yellow);
 pub const LANDING: Style = Style::new().fg(Color::Magenta);
 pub const FENCE: Style = Style::new().fg(Color::White);
 
+// The figures.
+
+/// A figure's curves, in turn (the current input's line is `SWING`, the
+/// paper's marked points `APEX`).
+pub const FIGURE_CURVES: [Style; 3] = [
+    Style::new().fg(Color::Green),
+    Style::new().fg(Color::Yellow),
+    Style::new().fg(Color::Magenta),
+];
+
 // The impact: each curve or mark in the chart and in its legend below.
 
 /// v1, the tangential slip of the contact points.
