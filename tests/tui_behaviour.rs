@@ -5,9 +5,16 @@ mod tui_support;
 use std::time::Duration;
 
 use homerun::analysis::optimum::{OptimizerSettings, optimize, optimize_from};
+use homerun::analysis::study::Grid;
+use homerun::model::keys::KEYS;
+use homerun::tui::app::Field;
 use homerun::tui::app::Mode;
+use homerun::tui::layout::{heatmap_plot, layout};
 use homerun::tui::worker::{Report, Worker, run_job};
-use ratatui::crossterm::event::{KeyCode, KeyModifiers};
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{
+    Event, KeyCode, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
+};
 use tui_support::*;
 
 #[test]
@@ -318,4 +325,144 @@ fn a_save_never_hides_a_bundled_preset_unless_asked_twice() {
     assert_eq!(details.len(), 2);
     assert!(details[0].ends_with("(bundled; hidden by yours of that name)"));
     assert!(details[1].ends_with("(yours; hides the bundled one)"));
+}
+
+#[test]
+fn a_pin_survives_a_nudge_and_a_preset_load_and_p_clears_it() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('p'));
+    let pin = app.pin.clone().expect("pinned");
+    assert_eq!(pin.scene, app.scene);
+    assert_eq!(pin.path, app.path);
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('L'));
+    settle(&mut app);
+    let after = app.pin.clone().expect("still pinned");
+    assert_eq!(after.scene, pin.scene, "the pinned scene is unchanged");
+    assert_eq!(after.swing, pin.swing);
+    assert_ne!(app.scene, pin.scene);
+    // The readout's now − pin is non-zero: 5 m/s more bat speed.
+    let dv = app.swing.impact.launch_speed() - pin.swing.impact.launch_speed();
+    assert!(dv > 1.0, "{dv}");
+    let shown = screen(&app);
+    assert!(
+        shown.contains(&format!("{dv:+.2} m/s")),
+        "the readout shows now − pin: {shown}"
+    );
+    assert!(shown.contains("━ pin"), "the legend names the pin: {shown}");
+    // A preset load keeps it too.
+    app.load(homerun::preset::load("fastball", None).unwrap());
+    app.flush();
+    assert_eq!(app.pin.as_ref().map(|p| p.scene), Some(pin.scene));
+    key_with(&mut app, KeyCode::Char('P'), KeyModifiers::SHIFT);
+    assert_eq!(app.pin, None);
+    assert!(!screen(&app).contains("now−pin"));
+}
+
+fn mouse(app: &mut homerun::tui::app::App, kind: MouseEventKind, column: u16, row: u16) {
+    app.handle(&Event::Mouse(MouseEvent {
+        kind,
+        column,
+        row,
+        modifiers: KeyModifiers::NONE,
+    }));
+    app.flush();
+}
+
+#[test]
+fn a_click_on_the_heatmap_moves_the_swing_to_that_cells_centre() {
+    for (w, h, tab) in [(80, 24, '2'), (200, 60, '1')] {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        key(&mut app, KeyCode::Char(tab));
+        let area = layout(app.size, app.tab).heatmap.unwrap();
+        let plot = heatmap_plot(area);
+        // A cell a third of the way across and two thirds down.
+        let (column, row) = (plot.width / 3, 2 * plot.height / 3);
+        let (x, y) = (plot.x + column, plot.y + row);
+        mouse(&mut app, MouseEventKind::Down(MouseButton::Left), x, y);
+        // One grid column per character, two grid rows (half blocks) per
+        // line, the first row at the bottom, over the explorer's window.
+        let window = Grid::explorer_window();
+        let (columns, rows) = (plot.width as f64, 2.0 * plot.height as f64);
+        let e = window.undercut.0
+            + (window.undercut.1 - window.undercut.0) * column as f64 / (columns - 1.0);
+        // The mean of the cell's two rows, rows − 1 − 2·row and the one below.
+        let j = rows - 1.5 - 2.0 * row as f64;
+        let psi =
+            window.swing_angle.0 + (window.swing_angle.1 - window.swing_angle.0) * j / (rows - 1.0);
+        assert!((app.scene.bat.undercut - e).abs() < 1e-12, "{w}x{h}");
+        assert!((app.scene.bat.swing_angle - psi).abs() < 1e-12, "{w}x{h}");
+        // The swing's mark is drawn in the cell clicked.
+        let mut terminal = ratatui::Terminal::new(TestBackend::new(w, h)).unwrap();
+        terminal
+            .draw(|frame| homerun::tui::view::draw(frame, &app))
+            .unwrap();
+        assert_eq!(terminal.backend().buffer()[(x, y)].symbol(), "✚");
+    }
+}
+
+#[test]
+fn a_click_on_an_input_selects_it_and_the_wheel_nudges_it() {
+    let mut app = app(80, 24, None);
+    let screen = screen(&app);
+    // The row on screen whose label is ω_B0 (the bat's roll).
+    let line = screen.lines().position(|l| l.contains("ω_B0")).unwrap() as u16;
+    mouse(&mut app, MouseEventKind::Down(MouseButton::Left), 5, line);
+    let spin = app.fields[app.selected];
+    assert!(
+        matches!(spin, Field::Key(k) if KEYS[k].name == "bat.spin"),
+        "{spin:?}"
+    );
+    // The wheel over another input: that one, up a step, then down two.
+    let speed = screen.lines().position(|l| l.contains("V̂_b0")).unwrap() as u16;
+    mouse(&mut app, MouseEventKind::ScrollUp, 10, speed);
+    assert_eq!(app.scene.pitch.speed, 42.0 + 0.5);
+    mouse(&mut app, MouseEventKind::ScrollDown, 10, speed);
+    mouse(&mut app, MouseEventKind::ScrollDown, 10, speed);
+    assert_eq!(app.scene.pitch.speed, 42.0 - 0.5);
+    assert!(matches!(app.fields[app.selected], Field::Key(k) if KEYS[k].name == "pitch.speed"));
+    // A click on a group's header or outside the panes changes nothing.
+    let before = (app.selected, app.scene);
+    let header = screen.lines().position(|l| l.contains("─ bat")).unwrap() as u16;
+    mouse(&mut app, MouseEventKind::Down(MouseButton::Left), 5, header);
+    mouse(&mut app, MouseEventKind::Down(MouseButton::Left), 79, 23);
+    assert_eq!((app.selected, app.scene), before);
+}
+
+#[test]
+fn the_figure_shown_is_figure_data_for_the_scene_and_follows_the_inputs() {
+    use homerun::analysis::figures::{Figure, figure_data};
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    // Not computed until the figures tab shows.
+    assert_eq!(app.figure, None);
+    assert!(app.take_figure_job().is_none());
+    key(&mut app, KeyCode::Char('4'));
+    let all = homerun::tui::app::FIGURES;
+    let first = all.iter().position(|&n| n == app.figure_number).unwrap();
+    for k in 0..all.len() {
+        let number = all[(first + k) % all.len()];
+        settle(&mut app);
+        let shown = app.figure.clone().unwrap();
+        assert_eq!(shown.number, number);
+        let Ok(Figure::Table(direct)) = figure_data(number, &app.scene, &app.preset_name) else {
+            panic!("figure {number}");
+        };
+        assert_eq!(shown.data, Ok(direct), "figure {number}");
+        println!("Fig. {number}: {:?}", shown.elapsed);
+        key(&mut app, KeyCode::Char('f'));
+    }
+    // A nudge makes the figure stale: its job's result for the old inputs is dropped.
+    settle(&mut app);
+    let old = app.take_figure_job();
+    assert!(old.is_none());
+    let generation = app.figure_generation;
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('l'));
+    assert!(app.figure_generation > generation);
+    assert!(!app.figure_fresh());
+    settle(&mut app);
+    assert!(app.figure_fresh());
 }

@@ -297,3 +297,19 @@ fn a_fifo_among_the_presets_leaves_the_picker_and_q_working() {
     session.press("q");
     assert_eq!(session.exit_code(), 0);
 }
+
+#[test]
+fn mouse_capture_is_on_while_running_and_off_after_quitting() {
+    let mut session = Session::start(&[], 100, 30);
+    session.wait_for("Trajectory");
+    // An SGR click (as xterm and tmux with `mouse on` send it) on the first
+    // input's row, 1-based: the preset row is the screen's second line.
+    session.press("\x1b[<0;5;2M\x1b[<0;5;2m");
+    session.wait_for("▶preset");
+    session.press("q");
+    assert_eq!(session.exit_code(), 0);
+    let bytes = String::from_utf8_lossy(&session.bytes.lock().unwrap()).into_owned();
+    let on = bytes.find("\x1b[?1000h").expect("mouse capture enabled");
+    let off = bytes.rfind("\x1b[?1000l").expect("mouse capture disabled");
+    assert!(on < off);
+}

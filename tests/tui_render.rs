@@ -98,3 +98,39 @@ fn tiny_and_odd_sizes_never_panic() {
         }
     }
 }
+
+#[test]
+fn readout_with_a_pin() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('p'));
+    select(&mut app, "bat.speed");
+    for _ in 0..3 {
+        key(&mut app, KeyCode::Char('l'));
+    }
+    settle(&mut app);
+    insta::assert_snapshot!("pinned_80x24", screen(&app));
+}
+
+#[test]
+fn figures_tab() {
+    for (w, h) in [(80, 24), (200, 60)] {
+        let mut app = app(w, h, None);
+        key(&mut app, KeyCode::Char('4'));
+        settle(&mut app);
+        insta::assert_snapshot!(format!("figure8_{w}x{h}"), screen(&app));
+    }
+    // Fig. 5: three curves (one per μ) and the paper's numbers.
+    let mut app = app(80, 24, None);
+    key(&mut app, KeyCode::Char('4'));
+    for _ in 0..2 {
+        key_with(
+            &mut app,
+            KeyCode::Char('F'),
+            ratatui::crossterm::event::KeyModifiers::SHIFT,
+        );
+    }
+    settle(&mut app);
+    assert_eq!(app.figure_number, 5);
+    insta::assert_snapshot!("figure5_80x24", screen(&app));
+}

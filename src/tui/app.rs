@@ -7,11 +7,15 @@ use ratatui::crossterm::event::{Event, KeyEvent, KeyEventKind};
 use ratatui::layout::Rect;
 use ratatui_textarea::TextArea;
 
+mod figures;
+mod mouse;
+mod presets;
+
 use super::format::format_value;
 use super::keymap::{self, Action};
 use super::layout::{Tab, heatmap_resolution, trajectory_samples};
 use super::theme::ColorMode;
-use super::worker::{Job, Report};
+use super::worker::{FigureJob, Job, Report};
 use crate::analysis::optimum::Point;
 use crate::analysis::precision::Purpose;
 use crate::analysis::study::{Grid, Surface};
@@ -20,8 +24,10 @@ use crate::model::flight;
 use crate::model::impact::Impact;
 use crate::model::keys::{DRAG_KEY, KEYS};
 use crate::model::scene::Scene;
-use crate::preset::{self, Fence, Preset, PresetError, Source};
+use crate::preset::{self, Fence, Preset};
 use crate::{Swing, simulate};
+use figures::FigureInputs;
+pub use figures::{FIGURES, FigureState};
 
 /// One row of the inputs pane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -32,6 +38,17 @@ pub enum Field {
     Key(usize),
     /// The drag model.
     Drag,
+}
+
+impl Field {
+    /// The group it is listed under in the inputs pane.
+    pub fn group(self) -> &'static str {
+        match self {
+            Field::Preset => "",
+            Field::Key(k) => KEYS[k].name.split('.').next().unwrap_or(""),
+            Field::Drag => "model",
+        }
+    }
 }
 
 /// Every row of the inputs pane, top to bottom.
@@ -94,6 +111,16 @@ pub struct SurfaceState {
     pub generation: u64,
 }
 
+/// A scene kept for comparison (key `p`): it stays while the inputs change.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pin {
+    pub scene: Scene,
+    /// Its swing at the readout's precision.
+    pub swing: Swing,
+    /// Its path, sampled at the plot's resolution.
+    pub path: Vec<(f64, f64)>,
+}
+
 /// The explorer.
 #[derive(Debug)]
 pub struct App {
@@ -123,6 +150,15 @@ pub struct App {
     /// The last converged optimum, whatever the inputs: the warm start.
     pub warm_start: Option<(f64, f64)>,
     pub impact_stop: usize,
+    /// The pinned scene, if any: drawn and compared beside the current one.
+    pub pin: Option<Pin>,
+    /// The paper's figure chosen on the figures tab, and as computed.
+    pub figure_number: u32,
+    pub figure: Option<FigureState>,
+    /// Bumped whenever the figure shown must change; older ones are dropped.
+    pub figure_generation: u64,
+    figure_for: Option<FigureInputs>,
+    figure_job: Option<FigureJob>,
     /// Show distances in feet instead of metres (display only).
     pub feet: bool,
     pub quit: bool,
@@ -168,6 +204,12 @@ impl App {
             generation: 0,
             warm_start: None,
             impact_stop: 0,
+            pin: None,
+            figure_number: 8,
+            figure: None,
+            figure_generation: 0,
+            figure_for: None,
+            figure_job: None,
             feet: false,
             quit: false,
             dirty: true,
@@ -185,7 +227,7 @@ impl App {
 
     /// Whether background work for the current inputs is still under way.
     pub fn busy(&self) -> bool {
-        !(self.optimum.is_some_and(|o| o.done) && self.surface_fresh())
+        !(self.optimum.is_some_and(|o| o.done) && self.surface_fresh() && self.figure_fresh())
     }
 
     /// Whether the surface shown is the finest one for the current inputs.
@@ -198,6 +240,11 @@ impl App {
     /// Recomputes what depends on the inputs, once per batch of events (so a
     /// held-down key costs one computation per frame, not per repeat).
     pub fn flush(&mut self) {
+        self.flush_inputs();
+        self.request_figure();
+    }
+
+    fn flush_inputs(&mut self) {
         if !self.inputs_changed {
             return;
         }
@@ -205,6 +252,13 @@ impl App {
         self.dirty = true;
         self.swing = simulate(&self.scene, Purpose::Readout);
         self.path = self.plot_path(&self.scene);
+        // The pin's scene stays; its path follows the plot's resolution.
+        if let Some(pin) = self.pin.take() {
+            self.pin = Some(Pin {
+                path: self.plot_path(&pin.scene),
+                ..pin
+            });
+        }
         let stops = self.swing.impact.stops().len();
         self.impact_stop = self.impact_stop.min(stops - 1);
         self.generation += 1;
@@ -288,6 +342,7 @@ impl App {
     pub fn handle(&mut self, event: &Event) {
         match event {
             Event::Key(key) if key.kind != KeyEventKind::Release => self.key(*key),
+            Event::Mouse(mouse) => self.mouse(*mouse),
             Event::Resize(columns, rows) => {
                 self.size = Rect::new(0, 0, *columns, *rows);
                 self.dirty = true;
@@ -352,6 +407,18 @@ impl App {
             Action::Open => self.open_picker(),
             Action::ToOptimum => self.reset_to_optimum(),
             Action::Units => self.feet = !self.feet,
+            Action::Pin => {
+                self.pin = Some(Pin {
+                    scene: self.scene,
+                    swing: self.swing,
+                    path: self.path.clone(),
+                });
+                self.message = Some((
+                    "pinned: the trajectory and readout compare with it (P clears)".into(),
+                    false,
+                ));
+            }
+            Action::Unpin => self.pin = None,
             Action::NextTab | Action::PreviousTab => {
                 let n = Tab::ALL.len();
                 let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);
@@ -368,9 +435,17 @@ impl App {
                 self.impact_stop = (self.impact_stop + 1).min(last);
             }
             Action::PreviousStop => self.impact_stop = self.impact_stop.saturating_sub(1),
+            Action::NextFigure => self.step_figure(true),
+            Action::PreviousFigure => self.step_figure(false),
             // The message is cleared already.
             Action::Close => {}
         }
+    }
+
+    /// The inputs list's lines: `None` for a group's header, else the field's index.
+    pub fn input_lines(&self) -> Vec<Option<usize>> {
+        let groups: Vec<&str> = self.fields.iter().map(|f| f.group()).collect();
+        super::layout::input_lines(&groups)
     }
 
     /// Moves the selected input by `scale` of its step, if the result is valid.
@@ -459,143 +534,6 @@ impl App {
         }
     }
 
-    fn save_key(
-        &mut self,
-        key: KeyEvent,
-        action: Option<Action>,
-        mut text: TextArea<'static>,
-        error: Option<String>,
-        overwrite: Option<String>,
-    ) {
-        match action {
-            Some(Action::Close) => {}
-            Some(Action::Confirm) => {
-                let name = text.lines().join("").trim().to_owned();
-                // Taking a bundled name hides the bundled preset from
-                // `--preset NAME` and from `o`: only when asked twice.
-                if preset::is_bundled(&name) && overwrite.as_deref() != Some(name.as_str()) {
-                    self.mode = Mode::Save {
-                        text,
-                        error: Some(format!(
-                            "`{name}` is bundled: your file would hide it (--preset {name} and o load yours); Enter again to save anyway"
-                        )),
-                        overwrite: Some(name),
-                    };
-                    return;
-                }
-                match self.save(&name) {
-                    Ok(path) => {
-                        self.preset_name = name;
-                        self.message = Some((format!("saved {}", path.display()), false));
-                    }
-                    Err(e) => {
-                        self.mode = Mode::Save {
-                            text,
-                            error: Some(e),
-                            overwrite,
-                        }
-                    }
-                }
-            }
-            _ => {
-                text.input(key);
-                self.mode = Mode::Save {
-                    text,
-                    error,
-                    overwrite,
-                };
-            }
-        }
-    }
-
-    fn save(&self, name: &str) -> Result<PathBuf, String> {
-        let dir = self.presets_dir.as_deref().ok_or_else(|| {
-            "no folder for presets (no config directory); pass --presets-dir DIR".to_owned()
-        })?;
-        let preset = Preset {
-            name: name.to_owned(),
-            description: format!("saved from the explorer (from {})", self.preset_name),
-            scene: self.scene,
-            fence: self.fence,
-            source: Source::Bundled,
-        };
-        preset.save(dir).map_err(|e| format!("not saved: {e}"))
-    }
-
-    fn open_picker(&mut self) {
-        let items: Vec<PickItem> = preset::list(self.presets_dir.as_deref())
-            .into_iter()
-            .map(|entry| match entry {
-                Ok(p) => PickItem {
-                    name: p.name.clone(),
-                    detail: match &p.source {
-                        Source::Bundled
-                            if preset::user_file(&p.name, self.presets_dir.as_deref())
-                                .is_some() =>
-                        {
-                            format!("{} (bundled; hidden by yours of that name)", p.description)
-                        }
-                        Source::Bundled => format!("{} (bundled)", p.description),
-                        Source::File(_) if preset::is_bundled(&p.name) => {
-                            format!("{} (yours; hides the bundled one)", p.description)
-                        }
-                        Source::File(_) => p.description.clone(),
-                    },
-                    preset: Some(p),
-                },
-                Err(e) => PickItem {
-                    name: broken_name(&e),
-                    detail: format!("broken: {e}"),
-                    preset: None,
-                },
-            })
-            .collect();
-        let selected = items
-            .iter()
-            .position(|i| i.name == self.preset_name)
-            .unwrap_or(0);
-        self.mode = Mode::Open {
-            items,
-            selected,
-            error: None,
-        };
-    }
-
-    fn open_key(
-        &mut self,
-        action: Option<Action>,
-        items: Vec<PickItem>,
-        selected: usize,
-        error: Option<String>,
-    ) {
-        let last = items.len().saturating_sub(1);
-        let (selected, error) = match action {
-            Some(Action::Close | Action::Quit) => return,
-            Some(Action::Down) => ((selected + 1).min(last), None),
-            Some(Action::Up) => (selected.saturating_sub(1), None),
-            Some(Action::Confirm) => match items.get(selected).and_then(|i| i.preset.clone()) {
-                Some(preset) => {
-                    self.load(preset);
-                    return;
-                }
-                None => (
-                    selected,
-                    Some(
-                        items
-                            .get(selected)
-                            .map_or(String::new(), |i| i.detail.clone()),
-                    ),
-                ),
-            },
-            _ => (selected, error),
-        };
-        self.mode = Mode::Open {
-            items,
-            selected,
-            error,
-        };
-    }
-
     /// Replaces the inputs with a preset's.
     pub fn load(&mut self, preset: Preset) {
         self.message = Some((format!("loaded {}", preset.name), false));
@@ -616,15 +554,6 @@ impl App {
             self.message = Some(("no optimum yet for these inputs".into(), true));
         }
     }
-}
-
-/// A short name for a broken preset: its file's stem, if the error has one.
-fn broken_name(error: &PresetError) -> String {
-    let text = error.to_string();
-    let path = text.split(':').next().unwrap_or("?");
-    std::path::Path::new(path)
-        .file_stem()
-        .map_or_else(|| path.to_owned(), |s| s.to_string_lossy().into_owned())
 }
 
 /// A one-line text field holding `value`, all of it selected: typing

@@ -49,11 +49,16 @@ pub enum Action {
     Close,
     ToOptimum,
     Units,
+    /// Keep the current scene to compare with.
+    Pin,
+    Unpin,
     NextTab,
     PreviousTab,
     ShowTab(Tab),
     NextStop,
     PreviousStop,
+    NextFigure,
+    PreviousFigure,
     Save,
     Open,
     Help,
@@ -211,14 +216,23 @@ pub const KEYMAP: &[Row] = &[
     ),
     row(&[ch('u', Units)], "distances in metres / feet"),
     row(
+        &[ch('p', Pin), ch('P', Unpin)],
+        "pin the scene to compare with / clear the pin",
+    ),
+    row(
         &[
             key(KeyCode::Tab, NextTab),
             key(BackTab, PreviousTab).alias(),
             ch('1', ShowTab(Tab::Flight)),
             ch('2', ShowTab(Tab::Surface)),
             ch('3', ShowTab(Tab::Impact)),
+            ch('4', ShowTab(Tab::Figures)),
         ],
-        "flight / range surface / impact (small screens)",
+        "flight / surface / impact / the paper's figures",
+    ),
+    row(
+        &[ch('f', NextFigure), ch('F', PreviousFigure)],
+        "next / previous figure (Figs. 3–6, 8–14)",
     ),
     row(
         &[
@@ -239,6 +253,16 @@ pub const KEYMAP: &[Row] = &[
             ch('c', Interrupt).with(KeyModifiers::CONTROL),
         ],
         "quit",
+    ),
+];
+
+/// What the mouse does, for the help (the app handles it in `app/mouse.rs`).
+pub const MOUSE: &[(&str, &str)] = &[
+    ("click", "surface: move (E, ψ) there · input: select it"),
+    ("wheel", "over an input: nudge it (up raises)"),
+    (
+        "Shift-drag",
+        "select text (mouse capture is on; in tmux too)",
     ),
 ];
 
@@ -290,11 +314,12 @@ pub fn keys_text(row: &Row) -> String {
     text
 }
 
-/// The help's lines: (keys, what they do).
+/// The help's lines: (keys, what they do), then the mouse's.
 pub fn help() -> Vec<(String, &'static str)> {
     KEYMAP
         .iter()
         .map(|row| (keys_text(row), row.what))
+        .chain(MOUSE.iter().map(|&(how, what)| (how.to_owned(), what)))
         .collect()
 }
 
@@ -307,12 +332,15 @@ mod tests {
         let help = help();
         // Named in the help: one of its keys stands on its row's line.
         let listed = |action| {
-            KEYMAP.iter().zip(&help).any(|(row, (keys, _))| {
-                row.keys
-                    .iter()
-                    .filter(|b| b.shown && b.action == action)
-                    .any(|b| keys.contains(&b.name()) || keys.contains(&b.glyph()))
-            })
+            KEYMAP
+                .iter()
+                .zip(&help[..KEYMAP.len()])
+                .any(|(row, (keys, _))| {
+                    row.keys
+                        .iter()
+                        .filter(|b| b.shown && b.action == action)
+                        .any(|b| keys.contains(&b.name()) || keys.contains(&b.glyph()))
+                })
         };
         let mut unlisted: Vec<Action> = bindings()
             .map(|b| b.action)
@@ -352,13 +380,18 @@ mod tests {
                 "g G",
                 "r",
                 "u",
-                "Tab  1 2 3",
+                "p P",
+                "Tab  1 2 3 4",
+                "f F",
                 ", .",
                 "s",
                 "o",
                 "Esc",
                 "?",
                 "q  Ctrl-C",
+                "click",
+                "wheel",
+                "Shift-drag",
             ]
         );
     }

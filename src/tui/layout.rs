@@ -6,21 +6,26 @@
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::widgets::Block;
 
+use crate::analysis::study::Grid;
+
 /// The view shown beside the inputs on a small screen (a large one shows all).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Tab {
     Flight,
     Surface,
     Impact,
+    /// The paper's figures for the current inputs.
+    Figures,
 }
 
 impl Tab {
-    pub const ALL: [Tab; 3] = [Tab::Flight, Tab::Surface, Tab::Impact];
+    pub const ALL: [Tab; 4] = [Tab::Flight, Tab::Surface, Tab::Impact, Tab::Figures];
     pub fn title(self) -> &'static str {
         match self {
             Tab::Flight => "1 Flight",
             Tab::Surface => "2 Range surface",
             Tab::Impact => "3 Impact",
+            Tab::Figures => "4 Figures",
         }
     }
 }
@@ -37,6 +42,7 @@ pub struct Panes {
     pub readout: Option<Rect>,
     pub heatmap: Option<Rect>,
     pub impact: Option<Rect>,
+    pub figure: Option<Rect>,
     pub status: Rect,
 }
 
@@ -62,12 +68,17 @@ pub fn layout(area: Rect, tab: Tab) -> Panes {
             Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
         let [trajectory, readout] =
             Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(top);
-        let [heatmap, impact] =
+        let [heatmap, other] =
             Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
         panes.trajectory = Some(trajectory);
         panes.readout = Some(readout);
         panes.heatmap = Some(heatmap);
-        panes.impact = Some(impact);
+        // The figures take the impact's place when chosen (`4`).
+        if tab == Tab::Figures {
+            panes.figure = Some(other);
+        } else {
+            panes.impact = Some(other);
+        }
     } else {
         let [tabs, content] =
             Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(right);
@@ -82,6 +93,7 @@ pub fn layout(area: Rect, tab: Tab) -> Panes {
             }
             Tab::Surface => panes.heatmap = Some(content),
             Tab::Impact => panes.impact = Some(content),
+            Tab::Figures => panes.figure = Some(content),
         }
     }
     panes
@@ -118,4 +130,55 @@ pub fn heatmap_resolution(size: Rect) -> (usize, usize) {
         (plot.width as usize).clamp(2, 200),
         (2 * plot.height as usize).clamp(2, 120),
     )
+}
+
+/// The inputs pane's list of rows (above the 3 lines that describe the
+/// selected one).
+pub fn inputs_list(area: Rect) -> Rect {
+    let [list, _] = Layout::vertical([Constraint::Fill(1), Constraint::Length(3)])
+        .areas(Block::bordered().inner(area));
+    list
+}
+
+/// The inputs list's lines, given each field's group: a header line (`None`)
+/// before each new group, then the field's index.
+pub fn input_lines(groups: &[&str]) -> Vec<Option<usize>> {
+    let mut lines = Vec::new();
+    let mut last = "";
+    for (i, group) in groups.iter().enumerate() {
+        if *group != last {
+            lines.push(None);
+            last = group;
+        }
+        lines.push(Some(i));
+    }
+    lines
+}
+
+/// How many lines the inputs list scrolls by to keep `selected_line` in view.
+pub fn input_scroll(selected_line: usize, lines: usize, height: usize) -> usize {
+    (selected_line + 2)
+        .saturating_sub(height)
+        .min(lines.saturating_sub(height))
+}
+
+/// The swing (E, ψ) at the centre of the heatmap's character cell at screen
+/// (x, y), or `None` outside its pixels. Each cell is one column of the
+/// surface's grid and two of its rows (half blocks), spread over
+/// [`Grid::explorer_window`] as the surface is.
+pub fn heatmap_point(area: Rect, x: u16, y: u16) -> Option<(f64, f64)> {
+    let plot = heatmap_plot(area);
+    if !(plot.contains(ratatui::layout::Position { x, y }) && plot.width >= 2) {
+        return None;
+    }
+    let grid = Grid {
+        columns: plot.width as usize,
+        rows: 2 * plot.height as usize,
+        ..Grid::explorer_window()
+    };
+    let column = (x - plot.x) as usize;
+    // The cell's two pixels, top first, are grid rows rows−1−2k and rows−2−2k.
+    let top = grid.rows - 1 - 2 * (y - plot.y) as usize;
+    let psi = 0.5 * (grid.swing_angle_at(top) + grid.swing_angle_at(top - 1));
+    Some((grid.undercut_at(column), psi))
 }

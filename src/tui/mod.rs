@@ -24,7 +24,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::TryRecvError;
 use std::time::Duration;
 
-use ratatui::crossterm::event::{self, Event};
+use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture, Event};
 use ratatui::crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
 use ratatui::crossterm::{execute, queue};
 use ratatui::layout::Rect;
@@ -92,6 +92,7 @@ struct Restore;
 
 impl Drop for Restore {
     fn drop(&mut self) {
+        let _ = execute!(io::stdout(), DisableMouseCapture);
         ratatui::restore();
     }
 }
@@ -109,6 +110,8 @@ pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError>
     }
     let mut terminal = ratatui::try_init()?;
     let _restore = Restore;
+    // Clicks and the wheel (see `app/mouse.rs`); Shift-drag still selects text.
+    execute!(io::stdout(), EnableMouseCapture)?;
     let size = terminal.size()?;
     let mut app = App::new(
         preset,
@@ -122,6 +125,9 @@ pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError>
     while !app.quit && !stop.load(Ordering::Relaxed) {
         if let Some(job) = app.take_job() {
             worker.submit(job);
+        }
+        if let Some(job) = app.take_figure_job() {
+            worker.submit_figure(job);
         }
         if app.dirty {
             app.dirty = false;
@@ -151,6 +157,13 @@ pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError>
                 Err(TryRecvError::Empty) => break,
                 // The worker is gone (it panicked): stop rather than show a
                 // screen that will never update.
+                Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
+            }
+        }
+        loop {
+            match worker.figures.try_recv() {
+                Ok(report) => app.apply_figure(report),
+                Err(TryRecvError::Empty) => break,
                 Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
             }
         }

@@ -80,9 +80,21 @@ pub const KEY: Style = Style::new().fg(Color::Cyan);
 pub const SWING: Style = Style::new().fg(Color::Cyan);
 /// The optimal swing's path (and its legend).
 pub const OPTIMAL: Style = Style::new().fg(Color::Green);
+/// The pinned scene's path (and its legend, and the readout's deltas).
+pub const PINNED: Style = Style::new().fg(Color::LightRed);
 pub const APEX: Style = Style::new().fg(Color::Yellow);
 pub const LANDING: Style = Style::new().fg(Color::Magenta);
 pub const FENCE: Style = Style::new().fg(Color::White);
+
+// The figures.
+
+/// A figure's curves, in turn (the current input's line is `SWING`, the
+/// paper's marked points `APEX`).
+pub const FIGURE_CURVES: [Style; 3] = [
+    Style::new().fg(Color::Green),
+    Style::new().fg(Color::Yellow),
+    Style::new().fg(Color::Magenta),
+];
 
 // The impact: each curve or mark in the chart and in its legend below.
 

@@ -4,13 +4,17 @@
 //! Plain std threads and channels, no async runtime. Every job carries a
 //! generation number; the UI bumps it on each input change, the worker polls
 //! it between steps and cells and abandons stale work, and the UI drops any
-//! report whose generation is not the current one.
+//! report whose generation is not the current one. The paper's figures have
+//! their own thread and generations, so that stepping through them never
+//! cancels the optimiser.
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread;
+use std::time::{Duration, Instant};
 
+use crate::analysis::figures::{self, Figure, FigureData};
 use crate::analysis::optimum::{Optimizer, OptimizerSettings, Point, Status};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study::{self, Grid, Surface};
@@ -54,6 +58,53 @@ impl Report {
             Report::Optimum { generation, .. } | Report::Surface { generation, .. } => *generation,
         }
     }
+}
+
+/// One of the paper's figures to compute for the current inputs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FigureJob {
+    pub generation: u64,
+    pub number: u32,
+    pub scene: Scene,
+    pub preset_name: String,
+}
+
+/// A figure's data (or why there is none), tagged with its job's generation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FigureReport {
+    pub generation: u64,
+    pub number: u32,
+    pub figure: Result<FigureData, String>,
+    /// How long it took to compute.
+    pub elapsed: Duration,
+}
+
+/// Computes one figure, unless cancelled first. Every figure takes at most
+/// ~20 ms (the sweeps, Figs. 8–12, run 11 warm-started optimisations), so
+/// it is computed once, at full resolution, with no coarse pass.
+pub fn run_figure_job(
+    job: &FigureJob,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    report: &mut dyn FnMut(FigureReport),
+) {
+    if cancelled() {
+        return;
+    }
+    let start = Instant::now();
+    let figure = match figures::figure_data(job.number, &job.scene, &job.preset_name) {
+        Ok(Figure::Table(data)) => Ok(data),
+        Ok(Figure::Surface(_)) => Err(format!("Fig. {} is the range surface (tab 2)", job.number)),
+        Err(e) => Err(e.to_string()),
+    };
+    if cancelled() {
+        return;
+    }
+    report(FigureReport {
+        generation: job.generation,
+        number: job.number,
+        figure,
+        elapsed: start.elapsed(),
+    });
 }
 
 /// The optimiser's progress is reported every this many steps (and at the end).
@@ -129,40 +180,74 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
     }
 }
 
-/// The worker thread and its two channels.
+/// The worker threads (the surface and optimiser; the figures) and their
+/// channels.
 pub struct Worker {
     jobs: Sender<Job>,
     latest: Arc<AtomicU64>,
     pub reports: Receiver<Report>,
+    figure_jobs: Sender<FigureJob>,
+    latest_figure: Arc<AtomicU64>,
+    pub figures: Receiver<FigureReport>,
+}
+
+/// The signature of a job's work: the job, whether it is cancelled, where
+/// its results go.
+type Run<J, R> = fn(&J, &(dyn Fn() -> bool + Sync), &mut dyn FnMut(R));
+
+/// A thread that runs `run` on the newest of the jobs sent to it, cancelling
+/// a job as soon as a newer generation is stored in the returned counter.
+fn spawn_runner<J: Send + 'static, R: Send + 'static>(
+    name: &str,
+    generation: fn(&J) -> u64,
+    run: Run<J, R>,
+) -> (Sender<J>, Arc<AtomicU64>, Receiver<R>) {
+    let (jobs, job_rx) = mpsc::channel::<J>();
+    let (report_tx, reports) = mpsc::channel();
+    let latest = Arc::new(AtomicU64::new(0));
+    let seen = Arc::clone(&latest);
+    thread::Builder::new()
+        .name(name.into())
+        .spawn(move || {
+            while let Ok(mut job) = job_rx.recv() {
+                // Coalesce: only the newest inputs matter.
+                while let Ok(newer) = job_rx.try_recv() {
+                    job = newer;
+                }
+                let wanted = generation(&job);
+                let cancelled = || seen.load(Ordering::Relaxed) != wanted;
+                run(&job, &cancelled, &mut |r| {
+                    let _ = report_tx.send(r);
+                });
+            }
+        })
+        .expect("spawn a worker thread");
+    (jobs, latest, reports)
 }
 
 impl Worker {
     pub fn spawn() -> Worker {
-        let (jobs, job_rx) = mpsc::channel::<Job>();
-        let (report_tx, reports) = mpsc::channel();
-        let latest = Arc::new(AtomicU64::new(0));
-        let seen = Arc::clone(&latest);
-        thread::Builder::new()
-            .name("homerun-worker".into())
-            .spawn(move || {
-                while let Ok(mut job) = job_rx.recv() {
-                    // Coalesce: only the newest inputs matter.
-                    while let Ok(newer) = job_rx.try_recv() {
-                        job = newer;
-                    }
-                    let generation = job.generation;
-                    let cancelled = || seen.load(Ordering::Relaxed) != generation;
-                    run_job(&job, &cancelled, &mut |r| {
-                        let _ = report_tx.send(r);
-                    });
-                }
-            })
-            .expect("spawn the worker thread");
+        let (jobs, latest, reports) =
+            spawn_runner("homerun-worker", |j: &Job| j.generation, run_job);
+        let (figure_jobs, latest_figure, figures) = spawn_runner(
+            "homerun-figures",
+            |j: &FigureJob| j.generation,
+            run_figure_job,
+        );
         Worker {
             jobs,
             latest,
             reports,
+            figure_jobs,
+            latest_figure,
+            figures,
         }
+    }
+
+    /// Starts computing a figure, cancelling the one before.
+    pub fn submit_figure(&self, job: FigureJob) {
+        self.latest_figure.store(job.generation, Ordering::Relaxed);
+        let _ = self.figure_jobs.send(job);
     }
 
     /// Starts `job`, cancelling whatever is running.

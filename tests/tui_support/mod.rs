@@ -8,7 +8,7 @@ use homerun::preset;
 use homerun::tui::app::App;
 use homerun::tui::theme::ColorMode;
 use homerun::tui::view;
-use homerun::tui::worker::run_job;
+use homerun::tui::worker::{run_figure_job, run_job};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
@@ -47,6 +47,13 @@ pub fn settle(app: &mut App) {
         run_job(&job, &|| false, &mut |r| reports.push(r));
         for report in reports {
             app.apply(report);
+        }
+    }
+    while let Some(job) = app.take_figure_job() {
+        let mut reports = Vec::new();
+        run_figure_job(&job, &|| false, &mut |r| reports.push(r));
+        for report in reports {
+            app.apply_figure(report);
         }
     }
 }

@@ -2,44 +2,45 @@
 //! description (or the edit box and its error) at the bottom.
 
 use ratatui::Frame;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Wrap};
 
 use crate::model::keys::KEYS;
 use crate::tui::app::{App, Field, Mode};
 use crate::tui::format::format_value;
+use crate::tui::layout::{input_scroll, inputs_list};
 use crate::tui::theme::{self, dim, title_style};
-
-fn section(field: Field) -> &'static str {
-    match field {
-        Field::Preset => "",
-        Field::Key(k) => KEYS[k].name.split('.').next().unwrap_or(""),
-        Field::Drag => "model",
-    }
-}
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let block = Block::bordered().title(Span::styled(" Inputs ", title_style()));
     let inner = block.inner(area);
     frame.render_widget(block, area);
-    let [list, about] = Layout::vertical([Constraint::Fill(1), Constraint::Length(3)]).areas(inner);
+    let list = inputs_list(area);
+    let about = Rect::new(
+        inner.x,
+        list.bottom(),
+        inner.width,
+        inner.bottom() - list.bottom(),
+    );
     let wide = inner.width >= 40;
     let editing = match &app.mode {
         Mode::Edit { text, error, .. } => Some((text, error)),
         _ => None,
     };
 
-    // Rows, with a header line before each group; remember the selected row.
+    // Rows, with a header line before each group (as `layout` counts them,
+    // so that a click lands on the row drawn); remember the selected row.
+    let lines = app.input_lines();
     let mut rows: Vec<Line> = Vec::new();
     let mut selected_row = 0;
-    let mut last_section = "";
-    for (i, field) in app.fields.iter().enumerate() {
-        let group = section(*field);
-        if group != last_section {
+    for (line, field) in lines.iter().enumerate() {
+        let Some(i) = *field else {
+            let group = lines[line + 1].map_or("", |i| app.fields[i].group());
             rows.push(Line::styled(format!("─ {group}"), dim()));
-            last_section = group;
-        }
+            continue;
+        };
+        let field = &app.fields[i];
         let selected = i == app.selected;
         if selected {
             selected_row = rows.len();
@@ -79,10 +80,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     }
 
     // Keep the selected row in view.
-    let height = list.height as usize;
-    let offset = (selected_row + 2)
-        .saturating_sub(height)
-        .min(rows.len().saturating_sub(height));
+    let offset = input_scroll(selected_row, rows.len(), list.height as usize);
     frame.render_widget(Paragraph::new(rows).scroll((offset as u16, 0)), list);
 
     if let Some((text, _)) = editing {

@@ -2,6 +2,7 @@
 //! Nothing here changes the state or computes physics.
 
 mod chart;
+pub mod figure;
 mod heatmap;
 mod impact;
 mod inputs;
@@ -55,6 +56,9 @@ pub fn draw(frame: &mut Frame, app: &App) {
     }
     if let Some(r) = panes.impact {
         impact::draw(frame, r, app);
+    }
+    if let Some(r) = panes.figure {
+        figure::draw(frame, r, app);
     }
     status_line(frame, panes.status, app);
     match &app.mode {

@@ -59,6 +59,30 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             )),
         ]),
     ];
+    // The pinned scene: now − pin under the launch and the flight. When the
+    // pane is short, the deltas take the impact's two lines (tab 3 shows it).
+    if let Some(pin) = &app.pin {
+        let (was, was_flight) = (&pin.swing.impact, &pin.swing.flight);
+        let pinned =
+            |text: String| Line::from(vec![label(" now−pin"), Span::styled(text, theme::PINNED)]);
+        let launch = pinned(format!(
+            "{:+.2} m/s  {:+.1} rad/s  {:+.2}°",
+            impact.launch_speed() - was.launch_speed(),
+            impact.launch_spin() - was.launch_spin(),
+            (impact.launch_angle() - was.launch_angle()).to_degrees()
+        ));
+        let flight = pinned(format!(
+            "range {:+.2} {u}  apex {:+.1} {u}",
+            d(flight.range - was_flight.range),
+            d(flight.apex - was_flight.apex)
+        ));
+        let short = (Block::bordered().inner(area).height as usize) < lines.len() + 5;
+        if short {
+            lines.truncate(2);
+        }
+        lines.insert(2, flight);
+        lines.insert(1, launch);
+    }
     let (e, psi) = (app.scene.bat.undercut, app.scene.bat.swing_angle);
     match app.optimum {
         Some(o) => {

@@ -1,5 +1,5 @@
 //! The batted flight in braille: the current swing, the optimal swing, the
-//! apex, the landing point and the fence, with axes in metres.
+//! pinned scene, the apex, the landing point and the fence, with axes in metres.
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
@@ -31,15 +31,20 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         path.iter().map(|&(x, y)| (k * x, k * y)).collect()
     };
     let (path, optimal_path) = (scaled(&app.path), scaled(&app.optimal_path));
+    let pinned_path = app.pin.as_ref().map_or(Vec::new(), |p| scaled(&p.path));
+    let (pin_range, pin_apex) = app
+        .pin
+        .as_ref()
+        .map_or((0.0, 0.0), |p| (p.swing.flight.range, p.swing.flight.apex));
     let optimal_range = app.optimum.filter(|o| o.done).map_or(0.0, |o| o.best.range);
     let optimal_apex = app.optimal_path.iter().map(|p| p.1).fold(0.0, f64::max);
     let fence = app
         .fence
         .map_or((0.0, 0.0), |f| (k * f.distance, k * f.height));
-    let x_max =
-        nice_ceiling(1.05 * k * flight.range.max(optimal_range)).max(nice_ceiling(1.05 * fence.0));
-    let y_max =
-        nice_ceiling(1.1 * k * flight.apex.max(optimal_apex)).max(nice_ceiling(1.1 * fence.1));
+    let x_max = nice_ceiling(1.05 * k * flight.range.max(optimal_range).max(pin_range))
+        .max(nice_ceiling(1.05 * fence.0));
+    let y_max = nice_ceiling(1.1 * k * flight.apex.max(optimal_apex).max(pin_apex))
+        .max(nice_ceiling(1.1 * fence.1));
 
     let apex = [(k * flight.apex_distance, k * flight.apex)];
     let landing = [(k * flight.range, 0.0)];
@@ -47,6 +52,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let mut datasets = Vec::new();
     if !optimal_path.is_empty() {
         datasets.push(chart::line(theme::OPTIMAL, &optimal_path).name("optimal"));
+    }
+    if !pinned_path.is_empty() {
+        datasets.push(chart::line(theme::PINNED, &pinned_path).name("pinned"));
     }
     datasets.push(chart::line(theme::SWING, &path).name("this swing"));
     datasets.push(chart::points(Marker::Dot, theme::APEX, &apex).name("apex"));
@@ -60,12 +68,23 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     if !optimal_path.is_empty() {
         legend.push(Span::styled("━ best ", theme::OPTIMAL));
     }
+    if !pinned_path.is_empty() {
+        legend.push(Span::styled("━ pin ", theme::PINNED));
+    }
     let legend = Line::from(legend);
-    let title = format!(
-        " Trajectory {:.1} {unit}, apex {:.1} {unit} ",
+    let numbers = format!(
+        "{:.1} {unit}, apex {:.1} {unit} ",
         k * flight.range,
         k * flight.apex
     );
+    // The title gives up its first word before it would run into the legend.
+    let title = format!(" Trajectory {numbers}");
+    let room = area.width.saturating_sub(2) as usize;
+    let title = if title.chars().count() + legend.width() <= room {
+        title
+    } else {
+        format!(" {numbers}")
+    };
     let chart = Chart::new(datasets)
         .block(
             Block::bordered()

@@ -1,0 +1,54 @@
+//! The mouse: a click on the heatmap moves the swing there, a click on an
+//! input selects it, the wheel over an input nudges it. Where things are
+//! comes from `layout`, the same rectangles the views draw into.
+
+use ratatui::crossterm::event::{MouseEvent, MouseEventKind};
+
+use super::{App, Mode};
+use crate::tui::layout::{self, heatmap_point, input_scroll, inputs_list};
+
+impl App {
+    pub(super) fn mouse(&mut self, event: MouseEvent) {
+        // Pop-ups own the keyboard; the mouse acts only on the panes.
+        if !matches!(self.mode, Mode::Normal) {
+            return;
+        }
+        let (x, y) = (event.column, event.row);
+        let panes = layout::layout(self.size, self.tab);
+        match event.kind {
+            MouseEventKind::Down(_) => {
+                if let Some(field) = self.input_at(panes.inputs, x, y) {
+                    self.selected = field;
+                    self.message = None;
+                    self.dirty = true;
+                } else if let Some((e, psi)) = panes.heatmap.and_then(|h| heatmap_point(h, x, y)) {
+                    self.scene = self.scene.with_swing(e, psi);
+                    self.inputs_changed = true;
+                    self.message = None;
+                    self.dirty = true;
+                }
+            }
+            MouseEventKind::ScrollUp | MouseEventKind::ScrollDown => {
+                if let Some(field) = self.input_at(panes.inputs, x, y) {
+                    self.selected = field;
+                    self.dirty = true;
+                    let up = event.kind == MouseEventKind::ScrollUp;
+                    self.nudge(if up { 1.0 } else { -1.0 });
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// The input whose row is at screen (x, y), if any.
+    fn input_at(&self, pane: ratatui::layout::Rect, x: u16, y: u16) -> Option<usize> {
+        let list = inputs_list(pane);
+        if !list.contains(ratatui::layout::Position { x, y }) {
+            return None;
+        }
+        let lines = self.input_lines();
+        let selected_line = lines.iter().position(|l| *l == Some(self.selected))?;
+        let offset = input_scroll(selected_line, lines.len(), list.height as usize);
+        lines.get(offset + (y - list.y) as usize).copied().flatten()
+    }
+}

@@ -1,0 +1,219 @@
+//! One of the paper's figures for the current inputs, in braille: its main
+//! curves against its x column (axes with their units), the current input's
+//! value as a vertical line, the paper's marked points, and the paper's
+//! stated numbers beside ours.
+
+use ratatui::Frame;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Chart, Paragraph};
+
+use super::chart;
+use crate::analysis::figures::{Cell, FigureData, trimmed};
+use crate::model::keys::KEYS;
+use crate::tui::app::{App, FIGURES};
+use crate::tui::theme::{self, dim, title_style};
+
+/// What to plot of figure `number`: its x column, the prefixes of its y
+/// columns, and the column that splits the rows into curves, if any.
+fn spec(number: u32) -> (&'static str, &'static [&'static str], Option<&'static str>) {
+    match number {
+        3 => ("reynolds", &["drag_coefficient"], None),
+        4 => ("spin_parameter", &["lift_coefficient"], None),
+        5 => ("undercut", &["launch_spin_mu"], None),
+        6 => ("undercut", &["launch_angle_mu"], None),
+        14 => ("time", &["drag_coefficient"], Some("point")),
+        // Figs. 8–13: the range against the swept input.
+        _ => ("", &["range"], None),
+    }
+}
+
+/// A curve: its legend and points.
+type Curve = (String, Vec<(f64, f64)>);
+
+/// The curves of `data` to draw, with the x column's index.
+pub fn curves(data: &FigureData) -> (usize, Vec<Curve>) {
+    let (x_key, prefixes, split) = spec(data.number);
+    let x = data
+        .columns
+        .iter()
+        .position(|c| c.key == x_key)
+        .unwrap_or(0);
+    let num = |row: &[Cell], k: usize| match row[k] {
+        Cell::Num(v) if v.is_finite() => Some(v),
+        _ => None,
+    };
+    let split = split.and_then(|key| data.columns.iter().position(|c| c.key == key));
+    let mut curves = Vec::new();
+    for (k, column) in data.columns.iter().enumerate() {
+        if !prefixes.iter().any(|p| column.key.starts_with(p)) {
+            continue;
+        }
+        // The legend: what tells curves apart (μ = 0.35), else the heading.
+        let name = column
+            .head
+            .rsplit_once(") ")
+            .map_or(column.head.clone(), |(_, rest)| rest.to_owned());
+        let mut groups: Vec<Curve> = Vec::new();
+        for row in &data.rows {
+            let (Some(px), Some(py)) = (num(row, x), num(row, k)) else {
+                continue;
+            };
+            let label = match split.map(|s| &row[s]) {
+                Some(Cell::Text(t)) => t.clone(),
+                _ => name.clone(),
+            };
+            match groups.iter_mut().find(|(l, _)| *l == label) {
+                Some((_, points)) => points.push((px, py)),
+                None => groups.push((label, vec![(px, py)])),
+            }
+        }
+        curves.extend(groups);
+    }
+    (x, curves)
+}
+
+/// `value` to `digits` significant digits.
+fn sig(value: f64, digits: i32) -> String {
+    if value == 0.0 || !value.is_finite() {
+        return format!("{value}");
+    }
+    let decimals = (digits - 1 - value.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    format!("{value:.decimals$}")
+}
+
+/// A column's heading up to its unit: `ω_bf (rad/s)`.
+fn axis_title(head: &str) -> String {
+    head.find(')')
+        .map_or(head.to_owned(), |end| head[..=end].to_owned())
+}
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let k = FIGURES
+        .iter()
+        .position(|&f| f == app.figure_number)
+        .unwrap_or(0);
+    let state = app.figure.as_ref();
+    let stale = state.is_none_or(|f| f.generation != app.figure_generation);
+    let title = format!(
+        " Fig. {} ({}/{}, f F){} ",
+        app.figure_number,
+        k + 1,
+        FIGURES.len(),
+        if stale { " computing…" } else { "" }
+    );
+    let block = Block::bordered().title(Span::styled(title, title_style()));
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let data = match state.map(|f| &f.data) {
+        None => return,
+        Some(Err(e)) => {
+            frame.render_widget(
+                Paragraph::new(Line::styled(e.as_str(), theme::ERROR)),
+                inner,
+            );
+            return;
+        }
+        Some(Ok(data)) => data,
+    };
+    let (x, curves) = curves(data);
+
+    // The paper's numbers beside ours, as many as leave the chart room.
+    let mut notes: Vec<Line> = data
+        .comparisons
+        .iter()
+        .map(|c| {
+            // The numbers first, so that a narrow pane cuts only the words.
+            Line::from(vec![
+                Span::styled(format!("paper {}", trimmed(c.paper)), dim()),
+                Span::raw(format!(" · ours {} {}", sig(c.ours, 3), c.unit)),
+                Span::styled(format!("  {}", c.what), dim()),
+            ])
+        })
+        .collect();
+    notes.extend(data.notes.iter().map(|n| Line::styled(n.as_str(), dim())));
+    let room = (inner.height as usize).saturating_sub(10).max(1);
+    notes.truncate(room);
+    let [heading, plot, below] = Layout::vertical([
+        Constraint::Length(1),
+        Constraint::Fill(1),
+        Constraint::Length(notes.len() as u16),
+    ])
+    .areas(inner);
+    frame.render_widget(
+        Paragraph::new(Line::styled(data.title.as_str(), dim())),
+        heading,
+    );
+    frame.render_widget(Paragraph::new(notes), below);
+
+    let points = curves.iter().flat_map(|(_, p)| p.iter());
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for &(px, py) in points {
+        (x0, x1, y0, y1) = (x0.min(px), x1.max(px), y0.min(py), y1.max(py));
+    }
+    if x0 >= x1 || y0 > y1 {
+        return;
+    }
+    let pad = 0.05 * (y1 - y0).max(1e-9);
+    let (y0, y1) = (y0 - pad, y1 + pad);
+
+    // The current input's value, where the x column is an input.
+    let x_key = &data.columns[x].key;
+    let now = KEYS
+        .iter()
+        .find(|key| {
+            key.name.replace('.', "_") == *x_key || key.name.ends_with(&format!(".{x_key}"))
+        })
+        .map(|key| (key.get)(&app.scene))
+        .filter(|v| (x0..=x1).contains(v));
+    let now_line = now.map_or(Vec::new(), |v| vec![(v, y0), (v, y1)]);
+    // The paper's marked points (A, B, Dryden's point…) on the first curve.
+    let marks: Vec<(f64, f64)> = match (
+        data.columns.iter().position(|c| c.key == "mark"),
+        curves.first(),
+    ) {
+        (Some(m), Some((_, first))) if first.len() == data.rows.len() => data
+            .rows
+            .iter()
+            .zip(first)
+            .filter(|(row, _)| matches!(&row[m], Cell::Text(t) if !t.is_empty()))
+            .map(|(_, &p)| p)
+            .collect(),
+        _ => Vec::new(),
+    };
+
+    let mut datasets = Vec::new();
+    let mut legend = Vec::new();
+    for (k, (name, points)) in curves.iter().enumerate() {
+        let style = theme::FIGURE_CURVES[k % theme::FIGURE_CURVES.len()];
+        datasets.push(chart::line(style, points));
+        if curves.len() > 1 {
+            legend.push(Span::styled(format!("━ {name} "), style));
+        }
+    }
+    if !now_line.is_empty() {
+        datasets.push(chart::line(theme::SWING, &now_line));
+        legend.push(Span::styled("│ now ", theme::SWING));
+    }
+    datasets.push(chart::points(Marker::Dot, theme::APEX, &marks));
+    let y_head = curves
+        .first()
+        .and_then(|_| {
+            data.columns
+                .iter()
+                .find(|c| spec(data.number).1.iter().any(|p| c.key.starts_with(p)))
+        })
+        .map_or(String::new(), |c| axis_title(&c.head));
+    let labels = |a: f64, b: f64| [a, 0.5 * (a + b), b].map(|v| sig(v, 3));
+    let chart = Chart::new(datasets)
+        .block(Block::new().title_top(Line::from(legend).right_aligned()))
+        .x_axis(chart::axis(
+            axis_title(&data.columns[x].head),
+            [x0, x1],
+            labels(x0, x1),
+        ))
+        .y_axis(chart::axis(y_head, [y0, y1], labels(y0, y1)))
+        .legend_position(None);
+    frame.render_widget(chart, plot);
+}
