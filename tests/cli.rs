@@ -385,7 +385,12 @@ fn every_bad_input_is_one_clear_line_and_status_2() {
     refuses(
         d,
         &["sweep", "bat.speed", "--from", "nan", "--to", "30"],
-        &["bat.speed = NaN"],
+        &["--from NaN: bat.speed must be a finite number in (0, 100] m/s"],
+    );
+    refuses(
+        d,
+        &["sweep", "bat.speed", "--from", "26", "--to", "inf"],
+        &["--to inf: bat.speed must be a finite number in (0, 100] m/s"],
     );
     refuses(
         d,

@@ -4,7 +4,8 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::optimize::{render_surface, surface_json};
+use super::progress::{self, Work};
+use super::surface::{render_surface, surface_json};
 use super::table::{Align, Cell, Column, Digits, Table, Width, trim_lines};
 use super::{Format, SceneArgs, UsageError, pretty};
 use crate::analysis::figures::{self, Figure, FigureData, SurfaceFigure};
@@ -24,12 +25,18 @@ pub(super) fn figure(
         set: set.to_vec(),
     };
     let preset = args.resolve(dir)?;
-    Ok(
-        match figures::figure_data(number, &preset.scene, &preset.name)? {
-            Figure::Table(data) => render(&data, format),
-            Figure::Surface(surface) => render_figure7(&surface, format),
-        },
-    )
+    let what = format!("figure {number}");
+    let work = Work {
+        what: &what,
+        steps: figures::work_steps(number),
+    };
+    let figure = progress::run(work, |p| {
+        figures::figure_data_observed(number, &preset.scene, &preset.name, &|| p.tick())
+    })?;
+    Ok(match figure {
+        Figure::Table(data) => render(&data, format),
+        Figure::Surface(surface) => render_figure7(&surface, format),
+    })
 }
 
 /// Fig. 7: the `surface` command's output, with the optimum O beside the paper's.
