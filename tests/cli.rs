@@ -253,10 +253,9 @@ fn refuses(presets: &Path, args: &[&str], needles: &[&str]) {
             "{args:?}: {needle:?} not in {stderr}"
         );
     }
-    if !stderr.starts_with("error:") {
-        // Ours (not clap's usage errors): exactly one line.
-        assert_eq!(stderr.trim_end().lines().count(), 1, "{args:?}: {stderr}");
-    }
+    // Ours and clap's alike: exactly one line, `homerun: …`.
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{args:?}: {stderr}");
+    assert!(stderr.starts_with("homerun: "), "{args:?}: {stderr}");
 }
 
 #[test]

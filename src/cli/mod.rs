@@ -12,6 +12,7 @@ mod scene;
 mod surface;
 mod table;
 mod table2;
+mod usage;
 
 use std::io::Write as _;
 use std::path::PathBuf;
@@ -27,6 +28,7 @@ use crate::tui::TuiError;
 pub use optimize::MAX_STEPS;
 pub use scene::FIELD_KEYS;
 pub use surface::{MAX_GRID, SURFACE_FLIGHT_STEPS};
+pub use usage::{Parsed, error_line, parse};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -71,7 +73,7 @@ pub enum Command {
         #[command(flatten)]
         scene: SceneArgs,
         /// How many points, launch and landing included (2 to 100000).
-        #[arg(long, default_value_t = 51)]
+        #[arg(long, default_value_t = 51, allow_negative_numbers = true)]
         samples: usize,
         #[arg(long, conflicts_with = "csv")]
         json: bool,
@@ -101,7 +103,7 @@ pub enum Command {
         #[arg(long, allow_hyphen_values = true)]
         to: f64,
         /// How many values, both ends included (1 to 200).
-        #[arg(long, default_value_t = 11)]
+        #[arg(long, default_value_t = 11, allow_negative_numbers = true)]
         steps: usize,
         #[command(flatten)]
         scene: SceneArgs,
@@ -211,6 +213,9 @@ pub enum UsageError {
         length: usize,
         max: usize,
     },
+    /// A command line clap refused, in one line.
+    #[error("{0}")]
+    CommandLine(String),
     #[error("--samples {samples}: must be a whole number in [2, {max}]", max = hit::MAX_SAMPLES)]
     BadSamples { samples: usize },
     #[error(
