@@ -1,10 +1,17 @@
 use std::process::ExitCode;
 
-use clap::Parser;
-use homerun::cli::{self, Cli, Command};
+use homerun::cli::{self, Cli, Command, Parsed};
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match cli::parse(std::env::args_os()) {
+        Parsed::Run(cli) => cli,
+        Parsed::Help(help) => {
+            // Help and the version go to stdout; a closed pipe loses them.
+            let _ = help.print();
+            return ExitCode::SUCCESS;
+        }
+        Parsed::Refused(error) => return refuse(&error),
+    };
     let default = Command::Tui {
         preset: "fastball".to_owned(),
     };
@@ -15,16 +22,18 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(error) => {
-            eprintln!("homerun: {error}");
-            ExitCode::from(2)
-        }
+        Err(error) => refuse(&error),
     }
+}
+
+/// One line on stderr, `homerun: …`, and exit status 2.
+fn refuse(error: &cli::UsageError) -> ExitCode {
+    eprintln!("homerun: {}", cli::error_line(&error.to_string()));
+    ExitCode::from(2)
 }
 
 /// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s) folder.
 fn explore(cli: &Cli, preset: &str) -> Result<(), cli::UsageError> {
-    let dir = cli::presets_dir(cli);
-    let preset = homerun::preset::load(preset, dir.as_deref())?;
+    let (preset, dir) = cli::explorer_preset(cli, preset)?;
     Ok(homerun::tui::run(preset, dir)?)
 }

@@ -253,10 +253,9 @@ fn refuses(presets: &Path, args: &[&str], needles: &[&str]) {
             "{args:?}: {needle:?} not in {stderr}"
         );
     }
-    if !stderr.starts_with("error:") {
-        // Ours (not clap's usage errors): exactly one line.
-        assert_eq!(stderr.trim_end().lines().count(), 1, "{args:?}: {stderr}");
-    }
+    // Ours and clap's alike: exactly one line, `homerun: …`.
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{args:?}: {stderr}");
+    assert!(stderr.starts_with("homerun: "), "{args:?}: {stderr}");
 }
 
 #[test]
@@ -385,7 +384,12 @@ fn every_bad_input_is_one_clear_line_and_status_2() {
     refuses(
         d,
         &["sweep", "bat.speed", "--from", "nan", "--to", "30"],
-        &["bat.speed = NaN"],
+        &["--from NaN: bat.speed must be a finite number in (0, 100] m/s"],
+    );
+    refuses(
+        d,
+        &["sweep", "bat.speed", "--from", "26", "--to", "inf"],
+        &["--to inf: bat.speed must be a finite number in (0, 100] m/s"],
     );
     refuses(
         d,

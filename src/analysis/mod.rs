@@ -1,12 +1,14 @@
 //! What is computed *from* the model: the accuracy each consumer needs
 //! (`precision`), the optimal swing (`optimum`), the studies behind the
-//! paper's figures (`study`), each figure's data (`figures`), the paper's own
+//! paper's figures (`study`), what to say of a ball that does not land
+//! (`landing`), each figure's data (`figures`), the paper's own
 //! numbers (`paper`: Table II, what the text states), and the benchmark
 //! (`bench`). Uses `model` and `numerics`; knows nothing of the CLI or the
 //! explorer.
 
 pub mod bench;
 pub mod figures;
+pub mod landing;
 pub mod optimum;
 pub mod paper;
 pub mod precision;

@@ -16,6 +16,11 @@ const UNDERCUT_SCALE: f64 = 0.01; // m
 const SWING_ANGLE_SCALE: f64 = 0.1; // rad
 const MAX_SWING_ANGLE: f64 = std::f64::consts::FRAC_PI_2;
 
+/// The default [`OptimizerSettings::max_flight_steps`]: about 1.5 s of
+/// integration at the optimiser's tolerance, 200× what the Table II optima
+/// take (3 500 to 6 000 steps).
+pub const DEFAULT_MAX_FLIGHT_STEPS: u64 = 5_000_000;
+
 /// When to stop.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct OptimizerSettings {
@@ -25,6 +30,12 @@ pub struct OptimizerSettings {
     /// The spread of range over the simplex (m): the paper's TolFun, 1e-4.
     pub tolerance_range: f64,
     pub max_evaluations: u32,
+    /// The most integration steps all its flights may take together: a bound
+    /// on the work, whatever the scene. An ordinary optimum takes a few
+    /// thousand; a scene whose balls hover (a light ball with a large spin,
+    /// low gravity) takes up to 100 000 a flight, and would otherwise run its
+    /// `max_evaluations` for a minute.
+    pub max_flight_steps: u64,
     /// Restarts from the best point after the first convergence.
     pub max_restarts: u32,
     /// The size of a (re)started simplex, in scaled units.
@@ -37,6 +48,7 @@ impl Default for OptimizerSettings {
             tolerance_x: 1e-4,
             tolerance_range: 1e-4,
             max_evaluations: 2000,
+            max_flight_steps: DEFAULT_MAX_FLIGHT_STEPS,
             max_restarts: 4,
             initial_size: 0.25,
         }
@@ -58,6 +70,8 @@ pub enum Status {
     Converged,
     /// Stopped by `max_evaluations` before converging.
     OutOfEvaluations,
+    /// Stopped by `max_flight_steps` before converging.
+    OutOfWork,
 }
 
 /// An incremental search for the maximum range.
@@ -75,6 +89,9 @@ struct Objective {
     scene: Scene,
     options: FlightOptions,
     evaluations: u32,
+    /// Integration steps taken by all its flights, accepted and rejected.
+    flight_steps: u64,
+    max_flight_steps: u64,
 }
 
 impl Objective {
@@ -84,9 +101,15 @@ impl Objective {
         if undercut.abs() >= self.scene.reach() || swing_angle.abs() > MAX_SWING_ANGLE {
             return f64::INFINITY;
         }
+        // Past the work limit nothing more is flown (the first swing always
+        // is): the search stops at its next step.
+        if self.evaluations > 0 && self.flight_steps >= self.max_flight_steps {
+            return f64::INFINITY;
+        }
         self.evaluations += 1;
         let flight =
             model::simulate(&self.scene.with_swing(undercut, swing_angle), self.options).flight;
+        self.flight_steps += u64::from(flight.stats.accepted) + u64::from(flight.stats.rejected);
         // A ball that never lands has no range: that swing is infeasible.
         if flight.landed && flight.range.is_finite() {
             -flight.range
@@ -110,6 +133,8 @@ impl Optimizer {
             scene: *scene,
             options: options.into(),
             evaluations: 0,
+            flight_steps: 0,
+            max_flight_steps: settings.max_flight_steps,
         };
         let limit = scene.reach();
         let start = nelder_mead::Point::<2>::new(
@@ -144,6 +169,10 @@ impl Optimizer {
             self.status = Status::OutOfEvaluations;
             return self.status;
         }
+        if self.objective.flight_steps >= self.objective.max_flight_steps {
+            self.status = Status::OutOfWork;
+            return self.status;
+        }
         let objective = &mut self.objective;
         if self.search.step(&mut |u| objective.cost(u)) == nelder_mead::Status::Converged {
             self.status = Status::Converged;
@@ -175,6 +204,11 @@ impl Optimizer {
         self.objective.evaluations
     }
 
+    /// Integration steps taken so far by all the flights.
+    pub fn flight_steps(&self) -> u64 {
+        self.objective.flight_steps
+    }
+
     pub fn status(&self) -> Status {
         self.status
     }
@@ -188,6 +222,14 @@ pub struct Optimum {
     pub range: f64,
     pub evaluations: u32,
     pub converged: bool,
+    /// Whether any swing tried lands. If none does, there is no optimum:
+    /// `range` is −∞ and (E, ψ) is where the search started.
+    pub landed: bool,
+    /// Integration steps taken by all the flights.
+    pub flight_steps: u64,
+    /// Why it stopped: converged, or which limit.
+    #[serde(skip)]
+    pub status: Status,
 }
 
 /// Runs a search to the end from the scene's own (E, ψ).
@@ -205,5 +247,50 @@ pub fn optimize_from(scene: &Scene, start: (f64, f64), settings: OptimizerSettin
         range: best.range,
         evaluations: optimizer.evaluations(),
         converged: optimizer.status() == Status::Converged,
+        // A swing that does not land costs +∞ (range −∞).
+        landed: best.range.is_finite(),
+        flight_steps: optimizer.flight_steps(),
+        status: optimizer.status(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_search_stops_at_its_work_limit_and_says_so() {
+        let scene = Scene::default();
+        let whole = optimize(&scene, OptimizerSettings::default());
+        assert_eq!(whole.status, Status::Converged);
+        assert!(whole.landed);
+        // A Table II optimum takes a few thousand steps: far inside the default.
+        assert!(
+            (1_000..20_000).contains(&whole.flight_steps),
+            "{}",
+            whole.flight_steps
+        );
+        let settings = OptimizerSettings {
+            max_flight_steps: 1_000,
+            ..OptimizerSettings::default()
+        };
+        let cut = optimize(&scene, settings);
+        assert_eq!(cut.status, Status::OutOfWork);
+        assert!(!cut.converged && cut.landed);
+        // No flight starts past the limit: at most one flight over it.
+        assert!(
+            (1_000..1_100).contains(&cut.flight_steps),
+            "{}",
+            cut.flight_steps
+        );
+    }
+
+    #[test]
+    fn with_no_swing_landing_there_is_no_optimum() {
+        let mut scene = Scene::default();
+        scene.environment.gravity = 0.001;
+        let none = optimize(&scene, OptimizerSettings::default());
+        assert!(!none.landed && !none.converged);
+        assert_eq!(none.range, f64::NEG_INFINITY);
     }
 }

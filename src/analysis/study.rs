@@ -4,6 +4,8 @@
 //! (Figs. 5–6). Parallel with rayon where the points are independent. Each
 //! study calls the model and nothing else.
 
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
+
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -55,7 +57,8 @@ impl Grid {
 }
 
 /// Range at every grid point, row-major (row j = ψ, column i = E); `None`
-/// where the bat misses the ball (|E| ≥ r_b + r_B).
+/// where the bat misses the ball (|E| ≥ r_b + r_B). [`surface_within`] gives
+/// NaN where the ball does not land.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Surface {
     pub grid: Grid,
@@ -72,7 +75,7 @@ impl Surface {
         self.ranges
             .iter()
             .enumerate()
-            .filter_map(|(k, r)| r.map(|r| (k, r)))
+            .filter_map(|(k, r)| r.filter(|r| r.is_finite()).map(|r| (k, r)))
             .max_by(|a, b| a.1.total_cmp(&b.1))
             .map(|(k, r)| (k % self.grid.columns, k / self.grid.columns, r))
     }
@@ -87,6 +90,118 @@ pub fn range_at(
 ) -> Option<f64> {
     (undercut.abs() < scene.reach())
         .then(|| model::range(&scene.with_swing(undercut, swing_angle), options))
+}
+
+/// The most integration steps a sweep's optimisations may take together
+/// (about 3 s on one core), shared by its points: each point's optimiser
+/// gets the smaller of an even share of what is left and its own
+/// [`OptimizerSettings::max_flight_steps`], and flies at least one swing (so
+/// the sweep may overrun by a flight a point). An ordinary point takes 3 000
+/// to 10 000 (warm-started), so a share stays ample up to 200 points.
+pub const SWEEP_FLIGHT_STEPS: u64 = 10_000_000;
+
+/// Why [`surface_within`] gave up: the work it would take.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TooMuchWork {
+    /// Cells flown before giving up, and the integration steps they took.
+    pub cells: usize,
+    pub steps: u64,
+    /// Cells in the whole grid (those the bat reaches).
+    pub total: usize,
+}
+
+impl TooMuchWork {
+    /// The mean integration steps of a flight so far.
+    pub fn steps_per_cell(&self) -> f64 {
+        self.steps as f64 / self.cells.max(1) as f64
+    }
+}
+
+/// As [`surface`], within a budget of `max_steps` integration steps over all
+/// its flights, reporting each cell done to `tick`, with NaN where the ball
+/// does not land (it has no range there). It gives up as soon as
+/// the steps taken pass the budget, or, once 64 cells are done, as soon as
+/// their mean says the whole grid would take twice the budget.
+pub fn surface_within(
+    scene: &Scene,
+    grid: Grid,
+    options: impl Into<FlightOptions>,
+    max_steps: u64,
+    tick: &(dyn Fn() + Sync),
+) -> Result<Surface, TooMuchWork> {
+    let options = options.into();
+    let reach = scene.reach();
+    let total = (0..grid.columns)
+        .filter(|&i| grid.undercut_at(i).abs() < reach)
+        .count()
+        * grid.rows;
+    let steps = AtomicU64::new(0);
+    let cells = AtomicUsize::new(0);
+    let over = || {
+        let (steps, cells) = (steps.load(Ordering::Relaxed), cells.load(Ordering::Relaxed));
+        steps > max_steps
+            || (cells >= 64 && steps as f64 / cells as f64 * total as f64 > 2.0 * max_steps as f64)
+    };
+    // Cells in a spread-out order, so that the first ones done are a fair
+    // sample of the grid's work.
+    let count = grid.rows * grid.columns;
+    let stride = spread(count);
+    let cells_done: Option<Vec<(usize, Option<f64>)>> = (0..count)
+        .into_par_iter()
+        .map(|m| {
+            if over() {
+                return None;
+            }
+            let k = m * stride % count;
+            let (i, j) = (k % grid.columns, k / grid.columns);
+            let undercut = grid.undercut_at(i);
+            if undercut.abs() >= reach {
+                tick();
+                return Some((k, None));
+            }
+            let flight =
+                model::simulate(&scene.with_swing(undercut, grid.swing_angle_at(j)), options)
+                    .flight;
+            let taken = u64::from(flight.stats.accepted) + u64::from(flight.stats.rejected);
+            steps.fetch_add(taken, Ordering::Relaxed);
+            cells.fetch_add(1, Ordering::Relaxed);
+            tick();
+            let range = if flight.landed {
+                flight.range
+            } else {
+                f64::NAN
+            };
+            Some((k, Some(range)))
+        })
+        .collect();
+    let Some(cells_done) = cells_done else {
+        return Err(TooMuchWork {
+            cells: cells.load(Ordering::Relaxed),
+            steps: steps.load(Ordering::Relaxed),
+            total,
+        });
+    };
+    let mut ranges = vec![None; count];
+    for (k, range) in cells_done {
+        ranges[k] = range;
+    }
+    Ok(Surface { grid, ranges })
+}
+
+/// A step through 0..n that visits every index once (coprime with n) and
+/// spreads them out: the nearest such step to n/φ.
+fn spread(n: usize) -> usize {
+    let gcd = |mut a: usize, mut b: usize| {
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    let mut stride = ((n as f64 * 0.618_034).round() as usize).max(1);
+    while gcd(stride, n) != 1 {
+        stride += 1;
+    }
+    stride
 }
 
 /// The range surface, in parallel over rows.
@@ -135,6 +250,9 @@ pub struct SweepPoint {
     pub launch_angle: f64,
     pub evaluations: u32,
     pub converged: bool,
+    /// Whether any swing tried lands; if none does, there is no optimum and
+    /// `range` is −∞.
+    pub landed: bool,
 }
 
 /// Why a sweep was refused before any computation.
@@ -197,21 +315,48 @@ pub fn linspace(from: f64, to: f64, steps: usize) -> Vec<f64> {
 
 /// The optimum as `key` is swept over `values` (Figs. 8–12). Each point is
 /// warm-started from the previous optimum, which makes the sweep sequential
-/// but about twice as cheap per point, and keeps it on one ridge.
+/// but about twice as cheap per point, and keeps it on one ridge. The points
+/// share a work budget of [`SWEEP_FLIGHT_STEPS`].
 pub fn sweep(
     scene: &Scene,
     key: &str,
     values: &[f64],
     settings: OptimizerSettings,
 ) -> Result<Vec<SweepPoint>, SweepError> {
+    sweep_observed(scene, key, values, settings, &mut || {})
+}
+
+/// As [`sweep`], calling `tick` after each point.
+pub fn sweep_observed(
+    scene: &Scene,
+    key: &str,
+    values: &[f64],
+    settings: OptimizerSettings,
+    tick: &mut dyn FnMut(),
+) -> Result<Vec<SweepPoint>, SweepError> {
     let scenes = sweep_scenes(scene, key, values)?;
     let mut start = (scene.bat.undercut, scene.bat.swing_angle);
+    let mut remaining = SWEEP_FLIGHT_STEPS;
+    let count = scenes.len() as u64;
     Ok(scenes
         .iter()
         .zip(values)
-        .map(|(s, &value)| {
+        .zip(0..)
+        .map(|((s, &value), done)| {
+            // An even share of what is left: a point that takes less leaves
+            // more for the others.
+            let settings = OptimizerSettings {
+                max_flight_steps: settings.max_flight_steps.min(remaining / (count - done)),
+                ..settings
+            };
             let optimum = optimize_from(s, start, settings);
-            start = (optimum.undercut, optimum.swing_angle);
+            remaining = remaining.saturating_sub(optimum.flight_steps);
+            tick();
+            // A search that found nothing landing leaves the next one
+            // where it started.
+            if optimum.landed {
+                start = (optimum.undercut, optimum.swing_angle);
+            }
             let impact = Impact::new(&s.with_swing(optimum.undercut, optimum.swing_angle));
             SweepPoint {
                 value,
@@ -223,6 +368,7 @@ pub fn sweep(
                 launch_angle: impact.launch_angle(),
                 evaluations: optimum.evaluations,
                 converged: optimum.converged,
+                landed: optimum.landed,
             }
         })
         .collect())
@@ -236,6 +382,8 @@ pub struct SlicePoint {
     pub launch_spin: f64,
     pub launch_angle: f64,
     pub range: f64,
+    /// Whether the ball lands; if not, `range` is where it was at its limit.
+    pub landed: bool,
 }
 
 /// Launch and range at each undercut in `undercuts`, the swing angle held at
@@ -259,6 +407,7 @@ pub fn slice(
                 launch_spin: swing.impact.launch_spin(),
                 launch_angle: swing.impact.launch_angle(),
                 range: swing.flight.range,
+                landed: swing.flight.landed,
             }
         })
         .collect()

@@ -4,7 +4,8 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::optimize::{render_surface, surface_json};
+use super::progress::{self, Work};
+use super::surface::{render_surface, surface_json};
 use super::table::{Align, Cell, Column, Digits, Table, Width, trim_lines};
 use super::{Format, SceneArgs, UsageError, pretty};
 use crate::analysis::figures::{self, Figure, FigureData, SurfaceFigure};
@@ -24,12 +25,18 @@ pub(super) fn figure(
         set: set.to_vec(),
     };
     let preset = args.resolve(dir)?;
-    Ok(
-        match figures::figure_data(number, &preset.scene, &preset.name)? {
-            Figure::Table(data) => render(&data, format),
-            Figure::Surface(surface) => render_figure7(&surface, format),
-        },
-    )
+    let what = format!("figure {number}");
+    let work = Work {
+        what: &what,
+        steps: figures::work_steps(number),
+    };
+    let figure = progress::run(work, |p| {
+        figures::figure_data_observed(number, &preset.scene, &preset.name, &|| p.tick())
+    })?;
+    Ok(match figure {
+        Figure::Table(data) => render(&data, format),
+        Figure::Surface(surface) => render_figure7(&surface, format),
+    })
 }
 
 /// Fig. 7: the `surface` command's output, with the optimum O beside the paper's.
@@ -43,18 +50,32 @@ fn render_figure7(figure: &SurfaceFigure, format: Format) -> String {
             "title": figure.title,
             "conditions": figure.conditions,
             "surface": reparsed(&surface_json(&figure.surface)),
-            "optimum": {
-                "undercut": o.undercut, "swing_angle": o.swing_angle, "range": o.range,
+            "optimum": if o.landed {
+                serde_json::json!({
+                    "undercut": o.undercut, "swing_angle": o.swing_angle, "range": o.range,
+                    "landed": true,
+                })
+            } else {
+                serde_json::json!({
+                    "undercut": null, "swing_angle": null, "range": null, "landed": false,
+                })
             },
             "paper": {"undercut": undercut, "swing_angle": swing_angle, "range": range},
         })),
         Format::Text => {
             let mut out = heading(figure.number, &figure.title, &figure.conditions);
             out.push_str(&render_surface(&figure.surface, format));
+            let ours = if o.landed {
+                format!(
+                    "E = {:.4} m, ψ = {:.4} rad, range {:.2} m",
+                    o.undercut, o.swing_angle, o.range
+                )
+            } else {
+                "none, no swing tried lands".to_owned()
+            };
             let _ = writeln!(
                 out,
-                "optimum O (Nelder–Mead): E = {:.4} m, ψ = {:.4} rad, range {:.2} m; paper: E = {undercut:.4} m, ψ = {swing_angle:.3} rad, {range:.2} m",
-                o.undercut, o.swing_angle, o.range
+                "optimum O (Nelder–Mead): {ours}; paper: E = {undercut:.4} m, ψ = {swing_angle:.3} rad, {range:.2} m"
             );
             out
         }
@@ -80,9 +101,12 @@ fn table(data: &FigureData) -> Table {
         .enumerate()
         .map(|(k, c)| {
             let numeric = data.rows.iter().all(|r| !matches!(r[k], Cell::Text(_)));
+            // `landed` is for programs: in text a flight that did not land
+            // shows no range, and its mark says so.
+            let yes_no = data.rows.iter().all(|r| matches!(r[k], Cell::Bool(_)));
             Column {
                 key: Some(c.key.clone()),
-                head: Some(c.head.clone()),
+                head: (!yes_no || data.rows.is_empty()).then(|| c.head.clone()),
                 digits: Digits::Fixed(c.decimals),
                 align: if numeric { Align::Right } else { Align::Left },
                 width: Width::Fit,

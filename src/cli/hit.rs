@@ -4,10 +4,12 @@
 use std::fmt::Write as _;
 
 use super::table::{Align, Cell, Column, Digits, Table, Width};
-use super::{Format, UsageError, pretty};
+use super::{FIELD_KEYS, Format, UsageError, pretty};
 use crate::Scene;
+use crate::analysis::landing;
 use crate::analysis::precision::Purpose;
 use crate::model::aero::DragModel;
+use crate::model::flight::FlightSummary;
 use crate::model::impact::Impact;
 use crate::model::keys::{DRAG_KEY, KEYS};
 use crate::model::pitch;
@@ -20,6 +22,7 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
     let impact = &swing.impact;
     let flight = &swing.flight;
     let vertical = pitch::vertical_velocity(scene.pitch.speed, scene.environment.gravity);
+    let unlanded = landing::why_not_landed(scene, flight, Purpose::Readout);
     if json {
         return pretty(&serde_json::json!({
             "pitch": {
@@ -38,13 +41,7 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
                 "launch_spin": impact.launch_spin(),
                 "launch_angle": impact.launch_angle(),
             },
-            "flight": {
-                "range": flight.range,
-                "flight_time": flight.flight_time,
-                "apex": flight.apex,
-                "landing_speed": flight.landing_speed,
-                "landing_angle": flight.landing_angle,
-            },
+            "flight": flight_json(flight, unlanded),
         }));
     }
     let bat = &scene.bat;
@@ -52,11 +49,6 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
     let stick = match impact.stick_impulse() {
         Some(p) => format!("slip halts at p_s = {p:.4} N·s (stick)"),
         None => "slips until separation".to_owned(),
-    };
-    let aloft = if flight.landed {
-        ""
-    } else {
-        " (still in the air at the time limit)"
     };
     labelled(&[
         (
@@ -94,16 +86,36 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
         ("launch", launch_text(impact)),
         (
             "flight",
-            format!(
-                "range {:.3} m in {:.3} s, apex {:.2} m, lands at {:.2} m/s, {:.3} rad below horizontal{aloft}",
-                flight.range,
-                flight.flight_time,
-                flight.apex,
-                flight.landing_speed,
-                flight.landing_angle
-            ),
+            match unlanded {
+                Some(why) => format!("{why}, apex {:.2} m", flight.apex),
+                None => format!(
+                    "range {:.3} m in {:.3} s, apex {:.2} m, lands at {:.2} m/s, {:.3} rad below horizontal",
+                    flight.range,
+                    flight.flight_time,
+                    flight.apex,
+                    flight.landing_speed,
+                    flight.landing_angle
+                ),
+            },
         ),
     ])
+}
+
+/// A flight in JSON: its range (null if it did not land, with the reason in
+/// `why_not_landed`), time, apex and landing, and `landed`.
+fn flight_json(flight: &FlightSummary, unlanded: Option<String>) -> serde_json::Value {
+    let mut json = serde_json::json!({
+        "range": flight.landed.then_some(flight.range),
+        "flight_time": flight.flight_time,
+        "apex": flight.apex,
+        "landing_speed": flight.landing_speed,
+        "landing_angle": flight.landing_angle,
+        "landed": flight.landed,
+    });
+    if let Some(why) = unlanded {
+        json["why_not_landed"] = why.into();
+    }
+    json
 }
 
 /// Lines under a label, as `hit` and `optimize` print them: "launch   …".
@@ -148,6 +160,8 @@ pub(super) fn trajectory(
     let (flight, launch) = crate::model::launch(scene, &impact);
     let options = Purpose::Readout.flight_options();
     let (summary, points) = crate::model::flight::trajectory(&flight, &launch, &options, samples);
+    let end = points.last().map_or(0.0, |p| p.y);
+    let unlanded = (!summary.landed).then(|| landing::not_landed(&summary, end));
     let table = Table {
         columns: vec![
             Column::right("time", "t (s)", 8, Digits::Fixed(3)),
@@ -165,24 +179,28 @@ pub(super) fn trajectory(
             .collect(),
     };
     Ok(match format {
-        Format::Json => pretty(&serde_json::json!({
-            "range": summary.range,
-            "flight_time": summary.flight_time,
-            "landed": summary.landed,
-            "points": table.json_rows(),
-        })),
+        Format::Json => {
+            let mut json = serde_json::json!({
+                "range": summary.landed.then_some(summary.range),
+                "flight_time": summary.flight_time,
+                "landed": summary.landed,
+                "points": table.json_rows(),
+            });
+            if let Some(why) = unlanded {
+                json["why_not_landed"] = why.into();
+            }
+            pretty(&json)
+        }
         Format::Csv => table.csv(),
-        Format::Text => format!(
-            "flight of {:.3} m in {:.3} s{}\n{}",
-            summary.range,
-            summary.flight_time,
-            if summary.landed {
-                ""
-            } else {
-                " (still in the air at the step limit)"
-            },
-            table.text()
-        ),
+        Format::Text => match unlanded {
+            Some(why) => format!("a flight that {why}\n{}", table.text()),
+            None => format!(
+                "flight of {:.3} m in {:.3} s\n{}",
+                summary.range,
+                summary.flight_time,
+                table.text()
+            ),
+        },
     })
 }
 
@@ -220,6 +238,20 @@ pub(super) fn keys() -> String {
         text(defaults.drag.name()),
         text("drag model"),
     ]);
+    let fence = crate::preset::bundled()
+        .into_iter()
+        .find(|p| p.name == "fastball")
+        .and_then(|p| p.fence);
+    rows.extend(FIELD_KEYS.iter().map(|key| {
+        vec![
+            text(key.name),
+            text(""),
+            text(key.unit),
+            Cell::Text(key.bounds.to_string()),
+            fence.map_or(Cell::Blank, |f| Cell::Num((key.get)(&f))),
+            text(key.description),
+        ]
+    }));
     let mut out = Table { columns, rows }.text();
     let _ = writeln!(
         out,

@@ -7,21 +7,28 @@ mod figure;
 mod hit;
 mod optimize;
 mod presets;
+mod progress;
+mod scene;
+mod surface;
 mod table;
 mod table2;
+mod usage;
 
 use std::io::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
 use crate::analysis::figures::FigureError;
 use crate::analysis::study::SweepError;
-use crate::model::keys::InputError;
+use crate::model::keys::{InputError, Key};
 use crate::preset::{self, Preset};
 use crate::tui::TuiError;
 
-pub use optimize::{MAX_GRID, MAX_STEPS};
+pub use optimize::MAX_STEPS;
+pub use scene::FIELD_KEYS;
+pub use surface::{MAX_GRID, SURFACE_FLIGHT_STEPS};
+pub use usage::{Parsed, error_line, parse};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -66,7 +73,7 @@ pub enum Command {
         #[command(flatten)]
         scene: SceneArgs,
         /// How many points, launch and landing included (2 to 100000).
-        #[arg(long, default_value_t = 51)]
+        #[arg(long, default_value_t = 51, allow_negative_numbers = true)]
         samples: usize,
         #[arg(long, conflicts_with = "csv")]
         json: bool,
@@ -95,7 +102,8 @@ pub enum Command {
         from: f64,
         #[arg(long, allow_hyphen_values = true)]
         to: f64,
-        #[arg(long, default_value_t = 11)]
+        /// How many values, both ends included (1 to 200).
+        #[arg(long, default_value_t = 11, allow_negative_numbers = true)]
         steps: usize,
         #[command(flatten)]
         scene: SceneArgs,
@@ -183,8 +191,31 @@ pub enum UsageError {
     Tui(#[from] TuiError),
     #[error("--set {assignment:?}: expected KEY=VALUE, e.g. bat.speed=32")]
     BadAssignment { assignment: String },
-    #[error("--steps {steps}: must be an integer in [1, {max}]", max = MAX_STEPS)]
+    #[error("--steps {steps}: must be a whole number in [1, {max}]", max = MAX_STEPS)]
     BadSteps { steps: usize },
+    #[error("{flag} {value}: {} must be a finite number in {}{}", .key.name, .key.bounds, unit_suffix(.key.unit))]
+    BadBound {
+        flag: &'static str,
+        value: f64,
+        key: &'static Key,
+    },
+    /// More work than the command's budget; `detail` says how much and what fits.
+    #[error("{flag} {text}: {detail}")]
+    TooMuchWork {
+        flag: &'static str,
+        text: String,
+        detail: String,
+    },
+    #[error("{flag} \"{text}\": {length} bytes, longer than any path can be ({max} bytes)")]
+    TooLong {
+        flag: &'static str,
+        text: String,
+        length: usize,
+        max: usize,
+    },
+    /// A command line clap refused, in one line.
+    #[error("{0}")]
+    CommandLine(String),
     #[error("--samples {samples}: must be a whole number in [2, {max}]", max = hit::MAX_SAMPLES)]
     BadSamples { samples: usize },
     #[error(
@@ -224,27 +255,24 @@ pub enum WindowFault {
     OutOfRange,
 }
 
-impl SceneArgs {
-    /// The preset, with every `--set` applied, validated.
-    pub fn resolve(&self, presets_dir: Option<&Path>) -> Result<Preset, UsageError> {
-        let mut preset = preset::load(&self.preset, presets_dir)?;
-        for assignment in &self.set {
-            let (key, value) =
-                assignment
-                    .split_once('=')
-                    .ok_or_else(|| UsageError::BadAssignment {
-                        assignment: assignment.clone(),
-                    })?;
-            preset.scene.set_text(key.trim(), value)?;
-        }
-        preset.scene.validate()?;
-        Ok(preset)
-    }
-}
-
 /// The user's preset folder: `--presets-dir` or the XDG default.
 pub fn presets_dir(cli: &Cli) -> Option<PathBuf> {
     cli.presets_dir.clone().or_else(preset::user_dir)
+}
+
+/// The explorer's preset and folder, checked as every command's are.
+pub fn explorer_preset(cli: &Cli, spec: &str) -> Result<(Preset, Option<PathBuf>), UsageError> {
+    let dir = checked_presets_dir(cli)?;
+    Ok((scene::open(spec, dir.as_deref())?, dir))
+}
+
+/// [`presets_dir`], refused if it is too long to be a path.
+fn checked_presets_dir(cli: &Cli) -> Result<Option<PathBuf>, UsageError> {
+    let dir = presets_dir(cli);
+    if let Some(dir) = &dir {
+        scene::check_path("--presets-dir", &dir.to_string_lossy())?;
+    }
+    Ok(dir)
 }
 
 /// Runs a headless command, writing to stdout. A closed pipe (`| head`)
@@ -263,15 +291,15 @@ pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
 
 /// The output of a headless command, as text.
 pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
-    let dir = presets_dir(cli);
+    let dir = checked_presets_dir(cli)?;
     let dir = dir.as_deref();
     match command {
         Command::Hit { scene, json } => Ok(hit::hit(&scene.resolve(dir)?.scene, *json)),
         Command::Optimize { scene, json } => {
             Ok(optimize::optimum(&scene.resolve(dir)?.scene, *json))
         }
-        Command::Table2 { json } => Ok(table2::table2(*json)),
-        Command::Bench { json, quick } => Ok(bench::output(*json, *quick)),
+        Command::Table2 { json } => Ok(elapsed("table2", || table2::table2(*json))),
+        Command::Bench { json, quick } => Ok(elapsed("bench", || bench::output(*json, *quick))),
         Command::Sweep {
             key,
             from,
@@ -295,8 +323,8 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             csv,
         } => {
             let scene = scene.resolve(dir)?.scene;
-            let grid = optimize::parse_grid(undercut, swing_angle, grid)?;
-            Ok(optimize::surface(&scene, grid, Format::new(*json, *csv)))
+            let cells = surface::parse_grid(undercut, swing_angle, grid)?;
+            surface::surface(&scene, cells, grid, Format::new(*json, *csv))
         }
         Command::Presets => Ok(presets::presets(preset::check_dir(dir)?)),
         Command::Keys => Ok(hit::keys()),
@@ -327,6 +355,12 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
     }
 }
 
+/// `job`, with a progress line giving the time it has taken once it passes a
+/// second (see [`progress`]).
+fn elapsed<T>(what: &str, job: impl FnOnce() -> T) -> T {
+    progress::run(progress::Work { what, steps: None }, |_| job())
+}
+
 /// How a command prints: text for people, JSON or CSV for programs.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Format {
@@ -344,6 +378,15 @@ impl Format {
         } else {
             Format::Text
         }
+    }
+}
+
+/// " m/s" after a value, or nothing for a quantity without a unit.
+fn unit_suffix(unit: &str) -> String {
+    if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
     }
 }
 

@@ -1,41 +1,100 @@
-//! The optimum: `optimize` (one scene), `sweep` (against one input) and
-//! `surface` (the range over a grid of (E, ψ), as in Fig. 7).
-
-use std::fmt::Write as _;
+//! The optimum: `optimize` (one scene) and `sweep` (against one input).
 
 use super::hit::{labelled, launch_text};
+use super::progress::{self, Work};
 use super::table::{Align, Cell, Column, Digits, Table, Width};
-use super::{Format, UsageError, WindowFault, pretty};
+use super::{Format, UsageError, pretty};
 use crate::Scene;
-use crate::analysis::optimum::OptimizerSettings;
+use crate::analysis::landing;
+use crate::analysis::optimum::{OptimizerSettings, Status};
 use crate::analysis::paper::{Best, best_swing};
 use crate::analysis::precision::Purpose;
-use crate::analysis::study::{self, Grid, Surface};
+use crate::analysis::study;
 
-/// The largest sweep (points) and grid side (cells) accepted.
-pub const MAX_STEPS: usize = 1000;
-pub const MAX_GRID: usize = 500;
+/// The most points a sweep takes: its work budget
+/// ([`study::SWEEP_FLIGHT_STEPS`]) shared by 200 points still gives each five
+/// times what the costliest ordinary point needs (~10 000 integration
+/// steps), and 200 ordinary points take about 0.3 s.
+pub const MAX_STEPS: usize = 200;
 
 pub(super) fn optimum(scene: &Scene, json: bool) -> String {
-    let Best { optimum, swing } = best_swing(scene);
+    let work = Work {
+        what: "optimize",
+        steps: None,
+    };
+    let Best { optimum, swing } = progress::run(work, |_| best_swing(scene));
     let impact = &swing.impact;
+    // No swing landing at all, or (at the margin) the optimum not landing
+    // when flown again at readout precision.
+    let unlanded = if optimum.landed {
+        landing::why_not_landed(
+            &scene.with_swing(optimum.undercut, optimum.swing_angle),
+            &swing.flight,
+            Purpose::Readout,
+        )
+    } else {
+        let own = crate::simulate(scene, Purpose::Readout).flight;
+        Some(
+            landing::why_not_landed(scene, &own, Purpose::Readout)
+                .unwrap_or_else(|| "lands only at readout precision".to_owned()),
+        )
+    };
+    let landed = unlanded.is_none();
     if json {
-        return pretty(&serde_json::json!({
+        let mut json = serde_json::json!({
             "undercut": optimum.undercut,
             "swing_angle": optimum.swing_angle,
-            "range": swing.flight.range,
+            "range": landed.then_some(swing.flight.range),
             "launch_speed": impact.launch_speed(),
             "launch_spin": impact.launch_spin(),
             "launch_angle": impact.launch_angle(),
             "evaluations": optimum.evaluations,
             "converged": optimum.converged,
-        }));
+            "landed": landed,
+        });
+        if !optimum.landed {
+            no_optimum(&mut json);
+        }
+        if let Some(why) = unlanded {
+            json["why_not_landed"] = why.into();
+        }
+        return pretty(&json);
     }
-    let search = if optimum.converged {
-        "converged (Nelder–Mead, tolerances 1e-4)"
-    } else {
-        "NOT converged: stopped at the evaluation limit"
+    let search = match optimum.status {
+        Status::Converged => "converged (Nelder–Mead, tolerances 1e-4)".to_owned(),
+        Status::OutOfWork => format!(
+            "NOT converged: stopped at the work limit ({} integration steps)",
+            optimum.flight_steps
+        ),
+        _ => "NOT converged: stopped at the evaluation limit".to_owned(),
     };
+    let search = (
+        "search",
+        format!("{} range evaluations, {search}", optimum.evaluations),
+    );
+    if !optimum.landed {
+        let why = unlanded.unwrap_or_default();
+        return labelled(&[
+            (
+                "optimum",
+                "none: no swing tried lands, so there is no range to maximise".to_owned(),
+            ),
+            (
+                "",
+                format!(
+                    "the swing given, E = {:.4} m, ψ = {:.4} rad, {why}",
+                    scene.bat.undercut, scene.bat.swing_angle
+                ),
+            ),
+            search,
+        ]);
+    }
+    let range = unlanded.unwrap_or_else(|| {
+        format!(
+            "{:.4} m in {:.3} s",
+            swing.flight.range, swing.flight.flight_time
+        )
+    });
     labelled(&[
         (
             "optimum",
@@ -46,18 +105,9 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
                 optimum.swing_angle.to_degrees()
             ),
         ),
-        (
-            "range",
-            format!(
-                "{:.4} m in {:.3} s",
-                swing.flight.range, swing.flight.flight_time
-            ),
-        ),
+        ("range", range),
         ("launch", launch_text(impact)),
-        (
-            "search",
-            format!("{} range evaluations, {search}", optimum.evaluations),
-        ),
+        search,
     ])
 }
 
@@ -70,15 +120,42 @@ pub(super) fn sweep(
     if !(1..=MAX_STEPS).contains(&steps) {
         return Err(UsageError::BadSteps { steps });
     }
+    // The key first (unknown, or not sweepable), then the bounds.
+    let key = super::scene::checked_key(key)?;
+    study::sweep_scenes(scene, key, &[])?;
+    for (flag, value) in [("--from", from), ("--to", to)] {
+        if !value.is_finite() {
+            let key = Scene::key(key)?;
+            return Err(UsageError::BadBound { flag, value, key });
+        }
+    }
     let values = study::linspace(from, to, steps);
-    let points = study::sweep(scene, key, &values, OptimizerSettings::default())?;
+    let work = Work {
+        what: "sweep",
+        steps: Some((steps, "points")),
+    };
+    let points = progress::run(work, |p| {
+        let settings = OptimizerSettings::default();
+        study::sweep_observed(scene, key, &values, settings, &mut || p.tick())
+    })?;
     let unit = Scene::key(key).map(|k| k.unit).unwrap_or("");
     if format == Format::Json {
-        return Ok(pretty(&serde_json::json!({
+        let mut json = serde_json::json!({
             "key": key,
             "unit": unit,
             "points": points,
-        })));
+        });
+        for (point, p) in json["points"]
+            .as_array_mut()
+            .into_iter()
+            .flatten()
+            .zip(&points)
+        {
+            if !p.landed {
+                no_optimum(point);
+            }
+        }
+        return Ok(pretty(&json));
     }
     let label = if unit.is_empty() {
         key.to_owned()
@@ -96,6 +173,7 @@ pub(super) fn sweep(
             Column::right("launch_angle", "ζ rad", 8, Digits::Fixed(4)),
             Column::data("evaluations"),
             Column::data("converged"),
+            Column::data("landed"),
             Column::text("", Width::AtLeast(0), Align::Left, ""),
         ],
         rows: points
@@ -114,7 +192,13 @@ pub(super) fn sweep(
                 .map(Cell::Num)
                 .to_vec();
                 row.push(Cell::Text(p.converged.to_string()));
-                row.push(if p.converged {
+                row.push(Cell::Bool(p.landed));
+                if !p.landed {
+                    row[1..7].fill(Cell::Blank);
+                }
+                row.push(if !p.landed {
+                    Cell::Text("  (no swing tried lands: no optimum)".to_owned())
+                } else if p.converged {
                     Cell::Blank
                 } else {
                     Cell::Text("  (not converged)".to_owned())
@@ -130,170 +214,19 @@ pub(super) fn sweep(
     })
 }
 
-/// Parses "A..B" (a window) for `flag`, inside `bounds`.
-fn parse_window(
-    flag: &'static str,
-    text: &str,
-    bounds: (f64, f64),
-) -> Result<(f64, f64), UsageError> {
-    let bad = |fault| {
-        let (accepted, example) = if flag == "--undercut" {
-            (format!("[{}, {}] m", bounds.0, bounds.1), "0..0.05")
-        } else {
-            ("[-π/2, π/2] rad".to_owned(), "-0.6..1.0")
-        };
-        UsageError::BadWindow {
-            flag,
-            text: text.to_owned(),
-            fault,
-            accepted,
-            example,
-        }
-    };
-    let (a, b) = text
-        .split_once("..")
-        .ok_or_else(|| bad(WindowFault::NoDots))?;
-    let parse = |s: &str| {
-        s.trim()
-            .parse::<f64>()
-            .map_err(|_| bad(WindowFault::NotANumber(s.trim().to_owned())))
-    };
-    let (a, b) = (parse(a)?, parse(b)?);
-    if !(a.is_finite() && b.is_finite()) {
-        return Err(bad(WindowFault::NotFinite));
-    }
-    if a >= b {
-        return Err(bad(WindowFault::Reversed));
-    }
-    if a < bounds.0 || b > bounds.1 {
-        return Err(bad(WindowFault::OutOfRange));
-    }
-    Ok((a, b))
-}
+/// The fields of an optimum, null where no swing lands: there is no
+/// optimum, only where the search stopped.
+const OPTIMUM_FIELDS: [&str; 6] = [
+    "undercut",
+    "swing_angle",
+    "range",
+    "launch_speed",
+    "launch_spin",
+    "launch_angle",
+];
 
-/// Parses the surface's window and "NxM" grid.
-pub(super) fn parse_grid(
-    undercut: &str,
-    swing_angle: &str,
-    grid: &str,
-) -> Result<Grid, UsageError> {
-    let key_bounds = |name| {
-        let key = Scene::key(name).expect("a known key");
-        (key.bounds.min, key.bounds.max)
-    };
-    let undercut = parse_window("--undercut", undercut, key_bounds("bat.undercut"))?;
-    let swing_angle = parse_window("--swing-angle", swing_angle, key_bounds("bat.swing_angle"))?;
-    let bad = || UsageError::BadGrid {
-        text: grid.to_owned(),
-    };
-    let (columns, rows) = grid
-        .to_ascii_lowercase()
-        .split_once('x')
-        .map(|(n, m)| (n.trim().parse::<usize>(), m.trim().parse::<usize>()))
-        .ok_or_else(bad)?;
-    let (columns, rows) = (columns.map_err(|_| bad())?, rows.map_err(|_| bad())?);
-    if !(1..=MAX_GRID).contains(&columns) || !(1..=MAX_GRID).contains(&rows) {
-        return Err(bad());
+fn no_optimum(json: &mut serde_json::Value) {
+    for field in OPTIMUM_FIELDS {
+        json[field] = serde_json::Value::Null;
     }
-    Ok(Grid {
-        undercut,
-        swing_angle,
-        columns,
-        rows,
-    })
-}
-
-pub(super) fn surface(scene: &Scene, grid: Grid, format: Format) -> String {
-    render_surface(&study::surface(scene, grid, Purpose::Surface), format)
-}
-
-/// A range surface as JSON, as CSV (one line per cell) or as a grid of
-/// whole metres with ψ growing upward (as in Fig. 7).
-pub(super) fn render_surface(surface: &Surface, format: Format) -> String {
-    match format {
-        Format::Json => pretty(&surface_json(surface)),
-        Format::Csv => surface_cells(surface).csv(),
-        Format::Text => surface_text(surface),
-    }
-}
-
-fn axes(surface: &Surface) -> (Vec<f64>, Vec<f64>) {
-    let grid = surface.grid;
-    (
-        (0..grid.columns).map(|i| grid.undercut_at(i)).collect(),
-        (0..grid.rows).map(|j| grid.swing_angle_at(j)).collect(),
-    )
-}
-
-/// The surface's axes, its ranges row by row (null where the bat misses) and its best cell.
-pub(super) fn surface_json(surface: &Surface) -> serde_json::Value {
-    let (undercuts, swing_angles) = axes(surface);
-    let rows: Vec<&[Option<f64>]> = surface.ranges.chunks(surface.grid.columns).collect();
-    serde_json::json!({
-        "undercuts": undercuts,
-        "swing_angles": swing_angles,
-        "ranges": rows,
-        "best": surface.best().map(|(i, j, range)| serde_json::json!({
-            "undercut": undercuts[i], "swing_angle": swing_angles[j], "range": range,
-        })),
-    })
-}
-
-/// One row per cell: E, ψ and the range (blank where the bat misses).
-fn surface_cells(surface: &Surface) -> Table {
-    let (undercuts, swing_angles) = axes(surface);
-    let mut rows = Vec::new();
-    for (j, psi) in swing_angles.iter().enumerate() {
-        for (i, e) in undercuts.iter().enumerate() {
-            let range = surface.get(i, j).map_or(Cell::Blank, Cell::Num);
-            rows.push(vec![Cell::Num(*e), Cell::Num(*psi), range]);
-        }
-    }
-    Table {
-        columns: ["undercut", "swing_angle", "range"]
-            .map(Column::data)
-            .to_vec(),
-        rows,
-    }
-}
-
-fn surface_text(surface: &Surface) -> String {
-    let (undercuts, swing_angles) = axes(surface);
-    let best = surface.best();
-    let mut columns = vec![Column::right("", "ψ \\ E", 7, Digits::Fixed(3))];
-    columns.extend(undercuts.iter().enumerate().map(|(i, e)| {
-        let column = Column::right("", &format!("{:.1}", e * 1000.0), 5, Digits::Shortest);
-        column.after(if i == 0 { " " } else { "" })
-    }));
-    // ψ grows upward, as in Fig. 7.
-    let rows = (0..swing_angles.len())
-        .rev()
-        .map(|j| {
-            let mut row = vec![Cell::Num(swing_angles[j])];
-            row.extend((0..undercuts.len()).map(|i| {
-                let mark = if best.is_some_and(|b| (b.0, b.1) == (i, j)) {
-                    "*"
-                } else {
-                    " "
-                };
-                Cell::Text(match surface.get(i, j) {
-                    Some(r) => format!("{r:>4.0}{mark}"),
-                    None => format!("{:>4}{mark}", "-"),
-                })
-            }));
-            row
-        })
-        .collect();
-    let mut out = String::from(
-        "range (m) over undercut E (columns, mm) and swing angle ψ (rows, rad); * best cell, - bat misses\n",
-    );
-    out.push_str(&Table { columns, rows }.text());
-    if let Some((i, j, range)) = best {
-        let _ = writeln!(
-            out,
-            "best cell: E = {:.4} m, ψ = {:.4} rad, range {:.2} m",
-            undercuts[i], swing_angles[j], range
-        );
-    }
-    out
 }

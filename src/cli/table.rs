@@ -94,6 +94,7 @@ impl Column {
                 Digits::Trimmed => crate::analysis::figures::trimmed(*x),
             },
             Cell::Text(t) => t.clone(),
+            Cell::Bool(b) => b.to_string(),
             Cell::Blank => String::new(),
         }
     }
@@ -197,6 +198,7 @@ impl Table {
                             format!("\"{}\"", t.replace('"', "\"\""))
                         }
                         Cell::Text(t) => t.clone(),
+                        Cell::Bool(b) => b.to_string(),
                         Cell::Blank => String::new(),
                     })
                     .collect(),
@@ -218,6 +220,7 @@ impl Table {
                         let value = match cell {
                             Cell::Num(x) => serde_json::json!(x),
                             Cell::Text(t) => serde_json::json!(t),
+                            Cell::Bool(b) => serde_json::json!(b),
                             Cell::Blank => serde_json::Value::Null,
                         };
                         Some((c.key.clone()?, value))

@@ -2,10 +2,11 @@
 //! flights of its points A and B.
 
 use super::{
-    Cell, FigureData, LAUNCH, MARK, columns, compare, marked_row, trimmed, undercut_for_spin,
-    with_marks,
+    Cell, FigureData, LANDED, LAUNCH, MARK, columns, compare, flight_row, trimmed,
+    undercut_for_spin, with_marks,
 };
 use crate::Scene;
+use crate::analysis::landing;
 use crate::analysis::paper::{self, POINT_A_SPIN, POINT_B_SPIN};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study;
@@ -32,27 +33,36 @@ pub(super) fn figure13(scene: &Scene) -> FigureData {
     let slice = study::slice(scene, scene.bat.swing_angle, &undercuts, Purpose::Readout);
     let best = slice
         .iter()
+        .filter(|p| p.landed)
         .map(|p| p.range)
         .fold(f64::NEG_INFINITY, f64::max);
     let rows = slice
         .iter()
         .zip(&grid)
         .map(|(p, (_, mark))| {
-            let mark = if p.range == best {
-                if mark.is_empty() {
-                    "highest".to_owned()
-                } else {
-                    format!("{mark}; highest")
-                }
+            let extra = if !p.landed {
+                "does not land"
+            } else if p.range == best {
+                "highest"
             } else {
-                mark.clone()
+                ""
             };
+            let mark = [mark.as_str(), extra]
+                .into_iter()
+                .filter(|m| !m.is_empty())
+                .collect::<Vec<_>>()
+                .join("; ");
             let launch = [p.launch_speed, p.launch_spin, p.launch_angle];
-            marked_row(&[&[p.undercut, p.range][..], &launch].concat(), &mark)
+            flight_row(
+                &[&[p.undercut, p.range][..], &launch].concat(),
+                1..2,
+                p.landed,
+                &mark,
+            )
         })
         .collect();
     let mut comparisons = Vec::new();
-    let find = |e: f64| slice.iter().find(|p| p.undercut == e);
+    let find = |e: f64| slice.iter().find(|p| p.landed && p.undercut == e);
     if let (Some(pa), Some(pb)) = (a.and_then(find), b.and_then(find)) {
         comparisons.extend([
             compare(paper::POINT_A_SPEED, pa.launch_speed),
@@ -69,7 +79,7 @@ pub(super) fn figure13(scene: &Scene) -> FigureData {
     );
     let mut table = columns(&[("undercut", "E (m)", 5), ("range", "range (m)", 2)]);
     table.extend(columns(&LAUNCH));
-    table.extend(columns(&[MARK]));
+    table.extend(columns(&[LANDED, MARK]));
     FigureData {
         comparisons,
         ..FigureData::new(13, title, table, rows)
@@ -90,15 +100,22 @@ pub(super) fn figure14(scene: &Scene) -> FigureData {
         rows.extend(points.iter().map(|p| {
             let mut row = vec![Cell::Text(name.to_owned())];
             row.extend([p.time, p.drag_coefficient, p.x, p.y].map(Cell::Num));
+            row.push(Cell::Bool(summary.landed));
             row
         }));
         // Time at high (subcritical) drag, from a fine sampling.
         let (_, fine) = study::drag_along_flight(&s, 2001, Purpose::Plot);
         let dt = summary.flight_time / 2000.0;
         let high = fine.iter().filter(|p| p.drag_coefficient > 0.45).count() as f64 * dt;
+        let flown = match points.last().filter(|_| !summary.landed) {
+            Some(end) => landing::not_landed(&summary, end.y),
+            None => format!(
+                "range {:.2} m in {:.2} s",
+                summary.range, summary.flight_time
+            ),
+        };
         notes.push(format!(
-            "{name}: E = {e:.4} m, range {:.2} m in {:.2} s, {high:.2} s of it at C_D > 0.45",
-            summary.range, summary.flight_time
+            "{name}: E = {e:.4} m, {flown}, {high:.2} s of it at C_D > 0.45"
         ));
     }
     notes.push(
@@ -115,6 +132,7 @@ pub(super) fn figure14(scene: &Scene) -> FigureData {
         ("drag_coefficient", "C_D", 4),
         ("x", "x (m)", 2),
         ("y", "y (m)", 2),
+        LANDED,
     ]);
     FigureData {
         notes,

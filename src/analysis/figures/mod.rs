@@ -16,11 +16,13 @@ use crate::analysis::paper::{FIGURES, Stated};
 use crate::analysis::study::{self, SweepError};
 use crate::model::impact::Impact;
 
-/// One table cell: a number, a label, or nothing (null in JSON).
+/// One table cell: a number, a label, a yes or no (`landed`), or nothing
+/// (null in JSON).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Cell {
     Num(f64),
     Text(String),
+    Bool(bool),
     Blank,
 }
 
@@ -118,7 +120,8 @@ pub enum FigureError {
     Sweep(#[from] SweepError),
 }
 
-fn figure_list() -> String {
+/// "3 C_D against Re, 4 C_L against S, …": every figure we compute.
+pub fn figure_list() -> String {
     let list: Vec<String> = FIGURES
         .iter()
         .map(|(n, what)| format!("{n} {what}"))
@@ -137,6 +140,27 @@ pub fn known(number: u32) -> Result<(), FigureError> {
 
 /// The data of figure `number` for `scene` (loaded from the preset `preset_name`).
 pub fn figure_data(number: u32, scene: &Scene, preset_name: &str) -> Result<Figure, FigureError> {
+    figure_data_observed(number, scene, preset_name, &|| {})
+}
+
+/// The steps of work [`figure_data_observed`] reports for figure `number`,
+/// and what they are: its sweep's points (Figs. 8–12) or its surface's
+/// cells (Fig. 7); `None` for the figures whose work is not counted.
+pub fn work_steps(number: u32) -> Option<(usize, &'static str)> {
+    match number {
+        7 => Some((optimum::FIGURE7_GRID.0 * optimum::FIGURE7_GRID.1, "cells")),
+        8..=12 => Some((optimum::SWEEP_POINTS, "points")),
+        _ => None,
+    }
+}
+
+/// As [`figure_data`], calling `tick` after each step of [`work_steps`].
+pub fn figure_data_observed(
+    number: u32,
+    scene: &Scene,
+    preset_name: &str,
+    tick: &(dyn Fn() + Sync),
+) -> Result<Figure, FigureError> {
     known(number)?;
     let conditions = conditions(preset_name, scene);
     let data = match number {
@@ -146,10 +170,10 @@ pub fn figure_data(number: u32, scene: &Scene, preset_name: &str) -> Result<Figu
         7 => {
             return Ok(Figure::Surface(SurfaceFigure {
                 conditions,
-                ..optimum::figure7(scene)
+                ..optimum::figure7(scene, tick)
             }));
         }
-        8..=12 => optimum::sweep_figure(number, scene)?,
+        8..=12 => optimum::sweep_figure(number, scene, tick)?,
         13 => flight::figure13(scene),
         _ => flight::figure14(scene),
     };
@@ -210,6 +234,26 @@ fn marked_row(numbers: &[f64], mark: &str) -> Vec<Cell> {
     row.push(mark_cell(mark));
     row
 }
+
+/// The row of a flight: its numbers with those in `unknown` (the range, or
+/// the whole optimum) left blank if it did not land, then `landed`, then the
+/// mark.
+fn flight_row(
+    numbers: &[f64],
+    unknown: std::ops::Range<usize>,
+    landed: bool,
+    mark: &str,
+) -> Vec<Cell> {
+    let mut row = marked_row(numbers, mark);
+    if !landed {
+        row[unknown].fill(Cell::Blank);
+    }
+    row.insert(numbers.len(), Cell::Bool(landed));
+    row
+}
+
+/// The column saying whether a row's flight landed (JSON and CSV).
+const LANDED: (&str, &str, usize) = ("landed", "landed", 0);
 
 /// The paper's `stated` number beside `ours`.
 fn compare(stated: Stated, ours: f64) -> Comparison {

@@ -1,21 +1,37 @@
 //! Figs. 7–12: the range over (E, ψ), and the optimum against one input.
 
-use super::{FigureData, LAUNCH, MARK, SurfaceFigure, column, columns, compare, marked_row};
+use super::{
+    FigureData, LANDED, LAUNCH, MARK, SurfaceFigure, column, columns, compare, flight_row,
+};
 use crate::Scene;
 use crate::analysis::optimum::{self, OptimizerSettings};
 use crate::analysis::paper;
 use crate::analysis::precision::Purpose;
 use crate::analysis::study::{self, Grid, SweepError};
 
+/// Fig. 7's grid: columns (E) × rows (ψ).
+pub(super) const FIGURE7_GRID: (usize, usize) = (21, 17);
+/// The points of each of Figs. 8–12.
+pub(super) const SWEEP_POINTS: usize = 11;
+
 /// Fig. 7: the range surface over the paper's window, with the optimiser's
-/// optimum (point O).
-pub(super) fn figure7(scene: &Scene) -> SurfaceFigure {
+/// optimum (point O); `tick` after each cell.
+pub(super) fn figure7(scene: &Scene, tick: &(dyn Fn() + Sync)) -> SurfaceFigure {
+    let (columns, rows) = FIGURE7_GRID;
     SurfaceFigure {
         number: 7,
         title: "range (m) over undercut E (m) and swing angle ψ (rad), the window of Fig. 7"
             .to_owned(),
         conditions: String::new(),
-        surface: study::surface(scene, Grid::figure7(21, 17), Purpose::Surface),
+        // At most 357 flights of 100 000 steps: no budget needed.
+        surface: study::surface_within(
+            scene,
+            Grid::figure7(columns, rows),
+            Purpose::Surface,
+            u64::MAX,
+            tick,
+        )
+        .expect("an unlimited budget"),
         optimum: optimum::optimize(scene, OptimizerSettings::default()),
         paper: (
             paper::FIGURE7_UNDERCUT,
@@ -46,11 +62,17 @@ fn sweep_axis(number: u32) -> (&'static str, f64, f64, &'static str) {
     }
 }
 
-/// Figs. 8–12: the optimum against one input, as the paper varied it.
-pub(super) fn sweep_figure(number: u32, scene: &Scene) -> Result<FigureData, SweepError> {
+/// Figs. 8–12: the optimum against one input, as the paper varied it;
+/// `tick` after each point.
+pub(super) fn sweep_figure(
+    number: u32,
+    scene: &Scene,
+    tick: &(dyn Fn() + Sync),
+) -> Result<FigureData, SweepError> {
     let (key, from, to, what) = sweep_axis(number);
-    let values = study::linspace(from, to, 11);
-    let points = study::sweep(scene, key, &values, OptimizerSettings::default())?;
+    let values = study::linspace(from, to, SWEEP_POINTS);
+    let settings = OptimizerSettings::default();
+    let points = study::sweep_observed(scene, key, &values, settings, &mut || tick())?;
     let current = Scene::key(key).map(|k| (k.get)(scene)).ok();
     let rows = points
         .iter()
@@ -59,14 +81,22 @@ pub(super) fn sweep_figure(number: u32, scene: &Scene) -> Result<FigureData, Swe
             if current.is_some_and(|c| (c - p.value).abs() < 1e-9) {
                 mark.push("the preset's value");
             }
-            if !p.converged {
+            if !p.landed {
+                mark.push("no swing tried lands");
+            } else if !p.converged {
                 mark.push("not converged");
             }
             let numbers = [p.value, p.undercut, p.swing_angle, p.range];
-            marked_row(&[&numbers[..], &launch(p)].concat(), &mark.join("; "))
+            // Without a landing swing there is no optimum: only the value.
+            let row = [&numbers[..], &launch(p)].concat();
+            flight_row(&row, 1..row.len(), p.landed, &mark.join("; "))
         })
         .collect();
-    let at = |value: f64| points.iter().find(|p| (p.value - value).abs() < 1e-9);
+    let at = |value: f64| {
+        points
+            .iter()
+            .find(|p| p.landed && (p.value - value).abs() < 1e-9)
+    };
     let gain = |a: f64, b: f64| at(b).zip(at(a)).map(|(b, a)| b.range - a.range);
     let mut comparisons = Vec::new();
     let mut notes = Vec::new();
@@ -76,7 +106,8 @@ pub(super) fn sweep_figure(number: u32, scene: &Scene) -> Result<FigureData, Swe
                 comparisons.push(compare(paper::BAT_SPEED_GAIN, g / 5.0));
             }
             let level = points.windows(2).find_map(|w| {
-                (w[0].swing_angle > 0.0 && w[1].swing_angle <= 0.0).then(|| {
+                let crossing = w[0].swing_angle > 0.0 && w[1].swing_angle <= 0.0;
+                (w[0].landed && w[1].landed && crossing).then(|| {
                     w[0].value
                         + (w[1].value - w[0].value) * w[0].swing_angle
                             / (w[0].swing_angle - w[1].swing_angle)
@@ -128,7 +159,7 @@ pub(super) fn sweep_figure(number: u32, scene: &Scene) -> Result<FigureData, Swe
         ("range", "range (m)", 2),
     ]));
     table.extend(columns(&LAUNCH));
-    table.extend(columns(&[MARK]));
+    table.extend(columns(&[LANDED, MARK]));
     Ok(FigureData {
         comparisons,
         notes,

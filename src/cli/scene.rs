@@ -1,0 +1,189 @@
+//! A command's scene: a preset with every `--set` applied, checked before
+//! anything is computed. Whatever a user typed is shown escaped and cut
+//! ([`escape_for_terminal`]) in the errors.
+
+use std::path::Path;
+
+use super::{SceneArgs, UsageError};
+use crate::model::keys::{Bounds, DRAG_KEY, InputError};
+use crate::model::scene::Scene;
+use crate::preset::{self, Fence, Preset, escape_for_terminal};
+
+/// One key of a preset's `[field]`: the fence the explorer draws, not an
+/// input of the physics (so not in [`crate::model::keys::KEYS`]). The bounds
+/// and defaults are those the TOML reader (`src/preset/mod.rs`) applies.
+pub struct FieldKey {
+    pub name: &'static str,
+    pub unit: &'static str,
+    pub description: &'static str,
+    pub bounds: Bounds,
+    /// The value taken when a preset sets only the other key.
+    pub default: f64,
+    pub get: fn(&Fence) -> f64,
+    pub set: fn(&mut Fence, f64),
+}
+
+/// `field.fence_distance` and `field.fence_height`.
+pub const FIELD_KEYS: [FieldKey; 2] = [
+    FieldKey::new(
+        "field.fence_distance",
+        "fence distance from the plate (drawn by the explorer)",
+        (1000.0, 121.9),
+        |f| f.distance,
+        |f, v| f.distance = v,
+    ),
+    FieldKey::new(
+        "field.fence_height",
+        "fence height (drawn by the explorer)",
+        (100.0, 3.0),
+        |f| f.height,
+        |f, v| f.height = v,
+    ),
+];
+
+impl FieldKey {
+    /// A length in metres in (0, max], `default` when not given.
+    const fn new(
+        name: &'static str,
+        description: &'static str,
+        (max, default): (f64, f64),
+        get: fn(&Fence) -> f64,
+        set: fn(&mut Fence, f64),
+    ) -> FieldKey {
+        FieldKey {
+            name,
+            unit: "m",
+            description,
+            bounds: Bounds {
+                min: 0.0,
+                max,
+                min_exclusive: true,
+            },
+            default,
+            get,
+            set,
+        }
+    }
+}
+
+/// The longest path Linux opens (PATH_MAX): a longer `--preset` or
+/// `--presets-dir` is refused before it is used, so that no error echoes it.
+const MAX_PATH: usize = 4096;
+
+impl SceneArgs {
+    /// The preset, with every `--set` applied, validated.
+    pub fn resolve(&self, presets_dir: Option<&Path>) -> Result<Preset, UsageError> {
+        let mut preset = open(&self.preset, presets_dir)?;
+        for assignment in &self.set {
+            let (key, value) =
+                assignment
+                    .split_once('=')
+                    .ok_or_else(|| UsageError::BadAssignment {
+                        assignment: cut(assignment),
+                    })?;
+            let key = checked_key(key.trim()).map_err(with_field_keys)?;
+            if let Some(field) = FIELD_KEYS.iter().find(|f| f.name == key) {
+                let fence = preset.fence.get_or_insert(Fence {
+                    distance: FIELD_KEYS[0].default,
+                    height: FIELD_KEYS[1].default,
+                });
+                (field.set)(fence, number(key, value)?);
+                continue;
+            }
+            // A value that is no number or drag model is shown cut.
+            let shown = if key != DRAG_KEY && value.trim().parse::<f64>().is_ok() {
+                value.to_owned()
+            } else {
+                cut(value)
+            };
+            preset
+                .scene
+                .set_text(key, &shown)
+                .map_err(with_field_keys)?;
+        }
+        if let Some(fence) = &preset.fence {
+            for field in &FIELD_KEYS {
+                let value = (field.get)(fence);
+                if !field.bounds.contains(value) {
+                    return Err(InputError::OutOfRange {
+                        key: field.name,
+                        value,
+                        bounds: field.bounds,
+                        unit: field.unit,
+                    }
+                    .into());
+                }
+            }
+        }
+        preset.scene.validate()?;
+        Ok(preset)
+    }
+}
+
+/// `key` if it can be printed as it is; otherwise the error for an unknown
+/// key, naming it escaped and cut (no key has control characters or is
+/// longer than 80 characters).
+pub(super) fn checked_key(key: &str) -> Result<&str, InputError> {
+    let shown = escape_for_terminal(key);
+    if shown == key {
+        Ok(key)
+    } else {
+        Err(Scene::key(&shown).expect_err("no key needs escaping"))
+    }
+}
+
+/// An unknown key's error, listing the `[field]` keys among the known ones.
+fn with_field_keys(error: InputError) -> InputError {
+    match error {
+        InputError::UnknownKey { key, known } => InputError::UnknownKey {
+            key,
+            known: [known.as_str()]
+                .into_iter()
+                .chain(FIELD_KEYS.iter().map(|f| f.name))
+                .collect::<Vec<_>>()
+                .join(", "),
+        },
+        other => other,
+    }
+}
+
+/// A `[field]` value as a number.
+fn number(key: &str, text: &str) -> Result<f64, UsageError> {
+    text.trim().parse().map_err(|_| {
+        InputError::NotANumber {
+            key: key.to_owned(),
+            text: cut(text),
+        }
+        .into()
+    })
+}
+
+/// `text` cut to 80 characters with "…" (the errors quote it with its
+/// control characters escaped).
+pub(super) fn cut(text: &str) -> String {
+    if text.chars().count() > 80 {
+        text.chars().take(79).chain(['…']).collect()
+    } else {
+        text.to_owned()
+    }
+}
+
+/// The preset named (or at the path) `spec`, refusing first a `spec` too
+/// long to be either.
+pub fn open(spec: &str, presets_dir: Option<&Path>) -> Result<Preset, UsageError> {
+    check_path("--preset", spec)?;
+    Ok(preset::load(spec, presets_dir)?)
+}
+
+/// Refuses a path too long to open, before any error can echo it.
+pub(super) fn check_path(flag: &'static str, text: &str) -> Result<(), UsageError> {
+    if text.len() > MAX_PATH {
+        return Err(UsageError::TooLong {
+            flag,
+            text: escape_for_terminal(text),
+            length: text.len(),
+            max: MAX_PATH,
+        });
+    }
+    Ok(())
+}

@@ -1,0 +1,228 @@
+//! `surface`: the range over a grid of (E, ψ), as in Fig. 7, within a work
+//! budget; also the renderer Fig. 7 shares.
+
+use std::fmt::Write as _;
+
+use super::progress::{self, Work};
+use super::scene::cut;
+use super::table::{Cell, Column, Digits, Table};
+use super::{Format, UsageError, WindowFault, pretty};
+use crate::Scene;
+use crate::analysis::precision::Purpose;
+use crate::analysis::study::{self, Grid, Surface, TooMuchWork};
+
+/// The most cells a side of the grid takes: 500×500 cells of an ordinary
+/// scene take about 0.5 s on 2 cores.
+pub const MAX_GRID: usize = 500;
+
+/// The most integration steps a surface's flights may take together: about
+/// 3 s on 2 cores (0.3 µs a step on one). An ordinary cell takes about 12,
+/// so every ordinary grid up to 500×500 fits several times over; a scene
+/// whose balls hover takes 4 000 to 70 000 a cell, and gets a smaller grid.
+pub const SURFACE_FLIGHT_STEPS: u64 = 20_000_000;
+
+/// Parses "A..B" (a window) for `flag`, inside `bounds`.
+fn parse_window(
+    flag: &'static str,
+    text: &str,
+    bounds: (f64, f64),
+) -> Result<(f64, f64), UsageError> {
+    let bad = |fault| {
+        let (accepted, example) = if flag == "--undercut" {
+            (format!("[{}, {}] m", bounds.0, bounds.1), "0..0.05")
+        } else {
+            ("[-π/2, π/2] rad".to_owned(), "-0.6..1.0")
+        };
+        UsageError::BadWindow {
+            flag,
+            text: cut(text),
+            fault,
+            accepted,
+            example,
+        }
+    };
+    let (a, b) = text
+        .split_once("..")
+        .ok_or_else(|| bad(WindowFault::NoDots))?;
+    let parse = |s: &str| {
+        s.trim()
+            .parse::<f64>()
+            .map_err(|_| bad(WindowFault::NotANumber(cut(s.trim()))))
+    };
+    let (a, b) = (parse(a)?, parse(b)?);
+    if !(a.is_finite() && b.is_finite()) {
+        return Err(bad(WindowFault::NotFinite));
+    }
+    if a >= b {
+        return Err(bad(WindowFault::Reversed));
+    }
+    if a < bounds.0 || b > bounds.1 {
+        return Err(bad(WindowFault::OutOfRange));
+    }
+    Ok((a, b))
+}
+
+/// Parses the surface's window and "NxM" grid.
+pub(super) fn parse_grid(
+    undercut: &str,
+    swing_angle: &str,
+    grid: &str,
+) -> Result<Grid, UsageError> {
+    let key_bounds = |name| {
+        let key = Scene::key(name).expect("a known key");
+        (key.bounds.min, key.bounds.max)
+    };
+    let undercut = parse_window("--undercut", undercut, key_bounds("bat.undercut"))?;
+    let swing_angle = parse_window("--swing-angle", swing_angle, key_bounds("bat.swing_angle"))?;
+    let bad = || UsageError::BadGrid { text: cut(grid) };
+    let (columns, rows) = grid
+        .to_ascii_lowercase()
+        .split_once('x')
+        .map(|(n, m)| (n.trim().parse::<usize>(), m.trim().parse::<usize>()))
+        .ok_or_else(bad)?;
+    let (columns, rows) = (columns.map_err(|_| bad())?, rows.map_err(|_| bad())?);
+    if !(1..=MAX_GRID).contains(&columns) || !(1..=MAX_GRID).contains(&rows) {
+        return Err(bad());
+    }
+    Ok(Grid {
+        undercut,
+        swing_angle,
+        columns,
+        rows,
+    })
+}
+
+pub(super) fn surface(
+    scene: &Scene,
+    grid: Grid,
+    text: &str,
+    format: Format,
+) -> Result<String, UsageError> {
+    let work = Work {
+        what: "surface",
+        steps: Some((grid.columns * grid.rows, "cells")),
+    };
+    let surface = progress::run(work, |p| {
+        let tick = || p.tick();
+        study::surface_within(scene, grid, Purpose::Surface, SURFACE_FLIGHT_STEPS, &tick)
+    })
+    .map_err(|work| too_much(text, work))?;
+    Ok(render_surface(&surface, format))
+}
+
+/// "--grid 500x500: about 2.7e9 integration steps on this scene …"
+fn too_much(text: &str, work: TooMuchWork) -> UsageError {
+    let per_cell = work.steps_per_cell();
+    // Half what the mean says, for the cells it has not seen.
+    let cells = (0.5 * SURFACE_FLIGHT_STEPS as f64 / per_cell)
+        .floor()
+        .max(1.0);
+    let side = cells.sqrt().floor().max(1.0);
+    UsageError::TooMuchWork {
+        flag: "--grid",
+        text: text.to_owned(),
+        detail: format!(
+            "about {:.1e} integration steps on this scene ({per_cell:.0} a flight, where an ordinary one takes ~12), more than the {:.0e} a surface may take (~3 s); accepted here: at most ~{cells} cells, e.g. --grid {side}x{side}",
+            per_cell * work.total as f64,
+            SURFACE_FLIGHT_STEPS as f64,
+        ),
+    }
+}
+
+/// A range surface as JSON, as CSV (one line per cell) or as a grid of
+/// whole metres with ψ growing upward (as in Fig. 7).
+pub(super) fn render_surface(surface: &Surface, format: Format) -> String {
+    match format {
+        Format::Json => pretty(&surface_json(surface)),
+        Format::Csv => surface_cells(surface).csv(),
+        Format::Text => surface_text(surface),
+    }
+}
+
+fn axes(surface: &Surface) -> (Vec<f64>, Vec<f64>) {
+    let grid = surface.grid;
+    (
+        (0..grid.columns).map(|i| grid.undercut_at(i)).collect(),
+        (0..grid.rows).map(|j| grid.swing_angle_at(j)).collect(),
+    )
+}
+
+/// The surface's axes, its ranges row by row (null where the bat misses) and its best cell.
+pub(super) fn surface_json(surface: &Surface) -> serde_json::Value {
+    let (undercuts, swing_angles) = axes(surface);
+    let rows: Vec<&[Option<f64>]> = surface.ranges.chunks(surface.grid.columns).collect();
+    serde_json::json!({
+        "undercuts": undercuts,
+        "swing_angles": swing_angles,
+        "ranges": rows,
+        "best": surface.best().map(|(i, j, range)| serde_json::json!({
+            "undercut": undercuts[i], "swing_angle": swing_angles[j], "range": range,
+        })),
+    })
+}
+
+/// One row per cell: E, ψ and the range (blank where the bat misses).
+fn surface_cells(surface: &Surface) -> Table {
+    let (undercuts, swing_angles) = axes(surface);
+    let mut rows = Vec::new();
+    for (j, psi) in swing_angles.iter().enumerate() {
+        for (i, e) in undercuts.iter().enumerate() {
+            let range = surface
+                .get(i, j)
+                .filter(|r| r.is_finite())
+                .map_or(Cell::Blank, Cell::Num);
+            rows.push(vec![Cell::Num(*e), Cell::Num(*psi), range]);
+        }
+    }
+    Table {
+        columns: ["undercut", "swing_angle", "range"]
+            .map(Column::data)
+            .to_vec(),
+        rows,
+    }
+}
+
+fn surface_text(surface: &Surface) -> String {
+    let (undercuts, swing_angles) = axes(surface);
+    let best = surface.best();
+    let mut columns = vec![Column::right("", "ψ \\ E", 7, Digits::Fixed(3))];
+    columns.extend(undercuts.iter().enumerate().map(|(i, e)| {
+        let column = Column::right("", &format!("{:.1}", e * 1000.0), 5, Digits::Shortest);
+        column.after(if i == 0 { " " } else { "" })
+    }));
+    // ψ grows upward, as in Fig. 7.
+    let rows = (0..swing_angles.len())
+        .rev()
+        .map(|j| {
+            let mut row = vec![Cell::Num(swing_angles[j])];
+            row.extend((0..undercuts.len()).map(|i| {
+                let mark = if best.is_some_and(|b| (b.0, b.1) == (i, j)) {
+                    "*"
+                } else {
+                    " "
+                };
+                Cell::Text(match surface.get(i, j) {
+                    Some(r) if r.is_finite() => format!("{r:>4.0}{mark}"),
+                    Some(_) => format!("{:>4}{mark}", "up"),
+                    None => format!("{:>4}{mark}", "-"),
+                })
+            }));
+            row
+        })
+        .collect();
+    let mut out = String::from(
+        "range (m) over undercut E (columns, mm) and swing angle ψ (rows, rad); * best cell, - bat misses\n",
+    );
+    if surface.ranges.iter().flatten().any(|r| !r.is_finite()) {
+        out.insert_str(out.len() - 1, ", up: the ball does not land");
+    }
+    out.push_str(&Table { columns, rows }.text());
+    if let Some((i, j, range)) = best {
+        let _ = writeln!(
+            out,
+            "best cell: E = {:.4} m, ψ = {:.4} rad, range {:.2} m",
+            undercuts[i], swing_angles[j], range
+        );
+    }
+    out
+}
