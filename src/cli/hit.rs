@@ -8,10 +8,10 @@ use super::{FIELD_KEYS, Format, UsageError, pretty};
 use crate::Scene;
 use crate::analysis::landing;
 use crate::analysis::precision::Purpose;
-use crate::model::aero::DragModel;
+use crate::model::aero::{DragModel, LiftModel};
 use crate::model::flight::FlightSummary;
 use crate::model::impact::Impact;
-use crate::model::keys::{DRAG_KEY, KEYS};
+use crate::model::keys::{DRAG_KEY, LIFT_KEY, all_keys};
 use crate::model::pitch;
 
 /// The most points `trajectory` samples.
@@ -217,8 +217,7 @@ pub(super) fn keys() -> String {
         left("meaning", 0).after("  "),
     ];
     let text = |s: &str| Cell::Text(s.to_owned());
-    let mut rows: Vec<Vec<Cell>> = KEYS
-        .iter()
+    let mut rows: Vec<Vec<Cell>> = all_keys()
         .map(|key| {
             vec![
                 text(key.name),
@@ -237,6 +236,14 @@ pub(super) fn keys() -> String {
         Cell::Text(DragModel::ALL.map(|m| m.name()).join(" | ")),
         text(defaults.drag.name()),
         text("drag model"),
+    ]);
+    rows.push(vec![
+        text(LIFT_KEY),
+        text("C_L"),
+        text(""),
+        Cell::Text(LiftModel::ALL.map(|m| m.name()).join(" | ")),
+        text(defaults.lift.name()),
+        text("lift model"),
     ]);
     let fence = crate::preset::bundled()
         .into_iter()

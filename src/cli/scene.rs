@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use super::{SceneArgs, UsageError};
-use crate::model::keys::{Bounds, DRAG_KEY, InputError};
+use crate::model::keys::{Bounds, DRAG_KEY, InputBatch, InputError, LIFT_KEY};
 use crate::model::scene::Scene;
 use crate::preset::{self, Fence, Preset, escape_for_terminal};
 
@@ -74,6 +74,8 @@ impl SceneArgs {
     /// The preset, with every `--set` applied, validated.
     pub fn resolve(&self, presets_dir: Option<&Path>) -> Result<Preset, UsageError> {
         let mut preset = open(&self.preset, presets_dir)?;
+        // The --set list is one source: ρ or ν beside the weather is refused.
+        let mut batch = InputBatch::new();
         for assignment in &self.set {
             let (key, value) =
                 assignment
@@ -91,14 +93,14 @@ impl SceneArgs {
                 continue;
             }
             // A value that is no number or drag model is shown cut.
-            let shown = if key != DRAG_KEY && value.trim().parse::<f64>().is_ok() {
+            let shown = if key != DRAG_KEY && key != LIFT_KEY && value.trim().parse::<f64>().is_ok()
+            {
                 value.to_owned()
             } else {
                 cut(value)
             };
-            preset
-                .scene
-                .set_text(key, &shown)
+            batch
+                .set_text(&mut preset.scene, key, &shown)
                 .map_err(with_field_keys)?;
         }
         if let Some(fence) = &preset.fence {
