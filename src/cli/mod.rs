@@ -25,8 +25,8 @@ use crate::model::keys::{InputError, Key};
 use crate::preset::{self, Preset};
 use crate::tui::TuiError;
 
+pub use crate::preset::FIELD_KEYS;
 pub use optimize::MAX_STEPS;
-pub use scene::FIELD_KEYS;
 pub use surface::{MAX_GRID, SURFACE_FLIGHT_STEPS};
 pub use usage::{Parsed, error_line, parse};
 

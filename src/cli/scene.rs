@@ -5,66 +5,9 @@
 use std::path::Path;
 
 use super::{SceneArgs, UsageError};
-use crate::model::keys::{Bounds, DRAG_KEY, InputBatch, InputError, LIFT_KEY};
+use crate::model::keys::{DRAG_KEY, InputBatch, InputError, LIFT_KEY};
 use crate::model::scene::Scene;
-use crate::preset::{self, Fence, Preset, escape_for_terminal};
-
-/// One key of a preset's `[field]`: the fence the explorer draws, not an
-/// input of the physics (so not in [`crate::model::keys::KEYS`]). The bounds
-/// and defaults are those the TOML reader (`src/preset/mod.rs`) applies.
-pub struct FieldKey {
-    pub name: &'static str,
-    pub unit: &'static str,
-    pub description: &'static str,
-    pub bounds: Bounds,
-    /// The value taken when a preset sets only the other key.
-    pub default: f64,
-    pub get: fn(&Fence) -> f64,
-    pub set: fn(&mut Fence, f64),
-}
-
-/// `field.fence_distance` and `field.fence_height`.
-pub const FIELD_KEYS: [FieldKey; 2] = [
-    FieldKey::new(
-        "field.fence_distance",
-        "fence distance from the plate (drawn by the explorer)",
-        (1000.0, 121.9),
-        |f| f.distance,
-        |f, v| f.distance = v,
-    ),
-    FieldKey::new(
-        "field.fence_height",
-        "fence height (drawn by the explorer)",
-        (100.0, 3.0),
-        |f| f.height,
-        |f, v| f.height = v,
-    ),
-];
-
-impl FieldKey {
-    /// A length in metres in (0, max], `default` when not given.
-    const fn new(
-        name: &'static str,
-        description: &'static str,
-        (max, default): (f64, f64),
-        get: fn(&Fence) -> f64,
-        set: fn(&mut Fence, f64),
-    ) -> FieldKey {
-        FieldKey {
-            name,
-            unit: "m",
-            description,
-            bounds: Bounds {
-                min: 0.0,
-                max,
-                min_exclusive: true,
-            },
-            default,
-            get,
-            set,
-        }
-    }
-}
+use crate::preset::{self, FIELD_KEYS, Fence, Preset, escape_for_terminal};
 
 /// The longest path Linux opens (PATH_MAX): a longer `--preset` or
 /// `--presets-dir` is refused before it is used, so that no error echoes it.

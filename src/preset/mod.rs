@@ -11,9 +11,11 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 mod escape;
+mod field;
 mod file;
 
 pub use escape::{escape_cut, escape_for_terminal};
+pub use field::{FIELD_KEYS, FieldKey};
 pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
 use file::{preset_files, size_text, through};
@@ -118,9 +120,6 @@ pub const BUNDLED: &[(&str, &str)] = &[
     ("mile-high", include_str!("../../presets/mile-high.toml")),
 ];
 
-const FENCE_DISTANCE: &str = "field.fence_distance";
-const FENCE_HEIGHT: &str = "field.fence_height";
-
 impl Preset {
     /// Parses preset text; `origin` names it in errors (a path or a name).
     /// Missing keys take the defaults of [`Scene::default`]; unknown keys,
@@ -186,8 +185,8 @@ impl Preset {
                     _ => return Err(wrong(&key, value, "expected a number")),
                 };
                 match key.as_str() {
-                    FENCE_DISTANCE => fence_distance = Some(number),
-                    FENCE_HEIGHT => fence_height = Some(number),
+                    k if k == FIELD_KEYS[0].name => fence_distance = Some(number),
+                    k if k == FIELD_KEYS[1].name => fence_height = Some(number),
                     _ => batch.set(&mut scene, &key, number).map_err(|e| {
                         let shown = escape_for_terminal(&key);
                         input(if shown == key { e } else { unknown(&shown) })
@@ -200,17 +199,15 @@ impl Preset {
             (None, None) => None,
             (distance, height) => {
                 let fence = Fence {
-                    distance: distance.unwrap_or(121.9),
-                    height: height.unwrap_or(3.0),
+                    distance: distance.unwrap_or(FIELD_KEYS[0].default),
+                    height: height.unwrap_or(FIELD_KEYS[1].default),
                 };
-                for (key, value, max) in [
-                    (FENCE_DISTANCE, fence.distance, 1000.0),
-                    (FENCE_HEIGHT, fence.height, 100.0),
-                ] {
-                    if !(value.is_finite() && value > 0.0 && value <= max) {
+                for field in &FIELD_KEYS {
+                    let value = (field.get)(&fence);
+                    if !field.bounds.contains(value) {
                         return Err(PresetError::WrongType {
                             path: origin.to_owned(),
-                            key: key.to_owned(),
+                            key: field.name.to_owned(),
                             value: value.to_string(),
                             expected: "must be a finite number in (0, 1000] m for the distance, (0, 100] m for the height",
                         });
