@@ -99,6 +99,31 @@ pub struct TrajectoryRow {
     pub range_error: f64,
 }
 
+impl TrajectoryRow {
+    /// The row's measured part (work, time, error); the caller names the
+    /// method and its setting.
+    fn measured(
+        stop_at_kinks: bool,
+        summary: &flight::FlightSummary,
+        (time, cpu): (f64, Option<f64>),
+        reference: f64,
+    ) -> TrajectoryRow {
+        TrajectoryRow {
+            method: "",
+            tolerance: None,
+            absolute: None,
+            step: None,
+            stop_at_kinks,
+            evaluations: summary.stats.evaluations,
+            accepted: summary.stats.accepted,
+            rejected: summary.stats.rejected,
+            time_us: time * 1e6,
+            cpu_us: cpu.map(|c| c * 1e6),
+            range_error: summary.range - reference,
+        }
+    }
+}
+
 /// The Table II fastball launch under one drag × lift pair (and spin decay
 /// time, 0 for none) at one tolerance (dopri5, stopping at kinks), its error
 /// against Purpose::Reference for the same models.
@@ -256,13 +281,7 @@ fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
             tolerance: Some(options.tolerance.relative),
             absolute: Some(options.tolerance.absolute),
             step: None,
-            stop_at_kinks,
-            evaluations: summary.stats.evaluations,
-            accepted: summary.stats.accepted,
-            rejected: summary.stats.rejected,
-            time_us: time * 1e6,
-            cpu_us: cpu.map(|c| c * 1e6),
-            range_error: summary.range - reference,
+            ..TrajectoryRow::measured(stop_at_kinks, &summary, (time, cpu), reference)
         });
     }
     for stop_at_kinks in [false, true] {
@@ -276,13 +295,7 @@ fn trajectories(effort: Effort, reference: f64) -> Vec<TrajectoryRow> {
                 tolerance: None,
                 absolute: None,
                 step: Some(step),
-                stop_at_kinks,
-                evaluations: summary.stats.evaluations,
-                accepted: summary.stats.accepted,
-                rejected: summary.stats.rejected,
-                time_us: time * 1e6,
-                cpu_us: cpu.map(|c| c * 1e6),
-                range_error: summary.range - reference,
+                ..TrajectoryRow::measured(stop_at_kinks, &summary, (time, cpu), reference)
             });
         }
     }
