@@ -9,6 +9,7 @@
 //! - [`analysis`]: precision budgets, the optimal swing, the studies behind
 //!   the figures, the benchmark; calls the model and the numerics.
 //! - [`preset`]: scenes in TOML files.
+//! - [`units`]: SI or baseball units for text shown and typed; imports nothing.
 //! - [`cli`] and [`tui`]: the frontends; nothing below imports them.
 
 pub mod analysis;
@@ -17,6 +18,7 @@ pub mod model;
 pub mod numerics;
 pub mod preset;
 pub mod tui;
+pub mod units;
 
 pub use analysis::precision::Purpose;
 pub use model::scene::Scene;

@@ -1,0 +1,261 @@
+//! Units for display: SI (the paper's) or the baseball units analysts use
+//! (mph, ft, rpm, °F). Values are SI everywhere inside; only text shown to
+//! a person, and text typed by one, passes through here.
+//!
+//! Written by hand: the unit crates (uom, dimensioned) type every quantity
+//! at compile time, which the key table — one `f64` per input — cannot use,
+//! and we need only a dozen affine conversions and their labels.
+
+use std::f64::consts::PI;
+use std::fmt;
+use std::str::FromStr;
+
+/// Which units text is shown and typed in.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum UnitSystem {
+    /// The paper's units: m, m/s, rad, rad/s, kg, °C, hPa.
+    #[default]
+    Si,
+    /// Baseball's: ft (distances), in (sizes), mph, degrees, rpm, oz, °F, inHg.
+    Imperial,
+}
+
+impl UnitSystem {
+    pub const ALL: [UnitSystem; 2] = [UnitSystem::Si, UnitSystem::Imperial];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            UnitSystem::Si => "si",
+            UnitSystem::Imperial => "imperial",
+        }
+    }
+
+    /// The other system: what a toggle switches to.
+    pub fn toggled(self) -> UnitSystem {
+        match self {
+            UnitSystem::Si => UnitSystem::Imperial,
+            UnitSystem::Imperial => UnitSystem::Si,
+        }
+    }
+}
+
+impl fmt::Display for UnitSystem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A unit system's name that is not one.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("unknown units {0:?}: expected si or imperial")]
+pub struct UnknownUnits(pub String);
+
+impl FromStr for UnitSystem {
+    type Err = UnknownUnits;
+
+    fn from_str(text: &str) -> Result<UnitSystem, UnknownUnits> {
+        match text.trim().to_ascii_lowercase().as_str() {
+            "si" | "metric" => Ok(UnitSystem::Si),
+            "imperial" | "us" => Ok(UnitSystem::Imperial),
+            _ => Err(UnknownUnits(text.to_owned())),
+        }
+    }
+}
+
+/// What a number measures, which decides its imperial unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Quantity {
+    /// Field distances and heights: ranges, apexes, fences, elevation (ft).
+    Distance,
+    /// Sizes of the ball and bat, and the undercut (in): feet would show
+    /// a 1.44 in ball radius as 0.12 ft.
+    Size,
+    /// Speeds (mph).
+    Speed,
+    /// Spin rates (rpm).
+    Spin,
+    /// Angles (degrees).
+    Angle,
+    /// Temperatures (°F).
+    Temperature,
+    /// Barometric pressure (inHg, as US weather reports give it).
+    Pressure,
+    /// Masses (oz, as bats are sold).
+    Mass,
+    /// Accelerations (ft/s²).
+    Acceleration,
+    /// Shown in SI in both systems (ρ, ν, μ, times, humidity, counts).
+    Unchanged,
+}
+
+/// Metres per foot (exact, international foot).
+pub const METRES_PER_FOOT: f64 = 0.3048;
+/// Metres per inch (exact).
+pub const METRES_PER_INCH: f64 = 0.0254;
+/// Metres per second per mile per hour (exact: 1609.344 m / 3600 s).
+pub const METRES_PER_SECOND_PER_MPH: f64 = 0.44704;
+/// Kilograms per avoirdupois ounce (exact).
+pub const KILOGRAMS_PER_OUNCE: f64 = 0.028_349_523_125;
+/// Hectopascals per inch of mercury (at 0 °C, standard gravity).
+pub const HECTOPASCALS_PER_INCH_OF_MERCURY: f64 = 33.863_886_666;
+
+/// One displayed unit: shown = si · scale + offset.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Unit {
+    pub symbol: &'static str,
+    scale: f64,
+    offset: f64,
+}
+
+impl Unit {
+    const fn linear(symbol: &'static str, scale: f64) -> Unit {
+        Unit {
+            symbol,
+            scale,
+            offset: 0.0,
+        }
+    }
+
+    /// The SI value as shown in this unit.
+    pub fn show(self, si: f64) -> f64 {
+        si * self.scale + self.offset
+    }
+
+    /// A value typed in this unit, back in SI.
+    pub fn read(self, shown: f64) -> f64 {
+        (shown - self.offset) / self.scale
+    }
+
+    /// A difference of SI values (a nudge, a Δ) in this unit: no offset.
+    pub fn show_difference(self, si: f64) -> f64 {
+        si * self.scale
+    }
+
+    /// Whether this unit is the SI one (nothing to convert).
+    pub fn is_identity(self) -> bool {
+        self.scale == 1.0 && self.offset == 0.0
+    }
+}
+
+impl Quantity {
+    /// The unit to show this quantity in. `si_symbol` is the SI unit's
+    /// label, used as is in the SI system (the key table's `unit`).
+    pub fn unit(self, system: UnitSystem, si_symbol: &'static str) -> Unit {
+        if system == UnitSystem::Si {
+            return Unit::linear(si_symbol, 1.0);
+        }
+        match self {
+            Quantity::Distance => Unit::linear("ft", 1.0 / METRES_PER_FOOT),
+            Quantity::Size => Unit::linear("in", 1.0 / METRES_PER_INCH),
+            Quantity::Speed => Unit::linear("mph", 1.0 / METRES_PER_SECOND_PER_MPH),
+            Quantity::Spin => Unit::linear("rpm", 60.0 / (2.0 * PI)),
+            Quantity::Angle => Unit::linear("°", 180.0 / PI),
+            Quantity::Temperature => Unit {
+                symbol: "°F",
+                scale: 9.0 / 5.0,
+                offset: 32.0,
+            },
+            Quantity::Pressure => Unit::linear("inHg", 1.0 / HECTOPASCALS_PER_INCH_OF_MERCURY),
+            Quantity::Mass => Unit::linear("oz", 1.0 / KILOGRAMS_PER_OUNCE),
+            Quantity::Acceleration => Unit::linear("ft/s²", 1.0 / METRES_PER_FOOT),
+            Quantity::Unchanged => Unit::linear(si_symbol, 1.0),
+        }
+    }
+
+    /// The SI unit's label for quantities that have one fixed label.
+    pub fn si_symbol(self) -> &'static str {
+        match self {
+            Quantity::Distance | Quantity::Size => "m",
+            Quantity::Speed => "m/s",
+            Quantity::Spin => "rad/s",
+            Quantity::Angle => "rad",
+            Quantity::Temperature => "°C",
+            Quantity::Pressure => "hPa",
+            Quantity::Mass => "kg",
+            Quantity::Acceleration => "m/s²",
+            Quantity::Unchanged => "",
+        }
+    }
+
+    /// The unit to show this quantity in, with its own SI label.
+    pub fn in_system(self, system: UnitSystem) -> Unit {
+        self.unit(system, self.si_symbol())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn baseball_numbers_convert_as_quoted() {
+        let imperial = UnitSystem::Imperial;
+        // 400 ft to centre field is the paper's 121.9 m.
+        let ft = Quantity::Distance.in_system(imperial);
+        assert!((ft.read(400.0) - 121.92).abs() < 1e-9);
+        // 103 mph, 28°, 2500 rpm: the fly-ball preset's launch.
+        assert!((Quantity::Speed.in_system(imperial).read(103.0) - 46.04512).abs() < 1e-9);
+        assert!((Quantity::Angle.in_system(imperial).read(28.0) - 0.488_692_190_6).abs() < 1e-9);
+        assert!((Quantity::Spin.in_system(imperial).read(2500.0) - 261.799_387_8).abs() < 1e-6);
+        // A 32 oz bat is 0.907 kg; 29.92 inHg is the standard 1013.2 hPa.
+        assert!((Quantity::Mass.in_system(imperial).read(32.0) - 0.907_184_74).abs() < 1e-9);
+        let inhg = Quantity::Pressure.in_system(imperial);
+        assert!((inhg.show(1013.25) - 29.921).abs() < 1e-3);
+    }
+
+    #[test]
+    fn temperature_is_affine_and_differences_are_not() {
+        let fahrenheit = Quantity::Temperature.in_system(UnitSystem::Imperial);
+        assert_eq!(fahrenheit.show(0.0), 32.0);
+        assert_eq!(fahrenheit.show(100.0), 212.0);
+        assert!((fahrenheit.read(-40.0) + 40.0).abs() < 1e-12);
+        // A 1 °C step is a 1.8 °F step, not 33.8.
+        assert_eq!(fahrenheit.show_difference(1.0), 1.8);
+    }
+
+    #[test]
+    fn show_and_read_are_inverse_and_si_is_identity() {
+        let quantities = [
+            Quantity::Distance,
+            Quantity::Size,
+            Quantity::Speed,
+            Quantity::Spin,
+            Quantity::Angle,
+            Quantity::Temperature,
+            Quantity::Pressure,
+            Quantity::Mass,
+            Quantity::Acceleration,
+            Quantity::Unchanged,
+        ];
+        for quantity in quantities {
+            for system in UnitSystem::ALL {
+                let unit = quantity.in_system(system);
+                for si in [-31.7, 0.0, 1e-3, 42.0, 1013.25] {
+                    let back = unit.read(unit.show(si));
+                    assert!(
+                        (back - si).abs() <= 1e-12 * si.abs().max(1.0),
+                        "{quantity:?}"
+                    );
+                }
+            }
+            assert!(quantity.in_system(UnitSystem::Si).is_identity());
+        }
+        assert!(
+            !Quantity::Speed
+                .in_system(UnitSystem::Imperial)
+                .is_identity()
+        );
+    }
+
+    #[test]
+    fn names_parse_and_unknown_ones_say_what_is_accepted() {
+        assert_eq!("imperial".parse(), Ok(UnitSystem::Imperial));
+        assert_eq!(" SI ".parse(), Ok(UnitSystem::Si));
+        let error = "furlongs".parse::<UnitSystem>().unwrap_err();
+        assert_eq!(
+            error.to_string(),
+            "unknown units \"furlongs\": expected si or imperial"
+        );
+        assert_eq!(UnitSystem::Si.toggled(), UnitSystem::Imperial);
+    }
+}
