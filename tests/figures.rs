@@ -324,3 +324,43 @@ fn an_unknown_figure_is_exit_status_2() {
         "{stderr}"
     );
 }
+
+/// Figs. 3 and 4 draw the scene's own aero models, not always the paper's:
+/// Nathan's C_L(S) = 1.120·S/(0.583 + 2.333·S), and his C_D, flat in Re at
+/// the launch spin: 0.3008 + 0.0292·(ω/1000 rpm).
+#[test]
+fn figures_3_and_4_follow_the_chosen_models() {
+    let lift = json(&["4", "--set", "model.lift=nathan"]);
+    for row in rows(&lift) {
+        let s = num(row, "spin_parameter");
+        let expected = 1.120 * s / (0.583 + 2.333 * s);
+        assert!(
+            (num(row, "lift_coefficient") - expected).abs() < 5e-5,
+            "{row}"
+        );
+    }
+    let paper = json(&["4"]);
+    let kink = marked(&paper, "kink");
+    assert_eq!(num(kink, "spin_parameter"), 0.1);
+    assert!(
+        (num(kink, "lift_coefficient") - 0.15).abs() < 1e-12,
+        "Eq. 29: 1.5·S"
+    );
+    assert!(
+        rows(&lift)
+            .iter()
+            .all(|r| r["mark"].as_str().unwrap_or("").is_empty()),
+        "Nathan's C_L has no kink to mark"
+    );
+
+    let drag = json(&["3", "--set", "model.drag=nathan"]);
+    let coefficients: Vec<f64> = rows(&drag)
+        .iter()
+        .map(|r| num(r, "drag_coefficient"))
+        .collect();
+    // The fastball's launch spin is 191.8 rad/s = 1831.6 rpm.
+    let expected = 0.3008 + 0.0292 * (191.8 * 60.0 / (2.0 * std::f64::consts::PI) / 1000.0);
+    for c in coefficients {
+        assert!((c - expected).abs() < 1e-4, "{c} vs {expected}");
+    }
+}

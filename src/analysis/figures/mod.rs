@@ -165,7 +165,7 @@ pub fn figure_data_observed(
     let conditions = conditions(preset_name, scene);
     let data = match number {
         3 => aero::figure3(scene),
-        4 => aero::figure4(),
+        4 => aero::figure4(scene),
         5 | 6 => impact::impact_figure(number, scene),
         7 => {
             return Ok(Figure::Surface(SurfaceFigure {
@@ -183,7 +183,7 @@ pub fn figure_data_observed(
 /// The inputs a figure was computed with, in one line.
 pub fn conditions(name: &str, s: &Scene) -> String {
     format!(
-        "preset {name}: pitch {} m/s, spin {} rad/s; bat {} m/s, roll {} rad/s, E {} m, ψ {} rad, μ {}; wind {} m/s; drag {}",
+        "preset {name}: pitch {} m/s, spin {} rad/s; bat {} m/s, roll {} rad/s, E {} m, ψ {} rad, μ {}; wind {} m/s; ρ {} kg/m³; drag {}, lift {}",
         trimmed(s.pitch.speed),
         trimmed(s.pitch.spin),
         trimmed(s.bat.speed),
@@ -192,7 +192,9 @@ pub fn conditions(name: &str, s: &Scene) -> String {
         trimmed(s.bat.swing_angle),
         trimmed(s.bat.friction),
         trimmed(s.environment.wind),
-        s.drag
+        trimmed(s.environment.air_density),
+        s.drag,
+        s.lift
     )
 }
 
