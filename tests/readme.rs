@@ -36,11 +36,18 @@ fn every_key_in_the_help_is_in_the_readme_table() {
             // (Shift+`←`), so the key alone is what to look for.
             let name = binding.name();
             let glyph = name.rsplit(['+', '-']).next().unwrap_or(&name);
-            let glyph = if name.starts_with("Ctrl-") { name.as_str() } else { glyph };
+            let glyph = if name.starts_with("Ctrl-") {
+                name.as_str()
+            } else {
+                glyph
+            };
             if !documented.iter().any(|d| d == glyph || d == &name) {
                 missing.push(format!("{name} ({})", row.what));
             }
         }
     }
-    assert!(missing.is_empty(), "not in the README's key table: {missing:?}");
+    assert!(
+        missing.is_empty(),
+        "not in the README's key table: {missing:?}"
+    );
 }

@@ -8,6 +8,8 @@
 
 use std::f64::consts::FRAC_PI_2;
 
+use crate::units::{Quantity, Unit, UnitSystem};
+
 use super::aero::UnknownModel;
 use super::pitch;
 use super::scene::Scene;
@@ -89,6 +91,31 @@ pub struct Key {
     pub step: f64,
     pub get: fn(&Scene) -> f64,
     pub set: fn(&mut Scene, f64),
+}
+
+impl Key {
+    /// What the key measures, which decides its unit outside SI. From the
+    /// SI unit, except that lengths split into sizes (of the ball and the
+    /// bat, and the undercut: inches) and distances (feet).
+    pub fn quantity(&self) -> Quantity {
+        match self.unit {
+            "m" if self.name == "bat.undercut" || self.name.ends_with("radius") => Quantity::Size,
+            "m" => Quantity::Distance,
+            "m/s" => Quantity::Speed,
+            "rad/s" => Quantity::Spin,
+            "rad" => Quantity::Angle,
+            "°C" => Quantity::Temperature,
+            "hPa" => Quantity::Pressure,
+            "kg" => Quantity::Mass,
+            "m/s²" => Quantity::Acceleration,
+            _ => Quantity::Unchanged,
+        }
+    }
+
+    /// The unit this key is shown and typed in under `system`.
+    pub fn unit_in(&self, system: UnitSystem) -> Unit {
+        self.quantity().unit(system, self.unit)
+    }
 }
 
 impl std::fmt::Debug for Key {
@@ -411,5 +438,42 @@ mod tests {
         assert!(message.starts_with("bat.gyration_radius = "), "{message}");
         scene.bat.gyration_radius = 0.19 * scene.bat.radius;
         assert!(scene.validate().is_err());
+    }
+}
+
+#[cfg(test)]
+mod quantity_tests {
+    use super::*;
+
+    fn quantity(name: &str) -> Quantity {
+        all_keys()
+            .find(|k| k.name == name)
+            .unwrap_or_else(|| panic!("no key {name}"))
+            .quantity()
+    }
+
+    #[test]
+    fn lengths_split_into_sizes_and_distances() {
+        for size in [
+            "bat.undercut",
+            "bat.radius",
+            "bat.gyration_radius",
+            "ball.radius",
+        ] {
+            assert_eq!(quantity(size), Quantity::Size, "{size}");
+        }
+        for distance in ["environment.contact_height", "environment.elevation"] {
+            assert_eq!(quantity(distance), Quantity::Distance, "{distance}");
+        }
+        assert_eq!(quantity("bat.swing_angle"), Quantity::Angle);
+        assert_eq!(quantity("pitch.spin"), Quantity::Spin);
+        assert_eq!(quantity("environment.air_density"), Quantity::Unchanged);
+        // Every key with a unit of length, speed or angle has an imperial one.
+        for key in all_keys() {
+            let imperial = key.unit_in(UnitSystem::Imperial);
+            if ["m", "m/s", "rad", "rad/s", "kg", "°C", "hPa"].contains(&key.unit) {
+                assert!(!imperial.is_identity(), "{}", key.name);
+            }
+        }
     }
 }
