@@ -131,6 +131,29 @@ impl Unit {
         si * self.scale
     }
 
+    /// A nudge step in this unit near `si_step`, rounded to 1, 2 or 5 times
+    /// a power of ten, so that nudging 0.5 m/s in mph steps by 1 mph, not
+    /// by 1.118 (returned in this unit).
+    pub fn nice_step(self, si_step: f64) -> f64 {
+        let shown = self.show_difference(si_step).abs();
+        if self.is_identity() || !shown.is_finite() || shown == 0.0 {
+            return shown;
+        }
+        let decade = 10f64.powf(shown.log10().floor());
+        let mantissa = shown / decade;
+        // Geometric midpoints between 1, 2, 5 and 10.
+        let nice = if mantissa < 2f64.sqrt() {
+            1.0
+        } else if mantissa < 10f64.sqrt() {
+            2.0
+        } else if mantissa < 50f64.sqrt() {
+            5.0
+        } else {
+            10.0
+        };
+        nice * decade
+    }
+
     /// Whether this unit is the SI one (nothing to convert).
     pub fn is_identity(self) -> bool {
         self.scale == 1.0 && self.offset == 0.0
@@ -244,6 +267,25 @@ mod tests {
             !Quantity::Speed
                 .in_system(UnitSystem::Imperial)
                 .is_identity()
+        );
+    }
+
+    #[test]
+    fn nudges_are_round_numbers_in_the_shown_unit() {
+        let imperial = UnitSystem::Imperial;
+        // 0.5 m/s is 1.118 mph: nudge by 1 mph; 10 rad/s is 95.5 rpm: 100.
+        assert_eq!(Quantity::Speed.in_system(imperial).nice_step(0.5), 1.0);
+        assert_eq!(Quantity::Spin.in_system(imperial).nice_step(10.0), 100.0);
+        // 0.01 rad is 0.573°: 0.5°. 1 °C is 1.8 °F: 2 °F.
+        assert_eq!(Quantity::Angle.in_system(imperial).nice_step(0.01), 0.5);
+        assert_eq!(
+            Quantity::Temperature.in_system(imperial).nice_step(1.0),
+            2.0
+        );
+        // SI keeps the key's own step.
+        assert_eq!(
+            Quantity::Speed.in_system(UnitSystem::Si).nice_step(0.5),
+            0.5
         );
     }
 
