@@ -6,11 +6,13 @@ use std::time::Duration;
 
 use homerun::analysis::optimum::{OptimizerSettings, optimize, optimize_from};
 use homerun::analysis::study::Grid;
+use homerun::model::aero::LiftModel;
+use homerun::model::atmosphere::Atmosphere;
 use homerun::model::keys::KEYS;
-use homerun::tui::app::Field;
 use homerun::tui::app::Mode;
+use homerun::tui::app::{Field, input_count, input_key};
 use homerun::tui::layout::{heatmap_plot, layout};
-use homerun::tui::worker::{Report, Worker, run_job};
+use homerun::tui::worker::{Gain, Report, Worker, run_job};
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{
     Event, KeyCode, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
@@ -465,4 +467,124 @@ fn the_figure_shown_is_figure_data_for_the_scene_and_follows_the_inputs() {
     assert!(!app.figure_fresh());
     settle(&mut app);
     assert!(app.figure_fresh());
+}
+
+/// The index of input `name`, as the sensitivity columns count them.
+fn input_index(name: &str) -> usize {
+    (0..input_count())
+        .find(|&k| input_key(k).name == name)
+        .unwrap()
+}
+
+#[test]
+fn the_sensitivity_column_is_what_a_nudge_does() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    assert_eq!(app.gains_done(Gain::Swing), input_count());
+    assert_eq!(app.gains_done(Gain::Optimum), input_count());
+    let k = input_index("bat.speed");
+    let gain = app.swing_gains[k].unwrap().value.unwrap();
+    let optimum_gain = app.optimum_gains[k].unwrap().value.unwrap();
+    let (range, optimum) = (app.swing.flight.range, app.optimum.unwrap().best.range);
+    // Half a metre per second of bat speed: ~2 m (the paper's "nearly 5 m"
+    // per 1 m/s is 4.0 m in Fig. 8's sweep).
+    assert!((1.7..2.3).contains(&gain), "{gain}");
+    // The pane shows it beside the bat speed, signed.
+    let row = screen(&app)
+        .lines()
+        .find(|l| l.contains("V̂_B0"))
+        .unwrap()
+        .to_owned();
+    assert!(row.contains(&format!("{gain:+.2}")), "{row}");
+
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('l'));
+    // The same flight as the column's: exactly the range the nudge gains.
+    assert_eq!(app.swing.flight.range - range, gain);
+    // Until the worker reports, every cell is stale (kept, but marked).
+    assert_eq!(app.gains_done(Gain::Swing), 0);
+    assert!(app.swing_gains[k].is_some());
+    settle(&mut app);
+    // The optimum moves as the column said, within the optimiser's tolerance
+    // (1e-4 m on each of the two searches).
+    let moved = app.optimum.unwrap().best.range - optimum;
+    assert!(
+        (moved - optimum_gain).abs() < 1e-3,
+        "{moved} vs {optimum_gain}"
+    );
+    // The swing's own inputs do not move the optimum; an input at its bound
+    // has no nudge up.
+    assert_eq!(
+        app.optimum_gains[input_index("bat.undercut")]
+            .unwrap()
+            .value,
+        None
+    );
+    select(&mut app, "bat.friction");
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::Backspace);
+    typed(&mut app, "2");
+    key(&mut app, KeyCode::Enter);
+    settle(&mut app);
+    let friction = input_index("bat.friction");
+    assert_eq!(app.swing_gains[friction].unwrap().value, None);
+}
+
+#[test]
+fn every_key_is_offered_and_the_weather_derives_the_air() {
+    let mut app = app(80, 24, None);
+    for k in 0..input_count() {
+        assert!(app.fields.contains(&Field::Key(k)), "{}", input_key(k).name);
+    }
+    assert!(app.fields.contains(&Field::Drag) && app.fields.contains(&Field::Lift));
+    // Each group is listed once.
+    let headers = app.input_lines().iter().filter(|l| l.is_none()).count();
+    assert_eq!(headers, 5, "pitch, bat, ball, environment, model");
+
+    select(&mut app, "environment.temperature");
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::Backspace);
+    typed(&mut app, "30");
+    key(&mut app, KeyCode::Enter);
+    let weather = Atmosphere {
+        temperature: 30.0,
+        ..Atmosphere::STANDARD
+    };
+    assert_eq!(app.scene.environment.atmosphere(), Some(weather));
+    assert_eq!(app.scene.environment.air_density, weather.air_density());
+    assert_eq!(
+        app.scene.environment.kinematic_viscosity,
+        weather.kinematic_viscosity()
+    );
+    // A nudge of the elevation keeps the temperature and derives again.
+    select(&mut app, "environment.elevation");
+    key(&mut app, KeyCode::Char('l'));
+    let higher = Atmosphere {
+        elevation: 10.0,
+        ..weather
+    };
+    assert_eq!(app.scene.environment.air_density, higher.air_density());
+    // The readout says where the air comes from.
+    let screen = screen(&app);
+    assert!(
+        screen.contains("from 30 °C, 10 m, 1013.25 hPa, 50 %"),
+        "{screen}"
+    );
+    // Given ρ replaces the weather's.
+    select(&mut app, "environment.air_density");
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::Backspace);
+    typed(&mut app, "1.1");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.scene.environment.atmosphere(), None);
+    assert_eq!(app.scene.environment.air_density, 1.1);
+
+    // The models cycle with h and l.
+    let lift = app.fields.iter().position(|f| *f == Field::Lift).unwrap();
+    app.selected = lift;
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.scene.lift, LiftModel::Nathan);
+    key(&mut app, KeyCode::Char('h'));
+    key(&mut app, KeyCode::Char('h'));
+    assert_eq!(app.scene.lift, LiftModel::None);
 }

@@ -121,6 +121,8 @@ fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
     );
     session.wait_for("optimum ✓");
     session.wait_for("surface ✓");
+    // The sensitivity at the optimum comes last.
+    session.wait_for("Δ ✓");
     // An idle explorer writes nothing.
     let before = session.bytes.lock().unwrap().len();
     thread::sleep(Duration::from_millis(600));

@@ -1,4 +1,5 @@
-//! Snapshots of whole screens at 80×24 and 160×48, drawn headlessly.
+//! Snapshots of whole screens at 80×24 and 160×48 (and the big layout at
+//! 200×60), drawn headlessly.
 
 mod tui_support;
 
@@ -88,11 +89,15 @@ fn tiny_and_odd_sizes_never_panic() {
         (61, 40),
         (139, 40),
         (140, 40),
+        (189, 54),
+        (190, 53),
+        (190, 54),
+        (250, 70),
         (300, 100),
     ] {
         let mut app = app(w, h, None);
         settle(&mut app);
-        for tab in ['1', '2', '3'] {
+        for tab in ['1', '2', '3', '4'] {
             key(&mut app, KeyCode::Char(tab));
             let _ = screen(&app);
         }
@@ -133,4 +138,27 @@ fn figures_tab() {
     settle(&mut app);
     assert_eq!(app.figure_number, 5);
     insta::assert_snapshot!("figure5_80x24", screen(&app));
+}
+
+#[test]
+fn big_screen_shows_everything() {
+    // Inputs with names and both Δ columns over the readout; trajectory,
+    // figure, surface and impact in a 2×2 grid.
+    let mut app = app(200, 60, None);
+    settle(&mut app);
+    insta::assert_snapshot!("default_200x60", screen(&app));
+}
+
+#[test]
+fn weather_on_a_small_screen() {
+    // Derived air: the readout says where it comes from, and a long value
+    // (ν to its step's digits) leaves room only for Δ's signs.
+    let mut app = app(80, 24, None);
+    select(&mut app, "environment.temperature");
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::Backspace);
+    typed(&mut app, "30");
+    key(&mut app, KeyCode::Enter);
+    settle(&mut app);
+    insta::assert_snapshot!("weather_80x24", screen(&app));
 }

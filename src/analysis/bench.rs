@@ -1,9 +1,10 @@
 //! `homerun bench`: speed against error, measured on this machine.
 //!
-//! Four tables: one trajectory per integrator setting, the same launch per
+//! Five tables: one trajectory per integrator setting, the same launch per
 //! aero model (drag × lift, spin decay), one optimisation per
-//! Table II pitch per tolerance pair, and one 64×64 range surface per
-//! tolerance on one thread and on all cores. Every error is measured against
+//! Table II pitch per tolerance pair, one 64×64 range surface per
+//! tolerance on one thread and on all cores, and the explorer's background
+//! work beside the surface (each figure's data, the sensitivity columns). Every error is measured against
 //! a solve at the tightest setting; times are medians over repeated runs.
 //! The JSON output uses the tables' field names.
 
@@ -66,6 +67,8 @@ pub struct Report {
     pub aero: Vec<AeroRow>,
     pub optimisation: Vec<OptimisationRow>,
     pub surface: Vec<SurfaceRow>,
+    /// The explorer's other background work, on the fastball.
+    pub explorer: Vec<ExplorerRow>,
     /// The tolerances each consumer uses now (src/precision.rs).
     pub defaults: Vec<DefaultRow>,
 }
@@ -177,6 +180,17 @@ pub struct SurfaceRow {
 }
 
 /// A consumer's budget and tolerance.
+/// One piece of the explorer's background work, as it computes it.
+#[derive(Clone, Debug, Serialize)]
+pub struct ExplorerRow {
+    /// "figure 8", "sensitivity at the swing", …
+    pub work: String,
+    /// What it takes: flights, optimisations.
+    pub detail: String,
+    pub time_ms: f64,
+    pub cpu_ms: Option<f64>,
+}
+
 #[derive(Clone, Debug, Serialize)]
 pub struct DefaultRow {
     pub purpose: String,
@@ -491,6 +505,65 @@ fn surfaces(effort: Effort, threads: usize, quick: bool) -> Vec<SurfaceRow> {
     rows
 }
 
+/// The figures the explorer draws (Fig. 7 is its range surface).
+const EXPLORER_FIGURES: [u32; 11] = [3, 4, 5, 6, 8, 9, 10, 11, 12, 13, 14];
+
+/// Each figure's data for the fastball, as the explorer's figures pane asks
+/// for it (the same call as `homerun figure N`), and the two sensitivity
+/// columns of its inputs pane, for all inputs.
+fn explorer(effort: Effort) -> Vec<ExplorerRow> {
+    use super::figures::{figure_data, work_steps};
+    use super::sensitivity;
+    use crate::model::keys::all_keys;
+    let scene = Scene::default();
+    let runs = effort.surface_runs;
+    let mut rows = Vec::new();
+    for number in EXPLORER_FIGURES {
+        let (time, cpu) = time_median(runs, 1, || figure_data(number, &scene, "fastball"));
+        rows.push(ExplorerRow {
+            work: format!("figure {number}"),
+            detail: work_steps(number).map_or(
+                "curves over the model, no optimisation".into(),
+                |(n, what)| format!("{n} {what}, one optimisation each"),
+            ),
+            time_ms: time * 1e3,
+            cpu_ms: cpu.map(|c| c * 1e3),
+        });
+    }
+    let inputs = all_keys().count();
+    let range = model::range(&scene, Purpose::Readout);
+    let (time, cpu) = time_median(runs, 1, || {
+        all_keys()
+            .map(|key| sensitivity::range_gain(&scene, key, range))
+            .collect::<Vec<_>>()
+    });
+    rows.push(ExplorerRow {
+        work: "sensitivity at the swing".into(),
+        detail: format!("{inputs} inputs, one flight each"),
+        time_ms: time * 1e3,
+        cpu_ms: cpu.map(|c| c * 1e3),
+    });
+    let best = super::optimum::optimize(&scene, OptimizerSettings::default());
+    let optimum = super::optimum::Point {
+        undercut: best.undercut,
+        swing_angle: best.swing_angle,
+        range: best.range,
+    };
+    let moving = all_keys().filter(|k| sensitivity::moves_optimum(k)).count();
+    let (time, cpu) = time_median(runs, 1, || {
+        all_keys()
+            .map(|key| sensitivity::optimum_gain(&scene, key, optimum, &|| false))
+            .collect::<Vec<_>>()
+    });
+    rows.push(ExplorerRow {
+        work: "sensitivity at the optimum".into(),
+        detail: format!("{moving} inputs, one warm-started optimisation each"),
+        time_ms: time * 1e3,
+        cpu_ms: cpu.map(|c| c * 1e3),
+    });
+    rows
+}
+
 fn defaults(reference: f64) -> Vec<DefaultRow> {
     let scene = Scene::default();
     Purpose::CONSUMERS
@@ -521,6 +594,7 @@ pub fn run(quick: bool) -> Report {
         aero: aero_trajectories(effort, quick),
         optimisation: optimisations(effort, quick),
         surface: surfaces(effort, threads, quick),
+        explorer: explorer(effort),
         defaults: defaults(reference),
     }
 }

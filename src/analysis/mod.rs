@@ -12,4 +12,5 @@ pub mod landing;
 pub mod optimum;
 pub mod paper;
 pub mod precision;
+pub mod sensitivity;
 pub mod study;

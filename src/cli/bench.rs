@@ -144,6 +144,25 @@ fn render(report: &Report) -> String {
     }
     let _ = writeln!(
         out,
+        "\nthe explorer's background work for the Table II fastball (one thread; figures as `homerun figure N` computes them)"
+    );
+    let _ = writeln!(
+        out,
+        "{:<27} {:>8} {:>8}  detail",
+        "work", "time_ms", "cpu_ms"
+    );
+    for row in &report.explorer {
+        let _ = writeln!(
+            out,
+            "{:<27} {:>8.2} {:>8}  {}",
+            row.work,
+            row.time_ms,
+            or_dash(row.cpu_ms, |c| format!("{c:.2}")),
+            row.detail
+        );
+    }
+    let _ = writeln!(
+        out,
         "\ndefaults (src/analysis/precision.rs), range error on the Table II fastball"
     );
     let _ = writeln!(

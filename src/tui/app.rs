@@ -15,14 +15,15 @@ use super::format::format_value;
 use super::keymap::{self, Action};
 use super::layout::{Tab, heatmap_resolution, trajectory_samples};
 use super::theme::ColorMode;
-use super::worker::{FigureJob, Job, Report};
+use super::worker::{FigureJob, Gain, Job, Report};
 use crate::analysis::optimum::Point;
 use crate::analysis::precision::Purpose;
+use crate::analysis::sensitivity;
 use crate::analysis::study::{Grid, Surface};
-use crate::model::aero::DragModel;
+use crate::model::aero::{DragModel, LiftModel};
 use crate::model::flight;
 use crate::model::impact::Impact;
-use crate::model::keys::{DRAG_KEY, KEYS};
+use crate::model::keys::{DRAG_KEY, EXTENDED_KEYS, KEYS, Key, LIFT_KEY};
 use crate::model::scene::Scene;
 use crate::preset::{self, Fence, Preset};
 use crate::{Swing, simulate};
@@ -34,10 +35,25 @@ pub use figures::{FIGURES, FigureState};
 pub enum Field {
     /// The preset's name: Enter opens the picker.
     Preset,
-    /// A numeric input: an index into [`KEYS`].
+    /// A numeric input: an index into `all_keys()` ([`KEYS`], then
+    /// [`EXTENDED_KEYS`]; see [`input_key`]).
     Key(usize),
     /// The drag model.
     Drag,
+    /// The lift model.
+    Lift,
+}
+
+/// The numeric input `k`: [`KEYS`], then [`EXTENDED_KEYS`], as `all_keys()`
+/// and the worker's sensitivities count them.
+pub fn input_key(k: usize) -> &'static Key {
+    KEYS.get(k)
+        .unwrap_or_else(|| &EXTENDED_KEYS[k - KEYS.len()])
+}
+
+/// How many numeric inputs there are.
+pub fn input_count() -> usize {
+    KEYS.len() + EXTENDED_KEYS.len()
 }
 
 impl Field {
@@ -45,18 +61,36 @@ impl Field {
     pub fn group(self) -> &'static str {
         match self {
             Field::Preset => "",
-            Field::Key(k) => KEYS[k].name.split('.').next().unwrap_or(""),
-            Field::Drag => "model",
+            Field::Key(k) => input_key(k).name.split('.').next().unwrap_or(""),
+            Field::Drag | Field::Lift => "model",
         }
     }
 }
 
-/// Every row of the inputs pane, top to bottom.
+/// Every row of the inputs pane, top to bottom: each group once (the
+/// weather after the paper's environment keys, the models last).
 pub fn fields() -> Vec<Field> {
     let mut all = vec![Field::Preset];
-    all.extend((0..KEYS.len()).map(Field::Key));
-    all.push(Field::Drag);
+    all.extend((0..input_count()).map(Field::Key));
+    all.extend([Field::Drag, Field::Lift]);
+    let mut groups: Vec<&str> = Vec::new();
+    for field in &all {
+        if !groups.contains(&field.group()) {
+            groups.push(field.group());
+        }
+    }
+    // A stable sort keeps each group's own order.
+    all.sort_by_key(|f| groups.iter().position(|g| *g == f.group()));
     all
+}
+
+/// One input's range gained per nudge, and the inputs it was computed for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GainCell {
+    /// `None`: the nudge is refused, a ball does not land, or (at the
+    /// optimum) the input is the swing itself.
+    pub value: Option<f64>,
+    pub generation: u64,
 }
 
 /// A preset in the picker: loadable, or broken with its error.
@@ -150,6 +184,11 @@ pub struct App {
     /// The last converged optimum, whatever the inputs: the warm start.
     pub warm_start: Option<(f64, f64)>,
     pub impact_stop: usize,
+    /// Per input (as [`input_key`] counts them), the range gained by one
+    /// step up at the current swing and at the optimum; a cell older than
+    /// `generation` is stale and shown so until the new one arrives.
+    pub swing_gains: Vec<Option<GainCell>>,
+    pub optimum_gains: Vec<Option<GainCell>>,
     /// The pinned scene, if any: drawn and compared beside the current one.
     pub pin: Option<Pin>,
     /// The paper's figure chosen on the figures tab, and as computed.
@@ -183,14 +222,19 @@ impl App {
 
     pub fn new(preset: Preset, presets_dir: Option<PathBuf>, color: ColorMode, size: Rect) -> App {
         let swing = simulate(&preset.scene, Purpose::Readout);
+        let fields = fields();
+        let selected = fields
+            .iter()
+            .position(|f| matches!(f, Field::Key(k) if input_key(*k).name == "bat.speed"))
+            .unwrap_or(0);
         let mut app = App {
             preset_name: preset.name,
             description: preset.description,
             scene: preset.scene,
             fence: preset.fence,
             presets_dir,
-            fields: fields(),
-            selected: 1 + KEYS.iter().position(|k| k.name == "bat.speed").unwrap_or(0),
+            fields,
+            selected,
             mode: Mode::Normal,
             tab: Tab::Flight,
             message: None,
@@ -204,6 +248,8 @@ impl App {
             generation: 0,
             warm_start: None,
             impact_stop: 0,
+            swing_gains: vec![None; input_count()],
+            optimum_gains: vec![None; input_count()],
             pin: None,
             figure_number: 8,
             figure: None,
@@ -227,7 +273,26 @@ impl App {
 
     /// Whether background work for the current inputs is still under way.
     pub fn busy(&self) -> bool {
-        !(self.optimum.is_some_and(|o| o.done) && self.surface_fresh() && self.figure_fresh())
+        !(self.optimum.is_some_and(|o| o.done)
+            && self.surface_fresh()
+            && self.figure_fresh()
+            && self.gains_done(Gain::Optimum) == input_count())
+    }
+
+    /// The sensitivities of one kind.
+    pub fn gains(&self, gain: Gain) -> &[Option<GainCell>] {
+        match gain {
+            Gain::Swing => &self.swing_gains,
+            Gain::Optimum => &self.optimum_gains,
+        }
+    }
+
+    /// How many sensitivities of one kind are for the current inputs.
+    pub fn gains_done(&self, gain: Gain) -> usize {
+        self.gains(gain)
+            .iter()
+            .filter(|c| c.is_some_and(|c| c.generation == self.generation))
+            .count()
     }
 
     /// Whether the surface shown is the finest one for the current inputs.
@@ -309,6 +374,20 @@ impl App {
                     self.warm_start = Some((best.undercut, best.swing_angle));
                     let scene = self.scene.with_swing(best.undercut, best.swing_angle);
                     self.optimal_path = self.plot_path(&scene);
+                }
+            }
+            Report::Sensitivity {
+                gain,
+                key,
+                value,
+                generation,
+            } => {
+                let cells = match gain {
+                    Gain::Swing => &mut self.swing_gains,
+                    Gain::Optimum => &mut self.optimum_gains,
+                };
+                if let Some(cell) = cells.get_mut(key) {
+                    *cell = Some(GainCell { value, generation });
                 }
             }
             Report::Surface {
@@ -453,30 +532,23 @@ impl App {
         match self.fields[self.selected] {
             Field::Preset => {}
             Field::Drag => {
-                let all = DragModel::ALL;
-                let k = all.iter().position(|d| *d == self.scene.drag).unwrap_or(0);
-                let n = all.len() as isize;
-                let next = (k as isize + scale.signum() as isize).rem_euclid(n) as usize;
-                self.scene.drag = all[next];
+                self.scene.drag = cycle(&DragModel::ALL, self.scene.drag, scale);
                 self.inputs_changed = true;
             }
-            Field::Key(k) => {
-                let key = &KEYS[k];
-                let mut scene = self.scene;
-                let value = (key.get)(&scene) + scale * key.step;
-                // Snap to a thousandth of the step, so repeated nudges do not
-                // accumulate rounding noise in the display.
-                let quantum = key.step * 1e-3;
-                (key.set)(&mut scene, (value / quantum).round() * quantum);
-                match scene.validate() {
-                    Ok(()) => {
-                        self.scene = scene;
-                        self.inputs_changed = true;
-                        self.message = None;
-                    }
-                    Err(error) => self.message = Some((error.to_string(), true)),
-                }
+            Field::Lift => {
+                self.scene.lift = cycle(&LiftModel::ALL, self.scene.lift, scale);
+                self.inputs_changed = true;
             }
+            // The same nudge as the sensitivity column's, so that its number
+            // says what this key does.
+            Field::Key(k) => match sensitivity::nudge(&self.scene, input_key(k), scale) {
+                Ok(scene) => {
+                    self.scene = scene;
+                    self.inputs_changed = true;
+                    self.message = None;
+                }
+                Err(error) => self.message = Some((error.to_string(), true)),
+            },
         }
     }
 
@@ -485,7 +557,8 @@ impl App {
         let current = match field {
             Field::Preset => return self.open_picker(),
             Field::Drag => self.scene.drag.name().to_owned(),
-            Field::Key(k) => format_value(&KEYS[k], (KEYS[k].get)(&self.scene)),
+            Field::Lift => self.scene.lift.name().to_owned(),
+            Field::Key(k) => format_value(input_key(k), (input_key(k).get)(&self.scene)),
         };
         self.mode = Mode::Edit {
             field,
@@ -507,8 +580,9 @@ impl App {
             Some(Action::Confirm) => {
                 let typed = text.lines().join("");
                 let name = match field {
-                    Field::Key(k) => KEYS[k].name,
+                    Field::Key(k) => input_key(k).name,
                     Field::Drag => DRAG_KEY,
+                    Field::Lift => LIFT_KEY,
                     Field::Preset => return,
                 };
                 let mut scene = self.scene;
@@ -554,6 +628,13 @@ impl App {
             self.message = Some(("no optimum yet for these inputs".into(), true));
         }
     }
+}
+
+/// The choice `by` places after `current` in `all`, going round.
+fn cycle<T: Copy + PartialEq>(all: &[T], current: T, by: f64) -> T {
+    let k = all.iter().position(|c| *c == current).unwrap_or(0);
+    let n = all.len() as isize;
+    all[(k as isize + by.signum() as isize).rem_euclid(n) as usize]
 }
 
 /// A one-line text field holding `value`, all of it selected: typing

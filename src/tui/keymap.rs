@@ -193,7 +193,7 @@ pub const KEYMAP: &[Row] = &[
             key(Left, Lower(Step::One)),
             key(Right, Raise(Step::One)),
         ],
-        "nudge the input by its step",
+        "nudge by a step (Δ beside it: the range gained)",
     ),
     row(&nudges(['H', 'L'], SHIFT, Step::Ten), "nudge ×10"),
     row(&nudges(['[', ']'], ALT, Step::Tenth), "nudge ×0.1"),

@@ -46,15 +46,44 @@ pub struct Panes {
     pub status: Rect,
 }
 
-/// Whether everything fits at once.
+/// Whether everything but the figures fits at once.
 pub fn is_wide(area: Rect) -> bool {
     area.width >= 140 && area.height >= 40
 }
 
+/// Whether the figures get a pane of their own too (e.g. 200×60): the
+/// inputs (with their names and both sensitivity columns) over the readout
+/// at the left, and trajectory, figure, surface and impact in a 2×2 grid.
+pub fn is_big(area: Rect) -> bool {
+    area.width >= 190 && area.height >= 54
+}
+
 const READOUT_HEIGHT: u16 = 9;
+/// The inputs pane's width on a big screen: every column (see `view::inputs`).
+const BIG_INPUTS_WIDTH: u16 = 58;
+/// The fewest lines the readout gets under the inputs on a big screen.
+const BIG_READOUT_MIN: u16 = 14;
+
+/// The inputs pane's height for its whole list: one line per input (the
+/// preset, every numeric key, the drag and lift models), one per group
+/// header, the 3 lines that describe the selected input and the borders.
+fn inputs_height() -> u16 {
+    use crate::model::keys::all_keys;
+    let mut groups = vec!["model"];
+    for key in all_keys() {
+        let group = key.name.split('.').next().unwrap_or("");
+        if !groups.contains(&group) {
+            groups.push(group);
+        }
+    }
+    (1 + all_keys().count() + 2 + groups.len() + 3 + 2) as u16
+}
 
 pub fn layout(area: Rect, tab: Tab) -> Panes {
     let [body, status] = Layout::vertical([Constraint::Fill(1), Constraint::Length(1)]).areas(area);
+    if is_big(area) {
+        return big_layout(body, status);
+    }
     let inputs_width = if is_wide(area) { 44 } else { 30 };
     let [inputs, right] =
         Layout::horizontal([Constraint::Length(inputs_width), Constraint::Fill(1)]).areas(body);
@@ -97,6 +126,32 @@ pub fn layout(area: Rect, tab: Tab) -> Panes {
         }
     }
     panes
+}
+
+/// Everything at once: the inputs over the readout at the left, and a 2×2
+/// grid of trajectory, figure, range surface and impact.
+fn big_layout(body: Rect, status: Rect) -> Panes {
+    let [left, right] =
+        Layout::horizontal([Constraint::Length(BIG_INPUTS_WIDTH), Constraint::Fill(1)]).areas(body);
+    let inputs_height = inputs_height().min(body.height.saturating_sub(BIG_READOUT_MIN));
+    let [inputs, readout] =
+        Layout::vertical([Constraint::Length(inputs_height), Constraint::Fill(1)]).areas(left);
+    let [top, bottom] =
+        Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
+    let [trajectory, figure] =
+        Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(top);
+    let [heatmap, impact] =
+        Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
+    Panes {
+        inputs,
+        tabs: None,
+        trajectory: Some(trajectory),
+        readout: Some(readout),
+        heatmap: Some(heatmap),
+        impact: Some(impact),
+        figure: Some(figure),
+        status,
+    }
 }
 
 /// Trajectory samples for a screen: two per braille column of the plot.

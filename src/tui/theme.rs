@@ -74,6 +74,35 @@ pub const BUSY: Style = Style::new().fg(Color::Yellow);
 /// A key in the help.
 pub const KEY: Style = Style::new().fg(Color::Cyan);
 
+// The sensitivity columns.
+
+/// A range gained per nudge, graded by its size against the largest shown
+/// (`max`, > 0): four intensities, green for a gain and red for a loss (the
+/// sign is written too, for terminals without colour).
+pub fn gain(value: f64, max: f64) -> Style {
+    let share = value.abs() / max;
+    let (faint, normal, strong) = if value >= 0.0 {
+        (Color::Green, Color::Green, Color::LightGreen)
+    } else {
+        (Color::Red, Color::Red, Color::LightRed)
+    };
+    if share >= 0.5 {
+        Style::new().fg(strong).add_modifier(Modifier::BOLD)
+    } else if share >= 0.1 {
+        Style::new().fg(normal)
+    } else if share >= 0.01 {
+        Style::new().fg(faint).add_modifier(Modifier::DIM)
+    } else {
+        dim()
+    }
+}
+
+/// A sensitivity for inputs that have changed since: shown until the new
+/// one arrives.
+pub const STALE_GAIN: Style = Style::new()
+    .fg(Color::DarkGray)
+    .add_modifier(Modifier::ITALIC);
+
 // The trajectory.
 
 /// The current swing's path (and its legend).

@@ -60,12 +60,11 @@ pub fn settle(app: &mut App) {
 
 /// Selects the input row whose key is `name`.
 pub fn select(app: &mut App, name: &str) {
-    use homerun::model::keys::KEYS;
-    use homerun::tui::app::Field;
+    use homerun::tui::app::{Field, input_key};
     app.selected = app
         .fields
         .iter()
-        .position(|f| matches!(f, Field::Key(k) if KEYS[*k].name == name))
+        .position(|f| matches!(f, Field::Key(k) if input_key(*k).name == name))
         .unwrap();
 }
 

@@ -1,19 +1,219 @@
-//! The inputs pane: every key of the scene, grouped, with the selected one's
-//! description (or the edit box and its error) at the bottom.
+//! The inputs pane: every key of the scene, grouped, with the range one
+//! nudge gains beside each (at the current swing and, where there is room,
+//! at the optimum), and the selected one's description (or the edit box and
+//! its error) at the bottom.
+//!
+//! Columns, by priority as the pane narrows: symbol, value and unit always
+//! (a value is never cut); then Δ (the range gained by one step up at the
+//! current swing); then Δopt (the optimal range gained); then the key's
+//! name. Where Δ does not fit as a number it is shown as a sign repeated by
+//! size (+++ to +, or ·).
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Wrap};
 
-use crate::model::keys::KEYS;
-use crate::tui::app::{App, Field, Mode};
+use crate::analysis::sensitivity;
+use crate::tui::app::{App, Field, GainCell, Mode, input_key};
 use crate::tui::format::format_value;
 use crate::tui::layout::{input_scroll, inputs_list};
 use crate::tui::theme::{self, dim, title_style};
+use crate::tui::worker::Gain;
+
+/// Display width of the symbol column (V̂_b0, k_B2, y(0): four cells).
+const SYMBOL: usize = 4;
+/// Display width of the unit column (rad/s, kg/m³).
+const UNIT: usize = 5;
+/// A numeric Δ column, its separating space included ("+12.34").
+const GAIN: usize = 7;
+/// The compact Δ column, its separating space included ("+++").
+const COMPACT: usize = 4;
+
+/// Which columns fit the pane.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Columns {
+    /// Width of the value column: the widest value shown.
+    value: usize,
+    name: Option<usize>,
+    swing: Option<Sensitivity>,
+    optimum: bool,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Sensitivity {
+    Numbers,
+    Signs,
+}
+
+fn width(text: &str) -> usize {
+    Span::raw(text).width()
+}
+
+/// `text` padded with spaces to `cells` display cells, left or right aligned.
+fn pad(text: &str, cells: usize, right: bool) -> String {
+    let fill = " ".repeat(cells.saturating_sub(width(text)));
+    if right {
+        format!("{fill}{text}")
+    } else {
+        format!("{text}{fill}")
+    }
+}
+
+fn columns(inner: usize, value: usize, name: usize) -> Columns {
+    // marker, symbol, space, value, space, unit
+    let base = 1 + SYMBOL + 1 + value + 1 + UNIT;
+    let mut c = Columns {
+        value,
+        name: None,
+        swing: None,
+        optimum: false,
+    };
+    let mut used = base;
+    if used + GAIN <= inner {
+        c.swing = Some(Sensitivity::Numbers);
+        used += GAIN;
+        if used + GAIN <= inner {
+            c.optimum = true;
+            used += GAIN;
+        }
+        if used + name < inner {
+            c.name = Some(name);
+        }
+    } else if used + COMPACT <= inner {
+        c.swing = Some(Sensitivity::Signs);
+    }
+    c
+}
+
+/// A gain in the pane's unit, to fit 6 cells: +4.01, -0.10, +12.3, +123.
+fn gain_text(value: f64) -> String {
+    let a = value.abs();
+    if a < 9.995 {
+        format!("{value:+.2}")
+    } else if a < 99.95 {
+        format!("{value:+.1}")
+    } else {
+        format!("{value:+.0}")
+    }
+}
+
+/// A gain as signs repeated by its share of the largest: "+++" to "+", "·"
+/// below a hundredth of it.
+fn gain_signs(value: f64, max: f64) -> String {
+    let share = value.abs() / max;
+    let count = [0.01, 0.1, 0.5].iter().filter(|t| share >= **t).count();
+    if count == 0 {
+        "·".to_owned()
+    } else {
+        let sign = if value >= 0.0 { "+" } else { "-" };
+        sign.repeat(count)
+    }
+}
+
+/// One sensitivity cell, `cells` wide: its text and style.
+fn gain_span(
+    app: &App,
+    cell: Option<GainCell>,
+    max: f64,
+    form: Sensitivity,
+    cells: usize,
+    fixed: bool,
+) -> Span<'static> {
+    let (text, style) = match cell {
+        None => (String::new(), theme::PLAIN),
+        // At the optimum, the swing's own inputs change nothing.
+        Some(GainCell { value: None, .. }) if !fixed => ("—".to_owned(), dim()),
+        Some(GainCell { value: None, .. }) => ("0".to_owned(), dim()),
+        Some(GainCell {
+            value: Some(v),
+            generation,
+        }) => {
+            let v = app.distance(v).0;
+            let text = match form {
+                Sensitivity::Numbers => gain_text(v),
+                Sensitivity::Signs => gain_signs(v, max),
+            };
+            let style = if generation != app.generation {
+                theme::STALE_GAIN
+            } else {
+                theme::gain(v, max)
+            };
+            (text, style)
+        }
+    };
+    Span::styled(format!(" {}", pad(&text, cells - 1, true)), style)
+}
+
+/// The largest |gain| of a kind, in the pane's unit (1 if none yet).
+fn largest(app: &App, gain: Gain) -> f64 {
+    let max = app
+        .gains(gain)
+        .iter()
+        .filter_map(|c| c.and_then(|c| c.value))
+        .map(|v| app.distance(v).0.abs())
+        .fold(0.0, f64::max);
+    if max > 0.0 { max } else { 1.0 }
+}
+
+/// The pane's title: "Inputs" at the left, the Δ columns' heads at the right
+/// above their columns (in the busy colour while any is being computed).
+fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
+    let left = Line::from(Span::styled(" Inputs ", title_style()));
+    let Some(form) = c.swing else {
+        return (left, None);
+    };
+    let unit = app.distance(1.0).1;
+    // Each head is right-aligned over its column; the border runs on to it.
+    let head = |text: String, gain: Gain, cells: usize| {
+        let busy = app.gains_done(gain) < crate::tui::app::input_count();
+        let style = if busy { theme::BUSY } else { dim() };
+        let text = format!(" {text}");
+        [
+            Span::raw("─".repeat(cells.saturating_sub(width(&text)))),
+            Span::styled(text, style),
+        ]
+    };
+    let mut spans = Vec::from(head(
+        match form {
+            Sensitivity::Numbers => format!("Δ {unit}"),
+            Sensitivity::Signs => "Δ".to_owned(),
+        },
+        Gain::Swing,
+        match form {
+            Sensitivity::Numbers => GAIN - 1,
+            Sensitivity::Signs => COMPACT - 1,
+        },
+    ));
+    if c.optimum {
+        spans.extend(head("Δopt".to_owned(), Gain::Optimum, GAIN));
+    }
+    (left, Some(Line::from(spans).right_aligned()))
+}
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let block = Block::bordered().title(Span::styled(" Inputs ", title_style()));
+    let inner_width = Block::bordered().inner(area).width as usize;
+    // The widest value and name of the numeric rows, as shown now.
+    let numeric = app.fields.iter().filter_map(|f| match f {
+        Field::Key(k) => Some(input_key(*k)),
+        _ => None,
+    });
+    let value_width = numeric
+        .clone()
+        .map(|key| width(&format_value(key, (key.get)(&app.scene))))
+        .max()
+        .unwrap_or(0);
+    let name_width = numeric
+        .map(|key| width(key.name.split('.').nth(1).unwrap_or(key.name)))
+        .max()
+        .unwrap_or(0);
+    let c = columns(inner_width, value_width, name_width);
+
+    let (left, right) = title(app, c);
+    let mut block = Block::bordered().title(left);
+    if let Some(right) = right {
+        block = block.title(right);
+    }
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let list = inputs_list(area);
@@ -23,11 +223,11 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         inner.width,
         inner.bottom() - list.bottom(),
     );
-    let wide = inner.width >= 40;
     let editing = match &app.mode {
         Mode::Edit { text, error, .. } => Some((text, error)),
         _ => None,
     };
+    let (max_swing, max_optimum) = (largest(app, Gain::Swing), largest(app, Gain::Optimum));
 
     // Rows, with a header line before each group (as `layout` counts them,
     // so that a click lands on the row drawn); remember the selected row.
@@ -48,8 +248,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         let (symbol, name, value, unit) = match field {
             Field::Preset => ("", "preset", app.preset_name.clone(), ""),
             Field::Drag => ("C_D", "drag", app.scene.drag.name().to_owned(), ""),
+            Field::Lift => ("C_L", "lift", app.scene.lift.name().to_owned(), ""),
             Field::Key(k) => {
-                let key = &KEYS[*k];
+                let key = input_key(*k);
                 let short = key.name.split('.').nth(1).unwrap_or(key.name);
                 (
                     key.symbol,
@@ -59,24 +260,51 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 )
             }
         };
-        let label = if wide {
-            format!("{symbol:<5} {name:<19}")
-        } else if symbol.is_empty() {
-            format!("{name:<6}")
-        } else {
-            format!("{symbol:<6}")
+        let mut label = match c.name {
+            Some(n) => format!("{} {}", pad(symbol, SYMBOL, false), pad(name, n, false)),
+            // A row without a symbol (the preset) is named in its place.
+            None if symbol.is_empty() => pad(name, SYMBOL, false),
+            None => pad(symbol, SYMBOL, false),
         };
+        let text = match field {
+            // A numeric value, right-aligned in its column, then the unit.
+            Field::Key(_) => format!(" {} {}", pad(&value, c.value, true), pad(unit, UNIT, false)),
+            // A name spans the value and unit columns, and further if long.
+            _ => format!(" {}", pad(&value, c.value + 1 + UNIT, true)),
+        };
+        label.push_str(&text);
         let marker = if selected { "▶" } else { " " };
         let style = if selected {
             theme::SELECTED
         } else {
             theme::PLAIN
         };
-        let value_width = (inner.width as usize).saturating_sub(label.chars().count() + 2 + 7);
-        rows.push(Line::from(vec![
-            Span::raw(marker),
-            Span::styled(format!("{label} {value:>value_width$} {unit:<6}"), style),
-        ]));
+        let mut spans = vec![Span::raw(marker), Span::styled(label, style)];
+        if let (Field::Key(k), Some(form)) = (field, c.swing) {
+            let cells = match form {
+                Sensitivity::Numbers => GAIN,
+                Sensitivity::Signs => COMPACT,
+            };
+            spans.push(gain_span(
+                app,
+                app.swing_gains[*k],
+                max_swing,
+                form,
+                cells,
+                false,
+            ));
+            if c.optimum {
+                spans.push(gain_span(
+                    app,
+                    app.optimum_gains[*k],
+                    max_optimum,
+                    Sensitivity::Numbers,
+                    GAIN,
+                    !sensitivity::moves_optimum(input_key(*k)),
+                ));
+            }
+        }
+        rows.push(Line::from(spans));
     }
 
     // Keep the selected row in view.
@@ -103,9 +331,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         None => {
             let text = match app.fields[app.selected] {
                 Field::Preset => format!("{} — Enter or o: open a preset", app.description),
-                Field::Drag => format!("model.drag: {}", app.scene.drag.description()),
+                Field::Drag => format!("model.drag (h l): {}", app.scene.drag.description()),
+                Field::Lift => format!("model.lift (h l): {}", app.scene.lift.description()),
                 Field::Key(k) => {
-                    let key = &KEYS[k];
+                    let key = input_key(k);
                     format!(
                         "{}: {} {}, step {}",
                         key.name, key.description, key.bounds, key.step
@@ -116,4 +345,41 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
     };
     frame.render_widget(about_text.wrap(Wrap { trim: true }), about);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn columns_give_way_in_order_and_never_cut_a_value() {
+        // 80×24: 28 cells inside; values up to 8 wide ("0.000015").
+        let narrow = columns(28, 8, 19);
+        assert_eq!(narrow.swing, Some(Sensitivity::Numbers));
+        assert!(!narrow.optimum && narrow.name.is_none());
+        // A 12-wide value (a derived ν) leaves room only for signs.
+        assert_eq!(columns(28, 12, 19).swing, Some(Sensitivity::Signs));
+        assert_eq!(columns(20, 12, 19).swing, None);
+        // 42 inside: both Δ columns, no names; 56: everything.
+        let wide = columns(42, 8, 19);
+        assert!(wide.optimum && wide.name.is_none());
+        assert_eq!(columns(56, 8, 19).name, Some(19));
+    }
+
+    #[test]
+    fn gains_fit_six_cells_and_signs_grade_by_share() {
+        for (v, text) in [
+            (4.0123, "+4.01"),
+            (-0.1, "-0.10"),
+            (12.34, "+12.3"),
+            (123.4, "+123"),
+            (-1234.0, "-1234"),
+        ] {
+            assert_eq!(gain_text(v), text);
+        }
+        assert_eq!(gain_signs(2.0, 2.0), "+++");
+        assert_eq!(gain_signs(-0.5, 2.0), "--");
+        assert_eq!(gain_signs(0.1, 2.0), "+");
+        assert_eq!(gain_signs(0.001, 2.0), "·");
+    }
 }

@@ -18,6 +18,7 @@ use ratatui::widgets::{Paragraph, Tabs};
 use super::app::{App, Mode};
 use super::layout::{MIN_SIZE, Tab, layout};
 use super::theme::{self, dim};
+use super::worker::Gain;
 
 /// Draws the whole screen from the app's state.
 pub fn draw(frame: &mut Frame, app: &App) {
@@ -101,6 +102,16 @@ fn status_line(frame: &mut Frame, area: Rect, app: &App) {
             theme::BUSY,
         ),
         None => Span::styled("· surface… ", theme::BUSY),
+    });
+    // The sensitivities: at the current swing (quick), then at the optimum.
+    let n = super::app::input_count();
+    let (swing, optimum) = (app.gains_done(Gain::Swing), app.gains_done(Gain::Optimum));
+    spans.push(if swing < n {
+        Span::styled("· Δ… ", theme::BUSY)
+    } else if optimum < n {
+        Span::styled(format!("· Δopt {optimum}/{n}… "), theme::BUSY)
+    } else {
+        Span::raw("· Δ ✓ ")
     });
     spans.push(Span::styled("· ? help  q quit", dim()));
     frame.render_widget(Paragraph::new(Line::from(spans)), area);

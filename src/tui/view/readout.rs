@@ -6,9 +6,31 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
+use crate::analysis::figures::trimmed;
 use crate::model::impact::Regime;
 use crate::tui::app::App;
 use crate::tui::theme::{self, dim, title_style};
+
+/// The air in force: "ρ 1.194 kg/m³  ν 1.51e-5 m²/s" and where it comes
+/// from, "from 21 °C, 5 m, 1013 hPa, 50 %" or "(given)".
+fn air(app: &App) -> (String, String) {
+    let air = app.scene.environment.air();
+    let values = format!(
+        "ρ {:.3} kg/m³  ν {:.3e} m²/s",
+        air.density, air.kinematic_viscosity
+    );
+    let source = match air.atmosphere {
+        Some(a) => format!(
+            "from {} °C, {} m, {} hPa, {} %",
+            trimmed(a.temperature),
+            trimmed(a.elevation),
+            trimmed(a.pressure),
+            trimmed(a.humidity)
+        ),
+        None => "(given)".to_owned(),
+    };
+    (values, source)
+}
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let impact = &app.swing.impact;
@@ -59,6 +81,32 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             )),
         ]),
     ];
+    let inner = Block::bordered().inner(area);
+    // Air derived from the weather is worth a line even on a small screen,
+    // where it takes the impulses' (tab 3 shows them); given air, the
+    // paper's, is shown only with room to spare (below).
+    let (air_values, air_source) = air(app);
+    let derived = app.scene.environment.atmosphere().is_some();
+    let air_lines = |width: u16| -> Vec<Line<'static>> {
+        let one = format!("{air_values}  {air_source}");
+        if 9 + Span::raw(one.as_str()).width() <= width as usize {
+            vec![Line::from(vec![label("air"), Span::raw(one)])]
+        } else {
+            vec![
+                Line::from(vec![label("air"), Span::raw(air_values.clone())]),
+                Line::from(vec![label(""), Span::raw(air_source.clone())]),
+            ]
+        }
+    };
+    if derived {
+        let extra = air_lines(inner.width);
+        if (inner.height as usize) < lines.len() + 3 + extra.len() {
+            lines.remove(3);
+        }
+        for (k, line) in extra.into_iter().enumerate() {
+            lines.insert(2 + k, line);
+        }
+    }
     // The pinned scene: now − pin under the launch and the flight. When the
     // pane is short, the deltas take the impact's two lines (tab 3 shows it).
     if let Some(pin) = &app.pin {
@@ -76,9 +124,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             d(flight.range - was_flight.range),
             d(flight.apex - was_flight.apex)
         ));
-        let short = (Block::bordered().inner(area).height as usize) < lines.len() + 5;
+        let short = (inner.height as usize) < lines.len() + 5;
         if short {
-            lines.truncate(2);
+            lines.retain(|l| {
+                !l.spans
+                    .first()
+                    .is_some_and(|s| ["impact", "impulse"].contains(&s.content.trim()))
+            });
         }
         lines.insert(2, flight);
         lines.insert(1, launch);
@@ -125,8 +177,11 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             )),
         ]));
     }
-    // Room to spare (the large layout): the rest of the story.
+    // Room to spare (the large layouts): the rest of the story.
     if area.height as usize >= lines.len() + 6 {
+        if !derived {
+            lines.extend(air_lines(inner.width));
+        }
         lines.push(Line::from(vec![
             label("landing"),
             Span::raw(format!(
@@ -147,7 +202,26 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             label("drag"),
             Span::raw(app.scene.drag.description()),
         ]));
+        lines.push(Line::from(vec![
+            label("lift"),
+            Span::raw(app.scene.lift.description()),
+        ]));
+        if app.scene.spin_decay > 0.0 {
+            lines.push(Line::from(vec![
+                label("spin"),
+                Span::raw(format!(
+                    "decays as e^(−t/{} s)",
+                    trimmed(app.scene.spin_decay)
+                )),
+            ]));
+        }
     }
     let block = Block::bordered().title(Span::styled(" Readout ", title_style()));
-    frame.render_widget(Paragraph::new(lines).block(block), area);
+    // Long lines (a model's description) wrap rather than run off the pane.
+    frame.render_widget(
+        Paragraph::new(lines)
+            .block(block)
+            .wrap(ratatui::widgets::Wrap { trim: false }),
+        area,
+    );
 }
