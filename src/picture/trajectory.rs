@@ -5,7 +5,8 @@
 
 use plotters::prelude::*;
 
-use super::{FONT, NOW, PictureError, drawn, emptiest_corner, series_color, sig, tick_label};
+use super::{FONT, NOW, PictureError, drawn, emptiest_corner, series_color, tick_label};
+use crate::analysis::figures::trimmed;
 use crate::preset::Fence;
 
 /// How much taller than true a metre of height may be drawn.
@@ -132,8 +133,8 @@ pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureErro
                 .map_err(drawn)?
                 .label(format!(
                     "fence: {} m out, {} m high",
-                    sig(f.distance, 4),
-                    sig(f.height, 3)
+                    trimmed(f.distance),
+                    trimmed(f.height)
                 ))
                 .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], NOW.stroke_width(4)));
         }
