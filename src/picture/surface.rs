@@ -289,12 +289,13 @@ fn draw_scale(
         ))
         .map_err(drawn)?;
         if k % 4 == 0 || k == STEPS - 1 {
-            area.draw(&Text::new(
-                format!("{from:.1}"),
-                (x + 28, y + 3),
-                (FONT, 11),
-            ))
-            .map_err(drawn)?;
+            let text = if k == STEPS - 1 {
+                format!("{from:.1}–{high:.1}")
+            } else {
+                format!("{from:.1}")
+            };
+            area.draw(&Text::new(text, (x + 28, y + 3), (FONT, 11)))
+                .map_err(drawn)?;
         }
         y += box_height;
     }
@@ -323,7 +324,7 @@ fn draw_scale(
     }
     if let Some(level) = level {
         area.draw(&Text::new(
-            format!("white line: {level:.0} m"),
+            format!("white: {} m (fence)", sig(level, 4)),
             (x, y + 6),
             (FONT, 11),
         ))

@@ -249,7 +249,7 @@ pub const KEYMAP: &[Row] = &[
     row(&[ch('o', Open)], "open a preset (bundled or saved)"),
     row(
         &[ch('x', Export)],
-        "write the chart in view as SVG (./homerun-*-N.svg)",
+        "write the chart in view to ./homerun-*-N.svg",
     ),
     row(&[key(Esc, Close)], "close a pop-up, clear the message"),
     row(&[ch('?', Help)], "this help"),
@@ -392,6 +392,7 @@ mod tests {
                 ", .",
                 "s",
                 "o",
+                "x",
                 "Esc",
                 "?",
                 "q  Ctrl-C",
