@@ -9,13 +9,16 @@
 //! - [`analysis`]: precision budgets, the optimal swing, the studies behind
 //!   the figures, the benchmark; calls the model and the numerics.
 //! - [`preset`]: scenes in TOML files.
+//! - [`picture`]: figures, surfaces, trajectories and the bench as SVG text.
 //! - [`units`]: SI or baseball units for text shown and typed; imports nothing.
 //! - [`cli`] and [`tui`]: the frontends; nothing below imports them.
 
 pub mod analysis;
+pub mod atomic_file;
 pub mod cli;
 pub mod model;
 pub mod numerics;
+pub mod picture;
 pub mod preset;
 pub mod tui;
 pub mod units;

@@ -186,12 +186,15 @@ fn render(report: &Report) -> String {
     out
 }
 
-/// `homerun bench [--json] [--quick]`.
-pub fn output(json: bool, quick: bool) -> String {
+/// `homerun bench [--json] [--quick] [--svg FILE]`: with `svg`, the
+/// work–precision diagram of the trajectory rows.
+pub fn output(json: bool, quick: bool, svg: bool) -> Result<String, super::UsageError> {
     let report = bench::run(quick);
-    if json {
+    Ok(if svg {
+        crate::picture::bench_svg(&report.trajectory)?
+    } else if json {
         serde_json::to_string_pretty(&report).expect("plain numbers") + "\n"
     } else {
         render(&report)
-    }
+    })
 }

@@ -17,6 +17,7 @@ pub(super) fn figure(
     set: &[String],
     dir: Option<&Path>,
     format: Format,
+    svg: bool,
 ) -> Result<String, UsageError> {
     // An unknown figure is reported before any preset error.
     figures::known(number)?;
@@ -33,6 +34,13 @@ pub(super) fn figure(
     let figure = progress::run(work, |p| {
         figures::figure_data_observed(number, &preset.scene, &preset.name, &|| p.tick())
     })?;
+    if svg {
+        return Ok(crate::picture::figure_svg(
+            &figure,
+            &preset.scene,
+            &preset.name,
+        )?);
+    }
     Ok(match figure {
         Figure::Table(data) => render(&data, format),
         Figure::Surface(surface) => render_figure7(&surface, format),

@@ -9,10 +9,12 @@ use crate::Scene;
 use crate::analysis::landing;
 use crate::analysis::precision::Purpose;
 use crate::model::aero::{DragModel, LiftModel};
-use crate::model::flight::FlightSummary;
+use crate::model::flight::{FlightSummary, TrajectoryPoint};
 use crate::model::impact::Impact;
 use crate::model::keys::{DRAG_KEY, LIFT_KEY, all_keys};
 use crate::model::pitch;
+use crate::picture::{self, FlightPath, TrajectoryPicture};
+use crate::preset::Preset;
 
 /// The most points `trajectory` samples.
 pub const MAX_SAMPLES: usize = 100_000;
@@ -147,19 +149,51 @@ fn spin_text(spin: f64) -> String {
     }
 }
 
-/// The flight at readout precision, sampled from the dense output.
-pub(super) fn trajectory(
+/// The flight at readout precision, `samples` points evenly in time read
+/// off the dense output.
+fn sampled(
     scene: &Scene,
     samples: usize,
-    format: Format,
-) -> Result<String, UsageError> {
+) -> Result<(FlightSummary, Vec<TrajectoryPoint>), UsageError> {
     if !(2..=MAX_SAMPLES).contains(&samples) {
         return Err(UsageError::BadSamples { samples });
     }
     let impact = Impact::new(scene);
     let (flight, launch) = crate::model::launch(scene, &impact);
     let options = Purpose::Readout.flight_options();
-    let (summary, points) = crate::model::flight::trajectory(&flight, &launch, &options, samples);
+    Ok(crate::model::flight::trajectory(
+        &flight, &launch, &options, samples,
+    ))
+}
+
+/// `trajectory --svg`: the flight in x–y with the preset's fence.
+pub(super) fn trajectory_svg(preset: &Preset, samples: usize) -> Result<String, UsageError> {
+    let (summary, points) = sampled(&preset.scene, samples)?;
+    let end = points.last().map_or(0.0, |p| p.y);
+    let picture = TrajectoryPicture {
+        preset: preset.name.clone(),
+        paths: vec![FlightPath {
+            name: format!(
+                "E = {} m, ψ = {} rad",
+                preset.scene.bat.undercut, preset.scene.bat.swing_angle
+            ),
+            points: points.iter().map(|p| (p.x, p.y)).collect(),
+        }],
+        range: summary.landed.then_some(summary.range),
+        apex: summary.apex,
+        not_landed: (!summary.landed).then(|| landing::not_landed(&summary, end)),
+        fence: preset.fence,
+    };
+    Ok(picture::trajectory_svg(&picture)?)
+}
+
+/// The flight at readout precision, sampled from the dense output.
+pub(super) fn trajectory(
+    scene: &Scene,
+    samples: usize,
+    format: Format,
+) -> Result<String, UsageError> {
+    let (summary, points) = sampled(scene, samples)?;
     let end = points.last().map_or(0.0, |p| p.y);
     let unlanded = (!summary.landed).then(|| landing::not_landed(&summary, end));
     let table = Table {

@@ -10,6 +10,7 @@ mod presets;
 mod progress;
 mod scene;
 mod surface;
+mod svg_file;
 mod table;
 mod table2;
 mod usage;
@@ -79,6 +80,9 @@ pub enum Command {
         json: bool,
         #[arg(long)]
         csv: bool,
+        /// Write the picture as SVG to FILE instead (atomically; "wrote FILE" on stderr).
+        #[arg(long, value_name = "FILE", conflicts_with_all = ["json", "csv"])]
+        svg: Option<PathBuf>,
     },
     /// Every input key: symbol, unit, accepted range and the fastball's value.
     Keys,
@@ -139,6 +143,9 @@ pub enum Command {
         json: bool,
         #[arg(long)]
         csv: bool,
+        /// Write the picture as SVG to FILE instead (atomically; "wrote FILE" on stderr).
+        #[arg(long, value_name = "FILE", conflicts_with_all = ["json", "csv"])]
+        svg: Option<PathBuf>,
     },
     /// The presets and what they are.
     Presets,
@@ -158,6 +165,9 @@ pub enum Command {
         /// Print CSV: a header of column names, one line per row (to plot).
         #[arg(long)]
         csv: bool,
+        /// Write the picture as SVG to FILE instead (atomically; "wrote FILE" on stderr).
+        #[arg(long, value_name = "FILE", conflicts_with_all = ["json", "csv"])]
+        svg: Option<PathBuf>,
     },
     /// Speed against error on this machine: the work–precision tables.
     Bench {
@@ -167,6 +177,9 @@ pub enum Command {
         /// A reduced version (seconds).
         #[arg(long)]
         quick: bool,
+        /// Write the work–precision diagram as SVG to FILE instead (atomically; "wrote FILE" on stderr).
+        #[arg(long, value_name = "FILE", conflicts_with = "json")]
+        svg: Option<PathBuf>,
     },
     /// Open the explorer (the default with no command).
     Tui {
@@ -238,6 +251,11 @@ pub enum UsageError {
     NotHeadless,
     #[error("writing the output: {0}")]
     Output(#[source] std::io::Error),
+    #[error(transparent)]
+    Picture(#[from] crate::picture::PictureError),
+    /// An SVG that cannot be written where asked: the path and why.
+    #[error("--svg {path}: {reason}")]
+    SvgFile { path: String, reason: String },
 }
 
 /// What is wrong with an A..B window.
@@ -278,7 +296,17 @@ fn checked_presets_dir(cli: &Cli) -> Result<Option<PathBuf>, UsageError> {
 /// Runs a headless command, writing to stdout. A closed pipe (`| head`)
 /// ends the output quietly.
 pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
+    let svg = svg_target(command);
+    // A folder that cannot take the file is refused before any work.
+    if let Some(path) = svg {
+        svg_file::check(path)?;
+    }
     let text = render(cli, command)?;
+    if let Some(path) = svg {
+        svg_file::write(path, &text)?;
+        eprintln!("wrote {}", svg_file::shown(path));
+        return Ok(());
+    }
     let mut stdout = std::io::stdout().lock();
     match stdout
         .write_all(text.as_bytes())
@@ -289,7 +317,18 @@ pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
     }
 }
 
-/// The output of a headless command, as text.
+/// Where the command writes its picture, if it was given `--svg FILE`.
+fn svg_target(command: &Command) -> Option<&std::path::Path> {
+    match command {
+        Command::Trajectory { svg, .. }
+        | Command::Surface { svg, .. }
+        | Command::Figure { svg, .. }
+        | Command::Bench { svg, .. } => svg.as_deref(),
+        _ => None,
+    }
+}
+
+/// The output of a headless command, as text (the SVG itself with `--svg`).
 pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
     let dir = checked_presets_dir(cli)?;
     let dir = dir.as_deref();
@@ -299,7 +338,9 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             Ok(optimize::optimum(&scene.resolve(dir)?.scene, *json))
         }
         Command::Table2 { json } => Ok(elapsed("table2", || table2::table2(*json))),
-        Command::Bench { json, quick } => Ok(elapsed("bench", || bench::output(*json, *quick))),
+        Command::Bench { json, quick, svg } => {
+            elapsed("bench", || bench::output(*json, *quick, svg.is_some()))
+        }
         Command::Sweep {
             key,
             from,
@@ -321,10 +362,14 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             grid,
             json,
             csv,
+            svg,
         } => {
-            let scene = scene.resolve(dir)?.scene;
+            let preset = scene.resolve(dir)?;
             let cells = surface::parse_grid(undercut, swing_angle, grid)?;
-            surface::surface(&scene, cells, grid, Format::new(*json, *csv))
+            if svg.is_some() {
+                return surface::surface_svg(&preset, cells, grid);
+            }
+            surface::surface(&preset.scene, cells, grid, Format::new(*json, *csv))
         }
         Command::Presets => Ok(presets::presets(preset::check_dir(dir)?)),
         Command::Keys => Ok(hit::keys()),
@@ -333,23 +378,28 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             samples,
             json,
             csv,
-        } => hit::trajectory(
-            &scene.resolve(dir)?.scene,
-            *samples,
-            Format::new(*json, *csv),
-        ),
+            svg,
+        } => {
+            let preset = scene.resolve(dir)?;
+            if svg.is_some() {
+                return hit::trajectory_svg(&preset, *samples);
+            }
+            hit::trajectory(&preset.scene, *samples, Format::new(*json, *csv))
+        }
         Command::Figure {
             number,
             preset,
             set,
             json,
             csv,
+            svg,
         } => figure::figure(
             *number,
             preset.as_deref(),
             set,
             dir,
             Format::new(*json, *csv),
+            svg.is_some(),
         ),
         Command::Tui { .. } => Err(UsageError::NotHeadless),
     }

@@ -8,8 +8,12 @@ use super::scene::cut;
 use super::table::{Cell, Column, Digits, Table};
 use super::{Format, UsageError, WindowFault, pretty};
 use crate::Scene;
+use crate::analysis::figures;
+use crate::analysis::optimum::{OptimizerSettings, optimize};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study::{self, Grid, Surface, TooMuchWork};
+use crate::picture::{self, SurfacePicture};
+use crate::preset::Preset;
 
 /// The most cells a side of the grid takes: 500×500 cells of an ordinary
 /// scene take about 0.5 s on 2 cores.
@@ -98,16 +102,40 @@ pub(super) fn surface(
     text: &str,
     format: Format,
 ) -> Result<String, UsageError> {
+    Ok(render_surface(&computed(scene, grid, text)?, format))
+}
+
+/// The surface within its work budget, with a progress line.
+fn computed(scene: &Scene, grid: Grid, text: &str) -> Result<Surface, UsageError> {
     let work = Work {
         what: "surface",
         steps: Some((grid.columns * grid.rows, "cells")),
     };
-    let surface = progress::run(work, |p| {
+    progress::run(work, |p| {
         let tick = || p.tick();
         study::surface_within(scene, grid, Purpose::Surface, SURFACE_FLIGHT_STEPS, &tick)
     })
-    .map_err(|work| too_much(text, work))?;
-    Ok(render_surface(&surface, format))
+    .map_err(|work| too_much(text, work))
+}
+
+/// `surface --svg`: the heatmap with the optimum, the current swing and, if
+/// the preset has a fence, the outline of the cells that reach its distance.
+pub(super) fn surface_svg(preset: &Preset, grid: Grid, text: &str) -> Result<String, UsageError> {
+    let scene = &preset.scene;
+    let surface = computed(scene, grid, text)?;
+    let o = optimize(scene, OptimizerSettings::default());
+    let picture = SurfacePicture {
+        surface: &surface,
+        title: format!("Range over (E, ψ) — preset {}", preset.name),
+        conditions: figures::conditions(&preset.name, scene)
+            .split_once(": ")
+            .map_or(String::new(), |(_, rest)| rest.to_owned()),
+        now: Some((scene.bat.undercut, scene.bat.swing_angle)),
+        optimum: o.landed.then_some((o.undercut, o.swing_angle, o.range)),
+        paper: None,
+        level: preset.fence.map(|f| f.distance),
+    };
+    Ok(picture::surface_svg(&picture)?)
 }
 
 /// "--grid 500x500: about 2.7e9 integration steps on this scene …"

@@ -7,7 +7,6 @@
 //! `--presets-dir`.
 
 use std::fs;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 mod escape;
@@ -313,17 +312,7 @@ impl Preset {
         };
         fs::create_dir_all(dir).map_err(io(dir))?;
         let target = dir.join(format!("{}.toml", self.name));
-        let temporary = dir.join(format!(".{}.toml.{}.tmp", self.name, std::process::id()));
-        let written = (|| {
-            let mut file = fs::File::create(&temporary)?;
-            file.write_all(self.to_toml().as_bytes())?;
-            file.sync_all()?;
-            fs::rename(&temporary, &target)
-        })();
-        if let Err(source) = written {
-            let _ = fs::remove_file(&temporary);
-            return Err(io(&target)(source));
-        }
+        crate::atomic_file::write(&target, self.to_toml().as_bytes()).map_err(io(&target))?;
         Ok(target)
     }
 }

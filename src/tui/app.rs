@@ -7,6 +7,7 @@ use ratatui::crossterm::event::{Event, KeyEvent, KeyEventKind};
 use ratatui::layout::Rect;
 use ratatui_textarea::TextArea;
 
+mod export;
 mod figures;
 mod mouse;
 mod presets;
@@ -514,6 +515,7 @@ impl App {
                 self.impact_stop = (self.impact_stop + 1).min(last);
             }
             Action::PreviousStop => self.impact_stop = self.impact_stop.saturating_sub(1),
+            Action::Export => self.export(),
             Action::NextFigure => self.step_figure(true),
             Action::PreviousFigure => self.step_figure(false),
             // The message is cleared already.

@@ -61,6 +61,8 @@ pub enum Action {
     PreviousFigure,
     Save,
     Open,
+    /// Write the chart in view as SVG.
+    Export,
     Help,
     Quit,
     /// Ctrl-C: quits from anywhere, even a prompt.
@@ -245,6 +247,10 @@ pub const KEYMAP: &[Row] = &[
     ),
     row(&[ch('s', Save)], "save the inputs as a preset"),
     row(&[ch('o', Open)], "open a preset (bundled or saved)"),
+    row(
+        &[ch('x', Export)],
+        "write the chart in view to ./homerun-*-N.svg",
+    ),
     row(&[key(Esc, Close)], "close a pop-up, clear the message"),
     row(&[ch('?', Help)], "this help"),
     row(
@@ -386,6 +392,7 @@ mod tests {
                 ", .",
                 "s",
                 "o",
+                "x",
                 "Esc",
                 "?",
                 "q  Ctrl-C",

@@ -1,0 +1,62 @@
+//! `--svg FILE`: the folder checked before any work, the file written
+//! atomically, and every failure one line naming the path and the reason.
+
+use std::path::Path;
+
+use super::UsageError;
+use crate::preset::escape_cut;
+
+/// The path as the user wrote it, escaped and cut to 80 characters.
+pub(super) fn shown(path: &Path) -> String {
+    escape_cut(&path.to_string_lossy(), 80)
+}
+
+fn refused(path: &Path, reason: String) -> UsageError {
+    UsageError::SvgFile {
+        path: shown(path),
+        reason,
+    }
+}
+
+/// The folder `path` goes in ("." for a bare name).
+fn folder(path: &Path) -> &Path {
+    path.parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."))
+}
+
+/// Whether `path` can be written: its folder exists, is a folder and takes
+/// a new file (tried with a temporary file, removed at once), and `path`
+/// is not itself a folder.
+pub(super) fn check(path: &Path) -> Result<(), UsageError> {
+    let dir = folder(path);
+    if path.is_dir() {
+        return Err(refused(path, "is a folder; give a file name".into()));
+    }
+    if !dir.exists() {
+        return Err(refused(
+            path,
+            format!("the folder {} does not exist", shown(dir)),
+        ));
+    }
+    if !dir.is_dir() {
+        return Err(refused(path, format!("{} is not a folder", shown(dir))));
+    }
+    let probe = path.with_file_name(format!(".homerun-probe.{}.tmp", std::process::id()));
+    match std::fs::File::create(&probe) {
+        Ok(_) => {
+            let _ = std::fs::remove_file(&probe);
+            Ok(())
+        }
+        Err(e) => Err(refused(
+            path,
+            format!("cannot write in the folder {}: {e}", shown(dir)),
+        )),
+    }
+}
+
+/// Writes `svg` to `path` atomically: the whole file or none.
+pub(super) fn write(path: &Path, svg: &str) -> Result<(), UsageError> {
+    crate::atomic_file::write(path, svg.as_bytes())
+        .map_err(|e| refused(path, format!("cannot write it: {e}")))
+}

@@ -1,0 +1,159 @@
+//! A batted flight in x–y as SVG, metres on both axes at nearly the same
+//! scale (the height is stretched at most [`MAX_STRETCH`]× so that a low
+//! liner still shows its shape), with the fence and any other paths (the
+//! optimal swing's, a pinned one) beside it.
+
+use plotters::prelude::*;
+
+use super::{FONT, NOW, PictureError, drawn, emptiest_corner, series_color, tick_label};
+use crate::analysis::figures::trimmed;
+use crate::preset::Fence;
+
+/// How much taller than true a metre of height may be drawn.
+pub const MAX_STRETCH: f64 = 2.0;
+
+/// One path: its legend and its (x, y) points in metres.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FlightPath {
+    pub name: String,
+    pub points: Vec<(f64, f64)>,
+}
+
+/// What to draw: the first path is the flight the title describes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TrajectoryPicture {
+    /// The preset's name, for the title.
+    pub preset: String,
+    pub paths: Vec<FlightPath>,
+    /// The first path's range, `None` if it did not land.
+    pub range: Option<f64>,
+    pub apex: f64,
+    /// Why there is no range ("did not land within 600.0 s …"), if none.
+    pub not_landed: Option<String>,
+    pub fence: Option<Fence>,
+}
+
+const WIDTH: u32 = 960;
+/// Pixels around the plot: the title, the axes' labels, the margins.
+const TITLE: u32 = 40;
+const X_LABELS: u32 = 44;
+const Y_LABELS: u32 = 56;
+const MARGIN: u32 = 12;
+
+/// The trajectory as SVG.
+pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureError> {
+    let points = || picture.paths.iter().flat_map(|p| p.points.iter());
+    let fence = picture.fence;
+    let x_max = points()
+        .map(|p| p.0)
+        .chain(fence.map(|f| f.distance))
+        .filter(|v| v.is_finite())
+        .fold(1.0_f64, f64::max)
+        * 1.04;
+    let x_min = points()
+        .map(|p| p.0)
+        .filter(|v| v.is_finite())
+        .fold(0.0_f64, f64::min);
+    let y_max = points()
+        .map(|p| p.1)
+        .chain(fence.map(|f| f.height))
+        .filter(|v| v.is_finite())
+        .fold(1.0_f64, f64::max)
+        * 1.12;
+    // Equal scales, unless that leaves the height too flat to read.
+    let plot_width = f64::from(WIDTH - Y_LABELS - 2 * MARGIN);
+    let metre = plot_width / (x_max - x_min);
+    let true_height = y_max * metre;
+    let plot_height = true_height
+        .max((true_height * MAX_STRETCH).min(180.0))
+        .min(640.0);
+    let height = TITLE + X_LABELS + 2 * MARGIN + plot_height.round() as u32;
+    let title = match (picture.range, &picture.not_landed) {
+        (Some(range), _) => format!(
+            "Trajectory — preset {}: range {range:.2} m, apex {:.2} m",
+            picture.preset, picture.apex
+        ),
+        (None, why) => format!(
+            "Trajectory — preset {}: no range, the ball {}; apex {:.2} m",
+            picture.preset,
+            why.as_deref().unwrap_or("did not land"),
+            picture.apex
+        ),
+    };
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (WIDTH, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(drawn)?;
+        let (top, body) = root.split_vertically(TITLE);
+        top.draw(&Text::new(
+            title,
+            (12, 12),
+            (FONT, 17).into_font().style(FontStyle::Bold),
+        ))
+        .map_err(drawn)?;
+        let mut chart = ChartBuilder::on(&body)
+            .margin(MARGIN)
+            .x_label_area_size(X_LABELS)
+            .y_label_area_size(Y_LABELS)
+            .build_cartesian_2d(x_min..x_max, 0.0..y_max)
+            .map_err(drawn)?;
+        let x_label = tick_label(x_max - x_min);
+        let y_label = tick_label(y_max);
+        chart
+            .configure_mesh()
+            .x_desc("x (m)")
+            .y_desc("y (m)")
+            .x_label_formatter(&x_label)
+            .y_label_formatter(&y_label)
+            .axis_desc_style((FONT, 14))
+            .label_style((FONT, 12))
+            .light_line_style(RGBColor(240, 240, 240))
+            .bold_line_style(RGBColor(220, 220, 220))
+            .draw()
+            .map_err(drawn)?;
+        for (k, path) in picture.paths.iter().enumerate() {
+            let color = series_color(k);
+            chart
+                .draw_series(LineSeries::new(
+                    path.points.iter().copied(),
+                    color.stroke_width(2),
+                ))
+                .map_err(drawn)?
+                .label(path.name.clone())
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                });
+        }
+        if let Some(f) = fence {
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    vec![(f.distance, 0.0), (f.distance, f.height)],
+                    NOW.stroke_width(4),
+                )))
+                .map_err(drawn)?
+                .label(format!(
+                    "fence: {} m out, {} m high",
+                    trimmed(f.distance),
+                    trimmed(f.height)
+                ))
+                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], NOW.stroke_width(4)));
+        }
+        let (xs, ys) = chart.plotting_area().get_pixel_range();
+        let pixels: Vec<(i32, i32)> = points().map(|p| chart.backend_coord(p)).collect();
+        let corner = emptiest_corner(
+            pixels.into_iter(),
+            [xs.start, ys.start, xs.end, ys.end],
+            (260, 24 + 18 * (picture.paths.len() as i32 + 1)),
+        );
+        chart
+            .configure_series_labels()
+            .position(corner)
+            .label_font((FONT, 12))
+            .background_style(WHITE.mix(0.85))
+            .border_style(RGBColor(180, 180, 180))
+            .draw()
+            .map_err(drawn)?;
+        root.present().map_err(drawn)?;
+    }
+    Ok(svg)
+}

@@ -1,0 +1,115 @@
+//! Key `x`: the chart in view written as SVG to a fresh file in the current
+//! folder (`homerun-trajectory-1.svg`, `-2`, …; never over an existing
+//! file), with where it went, or why not, in the status line. The trajectory
+//! for tabs 1 and 3, the range surface for tab 2, the figure for tab 4. A
+//! write of ~50 KB is done at once, on the UI thread.
+
+use std::path::{Path, PathBuf};
+
+use super::App;
+use crate::picture::{self, FlightPath, PictureError, SurfacePicture, TrajectoryPicture};
+use crate::tui::layout::Tab;
+
+/// The most files of one kind `x` numbers before it gives up.
+const MAX_NUMBER: u32 = 10_000;
+
+/// `homerun-{kind}-{n}.svg` in `dir`, for the smallest n ≥ 1 not taken.
+pub fn fresh_path(dir: &Path, kind: &str) -> Option<PathBuf> {
+    (1..=MAX_NUMBER)
+        .map(|n| dir.join(format!("homerun-{kind}-{n}.svg")))
+        .find(|path| !path.exists() && path.symlink_metadata().is_err())
+}
+
+impl App {
+    /// Writes the chart in view to a fresh file in the current folder.
+    pub(super) fn export(&mut self) {
+        // The folder in full, so that the message says where to look.
+        let here = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
+        self.message = Some(match self.export_to(&here) {
+            Ok(path) => (format!("wrote {}", path.display()), false),
+            Err(why) => (format!("x: no SVG written: {why}"), true),
+        });
+    }
+
+    /// Writes the chart in view to a fresh file in `dir`: its path, or why not.
+    pub fn export_to(&self, dir: &Path) -> Result<PathBuf, String> {
+        let (kind, svg) = self.chart_svg()?;
+        let svg = svg.map_err(|e: PictureError| e.to_string())?;
+        let path = fresh_path(dir, &kind).ok_or_else(|| {
+            format!("{MAX_NUMBER} homerun-{kind}-N.svg files already in the folder")
+        })?;
+        crate::atomic_file::write(&path, svg.as_bytes())
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok(path)
+    }
+
+    /// The chart in view as SVG, with its kind for the file's name.
+    fn chart_svg(&self) -> Result<(String, Result<String, PictureError>), String> {
+        match self.tab {
+            Tab::Surface => {
+                let state = self
+                    .surface
+                    .as_ref()
+                    .ok_or("the range surface is still being computed")?;
+                let optimum = self
+                    .optimum
+                    .filter(|o| o.done && o.best.range.is_finite())
+                    .map(|o| (o.best.undercut, o.best.swing_angle, o.best.range));
+                let picture = SurfacePicture {
+                    surface: &state.surface,
+                    title: format!("Range over (E, ψ) — preset {}", self.preset_name),
+                    conditions: crate::analysis::figures::conditions(
+                        &self.preset_name,
+                        &self.scene,
+                    )
+                    .split_once(": ")
+                    .map_or(String::new(), |(_, rest)| rest.to_owned()),
+                    now: Some((self.scene.bat.undercut, self.scene.bat.swing_angle)),
+                    optimum,
+                    paper: None,
+                    level: self.fence.map(|f| f.distance),
+                };
+                Ok(("surface".into(), picture::surface_svg(&picture)))
+            }
+            Tab::Figures => {
+                let state = self
+                    .figure
+                    .as_ref()
+                    .ok_or("the figure is still being computed")?;
+                let data = state.data.as_ref().map_err(Clone::clone)?;
+                Ok((
+                    format!("figure{}", data.number),
+                    picture::table_figure_svg(data, &self.scene, &self.preset_name),
+                ))
+            }
+            Tab::Flight | Tab::Impact => {
+                let flight = &self.swing.flight;
+                let mut paths = vec![FlightPath {
+                    name: "now".into(),
+                    points: self.path.clone(),
+                }];
+                if !self.optimal_path.is_empty() {
+                    paths.push(FlightPath {
+                        name: "best".into(),
+                        points: self.optimal_path.clone(),
+                    });
+                }
+                if let Some(pin) = &self.pin {
+                    paths.push(FlightPath {
+                        name: "pin".into(),
+                        points: pin.path.clone(),
+                    });
+                }
+                let picture = TrajectoryPicture {
+                    preset: self.preset_name.clone(),
+                    paths,
+                    range: flight.landed.then_some(flight.range),
+                    apex: flight.apex,
+                    not_landed: (!flight.landed).then(|| "did not land".to_owned()),
+                    fence: self.fence,
+                };
+                Ok(("trajectory".into(), picture::trajectory_svg(&picture)))
+            }
+        }
+    }
+}
