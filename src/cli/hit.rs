@@ -42,6 +42,7 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
                 "launch_angle": impact.launch_angle(),
             },
             "flight": flight_json(flight, unlanded),
+            "environment": environment_json(scene),
         }));
     }
     let bat = &scene.bat;
@@ -103,7 +104,7 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
 
 /// A flight in JSON: its range (null if it did not land, with the reason in
 /// `why_not_landed`), time, apex and landing, and `landed`.
-fn flight_json(flight: &FlightSummary, unlanded: Option<String>) -> serde_json::Value {
+pub(super) fn flight_json(flight: &FlightSummary, unlanded: Option<String>) -> serde_json::Value {
     let mut json = serde_json::json!({
         "range": flight.landed.then_some(flight.range),
         "flight_time": flight.flight_time,
@@ -116,6 +117,22 @@ fn flight_json(flight: &FlightSummary, unlanded: Option<String>) -> serde_json::
         json["why_not_landed"] = why.into();
     }
     json
+}
+
+/// The air in force, as every command's JSON reports it: ρ and ν, and the
+/// weather they were derived from (null when they were given).
+pub(super) fn environment_json(scene: &Scene) -> serde_json::Value {
+    let air = scene.environment.air();
+    serde_json::json!({
+        "air_density": air.density,
+        "kinematic_viscosity": air.kinematic_viscosity,
+        "atmosphere": air.atmosphere.map(|a| serde_json::json!({
+            "temperature": a.temperature,
+            "elevation": a.elevation,
+            "pressure": a.pressure,
+            "humidity": a.humidity,
+        })),
+    })
 }
 
 /// Lines under a label, as `hit` and `optimize` print them: "launch   …".
@@ -139,7 +156,7 @@ pub(super) fn launch_text(impact: &Impact) -> String {
 }
 
 /// A batted spin in words: backspin is positive.
-fn spin_text(spin: f64) -> String {
+pub(super) fn spin_text(spin: f64) -> String {
     if spin < 0.0 {
         format!("{:.2} rad/s of topspin", -spin)
     } else {
@@ -156,8 +173,8 @@ pub(super) fn trajectory(
     if !(2..=MAX_SAMPLES).contains(&samples) {
         return Err(UsageError::BadSamples { samples });
     }
-    let impact = Impact::new(scene);
-    let (flight, launch) = crate::model::launch(scene, &impact);
+    // A swing's flight or a batted ball's, as the scene is.
+    let (flight, launch, _, _) = crate::model::launch::scene_start(scene);
     let options = Purpose::Readout.flight_options();
     let (summary, points) = crate::model::flight::trajectory(&flight, &launch, &options, samples);
     let end = points.last().map_or(0.0, |p| p.y);
@@ -185,6 +202,7 @@ pub(super) fn trajectory(
                 "flight_time": summary.flight_time,
                 "landed": summary.landed,
                 "points": table.json_rows(),
+                "environment": environment_json(scene),
             });
             if let Some(why) = unlanded {
                 json["why_not_landed"] = why.into();

@@ -2,8 +2,10 @@
 //!
 //! One file per command group; every table goes through [`table`].
 
+mod batch;
 mod bench;
 mod figure;
+mod fly;
 mod hit;
 mod optimize;
 mod presets;
@@ -14,8 +16,9 @@ mod table;
 mod table2;
 mod usage;
 
-use std::io::Write as _;
+use std::io::{IsTerminal as _, Write as _};
 use std::path::PathBuf;
+use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
@@ -65,6 +68,18 @@ pub enum Command {
         #[command(flatten)]
         scene: SceneArgs,
         /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// A batted ball's flight from its launch (launch.speed, .angle, .spin), or
+    /// a swing's launch and flight; --batch flies one launch per CSV row.
+    Fly {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// A CSV of launches, one per row (`-` for stdin): see the README.
+        #[arg(long, value_name = "FILE")]
+        batch: Option<String>,
+        /// Print JSON instead of text (with --batch: one JSON object per line).
         #[arg(long)]
         json: bool,
     },
@@ -238,6 +253,19 @@ pub enum UsageError {
     NotHeadless,
     #[error("writing the output: {0}")]
     Output(#[source] std::io::Error),
+    #[error(
+        "{command} needs a swing scene (pitch → impact → flight), and preset {preset} with these --set is a batted ball (it gives launch.*): fly it with `homerun fly` or `homerun trajectory`"
+    )]
+    NotASwing {
+        command: &'static str,
+        preset: String,
+    },
+    #[error(
+        "{0}: a launch key makes a batted ball, which has no swing to optimise; to fly many launches use `homerun fly --batch`"
+    )]
+    LaunchSwept(&'static str),
+    #[error("--batch {input}: {message}")]
+    Batch { input: String, message: String },
 }
 
 /// What is wrong with an A..B window.
@@ -275,9 +303,34 @@ fn checked_presets_dir(cli: &Cli) -> Result<Option<PathBuf>, UsageError> {
     Ok(dir)
 }
 
-/// Runs a headless command, writing to stdout. A closed pipe (`| head`)
+/// Runs a headless command, writing to stdout, and gives the exit status: 0,
+/// or 1 when some rows of `fly --batch` failed. A closed pipe (`| head`)
 /// ends the output quietly.
-pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
+pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
+    if let Command::Fly {
+        scene,
+        batch: Some(source),
+        json,
+    } = command
+    {
+        let preset = scene.resolve(checked_presets_dir(cli)?.as_deref())?;
+        scene::check_path("--batch", source)?;
+        let stdout = std::io::stdout().lock();
+        let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
+        let mut err = std::io::stderr().lock();
+        let erase = err.is_terminal();
+        let outcome = batch::run(
+            &preset,
+            source,
+            *json,
+            &mut batch::Sinks {
+                out: &mut out,
+                err: &mut err,
+                erase,
+            },
+        )?;
+        return Ok(ExitCode::from(outcome.exit_status()));
+    }
     let text = render(cli, command)?;
     let mut stdout = std::io::stdout().lock();
     match stdout
@@ -285,7 +338,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
         .and_then(|()| stdout.flush())
     {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
-        _ => Ok(()),
+        _ => Ok(ExitCode::SUCCESS),
     }
 }
 
@@ -294,10 +347,12 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
     let dir = checked_presets_dir(cli)?;
     let dir = dir.as_deref();
     match command {
-        Command::Hit { scene, json } => Ok(hit::hit(&scene.resolve(dir)?.scene, *json)),
-        Command::Optimize { scene, json } => {
-            Ok(optimize::optimum(&scene.resolve(dir)?.scene, *json))
-        }
+        Command::Hit { scene, json } => Ok(hit::hit(&scene.resolve_swing("hit", dir)?, *json)),
+        Command::Optimize { scene, json } => Ok(optimize::optimum(
+            &scene.resolve_swing("optimize", dir)?,
+            *json,
+        )),
+        Command::Fly { scene, json, .. } => Ok(fly::fly(&scene.resolve(dir)?, *json)),
         Command::Table2 { json } => Ok(elapsed("table2", || table2::table2(*json))),
         Command::Bench { json, quick } => Ok(elapsed("bench", || bench::output(*json, *quick))),
         Command::Sweep {
@@ -309,7 +364,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             json,
             csv,
         } => optimize::sweep(
-            &scene.resolve(dir)?.scene,
+            &scene.resolve_swing("sweep", dir)?,
             key,
             (*from, *to, *steps),
             Format::new(*json, *csv),
@@ -322,7 +377,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             json,
             csv,
         } => {
-            let scene = scene.resolve(dir)?.scene;
+            let scene = scene.resolve_swing("surface", dir)?;
             let cells = surface::parse_grid(undercut, swing_angle, grid)?;
             surface::surface(&scene, cells, grid, Format::new(*json, *csv))
         }

@@ -107,6 +107,11 @@ pub(super) fn surface(
         study::surface_within(scene, grid, Purpose::Surface, SURFACE_FLIGHT_STEPS, &tick)
     })
     .map_err(|work| too_much(text, work))?;
+    if format == Format::Json {
+        let mut json = surface_json(&surface);
+        json["environment"] = super::hit::environment_json(scene);
+        return Ok(pretty(&json));
+    }
     Ok(render_surface(&surface, format))
 }
 
