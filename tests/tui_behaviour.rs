@@ -220,11 +220,12 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
             "curveball",
             "figure5",
             "mile-high",
+            "fly-ball",
             "broken",
             "quick"
         ]
     );
-    let broken = &items[5];
+    let broken = &items[6];
     assert!(
         broken.preset.is_none() && broken.detail.contains("bat.speed"),
         "{broken:?}"
@@ -233,7 +234,7 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
     for _ in 0..10 {
         key(&mut app, KeyCode::Char('k'));
     }
-    for _ in 0..5 {
+    for _ in 0..6 {
         key(&mut app, KeyCode::Char('j'));
     }
     key(&mut app, KeyCode::Enter);
