@@ -243,7 +243,7 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
         other => panic!("picker with the error, not {other:?}"),
     }
     assert_eq!(app.scene.bat.speed, 35.0);
-    for _ in 0..5 {
+    for _ in 0..6 {
         key(&mut app, KeyCode::Char('k'));
     }
     key(&mut app, KeyCode::Enter);

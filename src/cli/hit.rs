@@ -120,19 +120,22 @@ pub(super) fn flight_json(flight: &FlightSummary, unlanded: Option<String>) -> s
 }
 
 /// The air in force, as every command's JSON reports it: ρ and ν, and the
-/// weather they were derived from (null when they were given).
+/// weather they were derived from (absent when they were given).
 pub(super) fn environment_json(scene: &Scene) -> serde_json::Value {
     let air = scene.environment.air();
-    serde_json::json!({
+    let mut json = serde_json::json!({
         "air_density": air.density,
         "kinematic_viscosity": air.kinematic_viscosity,
-        "atmosphere": air.atmosphere.map(|a| serde_json::json!({
+    });
+    if let Some(a) = air.atmosphere {
+        json["atmosphere"] = serde_json::json!({
             "temperature": a.temperature,
             "elevation": a.elevation,
             "pressure": a.pressure,
             "humidity": a.humidity,
-        })),
-    })
+        });
+    }
+    json
 }
 
 /// Lines under a label, as `hit` and `optimize` print them: "launch   …".

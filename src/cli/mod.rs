@@ -71,18 +71,6 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// A batted ball's flight from its launch (launch.speed, .angle, .spin), or
-    /// a swing's launch and flight; --batch flies one launch per CSV row.
-    Fly {
-        #[command(flatten)]
-        scene: SceneArgs,
-        /// A CSV of launches, one per row (`-` for stdin): see the README.
-        #[arg(long, value_name = "FILE")]
-        batch: Option<String>,
-        /// Print JSON instead of text (with --batch: one JSON object per line).
-        #[arg(long)]
-        json: bool,
-    },
     /// The batted ball's path: time, x, y and C_D, sampled evenly in time.
     Trajectory {
         #[command(flatten)]
@@ -94,6 +82,18 @@ pub enum Command {
         json: bool,
         #[arg(long)]
         csv: bool,
+    },
+    /// A batted ball's flight from its launch (launch.speed, .angle, .spin), or
+    /// a swing's launch and flight; --batch flies one launch per CSV row.
+    Fly {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// A CSV of launches, one per row (`-` for stdin): see the README.
+        #[arg(long, value_name = "FILE")]
+        batch: Option<String>,
+        /// Print JSON instead of text (with --batch: one JSON object per line).
+        #[arg(long)]
+        json: bool,
     },
     /// Every input key: symbol, unit, accepted range and the fastball's value.
     Keys,
