@@ -17,11 +17,11 @@ fn main() -> ExitCode {
     };
     let command = cli.command.as_ref().unwrap_or(&default);
     let result = match command {
-        Command::Tui { preset } => explore(&cli, preset),
+        Command::Tui { preset } => explore(&cli, preset).map(|()| ExitCode::SUCCESS),
         command => cli::run(&cli, command),
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(status) => status,
         Err(error) => refuse(&error),
     }
 }

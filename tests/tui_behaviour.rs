@@ -222,11 +222,12 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
             "curveball",
             "figure5",
             "mile-high",
+            "fly-ball",
             "broken",
             "quick"
         ]
     );
-    let broken = &items[5];
+    let broken = &items[6];
     assert!(
         broken.preset.is_none() && broken.detail.contains("bat.speed"),
         "{broken:?}"
@@ -235,7 +236,7 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
     for _ in 0..10 {
         key(&mut app, KeyCode::Char('k'));
     }
-    for _ in 0..5 {
+    for _ in 0..6 {
         key(&mut app, KeyCode::Char('j'));
     }
     key(&mut app, KeyCode::Enter);
@@ -244,7 +245,7 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
         other => panic!("picker with the error, not {other:?}"),
     }
     assert_eq!(app.scene.bat.speed, 35.0);
-    for _ in 0..5 {
+    for _ in 0..6 {
         key(&mut app, KeyCode::Char('k'));
     }
     key(&mut app, KeyCode::Enter);

@@ -71,6 +71,20 @@ pub struct Report {
     pub explorer: Vec<ExplorerRow>,
     /// The tolerances each consumer uses now (src/precision.rs).
     pub defaults: Vec<DefaultRow>,
+    /// `fly --batch`'s flights: rows per second on one thread and on all.
+    pub batch: Vec<BatchRow>,
+}
+
+/// A batch of batted balls, each flown as a `fly --batch` row is (readout
+/// precision, with its height at the fence), in parallel.
+#[derive(Clone, Debug, Serialize)]
+pub struct BatchRow {
+    pub rows: usize,
+    pub threads: usize,
+    /// Median wall time for the whole batch.
+    pub time_ms: f64,
+    pub cpu_ms: Option<f64>,
+    pub rows_per_second: f64,
 }
 
 /// The reference solve checked against reference/model.py.
@@ -596,5 +610,58 @@ pub fn run(quick: bool) -> Report {
         surface: surfaces(effort, threads, quick),
         explorer: explorer(effort),
         defaults: defaults(reference),
+        batch: batch(effort, threads, quick),
     }
+}
+
+/// Typical Statcast fly balls and line drives: 30–50 m/s (67–112 mph),
+/// 5–45°, 1000–3000 rpm, spread over a grid.
+fn batch_scenes(rows: usize) -> Vec<Scene> {
+    (0..rows)
+        .map(|i| {
+            let f = |period: usize| (i % period) as f64 / (period - 1) as f64;
+            Scene::default().with_launch(crate::model::launch::BattedBall {
+                speed: 30.0 + 20.0 * f(17),
+                angle: (5.0 + 40.0 * f(13)).to_radians(),
+                spin: (1000.0 + 2000.0 * f(11)) * std::f64::consts::TAU / 60.0,
+            })
+        })
+        .collect()
+}
+
+/// `fly --batch`'s work apart from reading and writing the text (a few
+/// percent of it): every row's flight to the fence and the ground.
+fn batch(effort: Effort, threads: usize, quick: bool) -> Vec<BatchRow> {
+    use rayon::prelude::*;
+    let rows = if quick { 2_000 } else { 20_000 };
+    let scenes = batch_scenes(rows);
+    let fence = crate::preset::FIELD_KEYS[0].default;
+    let mut counts = vec![1, threads];
+    counts.dedup();
+    counts
+        .into_iter()
+        .map(|n| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .expect("a thread pool");
+            let (time, cpu) = time_median(effort.surface_runs, 1, || {
+                pool.install(|| {
+                    scenes
+                        .par_iter()
+                        .map(|s| {
+                            crate::model::launch::height_at_distance(s, fence, Purpose::Readout)
+                        })
+                        .collect::<Vec<_>>()
+                })
+            });
+            BatchRow {
+                rows,
+                threads: n,
+                time_ms: time * 1e3,
+                cpu_ms: cpu.map(|c| c * 1e3),
+                rows_per_second: rows as f64 / time,
+            }
+        })
+        .collect()
 }

@@ -179,6 +179,22 @@ fn render(report: &Report) -> String {
     }
     let _ = writeln!(
         out,
+        "\nfly --batch: batted balls flown as its rows are (readout precision, to the fence and the ground)\n{:>6} {:>7} {:>8} {:>8} {:>11}",
+        "rows", "threads", "time_ms", "cpu_ms", "rows_per_s"
+    );
+    for row in &report.batch {
+        let _ = writeln!(
+            out,
+            "{:>6} {:>7} {:>8.1} {:>8} {:>11.0}",
+            row.rows,
+            row.threads,
+            row.time_ms,
+            or_dash(row.cpu_ms, |c| format!("{c:.1}")),
+            row.rows_per_second
+        );
+    }
+    let _ = writeln!(
+        out,
         "\n(all cores = {} threads; time = median wall clock, cpu = median CPU time summed over threads; \
          on a machine shared with other work, the wall clock counts waiting for a core)",
         report.threads

@@ -4,6 +4,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+use super::hit::environment_json;
 use super::progress::{self, Work};
 use super::surface::{render_surface, surface_json};
 use super::table::{Align, Cell, Column, Digits, Table, Width, trim_lines};
@@ -26,6 +27,10 @@ pub(super) fn figure(
         set: set.to_vec(),
     };
     let preset = args.resolve(dir)?;
+    // Figs. 3–4 are the aerodynamic curves; the others need a swing.
+    if number >= 5 {
+        super::scene::swing_only("figure", &preset)?;
+    }
     let what = format!("figure {number}");
     let work = Work {
         what: &what,
@@ -41,14 +46,19 @@ pub(super) fn figure(
             &preset.name,
         )?);
     }
+    let environment = environment_json(&preset.scene);
     Ok(match figure {
-        Figure::Table(data) => render(&data, format),
-        Figure::Surface(surface) => render_figure7(&surface, format),
+        Figure::Table(data) => render(&data, format, environment),
+        Figure::Surface(surface) => render_figure7(&surface, format, environment),
     })
 }
 
 /// Fig. 7: the `surface` command's output, with the optimum O beside the paper's.
-fn render_figure7(figure: &SurfaceFigure, format: Format) -> String {
+fn render_figure7(
+    figure: &SurfaceFigure,
+    format: Format,
+    environment: serde_json::Value,
+) -> String {
     let o = &figure.optimum;
     let (undercut, swing_angle, range) = figure.paper;
     match format {
@@ -69,6 +79,7 @@ fn render_figure7(figure: &SurfaceFigure, format: Format) -> String {
                 })
             },
             "paper": {"undercut": undercut, "swing_angle": swing_angle, "range": range},
+            "environment": environment,
         })),
         Format::Text => {
             let mut out = heading(figure.number, &figure.title, &figure.conditions);
@@ -128,16 +139,16 @@ fn table(data: &FigureData) -> Table {
     }
 }
 
-fn render(data: &FigureData, format: Format) -> String {
+fn render(data: &FigureData, format: Format, environment: serde_json::Value) -> String {
     let table = table(data);
     match format {
-        Format::Json => json(data, &table),
+        Format::Json => json(data, &table, environment),
         Format::Csv => table.csv(),
         Format::Text => text(data, table),
     }
 }
 
-fn json(data: &FigureData, table: &Table) -> String {
+fn json(data: &FigureData, table: &Table, environment: serde_json::Value) -> String {
     let comparisons: Vec<serde_json::Value> = data
         .comparisons
         .iter()
@@ -155,6 +166,7 @@ fn json(data: &FigureData, table: &Table) -> String {
         "rows": table.json_rows(),
         "paper": comparisons,
         "notes": data.notes,
+        "environment": environment,
     }))
 }
 

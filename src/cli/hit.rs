@@ -44,6 +44,7 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
                 "launch_angle": impact.launch_angle(),
             },
             "flight": flight_json(flight, unlanded),
+            "environment": environment_json(scene),
         }));
     }
     let bat = &scene.bat;
@@ -105,7 +106,7 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
 
 /// A flight in JSON: its range (null if it did not land, with the reason in
 /// `why_not_landed`), time, apex and landing, and `landed`.
-fn flight_json(flight: &FlightSummary, unlanded: Option<String>) -> serde_json::Value {
+pub(super) fn flight_json(flight: &FlightSummary, unlanded: Option<String>) -> serde_json::Value {
     let mut json = serde_json::json!({
         "range": flight.landed.then_some(flight.range),
         "flight_time": flight.flight_time,
@@ -116,6 +117,25 @@ fn flight_json(flight: &FlightSummary, unlanded: Option<String>) -> serde_json::
     });
     if let Some(why) = unlanded {
         json["why_not_landed"] = why.into();
+    }
+    json
+}
+
+/// The air in force, as every command's JSON reports it: ρ and ν, and the
+/// weather they were derived from (absent when they were given).
+pub(super) fn environment_json(scene: &Scene) -> serde_json::Value {
+    let air = scene.environment.air();
+    let mut json = serde_json::json!({
+        "air_density": air.density,
+        "kinematic_viscosity": air.kinematic_viscosity,
+    });
+    if let Some(a) = air.atmosphere {
+        json["atmosphere"] = serde_json::json!({
+            "temperature": a.temperature,
+            "elevation": a.elevation,
+            "pressure": a.pressure,
+            "humidity": a.humidity,
+        });
     }
     json
 }
@@ -141,7 +161,7 @@ pub(super) fn launch_text(impact: &Impact) -> String {
 }
 
 /// A batted spin in words: backspin is positive.
-fn spin_text(spin: f64) -> String {
+pub(super) fn spin_text(spin: f64) -> String {
     if spin < 0.0 {
         format!("{:.2} rad/s of topspin", -spin)
     } else {
@@ -158,8 +178,8 @@ fn sampled(
     if !(2..=MAX_SAMPLES).contains(&samples) {
         return Err(UsageError::BadSamples { samples });
     }
-    let impact = Impact::new(scene);
-    let (flight, launch) = crate::model::launch(scene, &impact);
+    // A swing's flight or a batted ball's, as the scene is.
+    let (flight, launch, _, _) = crate::model::launch::scene_start(scene);
     let options = Purpose::Readout.flight_options();
     Ok(crate::model::flight::trajectory(
         &flight, &launch, &options, samples,
@@ -219,6 +239,7 @@ pub(super) fn trajectory(
                 "flight_time": summary.flight_time,
                 "landed": summary.landed,
                 "points": table.json_rows(),
+                "environment": environment_json(scene),
             });
             if let Some(why) = unlanded {
                 json["why_not_landed"] = why.into();

@@ -2,8 +2,10 @@
 //!
 //! One file per command group; every table goes through [`table`].
 
+mod batch;
 mod bench;
 mod figure;
+mod fly;
 mod hit;
 mod optimize;
 mod presets;
@@ -15,8 +17,9 @@ mod table;
 mod table2;
 mod usage;
 
-use std::io::Write as _;
+use std::io::{IsTerminal as _, Write as _};
 use std::path::PathBuf;
+use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
@@ -83,6 +86,18 @@ pub enum Command {
         /// Write the picture as SVG to FILE instead (atomically; "wrote FILE" on stderr).
         #[arg(long, value_name = "FILE", conflicts_with_all = ["json", "csv"])]
         svg: Option<PathBuf>,
+    },
+    /// A batted ball's flight from its launch (launch.speed, .angle, .spin), or
+    /// a swing's launch and flight; --batch flies one launch per CSV row.
+    Fly {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// A CSV of launches, one per row (`-` for stdin): see the README.
+        #[arg(long, value_name = "FILE")]
+        batch: Option<String>,
+        /// Print JSON instead of text (with --batch: one JSON object per line).
+        #[arg(long)]
+        json: bool,
     },
     /// Every input key: symbol, unit, accepted range and the fastball's value.
     Keys,
@@ -256,6 +271,19 @@ pub enum UsageError {
     /// An SVG that cannot be written where asked: the path and why.
     #[error("--svg {path}: {reason}")]
     SvgFile { path: String, reason: String },
+    #[error(
+        "{command} needs a swing scene (pitch → impact → flight), and preset {preset} with these --set is a batted ball (it gives launch.*): fly it with `homerun fly` or `homerun trajectory`"
+    )]
+    NotASwing {
+        command: &'static str,
+        preset: String,
+    },
+    #[error(
+        "{0}: a launch key makes a batted ball, which has no swing to optimise; to fly many launches use `homerun fly --batch`"
+    )]
+    LaunchSwept(&'static str),
+    #[error("--batch {input}: {message}")]
+    Batch { input: String, message: String },
 }
 
 /// What is wrong with an A..B window.
@@ -293,9 +321,34 @@ fn checked_presets_dir(cli: &Cli) -> Result<Option<PathBuf>, UsageError> {
     Ok(dir)
 }
 
-/// Runs a headless command, writing to stdout. A closed pipe (`| head`)
+/// Runs a headless command, writing to stdout, and gives the exit status: 0,
+/// or 1 when some rows of `fly --batch` failed. A closed pipe (`| head`)
 /// ends the output quietly.
-pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
+pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
+    if let Command::Fly {
+        scene,
+        batch: Some(source),
+        json,
+    } = command
+    {
+        let preset = scene.resolve(checked_presets_dir(cli)?.as_deref())?;
+        scene::check_path("--batch", source)?;
+        let stdout = std::io::stdout().lock();
+        let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
+        let mut err = std::io::stderr().lock();
+        let erase = err.is_terminal();
+        let outcome = batch::run(
+            &preset,
+            source,
+            *json,
+            &mut batch::Sinks {
+                out: &mut out,
+                err: &mut err,
+                erase,
+            },
+        )?;
+        return Ok(ExitCode::from(outcome.exit_status()));
+    }
     let svg = svg_target(command);
     // A folder that cannot take the file is refused before any work.
     if let Some(path) = svg {
@@ -305,7 +358,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
     if let Some(path) = svg {
         svg_file::write(path, &text)?;
         eprintln!("wrote {}", svg_file::shown(path));
-        return Ok(());
+        return Ok(ExitCode::SUCCESS);
     }
     let mut stdout = std::io::stdout().lock();
     match stdout
@@ -313,7 +366,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<(), UsageError> {
         .and_then(|()| stdout.flush())
     {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
-        _ => Ok(()),
+        _ => Ok(ExitCode::SUCCESS),
     }
 }
 
@@ -333,10 +386,12 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
     let dir = checked_presets_dir(cli)?;
     let dir = dir.as_deref();
     match command {
-        Command::Hit { scene, json } => Ok(hit::hit(&scene.resolve(dir)?.scene, *json)),
-        Command::Optimize { scene, json } => {
-            Ok(optimize::optimum(&scene.resolve(dir)?.scene, *json))
-        }
+        Command::Hit { scene, json } => Ok(hit::hit(&scene.resolve_swing("hit", dir)?, *json)),
+        Command::Optimize { scene, json } => Ok(optimize::optimum(
+            &scene.resolve_swing("optimize", dir)?,
+            *json,
+        )),
+        Command::Fly { scene, json, .. } => Ok(fly::fly(&scene.resolve(dir)?, *json)),
         Command::Table2 { json } => Ok(elapsed("table2", || table2::table2(*json))),
         Command::Bench { json, quick, svg } => {
             elapsed("bench", || bench::output(*json, *quick, svg.is_some()))
@@ -350,7 +405,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             json,
             csv,
         } => optimize::sweep(
-            &scene.resolve(dir)?.scene,
+            &scene.resolve_swing("sweep", dir)?,
             key,
             (*from, *to, *steps),
             Format::new(*json, *csv),
@@ -365,6 +420,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             svg,
         } => {
             let preset = scene.resolve(dir)?;
+            scene::swing_only("surface", &preset)?;
             let cells = surface::parse_grid(undercut, swing_angle, grid)?;
             if svg.is_some() {
                 return surface::surface_svg(&preset, cells, grid);

@@ -1,6 +1,6 @@
 //! The optimum: `optimize` (one scene) and `sweep` (against one input).
 
-use super::hit::{labelled, launch_text};
+use super::hit::{environment_json, labelled, launch_text};
 use super::progress::{self, Work};
 use super::table::{Align, Cell, Column, Digits, Table, Width};
 use super::{Format, UsageError, pretty};
@@ -10,6 +10,7 @@ use crate::analysis::optimum::{OptimizerSettings, Status};
 use crate::analysis::paper::{Best, best_swing};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study;
+use crate::model::keys::{AIR_KEYS, ATMOSPHERE_KEYS, LAUNCH_KEYS};
 
 /// The most points a sweep takes: its work budget
 /// ([`study::SWEEP_FLIGHT_STEPS`]) shared by 200 points still gives each five
@@ -51,6 +52,7 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
             "evaluations": optimum.evaluations,
             "converged": optimum.converged,
             "landed": landed,
+            "environment": environment_json(scene),
         });
         if !optimum.landed {
             no_optimum(&mut json);
@@ -122,6 +124,9 @@ pub(super) fn sweep(
     }
     // The key first (unknown, or not sweepable), then the bounds.
     let key = super::scene::checked_key(key)?;
+    if let Some(launch) = LAUNCH_KEYS.iter().find(|k| k.name == key) {
+        return Err(UsageError::LaunchSwept(launch.name));
+    }
     study::sweep_scenes(scene, key, &[])?;
     for (flag, value) in [("--from", from), ("--to", to)] {
         if !value.is_finite() {
@@ -144,15 +149,27 @@ pub(super) fn sweep(
             "key": key,
             "unit": unit,
             "points": points,
+            "environment": environment_json(scene),
         });
-        for (point, p) in json["points"]
+        // A swept ρ, ν or weather key changes the air from point to point.
+        let air_swept = AIR_KEYS.contains(&key) || ATMOSPHERE_KEYS.contains(&key);
+        let scenes = if air_swept {
+            study::sweep_scenes(scene, key, &values)?
+        } else {
+            Vec::new()
+        };
+        for (index, (point, p)) in json["points"]
             .as_array_mut()
             .into_iter()
             .flatten()
             .zip(&points)
+            .enumerate()
         {
             if !p.landed {
                 no_optimum(point);
+            }
+            if let Some(scene) = scenes.get(index) {
+                point["environment"] = environment_json(scene);
             }
         }
         return Ok(pretty(&json));

@@ -31,6 +31,10 @@ impl Progress {
     }
 }
 
+/// A total of steps not known in advance (a stream's rows): the line counts
+/// them without a total.
+pub const UNCOUNTED: usize = usize::MAX;
+
 /// What the line says about the work: "sweep" and, if the steps are
 /// counted, how many there are and what they are ("points").
 #[derive(Clone, Copy)]
@@ -45,6 +49,9 @@ impl Work<'_> {
     fn line(&self, done: usize, elapsed: Duration) -> String {
         let seconds = elapsed.as_secs_f64();
         match self.steps {
+            Some((UNCOUNTED, unit)) => {
+                format!("homerun: {} {done} {unit}, {seconds:.1} s", self.what)
+            }
             Some((total, unit)) => {
                 format!(
                     "homerun: {} {done} of {total} {unit}, {seconds:.1} s",

@@ -6,6 +6,7 @@ use std::path::Path;
 
 use super::{SceneArgs, UsageError};
 use crate::model::keys::{DRAG_KEY, InputBatch, InputError, LIFT_KEY};
+use crate::model::launch::SceneKind;
 use crate::model::scene::Scene;
 use crate::preset::{self, FIELD_KEYS, Fence, Preset, escape_for_terminal};
 
@@ -62,6 +63,31 @@ impl SceneArgs {
         }
         preset.scene.validate()?;
         Ok(preset)
+    }
+}
+
+impl SceneArgs {
+    /// [`SceneArgs::resolve`]'s scene, refused (naming `command`) if it is a
+    /// batted ball: `command` needs the pitch, the bat and the impact.
+    pub fn resolve_swing(
+        &self,
+        command: &'static str,
+        presets_dir: Option<&Path>,
+    ) -> Result<Scene, UsageError> {
+        let preset = self.resolve(presets_dir)?;
+        swing_only(command, &preset)?;
+        Ok(preset.scene)
+    }
+}
+
+/// Refuses a batted-ball scene for a command that needs a swing.
+pub(super) fn swing_only(command: &'static str, preset: &Preset) -> Result<(), UsageError> {
+    match preset.scene.kind {
+        SceneKind::Swing => Ok(()),
+        SceneKind::BattedBall => Err(UsageError::NotASwing {
+            command,
+            preset: escape_for_terminal(&preset.name),
+        }),
     }
 }
 

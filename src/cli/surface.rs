@@ -102,7 +102,13 @@ pub(super) fn surface(
     text: &str,
     format: Format,
 ) -> Result<String, UsageError> {
-    Ok(render_surface(&computed(scene, grid, text)?, format))
+    let surface = computed(scene, grid, text)?;
+    if format == Format::Json {
+        let mut json = surface_json(&surface);
+        json["environment"] = super::hit::environment_json(scene);
+        return Ok(pretty(&json));
+    }
+    Ok(render_surface(&surface, format))
 }
 
 /// The surface within its work budget, with a progress line.

@@ -1,6 +1,7 @@
 //! The paper's model, one file per phase: pitch (Eq. 3–4) → impact
 //! (Eq. 1–2, 5–23) → flight (Eq. 25–29), with the aerodynamic models in
-//! `aero` and the air from the weather in `atmosphere`; the inputs in `scene`
+//! `aero` and the air from the weather in `atmosphere`; a batted ball flown
+//! from its launch alone, and which of the two a scene is, in `launch`; the inputs in `scene`
 //! and their names, bounds and validation in `keys`. It knows nothing of who asks or
 //! how precisely: callers pass [`FlightOptions`] (or anything that becomes
 //! them, such as `analysis::precision::Purpose`).
@@ -10,6 +11,7 @@ pub mod atmosphere;
 pub mod flight;
 pub mod impact;
 pub mod keys;
+pub mod launch;
 pub mod pitch;
 pub mod scene;
 
@@ -58,11 +60,13 @@ pub fn fly_launch(
     launch_spin: f64,
     options: impl Into<FlightOptions>,
 ) -> FlightSummary {
-    let start = Launch {
-        position: Vector2::new(0.0, scene.environment.contact_height),
-        velocity: Vector2::new(launch_angle.cos(), launch_angle.sin()) * launch_speed,
+    let batted = launch::BattedBall {
+        speed: launch_speed,
+        angle: launch_angle,
+        spin: launch_spin,
     };
-    flight::fly(&Flight::new(scene, launch_spin), &start, &options.into())
+    let (flight, start) = launch::start(scene, &batted);
+    flight::fly(&flight, &start, &options.into())
 }
 
 /// Just the range: what the optimiser and the heatmap need.

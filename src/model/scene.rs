@@ -1,10 +1,12 @@
-//! All inputs of one swing: pitch, bat, ball, environment and model choice.
+//! All inputs of one scene: pitch, bat, ball, environment and model choice,
+//! and for a batted ball its launch (see [`super::launch`]).
 //! Their names, bounds and validation are in [`super::keys`].
 
 use serde::{Deserialize, Serialize};
 
 use super::aero::{DragModel, LiftModel};
 use super::atmosphere::{Air, Atmosphere};
+use super::launch::{GivenLaunch, SceneKind};
 
 /// The pitched ball as it reaches the plate.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -123,6 +125,12 @@ pub struct Scene {
     /// none (the paper's constant spin).
     #[serde(default)]
     pub spin_decay: f64,
+    /// A swing (the paper's scene) or a batted ball flown from `launch`.
+    #[serde(default)]
+    pub kind: SceneKind,
+    /// The launch values a batted-ball scene gives (unused by a swing).
+    #[serde(default)]
+    pub launch: GivenLaunch,
 }
 
 impl Default for Scene {
@@ -164,6 +172,8 @@ impl Default for Scene {
             drag: DragModel::Sawicki2003,
             lift: LiftModel::Sawicki2003,
             spin_decay: 0.0,
+            kind: SceneKind::Swing,
+            launch: GivenLaunch::default(),
         }
     }
 }

@@ -52,6 +52,7 @@ impl FieldKey {
                 min: 0.0,
                 max,
                 min_exclusive: true,
+                max_exclusive: false,
             },
             default,
             get,

@@ -21,8 +21,13 @@ use file::{preset_files, size_text, through};
 
 use crate::model::aero::{DragModel, LiftModel};
 use crate::model::keys::{
-    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, InputBatch, InputError, Key, LIFT_KEY, all_keys,
+    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, InputBatch, InputError, Key, LAUNCH_KEYS, LIFT_KEY,
+    all_keys,
 };
+use crate::model::launch::SceneKind;
+
+/// The TOML table of a batted ball's launch: its presence makes one.
+const LAUNCH_SECTION: &str = "launch";
 use crate::model::scene::Scene;
 
 /// A fence to clear, drawn by the explorer (not part of the physics).
@@ -117,6 +122,7 @@ pub const BUNDLED: &[(&str, &str)] = &[
     ("curveball", include_str!("../../presets/curveball.toml")),
     ("figure5", include_str!("../../presets/figure5.toml")),
     ("mile-high", include_str!("../../presets/mile-high.toml")),
+    ("fly-ball", include_str!("../../presets/fly-ball.toml")),
 ];
 
 impl Preset {
@@ -162,6 +168,11 @@ impl Preset {
             let Some(entries) = value.as_table() else {
                 return Err(input(unknown(&escape_for_terminal(section))));
             };
+            // A `[launch]` table makes a batted ball, even an empty one
+            // (every launch value then from the swing's impact).
+            if section == LAUNCH_SECTION {
+                scene.kind = SceneKind::BattedBall;
+            }
             for (name, value) in entries {
                 let key = format!("{section}.{name}");
                 if key == DRAG_KEY || key == LIFT_KEY {
@@ -249,7 +260,23 @@ impl Preset {
         // else ρ and ν themselves (never both: that would be refused).
         let weather = self.scene.environment.atmosphere().is_some();
         let skipped: &[&str] = if weather { &AIR_KEYS } else { &ATMOSPHERE_KEYS };
-        let keys: Vec<&Key> = all_keys().filter(|k| !skipped.contains(&k.name)).collect();
+        // A swing writes no `[launch]` (it would make a batted ball); a
+        // batted ball writes the launch values it gives, all three if it
+        // gives none (so that it reads back as a batted ball).
+        let launch = self.scene.launch;
+        let given = [launch.speed, launch.angle, launch.spin];
+        let launch_written = |name: &str| match self.scene.kind {
+            SceneKind::Swing => false,
+            SceneKind::BattedBall if launch.is_empty() => true,
+            SceneKind::BattedBall => LAUNCH_KEYS
+                .iter()
+                .zip(given)
+                .any(|(k, v)| k.name == name && v.is_some()),
+        };
+        let keys: Vec<&Key> = all_keys()
+            .filter(|k| !skipped.contains(&k.name))
+            .filter(|k| !LAUNCH_KEYS.iter().any(|l| l.name == k.name) || launch_written(k.name))
+            .collect();
         let mut sections: Vec<&str> = Vec::new();
         for key in &keys {
             let head = key.name.split_once('.').expect("keys are dotted").0;

@@ -18,7 +18,9 @@ mod batch;
 mod table;
 
 pub use batch::InputBatch;
-pub use table::{AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, EXTENDED_KEYS, KEYS, LIFT_KEY, all_keys};
+pub use table::{
+    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, EXTENDED_KEYS, KEYS, LAUNCH_KEYS, LIFT_KEY, all_keys,
+};
 
 /// A closed or half-open interval of accepted values.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -27,6 +29,8 @@ pub struct Bounds {
     pub max: f64,
     /// Whether `min` itself is excluded (speeds, masses, radii must be > 0).
     pub min_exclusive: bool,
+    /// Whether `max` itself is excluded (a launch angle stays below π/2).
+    pub max_exclusive: bool,
 }
 
 impl Bounds {
@@ -35,6 +39,7 @@ impl Bounds {
             min,
             max,
             min_exclusive: false,
+            max_exclusive: false,
         }
     }
     const fn positive(max: f64) -> Self {
@@ -42,6 +47,15 @@ impl Bounds {
             min: 0.0,
             max,
             min_exclusive: true,
+            max_exclusive: false,
+        }
+    }
+    const fn open(min: f64, max: f64) -> Self {
+        Bounds {
+            min,
+            max,
+            min_exclusive: true,
+            max_exclusive: true,
         }
     }
     pub fn contains(&self, value: f64) -> bool {
@@ -50,16 +64,22 @@ impl Bounds {
         } else {
             value >= self.min
         };
-        value.is_finite() && above && value <= self.max
+        let below = if self.max_exclusive {
+            value < self.max
+        } else {
+            value <= self.max
+        };
+        value.is_finite() && above && below
     }
 }
 
 impl std::fmt::Display for Bounds {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let open = if self.min_exclusive { '(' } else { '[' };
+        let close = if self.max_exclusive { ')' } else { ']' };
         write!(
             f,
-            "{open}{}, {}]",
+            "{open}{}, {}{close}",
             bound_text(self.min),
             bound_text(self.max)
         )
@@ -236,11 +256,20 @@ impl Scene {
         // that a bad temperature is named rather than the density it gave.
         let derived = self.environment.atmosphere().is_some();
         let later = |key: &&Key| derived && AIR_KEYS.contains(&key.name);
+        // Only the launch values given are inputs: one taken from the swing
+        // is an output of the (validated) swing, checked through it.
+        let launch = self.launch;
+        let given = [launch.speed, launch.angle, launch.spin];
+        let launch_keys = LAUNCH_KEYS
+            .iter()
+            .zip(given)
+            .filter_map(|(key, value)| value.map(|v| (key, v)));
         let ordered = all_keys()
-            .filter(|k| !later(k))
-            .chain(all_keys().filter(later));
-        for key in ordered {
-            let value = (key.get)(self);
+            .filter(|k| !later(k) && !LAUNCH_KEYS.iter().any(|l| l.name == k.name))
+            .chain(all_keys().filter(later))
+            .map(|key| (key, (key.get)(self)))
+            .chain(launch_keys);
+        for (key, value) in ordered {
             if !key.bounds.contains(value) {
                 return Err(InputError::OutOfRange {
                     key: key.name,

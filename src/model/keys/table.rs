@@ -5,6 +5,7 @@ use std::f64::consts::FRAC_PI_2;
 
 use super::{Bounds, Key};
 use crate::model::atmosphere::Atmosphere;
+use crate::model::launch::SceneKind;
 
 macro_rules! key {
     ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, $($field:ident).+) => {
@@ -305,9 +306,65 @@ pub const EXTENDED_KEYS: &[Key] = &[
     ),
 ];
 
-/// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`].
+/// The launch of a batted-ball scene (see [`crate::model::launch`]).
+/// Setting one makes the scene a batted ball; each one not set is read
+/// from the scene's own swing (the impact's launch), and reading one on a
+/// swing scene gives the impact's. Kept apart from [`KEYS`], which are the
+/// swing scene's rows in the explorer.
+pub const LAUNCH_KEYS: &[Key] = &[
+    // Above 0: a ball at rest does not fly. Up to 100 m/s, about Mach 0.3,
+    // where air stops behaving as incompressible (no drag model here knows
+    // compressibility) and nearly twice the fastest batted ball measured
+    // (122 mph, 54.6 m/s).
+    key!(
+        "launch.speed",
+        "V̂_bf",
+        "m/s",
+        "batted-ball launch speed (setting a launch key flies a batted ball: no pitch, no impact)",
+        Bounds::positive(100.0),
+        0.5,
+        get: |s| s.batted_ball().speed,
+        set: |s, v| {
+            s.launch.speed = Some(v);
+            s.kind = SceneKind::BattedBall;
+        }
+    ),
+    // Open at ±π/2: straight up or down is no batted ball to carry, and
+    // past it the ball leaves backwards.
+    key!(
+        "launch.angle",
+        "ζ",
+        "rad",
+        "launch angle above the horizontal",
+        Bounds::open(-FRAC_PI_2, FRAC_PI_2),
+        0.01,
+        get: |s| s.batted_ball().angle,
+        set: |s, v| {
+            s.launch.angle = Some(v);
+            s.kind = SceneKind::BattedBall;
+        }
+    ),
+    // As the pitch's spin: the impact's spins reach ~1000 rad/s at the
+    // cusps of Fig. 5, and at 1000 rad/s (9550 rpm) the spin parameter
+    // passes 1 at 37 m/s, beyond the data both lift fits rest on.
+    key!(
+        "launch.spin",
+        "ω_bf",
+        "rad/s",
+        "launch spin, backspin positive",
+        Bounds::closed(-1000.0, 1000.0),
+        10.0,
+        get: |s| s.batted_ball().spin,
+        set: |s, v| {
+            s.launch.spin = Some(v);
+            s.kind = SceneKind::BattedBall;
+        }
+    ),
+];
+
+/// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`], then [`LAUNCH_KEYS`].
 pub fn all_keys() -> impl Iterator<Item = &'static Key> {
-    KEYS.iter().chain(EXTENDED_KEYS)
+    KEYS.iter().chain(EXTENDED_KEYS).chain(LAUNCH_KEYS)
 }
 
 /// The given air: ρ and ν.

@@ -1,0 +1,721 @@
+//! `fly --batch FILE` (or `-` for stdin): one launch per CSV row, flown in
+//! parallel and written in input order, a chunk at a time, so that memory
+//! stays bounded however long the input (a season of Statcast rows, or an
+//! endless pipe). A bad row is named by its line on stderr and skipped;
+//! input that is no CSV text (a NUL byte) stops the run.
+
+use std::io::{self, BufRead, Write};
+
+use rayon::prelude::*;
+
+use super::UsageError;
+use super::fly::{FlownToFence, fence_of};
+use super::progress::{self, Progress, Work};
+use crate::Scene;
+use crate::model::keys::{DRAG_KEY, InputBatch, LIFT_KEY};
+use crate::preset::{FIELD_KEYS, Fence, Preset, escape_cut};
+
+/// The longest record (line) read, in bytes: a 90-column Statcast row is
+/// ~1 KB. A longer one is skipped, reading on to its end without keeping it.
+pub const MAX_RECORD_BYTES: usize = 64 * 1024;
+/// Rows read, flown in parallel and written at a time.
+const CHUNK_ROWS: usize = 2048;
+/// Bad rows named one by one on stderr; past these only counted.
+const MAX_ROW_MESSAGES: usize = 100;
+
+/// How a column's values become a launch value in SI.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Unit {
+    Si,
+    /// Statcast's `launch_speed`: mph, exactly 0.44704 m/s.
+    Mph,
+    /// Statcast's `launch_angle`: degrees.
+    Degrees,
+    /// `spin_rpm`: revolutions per minute, 2π/60 rad/s.
+    Rpm,
+}
+
+impl Unit {
+    fn to_si(self, value: f64) -> f64 {
+        match self {
+            Unit::Si => value,
+            Unit::Mph => value * 0.44704,
+            Unit::Degrees => value.to_radians(),
+            Unit::Rpm => value * std::f64::consts::TAU / 60.0,
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Unit::Si => "",
+            Unit::Mph => "mph",
+            Unit::Degrees => "°",
+            Unit::Rpm => "rpm",
+        }
+    }
+}
+
+/// The launch keys and the other names their columns may have, with units.
+const LAUNCH_COLUMNS: [(&str, &[(&str, Unit)]); 3] = [
+    (
+        "launch.speed",
+        &[("launch.speed", Unit::Si), ("launch_speed", Unit::Mph)],
+    ),
+    (
+        "launch.angle",
+        &[("launch.angle", Unit::Si), ("launch_angle", Unit::Degrees)],
+    ),
+    (
+        "launch.spin",
+        &[("launch.spin", Unit::Si), ("spin_rpm", Unit::Rpm)],
+    ),
+];
+
+/// What one input column is.
+#[derive(Clone, Copy, Debug)]
+enum Column {
+    /// A launch value (index into [`LAUNCH_COLUMNS`]), in `Unit`.
+    Launch(usize, Unit),
+    /// Any other input key, as `--set` takes it.
+    Input(&'static str),
+    /// A `[field]` key (index into [`FIELD_KEYS`]).
+    Field(usize),
+    /// Not an input: ignored (Statcast's other 80-odd columns).
+    Ignored,
+}
+
+/// The header's columns, checked.
+struct Header {
+    names: Vec<String>,
+    columns: Vec<Column>,
+}
+
+impl Header {
+    fn new(names: Vec<String>) -> Result<Header, String> {
+        let names: Vec<String> = names.into_iter().map(|n| n.trim().to_owned()).collect();
+        let mut columns = Vec::with_capacity(names.len());
+        let mut given: Vec<(&str, &str)> = Vec::new(); // (key, column name)
+        for name in &names {
+            let column = column_of(name);
+            let key = match column {
+                Column::Launch(i, _) => Some(LAUNCH_COLUMNS[i].0),
+                Column::Input(key) => Some(key),
+                Column::Field(i) => Some(FIELD_KEYS[i].name),
+                Column::Ignored => None,
+            };
+            if let Some(key) = key {
+                if let Some((_, first)) = given.iter().find(|(k, _)| *k == key) {
+                    return Err(format!(
+                        "columns `{}` and `{}` both give {key}; keep one",
+                        escape_cut(first, 80),
+                        escape_cut(name, 80)
+                    ));
+                }
+                given.push((key, name));
+            }
+            columns.push(column);
+        }
+        Ok(Header { names, columns })
+    }
+
+    fn has_launch(&self, index: usize) -> bool {
+        self.columns
+            .iter()
+            .any(|c| matches!(c, Column::Launch(i, _) if *i == index))
+    }
+
+    fn ignored(&self) -> Vec<&str> {
+        self.names
+            .iter()
+            .zip(&self.columns)
+            .filter(|(_, c)| matches!(c, Column::Ignored))
+            .map(|(n, _)| n.as_str())
+            .collect()
+    }
+}
+
+fn column_of(name: &str) -> Column {
+    for (index, (_, names)) in LAUNCH_COLUMNS.iter().enumerate() {
+        if let Some((_, unit)) = names.iter().find(|(n, _)| *n == name) {
+            return Column::Launch(index, *unit);
+        }
+    }
+    if let Some(index) = FIELD_KEYS.iter().position(|f| f.name == name) {
+        return Column::Field(index);
+    }
+    if name == DRAG_KEY {
+        return Column::Input(DRAG_KEY);
+    }
+    if name == LIFT_KEY {
+        return Column::Input(LIFT_KEY);
+    }
+    match Scene::key(name) {
+        Ok(key) => Column::Input(key.name),
+        Err(_) => Column::Ignored,
+    }
+}
+
+/// One row, ready to fly.
+#[derive(Clone, Copy)]
+struct Job {
+    line: usize,
+    scene: Scene,
+    fence: Fence,
+}
+
+/// What a row turned out to be. Unboxed: each is moved once, into the
+/// chunk's jobs, and a box would allocate per row.
+#[allow(clippy::large_enum_variant)]
+enum Row {
+    Job(Job),
+    Bad {
+        line: usize,
+        reason: String,
+    },
+    /// Every launch column empty (in a Statcast export: a pitch not put in
+    /// play): skipped and counted, not a failure.
+    NoLaunch,
+    /// An empty line.
+    Blank,
+}
+
+fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
+    if text.trim().is_empty() {
+        return Row::Blank;
+    }
+    let bad = |reason: String| Row::Bad { line, reason };
+    let fields = match split_fields(text) {
+        Ok(fields) => fields,
+        Err(reason) => return bad(reason.to_owned()),
+    };
+    if fields.len() != header.columns.len() {
+        return bad(format!(
+            "{} fields where the header has {}",
+            fields.len(),
+            header.columns.len()
+        ));
+    }
+    let launch_given = header
+        .columns
+        .iter()
+        .zip(&fields)
+        .filter(|(c, _)| matches!(c, Column::Launch(..)))
+        .map(|(_, v)| !v.trim().is_empty())
+        .collect::<Vec<_>>();
+    if !launch_given.is_empty() && launch_given.iter().all(|given| !given) {
+        return Row::NoLaunch;
+    }
+    let mut scene = base.scene;
+    let mut fence = fence_of(base);
+    // One row is one source: ρ beside the weather is refused.
+    let mut batch = InputBatch::new();
+    let mut converted = Vec::new();
+    for ((column, name), value) in header.columns.iter().zip(&header.names).zip(&fields) {
+        let value = value.trim();
+        let shown = escape_cut(value, 80);
+        let number = || {
+            value
+                .parse::<f64>()
+                .map_err(|_| format!("{} = {shown:?}: not a number", escape_cut(name, 80)))
+        };
+        let done = match *column {
+            Column::Ignored => Ok(()),
+            Column::Launch(index, _) if value.is_empty() => {
+                Err(format!("{} is empty", LAUNCH_COLUMNS[index].0))
+            }
+            _ if value.is_empty() => Ok(()), // the preset's value
+            Column::Launch(index, unit) => number().and_then(|v| {
+                if unit != Unit::Si {
+                    converted.push(format!("{name} = {shown} {}", unit.name()));
+                }
+                batch
+                    .set(&mut scene, LAUNCH_COLUMNS[index].0, unit.to_si(v))
+                    .map_err(|e| e.to_string())
+            }),
+            Column::Input(key) => batch
+                .set_text(&mut scene, key, &shown)
+                .map_err(|e| e.to_string()),
+            Column::Field(index) => number().and_then(|v| {
+                let key = &FIELD_KEYS[index];
+                if key.bounds.contains(v) {
+                    (key.set)(&mut fence, v);
+                    Ok(())
+                } else {
+                    Err(format!(
+                        "{} = {shown}: must be a finite number in {} {}",
+                        key.name, key.bounds, key.unit
+                    ))
+                }
+            }),
+        };
+        if let Err(reason) = done {
+            return bad(reason);
+        }
+    }
+    if let Err(e) = scene.validate() {
+        let from = if converted.is_empty() {
+            String::new()
+        } else {
+            format!(" (from {})", converted.join(", "))
+        };
+        return bad(format!("{e}{from}"));
+    }
+    Row::Job(Job { line, scene, fence })
+}
+
+/// A CSV record's fields (RFC 4180: commas inside quotes, `""` for a quote).
+fn split_fields(text: &str) -> Result<Vec<String>, &'static str> {
+    let mut fields = Vec::new();
+    let mut field = String::new();
+    let mut chars = text.chars().peekable();
+    let mut quoted = false;
+    while let Some(c) = chars.next() {
+        match (quoted, c) {
+            (true, '"') if chars.peek() == Some(&'"') => {
+                field.push('"');
+                chars.next();
+            }
+            (true, '"') => quoted = false,
+            (true, c) => field.push(c),
+            (false, '"') if field.trim().is_empty() => {
+                field.clear();
+                quoted = true;
+            }
+            (false, ',') => fields.push(std::mem::take(&mut field)),
+            (false, c) => field.push(c),
+        }
+    }
+    if quoted {
+        return Err("an unterminated quote");
+    }
+    fields.push(field);
+    Ok(fields)
+}
+
+/// Why reading stopped before the end.
+enum Stop {
+    Io(io::Error),
+    /// A NUL byte: binary data, not CSV text.
+    Binary {
+        line: usize,
+    },
+}
+
+/// One record of the input.
+enum Record {
+    /// Its first line's number and its text (without the line end).
+    Text {
+        line: usize,
+        text: String,
+    },
+    /// Longer than [`MAX_RECORD_BYTES`]: read to its end and dropped.
+    TooLong {
+        line: usize,
+    },
+    End,
+}
+
+/// Reads records, each ending at a line end outside quotes, keeping at most
+/// [`MAX_RECORD_BYTES`] of one.
+struct Records<R> {
+    reader: R,
+    /// The line the next record starts on (1-based).
+    line: usize,
+    bytes: Vec<u8>,
+}
+
+impl<R: BufRead> Records<R> {
+    fn new(reader: R) -> Self {
+        Records {
+            reader,
+            line: 1,
+            bytes: Vec::new(),
+        }
+    }
+
+    fn next(&mut self) -> Result<Record, Stop> {
+        self.bytes.clear();
+        let first = self.line;
+        let (mut quoted, mut too_long, mut newlines, mut any) = (false, false, 0, false);
+        loop {
+            let available = match self.reader.fill_buf() {
+                Ok(bytes) => bytes,
+                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                Err(e) => return Err(Stop::Io(e)),
+            };
+            if available.is_empty() {
+                if !any {
+                    return Ok(Record::End);
+                }
+                break;
+            }
+            any = true;
+            let (mut used, mut ended) = (available.len(), false);
+            for (i, &byte) in available.iter().enumerate() {
+                match byte {
+                    0 => {
+                        return Err(Stop::Binary {
+                            line: first + newlines,
+                        });
+                    }
+                    b'"' => quoted = !quoted,
+                    // Once too long, the next line end ends it whatever the
+                    // quotes say, so one stray quote cannot swallow the file.
+                    b'\n' => {
+                        newlines += 1;
+                        if !quoted || too_long {
+                            (used, ended) = (i + 1, true);
+                            break;
+                        }
+                    }
+                    _ => {}
+                }
+            }
+            if !too_long {
+                let take = if ended { used - 1 } else { used };
+                if self.bytes.len() + take > MAX_RECORD_BYTES {
+                    too_long = true;
+                    self.bytes = Vec::new();
+                } else {
+                    self.bytes.extend_from_slice(&available[..take]);
+                }
+            }
+            self.reader.consume(used);
+            if ended {
+                break;
+            }
+        }
+        self.line = first + newlines.max(1);
+        if too_long {
+            return Ok(Record::TooLong { line: first });
+        }
+        let text = String::from_utf8_lossy(&self.bytes);
+        let text = text.strip_suffix('\r').unwrap_or(&text).to_owned();
+        Ok(Record::Text { line: first, text })
+    }
+}
+
+/// How the batch went: the exit status follows from it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Outcome {
+    pub flown: usize,
+    pub failed: usize,
+    /// Rows with every launch column empty.
+    pub without_launch: usize,
+    /// Reading stopped early (binary input, a read error).
+    pub stopped: bool,
+}
+
+impl Outcome {
+    /// 0 when every row was flown (or skipped for having no launch), 1 when
+    /// some failed or reading stopped early.
+    pub fn exit_status(&self) -> u8 {
+        u8::from(self.failed > 0 || self.stopped)
+    }
+}
+
+/// Where rows and messages go.
+pub(super) struct Sinks<'a> {
+    pub out: &'a mut dyn Write,
+    pub err: &'a mut dyn Write,
+    /// Whether `err` is a terminal showing a progress line, which each
+    /// message first erases.
+    pub erase: bool,
+}
+
+impl Sinks<'_> {
+    fn note(&mut self, message: &str) {
+        let erase = if self.erase { "\r\x1b[K" } else { "" };
+        let _ = writeln!(self.err, "{erase}homerun: {message}");
+    }
+}
+
+/// Opens `source` ("-" for stdin) and flies every row, showing progress on
+/// stderr when it is a terminal.
+pub(super) fn run(
+    base: &Preset,
+    source: &str,
+    json: bool,
+    sinks: &mut Sinks,
+) -> Result<Outcome, UsageError> {
+    let work = Work {
+        what: "fly --batch",
+        steps: Some((progress::UNCOUNTED, "rows")),
+    };
+    if source == "-" {
+        let stdin = io::stdin().lock();
+        progress::run(work, |p| batch(base, stdin, json, sinks, p))
+    } else {
+        let file = std::fs::File::open(source).map_err(|e| UsageError::Batch {
+            input: escape_cut(source, 200),
+            message: e.to_string(),
+        })?;
+        let reader = io::BufReader::with_capacity(MAX_RECORD_BYTES, file);
+        progress::run(work, |p| batch(base, reader, json, sinks, p))
+    }
+    .map_err(|message| UsageError::Batch {
+        input: escape_cut(source, 200),
+        message,
+    })
+}
+
+/// Flies every row of `input` against `base`; `Err` only for a header that
+/// cannot be used (nothing was flown).
+pub(super) fn batch(
+    base: &Preset,
+    input: impl BufRead,
+    json: bool,
+    sinks: &mut Sinks,
+    progress: &Progress,
+) -> Result<Outcome, String> {
+    let mut records = Records::new(input);
+    let mut outcome = Outcome::default();
+    let header = match records.next() {
+        Ok(Record::End) => None,
+        Ok(Record::Text { text, .. }) => {
+            let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+            let names = split_fields(text).map_err(|e| format!("line 1 (the header): {e}"))?;
+            Some(Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?)
+        }
+        Ok(Record::TooLong { .. }) => {
+            return Err(format!(
+                "line 1 (the header): longer than {} KiB: not a CSV of launches",
+                MAX_RECORD_BYTES / 1024
+            ));
+        }
+        Err(Stop::Binary { .. }) => {
+            return Err("a NUL byte in line 1: binary data, not CSV text".to_owned());
+        }
+        Err(Stop::Io(e)) => return Err(e.to_string()),
+    };
+    if !json {
+        let _ = writeln!(sinks.out, "{}", OUTPUT_COLUMNS.join(","));
+    }
+    let Some(header) = header else {
+        sinks.note("the input is empty: no rows to fly");
+        return Ok(outcome);
+    };
+    announce(&header, base, sinks);
+    let mut messages = 0;
+    loop {
+        let mut jobs = Vec::with_capacity(CHUNK_ROWS);
+        let mut ended = false;
+        while jobs.len() < CHUNK_ROWS {
+            let row = match records.next() {
+                Ok(Record::End) => {
+                    ended = true;
+                    break;
+                }
+                Ok(Record::Text { line, text }) => parse_row(&header, base, line, &text),
+                Ok(Record::TooLong { line }) => Row::Bad {
+                    line,
+                    reason: format!("longer than {} KiB", MAX_RECORD_BYTES / 1024),
+                },
+                Err(stop) => {
+                    let why = match stop {
+                        Stop::Binary { line } => {
+                            format!("line {line}: a NUL byte: binary data, not CSV text")
+                        }
+                        Stop::Io(e) => format!("reading the input: {e}"),
+                    };
+                    sinks.note(&format!("{why}; stopped reading"));
+                    outcome.stopped = true;
+                    ended = true;
+                    break;
+                }
+            };
+            match row {
+                Row::Job(job) => jobs.push(job),
+                Row::Bad { line, reason } => {
+                    outcome.failed += 1;
+                    messages += 1;
+                    if messages <= MAX_ROW_MESSAGES {
+                        sinks.note(&format!("line {line}: {reason}; skipped"));
+                    } else if messages == MAX_ROW_MESSAGES + 1 {
+                        sinks.note("more bad rows: counted, not shown");
+                    }
+                }
+                Row::NoLaunch => outcome.without_launch += 1,
+                Row::Blank => {}
+            }
+        }
+        let flown: Vec<FlownToFence> = jobs
+            .par_iter()
+            .map(|job| FlownToFence::new(&job.scene, job.fence))
+            .collect();
+        for (job, flown) in jobs.iter().zip(&flown) {
+            let text = if json {
+                json_line(job.line, flown)
+            } else {
+                csv_line(job.line, flown)
+            };
+            match sinks.out.write_all(text.as_bytes()) {
+                // `| head`: the reader has what it wanted.
+                Err(e) if e.kind() == io::ErrorKind::BrokenPipe => return Ok(outcome),
+                Err(e) => return Err(format!("writing the output: {e}")),
+                Ok(()) => {}
+            }
+            outcome.flown += 1;
+            progress.tick();
+        }
+        if let Err(e) = sinks.out.flush()
+            && e.kind() != io::ErrorKind::BrokenPipe
+        {
+            return Err(format!("writing the output: {e}"));
+        }
+        if ended {
+            break;
+        }
+    }
+    if outcome.without_launch > 0 {
+        let n = outcome.without_launch;
+        sinks.note(&format!(
+            "{n} row{} with every launch column empty (pitches not put in play) skipped",
+            if n == 1 { "" } else { "s" }
+        ));
+    }
+    if outcome.failed > 0 {
+        sinks.note(&format!(
+            "{} of {} rows failed and were skipped (exit status 1)",
+            outcome.failed,
+            outcome.failed + outcome.flown
+        ));
+    }
+    Ok(outcome)
+}
+
+/// One stderr note for the columns ignored and the launch values every
+/// row takes from the preset.
+fn announce(header: &Header, base: &Preset, sinks: &mut Sinks) {
+    let ignored = header.ignored();
+    if !ignored.is_empty() {
+        let shown: Vec<String> = ignored.iter().take(8).map(|n| escape_cut(n, 40)).collect();
+        let more = if ignored.len() > 8 {
+            format!(", … ({} in all)", ignored.len())
+        } else {
+            String::new()
+        };
+        sinks.note(&format!(
+            "ignored {} column{} that {} no input: {}{more}",
+            ignored.len(),
+            if ignored.len() == 1 { "" } else { "s" },
+            if ignored.len() == 1 { "is" } else { "are" },
+            shown.join(", ")
+        ));
+    }
+    let own = base.scene.batted_ball();
+    let values = [own.speed, own.angle, own.spin];
+    for (index, (key, names)) in LAUNCH_COLUMNS.iter().enumerate() {
+        if !header.has_launch(index) {
+            let accepted: Vec<&str> = names.iter().map(|(n, _)| *n).collect();
+            sinks.note(&format!(
+                "no {} column: every row takes preset {}'s {key} = {}",
+                accepted.join(" or "),
+                base.name,
+                values[index]
+            ));
+        }
+    }
+}
+
+/// The output's columns, in order.
+pub const OUTPUT_COLUMNS: [&str; 10] = [
+    "line",
+    "launch.speed",
+    "launch.angle",
+    "launch.spin",
+    "range",
+    "flight_time",
+    "apex",
+    "landing_angle",
+    "landed",
+    "clears_fence",
+];
+
+fn csv_line(line: usize, flown: &FlownToFence) -> String {
+    let (launch, flight) = (&flown.launch, &flown.flight);
+    let range = if flight.landed {
+        format!("{:.3}", flight.range)
+    } else {
+        String::new()
+    };
+    format!(
+        "{line},{:.4},{:.6},{:.3},{range},{:.3},{:.3},{:.4},{},{}\n",
+        launch.speed,
+        launch.angle,
+        launch.spin,
+        flight.flight_time,
+        flight.apex,
+        flight.landing_angle,
+        flight.landed,
+        flown.clears_fence()
+    )
+}
+
+fn json_line(line: usize, flown: &FlownToFence) -> String {
+    let (launch, flight) = (&flown.launch, &flown.flight);
+    let json = serde_json::json!({
+        "line": line,
+        "launch": {"speed": launch.speed, "angle": launch.angle, "spin": launch.spin},
+        "flight": {
+            "range": flight.landed.then_some(flight.range),
+            "flight_time": flight.flight_time,
+            "apex": flight.apex,
+            "landing_angle": flight.landing_angle,
+            "landed": flight.landed,
+        },
+        "clears_fence": flown.clears_fence(),
+    });
+    json.to_string() + "\n"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fields_follow_rfc_4180() {
+        assert_eq!(split_fields("a,b,,c").unwrap(), ["a", "b", "", "c"]);
+        assert_eq!(
+            split_fields(r#"1,"x, ""y""",2"#).unwrap(),
+            ["1", r#"x, "y""#, "2"]
+        );
+        assert!(split_fields(r#"1,"open"#).is_err());
+    }
+
+    #[test]
+    fn records_end_outside_quotes_and_long_ones_are_dropped() {
+        let text = "h\n\"a\nb\",1\r\nlast";
+        let mut records = Records::new(text.as_bytes());
+        let mut got = Vec::new();
+        loop {
+            match records.next() {
+                Ok(Record::Text { line, text }) => got.push((line, text)),
+                Ok(Record::End) => break,
+                _ => panic!("unexpected"),
+            }
+        }
+        assert_eq!(
+            got,
+            [
+                (1, "h".to_owned()),
+                (2, "\"a\nb\",1".to_owned()),
+                (4, "last".to_owned())
+            ]
+        );
+        let long = format!("{}\nnext\n", "x".repeat(MAX_RECORD_BYTES + 1));
+        let mut records = Records::new(io::BufReader::with_capacity(1000, long.as_bytes()));
+        assert!(matches!(records.next(), Ok(Record::TooLong { line: 1 })));
+        assert!(matches!(records.next(), Ok(Record::Text { line: 2, .. })));
+        let mut records = Records::new(&b"a\nb\0"[..]);
+        assert!(matches!(records.next(), Ok(Record::Text { .. })));
+        assert!(matches!(records.next(), Err(Stop::Binary { line: 2 })));
+    }
+
+    #[test]
+    fn statcast_units_convert_exactly() {
+        assert_eq!(Unit::Mph.to_si(103.0), 103.0 * 0.44704);
+        assert!((Unit::Degrees.to_si(28.0) - 0.488_692_190_558_412).abs() < 1e-15);
+        assert!((Unit::Rpm.to_si(2500.0) - 261.799_387_799_149).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,135 @@
+//! `fly`: a scene's launch and flight, whatever its kind (a batted ball
+//! from `launch.*`, or a swing's launch from its impact); and `fly --batch`,
+//! one launch per CSV row (see [`super::batch`]).
+
+use super::hit::{environment_json, flight_json, labelled, spin_text};
+use super::pretty;
+use crate::Scene;
+use crate::analysis::landing;
+use crate::analysis::precision::Purpose;
+use crate::model::flight::FlightSummary;
+use crate::model::launch::{self, BattedBall, SceneKind};
+use crate::preset::{FIELD_KEYS, Fence, Preset};
+
+/// The fence a preset draws, or the default one (121.9 m, 3.0 m).
+pub(super) fn fence_of(preset: &Preset) -> Fence {
+    preset.fence.unwrap_or(Fence {
+        distance: FIELD_KEYS[0].default,
+        height: FIELD_KEYS[1].default,
+    })
+}
+
+/// One scene's flight, at readout precision, with the fence it clears or not.
+pub(super) struct FlownToFence {
+    pub launch: BattedBall,
+    pub flight: FlightSummary,
+    /// The ball's height where it passes the fence's distance, if it gets there.
+    pub height_at_fence: Option<f64>,
+    pub fence: Fence,
+}
+
+impl FlownToFence {
+    pub fn new(scene: &Scene, fence: Fence) -> FlownToFence {
+        let (flight, height_at_fence) =
+            launch::height_at_distance(scene, fence.distance, Purpose::Readout);
+        FlownToFence {
+            launch: scene.batted_ball(),
+            flight,
+            height_at_fence,
+            fence,
+        }
+    }
+
+    pub fn clears_fence(&self) -> bool {
+        self.height_at_fence.is_some_and(|h| h >= self.fence.height)
+    }
+}
+
+pub(super) fn fly(preset: &Preset, json: bool) -> String {
+    let scene = &preset.scene;
+    let flown = FlownToFence::new(scene, fence_of(preset));
+    let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.fence);
+    let unlanded = (!flight.landed).then(|| landing::not_landed(flight, end_height(scene)));
+    let kind = match scene.kind {
+        SceneKind::Swing => "swing",
+        SceneKind::BattedBall => "batted_ball",
+    };
+    if json {
+        return pretty(&serde_json::json!({
+            "scene": kind,
+            "launch": {
+                "speed": launch.speed,
+                "angle": launch.angle,
+                "spin": launch.spin,
+            },
+            "flight": flight_json(flight, unlanded),
+            "fence": {
+                "distance": fence.distance,
+                "height": fence.height,
+                "height_at_fence": flown.height_at_fence,
+                "clears": flown.clears_fence(),
+            },
+            "environment": environment_json(scene),
+        }));
+    }
+    let from = match scene.kind {
+        SceneKind::Swing => " (from the swing's impact)",
+        SceneKind::BattedBall => "",
+    };
+    let fence_line = match flown.height_at_fence {
+        Some(h) if flown.clears_fence() => format!(
+            "clears it: {h:.2} m up at {:.1} m, over {:.1} m",
+            fence.distance, fence.height
+        ),
+        Some(h) => format!(
+            "does not clear it: {h:.2} m up at {:.1} m, under {:.1} m",
+            fence.distance, fence.height
+        ),
+        None => format!("does not reach it, {:.1} m away", fence.distance),
+    };
+    let air = scene.environment.air();
+    labelled(&[
+        ("launch", format!("{}{from}", batted_text(launch))),
+        (
+            "flight",
+            match &unlanded {
+                Some(why) => format!("{why}, apex {:.2} m", flight.apex),
+                None => format!(
+                    "range {:.3} m in {:.3} s, apex {:.2} m, lands at {:.2} m/s, {:.3} rad below horizontal",
+                    flight.range,
+                    flight.flight_time,
+                    flight.apex,
+                    flight.landing_speed,
+                    flight.landing_angle
+                ),
+            },
+        ),
+        ("fence", fence_line),
+        (
+            "air",
+            format!(
+                "ρ = {air}, ν = {:.4e} m²/s; drag {}, lift {}",
+                air.kinematic_viscosity, scene.drag, scene.lift
+            ),
+        ),
+    ])
+}
+
+/// Where a flight that did not land ended (m above the ground).
+fn end_height(scene: &Scene) -> f64 {
+    let (flight, start, _, _) = launch::scene_start(scene);
+    let options = Purpose::Readout.flight_options();
+    let (_, points) = crate::model::flight::trajectory(&flight, &start, &options, 2);
+    points.last().map_or(0.0, |p| p.y)
+}
+
+/// "46.045 m/s, 261.80 rad/s of backspin, 0.4887 rad (28.0°)"
+pub(super) fn batted_text(launch: &BattedBall) -> String {
+    format!(
+        "{:.3} m/s, {}, {:.4} rad ({:.1}°)",
+        launch.speed,
+        spin_text(launch.spin),
+        launch.angle,
+        launch.angle.to_degrees()
+    )
+}
