@@ -466,3 +466,32 @@ fn the_figure_shown_is_figure_data_for_the_scene_and_follows_the_inputs() {
     settle(&mut app);
     assert!(app.figure_fresh());
 }
+
+#[test]
+fn a_ball_that_does_not_land_is_never_shown_as_a_range() {
+    let mut app = app(80, 24, None);
+    set_and_settle(&mut app, "environment.gravity", "0.001");
+    assert!(!app.swing.flight.landed);
+    let screen = screen(&app);
+    // The readout says where the ball is instead, and the trajectory's
+    // title gives no range.
+    assert!(screen.contains("did not land in 600 s ("), "{screen}");
+    assert!(screen.contains(" does not land, apex "), "{screen}");
+    assert!(!screen.contains("range "), "{screen}");
+    // The optimum found from the coarse scan lands, and is shown with its
+    // range; the current swing's difference from it has none.
+    let optimum = app.optimum.unwrap();
+    assert!(
+        optimum.done && optimum.best.range.is_finite(),
+        "{optimum:?}"
+    );
+    assert!(
+        screen.contains("you −opt ΔE") && screen.contains("  —"),
+        "{screen}"
+    );
+    // The heatmap's best cell and scale use only landings.
+    let surface = &app.surface.as_ref().unwrap().surface;
+    assert!(surface.any_not_landed());
+    let (i, j, best) = surface.best().unwrap();
+    assert_eq!(surface.get(i, j), Some(best));
+}

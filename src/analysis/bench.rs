@@ -433,12 +433,12 @@ fn optimisations(effort: Effort, quick: bool) -> Vec<OptimisationRow> {
 }
 
 fn max_difference(a: &study::Surface, b: &study::Surface) -> f64 {
-    a.ranges
+    a.outcomes()
         .iter()
-        .zip(&b.ranges)
-        .map(|(a, b)| match (a, b) {
+        .zip(b.outcomes())
+        .map(|(a, b)| match (a.range(), b.range()) {
             (Some(a), Some(b)) => (a - b).abs(),
-            (None, None) => 0.0,
+            _ if a == b => 0.0,
             _ => f64::INFINITY,
         })
         .fold(0.0, f64::max)

@@ -14,7 +14,7 @@ mod escape;
 mod field;
 mod file;
 
-pub use escape::{escape_cut, escape_for_terminal};
+pub use escape::{cut, escape_cut, escape_for_terminal};
 pub use field::{FIELD_KEYS, FieldKey};
 pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
@@ -171,11 +171,7 @@ impl Preset {
                         .ok_or_else(|| wrong(&key, value, "expected a model name in quotes"))?;
                     // A name too long to be one is shown cut (the error
                     // quotes it, escaping control characters).
-                    let shown: String = if text.chars().count() > 80 {
-                        text.chars().take(79).chain(['…']).collect()
-                    } else {
-                        text.to_owned()
-                    };
+                    let shown = cut(text, 80);
                     batch.set_text(&mut scene, &key, &shown).map_err(input)?;
                     continue;
                 }

@@ -16,7 +16,7 @@ use super::keymap::{self, Action};
 use super::layout::{Tab, heatmap_resolution, trajectory_samples};
 use super::theme::ColorMode;
 use super::worker::{FigureJob, Job, Report};
-use crate::analysis::optimum::Point;
+use crate::analysis::optimum::{Point, Status};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study::{Grid, Surface};
 use crate::model::aero::DragModel;
@@ -99,6 +99,8 @@ pub struct OptimumState {
     pub best: Point,
     pub evaluations: u32,
     pub done: bool,
+    /// Why it stopped, once `done`.
+    pub status: Status,
 }
 
 /// The range surface as refined so far.
@@ -298,14 +300,18 @@ impl App {
                 best,
                 evaluations,
                 done,
+                status,
                 ..
             } => {
                 self.optimum = Some(OptimumState {
                     best,
                     evaluations,
                     done,
+                    status,
                 });
-                if done {
+                // A search that found nothing landing has no optimum to
+                // start from or to draw.
+                if done && best.range.is_finite() {
                     self.warm_start = Some((best.undercut, best.swing_angle));
                     let scene = self.scene.with_swing(best.undercut, best.swing_angle);
                     self.optimal_path = self.plot_path(&scene);
@@ -548,8 +554,12 @@ impl App {
     /// Moves the swing to the optimum found (key `r`).
     fn reset_to_optimum(&mut self) {
         if let Some(o) = self.optimum.filter(|o| o.done) {
-            self.scene = self.scene.with_swing(o.best.undercut, o.best.swing_angle);
-            self.inputs_changed = true;
+            if o.best.range.is_finite() {
+                self.scene = self.scene.with_swing(o.best.undercut, o.best.swing_angle);
+                self.inputs_changed = true;
+            } else {
+                self.message = Some(("no swing lands: there is no optimum".into(), true));
+            }
         } else {
             self.message = Some(("no optimum yet for these inputs".into(), true));
         }

@@ -37,12 +37,14 @@ pub struct Job {
 /// A result, tagged with the generation it was computed for.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Report {
-    /// The optimiser's best point so far; `done` once it has converged.
+    /// The optimiser's best point so far; `done` once it has stopped, and
+    /// `status` why (converged, a limit, or nothing lands).
     Optimum {
         generation: u64,
         best: Point,
         evaluations: u32,
         done: bool,
+        status: Status,
     },
     /// One refinement of the range surface; `last` for the finest.
     Surface {
@@ -153,6 +155,7 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
                 best: optimizer.best(),
                 evaluations: optimizer.evaluations(),
                 done,
+                status,
             });
         }
         if done {
