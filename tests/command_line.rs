@@ -676,3 +676,29 @@ fn work_is_bounded_on_the_slowest_scene() {
         &["--grid \"501x2\"", "[1, 500]"],
     );
 }
+
+#[test]
+fn a_section_written_as_a_value_is_called_a_section() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for section in ["pitch", "field"] {
+        let file = d.join(format!("{section}.toml"));
+        std::fs::write(&file, format!("{section} = 5\n")).unwrap();
+        refused(
+            d,
+            &["hit", "--preset", file.to_str().unwrap()],
+            &[
+                &format!("{section} = 5: a section, not a value: expected a table"),
+                "[header]",
+            ],
+        );
+    }
+    // Not a section at all: an unknown key, with a suggestion.
+    let file = d.join("pitchh.toml");
+    std::fs::write(&file, "pitchh = 5\n").unwrap();
+    refused(
+        d,
+        &["hit", "--preset", file.to_str().unwrap()],
+        &["unknown key `pitchh`"],
+    );
+}

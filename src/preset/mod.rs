@@ -161,6 +161,18 @@ impl Preset {
                 continue;
             }
             let Some(entries) = value.as_table() else {
+                // `pitch = 5`: a section written as a value.
+                let is_section = all_keys()
+                    .map(|k| k.name)
+                    .chain(FIELD_KEYS.iter().map(|f| f.name))
+                    .any(|name| name.split_once('.').is_some_and(|(s, _)| s == section));
+                if is_section {
+                    return Err(wrong(
+                        section,
+                        value,
+                        "a section, not a value: expected a table, its keys under a [header] line of its own name",
+                    ));
+                }
                 return Err(input(unknown(&escape_for_terminal(section))));
             };
             for (name, value) in entries {
