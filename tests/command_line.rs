@@ -337,6 +337,25 @@ fn the_fence_keys_work_in_set_as_in_toml() {
 /// A scene whose balls hover: almost nothing lands.
 const HOVER: &[&str] = &["--set", "environment.gravity=0.001"];
 
+/// A big light ball with a large backspin in dense air and low gravity: no
+/// swing over the explorer's window lands (found by flying random scenes).
+const FLOAT: &[&str] = &[
+    "--set",
+    "ball.radius=0.074",
+    "--set",
+    "ball.mass=0.45",
+    "--set",
+    "ball.gyration_radius=0.055",
+    "--set",
+    "environment.air_density=3.9",
+    "--set",
+    "environment.gravity=0.0009",
+    "--set",
+    "bat.speed=50",
+    "--set",
+    "pitch.spin=520",
+];
+
 fn with<'a>(args: &[&'a str], scene: &[&'a str]) -> Vec<&'a str> {
     [args, scene].concat()
 }
@@ -369,14 +388,23 @@ fn a_flight_that_does_not_land_is_never_a_range() {
     let v = json(d, &with(&["trajectory", "--json"], HOVER));
     assert!(v["range"].is_null() && v["landed"] == false, "{v}");
 
-    let optimum = text(d, &with(&["optimize"], HOVER));
+    // No swing of the window lands on FLOAT: there is no optimum.
+    let optimum = text(d, &with(&["optimize"], FLOAT));
     assert!(
-        optimum.starts_with("optimum  none: no swing tried lands"),
+        optimum.starts_with(
+            "optimum  none: none of 64 swings over E ∈ [0, 0.05] m, ψ ∈ [-0.6, 1] rad lands"
+        ),
+        "{optimum}"
+    );
+    assert!(
+        optimum.contains("nothing to converge to: no swing lands"),
         "{optimum}"
     );
     assert!(!optimum.contains("\nrange"), "{optimum}");
-    let v = json(d, &with(&["optimize", "--json"], HOVER));
+    let v = json(d, &with(&["optimize", "--json"], FLOAT));
     assert_eq!(v["landed"], false);
+    assert_eq!(v["status"], "nothing_lands");
+    assert_eq!(v["scanned"], 64);
     for field in ["range", "undercut", "swing_angle", "launch_speed"] {
         assert!(v[field].is_null(), "{field}: {v}");
     }
@@ -387,23 +415,33 @@ fn a_flight_that_does_not_land_is_never_a_range() {
             .starts_with("did not land")
     );
     assert_eq!(json(d, &["optimize", "--json"])["landed"], true);
+    // On HOVER the given swing does not land but others do: the search
+    // starts from the best of a coarse scan and finds one.
+    let optimum = text(d, &with(&["optimize"], HOVER));
+    assert!(
+        optimum.contains(
+            "\nstart    the swing given does not land; started from the best of 64 swings over"
+        ),
+        "{optimum}"
+    );
+    let v = json(d, &with(&["optimize", "--json"], HOVER));
+    assert_eq!(v["landed"], true, "{v}");
+    assert!(v["range"].as_f64().unwrap() > 134.8, "{v}");
 
     let sweep = [
         "sweep",
-        "environment.gravity",
+        "bat.speed",
         "--from",
-        "0.001",
+        "40",
         "--to",
-        "9.81",
+        "50",
         "--steps",
         "3",
     ];
+    let sweep = with(&sweep, FLOAT);
     let table = text(d, &sweep);
     let first = table.lines().nth(1).unwrap();
-    assert!(
-        first.ends_with("(no swing tried lands: no optimum)"),
-        "{table}"
-    );
+    assert!(first.ends_with("(no swing lands: no optimum)"), "{table}");
     assert!(
         !first.contains("inf") && !first.contains("0.0265"),
         "{first}"
@@ -411,23 +449,45 @@ fn a_flight_that_does_not_land_is_never_a_range() {
     let v = json(d, &[&sweep[..], &["--json"]].concat());
     let points = v["points"].as_array().unwrap();
     assert_eq!(points[0]["landed"], false);
+    assert_eq!(points[0]["status"], "nothing_lands");
     assert!(points[0]["range"].is_null() && points[0]["undercut"].is_null());
-    assert_eq!(points[2]["landed"], true);
+    let v = json(
+        d,
+        &[
+            "sweep",
+            "environment.gravity",
+            "--from",
+            "0.001",
+            "--to",
+            "9.81",
+            "--steps",
+            "2",
+            "--json",
+        ],
+    );
+    let points = v["points"].as_array().unwrap();
+    assert!(points.iter().all(|p| p["landed"] == true), "{v}");
     let csv = text(d, &[&sweep[..], &["--csv"]].concat());
     assert!(
-        csv.lines().next().unwrap().ends_with(",converged,landed"),
+        csv.lines()
+            .next()
+            .unwrap()
+            .ends_with(",converged,status,landed"),
         "{csv}"
     );
     assert!(
-        csv.lines().nth(1).unwrap().ends_with(",false,false"),
+        csv.lines()
+            .nth(1)
+            .unwrap()
+            .ends_with(",false,nothing_lands,false"),
         "{csv}"
     );
     assert!(!csv.contains("inf"), "{csv}");
 
     // Figures whose rows are flights carry `landed`; a row that does not
     // land shows no range.
-    for figure in ["8", "13"] {
-        let v = json(d, &with(&["figure", figure, "--json"], HOVER));
+    for (figure, scene) in [("8", FLOAT), ("13", HOVER)] {
+        let v = json(d, &with(&["figure", figure, "--json"], scene));
         let rows = v["rows"].as_array().unwrap();
         let down = rows.iter().find(|r| r["landed"] == false).expect(figure);
         assert!(down["range"].is_null(), "{down}");
@@ -440,6 +500,54 @@ fn a_flight_that_does_not_land_is_never_a_range() {
             .unwrap()
             .iter()
             .all(|r| r["landed"] == true)
+    );
+    // A surface marks the cells whose ball does not land: `up` in text with
+    // its legend, `landed: false` and a null range in JSON, `false` and a
+    // blank range in CSV; the bat's misses are null (blank) in both.
+    let surface = ["surface", "--grid", "8x8", "--undercut", "0..0.08"];
+    let table = text(d, &with(&surface, HOVER));
+    assert!(
+        table
+            .lines()
+            .next()
+            .unwrap()
+            .ends_with("- bat misses, up: the ball does not land"),
+        "{table}"
+    );
+    assert!(table.contains("  up") && table.contains("   -"), "{table}");
+    let v = json(d, &with(&[&surface[..], &["--json"]].concat(), HOVER));
+    let (ranges, landed) = (
+        v["ranges"].as_array().unwrap(),
+        v["landed"].as_array().unwrap(),
+    );
+    let mut kinds = [0; 3];
+    for (r, l) in ranges
+        .iter()
+        .flat_map(|r| r.as_array().unwrap())
+        .zip(landed.iter().flat_map(|l| l.as_array().unwrap()))
+    {
+        match l.as_bool() {
+            Some(true) => assert!(r.is_f64(), "{r}"),
+            Some(false) => assert!(r.is_null(), "{r}"),
+            None => assert!(r.is_null(), "{r}"),
+        }
+        kinds[match l.as_bool() {
+            Some(true) => 0,
+            Some(false) => 1,
+            None => 2,
+        }] += 1;
+    }
+    assert!(kinds.iter().all(|&k| k > 0), "{kinds:?}");
+    let csv = text(d, &with(&[&surface[..], &["--csv"]].concat(), HOVER));
+    assert_eq!(
+        csv.lines().next(),
+        Some("undercut,swing_angle,range,landed")
+    );
+    let count = |end: &str| csv.lines().filter(|l| l.ends_with(end)).count();
+    assert_eq!(
+        (count(",true"), count(",,false"), count(",,")),
+        (kinds[0], kinds[1], kinds[2]),
+        "{csv}"
     );
     let fig7 = text(d, &with(&["figure", "7"], HOVER));
     assert!(
@@ -479,16 +587,44 @@ const SLOW: &[&str] = &[
     "environment.contact_height=1.8372523574322064",
 ];
 
+/// A heavy-spun big ball in dense air: the search runs into its work limit.
+const WORK: &[&str] = &[
+    "--set",
+    "ball.radius=0.063",
+    "--set",
+    "ball.mass=0.35",
+    "--set",
+    "ball.gyration_radius=0.046",
+    "--set",
+    "environment.air_density=4.4",
+    "--set",
+    "environment.gravity=0.021",
+    "--set",
+    "bat.speed=49",
+    "--set",
+    "pitch.spin=1000",
+];
+
 #[test]
 fn work_is_bounded_on_the_slowest_scene() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let start = Instant::now();
+    // SLOW's own swing hovers; the coarse scan finds swings that land.
     let optimum = text(d, &with(&["optimize"], SLOW));
+    assert!(
+        optimum.contains("\nstart    the swing given does not land"),
+        "{optimum}"
+    );
+    // WORK's search stops at its work limit, and says so in text and JSON.
+    let optimum = text(d, &with(&["optimize"], WORK));
     assert!(
         optimum.contains("NOT converged: stopped at the work limit ("),
         "{optimum}"
     );
+    let v = json(d, &with(&["optimize", "--json"], WORK));
+    assert_eq!(v["status"], "work_limit", "{v}");
+    assert_eq!(v["converged"], false, "{v}");
     let sweep = text(
         d,
         &with(
@@ -538,5 +674,31 @@ fn work_is_bounded_on_the_slowest_scene() {
         d,
         &["surface", "--grid", "501x2"],
         &["--grid \"501x2\"", "[1, 500]"],
+    );
+}
+
+#[test]
+fn a_section_written_as_a_value_is_called_a_section() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for section in ["pitch", "field"] {
+        let file = d.join(format!("{section}.toml"));
+        std::fs::write(&file, format!("{section} = 5\n")).unwrap();
+        refused(
+            d,
+            &["hit", "--preset", file.to_str().unwrap()],
+            &[
+                &format!("{section} = 5: a section, not a value: expected a table"),
+                "[header]",
+            ],
+        );
+    }
+    // Not a section at all: an unknown key, with a suggestion.
+    let file = d.join("pitchh.toml");
+    std::fs::write(&file, "pitchh = 5\n").unwrap();
+    refused(
+        d,
+        &["hit", "--preset", file.to_str().unwrap()],
+        &["unknown key `pitchh`"],
     );
 }

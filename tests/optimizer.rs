@@ -194,3 +194,77 @@ fn sweep_warm_starts_and_follows_figure8() {
         .is_err()
     );
 }
+
+/// The fastball in 0.001 m/s² of gravity: its own swing hovers past the
+/// flight's limit, but swings of small undercut land.
+fn hovering() -> Scene {
+    let mut scene = Scene::default();
+    scene.environment.gravity = 0.001;
+    scene
+}
+
+/// A big light ball with a large backspin in dense air and low gravity: no
+/// swing of the explorer's window lands.
+fn floating() -> Scene {
+    let mut scene = Scene::default();
+    scene.ball.radius = 0.074;
+    scene.ball.mass = 0.45;
+    scene.ball.gyration_radius = 0.055;
+    scene.environment.air_density = 3.9;
+    scene.environment.gravity = 0.0009;
+    scene.bat.speed = 50.0;
+    scene.pitch.spin = 520.0;
+    scene
+}
+
+#[test]
+fn a_start_that_does_not_land_is_seeded_from_a_coarse_scan() {
+    let scene = hovering();
+    assert!(!homerun::simulate(&scene, Purpose::Optimizer).flight.landed);
+    let found = optimize(&scene, OptimizerSettings::default());
+    assert!(found.landed, "{found:?}");
+    let scan = found.scan.expect("a scan");
+    assert!(scan.complete && scan.flown == 64, "{scan:?}");
+    // At least as far as the best landing cell of the same 8×8 scan.
+    let grid = Grid {
+        columns: 8,
+        rows: 8,
+        ..Grid::explorer_window()
+    };
+    let coarse = study::surface(&scene, grid, Purpose::Optimizer);
+    let (_, _, best_cell) = coarse.best().unwrap();
+    assert!(found.range >= best_cell, "{} {best_cell}", found.range);
+    let optimum = homerun::simulate(
+        &scene.with_swing(found.undercut, found.swing_angle),
+        Purpose::Optimizer,
+    );
+    assert!(optimum.flight.landed);
+    assert_eq!(optimum.flight.range, found.range);
+
+    // A start that lands scans nothing: the normal case costs what it did.
+    let fastball = optimize(&Scene::default(), OptimizerSettings::default());
+    assert_eq!(fastball.scan, None);
+    assert_eq!(fastball.status, Status::Converged);
+}
+
+#[test]
+fn with_no_swing_of_the_scan_landing_there_is_no_optimum() {
+    let scene = floating();
+    let none = optimize(&scene, OptimizerSettings::default());
+    assert!(!none.landed && !none.converged, "{none:?}");
+    assert_eq!(none.status, Status::NothingLands);
+    assert_eq!(none.range, f64::NEG_INFINITY);
+    let scan = none.scan.unwrap();
+    assert!(scan.complete && scan.flown == 64, "{scan:?}");
+    // The start's simplex (3) and the scan (64).
+    assert_eq!(none.evaluations, 67);
+    // The same scan, cut short by the work limit: it says so.
+    let settings = OptimizerSettings {
+        max_flight_steps: 200_000,
+        ..OptimizerSettings::default()
+    };
+    let cut = optimize(&scene, settings);
+    assert_eq!(cut.status, Status::OutOfWork);
+    let scan = cut.scan.unwrap();
+    assert!(!cut.landed && !scan.complete && scan.flown < 64, "{cut:?}");
+}

@@ -8,7 +8,7 @@ use assert_cmd::Command;
 use homerun::Scene;
 use homerun::analysis::bench::TrajectoryRow;
 use homerun::analysis::figures::{self, Figure, FigureData};
-use homerun::analysis::study::{Grid, Surface};
+use homerun::analysis::study::{CellOutcome, Grid, Surface};
 use homerun::picture::{
     self, FlightPath, SurfacePicture, TrajectoryPicture, bench_svg, table_figure_svg,
 };
@@ -107,17 +107,18 @@ fn a_surface_shows_its_scale_its_gaps_and_its_marks() {
         columns: 3,
         rows: 2,
     };
-    let surface = Surface {
+    let surface = Surface::from_outcomes(
         grid,
-        ranges: vec![
-            Some(100.0),
-            Some(130.0),
-            None,
-            Some(f64::NAN),
-            Some(120.0),
-            Some(90.0),
+        vec![
+            CellOutcome::Landed(100.0),
+            CellOutcome::Landed(130.0),
+            CellOutcome::BatMisses,
+            CellOutcome::NotLanded,
+            CellOutcome::Landed(120.0),
+            CellOutcome::Landed(90.0),
         ],
-    };
+    )
+    .unwrap();
     let picture = SurfacePicture {
         surface: &surface,
         title: "Range over (E, ψ) — preset test".into(),

@@ -479,7 +479,14 @@ fn input_index(name: &str) -> usize {
 
 #[test]
 fn the_sensitivity_column_is_what_a_nudge_does() {
-    let mut app = app(80, 24, None);
+    // At 80×24 the pane has room for Δ only, so Δopt is not computed.
+    let mut small = app(80, 24, None);
+    settle(&mut small);
+    assert_eq!(small.gains_done(Gain::Swing), input_count());
+    assert_eq!(small.gains_done(Gain::Optimum), 0);
+    assert!(!small.busy());
+
+    let mut app = app(140, 40, None);
     settle(&mut app);
     assert_eq!(app.gains_done(Gain::Swing), input_count());
     assert_eq!(app.gains_done(Gain::Optimum), input_count());
@@ -588,4 +595,33 @@ fn every_key_is_offered_and_the_weather_derives_the_air() {
     key(&mut app, KeyCode::Char('h'));
     key(&mut app, KeyCode::Char('h'));
     assert_eq!(app.scene.lift, LiftModel::None);
+}
+
+#[test]
+fn a_ball_that_does_not_land_is_never_shown_as_a_range() {
+    let mut app = app(80, 24, None);
+    set_and_settle(&mut app, "environment.gravity", "0.001");
+    assert!(!app.swing.flight.landed);
+    let screen = screen(&app);
+    // The readout says where the ball is instead, and the trajectory's
+    // title gives no range.
+    assert!(screen.contains("did not land in 600 s ("), "{screen}");
+    assert!(screen.contains(" does not land, apex "), "{screen}");
+    assert!(!screen.contains("range "), "{screen}");
+    // The optimum found from the coarse scan lands, and is shown with its
+    // range; the current swing's difference from it has none.
+    let optimum = app.optimum.unwrap();
+    assert!(
+        optimum.done && optimum.best.range.is_finite(),
+        "{optimum:?}"
+    );
+    assert!(
+        screen.contains("you −opt ΔE") && screen.contains("  —"),
+        "{screen}"
+    );
+    // The heatmap's best cell and scale use only landings.
+    let surface = &app.surface.as_ref().unwrap().surface;
+    assert!(surface.any_not_landed());
+    let (i, j, best) = surface.best().unwrap();
+    assert_eq!(surface.get(i, j), Some(best));
 }

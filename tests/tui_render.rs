@@ -162,3 +162,16 @@ fn weather_on_a_small_screen() {
     settle(&mut app);
     insta::assert_snapshot!("weather_80x24", screen(&app));
 }
+
+#[test]
+fn a_surface_with_balls_that_do_not_land() {
+    // In 0.001 m/s² of gravity the fastball's own swing hovers, and so do
+    // most swings of the window: those cells are hatched, off the scale.
+    let mut app = app(80, 24, None);
+    set_and_settle(&mut app, "environment.gravity", "0.001");
+    key(&mut app, KeyCode::Char('2'));
+    let screen = screen(&app);
+    assert!(screen.contains("░░   up"), "the legend: {screen}");
+    assert!(screen.contains("░░░░"), "hatched cells: {screen}");
+    insta::assert_snapshot!("surface_not_landing_80x24", screen);
+}

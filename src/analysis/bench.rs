@@ -461,12 +461,12 @@ fn optimisations(effort: Effort, quick: bool) -> Vec<OptimisationRow> {
 }
 
 fn max_difference(a: &study::Surface, b: &study::Surface) -> f64 {
-    a.ranges
+    a.outcomes()
         .iter()
-        .zip(&b.ranges)
-        .map(|(a, b)| match (a, b) {
+        .zip(b.outcomes())
+        .map(|(a, b)| match (a.range(), b.range()) {
             (Some(a), Some(b)) => (a - b).abs(),
-            (None, None) => 0.0,
+            _ if a == b => 0.0,
             _ => f64::INFINITY,
         })
         .fold(0.0, f64::max)
@@ -528,7 +528,7 @@ const EXPLORER_FIGURES: [u32; 11] = [3, 4, 5, 6, 8, 9, 10, 11, 12, 13, 14];
 fn explorer(effort: Effort) -> Vec<ExplorerRow> {
     use super::figures::{figure_data, work_steps};
     use super::sensitivity;
-    use crate::model::keys::all_keys;
+    use crate::model::keys::swing_keys;
     let scene = Scene::default();
     let runs = effort.surface_runs;
     let mut rows = Vec::new();
@@ -544,10 +544,10 @@ fn explorer(effort: Effort) -> Vec<ExplorerRow> {
             cpu_ms: cpu.map(|c| c * 1e3),
         });
     }
-    let inputs = all_keys().count();
+    let inputs = swing_keys().count();
     let range = model::range(&scene, Purpose::Readout);
     let (time, cpu) = time_median(runs, 1, || {
-        all_keys()
+        swing_keys()
             .map(|key| sensitivity::range_gain(&scene, key, range))
             .collect::<Vec<_>>()
     });
@@ -563,9 +563,11 @@ fn explorer(effort: Effort) -> Vec<ExplorerRow> {
         swing_angle: best.swing_angle,
         range: best.range,
     };
-    let moving = all_keys().filter(|k| sensitivity::moves_optimum(k)).count();
+    let moving = swing_keys()
+        .filter(|k| sensitivity::moves_optimum(k))
+        .count();
     let (time, cpu) = time_median(runs, 1, || {
-        all_keys()
+        swing_keys()
             .map(|key| sensitivity::optimum_gain(&scene, key, optimum, &|| false))
             .collect::<Vec<_>>()
     });

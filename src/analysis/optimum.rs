@@ -6,6 +6,7 @@
 use serde::Serialize;
 
 use super::precision::Purpose;
+use super::study::Grid;
 use crate::model::flight::FlightOptions;
 use crate::model::{self, scene::Scene};
 use crate::numerics::nelder_mead::{self, NelderMead};
@@ -15,6 +16,11 @@ use crate::numerics::nelder_mead::{self, NelderMead};
 const UNDERCUT_SCALE: f64 = 0.01; // m
 const SWING_ANGLE_SCALE: f64 = 0.1; // rad
 const MAX_SWING_ANGLE: f64 = std::f64::consts::FRAC_PI_2;
+
+/// The coarse scan that seeds a search whose start does not land: this many
+/// columns (E) and rows (ψ) over [`Grid::explorer_window`], 64 flights, the
+/// explorer's first glance at the surface.
+pub const SCAN_SIDE: usize = 8;
 
 /// The default [`OptimizerSettings::max_flight_steps`]: about 1.5 s of
 /// integration at the optimiser's tolerance, 200× what the Table II optima
@@ -64,22 +70,56 @@ pub struct Point {
 }
 
 /// Where the search stands.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum Status {
+    #[serde(rename = "running")]
     Running,
+    #[serde(rename = "converged")]
     Converged,
     /// Stopped by `max_evaluations` before converging.
+    #[serde(rename = "evaluation_limit")]
     OutOfEvaluations,
     /// Stopped by `max_flight_steps` before converging.
+    #[serde(rename = "work_limit")]
     OutOfWork,
+    /// Neither the start nor any swing of the coarse scan lands: there is
+    /// nothing to maximise.
+    #[serde(rename = "nothing_lands")]
+    NothingLands,
+}
+
+/// The coarse scan of [`Grid::explorer_window`] that seeds a search whose
+/// start does not land.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Scan {
+    pub grid: Grid,
+    /// Swings of the grid flown so far (those the bat reaches).
+    pub flown: u32,
+    /// Whether the whole grid was flown (not cut short by the work limit).
+    pub complete: bool,
+}
+
+/// What the search is doing: scanning for a landing swing, cell by cell, or
+/// climbing by Nelder–Mead.
+#[derive(Clone, Copy, Debug)]
+enum Phase {
+    Search,
+    Scan {
+        /// The next cell, row-major.
+        next: usize,
+        /// The best cell so far (scaled point, cost).
+        best: Option<(nelder_mead::Point<2>, f64)>,
+    },
 }
 
 /// An incremental search for the maximum range.
 #[derive(Clone, Debug)]
 pub struct Optimizer {
     objective: Objective,
-    max_evaluations: u32,
+    settings: OptimizerSettings,
     search: NelderMead<2, 3>,
+    phase: Phase,
+    scan: Option<Scan>,
     status: Status,
 }
 
@@ -92,6 +132,11 @@ struct Objective {
     /// Integration steps taken by all its flights, accepted and rejected.
     flight_steps: u64,
     max_flight_steps: u64,
+}
+
+/// A point of the search in its scaled units.
+fn scaled(undercut: f64, swing_angle: f64) -> nelder_mead::Point<2> {
+    nelder_mead::Point::<2>::new(undercut / UNDERCUT_SCALE, swing_angle / SWING_ANGLE_SCALE)
 }
 
 impl Objective {
@@ -123,6 +168,9 @@ impl Optimizer {
     /// Starts a search at `start` = (E, ψ), e.g. the last optimum (warm
     /// start) or the scene's own swing, flying each swing as precisely as
     /// `options` says (normally `Purpose::Optimizer`). The scene must be valid.
+    /// If no swing of the first simplex lands, the search first scans
+    /// [`Grid::explorer_window`] coarsely ([`SCAN_SIDE`]²) and restarts at the
+    /// best landing swing there; a start that lands costs nothing more.
     pub fn new(
         scene: &Scene,
         start: (f64, f64),
@@ -137,35 +185,58 @@ impl Optimizer {
             max_flight_steps: settings.max_flight_steps,
         };
         let limit = scene.reach();
-        let start = nelder_mead::Point::<2>::new(
-            start.0.clamp(-0.99 * limit, 0.99 * limit) / UNDERCUT_SCALE,
-            start.1.clamp(-MAX_SWING_ANGLE, MAX_SWING_ANGLE) / SWING_ANGLE_SCALE,
+        let start = scaled(
+            start.0.clamp(-0.99 * limit, 0.99 * limit),
+            start.1.clamp(-MAX_SWING_ANGLE, MAX_SWING_ANGLE),
         );
-        let search = NelderMead::new(
-            start,
-            nelder_mead::Settings {
-                tolerance_x: settings.tolerance_x,
-                tolerance_cost: settings.tolerance_range,
-                max_restarts: settings.max_restarts,
-                initial_size: settings.initial_size,
-            },
-            &mut |u| objective.cost(u),
-        );
+        let search = NelderMead::new(start, Self::simplex(settings), &mut |u| objective.cost(u));
+        let lands = search.best().cost.is_finite();
         Optimizer {
             objective,
-            max_evaluations: settings.max_evaluations,
+            settings,
             search,
+            phase: if lands {
+                Phase::Search
+            } else {
+                Phase::Scan {
+                    next: 0,
+                    best: None,
+                }
+            },
+            scan: (!lands).then_some(Scan {
+                grid: Self::scan_grid(),
+                flown: 0,
+                complete: false,
+            }),
             status: Status::Running,
         }
     }
 
+    fn simplex(settings: OptimizerSettings) -> nelder_mead::Settings {
+        nelder_mead::Settings {
+            tolerance_x: settings.tolerance_x,
+            tolerance_cost: settings.tolerance_range,
+            max_restarts: settings.max_restarts,
+            initial_size: settings.initial_size,
+        }
+    }
+
+    fn scan_grid() -> Grid {
+        Grid {
+            columns: SCAN_SIDE,
+            rows: SCAN_SIDE,
+            ..Grid::explorer_window()
+        }
+    }
+
     /// One Nelder–Mead iteration (reflect, expand, contract or shrink:
-    /// one to four range evaluations), or a restart once converged.
+    /// one to four range evaluations), or a restart once converged; while
+    /// scanning, one swing of the scan.
     pub fn step(&mut self) -> Status {
         if self.status != Status::Running {
             return self.status;
         }
-        if self.objective.evaluations >= self.max_evaluations {
+        if self.objective.evaluations >= self.settings.max_evaluations {
             self.status = Status::OutOfEvaluations;
             return self.status;
         }
@@ -173,11 +244,48 @@ impl Optimizer {
             self.status = Status::OutOfWork;
             return self.status;
         }
+        if let Phase::Scan { next, best } = self.phase {
+            self.scan_step(next, best);
+            return self.status;
+        }
         let objective = &mut self.objective;
         if self.search.step(&mut |u| objective.cost(u)) == nelder_mead::Status::Converged {
             self.status = Status::Converged;
         }
         self.status
+    }
+
+    /// Flies cell `next` of the scan; after the last, starts the simplex at
+    /// the best landing cell, or gives up if none lands.
+    fn scan_step(&mut self, next: usize, mut best: Option<(nelder_mead::Point<2>, f64)>) {
+        let grid = Self::scan_grid();
+        let (i, j) = (next % grid.columns, next / grid.columns);
+        let point = scaled(grid.undercut_at(i), grid.swing_angle_at(j));
+        let before = self.objective.evaluations;
+        let cost = self.objective.cost(&point);
+        let scan = self.scan.as_mut().expect("a scan while scanning");
+        scan.flown += self.objective.evaluations - before;
+        if cost < best.map_or(f64::INFINITY, |b| b.1) {
+            best = Some((point, cost));
+        }
+        if next + 1 < grid.columns * grid.rows {
+            self.phase = Phase::Scan {
+                next: next + 1,
+                best,
+            };
+            return;
+        }
+        scan.complete = true;
+        self.phase = Phase::Search;
+        match best {
+            Some((point, _)) => {
+                let objective = &mut self.objective;
+                self.search = NelderMead::new(point, Self::simplex(self.settings), &mut |u| {
+                    objective.cost(u)
+                });
+            }
+            None => self.status = Status::NothingLands,
+        }
     }
 
     /// Steps until converged, or until `stop()` says so (then `None`).
@@ -212,6 +320,11 @@ impl Optimizer {
     pub fn status(&self) -> Status {
         self.status
     }
+
+    /// The coarse scan, if the start did not land.
+    pub fn scan(&self) -> Option<Scan> {
+        self.scan
+    }
 }
 
 /// The optimum of a finished search.
@@ -227,9 +340,10 @@ pub struct Optimum {
     pub landed: bool,
     /// Integration steps taken by all the flights.
     pub flight_steps: u64,
-    /// Why it stopped: converged, or which limit.
-    #[serde(skip)]
+    /// Why it stopped: converged, which limit, or nothing lands.
     pub status: Status,
+    /// The coarse scan, if the start did not land.
+    pub scan: Option<Scan>,
 }
 
 /// Runs a search to the end from the scene's own (E, ψ).
@@ -251,6 +365,7 @@ pub fn optimize_from(scene: &Scene, start: (f64, f64), settings: OptimizerSettin
         landed: best.range.is_finite(),
         flight_steps: optimizer.flight_steps(),
         status: optimizer.status(),
+        scan: optimizer.scan(),
     }
 }
 
@@ -286,11 +401,25 @@ mod tests {
     }
 
     #[test]
-    fn with_no_swing_landing_there_is_no_optimum() {
+    fn a_start_that_does_not_land_scans_then_searches() {
         let mut scene = Scene::default();
         scene.environment.gravity = 0.001;
-        let none = optimize(&scene, OptimizerSettings::default());
-        assert!(!none.landed && !none.converged);
-        assert_eq!(none.range, f64::NEG_INFINITY);
+        let mut optimizer = Optimizer::new(
+            &scene,
+            (scene.bat.undercut, scene.bat.swing_angle),
+            Purpose::Optimizer,
+            OptimizerSettings::default(),
+        );
+        // The start's simplex, then one flight of the scan a step.
+        assert_eq!(optimizer.evaluations(), 3);
+        assert_eq!(optimizer.best().range, f64::NEG_INFINITY);
+        for n in 1..=64 {
+            assert_eq!(optimizer.step(), Status::Running);
+            assert_eq!(optimizer.scan().unwrap().flown, n);
+        }
+        // The last scan step started the simplex at the best cell.
+        assert!(optimizer.scan().unwrap().complete);
+        assert_eq!(optimizer.evaluations(), 3 + 64 + 3);
+        assert!(optimizer.best().range.is_finite());
     }
 }

@@ -162,9 +162,9 @@ mod tests {
         let cheap = study::surface(&scene, grid, Purpose::Surface);
         let tight = study::surface(&scene, grid, Purpose::Reference);
         let mut worst: f64 = 0.0;
-        for (a, b) in cheap.ranges.iter().zip(&tight.ranges) {
-            assert_eq!(a.is_some(), b.is_some());
-            if let (Some(a), Some(b)) = (a, b) {
+        for (a, b) in cheap.outcomes().iter().zip(tight.outcomes()) {
+            assert_eq!(a.range().is_some(), b.range().is_some());
+            if let (Some(a), Some(b)) = (a.range(), b.range()) {
                 worst = worst.max((a - b).abs());
             }
         }

@@ -9,7 +9,7 @@ use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use super::optimum::{OptimizerSettings, optimize_from};
+use super::optimum::{OptimizerSettings, Status, optimize_from};
 use crate::model::flight::{self, FlightOptions, FlightSummary, TrajectoryPoint};
 use crate::model::impact::{Impact, Regime};
 use crate::model::keys::{DRAG_KEY, InputError};
@@ -56,40 +56,121 @@ impl Grid {
     }
 }
 
-/// Range at every grid point, row-major (row j = ψ, column i = E); `None`
-/// where the bat misses the ball (|E| ≥ r_b + r_B). [`surface_within`] gives
-/// NaN where the ball does not land.
+/// What one cell of a range surface holds.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CellOutcome {
+    /// The ball lands, this far from the plate (m).
+    Landed(f64),
+    /// The ball does not land within its flight's limits (time or
+    /// integration steps): it has no range.
+    NotLanded,
+    /// The bat cannot reach the ball there (|E| ≥ r_b + r_B).
+    BatMisses,
+    /// Not flown: the surface was cancelled or is not finished.
+    NotComputed,
+}
+
+impl CellOutcome {
+    /// The outcome of one flight: a range only if it landed.
+    pub fn of_flight(landed: bool, range: f64) -> CellOutcome {
+        if landed && range.is_finite() {
+            CellOutcome::Landed(range)
+        } else {
+            CellOutcome::NotLanded
+        }
+    }
+
+    /// The range, if the ball landed.
+    pub fn range(self) -> Option<f64> {
+        match self {
+            CellOutcome::Landed(range) => Some(range),
+            _ => None,
+        }
+    }
+}
+
+/// The outcome at every grid point, row-major (row j = ψ, column i = E).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Surface {
     pub grid: Grid,
-    pub ranges: Vec<Option<f64>>,
+    cells: Vec<CellOutcome>,
 }
 
 impl Surface {
-    pub fn get(&self, column: usize, row: usize) -> Option<f64> {
-        self.ranges[row * self.grid.columns + column]
+    /// A surface of given outcomes, row-major; `None` unless there is one
+    /// per grid point.
+    pub fn from_outcomes(grid: Grid, cells: Vec<CellOutcome>) -> Option<Surface> {
+        (cells.len() == grid.columns * grid.rows).then_some(Surface { grid, cells })
     }
 
-    /// The highest cell: (column, row, range).
+    /// A surface with no cell flown yet.
+    pub fn not_computed(grid: Grid) -> Surface {
+        Surface {
+            grid,
+            cells: vec![CellOutcome::NotComputed; grid.columns * grid.rows],
+        }
+    }
+
+    /// The range at (column, row), if the ball lands there.
+    pub fn get(&self, column: usize, row: usize) -> Option<f64> {
+        self.outcome(column, row).range()
+    }
+
+    /// What happened at (column, row).
+    pub fn outcome(&self, column: usize, row: usize) -> CellOutcome {
+        self.cells[row * self.grid.columns + column]
+    }
+
+    /// Every cell's outcome, row-major.
+    pub fn outcomes(&self) -> &[CellOutcome] {
+        &self.cells
+    }
+
+    /// The ranges of the cells whose ball lands.
+    pub fn landed_ranges(&self) -> impl Iterator<Item = f64> + '_ {
+        self.cells.iter().filter_map(|c| c.range())
+    }
+
+    /// Whether any cell's ball does not land.
+    pub fn any_not_landed(&self) -> bool {
+        self.cells.contains(&CellOutcome::NotLanded)
+    }
+
+    /// The highest cell whose ball lands: (column, row, range).
     pub fn best(&self) -> Option<(usize, usize, f64)> {
-        self.ranges
+        self.cells
             .iter()
             .enumerate()
-            .filter_map(|(k, r)| r.filter(|r| r.is_finite()).map(|r| (k, r)))
+            .filter_map(|(k, c)| c.range().map(|r| (k, r)))
             .max_by(|a, b| a.1.total_cmp(&b.1))
             .map(|(k, r)| (k % self.grid.columns, k / self.grid.columns, r))
     }
 }
 
-/// The range of `scene` with its swing replaced by (E, ψ), if the bat reaches.
+/// What happens with `scene`'s swing replaced by (E, ψ).
+pub fn outcome_at(
+    scene: &Scene,
+    undercut: f64,
+    swing_angle: f64,
+    options: impl Into<FlightOptions>,
+) -> CellOutcome {
+    if undercut.abs() >= scene.reach() {
+        return CellOutcome::BatMisses;
+    }
+    let flight = model::simulate(&scene.with_swing(undercut, swing_angle), options).flight;
+    CellOutcome::of_flight(flight.landed, flight.range)
+}
+
+/// The range of `scene` with its swing replaced by (E, ψ), if the bat
+/// reaches and the ball lands.
 pub fn range_at(
     scene: &Scene,
     undercut: f64,
     swing_angle: f64,
     options: impl Into<FlightOptions>,
 ) -> Option<f64> {
-    (undercut.abs() < scene.reach())
-        .then(|| model::range(&scene.with_swing(undercut, swing_angle), options))
+    outcome_at(scene, undercut, swing_angle, options).range()
 }
 
 /// The most integration steps a sweep's optimisations may take together
@@ -118,8 +199,7 @@ impl TooMuchWork {
 }
 
 /// As [`surface`], within a budget of `max_steps` integration steps over all
-/// its flights, reporting each cell done to `tick`, with NaN where the ball
-/// does not land (it has no range there). It gives up as soon as
+/// its flights, reporting each cell done to `tick`. It gives up as soon as
 /// the steps taken pass the budget, or, once 64 cells are done, as soon as
 /// their mean says the whole grid would take twice the budget.
 pub fn surface_within(
@@ -146,7 +226,7 @@ pub fn surface_within(
     // sample of the grid's work.
     let count = grid.rows * grid.columns;
     let stride = spread(count);
-    let cells_done: Option<Vec<(usize, Option<f64>)>> = (0..count)
+    let cells_done: Option<Vec<(usize, CellOutcome)>> = (0..count)
         .into_par_iter()
         .map(|m| {
             if over() {
@@ -157,7 +237,7 @@ pub fn surface_within(
             let undercut = grid.undercut_at(i);
             if undercut.abs() >= reach {
                 tick();
-                return Some((k, None));
+                return Some((k, CellOutcome::BatMisses));
             }
             let flight =
                 model::simulate(&scene.with_swing(undercut, grid.swing_angle_at(j)), options)
@@ -166,12 +246,7 @@ pub fn surface_within(
             steps.fetch_add(taken, Ordering::Relaxed);
             cells.fetch_add(1, Ordering::Relaxed);
             tick();
-            let range = if flight.landed {
-                flight.range
-            } else {
-                f64::NAN
-            };
-            Some((k, Some(range)))
+            Some((k, CellOutcome::of_flight(flight.landed, flight.range)))
         })
         .collect();
     let Some(cells_done) = cells_done else {
@@ -181,11 +256,11 @@ pub fn surface_within(
             total,
         });
     };
-    let mut ranges = vec![None; count];
-    for (k, range) in cells_done {
-        ranges[k] = range;
+    let mut surface = Surface::not_computed(grid);
+    for (k, outcome) in cells_done {
+        surface.cells[k] = outcome;
     }
-    Ok(Surface { grid, ranges })
+    Ok(surface)
 }
 
 /// A step through 0..n that visits every index once (coprime with n) and
@@ -218,14 +293,14 @@ pub fn surface_until(
     cancelled: &(dyn Fn() -> bool + Sync),
 ) -> Option<Surface> {
     let options = options.into();
-    let ranges: Option<Vec<Option<f64>>> = (0..grid.rows * grid.columns)
+    let cells: Option<Vec<CellOutcome>> = (0..grid.rows * grid.columns)
         .into_par_iter()
         .map(|k| {
             if cancelled() {
                 return None;
             }
             let (i, j) = (k % grid.columns, k / grid.columns);
-            Some(range_at(
+            Some(outcome_at(
                 scene,
                 grid.undercut_at(i),
                 grid.swing_angle_at(j),
@@ -233,7 +308,7 @@ pub fn surface_until(
             ))
         })
         .collect();
-    ranges.map(|ranges| Surface { grid, ranges })
+    cells.map(|cells| Surface { grid, cells })
 }
 
 /// One point of a sweep: the optimal swing with one input set to `value`
@@ -250,6 +325,8 @@ pub struct SweepPoint {
     pub launch_angle: f64,
     pub evaluations: u32,
     pub converged: bool,
+    /// Why its search stopped: converged, which limit, or nothing lands.
+    pub status: Status,
     /// Whether any swing tried lands; if none does, there is no optimum and
     /// `range` is −∞.
     pub landed: bool,
@@ -368,6 +445,7 @@ pub fn sweep_observed(
                 launch_angle: impact.launch_angle(),
                 evaluations: optimum.evaluations,
                 converged: optimum.converged,
+                status: optimum.status,
                 landed: optimum.landed,
             }
         })

@@ -6,7 +6,7 @@ use super::table::{Align, Cell, Column, Digits, Table, Width};
 use super::{Format, UsageError, pretty};
 use crate::Scene;
 use crate::analysis::landing;
-use crate::analysis::optimum::{OptimizerSettings, Status};
+use crate::analysis::optimum::{OptimizerSettings, Optimum, Scan, Status};
 use crate::analysis::paper::{Best, best_swing};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study;
@@ -29,7 +29,7 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
     // when flown again at readout precision.
     let unlanded = if optimum.landed {
         landing::why_not_landed(
-            &scene.with_swing(optimum.undercut, optimum.swing_angle),
+            &swing_scene(scene, &optimum),
             &swing.flight,
             Purpose::Readout,
         )
@@ -41,6 +41,13 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
         )
     };
     let landed = unlanded.is_none();
+    // On a scene whose balls hover, the longest landing flight may be one
+    // that comes down just before the flight's time limit: then the limit,
+    // not the swing, sets the range.
+    let at_time_limit = landed && {
+        let (_, launch) = crate::model::launch(&swing_scene(scene, &optimum), impact);
+        swing.flight.flight_time >= 0.99 * launch.time_limit(scene.environment.gravity)
+    };
     if json {
         let mut json = serde_json::json!({
             "undercut": optimum.undercut,
@@ -51,9 +58,16 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
             "launch_angle": impact.launch_angle(),
             "evaluations": optimum.evaluations,
             "converged": optimum.converged,
+            "status": optimum.status,
             "landed": landed,
             "environment": environment_json(scene),
         });
+        if let Some(scan) = optimum.scan {
+            json["scanned"] = scan.flown.into();
+        }
+        if at_time_limit {
+            json["at_time_limit"] = true.into();
+        }
         if !optimum.landed {
             no_optimum(&mut json);
         }
@@ -62,25 +76,18 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
         }
         return pretty(&json);
     }
-    let search = match optimum.status {
-        Status::Converged => "converged (Nelder–Mead, tolerances 1e-4)".to_owned(),
-        Status::OutOfWork => format!(
-            "NOT converged: stopped at the work limit ({} integration steps)",
-            optimum.flight_steps
-        ),
-        _ => "NOT converged: stopped at the evaluation limit".to_owned(),
-    };
     let search = (
         "search",
-        format!("{} range evaluations, {search}", optimum.evaluations),
+        format!(
+            "{} range evaluations, {}",
+            optimum.evaluations,
+            stopped(&optimum)
+        ),
     );
     if !optimum.landed {
         let why = unlanded.unwrap_or_default();
         return labelled(&[
-            (
-                "optimum",
-                "none: no swing tried lands, so there is no range to maximise".to_owned(),
-            ),
+            ("optimum", format!("none: {}", nothing_lands(&optimum))),
             (
                 "",
                 format!(
@@ -92,12 +99,17 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
         ]);
     }
     let range = unlanded.unwrap_or_else(|| {
+        let limit = if at_time_limit {
+            " (at the flight's time limit: the limit, not the swing, sets this range)"
+        } else {
+            ""
+        };
         format!(
-            "{:.4} m in {:.3} s",
+            "{:.4} m in {:.3} s{limit}",
             swing.flight.range, swing.flight.flight_time
         )
     });
-    labelled(&[
+    let mut lines = vec![
         (
             "optimum",
             format!(
@@ -110,7 +122,71 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
         ("range", range),
         ("launch", launch_text(impact)),
         search,
-    ])
+    ];
+    if let Some(scan) = optimum.scan {
+        lines.push((
+            "start",
+            format!(
+                "the swing given does not land; started from the best of {} swings over {}",
+                scan.flown,
+                window(&scan)
+            ),
+        ));
+    }
+    labelled(&lines)
+}
+
+/// `scene` with the optimum's swing.
+fn swing_scene(scene: &Scene, optimum: &Optimum) -> Scene {
+    scene.with_swing(optimum.undercut, optimum.swing_angle)
+}
+
+/// The status as JSON names it ("work_limit").
+fn status_name(status: Status) -> String {
+    serde_json::to_value(status)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_owned))
+        .unwrap_or_default()
+}
+
+/// How a search ended: "converged (…)" or "NOT converged: stopped at …".
+fn stopped(optimum: &Optimum) -> String {
+    match optimum.status {
+        Status::Converged => "converged (Nelder–Mead, tolerances 1e-4)".to_owned(),
+        Status::OutOfWork => format!(
+            "NOT converged: stopped at the work limit ({} integration steps)",
+            optimum.flight_steps
+        ),
+        Status::OutOfEvaluations => "NOT converged: stopped at the evaluation limit".to_owned(),
+        Status::NothingLands => "nothing to converge to: no swing lands".to_owned(),
+        Status::Running => "NOT converged".to_owned(),
+    }
+}
+
+/// "E ∈ [0, 0.05] m, ψ ∈ [-0.6, 1] rad"
+fn window(scan: &Scan) -> String {
+    let grid = scan.grid;
+    format!(
+        "E ∈ [{}, {}] m, ψ ∈ [{}, {}] rad",
+        grid.undercut.0, grid.undercut.1, grid.swing_angle.0, grid.swing_angle.1
+    )
+}
+
+/// Why a search has no optimum: which swings it flew, none landing.
+fn nothing_lands(optimum: &Optimum) -> String {
+    match optimum.scan {
+        Some(scan) if scan.complete => format!(
+            "none of {} swings over {} lands, nor the swing given, so there is no range to maximise",
+            scan.flown,
+            window(&scan)
+        ),
+        Some(scan) => format!(
+            "no swing tried lands (the swing given and {} of a scan over {}, cut short), so there is no range to maximise",
+            scan.flown,
+            window(&scan)
+        ),
+        None => "no swing tried lands, so there is no range to maximise".to_owned(),
+    }
 }
 
 pub(super) fn sweep(
@@ -190,6 +266,7 @@ pub(super) fn sweep(
             Column::right("launch_angle", "ζ rad", 8, Digits::Fixed(4)),
             Column::data("evaluations"),
             Column::data("converged"),
+            Column::data("status"),
             Column::data("landed"),
             Column::text("", Width::AtLeast(0), Align::Left, ""),
         ],
@@ -209,16 +286,21 @@ pub(super) fn sweep(
                 .map(Cell::Num)
                 .to_vec();
                 row.push(Cell::Text(p.converged.to_string()));
+                row.push(Cell::Text(status_name(p.status)));
                 row.push(Cell::Bool(p.landed));
                 if !p.landed {
                     row[1..7].fill(Cell::Blank);
                 }
-                row.push(if !p.landed {
-                    Cell::Text("  (no swing tried lands: no optimum)".to_owned())
-                } else if p.converged {
-                    Cell::Blank
-                } else {
-                    Cell::Text("  (not converged)".to_owned())
+                row.push(match (p.landed, p.status) {
+                    (false, Status::NothingLands) => {
+                        Cell::Text("  (no swing lands: no optimum)".to_owned())
+                    }
+                    (false, _) => Cell::Text("  (no swing tried lands: no optimum)".to_owned()),
+                    (true, Status::Converged) => Cell::Blank,
+                    (true, Status::OutOfWork) => {
+                        Cell::Text("  (not converged: work limit)".to_owned())
+                    }
+                    (true, _) => Cell::Text("  (not converged: evaluation limit)".to_owned()),
                 });
                 row
             })

@@ -8,7 +8,7 @@ use super::{SceneArgs, UsageError};
 use crate::model::keys::{DRAG_KEY, InputBatch, InputError, LIFT_KEY};
 use crate::model::launch::SceneKind;
 use crate::model::scene::Scene;
-use crate::preset::{self, FIELD_KEYS, Fence, Preset, escape_for_terminal};
+use crate::preset::{self, FIELD_KEYS, Fence, Preset, cut, escape_for_terminal};
 
 /// The longest path Linux opens (PATH_MAX): a longer `--preset` or
 /// `--presets-dir` is refused before it is used, so that no error echoes it.
@@ -25,7 +25,7 @@ impl SceneArgs {
                 assignment
                     .split_once('=')
                     .ok_or_else(|| UsageError::BadAssignment {
-                        assignment: cut(assignment),
+                        assignment: cut(assignment, 80),
                     })?;
             let key = checked_key(key.trim()).map_err(with_field_keys)?;
             if let Some(field) = FIELD_KEYS.iter().find(|f| f.name == key) {
@@ -41,7 +41,7 @@ impl SceneArgs {
             {
                 value.to_owned()
             } else {
-                cut(value)
+                cut(value, 80)
             };
             batch
                 .set_text(&mut preset.scene, key, &shown)
@@ -123,20 +123,10 @@ fn number(key: &str, text: &str) -> Result<f64, UsageError> {
     text.trim().parse().map_err(|_| {
         InputError::NotANumber {
             key: key.to_owned(),
-            text: cut(text),
+            text: cut(text, 80),
         }
         .into()
     })
-}
-
-/// `text` cut to 80 characters with "…" (the errors quote it with its
-/// control characters escaped).
-pub(super) fn cut(text: &str) -> String {
-    if text.chars().count() > 80 {
-        text.chars().take(79).chain(['…']).collect()
-    } else {
-        text.to_owned()
-    }
 }
 
 /// The preset named (or at the path) `spec`, refusing first a `spec` too

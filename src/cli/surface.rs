@@ -4,16 +4,15 @@
 use std::fmt::Write as _;
 
 use super::progress::{self, Work};
-use super::scene::cut;
 use super::table::{Cell, Column, Digits, Table};
 use super::{Format, UsageError, WindowFault, pretty};
 use crate::Scene;
 use crate::analysis::figures;
 use crate::analysis::optimum::{OptimizerSettings, optimize};
 use crate::analysis::precision::Purpose;
-use crate::analysis::study::{self, Grid, Surface, TooMuchWork};
+use crate::analysis::study::{self, CellOutcome, Grid, Surface, TooMuchWork};
 use crate::picture::{self, SurfacePicture};
-use crate::preset::Preset;
+use crate::preset::{Preset, cut};
 
 /// The most cells a side of the grid takes: 500×500 cells of an ordinary
 /// scene take about 0.5 s on 2 cores.
@@ -39,7 +38,7 @@ fn parse_window(
         };
         UsageError::BadWindow {
             flag,
-            text: cut(text),
+            text: cut(text, 80),
             fault,
             accepted,
             example,
@@ -51,7 +50,7 @@ fn parse_window(
     let parse = |s: &str| {
         s.trim()
             .parse::<f64>()
-            .map_err(|_| bad(WindowFault::NotANumber(cut(s.trim()))))
+            .map_err(|_| bad(WindowFault::NotANumber(cut(s.trim(), 80))))
     };
     let (a, b) = (parse(a)?, parse(b)?);
     if !(a.is_finite() && b.is_finite()) {
@@ -78,7 +77,9 @@ pub(super) fn parse_grid(
     };
     let undercut = parse_window("--undercut", undercut, key_bounds("bat.undercut"))?;
     let swing_angle = parse_window("--swing-angle", swing_angle, key_bounds("bat.swing_angle"))?;
-    let bad = || UsageError::BadGrid { text: cut(grid) };
+    let bad = || UsageError::BadGrid {
+        text: cut(grid, 80),
+    };
     let (columns, rows) = grid
         .to_ascii_lowercase()
         .split_once('x')
@@ -181,35 +182,57 @@ fn axes(surface: &Surface) -> (Vec<f64>, Vec<f64>) {
     )
 }
 
-/// The surface's axes, its ranges row by row (null where the bat misses) and its best cell.
+/// Whether a cell's ball lands, as `hit --json` says it: true or false, and
+/// null where there is no flight (the bat misses, or the cell was not flown).
+fn landed(outcome: CellOutcome) -> Option<bool> {
+    match outcome {
+        CellOutcome::Landed(_) => Some(true),
+        CellOutcome::NotLanded => Some(false),
+        CellOutcome::BatMisses | CellOutcome::NotComputed => None,
+    }
+}
+
+/// The surface's axes, row by row its ranges (null where the ball does not
+/// land or the bat misses) and whether each cell's ball lands (null where
+/// the bat misses), and its best cell.
 pub(super) fn surface_json(surface: &Surface) -> serde_json::Value {
     let (undercuts, swing_angles) = axes(surface);
-    let rows: Vec<&[Option<f64>]> = surface.ranges.chunks(surface.grid.columns).collect();
+    let rows = |f: &dyn Fn(CellOutcome) -> serde_json::Value| -> Vec<Vec<serde_json::Value>> {
+        surface
+            .outcomes()
+            .chunks(surface.grid.columns)
+            .map(|row| row.iter().map(|&c| f(c)).collect())
+            .collect()
+    };
     serde_json::json!({
         "undercuts": undercuts,
         "swing_angles": swing_angles,
-        "ranges": rows,
+        "ranges": rows(&|c| serde_json::json!(c.range())),
+        "landed": rows(&|c| serde_json::json!(landed(c))),
         "best": surface.best().map(|(i, j, range)| serde_json::json!({
             "undercut": undercuts[i], "swing_angle": swing_angles[j], "range": range,
         })),
     })
 }
 
-/// One row per cell: E, ψ and the range (blank where the bat misses).
+/// One row per cell: E, ψ, the range (blank where the ball does not land or
+/// the bat misses) and whether the ball lands (blank where the bat misses).
 fn surface_cells(surface: &Surface) -> Table {
     let (undercuts, swing_angles) = axes(surface);
     let mut rows = Vec::new();
     for (j, psi) in swing_angles.iter().enumerate() {
         for (i, e) in undercuts.iter().enumerate() {
-            let range = surface
-                .get(i, j)
-                .filter(|r| r.is_finite())
-                .map_or(Cell::Blank, Cell::Num);
-            rows.push(vec![Cell::Num(*e), Cell::Num(*psi), range]);
+            let outcome = surface.outcome(i, j);
+            rows.push(vec![
+                Cell::Num(*e),
+                Cell::Num(*psi),
+                outcome.range().map_or(Cell::Blank, Cell::Num),
+                landed(outcome).map_or(Cell::Blank, Cell::Bool),
+            ]);
         }
     }
     Table {
-        columns: ["undercut", "swing_angle", "range"]
+        columns: ["undercut", "swing_angle", "range", "landed"]
             .map(Column::data)
             .to_vec(),
         rows,
@@ -235,11 +258,13 @@ fn surface_text(surface: &Surface) -> String {
                 } else {
                     " "
                 };
-                Cell::Text(match surface.get(i, j) {
-                    Some(r) if r.is_finite() => format!("{r:>4.0}{mark}"),
-                    Some(_) => format!("{:>4}{mark}", "up"),
-                    None => format!("{:>4}{mark}", "-"),
-                })
+                let text = match surface.outcome(i, j) {
+                    CellOutcome::Landed(r) => return Cell::Text(format!("{r:>4.0}{mark}")),
+                    CellOutcome::NotLanded => "up",
+                    CellOutcome::BatMisses => "-",
+                    CellOutcome::NotComputed => "?",
+                };
+                Cell::Text(format!("{text:>4}{mark}"))
             }));
             row
         })
@@ -247,7 +272,7 @@ fn surface_text(surface: &Surface) -> String {
     let mut out = String::from(
         "range (m) over undercut E (columns, mm) and swing angle ψ (rows, rad); * best cell, - bat misses\n",
     );
-    if surface.ranges.iter().flatten().any(|r| !r.is_finite()) {
+    if surface.any_not_landed() {
         out.insert_str(out.len() - 1, ", up: the ball does not land");
     }
     out.push_str(&Table { columns, rows }.text());

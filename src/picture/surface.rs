@@ -11,7 +11,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::{FONT, Labels, MARK, NOW, PictureError, drawn, sig, tick_label};
 use crate::Scene;
 use crate::analysis::figures::SurfaceFigure;
-use crate::analysis::study::Surface;
+use crate::analysis::study::{CellOutcome, Surface};
 
 /// Colour steps of the scale: each is 1/STEPS of the surface's span (about
 /// 4 m on Fig. 7's window), fine enough to read and coarse enough that a
@@ -105,18 +105,23 @@ impl Shade {
 
 /// The span of the landed ranges, if any landed.
 fn span(surface: &Surface) -> Option<(f64, f64)> {
-    let finite = surface.ranges.iter().flatten().filter(|r| r.is_finite());
-    let (low, high) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &r| {
-        (lo.min(r), hi.max(r))
-    });
+    let (low, high) = surface
+        .landed_ranges()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), r| {
+            (lo.min(r), hi.max(r))
+        });
     (low <= high).then(|| (low, high.max(low + 1e-9)))
 }
 
-fn shade(range: Option<f64>, (low, high): (f64, f64)) -> Shade {
-    match range {
-        None => Shade::Misses,
-        Some(r) if !r.is_finite() => Shade::Up,
-        Some(r) => Shade::Step((((r - low) / (high - low) * STEPS as f64) as usize).min(STEPS - 1)),
+fn shade(outcome: CellOutcome, (low, high): (f64, f64)) -> Shade {
+    match outcome {
+        // Nothing produces an uncomputed cell in a finished surface; it has
+        // no range either way.
+        CellOutcome::BatMisses | CellOutcome::NotComputed => Shade::Misses,
+        CellOutcome::NotLanded => Shade::Up,
+        CellOutcome::Landed(r) => {
+            Shade::Step((((r - low) / (high - low) * STEPS as f64) as usize).min(STEPS - 1))
+        }
     }
 }
 
@@ -191,9 +196,9 @@ pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
             let (y0, y1) = edges(grid.swing_angle, grid.rows, j);
             let mut i = 0;
             while i < grid.columns {
-                let here = shade(surface.get(i, j), span);
+                let here = shade(surface.outcome(i, j), span);
                 let mut end = i + 1;
-                while end < grid.columns && shade(surface.get(end, j), span) == here {
+                while end < grid.columns && shade(surface.outcome(end, j), span) == here {
                     end += 1;
                 }
                 let x0 = edges(grid.undercut, grid.columns, i).0 * 1e3;
@@ -300,10 +305,14 @@ fn draw_scale(
         y += box_height;
     }
     let mut extra: Vec<(RGBColor, &str)> = Vec::new();
-    if surface.ranges.iter().flatten().any(|r| !r.is_finite()) {
+    if surface.any_not_landed() {
         extra.push((UP, "does not land"));
     }
-    if surface.ranges.iter().any(Option::is_none) {
+    if surface
+        .outcomes()
+        .iter()
+        .any(|c| matches!(c, CellOutcome::BatMisses | CellOutcome::NotComputed))
+    {
         extra.push((MISSES, "bat misses"));
     }
     y += 10;
@@ -338,12 +347,7 @@ fn draw_scale(
 fn contour(surface: &Surface, level: f64) -> Vec<[(f64, f64); 2]> {
     let grid = surface.grid;
     // Landed cells only: a missing or unlanded neighbour draws no boundary.
-    let reaches = |i: usize, j: usize| {
-        surface
-            .get(i, j)
-            .filter(|r| r.is_finite())
-            .map(|r| r >= level)
-    };
+    let reaches = |i: usize, j: usize| surface.get(i, j).map(|r| r >= level);
     let mut segments = Vec::new();
     for j in 0..grid.rows {
         let (y0, y1) = edges(grid.swing_angle, grid.rows, j);

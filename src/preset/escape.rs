@@ -11,11 +11,24 @@ pub fn escape_for_terminal(text: &str) -> String {
 /// Escapes like [`escape_for_terminal`], cutting at `max` characters (the
 /// "…" included), never inside an escape.
 pub fn escape_cut(text: &str, max: usize) -> String {
+    cut_pieces(text, max, needs_escape)
+}
+
+/// `text` cut at `max` characters (the "…" included), nothing escaped: for
+/// text that an error then quotes with Rust's own escapes (`{:?}`), which
+/// would otherwise escape the backslashes of [`escape_cut`]'s.
+pub fn cut(text: &str, max: usize) -> String {
+    cut_pieces(text, max, |_| false)
+}
+
+/// The one cut: `text`, each character escaped where `escape` says, cut at
+/// `max` characters with "…", never inside an escape.
+fn cut_pieces(text: &str, max: usize, escape: fn(char) -> bool) -> String {
     let mut out = String::new();
     let mut count = 0;
     let mut chars = text.chars().peekable();
     while let Some(c) = chars.next() {
-        let piece = if needs_escape(c) {
+        let piece = if escape(c) {
             c.escape_unicode().to_string()
         } else {
             c.to_string()
@@ -43,4 +56,19 @@ fn needs_escape(c: char) -> bool {
                 | '\u{2060}'..='\u{2069}'
                 | '\u{feff}'
         )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cut_keeps_80_characters_and_marks_the_rest() {
+        let long = "é".repeat(81);
+        assert_eq!(cut(&long, 80), format!("{}…", "é".repeat(79)));
+        assert_eq!(cut(&long[..160], 80), long[..160]);
+        // Nothing escaped: the caller quotes it with its own escapes.
+        assert_eq!(cut("a\x1bb", 80), "a\x1bb");
+        assert_eq!(escape_cut("a\x1bb", 80), "a\\u{1b}b");
+    }
 }

@@ -13,7 +13,7 @@ mod escape;
 mod field;
 mod file;
 
-pub use escape::{escape_cut, escape_for_terminal};
+pub use escape::{cut, escape_cut, escape_for_terminal};
 pub use field::{FIELD_KEYS, FieldKey};
 pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
@@ -166,6 +166,18 @@ impl Preset {
                 continue;
             }
             let Some(entries) = value.as_table() else {
+                // `pitch = 5`: a section written as a value.
+                let is_section = all_keys()
+                    .map(|k| k.name)
+                    .chain(FIELD_KEYS.iter().map(|f| f.name))
+                    .any(|name| name.split_once('.').is_some_and(|(s, _)| s == section));
+                if is_section {
+                    return Err(wrong(
+                        section,
+                        value,
+                        "a section, not a value: expected a table, its keys under a [header] line of its own name",
+                    ));
+                }
                 return Err(input(unknown(&escape_for_terminal(section))));
             };
             // A `[launch]` table makes a batted ball, even an empty one
@@ -181,11 +193,7 @@ impl Preset {
                         .ok_or_else(|| wrong(&key, value, "expected a model name in quotes"))?;
                     // A name too long to be one is shown cut (the error
                     // quotes it, escaping control characters).
-                    let shown: String = if text.chars().count() > 80 {
-                        text.chars().take(79).chain(['…']).collect()
-                    } else {
-                        text.to_owned()
-                    };
+                    let shown = cut(text, 80);
                     batch.set_text(&mut scene, &key, &shown).map_err(input)?;
                     continue;
                 }

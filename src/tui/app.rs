@@ -14,10 +14,10 @@ mod presets;
 
 use super::format::format_value;
 use super::keymap::{self, Action};
-use super::layout::{Tab, heatmap_resolution, trajectory_samples};
+use super::layout::{Tab, heatmap_resolution, shows_optimum_gains, trajectory_samples};
 use super::theme::ColorMode;
 use super::worker::{FigureJob, Gain, Job, Report};
-use crate::analysis::optimum::Point;
+use crate::analysis::optimum::{Point, Status};
 use crate::analysis::precision::Purpose;
 use crate::analysis::sensitivity;
 use crate::analysis::study::{Grid, Surface};
@@ -134,6 +134,8 @@ pub struct OptimumState {
     pub best: Point,
     pub evaluations: u32,
     pub done: bool,
+    /// Why it stopped, once `done`.
+    pub status: Status,
 }
 
 /// The range surface as refined so far.
@@ -277,7 +279,13 @@ impl App {
         !(self.optimum.is_some_and(|o| o.done)
             && self.surface_fresh()
             && self.figure_fresh()
-            && self.gains_done(Gain::Optimum) == input_count())
+            && self.optimum_gains_fresh())
+    }
+
+    /// Whether Δopt is current, or not wanted: it is computed only where
+    /// the inputs pane shows it.
+    pub fn optimum_gains_fresh(&self) -> bool {
+        !shows_optimum_gains(self.size) || self.gains_done(Gain::Optimum) == input_count()
     }
 
     /// The sensitivities of one kind.
@@ -341,6 +349,7 @@ impl App {
             start,
             window: Grid::explorer_window(),
             resolution: heatmap_resolution(self.size),
+            optimum_gains: shows_optimum_gains(self.size),
         });
     }
 
@@ -364,14 +373,18 @@ impl App {
                 best,
                 evaluations,
                 done,
+                status,
                 ..
             } => {
                 self.optimum = Some(OptimumState {
                     best,
                     evaluations,
                     done,
+                    status,
                 });
-                if done {
+                // A search that found nothing landing has no optimum to
+                // start from or to draw.
+                if done && best.range.is_finite() {
                     self.warm_start = Some((best.undercut, best.swing_angle));
                     let scene = self.scene.with_swing(best.undercut, best.swing_angle);
                     self.optimal_path = self.plot_path(&scene);
@@ -624,8 +637,12 @@ impl App {
     /// Moves the swing to the optimum found (key `r`).
     fn reset_to_optimum(&mut self) {
         if let Some(o) = self.optimum.filter(|o| o.done) {
-            self.scene = self.scene.with_swing(o.best.undercut, o.best.swing_angle);
-            self.inputs_changed = true;
+            if o.best.range.is_finite() {
+                self.scene = self.scene.with_swing(o.best.undercut, o.best.swing_angle);
+                self.inputs_changed = true;
+            } else {
+                self.message = Some(("no swing lands: there is no optimum".into(), true));
+            }
         } else {
             self.message = Some(("no optimum yet for these inputs".into(), true));
         }

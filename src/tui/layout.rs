@@ -58,6 +58,13 @@ pub fn is_big(area: Rect) -> bool {
     area.width >= 190 && area.height >= 54
 }
 
+/// Whether the inputs pane is wide enough for the Δopt column (44 or 58
+/// columns; at 30 it has room for Δ only). Δopt costs ~28 ms of CPU per
+/// change, so it is computed only where it is shown.
+pub fn shows_optimum_gains(area: Rect) -> bool {
+    is_wide(area) || is_big(area)
+}
+
 const READOUT_HEIGHT: u16 = 9;
 /// The inputs pane's width on a big screen: every column (see `view::inputs`).
 const BIG_INPUTS_WIDTH: u16 = 58;
@@ -68,15 +75,15 @@ const BIG_READOUT_MIN: u16 = 14;
 /// preset, every numeric key, the drag and lift models), one per group
 /// header, the 3 lines that describe the selected input and the borders.
 fn inputs_height() -> u16 {
-    use crate::model::keys::all_keys;
+    use crate::model::keys::swing_keys;
     let mut groups = vec!["model"];
-    for key in all_keys() {
+    for key in swing_keys() {
         let group = key.name.split('.').next().unwrap_or("");
         if !groups.contains(&group) {
             groups.push(group);
         }
     }
-    (1 + all_keys().count() + 2 + groups.len() + 3 + 2) as u16
+    (1 + swing_keys().count() + 2 + groups.len() + 3 + 2) as u16
 }
 
 pub fn layout(area: Rect, tab: Tab) -> Panes {

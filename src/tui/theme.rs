@@ -144,6 +144,9 @@ pub const CURSOR: Style = Style::new().fg(Color::White);
 pub const CONTOUR: Color = Color::White;
 /// Where the bat misses the ball: no range.
 pub const NO_RANGE: Color = Color::Black;
+/// Where the ball does not land within its limits: no range, and off the
+/// colour scale (grey, which the ramp never takes).
+pub const NOT_LANDED: Color = Color::Gray;
 /// The optimum's mark.
 pub const OPTIMUM_MARK: Color = Color::Yellow;
 /// The current swing's mark.

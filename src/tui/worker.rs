@@ -21,7 +21,7 @@ use crate::analysis::optimum::{Optimizer, OptimizerSettings, Point, Status};
 use crate::analysis::precision::Purpose;
 use crate::analysis::sensitivity;
 use crate::analysis::study::{self, Grid, Surface};
-use crate::model::keys::all_keys;
+use crate::model::keys::swing_keys;
 use crate::model::scene::Scene;
 
 /// What the UI wants computed for one set of inputs.
@@ -36,17 +36,21 @@ pub struct Job {
     pub window: Grid,
     /// The finest surface: the heatmap pane's pixels (columns, rows).
     pub resolution: (usize, usize),
+    /// Whether to compute Δopt: only where the inputs pane shows it.
+    pub optimum_gains: bool,
 }
 
 /// A result, tagged with the generation it was computed for.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Report {
-    /// The optimiser's best point so far; `done` once it has converged.
+    /// The optimiser's best point so far; `done` once it has stopped, and
+    /// `status` why (converged, a limit, or nothing lands).
     Optimum {
         generation: u64,
         best: Point,
         evaluations: u32,
         done: bool,
+        status: Status,
     },
     /// One refinement of the range surface; `last` for the finest.
     Surface {
@@ -55,7 +59,7 @@ pub enum Report {
         last: bool,
     },
     /// The range gained (m) by one step up of input `key` (an index into
-    /// `all_keys()`), at the current swing or at the optimum; `None` where
+    /// `swing_keys()`), at the current swing or at the optimum; `None` where
     /// the nudge is refused, the ball does not land, or (at the optimum) the
     /// key is the swing itself.
     Sensitivity {
@@ -182,6 +186,7 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
                 best: optimizer.best(),
                 evaluations: optimizer.evaluations(),
                 done,
+                status,
             });
         }
         if done {
@@ -192,7 +197,7 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
 
     let range = crate::model::simulate(&job.scene, Purpose::Readout).flight;
     let range = if range.landed { range.range } else { f64::NAN };
-    for (k, key) in all_keys().enumerate() {
+    for (k, key) in swing_keys().enumerate() {
         if cancelled() {
             return;
         }
@@ -223,7 +228,10 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
         });
     }
 
-    for (k, key) in all_keys().enumerate() {
+    if !job.optimum_gains {
+        return;
+    }
+    for (k, key) in swing_keys().enumerate() {
         let value = sensitivity::optimum_gain(&job.scene, key, optimum, cancelled);
         if cancelled() {
             return;

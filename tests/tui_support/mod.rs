@@ -73,3 +73,14 @@ pub fn screen(app: &App) -> String {
     terminal.draw(|frame| view::draw(frame, app)).unwrap();
     terminal.backend().to_string()
 }
+
+/// Types `text` into the input `name` (Enter, the text, Enter) and runs the
+/// background work to the end.
+pub fn set_and_settle(app: &mut App, name: &str, text: &str) {
+    settle(app);
+    select(app, name);
+    key(app, KeyCode::Enter);
+    typed(app, text);
+    key(app, KeyCode::Enter);
+    settle(app);
+}

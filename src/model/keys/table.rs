@@ -364,7 +364,13 @@ pub const LAUNCH_KEYS: &[Key] = &[
 
 /// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`], then [`LAUNCH_KEYS`].
 pub fn all_keys() -> impl Iterator<Item = &'static Key> {
-    KEYS.iter().chain(EXTENDED_KEYS).chain(LAUNCH_KEYS)
+    swing_keys().chain(LAUNCH_KEYS)
+}
+
+/// The numeric inputs of a swing scene: all but the launch, which a swing
+/// computes (setting a launch key makes a batted ball).
+pub fn swing_keys() -> impl Iterator<Item = &'static Key> {
+    KEYS.iter().chain(EXTENDED_KEYS)
 }
 
 /// The given air: ρ and ν.

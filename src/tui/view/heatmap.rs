@@ -1,6 +1,9 @@
 //! The range over (E, ψ) as half-block cells (two pixels per character),
 //! with a colour bar, the current swing as a cursor, the optimum, and the
-//! contour of the fence's distance.
+//! contour of the fence's distance. A cell whose ball does not land has no
+//! range: it is drawn off the colour scale (hatched where a whole character
+//! is such), with its own legend entry, and never sets the scale, the best
+//! cell or the contour.
 
 use ratatui::Frame;
 use ratatui::buffer::Buffer;
@@ -9,18 +12,23 @@ use ratatui::style::Color;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
-use crate::analysis::study::{Grid, Surface};
+use crate::analysis::study::{CellOutcome, Grid, Surface};
 use crate::tui::app::App;
 use crate::tui::layout::{HEATMAP_BAR, heatmap_plot};
 use crate::tui::theme::{self, dim, ramp, title_style};
 
-/// The surface's value at pixel (px, py) of a w×h picture, py from the top.
-fn sample(surface: &Surface, px: usize, py: usize, w: usize, h: usize) -> Option<f64> {
+/// The surface's cell at pixel (px, py) of a w×h picture, py from the top.
+fn sample(surface: &Surface, px: usize, py: usize, w: usize, h: usize) -> CellOutcome {
     let grid = surface.grid;
     let i = (px * grid.columns / w.max(1)).min(grid.columns - 1);
     let j_from_top = (py * grid.rows / h.max(1)).min(grid.rows - 1);
-    surface.get(i, grid.rows - 1 - j_from_top)
+    surface.outcome(i, grid.rows - 1 - j_from_top)
 }
+
+/// The glyph of a character whose two pixels both do not land, and its
+/// legend.
+pub const NOT_LANDED_GLYPH: &str = "░";
+pub const NOT_LANDED_LEGEND: &str = "░░   up";
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let level = app.fence.map(|f| f.distance);
@@ -93,34 +101,41 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         return;
     };
     let surface = &state.surface;
-    let values = surface.ranges.iter().flatten();
-    let (min, max) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
-        (a.min(v), b.max(v))
-    });
+    // The scale spans the landings only.
+    let (min, max) = surface
+        .landed_ranges()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
     let (w, h) = (plot.width as usize, 2 * plot.height as usize);
-    let pixels: Vec<Option<f64>> = (0..h)
+    let pixels: Vec<CellOutcome> = (0..h)
         .flat_map(|py| (0..w).map(move |px| (px, py)))
         .map(|(px, py)| sample(surface, px, py, w, h))
         .collect();
     let at = |px: usize, py: usize| pixels[py * w + px];
-    let above = |v: Option<f64>, l: f64| v.is_some_and(|v| v >= l);
     let colour = |px: usize, py: usize| -> Color {
         let v = at(px, py);
-        if let Some(l) = level {
-            // A pixel on the contour: the level lies between it and a neighbour.
-            let here = above(v, l);
-            let edge = (px + 1 < w && above(at(px + 1, py), l) != here)
-                || (py + 1 < h && above(at(px, py + 1), l) != here);
-            if v.is_some() && edge {
+        if let (Some(l), Some(here)) = (level, v.range()) {
+            // A pixel on the contour: the level lies between it and a
+            // neighbour, both landings.
+            let crosses =
+                |there: CellOutcome| there.range().is_some_and(|t| (t >= l) != (here >= l));
+            let edge =
+                (px + 1 < w && crosses(at(px + 1, py))) || (py + 1 < h && crosses(at(px, py + 1)));
+            if edge {
                 return theme::CONTOUR;
             }
         }
         match v {
-            Some(v) => app.color.rgb(ramp((v - min) / (max - min).max(1e-9))),
-            None => theme::NO_RANGE,
+            CellOutcome::Landed(v) => app.color.rgb(ramp((v - min) / (max - min).max(1e-9))),
+            CellOutcome::NotLanded => theme::NOT_LANDED,
+            CellOutcome::BatMisses | CellOutcome::NotComputed => theme::NO_RANGE,
         }
     };
-    draw_pixels(frame.buffer_mut(), plot, &colour);
+    let hatched = |col: usize, row: usize| {
+        at(col, 2 * row) == CellOutcome::NotLanded && at(col, 2 * row + 1) == CellOutcome::NotLanded
+    };
+    draw_pixels(frame.buffer_mut(), plot, &colour, &hatched);
 
     // Markers: the current swing and the optimum.
     // A point outside the window is pinned to its edge.
@@ -140,7 +155,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             .set_symbol(symbol)
             .set_style(theme::mark(colour));
     };
-    if let Some(o) = app.optimum.filter(|o| o.done) {
+    if let Some(o) = app.optimum.filter(|o| o.done && o.best.range.is_finite()) {
         mark(
             buf,
             to_cell(o.best.undercut, o.best.swing_angle),
@@ -176,19 +191,40 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         format!("{:>5.0}", app.distance(min).0),
         dim(),
     );
+    // The legend of the cells off the scale, under the bar.
+    if surface.any_not_landed() {
+        buf.set_string(
+            bar_area.x,
+            bar_area.bottom(),
+            NOT_LANDED_LEGEND,
+            theme::swatch(theme::NOT_LANDED),
+        );
+    }
 }
 
 /// Fills `area` with half blocks: the upper pixel as foreground, the lower
-/// as background.
-fn draw_pixels(buf: &mut Buffer, area: Rect, colour: &dyn Fn(usize, usize) -> Color) {
+/// as background; a character that is `hatched` whole gets the hatch glyph
+/// instead, on black.
+fn draw_pixels(
+    buf: &mut Buffer,
+    area: Rect,
+    colour: &dyn Fn(usize, usize) -> Color,
+    hatched: &dyn Fn(usize, usize) -> bool,
+) {
     for row in 0..area.height {
         for col in 0..area.width {
-            let top = colour(col as usize, 2 * row as usize);
-            let bottom = colour(col as usize, 2 * row as usize + 1);
-            buf[(area.x + col, area.y + row)]
-                .set_symbol("▀")
-                .set_fg(top)
-                .set_bg(bottom);
+            let (c, r) = (col as usize, row as usize);
+            let top = colour(c, 2 * r);
+            let cell = &mut buf[(area.x + col, area.y + row)];
+            if hatched(c, r) {
+                cell.set_symbol(NOT_LANDED_GLYPH)
+                    .set_fg(theme::NOT_LANDED)
+                    .set_bg(theme::NO_RANGE);
+            } else {
+                cell.set_symbol("▀")
+                    .set_fg(top)
+                    .set_bg(colour(c, 2 * r + 1));
+            }
         }
     }
 }

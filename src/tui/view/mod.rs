@@ -108,7 +108,7 @@ fn status_line(frame: &mut Frame, area: Rect, app: &App) {
     let (swing, optimum) = (app.gains_done(Gain::Swing), app.gains_done(Gain::Optimum));
     spans.push(if swing < n {
         Span::styled("· Δ… ", theme::BUSY)
-    } else if optimum < n {
+    } else if !app.optimum_gains_fresh() {
         Span::styled(format!("· Δopt {optimum}/{n}… "), theme::BUSY)
     } else {
         Span::raw("· Δ ✓ ")

@@ -7,6 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
 use crate::analysis::figures::trimmed;
+use crate::analysis::optimum::Status;
 use crate::model::impact::Regime;
 use crate::tui::app::App;
 use crate::tui::theme::{self, dim, title_style};
@@ -50,12 +51,25 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         ]),
         Line::from(vec![
             label("flight"),
-            Span::raw(format!(
-                "range {:.2} {u}  {:.2} s  apex {:.1} {u}",
-                d(flight.range),
-                flight.flight_time,
-                d(flight.apex)
-            )),
+            // A ball that does not land has no range: where it is instead
+            // (the end of the drawn path).
+            if flight.landed {
+                Span::raw(format!(
+                    "range {:.2} {u}  {:.2} s  apex {:.1} {u}",
+                    d(flight.range),
+                    flight.flight_time,
+                    d(flight.apex)
+                ))
+            } else {
+                Span::styled(
+                    format!(
+                        "did not land in {:.0} s ({:.0} {u} up)",
+                        flight.flight_time,
+                        d(app.path.last().map_or(0.0, |p| p.1))
+                    ),
+                    theme::BUSY,
+                )
+            },
         ]),
         Line::from(vec![
             label("impact"),
@@ -119,9 +133,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             impact.launch_spin() - was.launch_spin(),
             (impact.launch_angle() - was.launch_angle()).to_degrees()
         ));
+        let range = if flight.landed && was_flight.landed {
+            format!("{:+.2} {u}", d(flight.range - was_flight.range))
+        } else {
+            "— (not both land)".to_owned()
+        };
         let flight = pinned(format!(
-            "range {:+.2} {u}  apex {:+.1} {u}",
-            d(flight.range - was_flight.range),
+            "range {range}  apex {:+.1} {u}",
             d(flight.apex - was_flight.apex)
         ));
         let short = (inner.height as usize) < lines.len() + 5;
@@ -137,9 +155,27 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     }
     let (e, psi) = (app.scene.bat.undercut, app.scene.bat.swing_angle);
     match app.optimum {
+        // Nothing that lands yet: no range to show.
+        Some(o) if !o.best.range.is_finite() => lines.push(Line::from(vec![
+            label("optimum"),
+            if o.done {
+                let why = match o.status {
+                    Status::NothingLands => "no swing of 64 over the window lands",
+                    _ => "no swing tried lands (stopped at a limit)",
+                };
+                Span::styled(format!("none: {why}"), theme::ERROR)
+            } else {
+                Span::styled("searching… no swing lands yet", theme::BUSY)
+            },
+        ])),
         Some(o) => {
             let style = if o.done { theme::GOOD } else { theme::BUSY };
-            let state = if o.done { "" } else { " (searching)" };
+            let state = match (o.done, o.status) {
+                (false, _) => " (searching)",
+                (true, Status::OutOfWork) => " (work limit)",
+                (true, Status::OutOfEvaluations) => " (eval. limit)",
+                (true, _) => "",
+            };
             lines.push(Line::from(vec![
                 label("optimum"),
                 Span::styled(
@@ -152,13 +188,17 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                     style,
                 ),
             ]));
+            let range = if flight.landed {
+                format!("{:+.2} {u}", d(flight.range - o.best.range))
+            } else {
+                "—".to_owned()
+            };
             lines.push(Line::from(vec![
                 label("you −opt"),
                 Span::raw(format!(
-                    "ΔE {:+.2} mm  Δψ {:+.4}  {:+.2} {u}",
+                    "ΔE {:+.2} mm  Δψ {:+.4}  {range}",
                     (e - o.best.undercut) * 1e3,
                     psi - o.best.swing_angle,
-                    d(flight.range - o.best.range)
                 )),
             ]));
         }
@@ -182,14 +222,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         if !derived {
             lines.extend(air_lines(inner.width));
         }
-        lines.push(Line::from(vec![
-            label("landing"),
-            Span::raw(format!(
-                "{:.2} m/s at {:.1}° below level",
-                flight.landing_speed,
-                flight.landing_angle.to_degrees()
-            )),
-        ]));
+        if flight.landed {
+            lines.push(Line::from(vec![
+                label("landing"),
+                Span::raw(format!(
+                    "{:.2} m/s at {:.1}° below level",
+                    flight.landing_speed,
+                    flight.landing_angle.to_degrees()
+                )),
+            ]));
+        }
         lines.push(Line::from(vec![
             label("pitch"),
             Span::raw(format!(

@@ -47,7 +47,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .max(nice_ceiling(1.1 * fence.1));
 
     let apex = [(k * flight.apex_distance, k * flight.apex)];
-    let landing = [(k * flight.range, 0.0)];
+    // A ball that does not land has no landing point (nor range).
+    let landing = if flight.landed {
+        vec![(k * flight.range, 0.0)]
+    } else {
+        Vec::new()
+    };
     let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
     let mut datasets = Vec::new();
     if !optimal_path.is_empty() {
@@ -72,11 +77,15 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         legend.push(Span::styled("━ pin ", theme::PINNED));
     }
     let legend = Line::from(legend);
-    let numbers = format!(
-        "{:.1} {unit}, apex {:.1} {unit} ",
-        k * flight.range,
-        k * flight.apex
-    );
+    let numbers = if flight.landed {
+        format!(
+            "{:.1} {unit}, apex {:.1} {unit} ",
+            k * flight.range,
+            k * flight.apex
+        )
+    } else {
+        format!("does not land, apex {:.1} {unit} ", k * flight.apex)
+    };
     // The title gives up its first word before it would run into the legend.
     let title = format!(" Trajectory {numbers}");
     let room = area.width.saturating_sub(2) as usize;
