@@ -158,6 +158,32 @@ impl Unit {
     pub fn is_identity(self) -> bool {
         self.scale == 1.0 && self.offset == 0.0
     }
+
+    /// The decimals that show a value in this unit about as finely as
+    /// `si_decimals` show it in SI: the last digit's step is at most
+    /// 10^0.25 ≈ 1.8 times the SI one's (134.699 m → 441.926 ft, 0.0265 m
+    /// → 1.043 in, 0.1594 rad → 9.13°), never a coarser digit.
+    pub fn decimals(self, si_decimals: usize) -> usize {
+        if self.is_identity() {
+            return si_decimals;
+        }
+        let finer = si_decimals as f64 - self.scale.abs().log10() - 0.25;
+        finer.ceil().max(0.0) as usize
+    }
+
+    /// The symbol in plain ASCII, for CSV headers (`x_ft`, `angle_deg`).
+    pub fn ascii_symbol(self) -> &'static str {
+        match self.symbol {
+            "°" => "deg",
+            "°F" => "degF",
+            "°C" => "degC",
+            "ft/s²" => "ft_per_s2",
+            "m/s²" => "m_per_s2",
+            "m/s" => "m_per_s",
+            "rad/s" => "rad_per_s",
+            other => other,
+        }
+    }
 }
 
 impl Quantity {
@@ -286,6 +312,51 @@ mod tests {
         assert_eq!(
             Quantity::Speed.in_system(UnitSystem::Si).nice_step(0.5),
             0.5
+        );
+    }
+
+    #[test]
+    fn imperial_decimals_are_about_as_fine_as_the_si_ones() {
+        let imperial = |q: Quantity| q.in_system(UnitSystem::Imperial);
+        // 0.001 m is 0.0033 ft: 3 decimals; 0.1 m is 0.33 ft: 1.
+        assert_eq!(imperial(Quantity::Distance).decimals(3), 3);
+        assert_eq!(imperial(Quantity::Distance).decimals(1), 1);
+        // 0.0001 m is 0.0039 in: 3 decimals.
+        assert_eq!(imperial(Quantity::Size).decimals(4), 3);
+        // 0.01 rad/s is 0.095 rpm: 1 decimal; 0.0001 rad is 0.0057°: 2.
+        assert_eq!(imperial(Quantity::Spin).decimals(2), 1);
+        assert_eq!(imperial(Quantity::Angle).decimals(4), 2);
+        assert_eq!(imperial(Quantity::Speed).decimals(3), 3);
+        // Never below zero, and SI keeps its own.
+        assert_eq!(imperial(Quantity::Spin).decimals(0), 0);
+        assert_eq!(Quantity::Size.in_system(UnitSystem::Si).decimals(5), 5);
+    }
+
+    #[test]
+    fn csv_symbols_are_ascii() {
+        for quantity in [
+            Quantity::Angle,
+            Quantity::Temperature,
+            Quantity::Acceleration,
+            Quantity::Speed,
+            Quantity::Spin,
+        ] {
+            for system in UnitSystem::ALL {
+                let symbol = quantity.in_system(system).ascii_symbol();
+                assert!(symbol.is_ascii() && !symbol.contains('/'), "{symbol}");
+            }
+        }
+        assert_eq!(
+            Quantity::Angle
+                .in_system(UnitSystem::Imperial)
+                .ascii_symbol(),
+            "deg"
+        );
+        assert_eq!(
+            Quantity::Distance
+                .in_system(UnitSystem::Imperial)
+                .ascii_symbol(),
+            "ft"
         );
     }
 

@@ -11,9 +11,11 @@ use rayon::prelude::*;
 use super::UsageError;
 use super::fly::{FlownToFence, fence_of};
 use super::progress::{self, Progress, Work};
+use super::shown::Shown;
 use crate::Scene;
 use crate::model::keys::{DRAG_KEY, InputBatch, LIFT_KEY};
 use crate::preset::{FIELD_KEYS, Fence, Preset, escape_cut};
+use crate::units::Quantity;
 
 /// The longest record (line) read, in bytes: a 90-column Statcast row is
 /// ~1 KB. A longer one is skipped, reading on to its end without keeping it.
@@ -436,6 +438,7 @@ pub(super) fn run(
     base: &Preset,
     source: &str,
     json: bool,
+    shown: Shown,
     sinks: &mut Sinks,
 ) -> Result<Outcome, UsageError> {
     let work = Work {
@@ -444,14 +447,14 @@ pub(super) fn run(
     };
     if source == "-" {
         let stdin = io::stdin().lock();
-        progress::run(work, |p| batch(base, stdin, json, sinks, p))
+        progress::run(work, |p| batch(base, stdin, json, shown, sinks, p))
     } else {
         let file = std::fs::File::open(source).map_err(|e| UsageError::Batch {
             input: escape_cut(source, 200),
             message: e.to_string(),
         })?;
         let reader = io::BufReader::with_capacity(MAX_RECORD_BYTES, file);
-        progress::run(work, |p| batch(base, reader, json, sinks, p))
+        progress::run(work, |p| batch(base, reader, json, shown, sinks, p))
     }
     .map_err(|message| UsageError::Batch {
         input: escape_cut(source, 200),
@@ -465,6 +468,7 @@ pub(super) fn batch(
     base: &Preset,
     input: impl BufRead,
     json: bool,
+    shown: Shown,
     sinks: &mut Sinks,
     progress: &Progress,
 ) -> Result<Outcome, String> {
@@ -489,7 +493,12 @@ pub(super) fn batch(
         Err(Stop::Io(e)) => return Err(e.to_string()),
     };
     if !json {
-        let _ = writeln!(sinks.out, "{}", OUTPUT_COLUMNS.join(","));
+        let names: Vec<String> = OUTPUT_COLUMNS
+            .iter()
+            .zip(OUTPUT_QUANTITIES)
+            .map(|(name, quantity)| shown.csv_key(name, quantity))
+            .collect();
+        let _ = writeln!(sinks.out, "{}", names.join(","));
     }
     let Some(header) = header else {
         sinks.note("the input is empty: no rows to fly");
@@ -547,7 +556,7 @@ pub(super) fn batch(
             let text = if json {
                 json_line(job.line, flown)
             } else {
-                csv_line(job.line, flown)
+                csv_line(job.line, flown, shown)
             };
             match sinks.out.write_all(text.as_bytes()) {
                 // `| head`: the reader has what it wanted.
@@ -632,21 +641,35 @@ pub const OUTPUT_COLUMNS: [&str; 10] = [
     "clears_fence",
 ];
 
-fn csv_line(line: usize, flown: &FlownToFence) -> String {
+/// What each output column measures, for its unit outside SI.
+const OUTPUT_QUANTITIES: [Quantity; 10] = [
+    Quantity::Unchanged,
+    Quantity::Speed,
+    Quantity::Angle,
+    Quantity::Spin,
+    Quantity::Distance,
+    Quantity::Unchanged,
+    Quantity::Distance,
+    Quantity::Angle,
+    Quantity::Unchanged,
+    Quantity::Unchanged,
+];
+
+fn csv_line(line: usize, flown: &FlownToFence, shown: Shown) -> String {
     let (launch, flight) = (&flown.launch, &flown.flight);
     let range = if flight.landed {
-        format!("{:.3}", flight.range)
+        shown.number(Quantity::Distance, flight.range, 3)
     } else {
         String::new()
     };
     format!(
-        "{line},{:.4},{:.6},{:.3},{range},{:.3},{:.3},{:.4},{},{}\n",
-        launch.speed,
-        launch.angle,
-        launch.spin,
+        "{line},{},{},{},{range},{:.3},{},{},{},{}\n",
+        shown.number(Quantity::Speed, launch.speed, 4),
+        shown.number(Quantity::Angle, launch.angle, 6),
+        shown.number(Quantity::Spin, launch.spin, 3),
         flight.flight_time,
-        flight.apex,
-        flight.landing_angle,
+        shown.number(Quantity::Distance, flight.apex, 3),
+        shown.number(Quantity::Angle, flight.landing_angle, 4),
         flight.landed,
         flown.clears_fence()
     )

@@ -4,13 +4,16 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+use super::figure_units as units;
 use super::hit::environment_json;
 use super::progress::{self, Work};
+use super::shown::Shown;
 use super::surface::{render_surface, surface_json};
 use super::table::{Align, Cell, Column, Digits, Table, Width, trim_lines};
 use super::{Format, SceneArgs, UsageError, pretty};
 use crate::analysis::figures::{self, Figure, FigureData, SurfaceFigure};
 use crate::analysis::paper;
+use crate::units::Quantity;
 
 pub(super) fn figure(
     number: u32,
@@ -19,6 +22,7 @@ pub(super) fn figure(
     dir: Option<&Path>,
     format: Format,
     svg: bool,
+    shown: Shown,
 ) -> Result<String, UsageError> {
     // An unknown figure is reported before any preset error.
     figures::known(number)?;
@@ -47,9 +51,28 @@ pub(super) fn figure(
         )?);
     }
     let environment = environment_json(&preset.scene);
+    // JSON is SI whatever the units shown.
+    let shown = if format == Format::Json {
+        Shown::default()
+    } else {
+        shown
+    };
+    let conditions = units::conditions(&preset.name, &preset.scene, shown);
     Ok(match figure {
-        Figure::Table(data) => render(&data, format, environment),
-        Figure::Surface(surface) => render_figure7(&surface, format, environment),
+        Figure::Table(data) => {
+            let data = units::converted(data, shown);
+            render(&FigureData { conditions, ..data }, format, environment)
+        }
+        Figure::Surface(surface) => render_figure7(
+            &SurfaceFigure {
+                conditions,
+                title: units::title(&surface.title, shown),
+                ..surface
+            },
+            format,
+            environment,
+            shown,
+        ),
     })
 }
 
@@ -58,11 +81,12 @@ fn render_figure7(
     figure: &SurfaceFigure,
     format: Format,
     environment: serde_json::Value,
+    shown: Shown,
 ) -> String {
     let o = &figure.optimum;
     let (undercut, swing_angle, range) = figure.paper;
     match format {
-        Format::Csv => render_surface(&figure.surface, format),
+        Format::Csv => render_surface(&figure.surface, format, shown),
         Format::Json => pretty(&serde_json::json!({
             "figure": figure.number,
             "title": figure.title,
@@ -83,18 +107,23 @@ fn render_figure7(
         })),
         Format::Text => {
             let mut out = heading(figure.number, &figure.title, &figure.conditions);
-            out.push_str(&render_surface(&figure.surface, format));
+            out.push_str(&render_surface(&figure.surface, format, shown));
             let ours = if o.landed {
                 format!(
-                    "E = {:.4} m, ψ = {:.4} rad, range {:.2} m",
-                    o.undercut, o.swing_angle, o.range
+                    "E = {}, ψ = {}, range {}",
+                    shown.value(Quantity::Size, o.undercut, 4),
+                    shown.value(Quantity::Angle, o.swing_angle, 4),
+                    shown.value(Quantity::Distance, o.range, 2)
                 )
             } else {
                 "none, no swing tried lands".to_owned()
             };
             let _ = writeln!(
                 out,
-                "optimum O (Nelder–Mead): {ours}; paper: E = {undercut:.4} m, ψ = {swing_angle:.3} rad, {range:.2} m"
+                "optimum O (Nelder–Mead): {ours}; paper: E = {}, ψ = {}, {}",
+                shown.value(Quantity::Size, undercut, 4),
+                shown.value(Quantity::Angle, swing_angle, 3),
+                shown.value(Quantity::Distance, range, 2)
             );
             out
         }

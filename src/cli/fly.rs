@@ -2,14 +2,17 @@
 //! from `launch.*`, or a swing's launch from its impact); and `fly --batch`,
 //! one launch per CSV row (see [`super::batch`]).
 
-use super::hit::{environment_json, flight_json, labelled, spin_text};
+use super::hit::{environment_json, flight_json, flight_text, labelled};
 use super::pretty;
+use super::shown::Shown;
 use crate::Scene;
 use crate::analysis::landing;
 use crate::analysis::precision::Purpose;
+use crate::model::atmosphere::Air;
 use crate::model::flight::FlightSummary;
 use crate::model::launch::{self, BattedBall, SceneKind};
 use crate::preset::{FIELD_KEYS, Fence, Preset};
+use crate::units::Quantity;
 
 /// The fence a preset draws, or the default one (121.9 m, 3.0 m).
 pub(super) fn fence_of(preset: &Preset) -> Fence {
@@ -45,7 +48,7 @@ impl FlownToFence {
     }
 }
 
-pub(super) fn fly(preset: &Preset, json: bool) -> String {
+pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
     let scene = &preset.scene;
     let flown = FlownToFence::new(scene, fence_of(preset));
     let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.fence);
@@ -76,43 +79,57 @@ pub(super) fn fly(preset: &Preset, json: bool) -> String {
         SceneKind::Swing => " (from the swing's impact)",
         SceneKind::BattedBall => "",
     };
+    let distance = |m, decimals| shown.value(Quantity::Distance, m, decimals);
+    let (at, high) = (distance(fence.distance, 1), distance(fence.height, 1));
     let fence_line = match flown.height_at_fence {
-        Some(h) if flown.clears_fence() => format!(
-            "clears it: {h:.2} m up at {:.1} m, over {:.1} m",
-            fence.distance, fence.height
-        ),
+        Some(h) if flown.clears_fence() => {
+            format!("clears it: {} up at {at}, over {high}", distance(h, 2))
+        }
         Some(h) => format!(
-            "does not clear it: {h:.2} m up at {:.1} m, under {:.1} m",
-            fence.distance, fence.height
+            "does not clear it: {} up at {at}, under {high}",
+            distance(h, 2)
         ),
-        None => format!("does not reach it, {:.1} m away", fence.distance),
+        None => format!("does not reach it, {at} away"),
     };
     let air = scene.environment.air();
+    let unlanded = unlanded.map(|why| {
+        if shown.is_si() {
+            why
+        } else {
+            shown.not_landed(flight, end_height(scene))
+        }
+    });
     labelled(&[
-        ("launch", format!("{}{from}", batted_text(launch))),
-        (
-            "flight",
-            match &unlanded {
-                Some(why) => format!("{why}, apex {:.2} m", flight.apex),
-                None => format!(
-                    "range {:.3} m in {:.3} s, apex {:.2} m, lands at {:.2} m/s, {:.3} rad below horizontal",
-                    flight.range,
-                    flight.flight_time,
-                    flight.apex,
-                    flight.landing_speed,
-                    flight.landing_angle
-                ),
-            },
-        ),
+        ("launch", format!("{}{from}", batted_text(launch, shown))),
+        ("flight", flight_text(flight, unlanded.as_deref(), shown)),
         ("fence", fence_line),
         (
             "air",
             format!(
-                "ρ = {air}, ν = {:.4e} m²/s; drag {}, lift {}",
-                air.kinematic_viscosity, scene.drag, scene.lift
+                "ρ = {}, ν = {:.4e} m²/s; drag {}, lift {}",
+                air_text(&air, shown),
+                air.kinematic_viscosity,
+                scene.drag,
+                scene.lift
             ),
         ),
     ])
+}
+
+/// "1.194 kg/m³ from 21 °C, 5 m, 1013 hPa, 50 %" ([`Air`]'s own words in
+/// SI), with the weather in °F, ft and inHg otherwise; ρ is kg/m³ in both.
+fn air_text(air: &Air, shown: Shown) -> String {
+    match air.atmosphere {
+        Some(weather) if !shown.is_si() => format!(
+            "{:.3} kg/m³ from {}, {}, {}, {} %",
+            air.density,
+            shown.value_to(Quantity::Temperature, weather.temperature, 1),
+            shown.value_to(Quantity::Distance, weather.elevation, 0),
+            shown.value_to(Quantity::Pressure, weather.pressure, 2),
+            weather.humidity
+        ),
+        _ => air.to_string(),
+    }
 }
 
 /// Where a flight that did not land ended (m above the ground).
@@ -123,13 +140,8 @@ fn end_height(scene: &Scene) -> f64 {
     points.last().map_or(0.0, |p| p.y)
 }
 
-/// "46.045 m/s, 261.80 rad/s of backspin, 0.4887 rad (28.0°)"
-pub(super) fn batted_text(launch: &BattedBall) -> String {
-    format!(
-        "{:.3} m/s, {}, {:.4} rad ({:.1}°)",
-        launch.speed,
-        spin_text(launch.spin),
-        launch.angle,
-        launch.angle.to_degrees()
-    )
+/// "46.045 m/s, 261.80 rad/s of backspin, 0.4887 rad (28.0°)", or
+/// "103.000 mph, 2500 rpm of backspin, 28.0°"
+pub(super) fn batted_text(launch: &BattedBall, shown: Shown) -> String {
+    shown.launch(launch.speed, launch.spin, launch.angle)
 }

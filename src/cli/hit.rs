@@ -3,6 +3,7 @@
 
 use std::fmt::Write as _;
 
+use super::shown::Shown;
 use super::table::{Align, Cell, Column, Digits, Table, Width};
 use super::{FIELD_KEYS, Format, UsageError, pretty};
 use crate::Scene;
@@ -15,11 +16,14 @@ use crate::model::keys::{DRAG_KEY, LIFT_KEY, all_keys};
 use crate::model::pitch;
 use crate::picture::{self, FlightPath, TrajectoryPicture};
 use crate::preset::Preset;
+use crate::units::{Quantity, Unit};
+
+use super::shown::short;
 
 /// The most points `trajectory` samples.
 pub const MAX_SAMPLES: usize = 100_000;
 
-pub(super) fn hit(scene: &Scene, json: bool) -> String {
+pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
     let swing = crate::simulate(scene, Purpose::Readout);
     let impact = &swing.impact;
     let flight = &swing.flight;
@@ -48,34 +52,47 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
         }));
     }
     let bat = &scene.bat;
-    let descent = impact.descent_angle;
     let stick = match impact.stick_impulse() {
         Some(p) => format!("slip halts at p_s = {p:.4} N·s (stick)"),
         None => "slips until separation".to_owned(),
     };
+    let speed = |v, decimals| shown.value(Quantity::Speed, v, decimals);
+    let angle = |rad, decimals| shown.value(Quantity::Angle, rad, decimals);
+    // Text about a flight that did not land gives the height in the units shown.
+    let unlanded = unlanded.map(|why| {
+        if shown.is_si() {
+            why
+        } else {
+            shown.not_landed(flight, landing::end_height(scene, Purpose::Readout))
+        }
+    });
     labelled(&[
         (
             "pitch",
             format!(
-                "{:.2} m/s at the plate, vertical velocity {vertical:.3} m/s, descending at {descent:.4} rad ({:.1}°)",
-                scene.pitch.speed,
-                descent.to_degrees()
+                "{} at the plate, vertical velocity {}, descending at {}",
+                speed(scene.pitch.speed, 2),
+                speed(vertical, 3),
+                shown.angle_and_degrees(impact.descent_angle, 4, 1),
             ),
         ),
         (
             "swing",
             format!(
-                "E = {:.4} m, ψ = {:.4} rad, bat {:.2} m/s, μ = {}",
-                bat.undercut, bat.swing_angle, bat.speed, bat.friction
+                "E = {}, ψ = {}, bat {}, μ = {}",
+                shown.value(Quantity::Size, bat.undercut, 4),
+                angle(bat.swing_angle, 4),
+                speed(bat.speed, 2),
+                bat.friction
             ),
         ),
         (
             "impact",
             format!(
-                "θ = {:.4} rad, v1(0) = {:.3} m/s, v3(0) = {:.3} m/s, e* = {:.4}",
-                impact.normal_angle,
-                impact.initial_slip,
-                impact.initial_approach,
+                "θ = {}, v1(0) = {}, v3(0) = {}, e* = {:.4}",
+                angle(impact.normal_angle, 4),
+                speed(impact.initial_slip, 3),
+                speed(impact.initial_approach, 3),
                 impact.restitution
             ),
         ),
@@ -86,22 +103,25 @@ pub(super) fn hit(scene: &Scene, json: bool) -> String {
                 impact.compression_impulse, impact.separation_impulse
             ),
         ),
-        ("launch", launch_text(impact)),
-        (
-            "flight",
-            match unlanded {
-                Some(why) => format!("{why}, apex {:.2} m", flight.apex),
-                None => format!(
-                    "range {:.3} m in {:.3} s, apex {:.2} m, lands at {:.2} m/s, {:.3} rad below horizontal",
-                    flight.range,
-                    flight.flight_time,
-                    flight.apex,
-                    flight.landing_speed,
-                    flight.landing_angle
-                ),
-            },
-        ),
+        ("launch", launch_text(impact, shown)),
+        ("flight", flight_text(flight, unlanded.as_deref(), shown)),
     ])
+}
+
+/// "range 134.699 m in 5.553 s, apex 27.03 m, lands at 23.34 m/s, 0.836
+/// rad below horizontal", or why it did not land and its apex.
+pub(super) fn flight_text(flight: &FlightSummary, unlanded: Option<&str>, shown: Shown) -> String {
+    let apex = shown.value(Quantity::Distance, flight.apex, 2);
+    match unlanded {
+        Some(why) => format!("{why}, apex {apex}"),
+        None => format!(
+            "range {} in {:.3} s, apex {apex}, lands at {}, {} below horizontal",
+            shown.value(Quantity::Distance, flight.range, 3),
+            flight.flight_time,
+            shown.value(Quantity::Speed, flight.landing_speed, 2),
+            shown.value(Quantity::Angle, flight.landing_angle, 3),
+        ),
+    }
 }
 
 /// A flight in JSON: its range (null if it did not land, with the reason in
@@ -150,23 +170,12 @@ pub(super) fn labelled(lines: &[(&str, String)]) -> String {
 
 /// The launch: speed, spin in words and angle.
 /// "44.299 m/s, 191.83 rad/s of backspin, 0.4604 rad (26.4°)"
-pub(super) fn launch_text(impact: &Impact) -> String {
-    format!(
-        "{:.3} m/s, {}, {:.4} rad ({:.1}°)",
+pub(super) fn launch_text(impact: &Impact, shown: Shown) -> String {
+    shown.launch(
         impact.launch_speed(),
-        spin_text(impact.launch_spin()),
+        impact.launch_spin(),
         impact.launch_angle(),
-        impact.launch_angle().to_degrees()
     )
-}
-
-/// A batted spin in words: backspin is positive.
-pub(super) fn spin_text(spin: f64) -> String {
-    if spin < 0.0 {
-        format!("{:.2} rad/s of topspin", -spin)
-    } else {
-        format!("{spin:.2} rad/s of backspin")
-    }
 }
 
 /// The flight at readout precision, `samples` points evenly in time read
@@ -212,23 +221,43 @@ pub(super) fn trajectory(
     scene: &Scene,
     samples: usize,
     format: Format,
+    shown: Shown,
 ) -> Result<String, UsageError> {
     let (summary, points) = sampled(scene, samples)?;
     let end = points.last().map_or(0.0, |p| p.y);
-    let unlanded = (!summary.landed).then(|| landing::not_landed(&summary, end));
+    // JSON is SI whatever the units shown.
+    let shown = if format == Format::Json {
+        Shown::default()
+    } else {
+        shown
+    };
+    let unlanded = (!summary.landed).then(|| shown.not_landed(&summary, end));
+    let distance = |key: &str, width| {
+        Column::right(
+            &shown.csv_key(key, Quantity::Distance),
+            &shown.head(key, Quantity::Distance, "m"),
+            width,
+            Digits::Fixed(shown.unit(Quantity::Distance).decimals(3)),
+        )
+    };
     let table = Table {
         columns: vec![
             Column::right("time", "t (s)", 8, Digits::Fixed(3)),
-            Column::right("x", "x (m)", 9, Digits::Fixed(3)),
-            Column::right("y", "y (m)", 8, Digits::Fixed(3)),
+            distance("x", 9),
+            distance("y", 8),
             Column::right("drag_coefficient", "C_D", 6, Digits::Fixed(3)),
         ],
         rows: points
             .iter()
             .map(|p| {
-                [p.time, p.x, p.y, p.drag_coefficient]
-                    .map(Cell::Num)
-                    .to_vec()
+                [
+                    p.time,
+                    shown.convert(Quantity::Distance, p.x),
+                    shown.convert(Quantity::Distance, p.y),
+                    p.drag_coefficient,
+                ]
+                .map(Cell::Num)
+                .to_vec()
             })
             .collect(),
     };
@@ -250,8 +279,8 @@ pub(super) fn trajectory(
         Format::Text => match unlanded {
             Some(why) => format!("a flight that {why}\n{}", table.text()),
             None => format!(
-                "flight of {:.3} m in {:.3} s\n{}",
-                summary.range,
+                "flight of {} in {:.3} s\n{}",
+                shown.value(Quantity::Distance, summary.range, 3),
                 summary.flight_time,
                 table.text()
             ),
@@ -259,8 +288,9 @@ pub(super) fn trajectory(
     })
 }
 
-/// The input keys, as `--set` and the TOML presets take them.
-pub(super) fn keys() -> String {
+/// The input keys, as `--set` and the TOML presets take them, with their
+/// ranges and the fastball's values in the units shown (`--set` takes SI).
+pub(super) fn keys(shown: Shown) -> String {
     let defaults = Scene::default();
     let left = |head, width| Column::text(head, Width::AtLeast(width), Align::Left, " ");
     let columns = vec![
@@ -272,14 +302,27 @@ pub(super) fn keys() -> String {
         left("meaning", 0).after("  "),
     ];
     let text = |s: &str| Cell::Text(s.to_owned());
+    // In SI as it always was; otherwise converted and shortened.
+    let value = |unit: Unit, si: f64| {
+        if unit.is_identity() {
+            Cell::Num(si)
+        } else {
+            Cell::Text(short(unit.show(si)))
+        }
+    };
     let mut rows: Vec<Vec<Cell>> = all_keys()
         .map(|key| {
+            let unit = key.unit_in(shown.0);
             vec![
                 text(key.name),
                 text(key.symbol),
-                text(key.unit),
-                Cell::Text(key.bounds.to_string()),
-                Cell::Num((key.get)(&defaults)),
+                text(unit.symbol),
+                Cell::Text(if unit.is_identity() {
+                    key.bounds.to_string()
+                } else {
+                    shown.interval(key.bounds, unit)
+                }),
+                value(unit, (key.get)(&defaults)),
                 text(key.description),
             ]
         })
@@ -305,12 +348,17 @@ pub(super) fn keys() -> String {
         .find(|p| p.name == "fastball")
         .and_then(|p| p.fence);
     rows.extend(FIELD_KEYS.iter().map(|key| {
+        let unit = Quantity::Distance.unit(shown.0, key.unit);
         vec![
             text(key.name),
             text(""),
-            text(key.unit),
-            Cell::Text(key.bounds.to_string()),
-            fence.map_or(Cell::Blank, |f| Cell::Num((key.get)(&f))),
+            text(unit.symbol),
+            Cell::Text(if unit.is_identity() {
+                key.bounds.to_string()
+            } else {
+                shown.interval(key.bounds, unit)
+            }),
+            fence.map_or(Cell::Blank, |f| value(unit, (key.get)(&f))),
             text(key.description),
         ]
     }));
@@ -320,5 +368,12 @@ pub(super) fn keys() -> String {
         "\nAlso: bat.undercut must stay below r_b + r_B in size (the bat must reach the ball), and\n\
          pitch.speed must be fast enough for Eq. (3) to hold at the chosen gravity."
     );
+    if !shown.is_si() {
+        let _ = writeln!(
+            out,
+            "Ranges and values are shown in imperial units; --set and presets take each key's SI\n\
+             unit (m, m/s, rad, rad/s, kg, °C, hPa: `homerun keys` without --units lists them)."
+        );
+    }
     out
 }

@@ -5,12 +5,14 @@
 mod batch;
 mod bench;
 mod figure;
+mod figure_units;
 mod fly;
 mod hit;
 mod optimize;
 mod presets;
 mod progress;
 mod scene;
+mod shown;
 mod surface;
 mod svg_file;
 mod table;
@@ -28,6 +30,8 @@ use crate::analysis::study::SweepError;
 use crate::model::keys::{InputError, Key};
 use crate::preset::{self, Preset};
 use crate::tui::TuiError;
+use crate::units::UnitSystem;
+use shown::Shown;
 
 pub use crate::preset::FIELD_KEYS;
 pub use optimize::MAX_STEPS;
@@ -49,6 +53,17 @@ pub struct Cli {
     /// Folder for the user's own presets (default: $XDG_CONFIG_HOME/homerun/presets).
     #[arg(long, global = true, value_name = "DIR")]
     pub presets_dir: Option<PathBuf>,
+    /// Units of the text and CSV printed: si (m, m/s, rad, rad/s, °C) or imperial
+    /// (ft, in, mph, °, rpm, °F). JSON, --set and presets are always SI; the numbers
+    /// of --from/--to, --undercut and --swing-angle are in these units.
+    #[arg(
+        long,
+        global = true,
+        value_name = "SYSTEM",
+        default_value = "si",
+        hide_default_value = true
+    )]
+    pub units: UnitSystem,
 }
 
 /// Which preset to start from, and changes to it.
@@ -135,22 +150,12 @@ pub enum Command {
     Surface {
         #[command(flatten)]
         scene: SceneArgs,
-        /// Undercut window A..B (m).
-        #[arg(
-            long,
-            value_name = "A..B",
-            default_value = "0..0.05",
-            allow_hyphen_values = true
-        )]
-        undercut: String,
-        /// Swing-angle window C..D (rad).
-        #[arg(
-            long,
-            value_name = "C..D",
-            default_value = "-0.6..1.0",
-            allow_hyphen_values = true
-        )]
-        swing_angle: String,
+        /// Undercut window A..B (m; in with --units imperial) [default: 0..0.05 m].
+        #[arg(long, value_name = "A..B", allow_hyphen_values = true)]
+        undercut: Option<String>,
+        /// Swing-angle window C..D (rad; ° with --units imperial) [default: -0.6..1.0 rad].
+        #[arg(long, value_name = "C..D", allow_hyphen_values = true)]
+        swing_angle: Option<String>,
         /// Columns (undercut) x rows (swing angle).
         #[arg(long, value_name = "NxM", default_value = "21x17")]
         grid: String,
@@ -221,11 +226,13 @@ pub enum UsageError {
     BadAssignment { assignment: String },
     #[error("--steps {steps}: must be a whole number in [1, {max}]", max = MAX_STEPS)]
     BadSteps { steps: usize },
-    #[error("{flag} {value}: {} must be a finite number in {}{}", .key.name, .key.bounds, unit_suffix(.key.unit))]
+    #[error("{flag} {value}: {} must be a finite number in {accepted}", .key.name)]
     BadBound {
         flag: &'static str,
         value: f64,
         key: &'static Key,
+        /// The key's range in the units the value was given in.
+        accepted: String,
     },
     /// More work than the command's budget; `detail` says how much and what fits.
     #[error("{flag} {text}: {detail}")]
@@ -341,6 +348,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
             &preset,
             source,
             *json,
+            Shown(cli.units),
             &mut batch::Sinks {
                 out: &mut out,
                 err: &mut err,
@@ -385,13 +393,17 @@ fn svg_target(command: &Command) -> Option<&std::path::Path> {
 pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
     let dir = checked_presets_dir(cli)?;
     let dir = dir.as_deref();
+    let shown = Shown(cli.units);
     match command {
-        Command::Hit { scene, json } => Ok(hit::hit(&scene.resolve_swing("hit", dir)?, *json)),
+        Command::Hit { scene, json } => {
+            Ok(hit::hit(&scene.resolve_swing("hit", dir)?, *json, shown))
+        }
         Command::Optimize { scene, json } => Ok(optimize::optimum(
             &scene.resolve_swing("optimize", dir)?,
             *json,
+            shown,
         )),
-        Command::Fly { scene, json, .. } => Ok(fly::fly(&scene.resolve(dir)?, *json)),
+        Command::Fly { scene, json, .. } => Ok(fly::fly(&scene.resolve(dir)?, *json, shown)),
         Command::Table2 { json } => Ok(elapsed("table2", || table2::table2(*json))),
         Command::Bench { json, quick, svg } => {
             elapsed("bench", || bench::output(*json, *quick, svg.is_some()))
@@ -409,6 +421,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             key,
             (*from, *to, *steps),
             Format::new(*json, *csv),
+            shown,
         ),
         Command::Surface {
             scene,
@@ -421,14 +434,15 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         } => {
             let preset = scene.resolve(dir)?;
             scene::swing_only("surface", &preset)?;
-            let cells = surface::parse_grid(undercut, swing_angle, grid)?;
+            let cells =
+                surface::parse_grid(undercut.as_deref(), swing_angle.as_deref(), grid, shown)?;
             if svg.is_some() {
                 return surface::surface_svg(&preset, cells, grid);
             }
-            surface::surface(&preset.scene, cells, grid, Format::new(*json, *csv))
+            surface::surface(&preset.scene, cells, grid, Format::new(*json, *csv), shown)
         }
         Command::Presets => Ok(presets::presets(preset::check_dir(dir)?)),
-        Command::Keys => Ok(hit::keys()),
+        Command::Keys => Ok(hit::keys(shown)),
         Command::Trajectory {
             scene,
             samples,
@@ -440,7 +454,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             if svg.is_some() {
                 return hit::trajectory_svg(&preset, *samples);
             }
-            hit::trajectory(&preset.scene, *samples, Format::new(*json, *csv))
+            hit::trajectory(&preset.scene, *samples, Format::new(*json, *csv), shown)
         }
         Command::Figure {
             number,
@@ -456,6 +470,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             dir,
             Format::new(*json, *csv),
             svg.is_some(),
+            shown,
         ),
         Command::Tui { .. } => Err(UsageError::NotHeadless),
     }
@@ -484,15 +499,6 @@ impl Format {
         } else {
             Format::Text
         }
-    }
-}
-
-/// " m/s" after a value, or nothing for a quantity without a unit.
-fn unit_suffix(unit: &str) -> String {
-    if unit.is_empty() {
-        String::new()
-    } else {
-        format!(" {unit}")
     }
 }
 

@@ -2,6 +2,7 @@
 
 use super::hit::{environment_json, labelled, launch_text};
 use super::progress::{self, Work};
+use super::shown::Shown;
 use super::table::{Align, Cell, Column, Digits, Table, Width};
 use super::{Format, UsageError, pretty};
 use crate::Scene;
@@ -11,6 +12,7 @@ use crate::analysis::paper::{Best, best_swing};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study;
 use crate::model::keys::{AIR_KEYS, ATMOSPHERE_KEYS, LAUNCH_KEYS};
+use crate::units::Quantity;
 
 /// The most points a sweep takes: its work budget
 /// ([`study::SWEEP_FLIGHT_STEPS`]) shared by 200 points still gives each five
@@ -18,7 +20,7 @@ use crate::model::keys::{AIR_KEYS, ATMOSPHERE_KEYS, LAUNCH_KEYS};
 /// steps), and 200 ordinary points take about 0.3 s.
 pub const MAX_STEPS: usize = 200;
 
-pub(super) fn optimum(scene: &Scene, json: bool) -> String {
+pub(super) fn optimum(scene: &Scene, json: bool, shown: Shown) -> String {
     let work = Work {
         what: "optimize",
         steps: None,
@@ -84,15 +86,36 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
             stopped(&optimum)
         ),
     );
+    // Text about a flight that did not land gives the height in the units shown.
+    let unlanded = match unlanded {
+        Some(_) if !shown.is_si() => {
+            let (flown, flight) = if optimum.landed {
+                (swing_scene(scene, &optimum), swing.flight)
+            } else {
+                (*scene, crate::simulate(scene, Purpose::Readout).flight)
+            };
+            let height = landing::end_height(&flown, Purpose::Readout);
+            Some(if flight.landed {
+                "lands only at readout precision".to_owned()
+            } else {
+                shown.not_landed(&flight, height)
+            })
+        }
+        unlanded => unlanded,
+    };
     if !optimum.landed {
         let why = unlanded.unwrap_or_default();
         return labelled(&[
-            ("optimum", format!("none: {}", nothing_lands(&optimum))),
+            (
+                "optimum",
+                format!("none: {}", nothing_lands(&optimum, shown)),
+            ),
             (
                 "",
                 format!(
-                    "the swing given, E = {:.4} m, ψ = {:.4} rad, {why}",
-                    scene.bat.undercut, scene.bat.swing_angle
+                    "the swing given, E = {}, ψ = {}, {why}",
+                    shown.value(Quantity::Size, scene.bat.undercut, 4),
+                    shown.value(Quantity::Angle, scene.bat.swing_angle, 4)
                 ),
             ),
             search,
@@ -105,22 +128,22 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
             ""
         };
         format!(
-            "{:.4} m in {:.3} s{limit}",
-            swing.flight.range, swing.flight.flight_time
+            "{} in {:.3} s{limit}",
+            shown.value(Quantity::Distance, swing.flight.range, 4),
+            swing.flight.flight_time
         )
     });
     let mut lines = vec![
         (
             "optimum",
             format!(
-                "E = {:.6} m, ψ = {:.5} rad ({:.2}°)",
-                optimum.undercut,
-                optimum.swing_angle,
-                optimum.swing_angle.to_degrees()
+                "E = {}, ψ = {}",
+                shown.value(Quantity::Size, optimum.undercut, 6),
+                shown.angle_and_degrees(optimum.swing_angle, 5, 2)
             ),
         ),
         ("range", range),
-        ("launch", launch_text(impact)),
+        ("launch", launch_text(impact, shown)),
         search,
     ];
     if let Some(scan) = optimum.scan {
@@ -129,7 +152,7 @@ pub(super) fn optimum(scene: &Scene, json: bool) -> String {
             format!(
                 "the swing given does not land; started from the best of {} swings over {}",
                 scan.flown,
-                window(&scan)
+                window(&scan, shown)
             ),
         ));
     }
@@ -164,26 +187,36 @@ fn stopped(optimum: &Optimum) -> String {
 }
 
 /// "E ∈ [0, 0.05] m, ψ ∈ [-0.6, 1] rad"
-fn window(scan: &Scan) -> String {
+fn window(scan: &Scan, shown: Shown) -> String {
     let grid = scan.grid;
+    if shown.is_si() {
+        return format!(
+            "E ∈ [{}, {}] m, ψ ∈ [{}, {}] rad",
+            grid.undercut.0, grid.undercut.1, grid.swing_angle.0, grid.swing_angle.1
+        );
+    }
+    let end = |quantity, si| super::shown::short(shown.convert(quantity, si));
     format!(
-        "E ∈ [{}, {}] m, ψ ∈ [{}, {}] rad",
-        grid.undercut.0, grid.undercut.1, grid.swing_angle.0, grid.swing_angle.1
+        "E ∈ [{}, {}] in, ψ ∈ [{}, {}]°",
+        end(Quantity::Size, grid.undercut.0),
+        end(Quantity::Size, grid.undercut.1),
+        end(Quantity::Angle, grid.swing_angle.0),
+        end(Quantity::Angle, grid.swing_angle.1)
     )
 }
 
 /// Why a search has no optimum: which swings it flew, none landing.
-fn nothing_lands(optimum: &Optimum) -> String {
+fn nothing_lands(optimum: &Optimum, shown: Shown) -> String {
     match optimum.scan {
         Some(scan) if scan.complete => format!(
             "none of {} swings over {} lands, nor the swing given, so there is no range to maximise",
             scan.flown,
-            window(&scan)
+            window(&scan, shown)
         ),
         Some(scan) => format!(
             "no swing tried lands (the swing given and {} of a scan over {}, cut short), so there is no range to maximise",
             scan.flown,
-            window(&scan)
+            window(&scan, shown)
         ),
         None => "no swing tried lands, so there is no range to maximise".to_owned(),
     }
@@ -194,6 +227,7 @@ pub(super) fn sweep(
     key: &str,
     (from, to, steps): (f64, f64, usize),
     format: Format,
+    shown: Shown,
 ) -> Result<String, UsageError> {
     if !(1..=MAX_STEPS).contains(&steps) {
         return Err(UsageError::BadSteps { steps });
@@ -204,13 +238,32 @@ pub(super) fn sweep(
         return Err(UsageError::LaunchSwept(launch.name));
     }
     study::sweep_scenes(scene, key, &[])?;
+    // --from and --to are in the units shown, and checked in them.
+    let swept_unit = Scene::key(key).ok().map(|k| (k, k.unit_in(shown.0)));
     for (flag, value) in [("--from", from), ("--to", to)] {
-        if !value.is_finite() {
-            let key = Scene::key(key)?;
-            return Err(UsageError::BadBound { flag, value, key });
+        let Some((key, unit)) = swept_unit else {
+            continue;
+        };
+        let outside = !unit.is_identity() && !key.bounds.contains(unit.read(value));
+        if !value.is_finite() || outside {
+            let accepted = shown.bounds(key);
+            return Err(UsageError::BadBound {
+                flag,
+                value,
+                key,
+                accepted,
+            });
         }
     }
-    let values = study::linspace(from, to, steps);
+    let values: Vec<f64> = study::linspace(from, to, steps)
+        .into_iter()
+        .map(|v| {
+            swept_unit.map_or(
+                v,
+                |(_, unit)| if unit.is_identity() { v } else { unit.read(v) },
+            )
+        })
+        .collect();
     let work = Work {
         what: "sweep",
         steps: Some((steps, "points")),
@@ -250,20 +303,81 @@ pub(super) fn sweep(
         }
         return Ok(pretty(&json));
     }
-    let label = if unit.is_empty() {
+    let swept = Scene::key(key).map_or(Quantity::Unchanged, |k| k.quantity());
+    let swept_symbol = swept.unit(shown.0, unit).symbol;
+    let label = if swept_symbol.is_empty() {
         key.to_owned()
     } else {
-        format!("{key} ({unit})")
+        format!("{key} ({swept_symbol})")
     };
+    // Each column's name, heading and decimals in the units shown, the SI
+    // ones as they always were.
+    let column = |key: &str, si_head: &str, head: String, width, quantity: Quantity, decimals| {
+        let head = if shown.is_si() {
+            si_head.to_owned()
+        } else {
+            head
+        };
+        let decimals = shown.unit(quantity).decimals(decimals);
+        Column::right(
+            &shown.csv_key(key, quantity),
+            &head,
+            width,
+            Digits::Fixed(decimals),
+        )
+    };
+    let symbol = |quantity: Quantity| shown.unit(quantity).symbol;
     let table = Table {
         columns: vec![
-            Column::right(key, &label, 24, Digits::Trimmed),
-            Column::right("undercut", "E_opt (m)", 10, Digits::Fixed(5)),
-            Column::right("swing_angle", "ψ_opt", 8, Digits::Fixed(4)),
-            Column::right("range", "range (m)", 10, Digits::Fixed(3)),
-            Column::right("launch_speed", "V_bf m/s", 9, Digits::Fixed(3)),
-            Column::right("launch_spin", "ω_bf r/s", 9, Digits::Fixed(2)),
-            Column::right("launch_angle", "ζ rad", 8, Digits::Fixed(4)),
+            Column::right(&shown.csv_key(key, swept), &label, 24, Digits::Trimmed),
+            column(
+                "undercut",
+                "E_opt (m)",
+                format!("E_opt ({})", symbol(Quantity::Size)),
+                10,
+                Quantity::Size,
+                5,
+            ),
+            column(
+                "swing_angle",
+                "ψ_opt",
+                format!("ψ_opt ({})", symbol(Quantity::Angle)),
+                8,
+                Quantity::Angle,
+                4,
+            ),
+            column(
+                "range",
+                "range (m)",
+                format!("range ({})", symbol(Quantity::Distance)),
+                10,
+                Quantity::Distance,
+                3,
+            ),
+            column(
+                "launch_speed",
+                "V_bf m/s",
+                format!("V_bf {}", symbol(Quantity::Speed)),
+                9,
+                Quantity::Speed,
+                3,
+            ),
+            column(
+                "launch_spin",
+                "ω_bf r/s",
+                format!("ω_bf {}", symbol(Quantity::Spin)),
+                9,
+                Quantity::Spin,
+                2,
+            ),
+            column(
+                "launch_angle",
+                "ζ rad",
+                format!("ζ {}", symbol(Quantity::Angle)),
+                8,
+                Quantity::Angle,
+                4,
+            ),
             Column::data("evaluations"),
             Column::data("converged"),
             Column::data("status"),
@@ -274,16 +388,16 @@ pub(super) fn sweep(
             .iter()
             .map(|p| {
                 let mut row: Vec<Cell> = [
-                    p.value,
-                    p.undercut,
-                    p.swing_angle,
-                    p.range,
-                    p.launch_speed,
-                    p.launch_spin,
-                    p.launch_angle,
-                    f64::from(p.evaluations),
+                    (p.value, swept),
+                    (p.undercut, Quantity::Size),
+                    (p.swing_angle, Quantity::Angle),
+                    (p.range, Quantity::Distance),
+                    (p.launch_speed, Quantity::Speed),
+                    (p.launch_spin, Quantity::Spin),
+                    (p.launch_angle, Quantity::Angle),
+                    (f64::from(p.evaluations), Quantity::Unchanged),
                 ]
-                .map(Cell::Num)
+                .map(|(si, quantity)| Cell::Num(shown.convert(quantity, si)))
                 .to_vec();
                 row.push(Cell::Text(p.converged.to_string()));
                 row.push(Cell::Text(status_name(p.status)));

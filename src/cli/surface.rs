@@ -4,6 +4,7 @@
 use std::fmt::Write as _;
 
 use super::progress::{self, Work};
+use super::shown::Shown;
 use super::table::{Cell, Column, Digits, Table};
 use super::{Format, UsageError, WindowFault, pretty};
 use crate::Scene;
@@ -11,8 +12,10 @@ use crate::analysis::figures;
 use crate::analysis::optimum::{OptimizerSettings, optimize};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study::{self, CellOutcome, Grid, Surface, TooMuchWork};
+use crate::model::keys::Key;
 use crate::picture::{self, SurfacePicture};
 use crate::preset::{Preset, cut};
+use crate::units::Quantity;
 
 /// The most cells a side of the grid takes: 500×500 cells of an ordinary
 /// scene take about 0.5 s on 2 cores.
@@ -24,17 +27,28 @@ pub const MAX_GRID: usize = 500;
 /// whose balls hover takes 4 000 to 70 000 a cell, and gets a smaller grid.
 pub const SURFACE_FLIGHT_STEPS: u64 = 20_000_000;
 
-/// Parses "A..B" (a window) for `flag`, inside `bounds`.
+/// The window a surface covers unless told: E ∈ [0, 0.05] m, ψ ∈ [−0.6, 1] rad.
+const DEFAULT_UNDERCUT: (f64, f64) = (0.0, 0.05);
+const DEFAULT_SWING_ANGLE: (f64, f64) = (-0.6, 1.0);
+
+/// Parses "A..B" (a window) for `flag`, inside `key`'s bounds, in the units
+/// shown, giving it in SI.
 fn parse_window(
     flag: &'static str,
     text: &str,
-    bounds: (f64, f64),
+    key: &'static Key,
+    shown: Shown,
 ) -> Result<(f64, f64), UsageError> {
+    let unit = key.unit_in(shown.0);
     let bad = |fault| {
-        let (accepted, example) = if flag == "--undercut" {
-            (format!("[{}, {}] m", bounds.0, bounds.1), "0..0.05")
-        } else {
-            ("[-π/2, π/2] rad".to_owned(), "-0.6..1.0")
+        let (accepted, example) = match (flag, shown.is_si()) {
+            ("--undercut", true) => (
+                format!("[{}, {}] m", key.bounds.min, key.bounds.max),
+                "0..0.05",
+            ),
+            (_, true) => ("[-π/2, π/2] rad".to_owned(), "-0.6..1.0"),
+            ("--undercut", false) => (shown.bounds(key), "0..2"),
+            (_, false) => (shown.bounds(key), "-30..60"),
         };
         UsageError::BadWindow {
             flag,
@@ -59,7 +73,12 @@ fn parse_window(
     if a >= b {
         return Err(bad(WindowFault::Reversed));
     }
-    if a < bounds.0 || b > bounds.1 {
+    let (a, b) = if unit.is_identity() {
+        (a, b)
+    } else {
+        (unit.read(a), unit.read(b))
+    };
+    if a < key.bounds.min || b > key.bounds.max {
         return Err(bad(WindowFault::OutOfRange));
     }
     Ok((a, b))
@@ -67,16 +86,22 @@ fn parse_window(
 
 /// Parses the surface's window and "NxM" grid.
 pub(super) fn parse_grid(
-    undercut: &str,
-    swing_angle: &str,
+    undercut: Option<&str>,
+    swing_angle: Option<&str>,
     grid: &str,
+    shown: Shown,
 ) -> Result<Grid, UsageError> {
-    let key_bounds = |name| {
-        let key = Scene::key(name).expect("a known key");
-        (key.bounds.min, key.bounds.max)
+    let window = |flag, text: Option<&str>, name, default: (f64, f64)| match text {
+        Some(text) => parse_window(flag, text, Scene::key(name).expect("a known key"), shown),
+        None => Ok(default),
     };
-    let undercut = parse_window("--undercut", undercut, key_bounds("bat.undercut"))?;
-    let swing_angle = parse_window("--swing-angle", swing_angle, key_bounds("bat.swing_angle"))?;
+    let undercut = window("--undercut", undercut, "bat.undercut", DEFAULT_UNDERCUT)?;
+    let swing_angle = window(
+        "--swing-angle",
+        swing_angle,
+        "bat.swing_angle",
+        DEFAULT_SWING_ANGLE,
+    )?;
     let bad = || UsageError::BadGrid {
         text: cut(grid, 80),
     };
@@ -102,6 +127,7 @@ pub(super) fn surface(
     grid: Grid,
     text: &str,
     format: Format,
+    shown: Shown,
 ) -> Result<String, UsageError> {
     let surface = computed(scene, grid, text)?;
     if format == Format::Json {
@@ -109,7 +135,7 @@ pub(super) fn surface(
         json["environment"] = super::hit::environment_json(scene);
         return Ok(pretty(&json));
     }
-    Ok(render_surface(&surface, format))
+    Ok(render_surface(&surface, format, shown))
 }
 
 /// The surface within its work budget, with a progress line.
@@ -166,11 +192,11 @@ fn too_much(text: &str, work: TooMuchWork) -> UsageError {
 
 /// A range surface as JSON, as CSV (one line per cell) or as a grid of
 /// whole metres with ψ growing upward (as in Fig. 7).
-pub(super) fn render_surface(surface: &Surface, format: Format) -> String {
+pub(super) fn render_surface(surface: &Surface, format: Format, shown: Shown) -> String {
     match format {
         Format::Json => pretty(&surface_json(surface)),
-        Format::Csv => surface_cells(surface).csv(),
-        Format::Text => surface_text(surface),
+        Format::Csv => surface_cells(surface, shown).csv(),
+        Format::Text => surface_text(surface, shown),
     }
 }
 
@@ -217,41 +243,58 @@ pub(super) fn surface_json(surface: &Surface) -> serde_json::Value {
 
 /// One row per cell: E, ψ, the range (blank where the ball does not land or
 /// the bat misses) and whether the ball lands (blank where the bat misses).
-fn surface_cells(surface: &Surface) -> Table {
+fn surface_cells(surface: &Surface, shown: Shown) -> Table {
     let (undercuts, swing_angles) = axes(surface);
+    let convert = |quantity, si| Cell::Num(shown.convert(quantity, si));
     let mut rows = Vec::new();
     for (j, psi) in swing_angles.iter().enumerate() {
         for (i, e) in undercuts.iter().enumerate() {
             let outcome = surface.outcome(i, j);
             rows.push(vec![
-                Cell::Num(*e),
-                Cell::Num(*psi),
-                outcome.range().map_or(Cell::Blank, Cell::Num),
+                convert(Quantity::Size, *e),
+                convert(Quantity::Angle, *psi),
+                outcome
+                    .range()
+                    .map_or(Cell::Blank, |r| convert(Quantity::Distance, r)),
                 landed(outcome).map_or(Cell::Blank, Cell::Bool),
             ]);
         }
     }
+    let columns = [
+        ("undercut", Quantity::Size),
+        ("swing_angle", Quantity::Angle),
+        ("range", Quantity::Distance),
+        ("landed", Quantity::Unchanged),
+    ];
     Table {
-        columns: ["undercut", "swing_angle", "range", "landed"]
-            .map(Column::data)
+        columns: columns
+            .map(|(key, quantity)| Column::data(&shown.csv_key(key, quantity)))
             .to_vec(),
         rows,
     }
 }
 
-fn surface_text(surface: &Surface) -> String {
+fn surface_text(surface: &Surface, shown: Shown) -> String {
     let (undercuts, swing_angles) = axes(surface);
     let best = surface.best();
-    let mut columns = vec![Column::right("", "ψ \\ E", 7, Digits::Fixed(3))];
+    // Columns of E in mm (SI) or in (hundredths), rows of ψ in rad or degrees.
+    let (psi_decimals, column_head): (usize, &dyn Fn(f64) -> String) = if shown.is_si() {
+        (3, &|e: f64| format!("{:.1}", e * 1000.0))
+    } else {
+        (1, &|e: f64| {
+            format!("{:.2}", shown.convert(Quantity::Size, e))
+        })
+    };
+    let mut columns = vec![Column::right("", "ψ \\ E", 7, Digits::Fixed(psi_decimals))];
     columns.extend(undercuts.iter().enumerate().map(|(i, e)| {
-        let column = Column::right("", &format!("{:.1}", e * 1000.0), 5, Digits::Shortest);
+        let column = Column::right("", &column_head(*e), 5, Digits::Shortest);
         column.after(if i == 0 { " " } else { "" })
     }));
     // ψ grows upward, as in Fig. 7.
     let rows = (0..swing_angles.len())
         .rev()
         .map(|j| {
-            let mut row = vec![Cell::Num(swing_angles[j])];
+            let mut row = vec![Cell::Num(shown.convert(Quantity::Angle, swing_angles[j]))];
             row.extend((0..undercuts.len()).map(|i| {
                 let mark = if best.is_some_and(|b| (b.0, b.1) == (i, j)) {
                     "*"
@@ -259,7 +302,10 @@ fn surface_text(surface: &Surface) -> String {
                     " "
                 };
                 let text = match surface.outcome(i, j) {
-                    CellOutcome::Landed(r) => return Cell::Text(format!("{r:>4.0}{mark}")),
+                    CellOutcome::Landed(r) => {
+                        let r = shown.convert(Quantity::Distance, r);
+                        return Cell::Text(format!("{r:>4.0}{mark}"));
+                    }
                     CellOutcome::NotLanded => "up",
                     CellOutcome::BatMisses => "-",
                     CellOutcome::NotComputed => "?",
@@ -269,9 +315,15 @@ fn surface_text(surface: &Surface) -> String {
             row
         })
         .collect();
-    let mut out = String::from(
-        "range (m) over undercut E (columns, mm) and swing angle ψ (rows, rad); * best cell, - bat misses\n",
-    );
+    let mut out = if shown.is_si() {
+        String::from(
+            "range (m) over undercut E (columns, mm) and swing angle ψ (rows, rad); * best cell, - bat misses\n",
+        )
+    } else {
+        String::from(
+            "range (ft) over undercut E (columns, in) and swing angle ψ (rows, °); * best cell, - bat misses\n",
+        )
+    };
     if surface.any_not_landed() {
         out.insert_str(out.len() - 1, ", up: the ball does not land");
     }
@@ -279,8 +331,10 @@ fn surface_text(surface: &Surface) -> String {
     if let Some((i, j, range)) = best {
         let _ = writeln!(
             out,
-            "best cell: E = {:.4} m, ψ = {:.4} rad, range {:.2} m",
-            undercuts[i], swing_angles[j], range
+            "best cell: E = {}, ψ = {}, range {}",
+            shown.value(Quantity::Size, undercuts[i], 4),
+            shown.value(Quantity::Angle, swing_angles[j], 4),
+            shown.value(Quantity::Distance, range, 2)
         );
     }
     out

@@ -170,6 +170,7 @@ fn accepted(flag: &str) -> Option<String> {
             "a preset name (homerun presets lists them) or a path to a TOML file".to_owned()
         }
         "--presets-dir" => "a folder".to_owned(),
+        "--units" => "si or imperial".to_owned(),
         "--grid" => "NxM, e.g. 21x17".to_owned(),
         "--undercut" => "A..B in m, e.g. 0..0.05".to_owned(),
         "--swing-angle" => "C..D in rad, e.g. -0.6..1.0".to_owned(),
@@ -191,6 +192,6 @@ fn arguments_of(usage: &str) -> Option<String> {
             None => format!("<{}>", a.get_id().as_str().to_uppercase()),
         })
         .collect();
-    names.extend(["--presets-dir", "--help"].map(str::to_owned));
+    names.extend(["--presets-dir", "--units", "--help"].map(str::to_owned));
     Some(format!("homerun {name} takes {}", names.join(", ")))
 }

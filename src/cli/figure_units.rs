@@ -1,0 +1,136 @@
+//! A figure's table, conditions and title in the units `--units` asks for.
+//! The figures are computed in SI ([`crate::analysis::figures`]); this only
+//! rewrites what text and CSV show. Marks, notes and the paper's stated
+//! numbers keep the paper's SI words, each with its unit.
+
+use super::shown::{Shown, short};
+use crate::Scene;
+use crate::analysis::figures::{self, Cell, FigureData};
+use crate::model::keys::all_keys;
+use crate::units::Quantity;
+
+/// What a figure column measures, from its key: `launch_spin_mu_0.35` is a
+/// spin, `bat_speed` (a swept key, dots made underscores) the key's own.
+fn quantity(key: &str) -> (Quantity, &'static str) {
+    let fixed = match key {
+        "undercut" => Some(Quantity::Size),
+        "swing_angle" => Some(Quantity::Angle),
+        "range" | "x" | "y" => Some(Quantity::Distance),
+        "air_speed" | "launch_speed" => Some(Quantity::Speed),
+        _ if key.starts_with("launch_spin") => Some(Quantity::Spin),
+        _ if key.starts_with("launch_angle") => Some(Quantity::Angle),
+        _ => None,
+    };
+    if let Some(quantity) = fixed {
+        return (quantity, quantity.si_symbol());
+    }
+    all_keys()
+        .find(|k| k.name.replace('.', "_") == key)
+        .map_or((Quantity::Unchanged, ""), |k| (k.quantity(), k.unit))
+}
+
+/// `data` with its numeric columns converted, their headings, CSV names and
+/// decimals in the units shown; as it is in SI.
+pub(super) fn converted(mut data: FigureData, shown: Shown) -> FigureData {
+    if shown.is_si() {
+        return data;
+    }
+    for (k, column) in data.columns.iter_mut().enumerate() {
+        let (quantity, si_symbol) = quantity(&column.key);
+        let unit = quantity.unit(shown.0, si_symbol);
+        if unit.is_identity() {
+            continue;
+        }
+        column.head =
+            column
+                .head
+                .replacen(&format!("({si_symbol})"), &format!("({})", unit.symbol), 1);
+        column.key = shown.csv_key(&column.key, quantity);
+        column.decimals = unit.decimals(column.decimals);
+        for row in &mut data.rows {
+            if let Cell::Num(x) = &mut row[k] {
+                *x = unit.show(*x);
+            }
+        }
+    }
+    data.title = title(&data.title, shown);
+    data
+}
+
+/// The units a title names for its axes, in the units shown (the numbers it
+/// quotes keep their SI units beside them).
+pub(super) fn title(title: &str, shown: Shown) -> String {
+    if shown.is_si() {
+        return title.to_owned();
+    }
+    let mut out = title.to_owned();
+    for (si, imperial) in [
+        (
+            "(E_opt m, ψ_opt rad, range m)",
+            "(E_opt in, ψ_opt °, range ft)",
+        ),
+        ("range (m)", "range (ft)"),
+        ("E (m)", "E (in)"),
+        ("ψ (rad)", "ψ (°)"),
+        ("ζ (rad)", "ζ (°)"),
+        ("x, y (m)", "x, y (ft)"),
+    ] {
+        out = out.replace(si, imperial);
+    }
+    // Speeds and spins in parentheses: a sweep's axis, "V_B0 (m/s)", "ω_b0
+    // (rad/s, topspin positive)"; numbers quoted in the title keep theirs.
+    out.replace("(m/s", "(mph").replace("(rad/s", "(rpm")
+}
+
+/// The inputs a figure was computed with, in one line, as
+/// [`figures::conditions`] writes them in SI.
+pub(super) fn conditions(name: &str, s: &Scene, shown: Shown) -> String {
+    if shown.is_si() {
+        return figures::conditions(name, s);
+    }
+    let v = |quantity: Quantity, si: f64| {
+        let unit = shown.unit(quantity);
+        let gap = if unit.symbol == "°" { "" } else { " " };
+        format!("{}{gap}{}", short(shown.convert(quantity, si)), unit.symbol)
+    };
+    format!(
+        "preset {name}: pitch {}, spin {}; bat {}, roll {}, E {}, ψ {}, μ {}; wind {}; ρ {} kg/m³; drag {}, lift {}",
+        v(Quantity::Speed, s.pitch.speed),
+        v(Quantity::Spin, s.pitch.spin),
+        v(Quantity::Speed, s.bat.speed),
+        v(Quantity::Spin, s.bat.spin),
+        v(Quantity::Size, s.bat.undercut),
+        v(Quantity::Angle, s.bat.swing_angle),
+        figures::trimmed(s.bat.friction),
+        v(Quantity::Speed, s.environment.wind),
+        figures::trimmed(s.environment.air_density),
+        s.drag,
+        s.lift
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::units::UnitSystem;
+
+    #[test]
+    fn columns_are_known_by_their_keys() {
+        assert_eq!(quantity("undercut").0, Quantity::Size);
+        assert_eq!(quantity("launch_spin_mu_0.35").0, Quantity::Spin);
+        assert_eq!(quantity("bat_speed"), (Quantity::Speed, "m/s"));
+        assert_eq!(quantity("reynolds").0, Quantity::Unchanged);
+    }
+
+    #[test]
+    fn titles_name_the_units_shown() {
+        let imperial = Shown(UnitSystem::Imperial);
+        assert_eq!(
+            title(
+                "the optimum (E_opt m, ψ_opt rad, range m) and its launch against bat speed V_B0 (m/s)",
+                imperial
+            ),
+            "the optimum (E_opt in, ψ_opt °, range ft) and its launch against bat speed V_B0 (mph)"
+        );
+    }
+}
