@@ -20,16 +20,22 @@ pub fn end_height(scene: &Scene, options: impl Into<FlightOptions>) -> f64 {
 /// within 100000 integration steps (61.2 s, still 235.7 m up)". `height` is
 /// where the ball was at the end ([`end_height`]).
 pub fn not_landed(summary: &FlightSummary, height: f64) -> String {
+    not_landed_at(summary, &format!("{height:.1} m"))
+}
+
+/// [`not_landed`] with the height already written, in whatever unit the
+/// caller shows ("773.3 ft").
+pub fn not_landed_at(summary: &FlightSummary, height: &str) -> String {
     let steps = summary.stats.accepted + summary.stats.rejected;
     if steps >= ode::MAX_STEPS {
         format!(
-            "did not land within {} integration steps ({:.1} s, still {height:.1} m up)",
+            "did not land within {} integration steps ({:.1} s, still {height} up)",
             ode::MAX_STEPS,
             summary.flight_time
         )
     } else {
         format!(
-            "did not land within {:.1} s (still {height:.1} m up)",
+            "did not land within {:.1} s (still {height} up)",
             summary.flight_time
         )
     }

@@ -6,7 +6,6 @@
 use crate::analysis::landing;
 use crate::model::flight::FlightSummary;
 use crate::model::keys::{Bounds, Key};
-use crate::numerics::ode;
 use crate::units::{Quantity, Unit, UnitSystem};
 
 /// The unit system text is printed in.
@@ -137,19 +136,7 @@ impl Shown {
             return landing::not_landed(summary, height);
         }
         let up = self.value_to(Quantity::Distance, height, 1);
-        let steps = summary.stats.accepted + summary.stats.rejected;
-        if steps >= ode::MAX_STEPS {
-            format!(
-                "did not land within {} integration steps ({:.1} s, still {up} up)",
-                ode::MAX_STEPS,
-                summary.flight_time
-            )
-        } else {
-            format!(
-                "did not land within {:.1} s (still {up} up)",
-                summary.flight_time
-            )
-        }
+        landing::not_landed_at(summary, &up)
     }
 }
 
