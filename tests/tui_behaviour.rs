@@ -25,16 +25,16 @@ fn nudging_the_undercut_up_adds_backspin_and_range() {
     // mm: more undercut means more backspin (Fig. 6) and, here, more range.
     let mut app = app(80, 24, None);
     select(&mut app, "bat.undercut");
-    let (spin, range) = (app.swing.impact.launch_spin(), app.swing.flight.range);
+    let (spin, range) = (app.flown.launch.spin, app.flown.flight.range);
     key(&mut app, KeyCode::Char('l'));
     assert_eq!(app.scene.bat.undercut, 0.0265 + 0.0005);
-    assert!(app.swing.impact.launch_spin() > spin + 1.0);
-    assert!(app.swing.flight.range > range);
+    assert!(app.flown.launch.spin > spin + 1.0);
+    assert!(app.flown.flight.range > range);
     // Down again, ten steps with Shift: less spin, less range than at the start.
     key_with(&mut app, KeyCode::Left, KeyModifiers::SHIFT);
     assert!((app.scene.bat.undercut - (0.0265 - 0.0045)).abs() < 1e-12);
-    assert!(app.swing.impact.launch_spin() < spin - 10.0);
-    assert!(app.swing.flight.range < range);
+    assert!(app.flown.launch.spin < spin - 10.0);
+    assert!(app.flown.flight.range < range);
     // A finer nudge: a tenth of the step.
     key(&mut app, KeyCode::Char(']'));
     assert!((app.scene.bat.undercut - (0.0265 - 0.0045 + 0.00005)).abs() < 1e-12);
@@ -285,9 +285,9 @@ fn colours_fall_back_to_the_256_colour_cube() {
 fn feet_are_a_display_choice() {
     let mut app = app(80, 24, None);
     settle(&mut app);
-    let range = app.swing.flight.range;
+    let range = app.flown.flight.range;
     key(&mut app, KeyCode::Char('u'));
-    assert_eq!(app.swing.flight.range, range, "nothing is recomputed");
+    assert_eq!(app.flown.flight.range, range, "nothing is recomputed");
     let screen = screen(&app);
     // 134.698780 m is 441.925 ft.
     assert!(screen.contains("range 441.93 ft"), "{screen}");
@@ -343,10 +343,10 @@ fn a_pin_survives_a_nudge_and_a_preset_load_and_p_clears_it() {
     settle(&mut app);
     let after = app.pin.clone().expect("still pinned");
     assert_eq!(after.scene, pin.scene, "the pinned scene is unchanged");
-    assert_eq!(after.swing, pin.swing);
+    assert_eq!(after.flown, pin.flown);
     assert_ne!(app.scene, pin.scene);
     // The readout's now − pin is non-zero: 5 m/s more bat speed.
-    let dv = app.swing.impact.launch_speed() - pin.swing.impact.launch_speed();
+    let dv = app.flown.launch.speed - pin.flown.launch.speed;
     assert!(dv > 1.0, "{dv}");
     let shown = screen(&app);
     assert!(
@@ -482,18 +482,18 @@ fn the_sensitivity_column_is_what_a_nudge_does() {
     // At 80×24 the pane has room for Δ only, so Δopt is not computed.
     let mut small = app(80, 24, None);
     settle(&mut small);
-    assert_eq!(small.gains_done(Gain::Swing), input_count());
+    assert_eq!(small.gains_done(Gain::Swing), small.gain_count());
     assert_eq!(small.gains_done(Gain::Optimum), 0);
     assert!(!small.busy());
 
     let mut app = app(140, 40, None);
     settle(&mut app);
-    assert_eq!(app.gains_done(Gain::Swing), input_count());
-    assert_eq!(app.gains_done(Gain::Optimum), input_count());
+    assert_eq!(app.gains_done(Gain::Swing), app.gain_count());
+    assert_eq!(app.gains_done(Gain::Optimum), app.gain_count());
     let k = input_index("bat.speed");
     let gain = app.swing_gains[k].unwrap().value.unwrap();
     let optimum_gain = app.optimum_gains[k].unwrap().value.unwrap();
-    let (range, optimum) = (app.swing.flight.range, app.optimum.unwrap().best.range);
+    let (range, optimum) = (app.flown.flight.range, app.optimum.unwrap().best.range);
     // Half a metre per second of bat speed: ~2 m (the paper's "nearly 5 m"
     // per 1 m/s is 4.0 m in Fig. 8's sweep).
     assert!((1.7..2.3).contains(&gain), "{gain}");
@@ -508,7 +508,7 @@ fn the_sensitivity_column_is_what_a_nudge_does() {
     select(&mut app, "bat.speed");
     key(&mut app, KeyCode::Char('l'));
     // The same flight as the column's: exactly the range the nudge gains.
-    assert_eq!(app.swing.flight.range - range, gain);
+    assert_eq!(app.flown.flight.range - range, gain);
     // Until the worker reports, every cell is stale (kept, but marked).
     assert_eq!(app.gains_done(Gain::Swing), 0);
     assert!(app.swing_gains[k].is_some());
@@ -541,8 +541,15 @@ fn the_sensitivity_column_is_what_a_nudge_does() {
 #[test]
 fn every_key_is_offered_and_the_weather_derives_the_air() {
     let mut app = app(80, 24, None);
+    // Every key but the launch, which is the batted-ball scene's.
     for k in 0..input_count() {
-        assert!(app.fields.contains(&Field::Key(k)), "{}", input_key(k).name);
+        let launch = input_key(k).name.starts_with("launch.");
+        assert_eq!(
+            app.fields.contains(&Field::Key(k)),
+            !launch,
+            "{}",
+            input_key(k).name
+        );
     }
     assert!(app.fields.contains(&Field::Drag) && app.fields.contains(&Field::Lift));
     // Each group is listed once.
@@ -601,7 +608,7 @@ fn every_key_is_offered_and_the_weather_derives_the_air() {
 fn a_ball_that_does_not_land_is_never_shown_as_a_range() {
     let mut app = app(80, 24, None);
     set_and_settle(&mut app, "environment.gravity", "0.001");
-    assert!(!app.swing.flight.landed);
+    assert!(!app.flown.flight.landed);
     let screen = screen(&app);
     // The readout says where the ball is instead, and the trajectory's
     // title gives no range.
@@ -624,4 +631,262 @@ fn a_ball_that_does_not_land_is_never_shown_as_a_range() {
     assert!(surface.any_not_landed());
     let (i, j, best) = surface.best().unwrap();
     assert_eq!(surface.get(i, j), Some(best));
+}
+
+/// The groups of the inputs pane, top to bottom.
+fn groups(app: &homerun::tui::app::App) -> Vec<&'static str> {
+    let mut groups = Vec::new();
+    for field in &app.fields {
+        if !groups.contains(&field.group()) {
+            groups.push(field.group());
+        }
+    }
+    groups
+}
+
+#[test]
+fn b_flies_the_swings_launch_on_its_own_and_back() {
+    use homerun::model::launch::SceneKind;
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let swing = app.scene;
+    let (launch, range) = (app.flown.launch, app.flown.flight.range);
+    key(&mut app, KeyCode::Char('b'));
+    assert_eq!(app.scene.kind, SceneKind::BattedBall);
+    // The same launch, so the same flight (to rounding in the launch
+    // velocity, rebuilt from speed and angle).
+    assert_eq!(app.flown.launch, launch);
+    assert!(
+        (app.flown.flight.range - range).abs() < 1e-9,
+        "{} vs {range}",
+        app.flown.flight.range
+    );
+    assert!(app.flown.impact.is_none());
+    // Launch, ball, air and models; no pitch and no bat.
+    assert_eq!(groups(&app), ["", "launch", "ball", "environment", "model"]);
+    assert!(
+        matches!(app.fields[app.selected], Field::Key(k) if input_key(k).name == "launch.speed")
+    );
+    let shown = screen(&app);
+    assert!(shown.contains("batted ball · "), "{shown}");
+    assert!(
+        !shown.contains("V̂_B0") && !shown.contains("optimum"),
+        "{shown}"
+    );
+    // A launch key nudged; then back to the swing as it was.
+    select(&mut app, "launch.angle");
+    key(&mut app, KeyCode::Char('l'));
+    assert_ne!(app.flown.flight.range, range);
+    key(&mut app, KeyCode::Char('b'));
+    assert_eq!(app.scene.kind, SceneKind::Swing);
+    assert_eq!((app.scene.pitch, app.scene.bat), (swing.pitch, swing.bat));
+    assert_eq!(app.flown.flight.range, range);
+    assert_eq!(
+        groups(&app),
+        ["", "pitch", "bat", "ball", "environment", "model"]
+    );
+    assert!(screen(&app).contains("swing · "));
+}
+
+#[test]
+fn the_fly_ball_preset_opens_as_a_batted_ball() {
+    use homerun::model::launch::SceneKind;
+    // From the command line (`homerun tui --preset fly-ball`) …
+    let mut app = app_on("fly-ball", 80, 24, None);
+    assert_eq!(app.scene.kind, SceneKind::BattedBall);
+    assert_eq!(app.flown.launch.speed, 46.04512);
+    assert!(
+        app.fields
+            .iter()
+            .all(|f| !["pitch", "bat"].contains(&f.group()))
+    );
+    let shown = screen(&app);
+    assert!(
+        shown.contains("46.0451 m/s") && shown.contains("46.05 m/s"),
+        "{shown}"
+    );
+    // … and from the picker.
+    let mut fastball = app_on("fastball", 80, 24, None);
+    fastball.load(homerun::preset::load("fly-ball", None).unwrap());
+    fastball.flush();
+    assert_eq!(fastball.scene, app.scene);
+    assert_eq!(fastball.flown.flight, app.flown.flight);
+    // Nudging the launch angle changes the range by what Δ said.
+    settle(&mut app);
+    let k = input_index("launch.angle");
+    let gain = app.swing_gains[k].unwrap().value.unwrap();
+    let range = app.flown.flight.range;
+    select(&mut app, "launch.angle");
+    key(&mut app, KeyCode::Char('l'));
+    // One step of 0.01 rad, snapped to a thousandth of it.
+    assert!((app.scene.launch.angle.unwrap() - (0.488692190558412 + 0.01)).abs() < 5e-6);
+    assert_ne!(app.flown.flight.range, range);
+    assert_eq!(app.flown.flight.range - range, gain);
+}
+
+#[test]
+fn a_batted_ball_costs_the_worker_no_optimum_or_surface() {
+    let mut app = app_on("fly-ball", 200, 60, None);
+    let job = app.take_job().unwrap();
+    let mut reports = Vec::new();
+    run_job(&job, &|| false, &mut |r| reports.push(r));
+    // One Δ per input shown, and nothing else (no Δopt, even with room for it).
+    assert_eq!(reports.len(), app.gain_count());
+    assert!(reports.iter().all(|r| matches!(
+        r,
+        Report::Sensitivity {
+            gain: Gain::Swing,
+            ..
+        }
+    )));
+    for report in reports {
+        app.apply(report);
+    }
+    // And the figure in view (200×60 shows it): then nothing is left to do.
+    settle(&mut app);
+    assert_eq!(app.optimum, None);
+    assert_eq!(app.surface, None);
+    assert!(!app.busy());
+    // Only the aero figures apply: the pane opens on Fig. 3, f steps
+    // through Figs. 3–4, and the title says the rest need a swing.
+    key(&mut app, KeyCode::Char('4'));
+    assert_eq!(app.figure_number, 3);
+    assert_eq!(app.figure.as_ref().unwrap().number, 3);
+    assert!(screen(&app).contains("the rest need a swing"));
+    key(&mut app, KeyCode::Char('f'));
+    assert_eq!(app.figure_number, 4);
+    key(&mut app, KeyCode::Char('f'));
+    assert_eq!(app.figure_number, 3);
+    settle(&mut app);
+    assert!(app.figure.as_ref().unwrap().data.is_ok());
+    // Back in the swing, f reaches Fig. 8; the batted ball again shows Fig. 3.
+    key(&mut app, KeyCode::Char('b'));
+    for _ in 0..4 {
+        key(&mut app, KeyCode::Char('f'));
+    }
+    assert_eq!(app.figure_number, 8);
+    key(&mut app, KeyCode::Char('b'));
+    assert_eq!(app.figure_number, 3);
+    // r has no optimum to go to.
+    key(&mut app, KeyCode::Char('r'));
+    assert!(app.message.as_ref().unwrap().0.contains("swing scene"));
+}
+
+#[test]
+fn a_batted_ball_saves_as_one_and_the_pin_compares_across_scenes() {
+    use homerun::model::launch::SceneKind;
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = app(80, 24, Some(dir.path().to_owned()));
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('p'));
+    let swing_range = app.flown.flight.range;
+    key(&mut app, KeyCode::Char('b'));
+    select(&mut app, "launch.speed");
+    key(&mut app, KeyCode::Char('L'));
+    assert_eq!(app.scene.launch.speed, Some(app.flown.launch.speed));
+    // The pinned swing against the batted ball: 5 m/s more launch speed.
+    let pin = app.pin.clone().unwrap();
+    assert_eq!(pin.scene.kind, SceneKind::Swing);
+    assert_eq!(pin.flown.flight.range, swing_range);
+    let dv = app.flown.launch.speed - pin.flown.launch.speed;
+    // Five steps of 0.5 m/s, snapped to a thousandth of the step.
+    assert!((dv - 5.0).abs() < 5e-4, "{dv}");
+    let shown = screen(&app);
+    assert!(shown.contains("+5.00 m/s"), "{shown}");
+    assert!(shown.contains("━ pin"), "{shown}");
+    // Saved, it is a batted-ball preset.
+    key(&mut app, KeyCode::Char('s'));
+    for _ in 0..12 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "batted");
+    key(&mut app, KeyCode::Enter);
+    let saved = homerun::preset::load("batted", Some(dir.path())).unwrap();
+    assert_eq!(saved.scene.kind, SceneKind::BattedBall);
+    assert_eq!(saved.scene.launch, app.scene.launch);
+}
+
+#[test]
+fn u_shows_and_takes_every_value_in_baseball_units() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('u'));
+    // Typed in mph: 100 mph is 44.704 m/s.
+    select(&mut app, "pitch.speed");
+    key(&mut app, KeyCode::Enter);
+    let Mode::Edit { text, .. } = &app.mode else {
+        panic!("editing")
+    };
+    // The edit starts from the shown text: 42 m/s is 93.951 mph.
+    assert_eq!(text.lines().join(""), "93.951");
+    typed(&mut app, "100");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert!((app.scene.pitch.speed - 44.704).abs() < 1e-12);
+    // A nudge is 1 mph, exactly.
+    let before = app.scene.pitch.speed;
+    key(&mut app, KeyCode::Char('l'));
+    let step = app.scene.pitch.speed - before;
+    assert!((step - 0.44704).abs() < 1e-12, "{step}");
+    // Enter on the shown text unchanged keeps the value as it was.
+    select(&mut app, "bat.undercut");
+    let undercut = app.scene.bat.undercut;
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.scene.bat.undercut, undercut);
+    // An invalid value is refused with its range in the shown unit.
+    select(&mut app, "pitch.speed");
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "300");
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Edit {
+            error: Some(error), ..
+        } => assert_eq!(
+            error,
+            "pitch.speed = 300 mph: must be a finite number in (0, 223.69] mph"
+        ),
+        other => panic!("an error, not {other:?}"),
+    }
+    key(&mut app, KeyCode::Esc);
+    settle(&mut app);
+    // Δ is in feet for the imperial nudge: what pressing l does.
+    let k = input_index("pitch.speed");
+    let gain = app.swing_gains[k].unwrap().value.unwrap();
+    let range = app.flown.flight.range;
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.flown.flight.range - range, gain);
+    let shown = screen(&app);
+    assert!(shown.contains("Δ ft") && shown.contains("mph"), "{shown}");
+    // Back to SI: 100 mph and two nudges of 1 mph are 45.59808 m/s.
+    key(&mut app, KeyCode::Char('u'));
+    assert!(screen(&app).contains("45.5981 m/s"));
+}
+
+#[test]
+fn a_unit_switch_keeps_the_optimum_and_recomputes_only_the_deltas() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let (optimum, surface) = (app.optimum, app.surface.clone().unwrap());
+    let k = input_index("bat.speed");
+    let si_gain = app.swing_gains[k].unwrap().value.unwrap();
+    key(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.optimum, optimum);
+    assert!(app.surface_fresh());
+    let job = app.take_job().unwrap();
+    let mut reports = Vec::new();
+    run_job(&job, &|| false, &mut |r| reports.push(r));
+    assert!(
+        reports
+            .iter()
+            .all(|r| matches!(r, Report::Sensitivity { .. }))
+    );
+    for report in reports {
+        app.apply(report);
+    }
+    assert!(!app.busy());
+    assert_eq!(app.surface.as_ref().unwrap().surface, surface.surface);
+    // 1 mph of bat speed (0.447 m/s) gains less than 0.5 m/s did.
+    let gain = app.swing_gains[k].unwrap().value.unwrap();
+    assert!(gain > 0.0 && gain < si_gain, "{gain} vs {si_gain}");
 }

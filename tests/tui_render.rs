@@ -175,3 +175,23 @@ fn a_surface_with_balls_that_do_not_land() {
     assert!(screen.contains("░░░░"), "hatched cells: {screen}");
     insta::assert_snapshot!("surface_not_landing_80x24", screen);
 }
+
+#[test]
+fn batted_ball_scene() {
+    // The fly-ball preset: launch, ball, air and models; the flight and its
+    // landing; no impact, optimum or surface.
+    for (w, h) in [(80, 24), (200, 60)] {
+        let mut app = app_on("fly-ball", w, h, None);
+        settle(&mut app);
+        insta::assert_snapshot!(format!("batted_{w}x{h}"), screen(&app));
+    }
+}
+
+#[test]
+fn baseball_units() {
+    // `u`: every value, its unit and Δ in mph, ft, in, °, rpm, oz, °F, inHg.
+    let mut app = app(80, 24, None);
+    key(&mut app, KeyCode::Char('u'));
+    settle(&mut app);
+    insta::assert_snapshot!("imperial_80x24", screen(&app));
+}

@@ -6,25 +6,48 @@
 use super::optimum::{Optimizer, OptimizerSettings, Point};
 use super::precision::Purpose;
 use crate::model::keys::{InputError, Key};
+use crate::model::launch::fly_scene;
 use crate::model::scene::Scene;
-use crate::model::simulate;
+use crate::units::UnitSystem;
 
 /// `scene` with `key` moved by `scale` of its step, snapped to a thousandth
 /// of the step (so that repeated nudges do not accumulate rounding noise in
 /// the display), or why that scene is refused.
 pub fn nudge(scene: &Scene, key: &Key, scale: f64) -> Result<Scene, InputError> {
+    nudge_in(scene, key, scale, UnitSystem::Si)
+}
+
+/// [`nudge`] as a person sees it in `system`: outside SI the step is the
+/// key's step in the shown unit rounded to 1, 2 or 5 (`Unit::nice_step`:
+/// 1 mph, 100 rpm, 0.5°). A converted value is rarely on that step's grid,
+/// so the snap there only removes the conversion's rounding noise, and each
+/// nudge moves by the shown step exactly.
+pub fn nudge_in(
+    scene: &Scene,
+    key: &Key,
+    scale: f64,
+    system: UnitSystem,
+) -> Result<Scene, InputError> {
     let mut nudged = *scene;
-    let value = (key.get)(scene) + scale * key.step;
-    let quantum = key.step * 1e-3;
-    (key.set)(&mut nudged, (value / quantum).round() * quantum);
+    let unit = key.unit_in(system);
+    if unit.is_identity() {
+        let value = (key.get)(scene) + scale * key.step;
+        let quantum = key.step * 1e-3;
+        (key.set)(&mut nudged, (value / quantum).round() * quantum);
+    } else {
+        let step = unit.nice_step(key.step);
+        let shown = unit.show((key.get)(scene)) + scale * step;
+        let quantum = step * 1e-9;
+        (key.set)(&mut nudged, unit.read((shown / quantum).round() * quantum));
+    }
     nudged.validate()?;
     Ok(nudged)
 }
 
-/// The range (m) of a scene's own swing at the readout's precision, if the
-/// ball lands.
+/// The range (m) of a scene's own flight (a swing's or a batted ball's) at
+/// the readout's precision, if the ball lands.
 fn landed_range(scene: &Scene) -> Option<f64> {
-    let flight = simulate(scene, Purpose::Readout).flight;
+    let flight = fly_scene(scene, Purpose::Readout).flight;
     (flight.landed && flight.range.is_finite()).then_some(flight.range)
 }
 
@@ -32,7 +55,12 @@ fn landed_range(scene: &Scene) -> Option<f64> {
 /// impact and one flight at the readout's precision (~0.1 ms). `None` when
 /// the nudge is refused or either ball does not land.
 pub fn range_gain(scene: &Scene, key: &Key, range: f64) -> Option<f64> {
-    let nudged = nudge(scene, key, 1.0).ok()?;
+    range_gain_in(scene, key, range, UnitSystem::Si)
+}
+
+/// [`range_gain`] for the nudge shown in `system` ([`nudge_in`]).
+pub fn range_gain_in(scene: &Scene, key: &Key, range: f64, system: UnitSystem) -> Option<f64> {
+    let nudged = nudge_in(scene, key, 1.0, system).ok()?;
     Some(landed_range(&nudged)? - range).filter(|_| range.is_finite())
 }
 
@@ -53,10 +81,21 @@ pub fn optimum_gain(
     optimum: Point,
     cancelled: &dyn Fn() -> bool,
 ) -> Option<f64> {
+    optimum_gain_in(scene, key, optimum, UnitSystem::Si, cancelled)
+}
+
+/// [`optimum_gain`] for the nudge shown in `system` ([`nudge_in`]).
+pub fn optimum_gain_in(
+    scene: &Scene,
+    key: &Key,
+    optimum: Point,
+    system: UnitSystem,
+    cancelled: &dyn Fn() -> bool,
+) -> Option<f64> {
     if !moves_optimum(key) || !optimum.range.is_finite() {
         return None;
     }
-    let nudged = nudge(scene, key, 1.0).ok()?;
+    let nudged = nudge_in(scene, key, 1.0, system).ok()?;
     let mut optimizer = Optimizer::new(
         &nudged,
         (optimum.undercut, optimum.swing_angle),

@@ -12,24 +12,25 @@ mod figures;
 mod mouse;
 mod presets;
 
-use super::format::format_value;
+use super::format::{error_text, read_value, shown_value};
+pub use super::inputs::{input_count, input_key, scene_inputs};
 use super::keymap::{self, Action};
 use super::layout::{Tab, heatmap_resolution, shows_optimum_gains, trajectory_samples};
 use super::theme::ColorMode;
-use super::worker::{FigureJob, Gain, Job, Report};
+use super::worker::{FigureJob, Gain, Job, Report, Work};
 use crate::analysis::optimum::{Point, Status};
 use crate::analysis::precision::Purpose;
 use crate::analysis::sensitivity;
 use crate::analysis::study::{Grid, Surface};
 use crate::model::aero::{DragModel, LiftModel};
 use crate::model::flight;
-use crate::model::impact::Impact;
-use crate::model::keys::{DRAG_KEY, EXTENDED_KEYS, KEYS, Key, LIFT_KEY};
+use crate::model::keys::{DRAG_KEY, LIFT_KEY};
+use crate::model::launch::{Flown, SceneKind, fly_scene, height_at_distance, scene_start};
 use crate::model::scene::Scene;
 use crate::preset::{self, Fence, Preset};
-use crate::{Swing, simulate};
+use crate::units::{Quantity, Unit, UnitSystem};
 use figures::FigureInputs;
-pub use figures::{FIGURES, FigureState};
+pub use figures::{AERO_FIGURES, FIGURES, FigureState};
 
 /// One row of the inputs pane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -37,24 +38,12 @@ pub enum Field {
     /// The preset's name: Enter opens the picker.
     Preset,
     /// A numeric input: an index into `all_keys()` ([`KEYS`], then
-    /// [`EXTENDED_KEYS`]; see [`input_key`]).
+    /// [`EXTENDED_KEYS`], then [`LAUNCH_KEYS`]; see [`input_key`]).
     Key(usize),
     /// The drag model.
     Drag,
     /// The lift model.
     Lift,
-}
-
-/// The numeric input `k`: [`KEYS`], then [`EXTENDED_KEYS`], as `all_keys()`
-/// and the worker's sensitivities count them.
-pub fn input_key(k: usize) -> &'static Key {
-    KEYS.get(k)
-        .unwrap_or_else(|| &EXTENDED_KEYS[k - KEYS.len()])
-}
-
-/// How many numeric inputs there are.
-pub fn input_count() -> usize {
-    KEYS.len() + EXTENDED_KEYS.len()
 }
 
 impl Field {
@@ -68,11 +57,12 @@ impl Field {
     }
 }
 
-/// Every row of the inputs pane, top to bottom: each group once (the
-/// weather after the paper's environment keys, the models last).
-pub fn fields() -> Vec<Field> {
+/// Every row of the inputs pane for a scene of `kind`, top to bottom: each
+/// group once (the weather after the paper's environment keys, the models
+/// last).
+pub fn fields(kind: SceneKind) -> Vec<Field> {
     let mut all = vec![Field::Preset];
-    all.extend((0..input_count()).map(Field::Key));
+    all.extend(scene_inputs(kind).into_iter().map(Field::Key));
     all.extend([Field::Drag, Field::Lift]);
     let mut groups: Vec<&str> = Vec::new();
     for field in &all {
@@ -106,11 +96,14 @@ pub struct PickItem {
 #[derive(Debug)]
 pub enum Mode {
     Normal,
-    /// Typing a value for `field`; `error` says why the last Enter was refused.
+    /// Typing a value for `field` (in the unit shown); `error` says why the
+    /// last Enter was refused. `initial` is the text it started from: Enter
+    /// on it unchanged keeps the value as it was, not as rounded for show.
     Edit {
         field: Field,
         text: TextArea<'static>,
         error: Option<String>,
+        initial: String,
     },
     /// Typing a name to save the inputs under. `overwrite` is the bundled
     /// name the user was warned about: Enter on it again saves anyway.
@@ -148,12 +141,13 @@ pub struct SurfaceState {
     pub generation: u64,
 }
 
-/// A scene kept for comparison (key `p`): it stays while the inputs change.
+/// A scene kept for comparison (key `p`): it stays while the inputs change,
+/// and across the switch between a swing and a batted ball.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pin {
     pub scene: Scene,
-    /// Its swing at the readout's precision.
-    pub swing: Swing,
+    /// Its launch and flight at the readout's precision.
+    pub flown: Flown,
     /// Its path, sampled at the plot's resolution.
     pub path: Vec<(f64, f64)>,
 }
@@ -174,9 +168,12 @@ pub struct App {
     pub message: Option<(String, bool)>,
     pub color: ColorMode,
     pub size: Rect,
-    /// The current swing at the readout's precision.
-    pub swing: Swing,
-    /// The current swing's path, sampled at the plot's resolution.
+    /// The current scene's launch, impact (a swing's) and flight at the
+    /// readout's precision.
+    pub flown: Flown,
+    /// The ball's height (m) where it passes the fence, if it gets there.
+    pub fence_height: Option<f64>,
+    /// The current flight's path, sampled at the plot's resolution.
     pub path: Vec<(f64, f64)>,
     pub optimum: Option<OptimumState>,
     /// The optimal swing's path, once the optimiser has converged.
@@ -201,8 +198,9 @@ pub struct App {
     pub figure_generation: u64,
     figure_for: Option<FigureInputs>,
     figure_job: Option<FigureJob>,
-    /// Show distances in feet instead of metres (display only).
-    pub feet: bool,
+    /// The units every quantity is shown and typed in (key `u`); the scene
+    /// stays SI.
+    pub units: UnitSystem,
     pub quit: bool,
     /// Something changed since the last frame.
     pub dirty: bool,
@@ -210,26 +208,33 @@ pub struct App {
     job: Option<Job>,
 }
 
-/// Metres per foot.
-pub const FOOT: f64 = 0.3048;
-
 impl App {
-    /// A distance in the chosen unit: (value, unit).
+    /// A distance in the units shown: (value, unit).
     pub fn distance(&self, metres: f64) -> (f64, &'static str) {
-        if self.feet {
-            (metres / FOOT, "ft")
-        } else {
-            (metres, "m")
-        }
+        let unit = self.unit(Quantity::Distance);
+        (unit.show(metres), unit.symbol)
+    }
+
+    /// The unit a quantity is shown in.
+    pub fn unit(&self, quantity: Quantity) -> Unit {
+        quantity.in_system(self.units)
+    }
+
+    /// Whether the swing scene is shown (pitch, bat, impact, optimum,
+    /// surface) rather than a batted ball on its own.
+    pub fn is_swing(&self) -> bool {
+        self.scene.kind == SceneKind::Swing
+    }
+
+    /// How many sensitivities the scene shown has: one per numeric input.
+    pub fn gain_count(&self) -> usize {
+        scene_inputs(self.scene.kind).len()
     }
 
     pub fn new(preset: Preset, presets_dir: Option<PathBuf>, color: ColorMode, size: Rect) -> App {
-        let swing = simulate(&preset.scene, Purpose::Readout);
-        let fields = fields();
-        let selected = fields
-            .iter()
-            .position(|f| matches!(f, Field::Key(k) if input_key(*k).name == "bat.speed"))
-            .unwrap_or(0);
+        let flown = fly_scene(&preset.scene, Purpose::Readout);
+        let fields = fields(preset.scene.kind);
+        let selected = first_input(&fields, preset.scene.kind);
         let mut app = App {
             preset_name: preset.name,
             description: preset.description,
@@ -243,7 +248,8 @@ impl App {
             message: None,
             color,
             size,
-            swing,
+            flown,
+            fence_height: None,
             path: Vec::new(),
             optimum: None,
             optimal_path: Vec::new(),
@@ -259,12 +265,13 @@ impl App {
             figure_generation: 0,
             figure_for: None,
             figure_job: None,
-            feet: false,
+            units: UnitSystem::Si,
             quit: false,
             dirty: true,
             inputs_changed: true,
             job: None,
         };
+        app.fit_figure();
         app.flush();
         app
     }
@@ -275,17 +282,24 @@ impl App {
     }
 
     /// Whether background work for the current inputs is still under way.
+    /// A batted ball has no optimum, surface nor Δopt to wait for.
     pub fn busy(&self) -> bool {
-        !(self.optimum.is_some_and(|o| o.done)
-            && self.surface_fresh()
-            && self.figure_fresh()
-            && self.optimum_gains_fresh())
+        let swing_work = !self.is_swing()
+            || (self.optimum.is_some_and(|o| o.done)
+                && self.surface_fresh()
+                && self.optimum_gains_fresh());
+        !(swing_work && self.gains_done(Gain::Swing) == self.gain_count() && self.figure_fresh())
     }
 
     /// Whether Δopt is current, or not wanted: it is computed only where
-    /// the inputs pane shows it.
+    /// the inputs pane shows it, and only for a swing.
     pub fn optimum_gains_fresh(&self) -> bool {
-        !shows_optimum_gains(self.size) || self.gains_done(Gain::Optimum) == input_count()
+        !self.wants_optimum_gains() || self.gains_done(Gain::Optimum) == self.gain_count()
+    }
+
+    /// Whether Δopt is computed: a swing's, where the pane has its column.
+    pub fn wants_optimum_gains(&self) -> bool {
+        self.is_swing() && shows_optimum_gains(self.size)
     }
 
     /// The sensitivities of one kind.
@@ -324,7 +338,10 @@ impl App {
         }
         self.inputs_changed = false;
         self.dirty = true;
-        self.swing = simulate(&self.scene, Purpose::Readout);
+        self.flown = fly_scene(&self.scene, Purpose::Readout);
+        self.fence_height = self
+            .fence
+            .and_then(|fence| height_at_distance(&self.scene, fence.distance, Purpose::Readout).1);
         self.path = self.plot_path(&self.scene);
         // The pin's scene stays; its path follows the plot's resolution.
         if let Some(pin) = self.pin.take() {
@@ -333,30 +350,65 @@ impl App {
                 ..pin
             });
         }
-        let stops = self.swing.impact.stops().len();
-        self.impact_stop = self.impact_stop.min(stops - 1);
+        if let Some(impact) = &self.flown.impact {
+            self.impact_stop = self.impact_stop.min(impact.stops().len() - 1);
+        }
         self.generation += 1;
         // A stale optimum is never shown; the old surface stays, marked
         // stale, until the new one is at least as fine (see `apply`).
         self.optimum = None;
         self.optimal_path.clear();
+        self.job = Some(self.job_for(Work::Everything));
+    }
+
+    /// The background work for the current inputs.
+    fn job_for(&self, work: Work) -> Job {
         let start = self
             .warm_start
             .unwrap_or((self.scene.bat.undercut, self.scene.bat.swing_angle));
-        self.job = Some(Job {
+        Job {
             generation: self.generation,
             scene: self.scene,
             start,
             window: Grid::explorer_window(),
             resolution: heatmap_resolution(self.size),
-            optimum_gains: shows_optimum_gains(self.size),
-        });
+            optimum_gains: self.wants_optimum_gains(),
+            units: self.units,
+            work,
+        }
+    }
+
+    /// Key `u`: every quantity shown in the other units. Nothing physical
+    /// changes, but a nudge now moves by the shown unit's step, so the Δ
+    /// columns are recomputed; the optimum and surface stay when they are
+    /// complete (else everything is, as after an input's change).
+    fn toggle_units(&mut self) {
+        self.units = self.units.toggled();
+        self.message = Some((
+            match self.units {
+                UnitSystem::Si => "SI units: m, m/s, rad, rad/s, kg, °C, hPa (u: baseball's)",
+                UnitSystem::Imperial => "baseball units: ft, in, mph, °, rpm, oz, °F, inHg (u: SI)",
+            }
+            .into(),
+            false,
+        ));
+        let done = self.optimum.filter(|o| o.done);
+        if self.is_swing() && !(done.is_some() && self.surface_fresh()) {
+            self.inputs_changed = true;
+            return;
+        }
+        self.generation += 1;
+        if let Some(surface) = &mut self.surface {
+            surface.generation = self.generation;
+        }
+        self.job = Some(self.job_for(Work::Gains {
+            optimum: done.map(|o| o.best),
+        }));
     }
 
     fn plot_path(&self, scene: &Scene) -> Vec<(f64, f64)> {
         let samples = trajectory_samples(self.size);
-        let impact = Impact::new(scene);
-        let (flight, launch) = crate::model::launch(scene, &impact);
+        let (flight, launch, _, _) = scene_start(scene);
         let (_, points) =
             flight::trajectory(&flight, &launch, &Purpose::Plot.flight_options(), samples);
         points.iter().map(|p| (p.x, p.y)).collect()
@@ -462,7 +514,12 @@ impl App {
                 }
             }
             Mode::Help => {}
-            Mode::Edit { field, text, error } => self.edit_key(key, action, field, text, error),
+            Mode::Edit {
+                field,
+                text,
+                error,
+                initial,
+            } => self.edit_key(key, action, field, text, (error, initial)),
             Mode::Save {
                 text,
                 error,
@@ -499,11 +556,12 @@ impl App {
             }
             Action::Open => self.open_picker(),
             Action::ToOptimum => self.reset_to_optimum(),
-            Action::Units => self.feet = !self.feet,
+            Action::Units => self.toggle_units(),
+            Action::Scene => self.switch_scene(),
             Action::Pin => {
                 self.pin = Some(Pin {
                     scene: self.scene,
-                    swing: self.swing,
+                    flown: self.flown,
                     path: self.path.clone(),
                 });
                 self.message = Some((
@@ -524,8 +582,10 @@ impl App {
             }
             Action::ShowTab(tab) => self.tab = tab,
             Action::NextStop => {
-                let last = self.swing.impact.stops().len() - 1;
-                self.impact_stop = (self.impact_stop + 1).min(last);
+                if let Some(impact) = &self.flown.impact {
+                    let last = impact.stops().len() - 1;
+                    self.impact_stop = (self.impact_stop + 1).min(last);
+                }
             }
             Action::PreviousStop => self.impact_stop = self.impact_stop.saturating_sub(1),
             Action::Export => self.export(),
@@ -556,14 +616,16 @@ impl App {
             }
             // The same nudge as the sensitivity column's, so that its number
             // says what this key does.
-            Field::Key(k) => match sensitivity::nudge(&self.scene, input_key(k), scale) {
-                Ok(scene) => {
-                    self.scene = scene;
-                    self.inputs_changed = true;
-                    self.message = None;
+            Field::Key(k) => {
+                match sensitivity::nudge_in(&self.scene, input_key(k), scale, self.units) {
+                    Ok(scene) => {
+                        self.scene = scene;
+                        self.inputs_changed = true;
+                        self.message = None;
+                    }
+                    Err(error) => self.message = Some((error_text(&error, self.units), true)),
                 }
-                Err(error) => self.message = Some((error.to_string(), true)),
-            },
+            }
         }
     }
 
@@ -573,12 +635,13 @@ impl App {
             Field::Preset => return self.open_picker(),
             Field::Drag => self.scene.drag.name().to_owned(),
             Field::Lift => self.scene.lift.name().to_owned(),
-            Field::Key(k) => format_value(input_key(k), (input_key(k).get)(&self.scene)),
+            Field::Key(k) => shown_value(input_key(k), (input_key(k).get)(&self.scene), self.units),
         };
         self.mode = Mode::Edit {
             field,
-            text: prefilled(current),
+            text: prefilled(current.clone()),
             error: None,
+            initial: current,
         };
     }
 
@@ -588,20 +651,26 @@ impl App {
         action: Option<Action>,
         field: Field,
         mut text: TextArea<'static>,
-        error: Option<String>,
+        (error, initial): (Option<String>, String),
     ) {
         match action {
             Some(Action::Close) => {}
+            // The value as it was, not as rounded for show.
+            Some(Action::Confirm) if text.lines().join("") == initial => {}
             Some(Action::Confirm) => {
                 let typed = text.lines().join("");
-                let name = match field {
-                    Field::Key(k) => input_key(k).name,
-                    Field::Drag => DRAG_KEY,
-                    Field::Lift => LIFT_KEY,
+                let mut scene = self.scene;
+                let set = match field {
+                    // In the unit shown; the scene stays SI.
+                    Field::Key(k) => {
+                        let key = input_key(k);
+                        read_value(key, &typed, self.units).map(|v| (key.set)(&mut scene, v))
+                    }
+                    Field::Drag => scene.set_text(DRAG_KEY, &typed),
+                    Field::Lift => scene.set_text(LIFT_KEY, &typed),
                     Field::Preset => return,
                 };
-                let mut scene = self.scene;
-                match scene.set_text(name, &typed).and_then(|()| scene.validate()) {
+                match set.and_then(|()| scene.validate()) {
                     Ok(()) => {
                         self.scene = scene;
                         self.inputs_changed = true;
@@ -611,14 +680,20 @@ impl App {
                         self.mode = Mode::Edit {
                             field,
                             text,
-                            error: Some(e.to_string()),
+                            error: Some(error_text(&e, self.units)),
+                            initial,
                         }
                     }
                 }
             }
             _ => {
                 text.input(key);
-                self.mode = Mode::Edit { field, text, error };
+                self.mode = Mode::Edit {
+                    field,
+                    text,
+                    error,
+                    initial,
+                };
             }
         }
     }
@@ -628,14 +703,57 @@ impl App {
         self.message = Some((format!("loaded {}", preset.name), false));
         self.preset_name = preset.name;
         self.description = preset.description;
-        self.scene = preset.scene;
+        self.set_scene(preset.scene);
         self.fence = preset.fence;
-        self.inputs_changed = true;
         self.dirty = true;
+    }
+
+    /// Replaces the scene, and the inputs pane's rows with its kind's,
+    /// keeping the selected row where the new scene has it.
+    fn set_scene(&mut self, scene: Scene) {
+        let kind_changed = scene.kind != self.scene.kind;
+        self.scene = scene;
+        self.inputs_changed = true;
+        if kind_changed {
+            let selected = self.fields[self.selected];
+            self.fields = fields(scene.kind);
+            self.selected = self
+                .fields
+                .iter()
+                .position(|f| *f == selected)
+                .unwrap_or_else(|| first_input(&self.fields, scene.kind));
+            // The old scene's results are of another kind: drop them now.
+            self.optimum = None;
+            self.optimal_path.clear();
+            self.fit_figure();
+        }
+    }
+
+    /// Key `b`: from a swing to the batted ball it launches (the same
+    /// launch, so the same flight), or back to the swing as it was (the
+    /// ball, air and models as now).
+    fn switch_scene(&mut self) {
+        let (scene, message) = if self.is_swing() {
+            (
+                self.scene.with_launch(self.flown.launch),
+                "batted-ball scene: this swing's launch, flown on its own (b: back to the swing)",
+            )
+        } else {
+            (
+                self.scene.as_swing(),
+                "swing scene: pitch, bat, impact, optimum and surface (b: the batted ball)",
+            )
+        };
+        self.set_scene(scene);
+        self.message = Some((message.into(), false));
     }
 
     /// Moves the swing to the optimum found (key `r`).
     fn reset_to_optimum(&mut self) {
+        if !self.is_swing() {
+            self.message = Some((SWING_ONLY.into(), true));
+            return;
+        }
         if let Some(o) = self.optimum.filter(|o| o.done) {
             if o.best.range.is_finite() {
                 self.scene = self.scene.with_swing(o.best.undercut, o.best.swing_angle);
@@ -647,6 +765,23 @@ impl App {
             self.message = Some(("no optimum yet for these inputs".into(), true));
         }
     }
+}
+
+/// What the swing scene's views say in the batted-ball scene.
+pub const SWING_ONLY: &str =
+    "the optimum, the range surface and the impact belong to the swing scene: b switches to it";
+
+/// The row selected when a scene of `kind` opens: the input that matters
+/// most (the bat's speed, the launch speed).
+fn first_input(fields: &[Field], kind: SceneKind) -> usize {
+    let name = match kind {
+        SceneKind::Swing => "bat.speed",
+        SceneKind::BattedBall => "launch.speed",
+    };
+    fields
+        .iter()
+        .position(|f| matches!(f, Field::Key(k) if input_key(*k).name == name))
+        .unwrap_or(0)
 }
 
 /// The choice `by` places after `current` in `all`, going round.

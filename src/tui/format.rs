@@ -1,17 +1,165 @@
 //! Numbers as the explorer writes them: the inputs pane shows a value this
-//! way, and an edit starts from the same text.
+//! way, in the units chosen (`u`), and an edit starts from the same text and
+//! is read back in the same unit. Values stay SI inside; only text passes
+//! through here.
 
-use crate::model::keys::Key;
+use crate::model::keys::{InputError, Key, number_text};
+use crate::units::{Quantity, Unit, UnitSystem};
 
-/// A value as the inputs pane shows it: enough digits for a thousandth of
-/// the key's step, trailing zeros trimmed.
+/// A value as the inputs pane shows it in SI: enough digits for a thousandth
+/// of the key's step, trailing zeros trimmed.
 pub fn format_value(key: &Key, value: f64) -> String {
-    let decimals = ((-key.step.log10()).ceil() as i32 + 3).clamp(0, 12) as usize;
-    let text = format!("{value:.decimals$}");
+    shown_value(key, value, UnitSystem::Si)
+}
+
+/// The key's nudge step in the unit shown: its own in SI, else rounded to
+/// 1, 2 or 5 in the shown unit (1 mph, 100 rpm, 0.5°), as
+/// `sensitivity::nudge_in` nudges.
+pub fn shown_step(key: &Key, system: UnitSystem) -> f64 {
+    let unit = key.unit_in(system);
+    if unit.is_identity() {
+        key.step
+    } else {
+        unit.nice_step(key.step)
+    }
+}
+
+/// An SI value of `key` as shown in `system`: in its unit there, to a
+/// thousandth of the shown step.
+pub fn shown_value(key: &Key, si: f64, system: UnitSystem) -> String {
+    number(key.unit_in(system).show(si), shown_step(key, system))
+}
+
+/// `value` to a thousandth of `step`, trailing zeros trimmed.
+fn number(value: f64, step: f64) -> String {
+    let decimals = ((-step.log10()).ceil() as i32 + 3).clamp(0, 12) as usize;
+    trim(format!("{value:.decimals$}"))
+}
+
+/// A number's text without trailing zeros (nor a lone point, nor "-0").
+fn trim(text: String) -> String {
     let text = if text.contains('.') {
         text.trim_end_matches('0').trim_end_matches('.').to_owned()
     } else {
         text
     };
     if text == "-0" { "0".to_owned() } else { text }
+}
+
+/// A typed value of `key` in the unit shown, back in SI, or why it is not
+/// a number.
+pub fn read_value(key: &Key, text: &str, system: UnitSystem) -> Result<f64, InputError> {
+    let shown: f64 = text.trim().parse().map_err(|_| InputError::NotANumber {
+        key: key.name.to_owned(),
+        text: text.to_owned(),
+    })?;
+    Ok(key.unit_in(system).read(shown))
+}
+
+/// A bound in the unit shown, to five significant digits (90, 223.69).
+fn bound_text(unit: Unit, si: f64) -> String {
+    let shown = unit.show(si);
+    if shown == 0.0 {
+        return "0".to_owned();
+    }
+    let decimals = (4 - shown.abs().log10().floor() as i32).clamp(0, 12) as usize;
+    trim(format!("{shown:.decimals$}"))
+}
+
+/// A key's accepted range in the unit shown, with the unit: "(0, 100] m/s",
+/// "(0, 223.69] mph", "(-90, 90) °".
+pub fn shown_bounds(key: &Key, system: UnitSystem) -> String {
+    let unit = key.unit_in(system);
+    let bounds = key.bounds;
+    let range = if unit.is_identity() {
+        // The table's own text, with its π/2.
+        bounds.to_string()
+    } else {
+        let open = if bounds.min_exclusive { '(' } else { '[' };
+        let close = if bounds.max_exclusive { ')' } else { ']' };
+        format!(
+            "{open}{}, {}{close}",
+            bound_text(unit, bounds.min),
+            bound_text(unit, bounds.max)
+        )
+    };
+    if unit.symbol.is_empty() {
+        range
+    } else {
+        format!("{range} {}", unit.symbol)
+    }
+}
+
+/// Why a value was refused, in the units shown: a range error on a key
+/// names the value and its accepted range in the key's shown unit
+/// ("pitch.speed = 300 mph: must be a finite number in (0, 223.69] mph");
+/// a miss, in the undercut's. Other relations between inputs keep the
+/// library's SI text.
+pub fn error_text(error: &InputError, system: UnitSystem) -> String {
+    if system == UnitSystem::Si {
+        return error.to_string();
+    }
+    match error {
+        InputError::OutOfRange { key, value, .. } => {
+            let Ok(key) = crate::model::scene::Scene::key(key) else {
+                return error.to_string();
+            };
+            let unit = key.unit_in(system);
+            if unit.is_identity() {
+                return error.to_string();
+            }
+            format!(
+                "{} = {} {}: must be a finite number in {}",
+                key.name,
+                shown_value(key, *value, system),
+                unit.symbol,
+                shown_bounds(key, system)
+            )
+        }
+        InputError::Miss { value, limit } => {
+            let unit = Quantity::Size.in_system(system);
+            format!(
+                "bat.undercut = {} {}: the bat misses the ball; |E| must be below r_b + r_B = {} {}",
+                number_text((unit.show(*value) * 1e4).round() / 1e4),
+                unit.symbol,
+                number_text((unit.show(*limit) * 1e4).round() / 1e4),
+                unit.symbol
+            )
+        }
+        _ => error.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::scene::Scene;
+
+    #[test]
+    fn imperial_values_steps_and_errors_are_in_the_shown_unit() {
+        let imperial = UnitSystem::Imperial;
+        let speed = Scene::key("pitch.speed").unwrap();
+        // 42 m/s is 93.951 mph; the step is 1 mph.
+        assert_eq!(shown_step(speed, imperial), 1.0);
+        assert_eq!(shown_value(speed, 42.0, imperial), "93.951");
+        assert!((read_value(speed, "100", imperial).unwrap() - 44.704).abs() < 1e-12);
+        let mut scene = Scene::default();
+        scene.pitch.speed = read_value(speed, "300", imperial).unwrap();
+        let error = scene.validate().unwrap_err();
+        assert_eq!(
+            error_text(&error, imperial),
+            "pitch.speed = 300 mph: must be a finite number in (0, 223.69] mph"
+        );
+        // An angle's bound, π/2, is 90°.
+        let angle = Scene::key("launch.angle").unwrap();
+        let mut scene = Scene::default();
+        (angle.set)(&mut scene, read_value(angle, "95", imperial).unwrap());
+        let error = scene.validate().unwrap_err();
+        assert_eq!(
+            error_text(&error, imperial),
+            "launch.angle = 95 °: must be a finite number in (-90, 90) °"
+        );
+        // SI keeps the library's text.
+        assert_eq!(error_text(&error, UnitSystem::Si), error.to_string());
+    }
 }

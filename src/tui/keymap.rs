@@ -49,6 +49,8 @@ pub enum Action {
     Close,
     ToOptimum,
     Units,
+    /// Switch between the swing scene and the batted-ball scene.
+    Scene,
     /// Keep the current scene to compare with.
     Pin,
     Unpin,
@@ -213,10 +215,17 @@ pub const KEYMAP: &[Row] = &[
         "first / last input",
     ),
     row(
+        &[ch('b', Scene)],
+        "swing scene / batted-ball scene (the same launch)",
+    ),
+    row(
         &[ch('r', ToOptimum)],
         "move the swing (E, ψ) to the optimum",
     ),
-    row(&[ch('u', Units)], "distances in metres / feet"),
+    row(
+        &[ch('u', Units)],
+        "all units: SI / baseball (mph, ft, in, rpm…)",
+    ),
     row(
         &[ch('p', Pin), ch('P', Unpin)],
         "pin the scene to compare with / clear the pin",
@@ -245,8 +254,10 @@ pub const KEYMAP: &[Row] = &[
         ],
         "step the impact through its phases",
     ),
-    row(&[ch('s', Save)], "save the inputs as a preset"),
-    row(&[ch('o', Open)], "open a preset (bundled or saved)"),
+    row(
+        &[ch('s', Save), ch('o', Open)],
+        "save the inputs as a preset / open one",
+    ),
     row(
         &[ch('x', Export)],
         "write the chart in view to ./homerun-*-N.svg",
@@ -384,14 +395,14 @@ mod tests {
                 "[ ]  Alt+← →",
                 "Enter  e",
                 "g G",
+                "b",
                 "r",
                 "u",
                 "p P",
                 "Tab  1 2 3 4",
                 "f F",
                 ", .",
-                "s",
-                "o",
+                "s o",
                 "x",
                 "Esc",
                 "?",

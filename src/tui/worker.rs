@@ -21,8 +21,10 @@ use crate::analysis::optimum::{Optimizer, OptimizerSettings, Point, Status};
 use crate::analysis::precision::Purpose;
 use crate::analysis::sensitivity;
 use crate::analysis::study::{self, Grid, Surface};
-use crate::model::keys::swing_keys;
+use crate::model::launch::{SceneKind, fly_scene};
 use crate::model::scene::Scene;
+use crate::tui::inputs::{input_key, scene_inputs};
+use crate::units::UnitSystem;
 
 /// What the UI wants computed for one set of inputs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,6 +40,21 @@ pub struct Job {
     pub resolution: (usize, usize),
     /// Whether to compute Δopt: only where the inputs pane shows it.
     pub optimum_gains: bool,
+    /// The units shown: a nudge, and so the Δ columns, moves by the shown
+    /// unit's step.
+    pub units: UnitSystem,
+    pub work: Work,
+}
+
+/// How much of a job to do. A batted ball gets only its Δ column, whatever
+/// is asked: it has no optimum, surface or Δopt.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Work {
+    /// The surface, the optimum, Δ and Δopt.
+    Everything,
+    /// Only Δ and Δopt, for the optimum found already (the units changed,
+    /// the inputs did not).
+    Gains { optimum: Option<Point> },
 }
 
 /// A result, tagged with the generation it was computed for.
@@ -59,7 +76,8 @@ pub enum Report {
         last: bool,
     },
     /// The range gained (m) by one step up of input `key` (an index into
-    /// `swing_keys()`), at the current swing or at the optimum; `None` where
+    /// `all_keys()`, see `app::input_key`), at the current swing or at the
+    /// optimum; `None` where
     /// the nudge is refused, the ball does not land, or (at the optimum) the
     /// key is the swing itself.
     Sensitivity {
@@ -147,6 +165,17 @@ const PROGRESS_EVERY: u32 = 8;
 /// the sensitivities never delay the surface or the optimum. The same
 /// function runs on the worker thread and, synchronously, in the tests.
 pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dyn FnMut(Report)) {
+    if job.scene.kind == SceneKind::BattedBall {
+        report_range_gains(job, cancelled, report);
+        return;
+    }
+    if let Work::Gains { optimum } = job.work {
+        report_range_gains(job, cancelled, report);
+        if let Some(optimum) = optimum {
+            report_optimum_gains(job, optimum, cancelled, report);
+        }
+        return;
+    }
     let surface = |columns: usize, rows: usize| {
         let grid = Grid {
             columns,
@@ -195,18 +224,8 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
     }
     let optimum = optimizer.best();
 
-    let range = crate::model::simulate(&job.scene, Purpose::Readout).flight;
-    let range = if range.landed { range.range } else { f64::NAN };
-    for (k, key) in swing_keys().enumerate() {
-        if cancelled() {
-            return;
-        }
-        report(Report::Sensitivity {
-            generation: job.generation,
-            gain: Gain::Swing,
-            key: k,
-            value: sensitivity::range_gain(&job.scene, key, range),
-        });
+    if !report_range_gains(job, cancelled, report) {
+        return;
     }
 
     let mut levels = vec![(32.min(columns), 16.min(rows))];
@@ -228,11 +247,50 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
         });
     }
 
+    report_optimum_gains(job, optimum, cancelled, report);
+}
+
+/// The range gained by one nudge of each input the scene shows, at the
+/// current swing (or batted ball); false if cancelled.
+fn report_range_gains(
+    job: &Job,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    report: &mut dyn FnMut(Report),
+) -> bool {
+    let flight = fly_scene(&job.scene, Purpose::Readout).flight;
+    let range = if flight.landed {
+        flight.range
+    } else {
+        f64::NAN
+    };
+    for k in scene_inputs(job.scene.kind) {
+        if cancelled() {
+            return false;
+        }
+        report(Report::Sensitivity {
+            generation: job.generation,
+            gain: Gain::Swing,
+            key: k,
+            value: sensitivity::range_gain_in(&job.scene, input_key(k), range, job.units),
+        });
+    }
+    true
+}
+
+/// The optimal range gained by one nudge of each input, where the pane
+/// shows that column.
+fn report_optimum_gains(
+    job: &Job,
+    optimum: Point,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    report: &mut dyn FnMut(Report),
+) {
     if !job.optimum_gains {
         return;
     }
-    for (k, key) in swing_keys().enumerate() {
-        let value = sensitivity::optimum_gain(&job.scene, key, optimum, cancelled);
+    for k in scene_inputs(job.scene.kind) {
+        let key = input_key(k);
+        let value = sensitivity::optimum_gain_in(&job.scene, key, optimum, job.units, cancelled);
         if cancelled() {
             return;
         }

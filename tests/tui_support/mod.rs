@@ -84,3 +84,13 @@ pub fn set_and_settle(app: &mut App, name: &str, text: &str) {
     key(app, KeyCode::Enter);
     settle(app);
 }
+
+/// The explorer opened on the bundled preset `name`.
+pub fn app_on(name: &str, width: u16, height: u16, presets_dir: Option<PathBuf>) -> App {
+    App::new(
+        preset::load(name, None).unwrap(),
+        presets_dir,
+        ColorMode::Indexed,
+        Rect::new(0, 0, width, height),
+    )
+}

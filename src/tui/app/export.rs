@@ -46,6 +46,11 @@ impl App {
     /// The chart in view as SVG, with its kind for the file's name.
     fn chart_svg(&self) -> Result<(String, Result<String, PictureError>), String> {
         match self.tab {
+            Tab::Surface if !self.is_swing() => Err(super::SWING_ONLY.into()),
+            Tab::Figures if !self.figure_applies() => Err(format!(
+                "Fig. {} needs a swing: b switches to the swing scene",
+                self.figure_number
+            )),
             Tab::Surface => {
                 let state = self
                     .surface
@@ -83,7 +88,7 @@ impl App {
                 ))
             }
             Tab::Flight | Tab::Impact => {
-                let flight = &self.swing.flight;
+                let flight = &self.flown.flight;
                 let mut paths = vec![FlightPath {
                     name: "now".into(),
                     points: self.path.clone(),

@@ -9,6 +9,9 @@ use crate::tui::worker::{FigureJob, FigureReport};
 
 /// The figures the explorer draws, in order: Fig. 7 is the range surface (tab 2).
 pub const FIGURES: [u32; 11] = [3, 4, 5, 6, 8, 9, 10, 11, 12, 13, 14];
+/// The figures of the aerodynamics alone (C_D, C_L), the only ones that
+/// apply to a batted ball; the others need a pitch and a bat.
+pub const AERO_FIGURES: [u32; 2] = [3, 4];
 
 /// A figure as computed for some inputs.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,14 +33,33 @@ pub(super) struct FigureInputs {
 }
 
 impl App {
-    /// Steps through [`FIGURES`] (keys `f`, `F`).
+    /// Steps through [`FIGURES`] (keys `f`, `F`): a batted ball's only
+    /// through those that apply to it.
     pub(super) fn step_figure(&mut self, forward: bool) {
-        let n = FIGURES.len();
-        let k = FIGURES
-            .iter()
-            .position(|&f| f == self.figure_number)
-            .unwrap_or(0);
-        self.figure_number = FIGURES[if forward { k + 1 } else { k + n - 1 } % n];
+        let all: &[u32] = if self.is_swing() {
+            &FIGURES
+        } else {
+            &AERO_FIGURES
+        };
+        let n = all.len();
+        self.figure_number = match all.iter().position(|&f| f == self.figure_number) {
+            Some(k) => all[if forward { k + 1 } else { k + n - 1 } % n],
+            None => all[if forward { 0 } else { n - 1 }],
+        };
+    }
+
+    /// A batted ball shows the first figure that applies to it (the drag's)
+    /// rather than one that needs a swing.
+    pub(super) fn fit_figure(&mut self) {
+        if !self.figure_applies() {
+            self.figure_number = AERO_FIGURES[0];
+        }
+    }
+
+    /// Whether the chosen figure can be drawn for this scene: a batted
+    /// ball has no pitch or bat for Figs. 5–6 and 8–14.
+    pub fn figure_applies(&self) -> bool {
+        self.is_swing() || AERO_FIGURES.contains(&self.figure_number)
     }
 
     /// Whether the figure's pane is on screen.
@@ -48,6 +70,7 @@ impl App {
     /// Whether the figure shown is the one for the current inputs.
     pub fn figure_fresh(&self) -> bool {
         !self.figure_visible()
+            || !self.figure_applies()
             || self
                 .figure
                 .as_ref()
@@ -57,7 +80,7 @@ impl App {
     /// Asks for the figure on screen when what it depends on has changed;
     /// cancels it when it leaves the screen.
     pub(super) fn request_figure(&mut self) {
-        let wanted = self.figure_visible().then(|| FigureInputs {
+        let wanted = (self.figure_visible() && self.figure_applies()).then(|| FigureInputs {
             scene: self.scene,
             number: self.figure_number,
             preset_name: self.preset_name.clone(),

@@ -21,7 +21,11 @@ impl App {
                     self.selected = field;
                     self.message = None;
                     self.dirty = true;
-                } else if let Some((e, psi)) = panes.heatmap.and_then(|h| heatmap_point(h, x, y)) {
+                } else if let Some((e, psi)) = panes
+                    .heatmap
+                    .filter(|_| self.is_swing())
+                    .and_then(|h| heatmap_point(h, x, y))
+                {
                     self.scene = self.scene.with_swing(e, psi);
                     self.inputs_changed = true;
                     self.message = None;

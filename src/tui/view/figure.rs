@@ -10,10 +10,11 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Chart, Paragraph};
 
 use super::chart;
-use crate::analysis::figures::{Cell, FigureData, trimmed};
-use crate::model::keys::KEYS;
-use crate::tui::app::{App, FIGURES};
+use crate::analysis::figures::{Cell, Column, FigureData, trimmed};
+use crate::model::keys::{KEYS, Key};
+use crate::tui::app::{AERO_FIGURES, App, FIGURES};
 use crate::tui::theme::{self, dim, title_style};
+use crate::units::{Quantity, Unit};
 
 /// What to plot of figure `number`: its x column, the prefixes of its y
 /// columns, and the column that splits the rows into curves, if any.
@@ -89,6 +90,45 @@ fn axis_title(head: &str) -> String {
         .map_or(head.to_owned(), |end| head[..=end].to_owned())
 }
 
+/// The input a figure's column sweeps, if it is one (`bat_speed`, `undercut`).
+fn column_key(column_key: &str) -> Option<&'static Key> {
+    KEYS.iter().find(|key| {
+        key.name.replace('.', "_") == column_key || key.name.ends_with(&format!(".{column_key}"))
+    })
+}
+
+/// The unit a column is drawn in, and its axis title in that unit: the
+/// swept input's, else what its heading's SI unit measures (a range in m
+/// is a distance, ω in rad/s a spin). Dimensionless columns (Re, S, C_D)
+/// and times stay as they are.
+fn column_unit(app: &App, column: &Column) -> (Unit, String) {
+    let title = axis_title(&column.head);
+    let si = title
+        .rsplit_once('(')
+        .map_or("", |(_, rest)| rest.trim_end_matches(')'))
+        .split(',')
+        .next()
+        .unwrap_or("");
+    let quantity = match column_key(&column.key) {
+        Some(key) => key.quantity(),
+        None => match si {
+            "m" => Quantity::Distance,
+            "m/s" => Quantity::Speed,
+            "rad/s" => Quantity::Spin,
+            "rad" => Quantity::Angle,
+            _ => Quantity::Unchanged,
+        },
+    };
+    let unit = quantity.unit(app.units, "");
+    if unit.is_identity() {
+        return (unit, title);
+    }
+    let name = title
+        .rsplit_once(" (")
+        .map_or(title.as_str(), |(name, _)| name);
+    (unit, format!("{name} ({})", unit.symbol))
+}
+
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let k = FIGURES
         .iter()
@@ -96,16 +136,39 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .unwrap_or(0);
     let state = app.figure.as_ref();
     let stale = state.is_none_or(|f| f.generation != app.figure_generation);
+    // A batted ball steps through the aero figures only: say so.
+    let (k, count, which) = if app.is_swing() {
+        (k, FIGURES.len(), "")
+    } else {
+        let k = AERO_FIGURES.iter().position(|&f| f == app.figure_number);
+        (
+            k.unwrap_or(0),
+            AERO_FIGURES.len(),
+            "; the rest need a swing",
+        )
+    };
     let title = format!(
-        " Fig. {} ({}/{}, f F){} ",
+        " Fig. {} ({}/{count}, f F{which}){} ",
         app.figure_number,
         k + 1,
-        FIGURES.len(),
         if stale { " computing…" } else { "" }
     );
     let block = Block::bordered().title(Span::styled(title, title_style()));
     let inner = block.inner(area);
     frame.render_widget(block, area);
+    // A batted ball has no pitch or bat to sweep: only the aero applies.
+    if !app.figure_applies() {
+        let text = format!(
+            "Fig. {} needs a swing: b switches to the swing scene. For a batted ball, f shows Figs. {} (the aerodynamics).",
+            app.figure_number,
+            AERO_FIGURES.map(|n| n.to_string()).join("–")
+        );
+        frame.render_widget(
+            Paragraph::new(Line::styled(text, dim())).wrap(ratatui::widgets::Wrap { trim: true }),
+            inner,
+        );
+        return;
+    }
     let data = match state.map(|f| &f.data) {
         None => return,
         Some(Err(e)) => {
@@ -118,6 +181,26 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         Some(Ok(data)) => data,
     };
     let (x, curves) = curves(data);
+    // In the units shown: the swept input's and the curves' (range in ft).
+    let (x_unit, x_title) = column_unit(app, &data.columns[x]);
+    let y_column = data
+        .columns
+        .iter()
+        .find(|c| spec(data.number).1.iter().any(|p| c.key.starts_with(p)));
+    let (y_unit, y_title) = y_column.map_or(
+        (Quantity::Unchanged.unit(app.units, ""), String::new()),
+        |c| column_unit(app, c),
+    );
+    let curves: Vec<Curve> = curves
+        .into_iter()
+        .map(|(name, points)| {
+            let points = points
+                .into_iter()
+                .map(|(px, py)| (x_unit.show(px), y_unit.show(py)))
+                .collect();
+            (name, points)
+        })
+        .collect();
 
     // The paper's numbers beside ours, as many as leave the chart room.
     let mut notes: Vec<Line> = data
@@ -160,12 +243,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
 
     // The current input's value, where the x column is an input.
     let x_key = &data.columns[x].key;
-    let now = KEYS
-        .iter()
-        .find(|key| {
-            key.name.replace('.', "_") == *x_key || key.name.ends_with(&format!(".{x_key}"))
-        })
-        .map(|key| (key.get)(&app.scene))
+    let now = column_key(x_key)
+        .map(|key| x_unit.show((key.get)(&app.scene)))
         .filter(|v| (x0..=x1).contains(v));
     let now_line = now.map_or(Vec::new(), |v| vec![(v, y0), (v, y1)]);
     // The paper's marked points (A, B, Dryden's point…) on the first curve.
@@ -197,22 +276,15 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         legend.push(Span::styled("│ now ", theme::SWING));
     }
     datasets.push(chart::points(Marker::Dot, theme::APEX, &marks));
-    let y_head = curves
-        .first()
-        .and_then(|_| {
-            data.columns
-                .iter()
-                .find(|c| spec(data.number).1.iter().any(|p| c.key.starts_with(p)))
-        })
-        .map_or(String::new(), |c| axis_title(&c.head));
+    let y_head = if curves.is_empty() {
+        String::new()
+    } else {
+        y_title
+    };
     let labels = |a: f64, b: f64| [a, 0.5 * (a + b), b].map(|v| sig(v, 3));
     let chart = Chart::new(datasets)
         .block(Block::new().title_top(Line::from(legend).right_aligned()))
-        .x_axis(chart::axis(
-            axis_title(&data.columns[x].head),
-            [x0, x1],
-            labels(x0, x1),
-        ))
+        .x_axis(chart::axis(x_title, [x0, x1], labels(x0, x1)))
         .y_axis(chart::axis(y_head, [y0, y1], labels(y0, y1)))
         .legend_position(None);
     frame.render_widget(chart, plot);

@@ -16,6 +16,7 @@ use crate::analysis::study::{CellOutcome, Grid, Surface};
 use crate::tui::app::App;
 use crate::tui::layout::{HEATMAP_BAR, heatmap_plot};
 use crate::tui::theme::{self, dim, ramp, title_style};
+use crate::units::UnitSystem;
 
 /// The surface's cell at pixel (px, py) of a w×h picture, py from the top.
 fn sample(surface: &Surface, px: usize, py: usize, w: usize, h: usize) -> CellOutcome {
@@ -56,36 +57,48 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     }
     let window = Grid::explorer_window();
     let inner = Block::bordered().inner(area);
-    // Axis labels: ψ on the left (top, bottom), E along the bottom.
+    // Axis labels: ψ on the left (top, bottom), E along the bottom, in the
+    // units shown: rad and mm, or degrees and inches.
+    let imperial = app.units == UnitSystem::Imperial;
+    let psi_text = |psi: f64| {
+        if imperial {
+            format!("{:.0}°", psi.to_degrees())
+        } else {
+            format!("{psi:.1}")
+        }
+    };
+    let e_text = |e: f64| {
+        if imperial {
+            format!("{:.1}", e / crate::units::METRES_PER_INCH)
+        } else {
+            format!("{:.0}", e * 1e3)
+        }
+    };
+    let e_unit = if imperial { "in" } else { "mm" };
     let buf = frame.buffer_mut();
     buf.set_string(
         inner.x,
         plot.y,
-        format!("{:>5}", format!("{:.1}", window.swing_angle.1)),
+        format!("{:>5}", psi_text(window.swing_angle.1)),
         dim(),
     );
     buf.set_string(inner.x, plot.y + plot.height / 2, "  ψ ↑", dim());
     buf.set_string(
         inner.x,
         plot.bottom().saturating_sub(1),
-        format!("{:>5}", format!("{:.1}", window.swing_angle.0)),
+        format!("{:>5}", psi_text(window.swing_angle.0)),
         dim(),
     );
     let bottom = plot.bottom();
-    buf.set_string(
-        plot.x,
-        bottom,
-        format!("{:.0}", window.undercut.0 * 1e3),
-        dim(),
-    );
-    let e_label = "E (mm) →";
+    buf.set_string(plot.x, bottom, e_text(window.undercut.0), dim());
+    let e_label = format!("E ({e_unit}) →");
     buf.set_string(
         plot.x + plot.width.saturating_sub(e_label.chars().count() as u16) / 2,
         bottom,
-        e_label,
+        &e_label,
         dim(),
     );
-    let right = format!("{:.0}", window.undercut.1 * 1e3);
+    let right = e_text(window.undercut.1);
     buf.set_string(
         plot.right().saturating_sub(right.len() as u16),
         bottom,
@@ -178,11 +191,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         let c = app.color.rgb(ramp(t));
         buf.set_string(bar_area.x, bar_area.y + row, "██", theme::swatch(c));
     }
-    buf.set_string(bar_area.x + 2, bar_area.y, format!("{max:>5.0}"), dim());
+    let (top, unit) = app.distance(max);
+    buf.set_string(bar_area.x + 2, bar_area.y, format!("{top:>5.0}"), dim());
     buf.set_string(
         bar_area.x + 2,
         bar_area.y + bar_area.height / 2,
-        "    m",
+        format!("{unit:>5}"),
         dim(),
     );
     buf.set_string(

@@ -10,9 +10,15 @@ use ratatui::widgets::{Block, Chart, Paragraph};
 use super::chart;
 use crate::tui::app::App;
 use crate::tui::theme::{self, dim, title_style};
+use crate::units::Quantity;
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let impact = &app.swing.impact;
+    // Drawn for a swing only: a batted ball has no impact.
+    let Some(impact) = &app.flown.impact else {
+        return;
+    };
+    // Speeds in the units shown (m/s or mph); impulses stay N·s.
+    let (speed, spin) = (app.unit(Quantity::Speed), app.unit(Quantity::Spin));
     let stops = impact.stops();
     let stop = stops[app.impact_stop.min(stops.len() - 1)];
     let block = Block::bordered().title(Span::styled(
@@ -36,11 +42,11 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .collect();
     let slip: Vec<(f64, f64)> = states
         .iter()
-        .map(|s| (s.impulse, s.slip_velocity))
+        .map(|s| (s.impulse, speed.show(s.slip_velocity)))
         .collect();
     let normal: Vec<(f64, f64)> = states
         .iter()
-        .map(|s| (s.impulse, s.normal_velocity))
+        .map(|s| (s.impulse, speed.show(s.normal_velocity)))
         .collect();
     let (lo, hi) = slip
         .iter()
@@ -71,7 +77,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             ["0".into(), format!("{pf:.2}")],
         ))
         .y_axis(chart::axis(
-            "m/s",
+            speed.symbol,
             [lo, hi],
             [format!("{lo:.0}"), format!("{hi:.0}")],
         ));
@@ -95,18 +101,24 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         ]),
         Line::from(vec![
             Span::styled("v1 slip ", theme::SLIP),
-            Span::raw(format!("{:+.2}  ", s.slip_velocity)),
+            Span::raw(format!("{:+.2}  ", speed.show(s.slip_velocity))),
             Span::styled("v3 normal ", theme::APPROACH),
-            Span::raw(format!("{:+.2} m/s", s.normal_velocity)),
+            Span::raw(format!(
+                "{:+.2} {}",
+                speed.show(s.normal_velocity),
+                speed.symbol
+            )),
         ]),
         Line::from(vec![
             Span::styled("ball ", dim()),
             Span::raw(format!(
-                "({:+.2}, {:+.2}) m/s  |v| {:.2}  spin {:+.1} rad/s",
-                s.ball_velocity.x,
-                s.ball_velocity.y,
-                s.ball_velocity.norm(),
-                s.ball_spin
+                "({:+.2}, {:+.2}) {}  |v| {:.2}  spin {:+.1} {}",
+                speed.show(s.ball_velocity.x),
+                speed.show(s.ball_velocity.y),
+                speed.symbol,
+                speed.show(s.ball_velocity.norm()),
+                spin.show(s.ball_spin),
+                spin.symbol
             )),
         ]),
     ];

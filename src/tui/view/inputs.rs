@@ -16,7 +16,7 @@ use ratatui::widgets::{Block, Paragraph, Wrap};
 
 use crate::analysis::sensitivity;
 use crate::tui::app::{App, Field, GainCell, Mode, input_key};
-use crate::tui::format::format_value;
+use crate::tui::format::{shown_bounds, shown_step, shown_value};
 use crate::tui::layout::{input_scroll, inputs_list};
 use crate::tui::theme::{self, dim, title_style};
 use crate::tui::worker::Gain;
@@ -166,7 +166,7 @@ fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
     let unit = app.distance(1.0).1;
     // Each head is right-aligned over its column; the border runs on to it.
     let head = |text: String, gain: Gain, cells: usize| {
-        let busy = app.gains_done(gain) < crate::tui::app::input_count();
+        let busy = app.gains_done(gain) < app.gain_count();
         let style = if busy { theme::BUSY } else { dim() };
         let text = format!(" {text}");
         [
@@ -200,14 +200,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     });
     let value_width = numeric
         .clone()
-        .map(|key| width(&format_value(key, (key.get)(&app.scene))))
+        .map(|key| width(&shown_value(key, (key.get)(&app.scene), app.units)))
         .max()
         .unwrap_or(0);
     let name_width = numeric
         .map(|key| width(key.name.split('.').nth(1).unwrap_or(key.name)))
         .max()
         .unwrap_or(0);
-    let c = columns(inner_width, value_width, name_width);
+    let mut c = columns(inner_width, value_width, name_width);
+    // A batted ball has no optimum, so no Δopt.
+    c.optimum &= app.is_swing();
 
     let (left, right) = title(app, c);
     let mut block = Block::bordered().title(left);
@@ -255,8 +257,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 (
                     key.symbol,
                     short,
-                    format_value(key, (key.get)(&app.scene)),
-                    key.unit,
+                    shown_value(key, (key.get)(&app.scene), app.units),
+                    key.unit_in(app.units).symbol,
                 )
             }
         };
@@ -337,7 +339,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                     let key = input_key(k);
                     format!(
                         "{}: {} {}, step {}",
-                        key.name, key.description, key.bounds, key.step
+                        key.name,
+                        key.description,
+                        shown_bounds(key, app.units),
+                        shown_step(key, app.units)
                     )
                 }
             };

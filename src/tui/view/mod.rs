@@ -52,11 +52,20 @@ pub fn draw(frame: &mut Frame, app: &App) {
     if let Some(r) = panes.readout {
         readout::draw(frame, r, app);
     }
+    // A batted ball has no swing to vary nor impact to step through.
     if let Some(r) = panes.heatmap {
-        heatmap::draw(frame, r, app);
+        if app.is_swing() {
+            heatmap::draw(frame, r, app);
+        } else {
+            swing_only(frame, r, " Range over (E, ψ) ", "The range surface");
+        }
     }
     if let Some(r) = panes.impact {
-        impact::draw(frame, r, app);
+        if app.is_swing() {
+            impact::draw(frame, r, app);
+        } else {
+            swing_only(frame, r, " Impact ", "The impact");
+        }
     }
     if let Some(r) = panes.figure {
         figure::draw(frame, r, app);
@@ -74,10 +83,54 @@ pub fn draw(frame: &mut Frame, app: &App) {
     }
 }
 
-/// What is being computed and how fresh each result is.
+/// A swing scene's pane in the batted-ball scene: one line saying so.
+fn swing_only(frame: &mut Frame, area: Rect, title: &str, what: &str) {
+    let text = format!("{what} belongs to the swing scene: b switches to it.");
+    frame.render_widget(
+        Paragraph::new(Line::styled(text, dim()))
+            .wrap(ratatui::widgets::Wrap { trim: true })
+            .block(
+                ratatui::widgets::Block::bordered()
+                    .title(Span::styled(title.to_owned(), theme::title_style())),
+            ),
+        area,
+    );
+}
+
+/// Which scene is shown, what is being computed and how fresh each result is.
 fn status_line(frame: &mut Frame, area: Rect, app: &App) {
     let mut spans = Vec::new();
+    spans.push(Span::styled(
+        if app.is_swing() {
+            "swing · "
+        } else {
+            "batted ball · "
+        },
+        theme::title_style(),
+    ));
     spans.push(Span::raw("readout ✓ "));
+    if app.is_swing() {
+        swing_status(&mut spans, app);
+    }
+    // The sensitivities: at the current swing (quick), then at the optimum.
+    let n = app.gain_count();
+    let (swing, optimum) = (app.gains_done(Gain::Swing), app.gains_done(Gain::Optimum));
+    spans.push(if swing < n {
+        Span::styled("· Δ… ", theme::BUSY)
+    } else if !app.optimum_gains_fresh() {
+        Span::styled(format!("· Δopt {optimum}/{n}… "), theme::BUSY)
+    } else {
+        Span::raw("· Δ ✓ ")
+    });
+    if !app.is_swing() {
+        spans.push(Span::styled("· b swing ", dim()));
+    }
+    spans.push(Span::styled("· ? help  q quit", dim()));
+    frame.render_widget(Paragraph::new(Line::from(spans)), area);
+}
+
+/// The swing scene's background work: the optimum and the surface.
+fn swing_status(spans: &mut Vec<Span<'static>>, app: &App) {
     spans.push(match &app.optimum {
         Some(o) if o.done => Span::raw(format!("· optimum ✓ {} evals ", o.evaluations)),
         Some(o) => Span::styled(
@@ -103,16 +156,4 @@ fn status_line(frame: &mut Frame, area: Rect, app: &App) {
         ),
         None => Span::styled("· surface… ", theme::BUSY),
     });
-    // The sensitivities: at the current swing (quick), then at the optimum.
-    let n = super::app::input_count();
-    let (swing, optimum) = (app.gains_done(Gain::Swing), app.gains_done(Gain::Optimum));
-    spans.push(if swing < n {
-        Span::styled("· Δ… ", theme::BUSY)
-    } else if !app.optimum_gains_fresh() {
-        Span::styled(format!("· Δopt {optimum}/{n}… "), theme::BUSY)
-    } else {
-        Span::raw("· Δ ✓ ")
-    });
-    spans.push(Span::styled("· ? help  q quit", dim()));
-    frame.render_widget(Paragraph::new(Line::from(spans)), area);
 }

@@ -9,11 +9,63 @@ use ratatui::widgets::{Block, Paragraph};
 use crate::analysis::figures::trimmed;
 use crate::analysis::optimum::Status;
 use crate::model::impact::Regime;
+use crate::model::launch::BattedBall;
 use crate::tui::app::App;
 use crate::tui::theme::{self, dim, title_style};
+use crate::units::{Quantity, UnitSystem};
+
+/// A launch as the readout writes it, in the units shown: "44.30 m/s
+/// 191.8 rad/s  26.38°" or "99.09 mph  1831 rpm  26.38°"; with `sign`, a
+/// difference of two ("+1.20 mph  +95 rpm  -0.50°").
+fn launch_text(app: &App, launch: &BattedBall, sign: bool) -> String {
+    let (speed, spin) = (app.unit(Quantity::Speed), app.unit(Quantity::Spin));
+    let spin_decimals = if app.units == UnitSystem::Si { 1 } else { 0 };
+    let (v, w) = (
+        speed.show_difference(launch.speed),
+        spin.show_difference(launch.spin),
+    );
+    let angle = launch.angle.to_degrees();
+    if sign {
+        format!(
+            "{v:+.2} {}  {w:+.spin_decimals$} {}  {angle:+.2}°",
+            speed.symbol, spin.symbol
+        )
+    } else {
+        format!(
+            "{v:.2} {}  {w:.spin_decimals$} {}  {angle:.2}°",
+            speed.symbol, spin.symbol
+        )
+    }
+}
+
+/// An angle in the units shown: "0.3791 rad" or "21.72°"; `sign` for a
+/// difference.
+fn angle_text(app: &App, radians: f64, sign: bool) -> String {
+    match (app.units, sign) {
+        (UnitSystem::Si, false) => format!("{radians:.4}"),
+        (UnitSystem::Si, true) => format!("{radians:+.4}"),
+        (UnitSystem::Imperial, false) => format!("{:.2}°", radians.to_degrees()),
+        (UnitSystem::Imperial, true) => format!("{:+.2}°", radians.to_degrees()),
+    }
+}
+
+/// An undercut in the units shown: "27.27 mm" or "1.074 in"; `sign` for a
+/// difference.
+fn undercut_text(app: &App, metres: f64, sign: bool) -> String {
+    let (value, unit, decimals) = match app.units {
+        UnitSystem::Si => (metres * 1e3, "mm", 2),
+        UnitSystem::Imperial => (app.unit(Quantity::Size).show(metres), "in", 3),
+    };
+    if sign {
+        format!("{value:+.decimals$} {unit}")
+    } else {
+        format!("{value:.decimals$} {unit}")
+    }
+}
 
 /// The air in force: "ρ 1.194 kg/m³  ν 1.51e-5 m²/s" and where it comes
-/// from, "from 21 °C, 5 m, 1013 hPa, 50 %" or "(given)".
+/// from, "from 21 °C, 5 m, 1013 hPa, 50 %" (in baseball units "from 70 °F,
+/// 16 ft, 29.92 inHg, 50 %") or "(given)".
 fn air(app: &App) -> (String, String) {
     let air = app.scene.environment.air();
     let values = format!(
@@ -21,6 +73,16 @@ fn air(app: &App) -> (String, String) {
         air.density, air.kinematic_viscosity
     );
     let source = match air.atmosphere {
+        Some(a) if app.units == UnitSystem::Imperial => {
+            let unit = |q: Quantity| app.unit(q);
+            format!(
+                "from {} °F, {:.0} ft, {:.2} inHg, {} %",
+                trimmed((unit(Quantity::Temperature).show(a.temperature) * 10.0).round() / 10.0),
+                unit(Quantity::Distance).show(a.elevation),
+                unit(Quantity::Pressure).show(a.pressure),
+                trimmed(a.humidity)
+            )
+        }
         Some(a) => format!(
             "from {} °C, {} m, {} hPa, {} %",
             trimmed(a.temperature),
@@ -34,20 +96,15 @@ fn air(app: &App) -> (String, String) {
 }
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let impact = &app.swing.impact;
-    let flight = &app.swing.flight;
+    let flight = &app.flown.flight;
     let u = app.distance(1.0).1;
     let d = |metres: f64| app.distance(metres).0;
+    let speed = app.unit(Quantity::Speed);
     let label = |s: &'static str| Span::styled(format!("{s:<9}"), dim());
     let mut lines = vec![
         Line::from(vec![
             label("launch"),
-            Span::raw(format!(
-                "{:.2} m/s  {:.1} rad/s  {:.2}°",
-                impact.launch_speed(),
-                impact.launch_spin(),
-                impact.launch_angle().to_degrees()
-            )),
+            Span::raw(launch_text(app, &app.flown.launch, false)),
         ]),
         Line::from(vec![
             label("flight"),
@@ -71,19 +128,27 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 )
             },
         ]),
-        Line::from(vec![
+    ];
+    // A swing's impact (a batted ball has none).
+    if let Some(impact) = &app.flown.impact {
+        lines.push(Line::from(vec![
             label("impact"),
             Span::raw(format!(
-                "e* {:.4}  {}  θ {:.4} rad",
+                "e* {:.4}  {}  θ {}{}",
                 impact.restitution,
                 match impact.regime {
                     Regime::Stick => "stick",
                     Regime::Slip => "slip",
                 },
-                impact.normal_angle
+                angle_text(app, impact.normal_angle, false),
+                if app.units == UnitSystem::Si {
+                    " rad"
+                } else {
+                    ""
+                }
             )),
-        ]),
-        Line::from(vec![
+        ]));
+        lines.push(Line::from(vec![
             label("impulse"),
             Span::raw(format!(
                 "p_s {} p_c {:.3} p_f {:.3} N·s",
@@ -93,8 +158,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 impact.compression_impulse,
                 impact.separation_impulse
             )),
-        ]),
-    ];
+        ]));
+    }
     let inner = Block::bordered().inner(area);
     // Air derived from the weather is worth a line even on a small screen,
     // where it takes the impulses' (tab 3 shows them); given air, the
@@ -114,7 +179,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     };
     if derived {
         let extra = air_lines(inner.width);
-        if (inner.height as usize) < lines.len() + 3 + extra.len() {
+        if (inner.height as usize) < lines.len() + 3 + extra.len() && lines.len() > 3 {
             lines.remove(3);
         }
         for (k, line) in extra.into_iter().enumerate() {
@@ -124,15 +189,15 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     // The pinned scene: now − pin under the launch and the flight. When the
     // pane is short, the deltas take the impact's two lines (tab 3 shows it).
     if let Some(pin) = &app.pin {
-        let (was, was_flight) = (&pin.swing.impact, &pin.swing.flight);
+        let (now, was, was_flight) = (&app.flown.launch, &pin.flown.launch, &pin.flown.flight);
         let pinned =
             |text: String| Line::from(vec![label(" now−pin"), Span::styled(text, theme::PINNED)]);
-        let launch = pinned(format!(
-            "{:+.2} m/s  {:+.1} rad/s  {:+.2}°",
-            impact.launch_speed() - was.launch_speed(),
-            impact.launch_spin() - was.launch_spin(),
-            (impact.launch_angle() - was.launch_angle()).to_degrees()
-        ));
+        let difference = BattedBall {
+            speed: now.speed - was.speed,
+            angle: now.angle - was.angle,
+            spin: now.spin - was.spin,
+        };
+        let launch = pinned(launch_text(app, &difference, true));
         let range = if flight.landed && was_flight.landed {
             format!("{:+.2} {u}", d(flight.range - was_flight.range))
         } else {
@@ -155,6 +220,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     }
     let (e, psi) = (app.scene.bat.undercut, app.scene.bat.swing_angle);
     match app.optimum {
+        // A batted ball has no swing to optimise.
+        _ if !app.is_swing() => {}
         // Nothing that lands yet: no range to show.
         Some(o) if !o.best.range.is_finite() => lines.push(Line::from(vec![
             label("optimum"),
@@ -180,9 +247,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 label("optimum"),
                 Span::styled(
                     format!(
-                        "E {:.2} mm  ψ {:.4}  {:.2} {u}{state}",
-                        o.best.undercut * 1e3,
-                        o.best.swing_angle,
+                        "E {}  ψ {}  {:.2} {u}{state}",
+                        undercut_text(app, o.best.undercut, false),
+                        angle_text(app, o.best.swing_angle, false),
                         d(o.best.range)
                     ),
                     style,
@@ -196,9 +263,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             lines.push(Line::from(vec![
                 label("you −opt"),
                 Span::raw(format!(
-                    "ΔE {:+.2} mm  Δψ {:+.4}  {range}",
-                    (e - o.best.undercut) * 1e3,
-                    psi - o.best.swing_angle,
+                    "ΔE {}  Δψ {}  {range}",
+                    undercut_text(app, e - o.best.undercut, true),
+                    angle_text(app, psi - o.best.swing_angle, true),
                 )),
             ]));
         }
@@ -207,39 +274,59 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             Span::styled("searching…", theme::BUSY),
         ])),
     }
+    let landing = Line::from(vec![
+        label("landing"),
+        Span::raw(format!(
+            "{:.2} {} at {:.1}° below level",
+            speed.show(flight.landing_speed),
+            speed.symbol,
+            flight.landing_angle.to_degrees()
+        )),
+    ]);
+    // A batted ball's readout has room for its landing: no impact, no optimum.
+    let batted = !app.is_swing();
+    if batted && flight.landed {
+        lines.push(landing.clone());
+    }
     if let Some(fence) = app.fence {
+        // Whether it clears: its height where it passes the fence.
+        let clearance = match app.fence_height {
+            Some(h) if h >= fence.height => format!(": over by {:.1} {u}", d(h - fence.height)),
+            Some(h) => format!(": under by {:.1} {u}", d(fence.height - h)),
+            None => ": falls short".to_owned(),
+        };
         lines.push(Line::from(vec![
             label("fence"),
             Span::raw(format!(
-                "{:.1} {u}, {:.1} {u} high",
+                "{:.1} {u}, {:.1} {u} high{clearance}",
                 d(fence.distance),
                 d(fence.height)
             )),
         ]));
     }
+    // A batted ball's readout has room for the given air too.
+    if batted && !derived {
+        lines.extend(air_lines(inner.width));
+    }
     // Room to spare (the large layouts): the rest of the story.
     if area.height as usize >= lines.len() + 6 {
-        if !derived {
+        if !derived && !batted {
             lines.extend(air_lines(inner.width));
         }
-        if flight.landed {
+        if flight.landed && !batted {
+            lines.push(landing);
+        }
+        if let Some(impact) = &app.flown.impact {
             lines.push(Line::from(vec![
-                label("landing"),
+                label("pitch"),
                 Span::raw(format!(
-                    "{:.2} m/s at {:.1}° below level",
-                    flight.landing_speed,
-                    flight.landing_angle.to_degrees()
+                    "{:.1} {}, descending {:.2}°",
+                    speed.show(app.scene.pitch.speed),
+                    speed.symbol,
+                    impact.descent_angle.to_degrees()
                 )),
             ]));
         }
-        lines.push(Line::from(vec![
-            label("pitch"),
-            Span::raw(format!(
-                "{:.1} m/s, descending {:.2}°",
-                app.scene.pitch.speed,
-                impact.descent_angle.to_degrees()
-            )),
-        ]));
         lines.push(Line::from(vec![
             label("drag"),
             Span::raw(app.scene.drag.description()),

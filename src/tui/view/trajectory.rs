@@ -1,5 +1,6 @@
 //! The batted flight in braille: the current swing, the optimal swing, the
-//! pinned scene, the apex, the landing point and the fence, with axes in metres.
+//! pinned scene, the apex, the landing point and the fence, with axes in
+//! the units shown (m or ft).
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
@@ -25,7 +26,7 @@ pub fn nice_ceiling(value: f64) -> f64 {
 }
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let flight = &app.swing.flight;
+    let flight = &app.flown.flight;
     let (k, unit) = app.distance(1.0);
     let scaled = |path: &[(f64, f64)]| -> Vec<(f64, f64)> {
         path.iter().map(|&(x, y)| (k * x, k * y)).collect()
@@ -35,7 +36,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let (pin_range, pin_apex) = app
         .pin
         .as_ref()
-        .map_or((0.0, 0.0), |p| (p.swing.flight.range, p.swing.flight.apex));
+        .map_or((0.0, 0.0), |p| (p.flown.flight.range, p.flown.flight.apex));
     let optimal_range = app.optimum.filter(|o| o.done).map_or(0.0, |o| o.best.range);
     let optimal_apex = app.optimal_path.iter().map(|p| p.1).fold(0.0, f64::max);
     let fence = app
