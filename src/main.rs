@@ -35,5 +35,5 @@ fn refuse(error: &cli::UsageError) -> ExitCode {
 /// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s) folder.
 fn explore(cli: &Cli, preset: &str) -> Result<(), cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
-    Ok(homerun::tui::run(preset, dir)?)
+    Ok(homerun::tui::run(preset, dir, cli.units)?)
 }

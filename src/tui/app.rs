@@ -382,6 +382,13 @@ impl App {
     /// changes, but a nudge now moves by the shown unit's step, so the Δ
     /// columns are recomputed; the optimum and surface stay when they are
     /// complete (else everything is, as after an input's change).
+    /// Shows every quantity in `units` (as `u` would switch them).
+    pub fn set_units(&mut self, units: UnitSystem) {
+        if self.units != units {
+            self.toggle_units();
+        }
+    }
+
     fn toggle_units(&mut self) {
         self.units = self.units.toggled();
         self.message = Some((

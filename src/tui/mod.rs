@@ -100,7 +100,11 @@ impl Drop for Restore {
 
 /// Runs the explorer on `preset` until the user quits or a signal (TERM,
 /// HUP, INT) asks it to stop; the terminal is restored either way.
-pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError> {
+pub fn run(
+    preset: Preset,
+    presets_dir: Option<PathBuf>,
+    units: crate::units::UnitSystem,
+) -> Result<(), TuiError> {
     if !(io::stdin().is_terminal() && io::stdout().is_terminal()) {
         return Err(TuiError::NoTerminal);
     }
@@ -120,6 +124,7 @@ pub fn run(preset: Preset, presets_dir: Option<PathBuf>) -> Result<(), TuiError>
         ColorMode::detect(),
         Rect::new(0, 0, size.width, size.height),
     );
+    app.set_units(units);
     let worker = Worker::spawn();
     watch_for_hang_up()?;
 
