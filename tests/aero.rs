@@ -417,3 +417,47 @@ fn the_fly_ball_at_sea_level_and_at_altitude() {
         }
     }
 }
+
+#[test]
+fn the_air_thins_with_heat_height_and_humidity() {
+    use homerun::model::atmosphere::Atmosphere;
+    // Across each key's accepted range, the others at standard values and
+    // at both ends of theirs: ρ falls as T, h or RH rises (warm air expands,
+    // the pressure falls with height, water vapour is lighter than dry air).
+    let corners = [
+        Atmosphere::STANDARD,
+        Atmosphere {
+            temperature: -50.0,
+            elevation: -500.0,
+            pressure: 1085.0,
+            humidity: 0.0,
+        },
+        Atmosphere {
+            temperature: 60.0,
+            elevation: 5000.0,
+            pressure: 870.0,
+            humidity: 100.0,
+        },
+    ];
+    type Setter = fn(&mut Atmosphere, f64);
+    let keys: [(&str, f64, f64, Setter); 3] = [
+        ("temperature", -50.0, 60.0, |a, v| a.temperature = v),
+        ("elevation", -500.0, 5000.0, |a, v| a.elevation = v),
+        ("humidity", 0.0, 100.0, |a, v| a.humidity = v),
+    ];
+    for base in corners {
+        for (name, from, to, set) in keys {
+            let densities: Vec<f64> = (0..=100)
+                .map(|i| {
+                    let mut air = base;
+                    set(&mut air, from + (to - from) * f64::from(i) / 100.0);
+                    air.air_density()
+                })
+                .collect();
+            assert!(
+                densities.windows(2).all(|w| w[1] < w[0]),
+                "ρ not falling in {name} from {base:?}: {densities:?}"
+            );
+        }
+    }
+}

@@ -364,3 +364,52 @@ fn figures_3_and_4_follow_the_chosen_models() {
         assert!((c - expected).abs() < 1e-4, "{c} vs {expected}");
     }
 }
+
+#[test]
+fn the_explorers_figure5_marks_sit_on_the_curve_they_name() {
+    use homerun::analysis::figures::{Cell, Figure, figure_data};
+    use homerun::tui::view::figure::{chart_curves, chart_marks};
+    let Ok(Figure::Table(data)) = figure_data(5, &homerun::Scene::default(), "fastball") else {
+        panic!("Fig. 5 is a table");
+    };
+    let (_, curves) = chart_curves(&data);
+    let names: Vec<&str> = curves.iter().map(|c| c.name.as_str()).collect();
+    assert_eq!(names, ["μ=0.05", "μ=0.35", "μ=0.5"]);
+    let column = |key: &str| data.columns.iter().position(|c| c.key == key).unwrap();
+    let (undercut, mark) = (column("undercut"), column("mark"));
+    let value = |row: &[Cell], k: usize| match row[k] {
+        Cell::Num(v) => v,
+        _ => panic!("a number"),
+    };
+    // Each mark names one μ: one point each, at that μ's batted spin.
+    let mut expected = Vec::new();
+    for row in &data.rows {
+        let Cell::Text(label) = &row[mark] else {
+            continue;
+        };
+        let mu = ["0.05", "0.35", "0.5"]
+            .into_iter()
+            .find(|mu| {
+                label.ends_with(&format!("μ = {mu}")) || label.contains(&format!("μ = {mu}:"))
+            })
+            .unwrap_or_else(|| panic!("{label} names a μ"));
+        let spin = value(row, column(&format!("launch_spin_mu_{mu}")));
+        expected.push((value(row, undercut), spin));
+    }
+    assert_eq!(expected.len(), 4, "three cusps and 1000 rad/s");
+    assert_eq!(chart_marks(&data), expected);
+    // Slip halts at separation where the batted spin peaks: each cusp is
+    // the top of its own curve (for μ = 0.35 some 900 rad/s above the
+    // μ = 0.05 line at the same E).
+    for (k, cusp) in [(0, expected[0]), (1, expected[1]), (2, expected[3])] {
+        let top = curves[k]
+            .points
+            .iter()
+            .map(|p| p.1)
+            .fold(f64::MIN, f64::max);
+        assert_eq!(cusp.1, top, "{}: {cusp:?}", curves[k].name);
+    }
+    assert!(expected[1].1 > 800.0, "{expected:?}");
+    // 1000 rad/s at μ = 0.5 is marked at 1000 rad/s.
+    assert!((expected[2].1 - 1000.0).abs() < 0.1, "{expected:?}");
+}

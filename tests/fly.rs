@@ -387,3 +387,43 @@ fn an_empty_input_a_file_and_hostile_input() {
         "{out}"
     );
 }
+
+#[test]
+fn fly_at_hits_launch_prints_hits_flight() {
+    // The commands, not only the library: `fly` given the launch `hit`
+    // reports for the fastball flies `hit`'s flight.
+    let dir = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| -> Value {
+        let out = homerun(dir.path()).args(args).output().unwrap();
+        assert!(out.status.success(), "{args:?}");
+        serde_json::from_slice(&out.stdout).unwrap()
+    };
+    let hit = run(&["hit", "--json"]);
+    let launch = |k: &str| format!("{:?}", hit["impact"][k].as_f64().unwrap());
+    let sets = [
+        format!("launch.speed={}", launch("launch_speed")),
+        format!("launch.angle={}", launch("launch_angle")),
+        format!("launch.spin={}", launch("launch_spin")),
+    ];
+    let mut args = vec!["fly", "--json"];
+    for set in &sets {
+        args.extend(["--set", set.as_str()]);
+    }
+    let fly = run(&args);
+    assert_eq!(fly["scene"], "batted_ball", "{fly}");
+    for key in [
+        "range",
+        "flight_time",
+        "apex",
+        "landing_speed",
+        "landing_angle",
+    ] {
+        let (a, b) = (
+            fly["flight"][key].as_f64().unwrap(),
+            hit["flight"][key].as_f64().unwrap(),
+        );
+        assert!(relative(a, b) < 1e-12, "{key}: fly {a} vs hit {b}");
+    }
+    // Table II's fastball: 134.70 m.
+    assert!((fly["flight"]["range"].as_f64().unwrap() - 134.699).abs() < 1e-3);
+}

@@ -11,6 +11,8 @@ use homerun::numerics::ode::Tolerance;
 use homerun::{Purpose, Scene};
 use nalgebra::Vector2;
 
+mod tui_support;
+
 fn with_swing(scene: &Scene, undercut: f64, swing_angle: f64) -> Scene {
     scene.with_swing(undercut, swing_angle)
 }
@@ -455,5 +457,41 @@ fn random_valid_scenes_give_finite_numbers() {
         ];
         assert!(numbers.iter().all(|x| x.is_finite()), "{scene:?}: {f:?}");
         assert!(f.stats.accepted + f.stats.rejected <= 100_000);
+    }
+}
+
+#[test]
+fn the_explorers_optimum_line_says_when_the_time_limit_sets_the_range() {
+    use homerun::analysis::optimum::{Point, Status};
+    use homerun::tui::worker::Report;
+    for (w, h) in [(80, 24), (200, 60)] {
+        let mut app = tui_support::app(w, h, None);
+        tui_support::settle(&mut app);
+        let optimum = |at_time_limit| Report::Optimum {
+            generation: app.generation,
+            best: Point {
+                undercut: 0.01028,
+                swing_angle: 0.1161,
+                range: 668.15,
+                at_time_limit,
+            },
+            evaluations: 834,
+            done: true,
+            status: Status::Converged,
+        };
+        let (plain, limited) = (optimum(false), optimum(true));
+        app.apply(plain);
+        let screen = tui_support::screen(&app);
+        assert!(!screen.contains("(time limit)"), "{screen}");
+        app.apply(limited);
+        let screen = tui_support::screen(&app);
+        // On one line where it fits, else on a line of its own, never cut.
+        let together = screen.contains("668.15 m (time limit)");
+        let apart = screen.lines().any(|l| l.contains("668.15 m  "))
+            && screen.lines().any(|l| l.contains("│         (time limit)"));
+        assert!(together != apart, "{screen}");
+        assert_eq!(together, w == 200, "{screen}");
+        // The fence still shows.
+        assert!(screen.contains("fence    121.9 m"), "{screen}");
     }
 }

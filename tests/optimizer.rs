@@ -268,3 +268,153 @@ fn with_no_swing_of_the_scan_landing_there_is_no_optimum() {
     let scan = cut.scan.unwrap();
     assert!(!cut.landed && !scan.complete && scan.flown < 64, "{cut:?}");
 }
+
+/// A heavy-spun big ball in dense air (the `WORK` scene of
+/// tests/command_line.rs): the search runs into its work limit, and its best
+/// swing lands at the optimiser's precision but not at the readout's.
+fn work() -> Scene {
+    let mut scene = Scene::default();
+    for (key, value) in [
+        ("ball.radius", 0.063),
+        ("ball.mass", 0.35),
+        ("ball.gyration_radius", 0.046),
+        ("environment.air_density", 4.4),
+        ("environment.gravity", 0.021),
+        ("bat.speed", 49.0),
+        ("pitch.spin", 1000.0),
+    ] {
+        scene.set(key, value).unwrap();
+    }
+    scene.validate().unwrap();
+    scene
+}
+
+/// `homerun ARGS…` through the library, with an empty preset folder.
+fn homerun(args: &[&str]) -> String {
+    use clap::Parser as _;
+    use homerun::cli::{self, Cli};
+    let dir = tempfile::tempdir().unwrap();
+    let mut argv = vec!["homerun", "--presets-dir", dir.path().to_str().unwrap()];
+    argv.extend_from_slice(args);
+    let cli = Cli::try_parse_from(argv).expect("arguments parse");
+    cli::render(&cli, cli.command.as_ref().expect("a command"))
+        .unwrap_or_else(|e| panic!("{args:?}: {e}"))
+}
+
+#[test]
+fn an_optimum_set_by_the_flights_time_limit_says_so() {
+    // In 0.001 m/s² of gravity the best swing is the one whose ball comes
+    // down just before the 600 s limit: the limit sets its range.
+    let scene = hovering();
+    let found = optimize(&scene, OptimizerSettings::default());
+    assert!(found.landed && found.at_time_limit, "{found:?}");
+    assert!(found.point().at_time_limit);
+    let flight = homerun::simulate(
+        &scene.with_swing(found.undercut, found.swing_angle),
+        Purpose::Optimizer,
+    )
+    .flight;
+    assert!(flight.landed && flight.flight_time > 594.0, "{flight:?}");
+    assert_eq!(flight.range, found.range);
+    // The fastball's optimum lands in 5.6 s: no limit in sight.
+    let fastball = optimize(&Scene::default(), OptimizerSettings::default());
+    assert!(!fastball.at_time_limit && !fastball.point().at_time_limit);
+
+    // A sweep labels each such row, in text, CSV and JSON.
+    let sweep = [
+        "sweep",
+        "environment.gravity",
+        "--from",
+        "0.001",
+        "--to",
+        "9.81",
+        "--steps",
+        "2",
+    ];
+    let text = homerun(&sweep);
+    let rows: Vec<&str> = text.lines().skip(1).collect();
+    let label = "(time limit: the flight's limit, not the swing, sets this range)";
+    assert!(rows[0].ends_with(label), "{text}");
+    assert!(!rows[1].contains("time limit"), "{text}");
+    let csv = homerun(&[&sweep[..], &["--csv"]].concat());
+    let head: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let k = head
+        .iter()
+        .position(|h| *h == "at_time_limit")
+        .expect("a column");
+    let column: Vec<&str> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(k).unwrap())
+        .collect();
+    assert_eq!(column, ["true", "false"], "{csv}");
+    let json: serde_json::Value =
+        serde_json::from_str(&homerun(&[&sweep[..], &["--json"]].concat())).unwrap();
+    let points = json["points"].as_array().unwrap();
+    assert_eq!(points[0]["at_time_limit"], true);
+    assert_eq!(points[1]["at_time_limit"], false);
+    assert!(points[0]["range"].as_f64().unwrap() > 600.0, "{json}");
+}
+
+#[test]
+fn an_optimum_that_lands_only_at_optimiser_precision_is_no_range() {
+    // Reported as every flight is, at readout precision: no range; E and ψ
+    // are still the optimiser's best, and its own range is named as such.
+    let json: serde_json::Value = serde_json::from_str(&homerun(
+        &[&["optimize", "--json"][..], &work_args()].concat(),
+    ))
+    .unwrap();
+    assert_eq!(json["status"], "work_limit", "{json}");
+    assert_eq!(json["landed"], false, "{json}");
+    assert!(json["range"].is_null(), "{json}");
+    let number = |key: &str| {
+        json[key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{key}: {json}"))
+    };
+    let (undercut, swing_angle) = (number("undercut"), number("swing_angle"));
+    // The same swing, flown at the two precisions: only the optimiser's lands.
+    let swing = work().with_swing(undercut, swing_angle);
+    let coarse = homerun::simulate(&swing, Purpose::Optimizer).flight;
+    assert!(coarse.landed, "{coarse:?}");
+    assert_eq!(number("optimizer_range"), coarse.range);
+    assert!(!homerun::simulate(&swing, Purpose::Readout).flight.landed);
+    let found = coarse;
+    let why = json["why_not_landed"].as_str().unwrap();
+    assert!(
+        why.starts_with(
+            "the optimiser's best does not land at readout precision (did not land within 600.0 s"
+        ),
+        "{why}"
+    );
+    assert!(
+        why.ends_with(&format!(
+            "at the optimiser's own precision it lands at {:.2} m",
+            found.range
+        )),
+        "{why}"
+    );
+    let text = homerun(&[&["optimize"][..], &work_args()].concat());
+    let range = text.lines().find(|l| l.starts_with("range")).unwrap();
+    assert_eq!(range, format!("range    {why}"), "{text}");
+    // A landing optimum has no such field.
+    let fastball: serde_json::Value =
+        serde_json::from_str(&homerun(&["optimize", "--json"])).unwrap();
+    assert!(fastball.get("optimizer_range").is_none(), "{fastball}");
+}
+
+/// [`work`] as `--set` arguments.
+fn work_args() -> Vec<&'static str> {
+    [
+        "ball.radius=0.063",
+        "ball.mass=0.35",
+        "ball.gyration_radius=0.046",
+        "environment.air_density=4.4",
+        "environment.gravity=0.021",
+        "bat.speed=49",
+        "pitch.spin=1000",
+    ]
+    .into_iter()
+    .flat_map(|set| ["--set", set])
+    .collect()
+}

@@ -291,4 +291,42 @@ fn explorer_x_writes_fresh_files_and_never_overwrites() {
     let gone = dir.path().join("gone");
     let err = app.export_to(&gone).unwrap_err();
     assert!(err.contains("gone"), "{err}");
+
+    // `x` says where it wrote, or why not, in the status line, until the
+    // next key; the inputs' message area keeps the key's description.
+    let status = |app: &homerun::tui::app::App| {
+        let screen = tui_support::screen(app);
+        let last = screen
+            .lines()
+            .last()
+            .unwrap()
+            .trim_matches('"')
+            .trim_end()
+            .to_owned();
+        (screen, last)
+    };
+    app.export_in(dir.path());
+    let (screen, last) = status(&app);
+    assert_eq!(
+        last,
+        format!(
+            "x: wrote {}",
+            dir.path().join("homerun-trajectory-3.svg").display()
+        ),
+        "{screen}"
+    );
+    assert!(!screen.contains("│x: "), "{screen}");
+    app.export_in(&gone);
+    let (screen, last) = status(&app);
+    assert!(last.starts_with("x: no SVG written: "), "{screen}");
+    assert!(last.contains("gone"), "{screen}");
+    assert!(
+        last.ends_with(&format!("no such folder: {}", gone.display())),
+        "{screen}"
+    );
+    // Three SVGs, nothing else: no temporary left behind.
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3);
+    tui_support::key(&mut app, ratatui::crossterm::event::KeyCode::Char('j'));
+    let (screen, last) = status(&app);
+    assert!(last.starts_with("swing · readout ✓"), "{screen}");
 }

@@ -126,7 +126,15 @@ fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
     // An idle explorer writes nothing.
     let before = session.bytes.lock().unwrap().len();
     thread::sleep(Duration::from_millis(600));
-    assert_eq!(session.bytes.lock().unwrap().len(), before, "idle output");
+    let after = session.bytes.lock().unwrap().clone();
+    // On failure, what was written and onto which screen, to find the cause.
+    assert_eq!(
+        after.len(),
+        before,
+        "idle output {:?} onto\n{}",
+        String::from_utf8_lossy(&after[before..]),
+        session.contents()
+    );
     // Help, then save under a new name.
     session.press("?");
     session.wait_for("this help");

@@ -558,11 +558,7 @@ fn explorer(effort: Effort) -> Vec<ExplorerRow> {
         cpu_ms: cpu.map(|c| c * 1e3),
     });
     let best = super::optimum::optimize(&scene, OptimizerSettings::default());
-    let optimum = super::optimum::Point {
-        undercut: best.undercut,
-        swing_angle: best.swing_angle,
-        range: best.range,
-    };
+    let optimum = best.point();
     let moving = swing_keys()
         .filter(|k| sensitivity::moves_optimum(k))
         .count();

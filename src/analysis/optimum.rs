@@ -7,7 +7,8 @@ use serde::Serialize;
 
 use super::precision::Purpose;
 use super::study::Grid;
-use crate::model::flight::FlightOptions;
+use crate::model::flight::{FlightOptions, FlightSummary};
+use crate::model::impact::Impact;
 use crate::model::{self, scene::Scene};
 use crate::numerics::nelder_mead::{self, NelderMead};
 
@@ -67,6 +68,27 @@ pub struct Point {
     pub undercut: f64,
     pub swing_angle: f64,
     pub range: f64,
+    /// Whether its flight lands only just inside its time limit
+    /// ([`lands_at_time_limit`]): then the limit, not the swing, sets the
+    /// range.
+    pub at_time_limit: bool,
+}
+
+/// The share of a flight's time limit after which a landing counts as set
+/// by the limit: a ball that comes down in its last 1 % was hovering.
+const TIME_LIMIT_SHARE: f64 = 0.99;
+
+/// Whether `flight`, flown from `scene` (its swing included), lands just
+/// before its time limit ([`crate::model::flight::Launch::time_limit`]).
+/// On a scene whose balls hover, the longest landing flight is one that
+/// comes down just before the limit: the limit, not the swing, then sets
+/// the range, and a longer limit would give a longer one.
+pub fn lands_at_time_limit(scene: &Scene, flight: &FlightSummary) -> bool {
+    if !flight.landed {
+        return false;
+    }
+    let (_, launch) = model::launch(scene, &Impact::new(scene));
+    flight.flight_time >= TIME_LIMIT_SHARE * launch.time_limit(scene.environment.gravity)
 }
 
 /// Where the search stands.
@@ -132,6 +154,10 @@ struct Objective {
     /// Integration steps taken by all its flights, accepted and rejected.
     flight_steps: u64,
     max_flight_steps: u64,
+    /// The lowest-cost swing flown so far, and whether it landed at its
+    /// time limit: the simplex's best vertex is always the lowest cost
+    /// flown, so this is what [`Optimizer::best`] reports.
+    lowest: Option<(nelder_mead::Point<2>, f64, bool)>,
 }
 
 /// A point of the search in its scaled units.
@@ -152,15 +178,19 @@ impl Objective {
             return f64::INFINITY;
         }
         self.evaluations += 1;
-        let flight =
-            model::simulate(&self.scene.with_swing(undercut, swing_angle), self.options).flight;
+        let scene = self.scene.with_swing(undercut, swing_angle);
+        let flight = model::simulate(&scene, self.options).flight;
         self.flight_steps += u64::from(flight.stats.accepted) + u64::from(flight.stats.rejected);
         // A ball that never lands has no range: that swing is infeasible.
-        if flight.landed && flight.range.is_finite() {
+        let cost = if flight.landed && flight.range.is_finite() {
             -flight.range
         } else {
             f64::INFINITY
+        };
+        if cost < self.lowest.map_or(f64::INFINITY, |l| l.1) {
+            self.lowest = Some((*u, cost, lands_at_time_limit(&scene, &flight)));
         }
+        cost
     }
 }
 
@@ -183,6 +213,7 @@ impl Optimizer {
             evaluations: 0,
             flight_steps: 0,
             max_flight_steps: settings.max_flight_steps,
+            lowest: None,
         };
         let limit = scene.reach();
         let start = scaled(
@@ -305,6 +336,10 @@ impl Optimizer {
             undercut: v.point[0] * UNDERCUT_SCALE,
             swing_angle: v.point[1] * SWING_ANGLE_SCALE,
             range: -v.cost,
+            at_time_limit: self
+                .objective
+                .lowest
+                .is_some_and(|(u, cost, at_limit)| u == v.point && cost == v.cost && at_limit),
         }
     }
 
@@ -344,6 +379,21 @@ pub struct Optimum {
     pub status: Status,
     /// The coarse scan, if the start did not land.
     pub scan: Option<Scan>,
+    /// Whether its flight lands only just inside its time limit: the limit,
+    /// not the swing, sets the range ([`lands_at_time_limit`]).
+    pub at_time_limit: bool,
+}
+
+impl Optimum {
+    /// Its swing and range.
+    pub fn point(&self) -> Point {
+        Point {
+            undercut: self.undercut,
+            swing_angle: self.swing_angle,
+            range: self.range,
+            at_time_limit: self.at_time_limit,
+        }
+    }
 }
 
 /// Runs a search to the end from the scene's own (E, ψ).
@@ -366,6 +416,7 @@ pub fn optimize_from(scene: &Scene, start: (f64, f64), settings: OptimizerSettin
         flight_steps: optimizer.flight_steps(),
         status: optimizer.status(),
         scan: optimizer.scan(),
+        at_time_limit: best.at_time_limit,
     }
 }
 

@@ -145,11 +145,7 @@ mod tests {
         let scene = Scene::default();
         let settings = OptimizerSettings::default();
         let base = optimize(&scene, settings);
-        let optimum = Point {
-            undercut: base.undercut,
-            swing_angle: base.swing_angle,
-            range: base.range,
-        };
+        let optimum = base.point();
         let gain = optimum_gain(&scene, key("bat.speed"), optimum, &|| false).unwrap();
         let faster = nudge(&scene, key("bat.speed"), 1.0).unwrap();
         let direct = optimize(&faster, settings).range - base.range;

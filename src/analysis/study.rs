@@ -330,6 +330,9 @@ pub struct SweepPoint {
     /// Whether any swing tried lands; if none does, there is no optimum and
     /// `range` is −∞.
     pub landed: bool,
+    /// Whether the optimum's flight lands only just inside its time limit:
+    /// the limit, not the swing, sets its range.
+    pub at_time_limit: bool,
 }
 
 /// Why a sweep was refused before any computation.
@@ -447,6 +450,7 @@ pub fn sweep_observed(
                 converged: optimum.converged,
                 status: optimum.status,
                 landed: optimum.landed,
+                at_time_limit: optimum.at_time_limit,
             }
         })
         .collect())

@@ -7,7 +7,7 @@ use super::table::{Align, Cell, Column, Digits, Table, Width};
 use super::{Format, UsageError, pretty};
 use crate::Scene;
 use crate::analysis::landing;
-use crate::analysis::optimum::{OptimizerSettings, Optimum, Scan, Status};
+use crate::analysis::optimum::{OptimizerSettings, Optimum, Scan, Status, lands_at_time_limit};
 use crate::analysis::paper::{Best, best_swing};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study;
@@ -28,13 +28,16 @@ pub(super) fn optimum(scene: &Scene, json: bool, shown: Shown) -> String {
     let Best { optimum, swing } = progress::run(work, |_| best_swing(scene));
     let impact = &swing.impact;
     // No swing landing at all, or (at the margin) the optimum not landing
-    // when flown again at readout precision.
+    // when flown again at readout precision, as every command reports a
+    // flight. Then E and ψ are still the optimiser's best, and its own range
+    // is given beside, named as such.
     let unlanded = if optimum.landed {
         landing::why_not_landed(
             &swing_scene(scene, &optimum),
             &swing.flight,
             Purpose::Readout,
         )
+        .map(|why| not_at_readout_precision(&optimum, &why))
     } else {
         let own = crate::simulate(scene, Purpose::Readout).flight;
         Some(
@@ -46,10 +49,7 @@ pub(super) fn optimum(scene: &Scene, json: bool, shown: Shown) -> String {
     // On a scene whose balls hover, the longest landing flight may be one
     // that comes down just before the flight's time limit: then the limit,
     // not the swing, sets the range.
-    let at_time_limit = landed && {
-        let (_, launch) = crate::model::launch(&swing_scene(scene, &optimum), impact);
-        swing.flight.flight_time >= 0.99 * launch.time_limit(scene.environment.gravity)
-    };
+    let at_time_limit = lands_at_time_limit(&swing_scene(scene, &optimum), &swing.flight);
     if json {
         let mut json = serde_json::json!({
             "undercut": optimum.undercut,
@@ -72,6 +72,9 @@ pub(super) fn optimum(scene: &Scene, json: bool, shown: Shown) -> String {
         }
         if !optimum.landed {
             no_optimum(&mut json);
+        }
+        if optimum.landed && !landed {
+            json["optimizer_range"] = optimum.range.into();
         }
         if let Some(why) = unlanded {
             json["why_not_landed"] = why.into();
@@ -157,6 +160,21 @@ pub(super) fn optimum(scene: &Scene, json: bool, shown: Shown) -> String {
         ));
     }
     labelled(&lines)
+}
+
+/// Why a landing optimum has no range at readout precision: its flight,
+/// flown again at readout precision, `why` (it did not land within its
+/// limit). At the margin of the time limit the two precisions can disagree.
+fn not_at_readout_precision(optimum: &Optimum, why: &str) -> String {
+    let limit = if optimum.at_time_limit {
+        ", just inside the flight's time limit"
+    } else {
+        ""
+    };
+    format!(
+        "the optimiser's best does not land at readout precision ({why}); at the optimiser's own precision it lands at {:.2} m{limit}",
+        optimum.range
+    )
 }
 
 /// `scene` with the optimum's swing.
@@ -379,6 +397,7 @@ pub(super) fn sweep(
                 4,
             ),
             Column::data("evaluations"),
+            Column::data("at_time_limit"),
             Column::data("converged"),
             Column::data("status"),
             Column::data("landed"),
@@ -399,6 +418,7 @@ pub(super) fn sweep(
                 ]
                 .map(|(si, quantity)| Cell::Num(shown.convert(quantity, si)))
                 .to_vec();
+                row.push(Cell::Bool(p.at_time_limit));
                 row.push(Cell::Text(p.converged.to_string()));
                 row.push(Cell::Text(status_name(p.status)));
                 row.push(Cell::Bool(p.landed));
@@ -410,11 +430,7 @@ pub(super) fn sweep(
                         Cell::Text("  (no swing lands: no optimum)".to_owned())
                     }
                     (false, _) => Cell::Text("  (no swing tried lands: no optimum)".to_owned()),
-                    (true, Status::Converged) => Cell::Blank,
-                    (true, Status::OutOfWork) => {
-                        Cell::Text("  (not converged: work limit)".to_owned())
-                    }
-                    (true, _) => Cell::Text("  (not converged: evaluation limit)".to_owned()),
+                    (true, status) => limits(status, p.at_time_limit),
                 });
                 row
             })
@@ -425,6 +441,25 @@ pub(super) fn sweep(
     } else {
         table.text()
     })
+}
+
+/// A landing optimum's notes: the search's limit, if it stopped at one, and
+/// the flight's time limit, if that set its range.
+fn limits(status: Status, at_time_limit: bool) -> Cell {
+    let mut notes = Vec::new();
+    match status {
+        Status::OutOfWork => notes.push("not converged: work limit"),
+        Status::OutOfEvaluations => notes.push("not converged: evaluation limit"),
+        _ => {}
+    }
+    if at_time_limit {
+        notes.push("time limit: the flight's limit, not the swing, sets this range");
+    }
+    if notes.is_empty() {
+        Cell::Blank
+    } else {
+        Cell::Text(format!("  ({})", notes.join("; ")))
+    }
 }
 
 /// The fields of an optimum, null where no swing lands: there is no

@@ -15,8 +15,10 @@ use super::{
     sig, tick_label, wrapped,
 };
 use crate::Scene;
-use crate::analysis::figures::{Cell, Figure, FigureData, trimmed};
-use crate::model::keys::KEYS;
+use crate::analysis::figures::curves::{
+    self, axis_title, current_value, marked_points, panels, x_column, y_title,
+};
+use crate::analysis::figures::{Figure, FigureData, trimmed};
 
 /// A figure's picture: Fig. 7 as the range surface, the others as line
 /// charts. `scene` is the one it was computed for (its input's value is
@@ -26,129 +28,6 @@ pub fn figure_svg(figure: &Figure, scene: &Scene, preset: &str) -> Result<String
         Figure::Table(data) => table_figure_svg(data, scene, preset),
         Figure::Surface(surface) => surface_svg(&SurfacePicture::figure7(surface, scene, preset)),
     }
-}
-
-/// One curve: its legend, its points in row order, and the row of each.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Curve {
-    pub name: String,
-    pub points: Vec<(f64, f64)>,
-    pub rows: Vec<usize>,
-}
-
-/// The panels of figure `number`: the prefixes of each panel's y columns.
-/// The x column is the first but for Fig. 14 (time, one curve per point).
-fn panels(number: u32) -> &'static [&'static str] {
-    match number {
-        3 => &["drag_coefficient"],
-        4 => &["lift_coefficient"],
-        5 => &["launch_spin_mu"],
-        6 => &["launch_angle_mu"],
-        8..=12 => &["range", "undercut", "swing_angle"],
-        14 => &["drag_coefficient"],
-        // Fig. 13: range against E.
-        _ => &["range"],
-    }
-}
-
-/// The x column of `data`.
-fn x_column(data: &FigureData) -> usize {
-    let key = if data.number == 14 { "time" } else { "" };
-    data.columns.iter().position(|c| c.key == key).unwrap_or(0)
-}
-
-fn number(row: &[Cell], k: usize) -> Option<f64> {
-    match row[k] {
-        Cell::Num(v) if v.is_finite() => Some(v),
-        _ => None,
-    }
-}
-
-/// The curves whose y column starts with `prefix`, against the x column;
-/// Fig. 14's rows split into one curve per flight (A, B). Rows without both
-/// numbers are left out.
-pub fn curves(data: &FigureData, prefix: &str) -> Vec<Curve> {
-    let x = x_column(data);
-    let split = (data.number == 14)
-        .then(|| data.columns.iter().position(|c| c.key == "point"))
-        .flatten();
-    let mut curves: Vec<Curve> = Vec::new();
-    for (k, column) in data.columns.iter().enumerate() {
-        if k == x || !column.key.starts_with(prefix) {
-            continue;
-        }
-        // The legend: what tells the curves apart (μ = 0.35), else the heading.
-        let name = column
-            .head
-            .rsplit_once(") ")
-            .map_or(column.head.clone(), |(_, rest)| rest.to_owned());
-        let first = curves.len();
-        for (r, row) in data.rows.iter().enumerate() {
-            let (Some(px), Some(py)) = (number(row, x), number(row, k)) else {
-                continue;
-            };
-            let label = match split.map(|s| &row[s]) {
-                Some(Cell::Text(t)) => format!("{} {t}", axis_title(&column.head)),
-                _ => name.clone(),
-            };
-            match curves[first..].iter_mut().find(|c| c.name == label) {
-                Some(curve) => {
-                    curve.points.push((px, py));
-                    curve.rows.push(r);
-                }
-                None => curves.push(Curve {
-                    name: label,
-                    points: vec![(px, py)],
-                    rows: vec![r],
-                }),
-            }
-        }
-    }
-    curves
-}
-
-/// A column's heading up to its unit: `ω_bf (rad/s)`.
-fn axis_title(head: &str) -> String {
-    head.find(')')
-        .map_or(head.to_owned(), |end| head[..=end].to_owned())
-}
-
-/// The marked rows of `data`: (row, label).
-fn marks(data: &FigureData) -> Vec<(usize, String)> {
-    let Some(m) = data.columns.iter().position(|c| c.key == "mark") else {
-        return Vec::new();
-    };
-    data.rows
-        .iter()
-        .enumerate()
-        .filter_map(|(r, row)| match &row[m] {
-            Cell::Text(t) if !t.is_empty() => Some((r, t.clone())),
-            _ => None,
-        })
-        .collect()
-}
-
-/// Whether a mark's words name `curve` ("cusp μ = 0.35" names "μ = 0.35"
-/// but not "μ = 0.3").
-fn names(mark: &str, curve: &str) -> bool {
-    // The columns write "μ=0.35", the marks "μ = 0.35".
-    let (mark, curve) = (mark.replace(' ', ""), curve.replace(' ', ""));
-    mark.match_indices(&curve).any(|(at, _)| {
-        !mark[at + curve.len()..]
-            .chars()
-            .next()
-            .is_some_and(|c| c.is_ascii_digit() || c == '.')
-    })
-}
-
-/// The current value of the input the x column sweeps, if it is an input.
-fn current_value(data: &FigureData, scene: &Scene) -> Option<f64> {
-    let x_key = &data.columns[x_column(data)].key;
-    KEYS.iter()
-        .find(|key| {
-            key.name.replace('.', "_") == *x_key || key.name.ends_with(&format!(".{x_key}"))
-        })
-        .map(|key| (key.get)(scene))
 }
 
 /// The lines under the chart: the paper's numbers beside ours, then the notes.
@@ -226,9 +105,8 @@ pub fn table_figure_svg(
                 .map_err(drawn)?;
         }
         let now = current_value(data, scene);
-        let marks = marks(data);
         for (panel, prefix) in body.split_evenly((prefixes.len(), 1)).iter().zip(prefixes) {
-            draw_panel(panel, data, prefix, now, &marks)?;
+            draw_panel(panel, data, prefix, now)?;
         }
         root.present().map_err(drawn)?;
     }
@@ -241,18 +119,13 @@ fn draw_panel(
     data: &FigureData,
     prefix: &str,
     now: Option<f64>,
-    marks: &[(usize, String)],
 ) -> Result<(), PictureError> {
-    let curves = curves(data, prefix);
+    let curves = curves::curves(data, prefix);
     let points = || curves.iter().flat_map(|c| c.points.iter());
     let (x0, x1) = padded(points().map(|p| p.0), 0.0);
     let (y0, y1) = padded(points().map(|p| p.1), 0.06);
     let x_head = axis_title(&data.columns[x_column(data)].head);
-    let y_head = data
-        .columns
-        .iter()
-        .find(|c| c.key.starts_with(prefix))
-        .map_or(String::new(), |c| axis_title(&c.head));
+    let y_head = y_title(data, prefix);
     let mut chart = ChartBuilder::on(area)
         .margin_left(12)
         .margin_right(24)
@@ -311,32 +184,20 @@ fn draw_panel(
     let (xs, ys) = chart.plotting_area().get_pixel_range();
     let plot = [xs.start, ys.start, xs.end, ys.end];
     let mut labels = Labels::new();
-    // Each mark on the curves it names, or on every curve if it names none.
-    for (row, label) in marks {
-        let named: Vec<&Curve> = curves.iter().filter(|c| names(label, &c.name)).collect();
-        let on = if named.is_empty() {
-            curves.iter().collect()
-        } else {
-            named
-        };
-        for curve in on {
-            let Some(k) = curve.rows.iter().position(|r| r == row) else {
-                continue;
-            };
-            let point = curve.points[k];
-            let (offset, right) = labels.place(chart.backend_coord(&point), label, plot);
-            let style = (FONT, Labels::SIZE).into_font().color(&MARK).pos(Pos::new(
-                if right { HPos::Right } else { HPos::Left },
-                VPos::Top,
-            ));
-            chart
-                .draw_series(std::iter::once(
-                    EmptyElement::at(point)
-                        + Circle::new((0, 0), 5, MARK.stroke_width(2))
-                        + Text::new(label.clone(), offset, style),
-                ))
-                .map_err(drawn)?;
-        }
+    // Each mark on the curve it names, or on every curve if it names none.
+    for mark in marked_points(data, &curves) {
+        let (offset, right) = labels.place(chart.backend_coord(&mark.point), &mark.label, plot);
+        let style = (FONT, Labels::SIZE).into_font().color(&MARK).pos(Pos::new(
+            if right { HPos::Right } else { HPos::Left },
+            VPos::Top,
+        ));
+        chart
+            .draw_series(std::iter::once(
+                EmptyElement::at(mark.point)
+                    + Circle::new((0, 0), 5, MARK.stroke_width(2))
+                    + Text::new(mark.label, offset, style),
+            ))
+            .map_err(drawn)?;
     }
     if curves.len() > 1 || now.is_some_and(|v| (x0..=x1).contains(&v)) {
         let pixels: Vec<(i32, i32)> = points().map(|p| chart.backend_coord(p)).collect();

@@ -166,6 +166,9 @@ pub struct App {
     pub tab: Tab,
     /// The last thing worth telling the user, and whether it is an error.
     pub message: Option<(String, bool)>,
+    /// What `x` wrote, or why not, and whether it is an error: shown in the
+    /// status line (the full width) until the next key.
+    pub export_message: Option<(String, bool)>,
     pub color: ColorMode,
     pub size: Rect,
     /// The current scene's launch, impact (a swing's) and flight at the
@@ -246,6 +249,7 @@ impl App {
             mode: Mode::Normal,
             tab: Tab::Flight,
             message: None,
+            export_message: None,
             color,
             size,
             flown,
@@ -516,6 +520,7 @@ impl App {
             Mode::Normal => {
                 // A message lasts until the next key (which may set a new one).
                 self.message = None;
+                self.export_message = None;
                 if let Some(action) = action {
                     self.act(action);
                 }

@@ -6,6 +6,7 @@
 //! explorer can draw them from the same data.
 
 mod aero;
+pub mod curves;
 mod flight;
 mod impact;
 mod optimum;

@@ -86,6 +86,9 @@ pub(super) fn sweep_figure(
             } else if !p.converged {
                 mark.push("not converged");
             }
+            if p.at_time_limit {
+                mark.push("lands at the flight's time limit");
+            }
             let numbers = [p.value, p.undercut, p.swing_angle, p.range];
             // Without a landing swing there is no optimum: only the value.
             let row = [&numbers[..], &launch(p)].concat();

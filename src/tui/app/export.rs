@@ -1,6 +1,7 @@
 //! Key `x`: the chart in view written as SVG to a fresh file in the current
 //! folder (`homerun-trajectory-1.svg`, `-2`, …; never over an existing
-//! file), with where it went, or why not, in the status line. The trajectory
+//! file), with where it went, or why not, in the status line (the screen's
+//! full width, where a path fits best; until the next key). The trajectory
 //! for tabs 1 and 3, the range surface for tab 2, the figure for tab 4. A
 //! write of ~50 KB is done at once, on the UI thread.
 
@@ -25,21 +26,38 @@ impl App {
     pub(super) fn export(&mut self) {
         // The folder in full, so that the message says where to look.
         let here = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
-        self.message = Some(match self.export_to(&here) {
-            Ok(path) => (format!("wrote {}", path.display()), false),
+        self.export_in(&here);
+    }
+
+    /// Writes the chart in view to a fresh file in `dir`, and says in the
+    /// status line where it went, or why nothing was written.
+    pub fn export_in(&mut self, dir: &Path) {
+        self.export_message = Some(match self.export_to(dir) {
+            Ok(path) => (format!("x: wrote {}", path.display()), false),
             Err(why) => (format!("x: no SVG written: {why}"), true),
         });
     }
 
     /// Writes the chart in view to a fresh file in `dir`: its path, or why not.
     pub fn export_to(&self, dir: &Path) -> Result<PathBuf, String> {
+        // A folder that is not there is named as such, not as a file.
+        if !dir.is_dir() {
+            return Err(format!("no such folder: {}", dir.display()));
+        }
         let (kind, svg) = self.chart_svg()?;
         let svg = svg.map_err(|e: PictureError| e.to_string())?;
         let path = fresh_path(dir, &kind).ok_or_else(|| {
             format!("{MAX_NUMBER} homerun-{kind}-N.svg files already in the folder")
         })?;
         crate::atomic_file::write(&path, svg.as_bytes())
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+            // The reason first and the path last, so that a narrow status line
+            // cuts the path's start, not the reason or the file's name.
+            .map_err(|e| {
+                let reason = e.to_string();
+                // "(os error 2)" tells a user nothing the words do not.
+                let reason = reason.split(" (os error").next().unwrap_or_default();
+                format!("{reason}, writing {}", path.display())
+            })?;
         Ok(path)
     }
 

@@ -10,91 +10,28 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Chart, Paragraph};
 
 use super::chart;
-use crate::analysis::figures::{Cell, Column, FigureData, trimmed};
-use crate::model::keys::{KEYS, Key};
+use crate::analysis::figures::curves::{
+    Curve, axis_title, column_input, current_value, curves, marked_points, panels, x_column,
+};
+use crate::analysis::figures::{Column, FigureData, trimmed};
 use crate::tui::app::{AERO_FIGURES, App, FIGURES};
 use crate::tui::theme::{self, dim, title_style};
 use crate::units::{Quantity, Unit};
 
-/// What to plot of figure `number`: its x column, the prefixes of its y
-/// columns, and the column that splits the rows into curves, if any.
-fn spec(number: u32) -> (&'static str, &'static [&'static str], Option<&'static str>) {
-    match number {
-        3 => ("reynolds", &["drag_coefficient"], None),
-        4 => ("spin_parameter", &["lift_coefficient"], None),
-        5 => ("undercut", &["launch_spin_mu"], None),
-        6 => ("undercut", &["launch_angle_mu"], None),
-        14 => ("time", &["drag_coefficient"], Some("point")),
-        // Figs. 8–13: the range against the swept input.
-        _ => ("", &["range"], None),
-    }
+/// The curves of `data` the explorer draws (its main panel, as
+/// [`panels`] gives it), with the x column's index.
+pub fn chart_curves(data: &FigureData) -> (usize, Vec<Curve>) {
+    (x_column(data), curves(data, panels(data.number)[0]))
 }
 
-/// A curve: its legend and points.
-type Curve = (String, Vec<(f64, f64)>);
-
-/// The curves of `data` to draw, with the x column's index.
-pub fn curves(data: &FigureData) -> (usize, Vec<Curve>) {
-    let (x_key, prefixes, split) = spec(data.number);
-    let x = data
-        .columns
-        .iter()
-        .position(|c| c.key == x_key)
-        .unwrap_or(0);
-    let num = |row: &[Cell], k: usize| match row[k] {
-        Cell::Num(v) if v.is_finite() => Some(v),
-        _ => None,
-    };
-    let split = split.and_then(|key| data.columns.iter().position(|c| c.key == key));
-    let mut curves = Vec::new();
-    for (k, column) in data.columns.iter().enumerate() {
-        if !prefixes.iter().any(|p| column.key.starts_with(p)) {
-            continue;
-        }
-        // The legend: what tells curves apart (μ = 0.35), else the heading.
-        let name = column
-            .head
-            .rsplit_once(") ")
-            .map_or(column.head.clone(), |(_, rest)| rest.to_owned());
-        let mut groups: Vec<Curve> = Vec::new();
-        for row in &data.rows {
-            let (Some(px), Some(py)) = (num(row, x), num(row, k)) else {
-                continue;
-            };
-            let label = match split.map(|s| &row[s]) {
-                Some(Cell::Text(t)) => t.clone(),
-                _ => name.clone(),
-            };
-            match groups.iter_mut().find(|(l, _)| *l == label) {
-                Some((_, points)) => points.push((px, py)),
-                None => groups.push((label, vec![(px, py)])),
-            }
-        }
-        curves.extend(groups);
-    }
-    (x, curves)
-}
-
-/// `value` to `digits` significant digits.
-fn sig(value: f64, digits: i32) -> String {
-    if value == 0.0 || !value.is_finite() {
-        return format!("{value}");
-    }
-    let decimals = (digits - 1 - value.abs().log10().floor() as i32).clamp(0, 6) as usize;
-    format!("{value:.decimals$}")
-}
-
-/// A column's heading up to its unit: `ω_bf (rad/s)`.
-fn axis_title(head: &str) -> String {
-    head.find(')')
-        .map_or(head.to_owned(), |end| head[..=end].to_owned())
-}
-
-/// The input a figure's column sweeps, if it is one (`bat_speed`, `undercut`).
-fn column_key(column_key: &str) -> Option<&'static Key> {
-    KEYS.iter().find(|key| {
-        key.name.replace('.', "_") == column_key || key.name.ends_with(&format!(".{column_key}"))
-    })
+/// The paper's marked points as the explorer draws them: each on the curve
+/// it names ([`marked_points`]).
+pub fn chart_marks(data: &FigureData) -> Vec<(f64, f64)> {
+    let (_, curves) = chart_curves(data);
+    marked_points(data, &curves)
+        .into_iter()
+        .map(|m| m.point)
+        .collect()
 }
 
 /// The unit a column is drawn in, and its axis title in that unit: the
@@ -109,7 +46,7 @@ fn column_unit(app: &App, column: &Column) -> (Unit, String) {
         .split(',')
         .next()
         .unwrap_or("");
-    let quantity = match column_key(&column.key) {
+    let quantity = match column_input(&column.key) {
         Some(key) => key.quantity(),
         None => match si {
             "m" => Quantity::Distance,
@@ -127,6 +64,15 @@ fn column_unit(app: &App, column: &Column) -> (Unit, String) {
         .rsplit_once(" (")
         .map_or(title.as_str(), |(name, _)| name);
     (unit, format!("{name} ({})", unit.symbol))
+}
+
+/// `value` to `digits` significant digits.
+fn sig(value: f64, digits: i32) -> String {
+    if value == 0.0 || !value.is_finite() {
+        return format!("{value}");
+    }
+    let decimals = (digits - 1 - value.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    format!("{value:.decimals$}")
 }
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
@@ -180,25 +126,26 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
         Some(Ok(data)) => data,
     };
-    let (x, curves) = curves(data);
+    let (x, curves) = chart_curves(data);
     // In the units shown: the swept input's and the curves' (range in ft).
     let (x_unit, x_title) = column_unit(app, &data.columns[x]);
-    let y_column = data
+    let panel = panels(data.number)[0];
+    let (y_unit, y_head) = data
         .columns
         .iter()
-        .find(|c| spec(data.number).1.iter().any(|p| c.key.starts_with(p)));
-    let (y_unit, y_title) = y_column.map_or(
-        (Quantity::Unchanged.unit(app.units, ""), String::new()),
-        |c| column_unit(app, c),
-    );
+        .find(|c| c.key.starts_with(panel))
+        .map_or(
+            (Quantity::Unchanged.unit(app.units, ""), String::new()),
+            |c| column_unit(app, c),
+        );
+    let shown = |(px, py): (f64, f64)| (x_unit.show(px), y_unit.show(py));
+    // The paper's marked points (A, B, Dryden's point…), each on its curve.
+    let marks: Vec<(f64, f64)> = chart_marks(data).into_iter().map(shown).collect();
     let curves: Vec<Curve> = curves
         .into_iter()
-        .map(|(name, points)| {
-            let points = points
-                .into_iter()
-                .map(|(px, py)| (x_unit.show(px), y_unit.show(py)))
-                .collect();
-            (name, points)
+        .map(|curve| Curve {
+            points: curve.points.iter().copied().map(shown).collect(),
+            ..curve
         })
         .collect();
 
@@ -230,7 +177,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     );
     frame.render_widget(Paragraph::new(notes), below);
 
-    let points = curves.iter().flat_map(|(_, p)| p.iter());
+    let points = curves.iter().flat_map(|c| c.points.iter());
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for &(px, py) in points {
         (x0, x1, y0, y1) = (x0.min(px), x1.max(px), y0.min(py), y1.max(py));
@@ -242,33 +189,18 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let (y0, y1) = (y0 - pad, y1 + pad);
 
     // The current input's value, where the x column is an input.
-    let x_key = &data.columns[x].key;
-    let now = column_key(x_key)
-        .map(|key| x_unit.show((key.get)(&app.scene)))
+    let now = current_value(data, &app.scene)
+        .map(|v| x_unit.show(v))
         .filter(|v| (x0..=x1).contains(v));
     let now_line = now.map_or(Vec::new(), |v| vec![(v, y0), (v, y1)]);
-    // The paper's marked points (A, B, Dryden's point…) on the first curve.
-    let marks: Vec<(f64, f64)> = match (
-        data.columns.iter().position(|c| c.key == "mark"),
-        curves.first(),
-    ) {
-        (Some(m), Some((_, first))) if first.len() == data.rows.len() => data
-            .rows
-            .iter()
-            .zip(first)
-            .filter(|(row, _)| matches!(&row[m], Cell::Text(t) if !t.is_empty()))
-            .map(|(_, &p)| p)
-            .collect(),
-        _ => Vec::new(),
-    };
 
     let mut datasets = Vec::new();
     let mut legend = Vec::new();
-    for (k, (name, points)) in curves.iter().enumerate() {
+    for (k, curve) in curves.iter().enumerate() {
         let style = theme::FIGURE_CURVES[k % theme::FIGURE_CURVES.len()];
-        datasets.push(chart::line(style, points));
+        datasets.push(chart::line(style, &curve.points));
         if curves.len() > 1 {
-            legend.push(Span::styled(format!("━ {name} "), style));
+            legend.push(Span::styled(format!("━ {} ", curve.name), style));
         }
     }
     if !now_line.is_empty() {
@@ -279,7 +211,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let y_head = if curves.is_empty() {
         String::new()
     } else {
-        y_title
+        y_head
     };
     let labels = |a: f64, b: f64| [a, 0.5 * (a + b), b].map(|v| sig(v, 3));
     let chart = Chart::new(datasets)

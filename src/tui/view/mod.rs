@@ -97,8 +97,15 @@ fn swing_only(frame: &mut Frame, area: Rect, title: &str, what: &str) {
     );
 }
 
-/// Which scene is shown, what is being computed and how fresh each result is.
+/// Which scene is shown, what is being computed and how fresh each result
+/// is; or, until the next key, what `x` wrote or why not.
 fn status_line(frame: &mut Frame, area: Rect, app: &App) {
+    if let Some((text, error)) = &app.export_message {
+        let style = if *error { theme::ERROR } else { theme::GOOD };
+        let text = fitted(text, area.width as usize);
+        frame.render_widget(Paragraph::new(Line::styled(text, style)), area);
+        return;
+    }
     let mut spans = Vec::new();
     spans.push(Span::styled(
         if app.is_swing() {
@@ -156,4 +163,43 @@ fn swing_status(spans: &mut Vec<Span<'static>>, app: &App) {
         ),
         None => Span::styled("· surface… ", theme::BUSY),
     });
+}
+
+/// `text` in `width` columns: a path too long loses its start, so that the
+/// file's name and the reason after it stay ("x: wrote …/dir/name.svg").
+fn fitted(text: &str, width: usize) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    if chars.len() <= width {
+        return text.to_owned();
+    }
+    let cut_end = || chars[..width.saturating_sub(1)].iter().collect::<String>() + "…";
+    // Without a path, or with no room for one, the end goes.
+    let Some(keep_head) = chars.iter().position(|&c| c == '/') else {
+        return cut_end();
+    };
+    let tail = width.saturating_sub(keep_head + 1);
+    if tail == 0 {
+        return cut_end();
+    }
+    let head: String = chars[..keep_head].iter().collect();
+    let end: String = chars[chars.len() - tail..].iter().collect();
+    format!("{head}…{end}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fitted;
+
+    #[test]
+    fn a_long_path_loses_its_start_and_keeps_its_name() {
+        assert_eq!(fitted("x: wrote /a/b.svg", 80), "x: wrote /a/b.svg");
+        let long = format!("x: wrote /{}/homerun-figure8-1.svg", "d".repeat(100));
+        let fit = fitted(&long, 40);
+        assert_eq!(fit.chars().count(), 40);
+        assert!(
+            fit.starts_with("x: wrote …") && fit.ends_with("/homerun-figure8-1.svg"),
+            "{fit}"
+        );
+        assert_eq!(fitted("x: no SVG written: a reason", 10), "x: no SVG…");
+    }
 }

@@ -237,24 +237,49 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         ])),
         Some(o) => {
             let style = if o.done { theme::GOOD } else { theme::BUSY };
-            let state = match (o.done, o.status) {
+            let mut state = match (o.done, o.status) {
                 (false, _) => " (searching)",
                 (true, Status::OutOfWork) => " (work limit)",
                 (true, Status::OutOfEvaluations) => " (eval. limit)",
                 (true, _) => "",
-            };
-            lines.push(Line::from(vec![
-                label("optimum"),
-                Span::styled(
-                    format!(
-                        "E {}  ψ {}  {:.2} {u}{state}",
-                        undercut_text(app, o.best.undercut, false),
-                        angle_text(app, o.best.swing_angle, false),
-                        d(o.best.range)
-                    ),
-                    style,
-                ),
-            ]));
+            }
+            .to_owned();
+            // A hovering ball's best lands just before the flight's time
+            // limit: the limit, not the swing, sets that range.
+            if o.best.at_time_limit {
+                state.push_str(" (time limit)");
+            }
+            let optimum = format!(
+                "E {}  ψ {}  {:.2} {u}",
+                undercut_text(app, o.best.undercut, false),
+                angle_text(app, o.best.swing_angle, false),
+                d(o.best.range)
+            );
+            // Tags that do not fit take a line of their own (at 80×24 the
+            // impulses', which tab 3 shows), rather than wrap mid-tag.
+            if 9 + Span::raw(format!("{optimum}{state}")).width() <= inner.width as usize {
+                lines.push(Line::from(vec![
+                    label("optimum"),
+                    Span::styled(optimum + &state, style),
+                ]));
+            } else {
+                lines.push(Line::from(vec![
+                    label("optimum"),
+                    Span::styled(optimum, style),
+                ]));
+                lines.push(Line::from(vec![
+                    label(""),
+                    Span::styled(state.trim().to_owned(), style),
+                ]));
+                // Still to come: you − opt and the fence.
+                if (inner.height as usize) < lines.len() + 2 {
+                    lines.retain(|l| {
+                        l.spans
+                            .first()
+                            .is_none_or(|s| s.content.trim() != "impulse")
+                    });
+                }
+            }
             let range = if flight.landed {
                 format!("{:+.2} {u}", d(flight.range - o.best.range))
             } else {
