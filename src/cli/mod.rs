@@ -55,7 +55,8 @@ pub struct Cli {
     pub presets_dir: Option<PathBuf>,
     /// Units of the text and CSV printed: si (m, m/s, rad, rad/s, °C) or imperial
     /// (ft, in, mph, °, rpm, °F). JSON, --set and presets are always SI; the numbers
-    /// of --from/--to, --undercut and --swing-angle are in these units.
+    /// of --from/--to, --undercut and --swing-angle are in these units. The
+    /// explorer starts in them (its `u` switches).
     #[arg(
         long,
         global = true,
