@@ -379,7 +379,7 @@ fn a_click_on_the_heatmap_moves_the_swing_to_that_cells_centre() {
         let mut app = app(w, h, None);
         settle(&mut app);
         key(&mut app, KeyCode::Char(tab));
-        let area = layout(app.size, app.tab).heatmap.unwrap();
+        let area = layout(app.size, app.tab, true).heatmap.unwrap();
         let plot = heatmap_plot(area);
         // A cell a third of the way across and two thirds down.
         let (column, row) = (plot.width / 3, 2 * plot.height / 3);

@@ -418,7 +418,7 @@ impl App {
     }
 
     fn plot_path(&self, scene: &Scene) -> Vec<(f64, f64)> {
-        let samples = trajectory_samples(self.size);
+        let samples = trajectory_samples(self.size, self.is_swing());
         let (flight, launch, _, _) = scene_start(scene);
         let (_, points) =
             flight::trajectory(&flight, &launch, &Purpose::Plot.flight_options(), samples);

@@ -86,10 +86,13 @@ fn inputs_height() -> u16 {
     (1 + swing_keys().count() + 2 + groups.len() + 3 + 2) as u16
 }
 
-pub fn layout(area: Rect, tab: Tab) -> Panes {
+/// The panes at `area` for the tab chosen, for a swing (`swing`) or a
+/// batted ball, which has no range surface nor impact: on a screen that
+/// shows everything, the trajectory and the figure take their room.
+pub fn layout(area: Rect, tab: Tab, swing: bool) -> Panes {
     let [body, status] = Layout::vertical([Constraint::Fill(1), Constraint::Length(1)]).areas(area);
     if is_big(area) {
-        return big_layout(body, status);
+        return big_layout(body, status, swing);
     }
     let inputs_width = if is_wide(area) { 44 } else { 30 };
     let [inputs, right] =
@@ -104,6 +107,12 @@ pub fn layout(area: Rect, tab: Tab) -> Panes {
             Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
         let [trajectory, readout] =
             Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(top);
+        if !swing {
+            panes.trajectory = Some(trajectory);
+            panes.readout = Some(readout);
+            panes.figure = Some(bottom);
+            return panes;
+        }
         let [heatmap, other] =
             Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
         panes.trajectory = Some(trajectory);
@@ -137,12 +146,27 @@ pub fn layout(area: Rect, tab: Tab) -> Panes {
 
 /// Everything at once: the inputs over the readout at the left, and a 2×2
 /// grid of trajectory, figure, range surface and impact.
-fn big_layout(body: Rect, status: Rect) -> Panes {
+fn big_layout(body: Rect, status: Rect, swing: bool) -> Panes {
     let [left, right] =
         Layout::horizontal([Constraint::Length(BIG_INPUTS_WIDTH), Constraint::Fill(1)]).areas(body);
     let inputs_height = inputs_height().min(body.height.saturating_sub(BIG_READOUT_MIN));
     let [inputs, readout] =
         Layout::vertical([Constraint::Length(inputs_height), Constraint::Fill(1)]).areas(left);
+    if !swing {
+        // A batted ball: the trajectory and the aero figure, full height.
+        let [trajectory, figure] =
+            Layout::horizontal([Constraint::Percentage(60), Constraint::Fill(1)]).areas(right);
+        return Panes {
+            inputs,
+            tabs: None,
+            trajectory: Some(trajectory),
+            readout: Some(readout),
+            heatmap: None,
+            impact: None,
+            figure: Some(figure),
+            status,
+        };
+    }
     let [top, bottom] =
         Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
     let [trajectory, figure] =
@@ -162,8 +186,10 @@ fn big_layout(body: Rect, status: Rect) -> Panes {
 }
 
 /// Trajectory samples for a screen: two per braille column of the plot.
-pub fn trajectory_samples(size: Rect) -> usize {
-    let width = layout(size, Tab::Flight).trajectory.map_or(80, |r| r.width);
+pub fn trajectory_samples(size: Rect, swing: bool) -> usize {
+    let width = layout(size, Tab::Flight, swing)
+        .trajectory
+        .map_or(80, |r| r.width);
     (2 * width as usize).clamp(16, 800)
 }
 
@@ -186,7 +212,7 @@ pub fn heatmap_plot(area: Rect) -> Rect {
 /// The heatmap's resolution in (columns, rows) of pixels: one column per
 /// cell, two rows per line (half blocks).
 pub fn heatmap_resolution(size: Rect) -> (usize, usize) {
-    let area = layout(size, Tab::Surface).heatmap.unwrap_or(size);
+    let area = layout(size, Tab::Surface, true).heatmap.unwrap_or(size);
     let plot = heatmap_plot(area);
     (
         (plot.width as usize).clamp(2, 200),

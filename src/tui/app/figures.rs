@@ -64,7 +64,9 @@ impl App {
 
     /// Whether the figure's pane is on screen.
     pub fn figure_visible(&self) -> bool {
-        layout(self.size, self.tab).figure.is_some()
+        layout(self.size, self.tab, self.is_swing())
+            .figure
+            .is_some()
     }
 
     /// Whether the figure shown is the one for the current inputs.

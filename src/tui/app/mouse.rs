@@ -14,7 +14,7 @@ impl App {
             return;
         }
         let (x, y) = (event.column, event.row);
-        let panes = layout::layout(self.size, self.tab);
+        let panes = layout::layout(self.size, self.tab, self.is_swing());
         match event.kind {
             MouseEventKind::Down(_) => {
                 if let Some(field) = self.input_at(panes.inputs, x, y) {

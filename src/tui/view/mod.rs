@@ -34,7 +34,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
         );
         return;
     }
-    let panes = layout(area, app.tab);
+    let panes = layout(area, app.tab, app.is_swing());
     inputs::draw(frame, panes.inputs, app);
     if let Some(tabs) = panes.tabs {
         let selected = Tab::ALL.iter().position(|t| *t == app.tab).unwrap_or(0);
