@@ -117,7 +117,8 @@ fn agrees(shown: &[String], printed: &[&str]) -> bool {
             Some(start) => p.starts_with(start.trim_end()),
             None => p == line,
         };
-        if !same && !(line.contains("/.config/homerun") && !p.is_empty()) {
+        let a_users_folder = line.contains("/.config/homerun") && !p.is_empty();
+        if !(same || a_users_folder) {
             return false;
         }
     }
