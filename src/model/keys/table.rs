@@ -55,6 +55,26 @@ macro_rules! atmosphere_key {
     };
 }
 
+/// A key of the launch: reads the launch in force (the swing's impact's,
+/// on a swing scene), and writing it makes the scene a batted ball.
+macro_rules! launch_key {
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, $field:ident) => {
+        key!(
+            $name,
+            $symbol,
+            $unit,
+            $desc,
+            $bounds,
+            $step,
+            get: |s| s.batted_ball().$field,
+            set: |s, v| {
+                s.launch.$field = Some(v);
+                s.kind = SceneKind::BattedBall;
+            }
+        )
+    };
+}
+
 /// Every numeric input. Bounds are what the model can meaningfully take:
 /// Eq. (19) keeps e* in (0, 1) for approach speeds below about 240 m/s, so
 /// speeds stop at 100 m/s each.
@@ -316,49 +336,37 @@ pub const LAUNCH_KEYS: &[Key] = &[
     // where air stops behaving as incompressible (no drag model here knows
     // compressibility) and nearly twice the fastest batted ball measured
     // (122 mph, 54.6 m/s).
-    key!(
+    launch_key!(
         "launch.speed",
         "V̂_bf",
         "m/s",
-        "batted-ball launch speed (setting a launch key flies a batted ball: no pitch, no impact)",
+        "launch speed of a batted ball (no pitch, no impact)",
         Bounds::positive(100.0),
         0.5,
-        get: |s| s.batted_ball().speed,
-        set: |s, v| {
-            s.launch.speed = Some(v);
-            s.kind = SceneKind::BattedBall;
-        }
+        speed
     ),
     // Open at ±π/2: straight up or down is no batted ball to carry, and
     // past it the ball leaves backwards.
-    key!(
+    launch_key!(
         "launch.angle",
         "ζ",
         "rad",
         "launch angle above the horizontal",
         Bounds::open(-FRAC_PI_2, FRAC_PI_2),
         0.01,
-        get: |s| s.batted_ball().angle,
-        set: |s, v| {
-            s.launch.angle = Some(v);
-            s.kind = SceneKind::BattedBall;
-        }
+        angle
     ),
     // As the pitch's spin: the impact's spins reach ~1000 rad/s at the
     // cusps of Fig. 5, and at 1000 rad/s (9550 rpm) the spin parameter
     // passes 1 at 37 m/s, beyond the data both lift fits rest on.
-    key!(
+    launch_key!(
         "launch.spin",
         "ω_bf",
         "rad/s",
         "launch spin, backspin positive",
         Bounds::closed(-1000.0, 1000.0),
         10.0,
-        get: |s| s.batted_ball().spin,
-        set: |s, v| {
-            s.launch.spin = Some(v);
-            s.kind = SceneKind::BattedBall;
-        }
+        spin
     ),
 ];
 
