@@ -304,7 +304,10 @@ pub(super) fn keys(shown: Shown) -> String {
     let text = |s: &str| Cell::Text(s.to_owned());
     // In SI as it always was; otherwise converted and shortened.
     let value = |unit: Unit, si: f64| {
-        if unit.is_identity() {
+        if unit.is_identity() && si.to_string().len() > 12 {
+            // A derived value (the launch keys read the impact's): six decimals.
+            Cell::Text(crate::analysis::figures::trimmed(si))
+        } else if unit.is_identity() {
             Cell::Num(si)
         } else {
             Cell::Text(short(unit.show(si)))
