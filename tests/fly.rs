@@ -427,3 +427,47 @@ fn fly_at_hits_launch_prints_hits_flight() {
     // Table II's fastball: 134.70 m.
     assert!((fly["flight"]["range"].as_f64().unwrap() - 134.699).abs() < 1e-3);
 }
+
+#[test]
+fn a_header_without_inputs_is_refused_and_long_values_are_read_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    // Separated by `;`: no column is an input, so every row would have
+    // flown the preset's launch. Refused before any row, status 2.
+    let (status, out, err) = batch(dir.path(), "launch_speed;launch_angle\n103;28\n", &[]);
+    assert_eq!(status, Some(2), "{err}");
+    assert!(out.is_empty(), "{out}");
+    assert!(
+        err.contains("line 1 (the header): no column is an input")
+            && err.contains("`launch_speed;launch_angle`"),
+        "{err}"
+    );
+    // A key's value longer than an error's quote is parsed whole: 15 °C
+    // written with 100 zeros flies as 15 °C, and a bad one is quoted cut.
+    let long = format!("15.{}", "0".repeat(100));
+    let input = format!(
+        "launch.speed,launch.angle,launch.spin,environment.temperature\n\
+         40,0.5,200,{long}\n40,0.5,200,15\n40,0.5,200,{long}x\n40,0.5\n"
+    );
+    let (status, out, err) = batch(dir.path(), &input, &[]);
+    assert_eq!(status, Some(1), "{err}");
+    let rows: Vec<&str> = out.lines().skip(1).collect();
+    assert_eq!(rows.len(), 2, "{out}\n{err}");
+    assert_eq!(
+        rows[0].split_once(',').unwrap().1,
+        rows[1].split_once(',').unwrap().1
+    );
+    assert!(
+        err.contains("line 4: environment.temperature = \"15.000"),
+        "{err}"
+    );
+    assert!(err.contains("…\": not a number"), "{err}");
+    assert!(
+        err.contains("line 5: 2 fields where the header has 4"),
+        "{err}"
+    );
+    let (_, _, err) = batch(dir.path(), "launch.speed,launch.angle\n40\n", &[]);
+    assert!(
+        err.contains("line 2: 1 field where the header has 2"),
+        "{err}"
+    );
+}

@@ -13,8 +13,9 @@ use super::fly::{FlownToFence, fence_of};
 use super::progress::{self, Progress, Work};
 use super::shown::Shown;
 use crate::Scene;
-use crate::model::keys::{DRAG_KEY, InputBatch, LIFT_KEY};
-use crate::preset::{FIELD_KEYS, Fence, Preset, escape_cut};
+use crate::model::aero::UnknownModel;
+use crate::model::keys::{DRAG_KEY, InputBatch, InputError, LIFT_KEY};
+use crate::preset::{FIELD_KEYS, Fence, Preset, cut, escape_cut};
 use crate::units::Quantity;
 
 /// The longest record (line) read, in bytes: a 90-column Statcast row is
@@ -120,6 +121,12 @@ impl Header {
         Ok(Header { names, columns })
     }
 
+    /// Whether any column is an input: a header with none (a file separated
+    /// by `;`, another table) would fly the preset's launch on every row.
+    fn has_input(&self) -> bool {
+        self.columns.iter().any(|c| !matches!(c, Column::Ignored))
+    }
+
     fn has_launch(&self, index: usize) -> bool {
         self.columns
             .iter()
@@ -192,8 +199,9 @@ fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
     };
     if fields.len() != header.columns.len() {
         return bad(format!(
-            "{} fields where the header has {}",
+            "{} field{} where the header has {}",
             fields.len(),
+            if fields.len() == 1 { "" } else { "s" },
             header.columns.len()
         ));
     }
@@ -216,9 +224,13 @@ fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
         let value = value.trim();
         let shown = escape_cut(value, 80);
         let number = || {
-            value
-                .parse::<f64>()
-                .map_err(|_| format!("{} = {shown:?}: not a number", escape_cut(name, 80)))
+            value.parse::<f64>().map_err(|_| {
+                format!(
+                    "{} = {:?}: not a number",
+                    escape_cut(name, 80),
+                    cut(value, 80)
+                )
+            })
         };
         let done = match *column {
             Column::Ignored => Ok(()),
@@ -234,8 +246,20 @@ fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
                     .set(&mut scene, LAUNCH_COLUMNS[index].0, unit.to_si(v))
                     .map_err(|e| e.to_string())
             }),
+            // The whole value is parsed; only the error's copy is cut.
             Column::Input(key) => batch
-                .set_text(&mut scene, key, &shown)
+                .set_text(&mut scene, key, value)
+                .map_err(|e| match e {
+                    InputError::NotANumber { key, text } => InputError::NotANumber {
+                        key,
+                        text: cut(&text, 80),
+                    },
+                    InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
+                        text: cut(&model.text, 80),
+                        ..model
+                    }),
+                    e => e,
+                })
                 .map_err(|e| e.to_string()),
             Column::Field(index) => number().and_then(|v| {
                 let key = &FIELD_KEYS[index];
@@ -324,6 +348,10 @@ struct Records<R> {
     /// The line the next record starts on (1-based).
     line: usize,
     bytes: Vec<u8>,
+    /// Whether a record too long is read on to its end (a row: the next
+    /// row follows) or given up at once (the header: nothing follows that
+    /// could be used, and a line-less input may never end).
+    read_past_long: bool,
 }
 
 impl<R: BufRead> Records<R> {
@@ -332,6 +360,7 @@ impl<R: BufRead> Records<R> {
             reader,
             line: 1,
             bytes: Vec::new(),
+            read_past_long: true,
         }
     }
 
@@ -378,6 +407,9 @@ impl<R: BufRead> Records<R> {
                 if self.bytes.len() + take > MAX_RECORD_BYTES {
                     too_long = true;
                     self.bytes = Vec::new();
+                    if !self.read_past_long {
+                        return Ok(Record::TooLong { line: first });
+                    }
                 } else {
                     self.bytes.extend_from_slice(&available[..take]);
                 }
@@ -473,13 +505,23 @@ pub(super) fn batch(
     progress: &Progress,
 ) -> Result<Outcome, String> {
     let mut records = Records::new(input);
+    records.read_past_long = false;
     let mut outcome = Outcome::default();
     let header = match records.next() {
         Ok(Record::End) => None,
         Ok(Record::Text { text, .. }) => {
             let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
             let names = split_fields(text).map_err(|e| format!("line 1 (the header): {e}"))?;
-            Some(Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?)
+            let header = Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?;
+            if !header.has_input() {
+                return Err(format!(
+                    "line 1 (the header): no column is an input (launch_speed, launch_angle, \
+                     spin_rpm, launch.*, or a key of `homerun keys`); columns separated by \
+                     commas? first column: `{}`",
+                    escape_cut(&header.names[0], 80)
+                ));
+            }
+            Some(header)
         }
         Ok(Record::TooLong { .. }) => {
             return Err(format!(
@@ -492,6 +534,7 @@ pub(super) fn batch(
         }
         Err(Stop::Io(e)) => return Err(e.to_string()),
     };
+    records.read_past_long = true;
     if !json {
         let names: Vec<String> = OUTPUT_COLUMNS
             .iter()
@@ -733,6 +776,40 @@ mod tests {
         let mut records = Records::new(&b"a\nb\0"[..]);
         assert!(matches!(records.next(), Ok(Record::Text { .. })));
         assert!(matches!(records.next(), Err(Stop::Binary { line: 2 })));
+    }
+
+    #[test]
+    fn a_header_too_long_is_given_up_without_reading_on() {
+        /// Counts the bytes handed out, of a line that never ends.
+        struct Endless(usize);
+        impl io::Read for Endless {
+            fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+                buf.fill(b'a');
+                self.0 += buf.len();
+                Ok(buf.len())
+            }
+        }
+        let mut endless = Endless(0);
+        let mut sinks = Sinks {
+            out: &mut Vec::new(),
+            err: &mut Vec::new(),
+            erase: false,
+        };
+        let reader = io::BufReader::with_capacity(4096, &mut endless);
+        let fastball = crate::preset::load("fastball", None).unwrap();
+        let work = Work {
+            what: "test",
+            steps: None,
+        };
+        let refused = progress::run(work, |p| {
+            batch(&fastball, reader, false, Shown::default(), &mut sinks, p)
+        });
+        assert!(refused.unwrap_err().contains("longer than 64 KiB"));
+        assert!(
+            endless.0 <= MAX_RECORD_BYTES + 4096,
+            "{} bytes read",
+            endless.0
+        );
     }
 
     #[test]
