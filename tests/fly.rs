@@ -329,7 +329,7 @@ fn statcast_columns_are_converted_and_other_columns_ignored() {
         "launch.speed,launch.angle,launch.spin\n{},{},{}\n",
         103.0 * 0.44704,
         28f64.to_radians(),
-        2500.0 * TAU / 60.0
+        2500.0 * (TAU / 60.0)
     );
     let (status, out, _) = batch(dir.path(), &si, &["--json"]);
     assert_eq!(status, Some(0));

@@ -16,7 +16,7 @@ use crate::Scene;
 use crate::model::aero::UnknownModel;
 use crate::model::keys::{DRAG_KEY, InputBatch, InputError, LIFT_KEY};
 use crate::preset::{FIELD_KEYS, Fence, Preset, cut, escape_cut};
-use crate::units::Quantity;
+use crate::units::{Quantity, UnitSystem};
 
 /// The longest record (line) read, in bytes: a 90-column Statcast row is
 /// ~1 KB. A longer one is skipped, reading on to its end without keeping it.
@@ -39,13 +39,16 @@ enum Unit {
 }
 
 impl Unit {
+    /// The explorer's and `--units`' conversion, so that 103 mph is the
+    /// same launch to the last bit wherever it is typed.
     fn to_si(self, value: f64) -> f64 {
-        match self {
-            Unit::Si => value,
-            Unit::Mph => value * 0.44704,
-            Unit::Degrees => value.to_radians(),
-            Unit::Rpm => value * std::f64::consts::TAU / 60.0,
-        }
+        let quantity = match self {
+            Unit::Si => return value,
+            Unit::Mph => Quantity::Speed,
+            Unit::Degrees => Quantity::Angle,
+            Unit::Rpm => Quantity::Spin,
+        };
+        quantity.unit(UnitSystem::Imperial, "").read(value)
     }
 
     fn name(self) -> &'static str {
@@ -815,6 +818,11 @@ mod tests {
     #[test]
     fn statcast_units_convert_exactly() {
         assert_eq!(Unit::Mph.to_si(103.0), 103.0 * 0.44704);
+        assert_eq!(Unit::Degrees.to_si(28.0), 28f64.to_radians());
+        assert_eq!(
+            Unit::Rpm.to_si(2500.0),
+            2500.0 * (std::f64::consts::TAU / 60.0)
+        );
         assert!((Unit::Degrees.to_si(28.0) - 0.488_692_190_558_412).abs() < 1e-15);
         assert!((Unit::Rpm.to_si(2500.0) - 261.799_387_799_149).abs() < 1e-12);
     }
