@@ -471,3 +471,35 @@ fn a_header_without_inputs_is_refused_and_long_values_are_read_whole() {
         "{err}"
     );
 }
+
+#[test]
+fn a_batted_balls_figure_names_its_launch_not_a_pitch_and_bat() {
+    let dir = tempfile::tempdir().unwrap();
+    let second_line = |args: &[&str]| {
+        let out = homerun(dir.path()).args(args).output().unwrap();
+        assert!(out.status.success(), "{args:?}");
+        String::from_utf8(out.stdout)
+            .unwrap()
+            .lines()
+            .nth(1)
+            .unwrap()
+            .to_owned()
+    };
+    // 103 mph, 28°, 2500 rpm: the fly-ball preset's launch in both units.
+    let si = second_line(&["figure", "3", "--preset", "fly-ball"]);
+    assert!(
+        si.starts_with(
+            "preset fly-ball: launch 46.04512 m/s, 0.488692 rad, spin 261.799388 rad/s;"
+        ),
+        "{si}"
+    );
+    let imperial = second_line(&["figure", "4", "--preset", "fly-ball", "--units", "imperial"]);
+    assert!(
+        imperial.starts_with("preset fly-ball: launch 103 mph, 28°, spin 2500 rpm;"),
+        "{imperial}"
+    );
+    assert!(
+        !si.contains("pitch") && !imperial.contains("bat "),
+        "{si}\n{imperial}"
+    );
+}
