@@ -105,14 +105,20 @@ pub struct Unit {
     pub symbol: &'static str,
     scale: f64,
     offset: f64,
+    /// SI per shown unit, the exact definition (0.44704 m/s per mph):
+    /// typed values multiply by it, so that 100 mph is 44.704 m/s to the
+    /// last bit, as in a preset written by hand or a batch's column.
+    si_per_shown: f64,
 }
 
 impl Unit {
-    const fn linear(symbol: &'static str, scale: f64) -> Unit {
+    /// A unit `si_per_shown` SI units large (0.3048 for the foot).
+    const fn linear(symbol: &'static str, si_per_shown: f64) -> Unit {
         Unit {
             symbol,
-            scale,
+            scale: 1.0 / si_per_shown,
             offset: 0.0,
+            si_per_shown,
         }
     }
 
@@ -123,7 +129,7 @@ impl Unit {
 
     /// A value typed in this unit, back in SI.
     pub fn read(self, shown: f64) -> f64 {
-        (shown - self.offset) / self.scale
+        (shown - self.offset) * self.si_per_shown
     }
 
     /// A difference of SI values (a nudge, a Δ) in this unit: no offset.
@@ -194,19 +200,21 @@ impl Quantity {
             return Unit::linear(si_symbol, 1.0);
         }
         match self {
-            Quantity::Distance => Unit::linear("ft", 1.0 / METRES_PER_FOOT),
-            Quantity::Size => Unit::linear("in", 1.0 / METRES_PER_INCH),
-            Quantity::Speed => Unit::linear("mph", 1.0 / METRES_PER_SECOND_PER_MPH),
-            Quantity::Spin => Unit::linear("rpm", 60.0 / (2.0 * PI)),
-            Quantity::Angle => Unit::linear("°", 180.0 / PI),
+            Quantity::Distance => Unit::linear("ft", METRES_PER_FOOT),
+            Quantity::Size => Unit::linear("in", METRES_PER_INCH),
+            Quantity::Speed => Unit::linear("mph", METRES_PER_SECOND_PER_MPH),
+            Quantity::Spin => Unit::linear("rpm", 2.0 * PI / 60.0),
+            // As f64::to_radians: π/180 exactly as it multiplies.
+            Quantity::Angle => Unit::linear("°", PI / 180.0),
             Quantity::Temperature => Unit {
                 symbol: "°F",
                 scale: 9.0 / 5.0,
                 offset: 32.0,
+                si_per_shown: 5.0 / 9.0,
             },
-            Quantity::Pressure => Unit::linear("inHg", 1.0 / HECTOPASCALS_PER_INCH_OF_MERCURY),
-            Quantity::Mass => Unit::linear("oz", 1.0 / KILOGRAMS_PER_OUNCE),
-            Quantity::Acceleration => Unit::linear("ft/s²", 1.0 / METRES_PER_FOOT),
+            Quantity::Pressure => Unit::linear("inHg", HECTOPASCALS_PER_INCH_OF_MERCURY),
+            Quantity::Mass => Unit::linear("oz", KILOGRAMS_PER_OUNCE),
+            Quantity::Acceleration => Unit::linear("ft/s²", METRES_PER_FOOT),
             Quantity::Unchanged => Unit::linear(si_symbol, 1.0),
         }
     }
@@ -235,6 +243,20 @@ impl Quantity {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn typed_values_convert_by_the_exact_definitions() {
+        let read =
+            |quantity: Quantity, shown: f64| quantity.unit(UnitSystem::Imperial, "").read(shown);
+        // Each to the last bit: what a preset or a batch column gives.
+        assert_eq!(read(Quantity::Speed, 100.0), 44.704);
+        assert_eq!(read(Quantity::Speed, 103.0), 103.0 * 0.44704);
+        assert_eq!(read(Quantity::Distance, 400.0), 121.92);
+        assert_eq!(read(Quantity::Size, 1.0), 0.0254);
+        assert_eq!(read(Quantity::Angle, 30.0), 30f64.to_radians());
+        assert_eq!(read(Quantity::Temperature, 212.0), 100.0);
+        assert_eq!(read(Quantity::Spin, 2500.0), 2500.0 * (2.0 * PI / 60.0));
+    }
 
     #[test]
     fn baseball_numbers_convert_as_quoted() {

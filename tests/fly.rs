@@ -329,7 +329,7 @@ fn statcast_columns_are_converted_and_other_columns_ignored() {
         "launch.speed,launch.angle,launch.spin\n{},{},{}\n",
         103.0 * 0.44704,
         28f64.to_radians(),
-        2500.0 * TAU / 60.0
+        2500.0 * (TAU / 60.0)
     );
     let (status, out, _) = batch(dir.path(), &si, &["--json"]);
     assert_eq!(status, Some(0));
@@ -426,4 +426,80 @@ fn fly_at_hits_launch_prints_hits_flight() {
     }
     // Table II's fastball: 134.70 m.
     assert!((fly["flight"]["range"].as_f64().unwrap() - 134.699).abs() < 1e-3);
+}
+
+#[test]
+fn a_header_without_inputs_is_refused_and_long_values_are_read_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    // Separated by `;`: no column is an input, so every row would have
+    // flown the preset's launch. Refused before any row, status 2.
+    let (status, out, err) = batch(dir.path(), "launch_speed;launch_angle\n103;28\n", &[]);
+    assert_eq!(status, Some(2), "{err}");
+    assert!(out.is_empty(), "{out}");
+    assert!(
+        err.contains("line 1 (the header): no column is an input")
+            && err.contains("`launch_speed;launch_angle`"),
+        "{err}"
+    );
+    // A key's value longer than an error's quote is parsed whole: 15 °C
+    // written with 100 zeros flies as 15 °C, and a bad one is quoted cut.
+    let long = format!("15.{}", "0".repeat(100));
+    let input = format!(
+        "launch.speed,launch.angle,launch.spin,environment.temperature\n\
+         40,0.5,200,{long}\n40,0.5,200,15\n40,0.5,200,{long}x\n40,0.5\n"
+    );
+    let (status, out, err) = batch(dir.path(), &input, &[]);
+    assert_eq!(status, Some(1), "{err}");
+    let rows: Vec<&str> = out.lines().skip(1).collect();
+    assert_eq!(rows.len(), 2, "{out}\n{err}");
+    assert_eq!(
+        rows[0].split_once(',').unwrap().1,
+        rows[1].split_once(',').unwrap().1
+    );
+    assert!(
+        err.contains("line 4: environment.temperature = \"15.000"),
+        "{err}"
+    );
+    assert!(err.contains("…\": not a number"), "{err}");
+    assert!(
+        err.contains("line 5: 2 fields where the header has 4"),
+        "{err}"
+    );
+    let (_, _, err) = batch(dir.path(), "launch.speed,launch.angle\n40\n", &[]);
+    assert!(
+        err.contains("line 2: 1 field where the header has 2"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_batted_balls_figure_names_its_launch_not_a_pitch_and_bat() {
+    let dir = tempfile::tempdir().unwrap();
+    let second_line = |args: &[&str]| {
+        let out = homerun(dir.path()).args(args).output().unwrap();
+        assert!(out.status.success(), "{args:?}");
+        String::from_utf8(out.stdout)
+            .unwrap()
+            .lines()
+            .nth(1)
+            .unwrap()
+            .to_owned()
+    };
+    // 103 mph, 28°, 2500 rpm: the fly-ball preset's launch in both units.
+    let si = second_line(&["figure", "3", "--preset", "fly-ball"]);
+    assert!(
+        si.starts_with(
+            "preset fly-ball: launch 46.04512 m/s, 0.488692 rad, spin 261.799388 rad/s;"
+        ),
+        "{si}"
+    );
+    let imperial = second_line(&["figure", "4", "--preset", "fly-ball", "--units", "imperial"]);
+    assert!(
+        imperial.starts_with("preset fly-ball: launch 103 mph, 28°, spin 2500 rpm;"),
+        "{imperial}"
+    );
+    assert!(
+        !si.contains("pitch") && !imperial.contains("bat "),
+        "{si}\n{imperial}"
+    );
 }

@@ -329,4 +329,16 @@ fn explorer_x_writes_fresh_files_and_never_overwrites() {
     tui_support::key(&mut app, ratatui::crossterm::event::KeyCode::Char('j'));
     let (screen, last) = status(&app);
     assert!(last.starts_with("swing · readout ✓"), "{screen}");
+    // In the batted-ball scene the surface's tab has no chart: the reason,
+    // and the key that helps, fit the status line whole at 80 columns.
+    use ratatui::crossterm::event::KeyCode;
+    tui_support::key(&mut app, KeyCode::Char('b'));
+    tui_support::key(&mut app, KeyCode::Char('2'));
+    app.export_in(dir.path());
+    let (screen, last) = status(&app);
+    assert_eq!(
+        last, "x: no SVG written: the range surface needs a swing (b switches scenes)",
+        "{screen}"
+    );
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3);
 }

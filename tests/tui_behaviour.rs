@@ -890,3 +890,20 @@ fn a_unit_switch_keeps_the_optimum_and_recomputes_only_the_deltas() {
     let gain = app.swing_gains[k].unwrap().value.unwrap();
     assert!(gain > 0.0 && gain < si_gain, "{gain} vs {si_gain}");
 }
+
+#[test]
+fn a_ball_that_lands_behind_the_plate_is_drawn_behind_it() {
+    // 85° with 2500 rpm of backspin: the lift carries the ball back over
+    // the plate, to land about 15 m behind it. The x axis starts behind
+    // the plate, so the path is on the chart, not clipped at x = 0.
+    let mut app = app_on("fly-ball", 80, 24, None);
+    set_and_settle(&mut app, "launch.angle", "1.4835");
+    let range = app.flown.flight.range;
+    assert!(app.flown.flight.landed && range < -5.0, "{range}");
+    let screen = screen(&app);
+    let axis = screen
+        .lines()
+        .find(|l| l.contains("││-30 "))
+        .unwrap_or_else(|| panic!("no negative x label: {screen}"));
+    assert!(axis.contains("160"), "{axis}");
+}

@@ -13,9 +13,10 @@ use super::fly::{FlownToFence, fence_of};
 use super::progress::{self, Progress, Work};
 use super::shown::Shown;
 use crate::Scene;
-use crate::model::keys::{DRAG_KEY, InputBatch, LIFT_KEY};
-use crate::preset::{FIELD_KEYS, Fence, Preset, escape_cut};
-use crate::units::Quantity;
+use crate::model::aero::UnknownModel;
+use crate::model::keys::{DRAG_KEY, InputBatch, InputError, LIFT_KEY};
+use crate::preset::{FIELD_KEYS, Fence, Preset, cut, escape_cut};
+use crate::units::{Quantity, UnitSystem};
 
 /// The longest record (line) read, in bytes: a 90-column Statcast row is
 /// ~1 KB. A longer one is skipped, reading on to its end without keeping it.
@@ -38,13 +39,16 @@ enum Unit {
 }
 
 impl Unit {
+    /// The explorer's and `--units`' conversion, so that 103 mph is the
+    /// same launch to the last bit wherever it is typed.
     fn to_si(self, value: f64) -> f64 {
-        match self {
-            Unit::Si => value,
-            Unit::Mph => value * 0.44704,
-            Unit::Degrees => value.to_radians(),
-            Unit::Rpm => value * std::f64::consts::TAU / 60.0,
-        }
+        let quantity = match self {
+            Unit::Si => return value,
+            Unit::Mph => Quantity::Speed,
+            Unit::Degrees => Quantity::Angle,
+            Unit::Rpm => Quantity::Spin,
+        };
+        quantity.unit(UnitSystem::Imperial, "").read(value)
     }
 
     fn name(self) -> &'static str {
@@ -120,6 +124,12 @@ impl Header {
         Ok(Header { names, columns })
     }
 
+    /// Whether any column is an input: a header with none (a file separated
+    /// by `;`, another table) would fly the preset's launch on every row.
+    fn has_input(&self) -> bool {
+        self.columns.iter().any(|c| !matches!(c, Column::Ignored))
+    }
+
     fn has_launch(&self, index: usize) -> bool {
         self.columns
             .iter()
@@ -192,8 +202,9 @@ fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
     };
     if fields.len() != header.columns.len() {
         return bad(format!(
-            "{} fields where the header has {}",
+            "{} field{} where the header has {}",
             fields.len(),
+            if fields.len() == 1 { "" } else { "s" },
             header.columns.len()
         ));
     }
@@ -216,9 +227,13 @@ fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
         let value = value.trim();
         let shown = escape_cut(value, 80);
         let number = || {
-            value
-                .parse::<f64>()
-                .map_err(|_| format!("{} = {shown:?}: not a number", escape_cut(name, 80)))
+            value.parse::<f64>().map_err(|_| {
+                format!(
+                    "{} = {:?}: not a number",
+                    escape_cut(name, 80),
+                    cut(value, 80)
+                )
+            })
         };
         let done = match *column {
             Column::Ignored => Ok(()),
@@ -234,8 +249,20 @@ fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
                     .set(&mut scene, LAUNCH_COLUMNS[index].0, unit.to_si(v))
                     .map_err(|e| e.to_string())
             }),
+            // The whole value is parsed; only the error's copy is cut.
             Column::Input(key) => batch
-                .set_text(&mut scene, key, &shown)
+                .set_text(&mut scene, key, value)
+                .map_err(|e| match e {
+                    InputError::NotANumber { key, text } => InputError::NotANumber {
+                        key,
+                        text: cut(&text, 80),
+                    },
+                    InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
+                        text: cut(&model.text, 80),
+                        ..model
+                    }),
+                    e => e,
+                })
                 .map_err(|e| e.to_string()),
             Column::Field(index) => number().and_then(|v| {
                 let key = &FIELD_KEYS[index];
@@ -324,6 +351,10 @@ struct Records<R> {
     /// The line the next record starts on (1-based).
     line: usize,
     bytes: Vec<u8>,
+    /// Whether a record too long is read on to its end (a row: the next
+    /// row follows) or given up at once (the header: nothing follows that
+    /// could be used, and a line-less input may never end).
+    read_past_long: bool,
 }
 
 impl<R: BufRead> Records<R> {
@@ -332,6 +363,7 @@ impl<R: BufRead> Records<R> {
             reader,
             line: 1,
             bytes: Vec::new(),
+            read_past_long: true,
         }
     }
 
@@ -378,6 +410,9 @@ impl<R: BufRead> Records<R> {
                 if self.bytes.len() + take > MAX_RECORD_BYTES {
                     too_long = true;
                     self.bytes = Vec::new();
+                    if !self.read_past_long {
+                        return Ok(Record::TooLong { line: first });
+                    }
                 } else {
                     self.bytes.extend_from_slice(&available[..take]);
                 }
@@ -473,13 +508,23 @@ pub(super) fn batch(
     progress: &Progress,
 ) -> Result<Outcome, String> {
     let mut records = Records::new(input);
+    records.read_past_long = false;
     let mut outcome = Outcome::default();
     let header = match records.next() {
         Ok(Record::End) => None,
         Ok(Record::Text { text, .. }) => {
             let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
             let names = split_fields(text).map_err(|e| format!("line 1 (the header): {e}"))?;
-            Some(Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?)
+            let header = Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?;
+            if !header.has_input() {
+                return Err(format!(
+                    "line 1 (the header): no column is an input (launch_speed, launch_angle, \
+                     spin_rpm, launch.*, or a key of `homerun keys`); columns separated by \
+                     commas? first column: `{}`",
+                    escape_cut(&header.names[0], 80)
+                ));
+            }
+            Some(header)
         }
         Ok(Record::TooLong { .. }) => {
             return Err(format!(
@@ -492,6 +537,7 @@ pub(super) fn batch(
         }
         Err(Stop::Io(e)) => return Err(e.to_string()),
     };
+    records.read_past_long = true;
     if !json {
         let names: Vec<String> = OUTPUT_COLUMNS
             .iter()
@@ -736,8 +782,47 @@ mod tests {
     }
 
     #[test]
+    fn a_header_too_long_is_given_up_without_reading_on() {
+        /// Counts the bytes handed out, of a line that never ends.
+        struct Endless(usize);
+        impl io::Read for Endless {
+            fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+                buf.fill(b'a');
+                self.0 += buf.len();
+                Ok(buf.len())
+            }
+        }
+        let mut endless = Endless(0);
+        let mut sinks = Sinks {
+            out: &mut Vec::new(),
+            err: &mut Vec::new(),
+            erase: false,
+        };
+        let reader = io::BufReader::with_capacity(4096, &mut endless);
+        let fastball = crate::preset::load("fastball", None).unwrap();
+        let work = Work {
+            what: "test",
+            steps: None,
+        };
+        let refused = progress::run(work, |p| {
+            batch(&fastball, reader, false, Shown::default(), &mut sinks, p)
+        });
+        assert!(refused.unwrap_err().contains("longer than 64 KiB"));
+        assert!(
+            endless.0 <= MAX_RECORD_BYTES + 4096,
+            "{} bytes read",
+            endless.0
+        );
+    }
+
+    #[test]
     fn statcast_units_convert_exactly() {
         assert_eq!(Unit::Mph.to_si(103.0), 103.0 * 0.44704);
+        assert_eq!(Unit::Degrees.to_si(28.0), 28f64.to_radians());
+        assert_eq!(
+            Unit::Rpm.to_si(2500.0),
+            2500.0 * (std::f64::consts::TAU / 60.0)
+        );
         assert!((Unit::Degrees.to_si(28.0) - 0.488_692_190_558_412).abs() < 1e-15);
         assert!((Unit::Rpm.to_si(2500.0) - 261.799_387_799_149).abs() < 1e-12);
     }

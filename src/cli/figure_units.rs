@@ -7,6 +7,7 @@ use super::shown::{Shown, short};
 use crate::Scene;
 use crate::analysis::figures::{self, Cell, FigureData};
 use crate::model::keys::all_keys;
+use crate::model::launch::SceneKind;
 use crate::units::Quantity;
 
 /// What a figure column measures, from its key: `launch_spin_mu_0.35` is a
@@ -93,6 +94,19 @@ pub(super) fn conditions(name: &str, s: &Scene, shown: Shown) -> String {
         let gap = if unit.symbol == "°" { "" } else { " " };
         format!("{}{gap}{}", short(shown.convert(quantity, si)), unit.symbol)
     };
+    if s.kind == SceneKind::BattedBall {
+        let launch = s.batted_ball();
+        return format!(
+            "preset {name}: launch {}, {}, spin {}; wind {}; ρ {} kg/m³; drag {}, lift {}",
+            v(Quantity::Speed, launch.speed),
+            v(Quantity::Angle, launch.angle),
+            v(Quantity::Spin, launch.spin),
+            v(Quantity::Speed, s.environment.wind),
+            figures::trimmed(s.environment.air_density),
+            s.drag,
+            s.lift
+        );
+    }
     format!(
         "preset {name}: pitch {}, spin {}; bat {}, roll {}, E {}, ψ {}, μ {}; wind {}; ρ {} kg/m³; drag {}, lift {}",
         v(Quantity::Speed, s.pitch.speed),

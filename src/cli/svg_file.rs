@@ -29,10 +29,16 @@ fn folder(path: &Path) -> &Path {
 /// a new file (tried with a temporary file, removed at once), and `path`
 /// is not itself a folder.
 pub(super) fn check(path: &Path) -> Result<(), UsageError> {
-    let dir = folder(path);
     if path.is_dir() {
         return Err(refused(path, "is a folder; give a file name".into()));
     }
+    // `/dev/stdout`, a named pipe: written to in place, no folder needed.
+    if crate::atomic_file::is_special(path) {
+        return Ok(());
+    }
+    // Through a link, the file replaced is the one it points to.
+    let resolved = crate::atomic_file::resolved(path);
+    let dir = folder(&resolved);
     if !dir.exists() {
         return Err(refused(
             path,
@@ -42,7 +48,7 @@ pub(super) fn check(path: &Path) -> Result<(), UsageError> {
     if !dir.is_dir() {
         return Err(refused(path, format!("{} is not a folder", shown(dir))));
     }
-    let probe = path.with_file_name(format!(".homerun-probe.{}.tmp", std::process::id()));
+    let probe = resolved.with_file_name(format!(".homerun-probe.{}.tmp", std::process::id()));
     match std::fs::File::create(&probe) {
         Ok(_) => {
             let _ = std::fs::remove_file(&probe);

@@ -16,6 +16,7 @@ use crate::analysis::optimum::Optimum;
 use crate::analysis::paper::{FIGURES, Stated};
 use crate::analysis::study::{self, SweepError};
 use crate::model::impact::Impact;
+use crate::model::launch::SceneKind;
 
 /// One table cell: a number, a label, a yes or no (`landed`), or nothing
 /// (null in JSON).
@@ -183,6 +184,20 @@ pub fn figure_data_observed(
 
 /// The inputs a figure was computed with, in one line.
 pub fn conditions(name: &str, s: &Scene) -> String {
+    // A batted ball has no pitch or bat: its launch is what it was flown with.
+    if s.kind == SceneKind::BattedBall {
+        let launch = s.batted_ball();
+        return format!(
+            "preset {name}: launch {} m/s, {} rad, spin {} rad/s; wind {} m/s; ρ {} kg/m³; drag {}, lift {}",
+            trimmed(launch.speed),
+            trimmed(launch.angle),
+            trimmed(launch.spin),
+            trimmed(s.environment.wind),
+            trimmed(s.environment.air_density),
+            s.drag,
+            s.lift
+        );
+    }
     format!(
         "preset {name}: pitch {} m/s, spin {} rad/s; bat {} m/s, roll {} rad/s, E {} m, ψ {} rad, μ {}; wind {} m/s; ρ {} kg/m³; drag {}, lift {}",
         trimmed(s.pitch.speed),

@@ -64,7 +64,10 @@ impl App {
     /// The chart in view as SVG, with its kind for the file's name.
     fn chart_svg(&self) -> Result<(String, Result<String, PictureError>), String> {
         match self.tab {
-            Tab::Surface if !self.is_swing() => Err(super::SWING_ONLY.into()),
+            // Short enough that the status line at 80 columns keeps the key.
+            Tab::Surface if !self.is_swing() => {
+                Err("the range surface needs a swing (b switches scenes)".into())
+            }
             Tab::Figures if !self.figure_applies() => Err(format!(
                 "Fig. {} needs a swing: b switches to the swing scene",
                 self.figure_number

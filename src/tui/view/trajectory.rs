@@ -44,6 +44,19 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .map_or((0.0, 0.0), |f| (k * f.distance, k * f.height));
     let x_max = nice_ceiling(1.05 * k * flight.range.max(optimal_range).max(pin_range))
         .max(nice_ceiling(1.05 * fence.0));
+    // A ball carried back over the plate (a steep launch with backspin)
+    // lands behind it: the axis then starts behind the plate too.
+    let x_least = path
+        .iter()
+        .chain(&optimal_path)
+        .chain(&pinned_path)
+        .map(|p| p.0)
+        .fold(0.0, f64::min);
+    let x_min = if x_least < 0.0 {
+        -nice_ceiling(-1.05 * x_least)
+    } else {
+        0.0
+    };
     let y_max = nice_ceiling(1.1 * k * flight.apex.max(optimal_apex).max(pin_apex))
         .max(nice_ceiling(1.1 * fence.1));
 
@@ -68,7 +81,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     if app.fence.is_some() {
         datasets.push(chart::line(theme::FENCE, &fence_line).name("fence"));
     }
-    let labels = |max: f64| [0.0, 0.5 * max, max].map(|v| format!("{v:.0}"));
+    let labels = |min: f64, max: f64| [min, 0.5 * (min + max), max].map(|v| format!("{v:.0}"));
     // The legend sits in the border, where it hides no data.
     let mut legend = vec![Span::styled("━ now ", theme::SWING)];
     if !optimal_path.is_empty() {
@@ -103,13 +116,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         )
         .x_axis(chart::axis(
             format!("x ({unit})"),
-            [0.0, x_max],
-            labels(x_max),
+            [x_min, x_max],
+            labels(x_min, x_max),
         ))
         .y_axis(chart::axis(
             format!("y ({unit})"),
             [0.0, y_max],
-            labels(y_max),
+            labels(0.0, y_max),
         ))
         .legend_position(None);
     frame.render_widget(chart, area);
