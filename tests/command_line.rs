@@ -702,3 +702,33 @@ fn a_section_written_as_a_value_is_called_a_section() {
         &["unknown key `pitchh`"],
     );
 }
+
+/// A sweep says of each optimum what `optimize` says: on WORK at 49 m/s the
+/// optimiser's best grazes the ground behind the plate at its own precision
+/// (y dips to ~1e-4 m) but does not land when flown at readout precision.
+#[test]
+fn a_sweep_point_that_lands_only_at_the_optimisers_precision_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let sweep = &[
+        "sweep",
+        "bat.speed",
+        "--from",
+        "49",
+        "--to",
+        "49",
+        "--steps",
+        "1",
+    ];
+    let v = json(d, &with(&[sweep.as_slice(), &["--json"]].concat(), WORK));
+    let point = &v["points"][0];
+    assert_eq!(point["landed"], true, "{point}");
+    assert_eq!(point["lands_at_readout"], false, "{point}");
+    let optimum = json(d, &with(&["optimize", "--json"], WORK));
+    assert_eq!(optimum["landed"], false, "{optimum}");
+    let text = text(d, &with(sweep, WORK));
+    assert!(
+        text.contains("lands only at the optimiser's precision"),
+        "{text}"
+    );
+}

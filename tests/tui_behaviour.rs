@@ -907,3 +907,34 @@ fn a_ball_that_lands_behind_the_plate_is_drawn_behind_it() {
         .unwrap_or_else(|| panic!("no negative x label: {screen}"));
     assert!(axis.contains("160"), "{axis}");
 }
+
+/// The readout says what `optimize` says when the optimiser's best grazes
+/// the ground only at its own precision (the WORK scene of
+/// tests/command_line.rs: a heavy-spun big ball in dense air).
+#[test]
+fn an_optimum_that_lands_only_at_the_optimisers_precision_is_tagged() {
+    let mut preset = homerun::preset::load("fastball", None).unwrap();
+    let scene = &mut preset.scene;
+    scene.ball.radius = 0.063;
+    scene.ball.mass = 0.35;
+    scene.ball.gyration_radius = 0.046;
+    scene.environment.set_air_density(4.4);
+    scene.environment.gravity = 0.021;
+    scene.bat.speed = 49.0;
+    scene.pitch.spin = 1000.0;
+    let mut app = homerun::tui::app::App::new(
+        preset,
+        None,
+        homerun::tui::theme::ColorMode::Indexed,
+        ratatui::layout::Rect::new(0, 0, 80, 24),
+    );
+    settle(&mut app);
+    let optimum = app.optimum.unwrap();
+    assert!(
+        optimum.done && optimum.best.range.is_finite(),
+        "{optimum:?}"
+    );
+    assert!(!optimum.lands_at_readout, "{optimum:?}");
+    let screen = screen(&app);
+    assert!(screen.contains("(readout: does not land)"), "{screen}");
+}

@@ -430,7 +430,7 @@ pub(super) fn sweep(
                         Cell::Text("  (no swing lands: no optimum)".to_owned())
                     }
                     (false, _) => Cell::Text("  (no swing tried lands: no optimum)".to_owned()),
-                    (true, status) => limits(status, p.at_time_limit),
+                    (true, status) => limits(status, p.at_time_limit, p.lands_at_readout),
                 });
                 row
             })
@@ -443,10 +443,14 @@ pub(super) fn sweep(
     })
 }
 
-/// A landing optimum's notes: the search's limit, if it stopped at one, and
-/// the flight's time limit, if that set its range.
-fn limits(status: Status, at_time_limit: bool) -> Cell {
+/// A landing optimum's notes: whether it lands only at the optimiser's
+/// precision, the search's limit, if it stopped at one, and the flight's
+/// time limit, if that set its range.
+fn limits(status: Status, at_time_limit: bool, lands_at_readout: bool) -> Cell {
     let mut notes = Vec::new();
+    if !lands_at_readout {
+        notes.push("lands only at the optimiser's precision: at readout precision it does not");
+    }
     match status {
         Status::OutOfWork => notes.push("not converged: work limit"),
         Status::OutOfEvaluations => notes.push("not converged: evaluation limit"),

@@ -129,6 +129,9 @@ pub struct OptimumState {
     pub done: bool,
     /// Why it stopped, once `done`.
     pub status: Status,
+    /// Whether its best, flown again at readout precision (as the readout
+    /// flies the swing), lands too; checked once it is done.
+    pub lands_at_readout: bool,
 }
 
 /// The range surface as refined so far.
@@ -439,17 +442,24 @@ impl App {
                 status,
                 ..
             } => {
+                let scene = self.scene.with_swing(best.undercut, best.swing_angle);
+                // One flight (~0.1 ms), once: a hovering ball's best can graze
+                // the ground at the optimiser's precision only.
+                let lands_at_readout = !(done && best.range.is_finite())
+                    || crate::model::simulate(&scene, Purpose::Readout)
+                        .flight
+                        .landed;
                 self.optimum = Some(OptimumState {
                     best,
                     evaluations,
                     done,
                     status,
+                    lands_at_readout,
                 });
                 // A search that found nothing landing has no optimum to
                 // start from or to draw.
                 if done && best.range.is_finite() {
                     self.warm_start = Some((best.undercut, best.swing_angle));
-                    let scene = self.scene.with_swing(best.undercut, best.swing_angle);
                     self.optimal_path = self.plot_path(&scene);
                 }
             }

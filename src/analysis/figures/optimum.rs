@@ -89,6 +89,9 @@ pub(super) fn sweep_figure(
             if p.at_time_limit {
                 mark.push("lands at the flight's time limit");
             }
+            if p.landed && !p.lands_at_readout {
+                mark.push("lands only at the optimiser's precision");
+            }
             let numbers = [p.value, p.undercut, p.swing_angle, p.range];
             // Without a landing swing there is no optimum: only the value.
             let row = [&numbers[..], &launch(p)].concat();

@@ -249,6 +249,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             if o.best.at_time_limit {
                 state.push_str(" (time limit)");
             }
+            // Its best grazes the ground at the optimiser's precision only.
+            if !o.lands_at_readout {
+                state.push_str(" (readout: does not land)");
+            }
             let optimum = format!(
                 "E {}  ψ {}  {:.2} {u}",
                 undercut_text(app, o.best.undercut, false),
