@@ -7,10 +7,12 @@ use ratatui::crossterm::event::{Event, KeyEvent, KeyEventKind};
 use ratatui::layout::Rect;
 use ratatui_textarea::TextArea;
 
+mod edit;
 mod export;
 mod figures;
 mod mouse;
 mod presets;
+mod scene;
 
 use super::format::{error_text, read_value, shown_value};
 pub use super::inputs::{input_count, input_key, scene_inputs};
@@ -29,8 +31,10 @@ use crate::model::launch::{Flown, SceneKind, fly_scene, height_at_distance, scen
 use crate::model::scene::Scene;
 use crate::preset::{self, Fence, Preset};
 use crate::units::{Quantity, Unit, UnitSystem};
+use edit::prefilled;
 use figures::FigureInputs;
 pub use figures::{AERO_FIGURES, FIGURES, FigureState};
+use scene::first_input;
 
 /// One row of the inputs pane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -623,200 +627,8 @@ impl App {
         let groups: Vec<&str> = self.fields.iter().map(|f| f.group()).collect();
         super::layout::input_lines(&groups)
     }
-
-    /// Moves the selected input by `scale` of its step, if the result is valid.
-    fn nudge(&mut self, scale: f64) {
-        match self.fields[self.selected] {
-            Field::Preset => {}
-            Field::Drag => {
-                self.scene.drag = cycle(&DragModel::ALL, self.scene.drag, scale);
-                self.inputs_changed = true;
-            }
-            Field::Lift => {
-                self.scene.lift = cycle(&LiftModel::ALL, self.scene.lift, scale);
-                self.inputs_changed = true;
-            }
-            // The same nudge as the sensitivity column's, so that its number
-            // says what this key does.
-            Field::Key(k) => {
-                match sensitivity::nudge_in(&self.scene, input_key(k), scale, self.units) {
-                    Ok(scene) => {
-                        self.scene = scene;
-                        self.inputs_changed = true;
-                        self.message = None;
-                    }
-                    Err(error) => self.message = Some((error_text(&error, self.units), true)),
-                }
-            }
-        }
-    }
-
-    fn start_edit(&mut self) {
-        let field = self.fields[self.selected];
-        let current = match field {
-            Field::Preset => return self.open_picker(),
-            Field::Drag => self.scene.drag.name().to_owned(),
-            Field::Lift => self.scene.lift.name().to_owned(),
-            Field::Key(k) => shown_value(input_key(k), (input_key(k).get)(&self.scene), self.units),
-        };
-        self.mode = Mode::Edit {
-            field,
-            text: prefilled(current.clone()),
-            error: None,
-            initial: current,
-        };
-    }
-
-    fn edit_key(
-        &mut self,
-        key: KeyEvent,
-        action: Option<Action>,
-        field: Field,
-        mut text: TextArea<'static>,
-        (error, initial): (Option<String>, String),
-    ) {
-        match action {
-            Some(Action::Close) => {}
-            // The value as it was, not as rounded for show.
-            Some(Action::Confirm) if text.lines().join("") == initial => {}
-            Some(Action::Confirm) => {
-                let typed = text.lines().join("");
-                let mut scene = self.scene;
-                let set = match field {
-                    // In the unit shown; the scene stays SI.
-                    Field::Key(k) => {
-                        let key = input_key(k);
-                        read_value(key, &typed, self.units).map(|v| (key.set)(&mut scene, v))
-                    }
-                    Field::Drag => scene.set_text(DRAG_KEY, &typed),
-                    Field::Lift => scene.set_text(LIFT_KEY, &typed),
-                    Field::Preset => return,
-                };
-                match set.and_then(|()| scene.validate()) {
-                    Ok(()) => {
-                        self.scene = scene;
-                        self.inputs_changed = true;
-                        self.message = None;
-                    }
-                    Err(e) => {
-                        self.mode = Mode::Edit {
-                            field,
-                            text,
-                            error: Some(error_text(&e, self.units)),
-                            initial,
-                        }
-                    }
-                }
-            }
-            _ => {
-                text.input(key);
-                self.mode = Mode::Edit {
-                    field,
-                    text,
-                    error,
-                    initial,
-                };
-            }
-        }
-    }
-
-    /// Replaces the inputs with a preset's.
-    pub fn load(&mut self, preset: Preset) {
-        self.message = Some((format!("loaded {}", preset.name), false));
-        self.preset_name = preset.name;
-        self.description = preset.description;
-        self.set_scene(preset.scene);
-        self.fence = preset.fence;
-        self.dirty = true;
-    }
-
-    /// Replaces the scene, and the inputs pane's rows with its kind's,
-    /// keeping the selected row where the new scene has it.
-    fn set_scene(&mut self, scene: Scene) {
-        let kind_changed = scene.kind != self.scene.kind;
-        self.scene = scene;
-        self.inputs_changed = true;
-        if kind_changed {
-            let selected = self.fields[self.selected];
-            self.fields = fields(scene.kind);
-            self.selected = self
-                .fields
-                .iter()
-                .position(|f| *f == selected)
-                .unwrap_or_else(|| first_input(&self.fields, scene.kind));
-            // The old scene's results are of another kind: drop them now.
-            self.optimum = None;
-            self.optimal_path.clear();
-            self.fit_figure();
-        }
-    }
-
-    /// Key `b`: from a swing to the batted ball it launches (the same
-    /// launch, so the same flight), or back to the swing as it was (the
-    /// ball, air and models as now).
-    fn switch_scene(&mut self) {
-        let (scene, message) = if self.is_swing() {
-            (
-                self.scene.with_launch(self.flown.launch),
-                "batted-ball scene: this swing's launch, flown on its own (b: back to the swing)",
-            )
-        } else {
-            (
-                self.scene.as_swing(),
-                "swing scene: pitch, bat, impact, optimum and surface (b: the batted ball)",
-            )
-        };
-        self.set_scene(scene);
-        self.message = Some((message.into(), false));
-    }
-
-    /// Moves the swing to the optimum found (key `r`).
-    fn reset_to_optimum(&mut self) {
-        if !self.is_swing() {
-            self.message = Some((SWING_ONLY.into(), true));
-            return;
-        }
-        if let Some(o) = self.optimum.filter(|o| o.done) {
-            if o.best.range.is_finite() {
-                self.scene = self.scene.with_swing(o.best.undercut, o.best.swing_angle);
-                self.inputs_changed = true;
-            } else {
-                self.message = Some(("no swing lands: there is no optimum".into(), true));
-            }
-        } else {
-            self.message = Some(("no optimum yet for these inputs".into(), true));
-        }
-    }
 }
 
 /// What the swing scene's views say in the batted-ball scene.
 pub const SWING_ONLY: &str =
     "the optimum, the range surface and the impact belong to the swing scene: b switches to it";
-
-/// The row selected when a scene of `kind` opens: the input that matters
-/// most (the bat's speed, the launch speed).
-fn first_input(fields: &[Field], kind: SceneKind) -> usize {
-    let name = match kind {
-        SceneKind::Swing => "bat.speed",
-        SceneKind::BattedBall => "launch.speed",
-    };
-    fields
-        .iter()
-        .position(|f| matches!(f, Field::Key(k) if input_key(*k).name == name))
-        .unwrap_or(0)
-}
-
-/// The choice `by` places after `current` in `all`, going round.
-fn cycle<T: Copy + PartialEq>(all: &[T], current: T, by: f64) -> T {
-    let k = all.iter().position(|c| *c == current).unwrap_or(0);
-    let n = all.len() as isize;
-    all[(k as isize + by.signum() as isize).rem_euclid(n) as usize]
-}
-
-/// A one-line text field holding `value`, all of it selected: typing
-/// replaces it (as in a form), while ← → or End keep and edit it.
-fn prefilled(value: String) -> TextArea<'static> {
-    let mut text = TextArea::new(vec![value]);
-    text.select_all();
-    text
-}

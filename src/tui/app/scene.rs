@@ -1,0 +1,87 @@
+//! Which scene is shown: a preset loaded, the switch between a swing and
+//! the batted ball it launches, and the swing moved to the optimum.
+
+use super::*;
+
+impl App {
+    /// Replaces the inputs with a preset's.
+    pub fn load(&mut self, preset: Preset) {
+        self.message = Some((format!("loaded {}", preset.name), false));
+        self.preset_name = preset.name;
+        self.description = preset.description;
+        self.set_scene(preset.scene);
+        self.fence = preset.fence;
+        self.dirty = true;
+    }
+
+    /// Replaces the scene, and the inputs pane's rows with its kind's,
+    /// keeping the selected row where the new scene has it.
+    pub(super) fn set_scene(&mut self, scene: Scene) {
+        let kind_changed = scene.kind != self.scene.kind;
+        self.scene = scene;
+        self.inputs_changed = true;
+        if kind_changed {
+            let selected = self.fields[self.selected];
+            self.fields = fields(scene.kind);
+            self.selected = self
+                .fields
+                .iter()
+                .position(|f| *f == selected)
+                .unwrap_or_else(|| first_input(&self.fields, scene.kind));
+            // The old scene's results are of another kind: drop them now.
+            self.optimum = None;
+            self.optimal_path.clear();
+            self.fit_figure();
+        }
+    }
+
+    /// Key `b`: from a swing to the batted ball it launches (the same
+    /// launch, so the same flight), or back to the swing as it was (the
+    /// ball, air and models as now).
+    pub(super) fn switch_scene(&mut self) {
+        let (scene, message) = if self.is_swing() {
+            (
+                self.scene.with_launch(self.flown.launch),
+                "batted-ball scene: this swing's launch, flown on its own (b: back to the swing)",
+            )
+        } else {
+            (
+                self.scene.as_swing(),
+                "swing scene: pitch, bat, impact, optimum and surface (b: the batted ball)",
+            )
+        };
+        self.set_scene(scene);
+        self.message = Some((message.into(), false));
+    }
+
+    /// Moves the swing to the optimum found (key `r`).
+    pub(super) fn reset_to_optimum(&mut self) {
+        if !self.is_swing() {
+            self.message = Some((SWING_ONLY.into(), true));
+            return;
+        }
+        if let Some(o) = self.optimum.filter(|o| o.done) {
+            if o.best.range.is_finite() {
+                self.scene = self.scene.with_swing(o.best.undercut, o.best.swing_angle);
+                self.inputs_changed = true;
+            } else {
+                self.message = Some(("no swing lands: there is no optimum".into(), true));
+            }
+        } else {
+            self.message = Some(("no optimum yet for these inputs".into(), true));
+        }
+    }
+}
+
+/// The row selected when a scene of `kind` opens: the input that matters
+/// most (the bat's speed, the launch speed).
+pub(super) fn first_input(fields: &[Field], kind: SceneKind) -> usize {
+    let name = match kind {
+        SceneKind::Swing => "bat.speed",
+        SceneKind::BattedBall => "launch.speed",
+    };
+    fields
+        .iter()
+        .position(|f| matches!(f, Field::Key(k) if input_key(*k).name == name))
+        .unwrap_or(0)
+}
