@@ -817,8 +817,9 @@ fn u_shows_and_takes_every_value_in_baseball_units() {
     let Mode::Edit { text, .. } = &app.mode else {
         panic!("editing")
     };
-    // The edit starts from the shown text: 42 m/s is 93.951 mph.
-    assert_eq!(text.lines().join(""), "93.951");
+    // The edit starts from the shown text: 42 m/s is 93.951 mph, shown to
+    // the 1 mph step.
+    assert_eq!(text.lines().join(""), "94");
     typed(&mut app, "100");
     key(&mut app, KeyCode::Enter);
     assert!(matches!(app.mode, Mode::Normal));

@@ -264,3 +264,43 @@ fn sweep_bounds_are_given_and_checked_in_the_units_shown() {
         "homerun: --to 300: bat.speed must be a finite number in (0, 223.694] mph\n"
     );
 }
+
+/// Each imperial CSV heading is the command's own SI heading, with the unit
+/// appended where the column converts: a figure names its columns as its
+/// JSON does (`bat_speed`), a sweep names the key as typed (`bat.speed`).
+#[test]
+fn imperial_csv_headings_are_the_si_ones_with_their_units() {
+    let dir = tempfile::tempdir().unwrap();
+    let sweep = [
+        "sweep",
+        "bat.speed",
+        "--from",
+        "60",
+        "--to",
+        "70",
+        "--steps",
+        "1",
+        "--csv",
+    ];
+    for (args, swept) in [
+        (&["figure", "8", "--csv"][..], "bat_speed"),
+        (&sweep[..], "bat.speed"),
+    ] {
+        let heading = |units: &str| -> Vec<String> {
+            let csv = stdout(dir.path(), &[args, &["--units", units]].concat());
+            let line = csv.lines().next().unwrap().to_owned();
+            line.split(',').map(str::to_owned).collect()
+        };
+        let (si, imperial) = (heading("si"), heading("imperial"));
+        assert_eq!(si[0], swept, "{args:?}");
+        assert_eq!(imperial[0], format!("{swept}_mph"), "{args:?}");
+        assert_eq!(si.len(), imperial.len(), "{si:?} {imperial:?}");
+        for (si, imperial) in si.iter().zip(&imperial) {
+            let unit = imperial.strip_prefix(si.as_str()).unwrap_or("?");
+            assert!(
+                ["", "_ft", "_in", "_mph", "_rpm", "_deg"].contains(&unit),
+                "{args:?}: {si} became {imperial}"
+            );
+        }
+    }
+}

@@ -24,15 +24,28 @@ pub fn shown_step(key: &Key, system: UnitSystem) -> f64 {
     }
 }
 
-/// An SI value of `key` as shown in `system`: in its unit there, to a
-/// thousandth of the shown step.
+/// An SI value of `key` as shown in `system`: in SI (and in a unit that
+/// does not convert) to a thousandth of the step, as it always was; in a
+/// converted unit to the step's own last digit (29.92 inHg for a 0.02 inHg
+/// step, 94 mph for 1 mph), since the SI value rarely lands on a round
+/// number there and more digits would only show the conversion. A nudge
+/// still changes the last digit shown.
 pub fn shown_value(key: &Key, si: f64, system: UnitSystem) -> String {
-    number(key.unit_in(system).show(si), shown_step(key, system))
+    let unit = key.unit_in(system);
+    let finer = if unit.is_identity() { 3 } else { 0 };
+    number(unit.show(si), shown_step(key, system), finer)
 }
 
-/// `value` to a thousandth of `step`, trailing zeros trimmed.
-fn number(value: f64, step: f64) -> String {
-    let decimals = ((-step.log10()).ceil() as i32 + 3).clamp(0, 12) as usize;
+/// An SI value of `key` in `system`, to a thousandth of the shown step: for
+/// a refused value, which is named as typed rather than rounded.
+fn precise_value(key: &Key, si: f64, system: UnitSystem) -> String {
+    number(key.unit_in(system).show(si), shown_step(key, system), 3)
+}
+
+/// `value` to `finer` more decimals than `step` has, trailing zeros
+/// trimmed.
+fn number(value: f64, step: f64, finer: i32) -> String {
+    let decimals = ((-step.log10()).ceil() as i32 + finer).clamp(0, 12) as usize;
     trim(format!("{value:.decimals$}"))
 }
 
@@ -111,7 +124,7 @@ pub fn error_text(error: &InputError, system: UnitSystem) -> String {
             format!(
                 "{} = {} {}: must be a finite number in {}",
                 key.name,
-                shown_value(key, *value, system),
+                precise_value(key, *value, system),
                 unit.symbol,
                 shown_bounds(key, system)
             )
@@ -139,9 +152,10 @@ mod tests {
     fn imperial_values_steps_and_errors_are_in_the_shown_unit() {
         let imperial = UnitSystem::Imperial;
         let speed = Scene::key("pitch.speed").unwrap();
-        // 42 m/s is 93.951 mph; the step is 1 mph.
+        // 42 m/s is 93.951 mph; the step is 1 mph, so whole mph are shown.
         assert_eq!(shown_step(speed, imperial), 1.0);
-        assert_eq!(shown_value(speed, 42.0, imperial), "93.951");
+        assert_eq!(shown_value(speed, 42.0, imperial), "94");
+        assert_eq!(shown_value(speed, 42.0 + 0.44704, imperial), "95");
         assert!((read_value(speed, "100", imperial).unwrap() - 44.704).abs() < 1e-12);
         let mut scene = Scene::default();
         scene.pitch.speed = read_value(speed, "300", imperial).unwrap();
@@ -161,5 +175,39 @@ mod tests {
         );
         // SI keeps the library's text.
         assert_eq!(error_text(&error, UnitSystem::Si), error.to_string());
+    }
+    #[test]
+    fn imperial_values_show_the_steps_digits_and_a_nudge_shows() {
+        let imperial = UnitSystem::Imperial;
+        let shown = |name: &str, si: f64| shown_value(Scene::key(name).unwrap(), si, imperial);
+        // 1013.25 hPa is 29.921 inHg; the step is 0.02 inHg.
+        assert_eq!(shown("environment.pressure", 1013.25), "29.92");
+        // 0.0265 m is 1.0433 in, step 0.02 in; 0.0231 m is 0.9094 in.
+        assert_eq!(shown("bat.undercut", 0.0265), "1.04");
+        assert_eq!(shown("ball.gyration_radius", 0.0231), "0.91");
+        // SI as it always was: a thousandth of the step.
+        assert_eq!(
+            format_value(Scene::key("bat.undercut").unwrap(), 0.0265),
+            "0.0265"
+        );
+        let scene = Scene::default();
+        for key in crate::model::keys::all_keys() {
+            let step = shown_step(key, imperial);
+            let unit = key.unit_in(imperial);
+            let si = (key.get)(&scene);
+            let nudged = unit.read(unit.show(si) + step);
+            assert_ne!(
+                shown_value(key, si, imperial),
+                shown_value(key, nudged, imperial),
+                "{} by {step}",
+                key.name
+            );
+            let text = shown_value(key, si, imperial);
+            let decimals = text.split_once('.').map_or(0, |(_, d)| d.len());
+            if !unit.is_identity() {
+                let step_decimals = (-step.log10()).ceil().max(0.0) as usize;
+                assert!(decimals <= step_decimals, "{}: {text}", key.name);
+            }
+        }
     }
 }

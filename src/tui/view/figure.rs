@@ -7,7 +7,7 @@ use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Chart, Paragraph};
+use ratatui::widgets::{Block, Chart, Paragraph, Wrap};
 
 use super::chart;
 use crate::analysis::figures::curves::{
@@ -164,18 +164,37 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .collect();
     notes.extend(data.notes.iter().map(|n| Line::styled(n.as_str(), dim())));
     let room = (inner.height as usize).saturating_sub(10).max(1);
-    notes.truncate(room);
+    // Whole notes, wrapped, when they take at most a quarter of the pane
+    // (the chart comes first); else one line each, as many as fit, cut at
+    // the edge (the numbers come first).
+    let wrapped: usize = notes
+        .iter()
+        .map(|note| wrapped_rows(&note.to_string(), inner.width as usize))
+        .sum();
+    let wrap = wrapped <= room.min(inner.height as usize / 4);
+    let rows = if wrap {
+        wrapped
+    } else {
+        notes.truncate(room);
+        notes.len()
+    };
     let [heading, plot, below] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Fill(1),
-        Constraint::Length(notes.len() as u16),
+        Constraint::Length(rows as u16),
     ])
     .areas(inner);
     frame.render_widget(
         Paragraph::new(Line::styled(data.title.as_str(), dim())),
         heading,
     );
-    frame.render_widget(Paragraph::new(notes), below);
+    let notes = Paragraph::new(notes);
+    let notes = if wrap {
+        notes.wrap(Wrap { trim: true })
+    } else {
+        notes
+    };
+    frame.render_widget(notes, below);
 
     let points = curves.iter().flat_map(|c| c.points.iter());
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
@@ -220,4 +239,49 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .y_axis(chart::axis(y_head, [y0, y1], labels(y0, y1)))
         .legend_position(None);
     frame.render_widget(chart, plot);
+}
+/// How many rows `text` takes when wrapped at words to `width` cells, as
+/// `Wrap { trim: true }` does: spaces inside a row count, those at a break
+/// do not, and a word longer than a row is split.
+fn wrapped_rows(text: &str, width: usize) -> usize {
+    if width == 0 {
+        return u16::MAX.into();
+    }
+    let (mut rows, mut used) = (1, 0);
+    // Each word with the spaces before it (the second and later spaces of
+    // a gap are empty pieces).
+    let mut gap = 0;
+    for word in text.trim().split(' ') {
+        gap += 1;
+        if word.is_empty() {
+            continue;
+        }
+        let cells = Span::raw(word).width().max(1);
+        let needed = if used == 0 { cells } else { used + gap + cells };
+        if needed <= width {
+            used = needed;
+        } else {
+            rows += usize::from(used > 0) + (cells - 1) / width;
+            used = (cells - 1) % width + 1;
+        }
+        gap = 0;
+    }
+    rows
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn notes_wrap_at_words() {
+        assert_eq!(wrapped_rows("paper 5 · ours 4.01 m", 40), 1);
+        // "range gained" does not fit in 10 after "paper 5 ·".
+        assert_eq!(wrapped_rows("paper 5 · range gained", 10), 3);
+        assert_eq!(wrapped_rows("abcdefghijkl", 5), 3);
+        assert_eq!(wrapped_rows("", 5), 1);
+        // A double space counts: 11 cells do not fit in 10.
+        assert_eq!(wrapped_rows("ab cd  efgh", 10), 2);
+        assert_eq!(wrapped_rows("ab cd efgh", 10), 1);
+    }
 }
