@@ -6,7 +6,7 @@
 
 use plotters::prelude::*;
 
-use super::{FONT, PictureError, drawn, series_color};
+use super::{FONT, PictureError, drawn, house_style, series_color};
 use crate::analysis::bench::TrajectoryRow;
 
 /// The smallest error drawn (m): a row that hit the reference exactly is
@@ -104,22 +104,20 @@ pub fn bench_svg(rows: &[TrajectoryRow]) -> Result<String, PictureError> {
             .build_cartesian_2d((t0..t1).log_scale(), (e0..e1).log_scale())
             .map_err(drawn)?;
         let label = |v: &f64| format!("{v:.0e}");
-        chart
-            .configure_mesh()
-            .x_desc(if cpu {
-                "CPU time per trajectory (µs)"
-            } else {
-                "wall time per trajectory (µs)"
-            })
-            .y_desc("|range error| (m)")
-            .x_label_formatter(&label)
-            .y_label_formatter(&label)
-            .axis_desc_style((FONT, 14))
-            .label_style((FONT, 12))
-            .light_line_style(RGBColor(240, 240, 240))
-            .bold_line_style(RGBColor(215, 215, 215))
-            .draw()
-            .map_err(drawn)?;
+        house_style(
+            chart
+                .configure_mesh()
+                .x_desc(if cpu {
+                    "CPU time per trajectory (µs)"
+                } else {
+                    "wall time per trajectory (µs)"
+                })
+                .y_desc("|range error| (m)")
+                .x_label_formatter(&label)
+                .y_label_formatter(&label),
+        )
+        .draw()
+        .map_err(drawn)?;
         for (k, (name, points)) in lines.iter().enumerate() {
             let color = series_color(k);
             chart

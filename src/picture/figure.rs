@@ -11,8 +11,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::surface::{SurfacePicture, surface_svg};
 use super::{
-    FONT, Labels, MARK, NOW, PictureError, chars_in, drawn, emptiest_corner, padded, series_color,
-    sig, tick_label, wrapped,
+    FONT, Labels, MARK, NOW, PictureError, chars_in, drawn, emptiest_corner, house_style, padded,
+    series_color, sig, tick_label, wrapped,
 };
 use crate::Scene;
 use crate::analysis::figures::curves::{
@@ -136,18 +136,16 @@ fn draw_panel(
         .map_err(drawn)?;
     let x_label = tick_label(x1 - x0);
     let y_label = tick_label(y1 - y0);
-    chart
-        .configure_mesh()
-        .x_desc(x_head)
-        .y_desc(y_head)
-        .x_label_formatter(&x_label)
-        .y_label_formatter(&y_label)
-        .axis_desc_style((FONT, 14))
-        .label_style((FONT, 12))
-        .light_line_style(RGBColor(235, 235, 235))
-        .bold_line_style(RGBColor(215, 215, 215))
-        .draw()
-        .map_err(drawn)?;
+    house_style(
+        chart
+            .configure_mesh()
+            .x_desc(x_head)
+            .y_desc(y_head)
+            .x_label_formatter(&x_label)
+            .y_label_formatter(&y_label),
+    )
+    .draw()
+    .map_err(drawn)?;
     for (k, curve) in curves.iter().enumerate() {
         let color = series_color(k);
         // A gap in the rows (a flight that did not land) breaks the line.

@@ -17,6 +17,9 @@ pub use figure::{figure_svg, table_figure_svg};
 pub use surface::{SurfacePicture, surface_svg};
 pub use trajectory::{FlightPath, TrajectoryPicture, trajectory_svg};
 
+use plotters::chart::MeshStyle;
+use plotters::coord::ranged1d::Ranged;
+use plotters::prelude::DrawingBackend;
 use plotters::style::RGBColor;
 
 /// Why a picture could not be drawn (plotters' own errors; with a `String`
@@ -32,6 +35,17 @@ fn drawn<E: std::fmt::Display>(error: E) -> PictureError {
 
 /// The font family every text asks for: the viewer's own sans-serif.
 const FONT: &str = "sans-serif";
+
+/// Every chart's axes alike: the descriptions' and labels' fonts and the
+/// grid's two greys (the finer lines lighter).
+fn house_style<'m, 'a, 'b, X: Ranged, Y: Ranged, DB: DrawingBackend>(
+    mesh: &'m mut MeshStyle<'a, 'b, X, Y, DB>,
+) -> &'m mut MeshStyle<'a, 'b, X, Y, DB> {
+    mesh.axis_desc_style((FONT, 14))
+        .label_style((FONT, 12))
+        .light_line_style(RGBColor(240, 240, 240))
+        .bold_line_style(RGBColor(215, 215, 215))
+}
 
 /// Okabe–Ito: told apart with any colour vision and in greyscale print.
 const SERIES: [RGBColor; 7] = [

@@ -8,7 +8,7 @@ use plotters::prelude::*;
 
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::{FONT, Labels, MARK, NOW, PictureError, drawn, sig, tick_label};
+use super::{FONT, Labels, MARK, NOW, PictureError, drawn, house_style, sig, tick_label};
 use crate::Scene;
 use crate::analysis::figures::SurfaceFigure;
 use crate::analysis::study::{CellOutcome, Surface};
@@ -179,17 +179,17 @@ pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
             .map_err(drawn)?;
         let x_label = tick_label((e1 - e0) * 1e3);
         let y_label = tick_label(p1 - p0);
-        chart
-            .configure_mesh()
-            .disable_mesh()
-            .x_desc("undercut E (mm)")
-            .y_desc("swing angle ψ (rad)")
-            .x_label_formatter(&x_label)
-            .y_label_formatter(&y_label)
-            .axis_desc_style((FONT, 14))
-            .label_style((FONT, 12))
-            .draw()
-            .map_err(drawn)?;
+        house_style(
+            chart
+                .configure_mesh()
+                .disable_mesh()
+                .x_desc("undercut E (mm)")
+                .y_desc("swing angle ψ (rad)")
+                .x_label_formatter(&x_label)
+                .y_label_formatter(&y_label),
+        )
+        .draw()
+        .map_err(drawn)?;
         // A row's run of cells of one shade is one rectangle.
         let mut cells = Vec::new();
         for j in 0..grid.rows {

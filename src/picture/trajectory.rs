@@ -5,7 +5,9 @@
 
 use plotters::prelude::*;
 
-use super::{FONT, NOW, PictureError, drawn, emptiest_corner, series_color, tick_label};
+use super::{
+    FONT, NOW, PictureError, drawn, emptiest_corner, house_style, series_color, tick_label,
+};
 use crate::analysis::figures::trimmed;
 use crate::preset::Fence;
 
@@ -99,18 +101,16 @@ pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureErro
             .map_err(drawn)?;
         let x_label = tick_label(x_max - x_min);
         let y_label = tick_label(y_max);
-        chart
-            .configure_mesh()
-            .x_desc("x (m)")
-            .y_desc("y (m)")
-            .x_label_formatter(&x_label)
-            .y_label_formatter(&y_label)
-            .axis_desc_style((FONT, 14))
-            .label_style((FONT, 12))
-            .light_line_style(RGBColor(240, 240, 240))
-            .bold_line_style(RGBColor(220, 220, 220))
-            .draw()
-            .map_err(drawn)?;
+        house_style(
+            chart
+                .configure_mesh()
+                .x_desc("x (m)")
+                .y_desc("y (m)")
+                .x_label_formatter(&x_label)
+                .y_label_formatter(&y_label),
+        )
+        .draw()
+        .map_err(drawn)?;
         for (k, path) in picture.paths.iter().enumerate() {
             let color = series_color(k);
             chart
