@@ -6,7 +6,7 @@
 
 use plotters::prelude::*;
 
-use super::{FONT, PictureError, drawn, house_style, series_color};
+use super::{FONT, PictureError, draw_legend, drawn, house_style, series_color};
 use crate::analysis::bench::TrajectoryRow;
 
 /// The smallest error drawn (m): a row that hit the reference exactly is
@@ -134,14 +134,7 @@ pub fn bench_svg(rows: &[TrajectoryRow]) -> Result<String, PictureError> {
                 .draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
                 .map_err(drawn)?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .label_font((FONT, 12))
-            .background_style(WHITE.mix(0.85))
-            .border_style(RGBColor(180, 180, 180))
-            .draw()
-            .map_err(drawn)?;
+        draw_legend(&mut chart, SeriesLabelPosition::UpperRight)?;
         root.present().map_err(drawn)?;
     }
     Ok(svg)

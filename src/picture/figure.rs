@@ -11,8 +11,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::surface::{SurfacePicture, surface_svg};
 use super::{
-    FONT, Labels, MARK, NOW, PictureError, chars_in, drawn, emptiest_corner, house_style, padded,
-    series_color, sig, tick_label, wrapped,
+    FONT, Labels, MARK, NOW, PictureError, chars_in, draw_legend, drawn, emptiest_corner,
+    house_style, padded, series_color, sig, tick_label, wrapped,
 };
 use crate::Scene;
 use crate::analysis::figures::curves::{
@@ -204,14 +204,7 @@ fn draw_panel(
             plot,
             (220, 24 + 18 * curves.len() as i32),
         );
-        chart
-            .configure_series_labels()
-            .position(corner)
-            .label_font((FONT, 12))
-            .background_style(WHITE.mix(0.85))
-            .border_style(RGBColor(180, 180, 180))
-            .draw()
-            .map_err(drawn)?;
+        draw_legend(&mut chart, corner)?;
     }
     Ok(())
 }

@@ -17,10 +17,12 @@ pub use figure::{figure_svg, table_figure_svg};
 pub use surface::{SurfacePicture, surface_svg};
 pub use trajectory::{FlightPath, TrajectoryPicture, trajectory_svg};
 
-use plotters::chart::MeshStyle;
+use plotters::chart::{ChartContext, MeshStyle, SeriesLabelPosition};
+use plotters::coord::CoordTranslate;
 use plotters::coord::ranged1d::Ranged;
 use plotters::prelude::DrawingBackend;
 use plotters::style::RGBColor;
+use plotters::style::{Color, WHITE};
 
 /// Why a picture could not be drawn (plotters' own errors; with a `String`
 /// as the target there is no I/O to fail).
@@ -35,6 +37,22 @@ fn drawn<E: std::fmt::Display>(error: E) -> PictureError {
 
 /// The font family every text asks for: the viewer's own sans-serif.
 const FONT: &str = "sans-serif";
+
+/// Every chart's legend alike, at `position`: a white box over the plot,
+/// lightly bordered.
+fn draw_legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    position: SeriesLabelPosition,
+) -> Result<(), PictureError> {
+    chart
+        .configure_series_labels()
+        .position(position)
+        .label_font((FONT, 12))
+        .background_style(WHITE.mix(0.85))
+        .border_style(RGBColor(180, 180, 180))
+        .draw()
+        .map_err(drawn)
+}
 
 /// Every chart's axes alike: the descriptions' and labels' fonts and the
 /// grid's two greys (the finer lines lighter).

@@ -6,7 +6,8 @@
 use plotters::prelude::*;
 
 use super::{
-    FONT, NOW, PictureError, drawn, emptiest_corner, house_style, series_color, tick_label,
+    FONT, NOW, PictureError, draw_legend, drawn, emptiest_corner, house_style, series_color,
+    tick_label,
 };
 use crate::analysis::figures::trimmed;
 use crate::preset::Fence;
@@ -145,14 +146,7 @@ pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureErro
             [xs.start, ys.start, xs.end, ys.end],
             (260, 24 + 18 * (picture.paths.len() as i32 + 1)),
         );
-        chart
-            .configure_series_labels()
-            .position(corner)
-            .label_font((FONT, 12))
-            .background_style(WHITE.mix(0.85))
-            .border_style(RGBColor(180, 180, 180))
-            .draw()
-            .map_err(drawn)?;
+        draw_legend(&mut chart, corner)?;
         root.present().map_err(drawn)?;
     }
     Ok(svg)
