@@ -159,3 +159,47 @@ fn the_readme_examples_are_what_the_program_prints() {
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n\n"));
 }
+
+/// The screens the README shows are the explorer's own, as the insta
+/// snapshots of `tests/tui_render.rs` hold them: each picture of the
+/// explorer equals one snapshot, so a change to a pane cannot leave the
+/// README showing the old one.
+#[test]
+fn the_readme_screens_are_snapshots() {
+    let snapshots: Vec<(String, Vec<String>)> = std::fs::read_dir("tests/snapshots")
+        .unwrap()
+        .map(|entry| entry.unwrap().path())
+        .filter(|path| path.extension().is_some_and(|e| e == "snap"))
+        .map(|path| {
+            let text = std::fs::read_to_string(&path).unwrap();
+            let body = text.splitn(3, "---\n").nth(2).unwrap_or("");
+            let lines = body
+                .lines()
+                .map(|l| l.trim_matches('"').trim_end().to_owned())
+                .collect();
+            (path.display().to_string(), lines)
+        })
+        .collect();
+    let readme = include_str!("../README.md");
+    let screens: Vec<Vec<String>> = readme
+        .split("```")
+        .skip(1)
+        .step_by(2)
+        .map(|block| {
+            block
+                .lines()
+                .skip(1)
+                .map(|l| l.trim_end().to_owned())
+                .collect::<Vec<_>>()
+        })
+        .filter(|lines: &Vec<String>| lines.first().is_some_and(|l| l.starts_with("┌ Inputs")))
+        .collect();
+    assert!(!screens.is_empty(), "the README shows the explorer");
+    for screen in &screens {
+        assert!(
+            snapshots.iter().any(|(_, lines)| lines == screen),
+            "a README screen that no snapshot holds:\n{}",
+            screen.join("\n")
+        );
+    }
+}
