@@ -49,16 +49,9 @@ impl SceneArgs {
         }
         if let Some(fence) = &preset.fence {
             for field in &FIELD_KEYS {
-                let value = (field.get)(fence);
-                if !field.bounds.contains(value) {
-                    return Err(InputError::OutOfRange {
-                        key: field.name,
-                        value,
-                        bounds: field.bounds,
-                        unit: field.unit,
-                    }
-                    .into());
-                }
+                field
+                    .bounds
+                    .check(field.name, (field.get)(fence), field.unit)?;
             }
         }
         preset.scene.validate()?;

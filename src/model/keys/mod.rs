@@ -59,6 +59,26 @@ impl Bounds {
             max_exclusive: true,
         }
     }
+    /// `value` of key `key` (in `unit`) if it is inside, else the error
+    /// that names the key, the value and the range.
+    pub fn check(
+        self,
+        key: &'static str,
+        value: f64,
+        unit: &'static str,
+    ) -> Result<(), InputError> {
+        if self.contains(value) {
+            Ok(())
+        } else {
+            Err(InputError::OutOfRange {
+                key,
+                value,
+                bounds: self,
+                unit,
+            })
+        }
+    }
+
     pub fn contains(&self, value: f64) -> bool {
         let above = if self.min_exclusive {
             value > self.min
@@ -271,14 +291,7 @@ impl Scene {
             .map(|key| (key, (key.get)(self)))
             .chain(launch_keys);
         for (key, value) in ordered {
-            if !key.bounds.contains(value) {
-                return Err(InputError::OutOfRange {
-                    key: key.name,
-                    value,
-                    bounds: key.bounds,
-                    unit: key.unit,
-                });
-            }
+            key.bounds.check(key.name, value, key.unit)?;
         }
         let density =
             self.ball.mass / (4.0 / 3.0 * std::f64::consts::PI * self.ball.radius.powi(3));
