@@ -622,6 +622,8 @@ fn batch_scenes(rows: usize) -> Vec<Scene> {
                 speed: 30.0 + 20.0 * f(17),
                 angle: (5.0 + 40.0 * f(13)).to_radians(),
                 spin: (1000.0 + 2000.0 * f(11)) * std::f64::consts::TAU / 60.0,
+                direction: 0.0,
+                sidespin: 0.0,
             })
         })
         .collect()

@@ -134,9 +134,8 @@ fn air_text(air: &Air, shown: Shown) -> String {
 
 /// Where a flight that did not land ended (m above the ground).
 fn end_height(scene: &Scene) -> f64 {
-    let (flight, start, _, _) = launch::scene_start(scene);
     let options = Purpose::Readout.flight_options();
-    let (_, points) = crate::model::flight::trajectory(&flight, &start, &options, 2);
+    let (_, points) = launch::scene_start(scene).0.trajectory(&options, 2);
     points.last().map_or(0.0, |p| p.y)
 }
 

@@ -188,11 +188,10 @@ fn sampled(
         return Err(UsageError::BadSamples { samples });
     }
     // A swing's flight or a batted ball's, as the scene is.
-    let (flight, launch, _, _) = crate::model::launch::scene_start(scene);
     let options = Purpose::Readout.flight_options();
-    Ok(crate::model::flight::trajectory(
-        &flight, &launch, &options, samples,
-    ))
+    Ok(crate::model::launch::scene_start(scene)
+        .0
+        .trajectory(&options, samples))
 }
 
 /// `trajectory --svg`: the flight in x–y with the preset's fence.

@@ -312,6 +312,10 @@ impl LiftCurve for NoLift {
     }
 }
 
+/// The keys that choose the models (in `--set`, presets and batch columns).
+pub const DRAG_KEY: &str = "model.drag";
+pub const LIFT_KEY: &str = "model.lift";
+
 /// A model name that is not one of the accepted ones.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{key} = {text:?}: unknown {kind} model; accepted: {accepted}")]
@@ -344,24 +348,14 @@ fn parse_model<M: Copy, const N: usize>(
 impl std::str::FromStr for DragModel {
     type Err = UnknownModel;
     fn from_str(text: &str) -> Result<Self, Self::Err> {
-        parse_model(
-            text,
-            DragModel::ALL,
-            DragModel::name,
-            (super::keys::DRAG_KEY, "drag"),
-        )
+        parse_model(text, DragModel::ALL, DragModel::name, (DRAG_KEY, "drag"))
     }
 }
 
 impl std::str::FromStr for LiftModel {
     type Err = UnknownModel;
     fn from_str(text: &str) -> Result<Self, Self::Err> {
-        parse_model(
-            text,
-            LiftModel::ALL,
-            LiftModel::name,
-            (super::keys::LIFT_KEY, "lift"),
-        )
+        parse_model(text, LiftModel::ALL, LiftModel::name, (LIFT_KEY, "lift"))
     }
 }
 

@@ -1,26 +1,22 @@
-//! What a scene models: a swing (pitch → impact → flight, the paper's
-//! scene) or a batted ball (launch → flight, no pitch and no impact, as
-//! Statcast and the trajectory calculators start). One function,
-//! [`fly_scene`], gives either kind's launch and flight.
+//! What a scene flies: a swing's launch (pitch → impact, the paper's scene)
+//! or a batted ball's (given, as Statcast and the trajectory calculators
+//! start), in the plane or in three dimensions. [`SceneFlight`] picks the
+//! cheaper flight that is exact for the scene: the planar one whenever
+//! nothing leaves the launch's vertical plane. [`fly_scene`] gives either
+//! kind's launch and flight.
 
-use nalgebra::Vector2;
-use serde::{Deserialize, Serialize};
+use nalgebra::{Vector2, Vector3};
+use serde::Serialize;
 
-use super::flight::{self, Flight, FlightOptions, FlightSummary, Launch};
+use super::flight::{
+    self, Flight, Flight3d, FlightOptions, FlightSummary, Launch, Launch3d, TrajectoryPoint,
+};
+use super::frame;
 use super::impact::Impact;
 use super::scene::Scene;
+use crate::numerics::ode::DenseStep;
 
-/// Which phases a scene models.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SceneKind {
-    /// Pitch → impact → flight: the launch comes out of the impact.
-    #[default]
-    Swing,
-    /// Launch → flight: the launch is given (`launch.*`); pitch and bat
-    /// only supply a launch value that is not given.
-    BattedBall,
-}
+pub use super::scene::{GivenLaunch, SceneKind};
 
 /// A batted ball as it leaves the bat.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -31,48 +27,31 @@ pub struct BattedBall {
     pub angle: f64,
     /// ω_bf (rad/s), backspin positive.
     pub spin: f64,
+    /// Horizontal direction (rad from the centre-field line, positive
+    /// toward right field).
+    pub direction: f64,
+    /// Sidespin (rad/s), positive curving the ball toward right field
+    /// ([`frame::sidespin_axis`]).
+    pub sidespin: f64,
 }
 
 impl BattedBall {
-    /// The launch of `impact`.
+    /// The launch of `impact`: the paper's swing is planar, toward centre
+    /// field, with backspin only.
     pub fn of(impact: &Impact) -> BattedBall {
         BattedBall {
             speed: impact.launch_speed(),
             angle: impact.launch_angle(),
             spin: impact.launch_spin(),
+            direction: 0.0,
+            sidespin: 0.0,
         }
     }
-}
 
-/// The launch values a batted-ball scene gives (`launch.speed`,
-/// `launch.angle`, `launch.spin`); `None` takes the value from the scene's
-/// own swing, so `--set launch.angle=0.5` on the fastball flies the
-/// fastball's launch speed and spin at 0.5 rad whatever order the other
-/// `--set`s come in.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct GivenLaunch {
-    pub speed: Option<f64>,
-    pub angle: Option<f64>,
-    pub spin: Option<f64>,
-}
-
-impl GivenLaunch {
-    pub fn is_empty(&self) -> bool {
-        self.speed.is_none() && self.angle.is_none() && self.spin.is_none()
+    /// The spin vector (rad/s) in the flight frame.
+    pub fn spin_vector(&self) -> Vector3<f64> {
+        frame::spin_vector(self.spin, self.sidespin, self.angle, self.direction)
     }
-
-    pub fn is_complete(&self) -> bool {
-        self.speed.is_some() && self.angle.is_some() && self.spin.is_some()
-    }
-}
-
-/// A scene's launch and its flight, whatever the scene's kind.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Flown {
-    pub launch: BattedBall,
-    /// The impact, for a swing scene (`None` for a batted ball).
-    pub impact: Option<Impact>,
-    pub flight: FlightSummary,
 }
 
 impl Scene {
@@ -86,6 +65,8 @@ impl Scene {
                 speed: given.speed.unwrap_or_default(),
                 angle: given.angle.unwrap_or_default(),
                 spin: given.spin.unwrap_or_default(),
+                direction: given.direction.unwrap_or_default(),
+                sidespin: given.sidespin.unwrap_or_default(),
             };
         }
         let own = BattedBall::of(&Impact::new(self));
@@ -96,59 +77,240 @@ impl Scene {
             speed: given.speed.unwrap_or(own.speed),
             angle: given.angle.unwrap_or(own.angle),
             spin: given.spin.unwrap_or(own.spin),
+            direction: given.direction.unwrap_or(own.direction),
+            sidespin: given.sidespin.unwrap_or(own.sidespin),
         }
     }
 
     /// This scene as a batted ball launched as `launch`: every launch value
     /// given, so pitch and bat no longer matter (the explorer's switch to
-    /// the batted-ball scene freezes the swing's launch with it).
+    /// the batted-ball scene freezes the swing's launch with it). Models the
+    /// user did not choose become the batted ball's.
     pub fn with_launch(&self, launch: BattedBall) -> Scene {
         let mut scene = *self;
-        scene.kind = SceneKind::BattedBall;
+        scene.set_kind(SceneKind::BattedBall);
         scene.launch = GivenLaunch {
             speed: Some(launch.speed),
             angle: Some(launch.angle),
             spin: Some(launch.spin),
+            direction: Some(launch.direction),
+            sidespin: Some(launch.sidespin),
         };
         scene
     }
 
     /// This scene as the swing it holds (the launch values are kept, unused,
-    /// for a switch back).
+    /// for a switch back; models the user did not choose become the swing's).
     pub fn as_swing(&self) -> Scene {
-        Scene {
-            kind: SceneKind::Swing,
-            ..*self
-        }
+        let mut scene = *self;
+        scene.set_kind(SceneKind::Swing);
+        scene
     }
 }
 
-/// The forces and the starting point of `launch`'s flight in `scene`'s air,
-/// from the contact height.
-pub fn start(scene: &Scene, launch: &BattedBall) -> (Flight, Launch) {
-    (
-        Flight::new(scene, launch.spin),
-        Launch {
-            position: Vector2::new(0.0, scene.environment.contact_height),
-            velocity: Vector2::new(launch.angle.cos(), launch.angle.sin()) * launch.speed,
-        },
-    )
+/// A scene's flight, ready to fly: planar when nothing leaves the launch's
+/// vertical plane, else in three dimensions.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SceneFlight {
+    /// In the vertical plane of direction `plane` (rad): the paper's flight,
+    /// its x along the plane.
+    Planar {
+        flight: Flight,
+        launch: Launch,
+        plane: f64,
+    },
+    Spatial {
+        flight: Flight3d,
+        launch: Launch3d,
+    },
 }
 
-/// The forces and starting point of a (validated) scene's flight, whatever
-/// its kind: a swing's launch velocity is the impact's own (not rebuilt
-/// from speed and angle), so a swing scene flies exactly as `simulate`.
-pub fn scene_start(scene: &Scene) -> (Flight, Launch, BattedBall, Option<Impact>) {
+impl SceneFlight {
+    /// The flight of `launch` in `scene`'s air, from the contact height. It
+    /// stays planar when the ball has no sidespin and the wind blows along
+    /// the launch's plane, everywhere (a calm, or a wind with no crosswind
+    /// part and no height below which it stops).
+    pub fn new(scene: &Scene, launch: &BattedBall) -> SceneFlight {
+        let env = scene.environment;
+        let height = env.contact_height;
+        let along = frame::wind_along(env.wind, env.wind_direction, launch.direction)
+            .filter(|_| env.wind == 0.0 || env.wind_height <= 0.0);
+        match along {
+            Some(wind) if launch.sidespin == 0.0 => {
+                let mut flight = Flight::new(scene, launch.spin);
+                flight.wind = wind;
+                let (sin, cos) = launch.angle.sin_cos();
+                SceneFlight::Planar {
+                    flight,
+                    launch: Launch {
+                        position: Vector2::new(0.0, height),
+                        velocity: Vector2::new(cos, sin) * launch.speed,
+                    },
+                    plane: launch.direction,
+                }
+            }
+            _ => SceneFlight::Spatial {
+                flight: Flight3d::new(scene, launch.spin_vector()),
+                launch: Launch3d {
+                    position: Vector3::new(0.0, height, 0.0),
+                    velocity: frame::launch_velocity(launch.speed, launch.angle, launch.direction),
+                },
+            },
+        }
+    }
+
+    /// The flight after `impact`, whose launch velocity is the impact's own
+    /// (not rebuilt from speed and angle), so a planar swing flies exactly
+    /// as [`super::simulate`] does.
+    pub fn of_impact(scene: &Scene, impact: &Impact) -> SceneFlight {
+        let mut flight = SceneFlight::new(scene, &BattedBall::of(impact));
+        if let SceneFlight::Planar { launch, .. } = &mut flight {
+            launch.velocity = impact.after.ball_velocity;
+        }
+        flight
+    }
+
+    pub fn is_planar(&self) -> bool {
+        matches!(self, SceneFlight::Planar { .. })
+    }
+
+    /// Flies to the landing as precisely as `options` says. A planar
+    /// flight's landing lies in its plane's direction.
+    pub fn fly(&self, options: &FlightOptions) -> FlightSummary {
+        match self {
+            SceneFlight::Planar {
+                flight,
+                launch,
+                plane,
+            } => FlightSummary {
+                direction: *plane,
+                ..flight::fly(flight, launch, options)
+            },
+            SceneFlight::Spatial { flight, launch } => flight::fly(flight, launch, options),
+        }
+    }
+
+    /// The flight sampled at `samples` equal times (see
+    /// [`flight::trajectory`]), in the flight frame.
+    pub fn trajectory(
+        &self,
+        options: &FlightOptions,
+        samples: usize,
+    ) -> (FlightSummary, Vec<TrajectoryPoint>) {
+        match self {
+            SceneFlight::Planar {
+                flight,
+                launch,
+                plane,
+            } => {
+                let (summary, mut points) = flight::trajectory(flight, launch, options, samples);
+                if *plane != 0.0 {
+                    let (sin, cos) = plane.sin_cos();
+                    for p in &mut points {
+                        (p.x, p.z) = (p.x * cos, p.x * sin);
+                    }
+                }
+                (
+                    FlightSummary {
+                        direction: *plane,
+                        ..summary
+                    },
+                    points,
+                )
+            }
+            SceneFlight::Spatial { flight, launch } => {
+                flight::trajectory(flight, launch, options, samples)
+            }
+        }
+    }
+
+    /// The ball's height (m) where it first gets `distance` (m) from the
+    /// plate, horizontally, read off the integrator's continuous extension;
+    /// and the flight. `None` if it never gets that far.
+    pub fn height_at_distance(
+        &self,
+        distance: f64,
+        options: &FlightOptions,
+    ) -> (FlightSummary, Option<f64>) {
+        let mut height = None;
+        let summary = match self {
+            SceneFlight::Planar {
+                flight,
+                launch,
+                plane,
+            } => {
+                let summary = flight::fly_observed(flight, launch, options, |step| {
+                    if height.is_none() {
+                        height = height_where(step, distance, |s| s[0]);
+                    }
+                });
+                FlightSummary {
+                    direction: *plane,
+                    ..summary
+                }
+            }
+            SceneFlight::Spatial { flight, launch } => {
+                flight::fly_observed(flight, launch, options, |step| {
+                    if height.is_none() {
+                        height = height_where(step, distance, |s| s[0].hypot(s[2]));
+                    }
+                })
+            }
+        };
+        // A step may carry the dense output past the landing: only a
+        // crossing above the ground counts.
+        (summary, height.filter(|&h| h >= 0.0))
+    }
+}
+
+/// The height where `reach` (a horizontal distance) passes `distance` in
+/// `step`, if it does: bisection on reach(t) = distance, reach rising
+/// through the step (it did at both ends; a ball that turns back within
+/// one step is no home run).
+fn height_where<const N: usize>(
+    step: &DenseStep<N>,
+    distance: f64,
+    reach: impl Fn(&crate::numerics::ode::State<N>) -> f64,
+) -> Option<f64> {
+    if !(reach(&step.y0) < distance && distance <= reach(&step.y1)) {
+        return None;
+    }
+    let (mut low, mut high) = (step.t0, step.t1);
+    for _ in 0..60 {
+        let middle = 0.5 * (low + high);
+        if reach(&step.at(middle)) < distance {
+            low = middle;
+        } else {
+            high = middle;
+        }
+    }
+    Some(step.at(high)[1])
+}
+
+/// A scene's launch and its flight, whatever the scene's kind.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Flown {
+    pub launch: BattedBall,
+    /// The impact, for a swing scene (`None` for a batted ball).
+    pub impact: Option<Impact>,
+    pub flight: FlightSummary,
+}
+
+/// The flight, launch and impact (for a swing) of a (validated) scene,
+/// whatever its kind.
+pub fn scene_start(scene: &Scene) -> (SceneFlight, BattedBall, Option<Impact>) {
     match scene.kind {
         SceneKind::Swing => {
             let impact = Impact::new(scene);
-            let (flight, launch) = super::launch(scene, &impact);
-            (flight, launch, BattedBall::of(&impact), Some(impact))
+            (
+                SceneFlight::of_impact(scene, &impact),
+                BattedBall::of(&impact),
+                Some(impact),
+            )
         }
         SceneKind::BattedBall => {
             let batted = scene.batted_ball();
-            let (flight, launch) = start(scene, &batted);
-            (flight, launch, batted, None)
+            (SceneFlight::new(scene, &batted), batted, None)
         }
     }
 }
@@ -156,46 +318,22 @@ pub fn scene_start(scene: &Scene) -> (Flight, Launch, BattedBall, Option<Impact>
 /// Flies a (validated) scene's launch as precisely as `options` says: the
 /// one call the CLI and the explorer make for "this scene's flight".
 pub fn fly_scene(scene: &Scene, options: impl Into<FlightOptions>) -> Flown {
-    let (flight, start, launch, impact) = scene_start(scene);
+    let (flight, launch, impact) = scene_start(scene);
     Flown {
         launch,
         impact,
-        flight: flight::fly(&flight, &start, &options.into()),
+        flight: flight.fly(&options.into()),
     }
 }
 
-/// The ball's height (m) where it passes `distance` (m) from the plate, the
-/// first time it does, read off the integrator's continuous extension; and
-/// the flight. `None` if it never gets that far.
+/// The ball's height (m) where it first gets `distance` (m) from the plate
+/// (see [`SceneFlight::height_at_distance`]), and the flight.
 pub fn height_at_distance(
     scene: &Scene,
     distance: f64,
     options: impl Into<FlightOptions>,
 ) -> (FlightSummary, Option<f64>) {
-    let (flight, start, _, _) = scene_start(scene);
-    let mut height = None;
-    let summary = flight::fly_observed(&flight, &start, &options.into(), |step| {
-        if height.is_some() {
-            return;
-        }
-        let (x0, x1) = (step.y0[0], step.y1[0]);
-        if !(x0 < distance && distance <= x1) {
-            return;
-        }
-        // Bisection on x(t) = distance: x rises through the step (it did at
-        // both ends; a ball that turns back within one step is no home run).
-        let (mut low, mut high) = (step.t0, step.t1);
-        for _ in 0..60 {
-            let middle = 0.5 * (low + high);
-            if step.at(middle)[0] < distance {
-                low = middle;
-            } else {
-                high = middle;
-            }
-        }
-        height = Some(step.at(high)[1]);
-    });
-    // A step may carry the dense output past the landing: only a crossing
-    // above the ground counts.
-    (summary, height.filter(|&h| h >= 0.0))
+    scene_start(scene)
+        .0
+        .height_at_distance(distance, &options.into())
 }

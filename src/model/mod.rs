@@ -1,14 +1,21 @@
 //! The paper's model, one file per phase: pitch (Eq. 3–4) → impact
-//! (Eq. 1–2, 5–23) → flight (Eq. 25–29), with the aerodynamic models in
-//! `aero` and the air from the weather in `atmosphere`; a batted ball flown
-//! from its launch alone, and which of the two a scene is, in `launch`; the inputs in `scene`
-//! and their names, bounds and validation in `keys`. It knows nothing of who asks or
-//! how precisely: callers pass [`FlightOptions`] (or anything that becomes
-//! them, such as `analysis::precision::Purpose`).
+//! (Eq. 1–2, 5–23) → flight (Eq. 25–29, in the plane or in 3-D), with the
+//! aerodynamic models in `aero`, the air from the weather in `atmosphere`
+//! and the 3-D frame's conventions in `frame`; a batted ball flown from its
+//! launch alone, and which flight a scene needs, in `launch`; the inputs in
+//! `scene` and their names, bounds and validation in `keys`. It knows
+//! nothing of who asks or how precisely: callers pass [`FlightOptions`] (or
+//! anything that becomes them, such as `analysis::precision::Purpose`).
+//!
+//! The arrows point one way: `aero`, `atmosphere` and `frame` at the
+//! bottom; `scene` (plain data) above them; the phases `pitch`, `impact`,
+//! `flight` and `launch` above the scene; `keys` (names, bounds and
+//! accessors of the inputs) on top.
 
 pub mod aero;
 pub mod atmosphere;
 pub mod flight;
+pub mod frame;
 pub mod impact;
 pub mod keys;
 pub mod launch;
@@ -28,7 +35,10 @@ pub struct Swing {
     pub flight: FlightSummary,
 }
 
-/// The flight's forces and starting point after `impact`.
+/// The planar flight's forces and starting point after `impact`, in the
+/// plane toward centre field: the paper's flight, for callers that study
+/// the paper's scene (with the wind along centre field). A scene in general
+/// flies through [`launch::SceneFlight`], as [`simulate`] does.
 pub fn launch(scene: &Scene, impact: &Impact) -> (Flight, Launch) {
     (
         Flight::new(scene, impact.launch_spin()),
@@ -42,10 +52,9 @@ pub fn launch(scene: &Scene, impact: &Impact) -> (Flight, Launch) {
 /// Simulates a (validated) scene as precisely as `options` says.
 pub fn simulate(scene: &Scene, options: impl Into<FlightOptions>) -> Swing {
     let impact = Impact::new(scene);
-    let (flight, start) = launch(scene, &impact);
     Swing {
         impact,
-        flight: flight::fly(&flight, &start, &options.into()),
+        flight: launch::SceneFlight::of_impact(scene, &impact).fly(&options.into()),
     }
 }
 
@@ -64,9 +73,10 @@ pub fn fly_launch(
         speed: launch_speed,
         angle: launch_angle,
         spin: launch_spin,
+        direction: 0.0,
+        sidespin: 0.0,
     };
-    let (flight, start) = launch::start(scene, &batted);
-    flight::fly(&flight, &start, &options.into())
+    launch::SceneFlight::new(scene, &batted).fly(&options.into())
 }
 
 /// Just the range: what the optimiser and the heatmap need.

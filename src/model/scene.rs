@@ -1,12 +1,92 @@
 //! All inputs of one scene: pitch, bat, ball, environment and model choice,
-//! and for a batted ball its launch (see [`super::launch`]).
-//! Their names, bounds and validation are in [`super::keys`].
+//! and for a batted ball its launch. Plain data at the bottom of the model:
+//! the phases that read it (`pitch`, `impact`, `flight`, `launch`) import
+//! it, never the other way. Their names, bounds and validation are in
+//! [`super::keys`].
 
 use serde::{Deserialize, Serialize};
 
 use super::aero::{DragModel, LiftModel};
 use super::atmosphere::{Air, Atmosphere};
-use super::launch::{GivenLaunch, SceneKind};
+
+/// Which phases a scene models.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SceneKind {
+    /// Pitch → impact → flight: the launch comes out of the impact.
+    #[default]
+    Swing,
+    /// Launch → flight: the launch is given (`launch.*`); pitch and bat
+    /// only supply a launch value that is not given.
+    BattedBall,
+}
+
+impl SceneKind {
+    /// The drag and lift a scene of this kind flies under unless the user
+    /// chose others: the paper's for a swing (so Table II stands), Nathan's
+    /// for a batted ball (the aero the field calibrated on Statcast).
+    pub fn default_models(self) -> (DragModel, LiftModel) {
+        match self {
+            SceneKind::Swing => (DragModel::Sawicki2003, LiftModel::Sawicki2003),
+            SceneKind::BattedBall => (DragModel::Nathan, LiftModel::Nathan),
+        }
+    }
+
+    /// "swing" or "batted_ball", as JSON and presets name it.
+    pub fn name(self) -> &'static str {
+        match self {
+            SceneKind::Swing => "swing",
+            SceneKind::BattedBall => "batted_ball",
+        }
+    }
+}
+
+/// The launch values a batted-ball scene gives (`launch.*`); `None` takes
+/// the value from the scene's own swing, so `--set launch.angle=0.5` on the
+/// fastball flies the fastball's launch speed and spin at 0.5 rad whatever
+/// order the other `--set`s come in. The swing is planar, so its direction
+/// and sidespin are 0.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct GivenLaunch {
+    pub speed: Option<f64>,
+    pub angle: Option<f64>,
+    pub spin: Option<f64>,
+    #[serde(default)]
+    pub direction: Option<f64>,
+    #[serde(default)]
+    pub sidespin: Option<f64>,
+}
+
+impl GivenLaunch {
+    pub fn is_empty(&self) -> bool {
+        self.values().iter().all(Option::is_none)
+    }
+
+    pub fn is_complete(&self) -> bool {
+        self.values().iter().all(Option::is_some)
+    }
+
+    /// In the order of `keys::LAUNCH_KEYS`.
+    pub fn values(&self) -> [Option<f64>; 5] {
+        [
+            self.speed,
+            self.angle,
+            self.spin,
+            self.direction,
+            self.sidespin,
+        ]
+    }
+}
+
+/// Which aerodynamic models the user chose: those not chosen follow the
+/// scene's kind ([`SceneKind::default_models`]), so that a swing turned
+/// batted ball flies Nathan's aero, while a model the user chose is never
+/// changed behind their back.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ChosenModels {
+    pub drag: bool,
+    pub lift: bool,
+}
 
 /// The pitched ball as it reaches the plate.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -54,8 +134,18 @@ pub struct Ball {
 /// The air and the field.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Environment {
-    /// Horizontal wind (m/s), positive toward centre field (a tailwind).
+    /// Horizontal wind (m/s) blowing toward `wind_direction`, negative
+    /// blowing the other way: with the direction 0 (the default), positive
+    /// is a tailwind toward centre field and negative a headwind.
     pub wind: f64,
+    /// Where the wind blows toward (rad from the centre-field line,
+    /// positive toward right field: see [`super::frame`]).
+    #[serde(default)]
+    pub wind_direction: f64,
+    /// The height above which the wind blows (m): below it the air is
+    /// still, as in Nathan's calculator. 0: everywhere.
+    #[serde(default)]
+    pub wind_height: f64,
     /// ρ (kg/m³) in force: given, or derived from `atmosphere` (set it with
     /// [`Environment::set_air_density`] when an atmosphere may be in force).
     pub air_density: f64,
@@ -126,8 +216,12 @@ pub struct Scene {
     #[serde(default)]
     pub spin_decay: f64,
     /// A swing (the paper's scene) or a batted ball flown from `launch`.
+    /// Set it with [`Scene::set_kind`], which keeps the models in step.
     #[serde(default)]
     pub kind: SceneKind,
+    /// Which of `drag` and `lift` the user chose (the others follow `kind`).
+    #[serde(default)]
+    pub chosen: ChosenModels,
     /// The launch values a batted-ball scene gives (unused by a swing).
     #[serde(default)]
     pub launch: GivenLaunch,
@@ -163,6 +257,8 @@ impl Default for Scene {
             },
             environment: Environment {
                 wind: 0.0,
+                wind_direction: 0.0,
+                wind_height: 0.0,
                 air_density: 1.23,
                 kinematic_viscosity: 1.5e-5,
                 gravity: 9.81,
@@ -173,6 +269,7 @@ impl Default for Scene {
             lift: LiftModel::Sawicki2003,
             spin_decay: 0.0,
             kind: SceneKind::Swing,
+            chosen: ChosenModels::default(),
             launch: GivenLaunch::default(),
         }
     }
@@ -186,6 +283,31 @@ impl Scene {
         scene.bat.undercut = undercut;
         scene.bat.swing_angle = swing_angle;
         scene
+    }
+
+    /// Makes this scene a swing or a batted ball; the models the user did not
+    /// choose become that kind's ([`SceneKind::default_models`]).
+    pub fn set_kind(&mut self, kind: SceneKind) {
+        self.kind = kind;
+        let (drag, lift) = kind.default_models();
+        if !self.chosen.drag {
+            self.drag = drag;
+        }
+        if !self.chosen.lift {
+            self.lift = lift;
+        }
+    }
+
+    /// Chooses the drag model: it stays whatever the scene's kind.
+    pub fn choose_drag(&mut self, drag: DragModel) {
+        self.drag = drag;
+        self.chosen.drag = true;
+    }
+
+    /// Chooses the lift model: it stays whatever the scene's kind.
+    pub fn choose_lift(&mut self, lift: LiftModel) {
+        self.lift = lift;
+        self.chosen.lift = true;
     }
 
     /// r_b + r_B: the centre distance at contact, so |E| must stay below it

@@ -25,7 +25,6 @@ use crate::analysis::precision::Purpose;
 use crate::analysis::sensitivity;
 use crate::analysis::study::{Grid, Surface};
 use crate::model::aero::{DragModel, LiftModel};
-use crate::model::flight;
 use crate::model::keys::{DRAG_KEY, LIFT_KEY};
 use crate::model::launch::{Flown, SceneKind, fly_scene, height_at_distance, scene_start};
 use crate::model::scene::Scene;
@@ -426,10 +425,10 @@ impl App {
 
     fn plot_path(&self, scene: &Scene) -> Vec<(f64, f64)> {
         let samples = trajectory_samples(self.size, self.is_swing());
-        let (flight, launch, _, _) = scene_start(scene);
-        let (_, points) =
-            flight::trajectory(&flight, &launch, &Purpose::Plot.flight_options(), samples);
-        points.iter().map(|p| (p.x, p.y)).collect()
+        let (_, points) = scene_start(scene)
+            .0
+            .trajectory(&Purpose::Plot.flight_options(), samples);
+        points.iter().map(|p| (p.distance, p.y)).collect()
     }
 
     /// Takes in a background result, unless it is for older inputs.

@@ -1,50 +1,63 @@
 //! What the flight watches for between steps: the drag curve's kinks (where
-//! it switches C_D formula), the apex and the landing, each located on the
-//! step's continuous extension, and a prediction of the next of them so that
-//! the step that meets it wastes little beyond it.
+//! it switches C_D formula), the wind's layer (where the wind starts or
+//! stops blowing), the apex and the landing, each located on the step's
+//! continuous extension, and a prediction of the next of them so that the
+//! step that meets it wastes little beyond it.
 
 use std::cell::Cell;
 
-use super::{DISTANCE, Flight, HEIGHT, VELOCITY_X, VERTICAL_VELOCITY, velocity};
+use super::{Dynamics, Regime};
 use crate::numerics::ode::{Control, DenseStep, State};
 use crate::numerics::roots::find_root_newton;
 
 /// Event times are located to this (s): far below anything that shows.
 const ROOT_TOLERANCE: f64 = 1e-13;
 
-/// The events seen so far, and the drag piece in force.
-pub(super) struct Events<'a> {
-    flight: &'a Flight,
+/// The events seen so far, and the regime in force.
+pub(super) struct Events<'a, const N: usize, D: Dynamics<N>> {
+    flight: &'a D,
     /// The kinks switched at: none when the flight does not stop at them.
     kinks: &'static [f64],
-    /// The drag piece the current step uses. Shared with the right-hand
-    /// side, which reads it during a step while this observer changes it
-    /// between steps.
-    piece: &'a Cell<usize>,
+    /// The height the wind blows above, if the flight switches there.
+    wind_height: Option<f64>,
+    /// The drag piece and wind layer the current step uses. Shared with
+    /// the right-hand side, which reads it during a step while this
+    /// observer changes it between steps.
+    regime: &'a Cell<Regime>,
+    /// Where the flight started: distances are measured from it.
+    start: State<N>,
     /// The time of the last switch: a second switch at the same instant
     /// would undo the first.
     last_switch: f64,
-    /// The highest point: height and distance.
+    /// The highest point: height and horizontal distance.
     pub apex: (f64, f64),
     /// The landing: time and state.
-    pub landing: Option<(f64, State<4>)>,
+    pub landing: Option<(f64, State<N>)>,
     /// The last accepted point: time and state.
-    pub last: (f64, State<4>),
+    pub last: (f64, State<N>),
 }
 
-impl<'a> Events<'a> {
-    pub fn new(
-        flight: &'a Flight,
-        start: &State<4>,
-        piece: &'a Cell<usize>,
-        switching: bool,
-    ) -> Self {
+/// A change of regime inside a step: when, and to what.
+#[derive(Clone, Copy)]
+struct Switch {
+    time: f64,
+    regime: Regime,
+}
+
+impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
+    pub fn new(flight: &'a D, start: &State<N>, regime: &'a Cell<Regime>) -> Self {
         Events {
             flight,
-            kinks: if switching { flight.drag.kinks() } else { &[] },
-            piece,
+            kinks: if regime.get().piece.is_some() {
+                flight.drag().kinks()
+            } else {
+                &[]
+            },
+            wind_height: flight.wind_height(),
+            regime,
+            start: *start,
             last_switch: f64::NEG_INFINITY,
-            apex: (start[HEIGHT], start[DISTANCE]),
+            apex: (start[D::HEIGHT], 0.0),
             landing: None,
             last: (0.0, *start),
         }
@@ -55,16 +68,12 @@ impl<'a> Events<'a> {
         !self.kinks.is_empty()
     }
 
-    #[inline]
-    fn reynolds(&self, state: &State<4>) -> f64 {
-        self.flight.reynolds(velocity(state))
-    }
-
     /// Where the step leaves its drag piece, and the piece it enters, given
     /// the Reynolds numbers at its ends.
     #[inline]
-    fn crossing(&self, step: &DenseStep<4>, re0: f64, re1: f64) -> Option<(f64, usize)> {
-        let (kinks, p) = (self.kinks, self.piece.get());
+    fn kink_crossing(&self, step: &DenseStep<N>, re0: f64, re1: f64) -> Option<Switch> {
+        let regime = self.regime.get();
+        let (kinks, p) = (self.kinks, regime.piece.unwrap_or_default());
         let (kink, next) = if p > 0 && re1 < kinks[p - 1] {
             (kinks[p - 1], p - 1)
         } else if p < kinks.len() && re1 > kinks[p] {
@@ -72,18 +81,18 @@ impl<'a> Events<'a> {
         } else {
             return None;
         };
-        let t = if (re0 - kink) * (re1 - kink) < 0.0 {
+        let time = if (re0 - kink) * (re1 - kink) < 0.0 {
             // Where |V_r|² = (kink/(2r_b/ν))²: the same root as Re = kink,
             // without a square root per iteration.
-            let speed = kink / self.flight.reynolds_per_speed;
+            let speed = kink / self.flight.reynolds_per_speed();
             find_root_newton(
                 |t| {
-                    let (s, slope) = (step.at(t), step.slope_at(t));
-                    let rel = self.flight.relative_wind(velocity(&s));
-                    // d/dt |V_r|² = 2 V_r·dV_r/dt = −2 V_r·a.
-                    let rate =
-                        -2.0 * (rel.x * slope[VELOCITY_X] + rel.y * slope[VERTICAL_VELOCITY]);
-                    (rel.norm_squared() - speed * speed, rate)
+                    let (squared, rate) = self.flight.air_speed_squared(
+                        &step.at(t),
+                        &step.slope_at(t),
+                        regime.in_wind,
+                    );
+                    (squared - speed * speed, rate)
                 },
                 step.t0,
                 step.t1,
@@ -94,67 +103,112 @@ impl<'a> Events<'a> {
             // was just switched at): switch at once.
             step.t0
         };
-        Some((t, next))
+        Some(Switch {
+            time,
+            regime: Regime {
+                piece: Some(next),
+                ..regime
+            },
+        })
     }
 
-    /// Where a component of the state crosses zero inside the step.
+    /// Where the step enters or leaves the wind's layer, if it does.
     #[inline]
-    fn zero_of(step: &DenseStep<4>, component: usize) -> f64 {
+    fn layer_crossing(&self, step: &DenseStep<N>) -> Option<Switch> {
+        let height = self.wind_height?;
+        let regime = self.regime.get();
+        let (y0, y1) = (step.y0[D::HEIGHT] - height, step.y1[D::HEIGHT] - height);
+        let leaves = if regime.in_wind { y1 < 0.0 } else { y1 >= 0.0 };
+        if !leaves {
+            return None;
+        }
+        let time = if y0 * y1 < 0.0 {
+            Self::zero_of(step, D::HEIGHT, height)
+        } else {
+            step.t0
+        };
+        let in_wind = !regime.in_wind;
+        let piece = regime
+            .piece
+            .map(|_| self.flight.drag_piece_at(&step.at(time), in_wind));
+        Some(Switch {
+            time,
+            regime: Regime { piece, in_wind },
+        })
+    }
+
+    /// Where a component of the state crosses `level` inside the step.
+    #[inline]
+    fn zero_of(step: &DenseStep<N>, component: usize, level: f64) -> f64 {
         find_root_newton(
-            |t| (step.at(t)[component], step.slope_at(t)[component]),
+            |t| (step.at(t)[component] - level, step.slope_at(t)[component]),
             step.t0,
             step.t1,
             ROOT_TOLERANCE,
         )
     }
 
-    /// Sees one accepted step: switches the drag piece at a kink (cutting
-    /// the step there), records the apex and the landing, and says how to go
-    /// on. `watch` is shown the step as kept.
+    /// Sees one accepted step: switches the regime at a kink or the wind's
+    /// layer (cutting the step there), records the apex and the landing, and
+    /// says how to go on. `watch` is shown the step as kept.
     #[inline]
     pub fn observe(
         &mut self,
-        step: &DenseStep<4>,
-        watch: &mut impl FnMut(&DenseStep<4>),
+        step: &DenseStep<N>,
+        watch: &mut impl FnMut(&DenseStep<N>),
     ) -> Control {
+        let in_wind = self.regime.get().in_wind;
         // The Reynolds numbers at the step's ends (each costs a square root:
         // computed once, for the kink check and the kink prediction).
         let (re0, re1) = if self.switching() {
-            (self.reynolds(&step.y0), self.reynolds(&step.y1))
+            (
+                self.flight.reynolds(&step.y0, in_wind),
+                self.flight.reynolds(&step.y1, in_wind),
+            )
         } else {
             (0.0, 0.0)
         };
-        // The step as shown: cut at a kink, or the step itself (by reference:
-        // a DenseStep is 27 numbers, not worth copying on every step).
+        // The step as shown: cut at a switch, or the step itself (by
+        // reference: a DenseStep is dozens of numbers, not worth copying on
+        // every step).
         let truncated;
         let mut shown = step;
         let mut control = Control::Continue;
-        if self.switching()
-            && let Some((t_kink, next)) = self.crossing(step, re0, re1)
-        {
-            let lands_first = step.y1[HEIGHT] <= 0.0 && Self::zero_of(step, HEIGHT) <= t_kink;
+        let kink = if self.switching() {
+            self.kink_crossing(step, re0, re1)
+        } else {
+            None
+        };
+        let layer = self.layer_crossing(step);
+        let first = match (kink, layer) {
+            (Some(k), Some(l)) => Some(if l.time < k.time { l } else { k }),
+            (k, l) => k.or(l),
+        };
+        if let Some(switch) = first {
+            let lands_first =
+                step.y1[D::HEIGHT] <= 0.0 && Self::zero_of(step, D::HEIGHT, 0.0) <= switch.time;
             // A second switch at the same instant would undo the first (Re
             // turning right at a kink): go on without it, so that every
             // switch is followed by progress in time.
-            let stalls = t_kink <= self.last_switch;
+            let stalls = switch.time <= self.last_switch;
             if !lands_first && !stalls {
-                self.last_switch = t_kink;
-                truncated = step.truncated(t_kink);
+                self.last_switch = switch.time;
+                truncated = step.truncated(switch.time);
                 shown = &truncated;
-                self.piece.set(next);
-                control = Control::RestartAt(t_kink);
+                self.regime.set(switch.regime);
+                control = Control::RestartAt(switch.time);
             }
         }
         watch(shown);
-        if shown.y0[VERTICAL_VELOCITY] > 0.0 && shown.y1[VERTICAL_VELOCITY] <= 0.0 {
-            let s = shown.at(Self::zero_of(shown, VERTICAL_VELOCITY));
-            if s[HEIGHT] > self.apex.0 {
-                self.apex = (s[HEIGHT], s[DISTANCE]);
+        if shown.y0[D::VERTICAL_VELOCITY] > 0.0 && shown.y1[D::VERTICAL_VELOCITY] <= 0.0 {
+            let s = shown.at(Self::zero_of(shown, D::VERTICAL_VELOCITY, 0.0));
+            if s[D::HEIGHT] > self.apex.0 {
+                self.apex = (s[D::HEIGHT], D::ground(&s, &self.start).0);
             }
         }
         self.last = (shown.t1, shown.y1);
-        if shown.y1[HEIGHT] <= 0.0 {
-            let t = Self::zero_of(shown, HEIGHT);
+        if shown.y1[D::HEIGHT] <= 0.0 {
+            let t = Self::zero_of(shown, D::HEIGHT, 0.0);
             self.landing = Some((t, shown.at(t)));
             return Control::Stop;
         }
@@ -170,26 +224,20 @@ impl<'a> Events<'a> {
     /// end: a little past it rather than wherever the error control would.
     /// `step` was not cut, so re0 and re1 are its ends' Reynolds numbers.
     #[inline]
-    fn next_event_by(&self, step: &DenseStep<4>, re0: f64, re1: f64) -> Option<f64> {
+    fn next_event_by(&self, step: &DenseStep<N>, re0: f64, re1: f64) -> Option<f64> {
         let h = step.t1 - step.t0;
-        let mut soonest = f64::INFINITY;
-        // The landing: y(τ) ≈ y + v_y τ + a_y τ²/2, a_y from the step.
-        let (y, vy) = (step.y1[HEIGHT], step.y1[VERTICAL_VELOCITY]);
-        let ay = (step.y1[VERTICAL_VELOCITY] - step.y0[VERTICAL_VELOCITY]) / h;
-        let disc = vy * vy - 2.0 * ay * y;
-        if disc >= 0.0 && ay != 0.0 {
-            for tau in [(-vy + disc.sqrt()) / ay, (-vy - disc.sqrt()) / ay] {
-                if tau > 0.0 {
-                    soonest = soonest.min(tau);
-                }
-            }
-        } else if ay == 0.0 && vy < 0.0 {
-            soonest = -y / vy;
+        // The landing, and the wind's layer: y(τ) ≈ y + v_y τ + a_y τ²/2,
+        // a_y from the step.
+        let (y, vy) = (step.y1[D::HEIGHT], step.y1[D::VERTICAL_VELOCITY]);
+        let ay = (step.y1[D::VERTICAL_VELOCITY] - step.y0[D::VERTICAL_VELOCITY]) / h;
+        let mut soonest = time_to_height(y, vy, ay, 0.0);
+        if let Some(height) = self.wind_height {
+            soonest = soonest.min(time_to_height(y, vy, ay, height));
         }
         // The next kink, from the Reynolds number's rate over the step.
         if self.switching() {
             let rate = (re1 - re0) / h;
-            let (kinks, p) = (self.kinks, self.piece.get());
+            let (kinks, p) = (self.kinks, self.regime.get().piece.unwrap_or_default());
             let target = if rate < 0.0 && p > 0 {
                 Some(kinks[p - 1])
             } else if rate > 0.0 && p < kinks.len() {
@@ -209,4 +257,22 @@ impl<'a> Events<'a> {
         // the same evaluations: `homerun bench`.)
         (soonest.is_finite() && soonest > 0.1 * h).then_some(step.t1 + 1.5 * soonest)
     }
+}
+
+/// The first τ > 0 at which y + v_y τ + a_y τ²/2 = `level`, or infinity.
+#[inline]
+fn time_to_height(y: f64, vy: f64, ay: f64, level: f64) -> f64 {
+    let y = y - level;
+    let mut soonest = f64::INFINITY;
+    let disc = vy * vy - 2.0 * ay * y;
+    if disc >= 0.0 && ay != 0.0 {
+        for tau in [(-vy + disc.sqrt()) / ay, (-vy - disc.sqrt()) / ay] {
+            if tau > 0.0 {
+                soonest = soonest.min(tau);
+            }
+        }
+    } else if ay == 0.0 && vy < 0.0 {
+        soonest = -y / vy;
+    }
+    soonest
 }

@@ -6,7 +6,7 @@
 //! in exactly one place. [`InputBatch`] sets the keys of one source of
 //! inputs, refusing contradictory ones.
 
-use std::f64::consts::FRAC_PI_2;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 use crate::units::{Quantity, Unit, UnitSystem};
 
@@ -109,12 +109,12 @@ impl std::fmt::Display for Bounds {
 
 /// A bound as a person reads it: ±π/2 rather than ±1.5707963267948966.
 fn bound_text(value: f64) -> String {
-    if value == FRAC_PI_2 {
-        "π/2".to_owned()
-    } else if value == -FRAC_PI_2 {
-        "-π/2".to_owned()
-    } else {
-        value.to_string()
+    match value {
+        FRAC_PI_2 => "π/2".to_owned(),
+        PI => "π".to_owned(),
+        _ if value == -FRAC_PI_2 => "-π/2".to_owned(),
+        _ if value == -PI => "-π".to_owned(),
+        _ => value.to_string(),
     }
 }
 
@@ -254,11 +254,11 @@ impl Scene {
     /// Sets any key from text, as `--set KEY=VALUE` does.
     pub fn set_text(&mut self, name: &str, text: &str) -> Result<(), InputError> {
         if name == DRAG_KEY {
-            self.drag = text.parse()?;
+            self.choose_drag(text.parse()?);
             return Ok(());
         }
         if name == LIFT_KEY {
-            self.lift = text.parse()?;
+            self.choose_lift(text.parse()?);
             return Ok(());
         }
         let key = Self::key(name)?;
@@ -279,8 +279,7 @@ impl Scene {
         let later = |key: &&Key| derived && AIR_KEYS.contains(&key.name);
         // Only the launch values given are inputs: one taken from the swing
         // is an output of the (validated) swing, checked through it.
-        let launch = self.launch;
-        let given = [launch.speed, launch.angle, launch.spin];
+        let given = self.launch.values();
         let launch_keys = LAUNCH_KEYS
             .iter()
             .zip(given)

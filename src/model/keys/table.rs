@@ -1,11 +1,11 @@
 //! The key table: every numeric input's name, symbol, unit, bounds (with
 //! the reason beside each where it is not obvious), nudge step and accessors.
 
-use std::f64::consts::FRAC_PI_2;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 use super::{Bounds, Key};
 use crate::model::atmosphere::Atmosphere;
-use crate::model::launch::SceneKind;
+use crate::model::scene::SceneKind;
 
 macro_rules! key {
     ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $step:expr, $($field:ident).+) => {
@@ -69,7 +69,7 @@ macro_rules! launch_key {
             get: |s| s.batted_ball().$field,
             set: |s, v| {
                 s.launch.$field = Some(v);
-                s.kind = SceneKind::BattedBall;
+                s.set_kind(SceneKind::BattedBall);
             }
         )
     };
@@ -209,14 +209,36 @@ pub const KEYS: &[Key] = &[
         0.001,
         ball.gyration_radius
     ),
+    // ±50 m/s (112 mph) is a hurricane's wind: no game is played in it.
     key!(
         "environment.wind",
         "V_w",
         "m/s",
-        "horizontal wind, positive toward centre field",
+        "horizontal wind toward environment.wind_direction (direction 0: positive is a tailwind)",
         Bounds::closed(-50.0, 50.0),
         1.0,
         environment.wind
+    ),
+    // A full turn: the wind may blow toward any point of the compass.
+    key!(
+        "environment.wind_direction",
+        "φ_w",
+        "rad",
+        "where the wind blows toward: 0 centre field, positive toward right field",
+        Bounds::closed(-PI, PI),
+        0.1,
+        environment.wind_direction
+    ),
+    // From the ground to 100 m, above any batted ball's apex (~50 m): a
+    // layer any higher is the same as no wind.
+    key!(
+        "environment.wind_height",
+        "h_w",
+        "m",
+        "height above which the wind blows (0: everywhere), as in Nathan's calculator",
+        Bounds::closed(0.0, 100.0),
+        1.0,
+        environment.wind_height
     ),
     // Given, ρ and ν replace any atmosphere's (see `environment.temperature`).
     key!(
@@ -368,6 +390,29 @@ pub const LAUNCH_KEYS: &[Key] = &[
         10.0,
         spin
     ),
+    // Open at ±π/2, as the angle: a ball leaving square to the centre-field
+    // line or behind it is a foul tip, not a batted ball to carry; fair
+    // territory is ±π/4.
+    launch_key!(
+        "launch.direction",
+        "φ",
+        "rad",
+        "launch direction: 0 centre field, positive toward right field (fair within ±π/4)",
+        Bounds::open(-FRAC_PI_2, FRAC_PI_2),
+        0.01,
+        direction
+    ),
+    // As the backspin: the two together make the spin vector, and ~3000 rpm
+    // is as much as batted balls are estimated to carry.
+    launch_key!(
+        "launch.sidespin",
+        "ω_s",
+        "rad/s",
+        "sidespin, positive curving the ball toward right field",
+        Bounds::closed(-1000.0, 1000.0),
+        10.0,
+        sidespin
+    ),
 ];
 
 /// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`], then [`LAUNCH_KEYS`].
@@ -393,5 +438,4 @@ pub const ATMOSPHERE_KEYS: [&str; 4] = [
 ];
 
 /// The non-numeric inputs: the drag and lift models.
-pub const DRAG_KEY: &str = "model.drag";
-pub const LIFT_KEY: &str = "model.lift";
+pub use crate::model::aero::{DRAG_KEY, LIFT_KEY};

@@ -196,6 +196,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             speed: now.speed - was.speed,
             angle: now.angle - was.angle,
             spin: now.spin - was.spin,
+            direction: now.direction - was.direction,
+            sidespin: now.sidespin - was.sidespin,
         };
         let launch = pinned(launch_text(app, &difference, true));
         let range = if flight.landed && was_flight.landed {

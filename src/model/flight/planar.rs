@@ -1,0 +1,290 @@
+//! The planar flight: the paper's (Eq. 25–29), in the vertical plane of
+//! the launch, with backspin only and the wind along the plane. The scene
+//! flies it whenever nothing pushes the ball out of that plane (no
+//! sidespin, no crosswind), because it is the cheaper of the two flights
+//! and gives the paper's numbers bit for bit.
+
+use nalgebra::Vector2;
+
+use super::{Dynamics, Regime, time_limit};
+use crate::model::aero::{DragCurve, DragModel, LiftCurve, LiftModel};
+use crate::model::scene::Scene;
+use crate::numerics::ode::State;
+
+/// The flight's state is (x, y, v_x, v_y): these name its components.
+pub(super) const DISTANCE: usize = 0;
+pub(super) const HEIGHT: usize = 1;
+pub(super) const VELOCITY_X: usize = 2;
+pub(super) const VERTICAL_VELOCITY: usize = 3;
+
+/// The velocity part of a state (or of its derivative, the acceleration).
+#[inline]
+pub(super) fn velocity(state: &State<4>) -> Vector2<f64> {
+    Vector2::new(state[VELOCITY_X], state[VERTICAL_VELOCITY])
+}
+
+/// The forces on the ball in flight, ready to evaluate. Which drag and lift
+/// models they use is the models' business ([`DragCurve`], [`LiftCurve`]).
+/// The spin is constant, as the paper assumes (it decays by a few per cent
+/// over a flight), unless the scene gives it a decay time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Flight {
+    pub gravity: f64,
+    pub wind: f64,
+    pub drag: DragModel,
+    pub lift: LiftModel,
+    /// ρA/(2M_b): turns C·|V_r|·V_r into an acceleration (Eq. 26, 28).
+    pub force_per_mass: f64,
+    /// 2r_b/ν: turns |V_r| into Re (Eq. 27).
+    pub reynolds_per_speed: f64,
+    /// r_b·|ω|, the surface speed from the launch spin, and the spin's sign.
+    pub surface_speed: f64,
+    pub spin_sign: f64,
+    /// ω at launch (rad/s, backspin positive).
+    pub spin: f64,
+    /// 1/τ (1/s): the spin decays as ω(t) = ω₀·e^(−t/τ); 0 for constant spin.
+    pub spin_decay_rate: f64,
+}
+
+/// The spin as the aerodynamic coefficients take it, at one instant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpinNow {
+    /// |ω| (rad/s).
+    pub rate: f64,
+    /// r_b·|ω| (m/s).
+    pub surface_speed: f64,
+}
+
+impl Flight {
+    pub fn new(scene: &Scene, spin: f64) -> Flight {
+        let ball = scene.ball;
+        let env = scene.environment;
+        let area = std::f64::consts::PI * ball.radius * ball.radius;
+        Flight {
+            gravity: env.gravity,
+            wind: env.wind,
+            drag: scene.drag,
+            lift: scene.lift,
+            force_per_mass: env.air_density * area / (2.0 * ball.mass),
+            reynolds_per_speed: 2.0 * ball.radius / env.kinematic_viscosity,
+            surface_speed: ball.radius * spin.abs(),
+            spin_sign: if spin > 0.0 {
+                1.0
+            } else if spin < 0.0 {
+                -1.0
+            } else {
+                0.0
+            },
+            spin,
+            spin_decay_rate: if scene.spin_decay > 0.0 {
+                1.0 / scene.spin_decay
+            } else {
+                0.0
+            },
+        }
+    }
+
+    /// V_r = V_w − V_b (Eq. 25), the wind being horizontal.
+    #[inline]
+    pub fn relative_wind(&self, velocity: Vector2<f64>) -> Vector2<f64> {
+        Vector2::new(self.wind - velocity.x, -velocity.y)
+    }
+
+    /// Re = 2|V_r|r_b/ν (Eq. 27).
+    #[inline]
+    pub fn reynolds(&self, velocity: Vector2<f64>) -> f64 {
+        self.relative_wind(velocity).norm() * self.reynolds_per_speed
+    }
+
+    /// Whether the spin changes during the flight.
+    #[inline]
+    pub fn spin_decays(&self) -> bool {
+        self.spin_decay_rate != 0.0
+    }
+
+    /// The spin at time `t` after launch: ω(t) = ω₀·e^(−t/τ), or ω₀ without
+    /// decay (then no exponential is taken).
+    #[inline]
+    pub fn spin_at(&self, t: f64) -> SpinNow {
+        let launch = SpinNow {
+            rate: self.spin.abs(),
+            surface_speed: self.surface_speed,
+        };
+        if !self.spin_decays() {
+            return launch;
+        }
+        let remaining = (-t * self.spin_decay_rate).exp();
+        SpinNow {
+            rate: launch.rate * remaining,
+            surface_speed: launch.surface_speed * remaining,
+        }
+    }
+
+    /// C_D at time `t` and `velocity`, on the piece of the drag curve its
+    /// Reynolds number lies on.
+    pub fn drag_coefficient_at(&self, t: f64, velocity: Vector2<f64>) -> f64 {
+        let re = self.reynolds(velocity);
+        self.drag
+            .coefficient_on(self.drag.piece(re), re, self.spin_at(t).rate)
+    }
+
+    /// The ball's acceleration at the launch spin: gravity, drag along V_r
+    /// (Eq. 26) and lift perpendicular to it (Eq. 28).
+    ///
+    /// Eq. (28) as printed, with the minus sign, points the lift of a backspun
+    /// ball moving +x downward in this frame; the lift here is the Magnus
+    /// force along ω × V_b, which is up for backspin (Fig. 4's positive C_L
+    /// for batted backspin).
+    #[inline]
+    pub fn acceleration(&self, velocity: Vector2<f64>) -> Vector2<f64> {
+        self.acceleration_on(velocity, None)
+    }
+
+    /// As [`Flight::acceleration`], with C_D taken from the given piece of
+    /// the drag curve (continued past its ends) instead of the piece the
+    /// Reynolds number lies on.
+    #[inline]
+    pub fn acceleration_on(&self, velocity: Vector2<f64>, piece: Option<usize>) -> Vector2<f64> {
+        self.acceleration_at(0.0, velocity, piece)
+    }
+
+    /// As [`Flight::acceleration_on`], at time `t` after launch (which
+    /// matters only when the spin decays).
+    #[inline]
+    pub fn acceleration_at(
+        &self,
+        t: f64,
+        velocity: Vector2<f64>,
+        piece: Option<usize>,
+    ) -> Vector2<f64> {
+        let spin = self.spin_at(t);
+        let rel = self.relative_wind(velocity);
+        let air_speed = rel.norm();
+        let re = air_speed * self.reynolds_per_speed;
+        let piece = piece.unwrap_or_else(|| self.drag.piece(re));
+        let drag_coefficient = self.drag.coefficient_on(piece, re, spin.rate);
+        // ẑ × V_b-direction, scaled by |V_r|: (V_r,y, −V_r,x).
+        let lift_direction = Vector2::new(rel.y, -rel.x);
+        let lift = self.spin_sign
+            * self
+                .lift
+                .coefficient_times_speed(air_speed, spin.surface_speed);
+        let aero =
+            (rel * (drag_coefficient * air_speed) + lift_direction * lift) * self.force_per_mass;
+        Vector2::new(aero.x, aero.y - self.gravity)
+    }
+
+    /// d/dt of the state (x, y, v_x, v_y) at the launch spin.
+    #[inline]
+    pub fn derivative(&self, state: &State<4>) -> State<4> {
+        self.derivative_at(0.0, state, None)
+    }
+
+    /// d/dt of the state at time `t`, on a given piece of the drag curve
+    /// (or the one its Reynolds number lies on).
+    #[inline]
+    pub fn derivative_at(&self, t: f64, state: &State<4>, piece: Option<usize>) -> State<4> {
+        let a = self.acceleration_at(t, velocity(state), piece);
+        State::<4>::new(state[VELOCITY_X], state[VERTICAL_VELOCITY], a.x, a.y)
+    }
+
+    /// The piece of the drag curve the ball is on at launch, or about to
+    /// enter: at a kink, the one the Reynolds number is moving into.
+    pub fn drag_piece(&self, state: &State<4>) -> usize {
+        let velocity = velocity(state);
+        let rel = self.relative_wind(velocity);
+        let re = rel.norm() * self.reynolds_per_speed;
+        // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters.
+        let rising = -rel.dot(&self.acceleration(velocity)) >= 0.0;
+        super::piece_entered(self.drag.kinks(), re, rising)
+    }
+}
+
+/// Where and how the planar flight starts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Launch {
+    pub position: Vector2<f64>,
+    pub velocity: Vector2<f64>,
+}
+
+impl Launch {
+    /// How long the flight is followed before it counts as not landing:
+    /// [`VACUUM_TIMES`] the vacuum flight time of this speed straight up
+    /// from this height, at least a second and at most [`MAX_FLIGHT_TIME`].
+    pub fn time_limit(&self, gravity: f64) -> f64 {
+        time_limit(self.velocity.norm(), self.position.y, gravity)
+    }
+
+    pub(super) fn state(&self) -> State<4> {
+        State::<4>::new(
+            self.position.x,
+            self.position.y,
+            self.velocity.x,
+            self.velocity.y,
+        )
+    }
+}
+
+impl Dynamics<4> for Flight {
+    const HEIGHT: usize = HEIGHT;
+    const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
+
+    #[inline]
+    fn derivative(&self, t: f64, state: &State<4>, regime: Regime) -> State<4> {
+        self.derivative_at(t, state, regime.piece)
+    }
+
+    #[inline]
+    fn drag(&self) -> DragModel {
+        self.drag
+    }
+
+    #[inline]
+    fn gravity(&self) -> f64 {
+        self.gravity
+    }
+
+    #[inline]
+    fn reynolds_per_speed(&self) -> f64 {
+        self.reynolds_per_speed
+    }
+
+    #[inline]
+    fn air_speed_squared(&self, state: &State<4>, slope: &State<4>, _in_wind: bool) -> (f64, f64) {
+        let rel = self.relative_wind(velocity(state));
+        // d/dt |V_r|² = 2 V_r·dV_r/dt = −2 V_r·a.
+        let rate = -2.0 * (rel.x * slope[VELOCITY_X] + rel.y * slope[VERTICAL_VELOCITY]);
+        (rel.norm_squared(), rate)
+    }
+
+    #[inline]
+    fn reynolds(&self, state: &State<4>, _in_wind: bool) -> f64 {
+        Flight::reynolds(self, velocity(state))
+    }
+
+    fn drag_piece_at(&self, state: &State<4>, _in_wind: bool) -> usize {
+        self.drag_piece(state)
+    }
+
+    fn wind_height(&self) -> Option<f64> {
+        None
+    }
+
+    #[inline]
+    fn ground(state: &State<4>, origin: &State<4>) -> (f64, f64) {
+        (state[DISTANCE] - origin[DISTANCE], 0.0)
+    }
+
+    #[inline]
+    fn velocity_parts(state: &State<4>) -> (f64, f64) {
+        (state[VELOCITY_X], state[VERTICAL_VELOCITY])
+    }
+
+    fn point(state: &State<4>) -> [f64; 3] {
+        [state[DISTANCE], state[HEIGHT], 0.0]
+    }
+
+    fn drag_coefficient(&self, t: f64, state: &State<4>) -> f64 {
+        self.drag_coefficient_at(t, velocity(state))
+    }
+}
