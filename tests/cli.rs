@@ -475,6 +475,8 @@ fn trajectory_runs_from_the_contact_point_to_the_landing_of_hit() {
     assert_eq!(points.len(), 41);
     let first = &points[0];
     assert_eq!((number(first, "x"), number(first, "y")), (0.0, 1.0));
+    // The swing is planar: no lateral coordinate anywhere.
+    assert!(points.iter().all(|p| number(p, "z") == 0.0));
     let last = &points[40];
     // The same flight as `hit`: it lands at hit's range, on the ground.
     assert!((number(last, "x") - number(&hit, "flight.range")).abs() < 1e-9);
@@ -487,7 +489,7 @@ fn trajectory_runs_from_the_contact_point_to_the_landing_of_hit() {
         .output()
         .unwrap();
     let csv = String::from_utf8(csv.stdout).unwrap();
-    assert_eq!(csv.lines().next(), Some("time,x,y,drag_coefficient"));
+    assert_eq!(csv.lines().next(), Some("time,x,y,z,drag_coefficient"));
     assert_eq!(csv.lines().count(), 6);
     refuses(
         d,

@@ -8,6 +8,7 @@ use std::path::Path;
 
 use assert_cmd::Command;
 use homerun::analysis::precision::Purpose;
+use homerun::model::aero::{DragModel, LiftModel};
 use homerun::model::launch::{self, BattedBall, SceneKind};
 use homerun::preset::{Preset, Source};
 use homerun::{Scene, model};
@@ -27,8 +28,16 @@ fn relative(a: f64, b: f64) -> f64 {
 fn a_batted_ball_at_the_fastballs_launch_flies_as_the_fastball() {
     let swing_scene = Scene::default();
     let swing = model::simulate(&swing_scene, Purpose::Readout);
-    let batted_scene = swing_scene.with_launch(BattedBall::of(&swing.impact));
+    let mut batted_scene = swing_scene.with_launch(BattedBall::of(&swing.impact));
     assert_eq!(batted_scene.kind, SceneKind::BattedBall);
+    // A batted ball flies Nathan's aero unless the models are chosen: the
+    // paper's, to compare with the swing.
+    assert_eq!(
+        (batted_scene.drag, batted_scene.lift),
+        (DragModel::Nathan, LiftModel::Nathan)
+    );
+    batted_scene.choose_drag(DragModel::Sawicki2003);
+    batted_scene.choose_lift(LiftModel::Sawicki2003);
     let batted = launch::fly_scene(&batted_scene, Purpose::Readout);
     assert!(batted.impact.is_none());
     // Table II's fastball: 134.70 m.
@@ -257,7 +266,7 @@ fn a_batch_keeps_the_input_order_across_chunks() {
     let rows: Vec<&str> = out.lines().collect();
     assert_eq!(
         rows[0],
-        "line,launch.speed,launch.angle,launch.spin,range,flight_time,apex,landing_angle,landed,clears_fence"
+        "line,launch.speed,launch.angle,launch.spin,launch.direction,launch.sidespin,range,direction,flight_time,apex,landing_angle,landed,clears_fence"
     );
     assert_eq!(rows.len(), 3001);
     let mut last_range = 0.0;
@@ -266,7 +275,7 @@ fn a_batch_keeps_the_input_order_across_chunks() {
         assert_eq!(cells[0], (i + 2).to_string());
         assert_eq!(cells[1], format!("{:.4}", 20.0 + i as f64 * 0.01));
         // Faster launches carry farther at these speeds.
-        let range: f64 = cells[4].parse().unwrap();
+        let range: f64 = cells[6].parse().unwrap();
         assert!(range > last_range, "{row}");
         last_range = range;
     }
@@ -405,7 +414,15 @@ fn fly_at_hits_launch_prints_hits_flight() {
         format!("launch.angle={}", launch("launch_angle")),
         format!("launch.spin={}", launch("launch_spin")),
     ];
-    let mut args = vec!["fly", "--json"];
+    // The paper's models, chosen: a batted ball would fly Nathan's.
+    let mut args = vec![
+        "fly",
+        "--json",
+        "--set",
+        "model.drag=sawicki2003",
+        "--set",
+        "model.lift=sawicki2003",
+    ];
     for set in &sets {
         args.extend(["--set", set.as_str()]);
     }

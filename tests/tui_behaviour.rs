@@ -5,8 +5,9 @@ mod tui_support;
 use std::time::Duration;
 
 use homerun::analysis::optimum::{OptimizerSettings, optimize, optimize_from};
+use homerun::analysis::precision::Purpose;
 use homerun::analysis::study::Grid;
-use homerun::model::aero::LiftModel;
+use homerun::model::aero::{DragModel, LiftModel};
 use homerun::model::atmosphere::Atmosphere;
 use homerun::model::keys::KEYS;
 use homerun::tui::app::Mode;
@@ -653,14 +654,17 @@ fn b_flies_the_swings_launch_on_its_own_and_back() {
     let (launch, range) = (app.flown.launch, app.flown.flight.range);
     key(&mut app, KeyCode::Char('b'));
     assert_eq!(app.scene.kind, SceneKind::BattedBall);
-    // The same launch, so the same flight (to rounding in the launch
-    // velocity, rebuilt from speed and angle).
+    // The same launch, flown under Nathan's aero (a batted ball's default,
+    // the models not being chosen) rather than the swing's paper's.
     assert_eq!(app.flown.launch, launch);
-    assert!(
-        (app.flown.flight.range - range).abs() < 1e-9,
-        "{} vs {range}",
-        app.flown.flight.range
+    assert_eq!(
+        (app.scene.drag, app.scene.lift),
+        (DragModel::Nathan, LiftModel::Nathan)
     );
+    let nathan = homerun::model::launch::fly_scene(&app.scene, Purpose::Readout);
+    assert_eq!(app.flown.flight, nathan.flight);
+    assert!((app.flown.flight.range - range).abs() > 1.0);
+    assert!(screen(&app).contains("nathan"), "{}", screen(&app));
     assert!(app.flown.impact.is_none());
     // Launch, ball, air and models; no pitch and no bat.
     assert_eq!(groups(&app), ["", "launch", "ball", "environment", "model"]);
@@ -897,7 +901,10 @@ fn a_ball_that_lands_behind_the_plate_is_drawn_behind_it() {
     // 85° with 2500 rpm of backspin: the lift carries the ball back over
     // the plate, to land about 15 m behind it. The x axis starts behind
     // the plate, so the path is on the chart, not clipped at x = 0.
+    // Under the paper's lift, which carries it back (Nathan's saturates).
     let mut app = app_on("fly-ball", 80, 24, None);
+    app.scene.choose_drag(DragModel::Sawicki2003);
+    app.scene.choose_lift(LiftModel::Sawicki2003);
     set_and_settle(&mut app, "launch.angle", "1.4835");
     let range = app.flown.flight.range;
     assert!(app.flown.flight.landed && range < -5.0, "{range}");

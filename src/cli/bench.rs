@@ -82,6 +82,34 @@ fn render(report: &Report) -> String {
     }
     let _ = writeln!(
         out,
+        "\nthe fly ball in the plane and in 3-D (103 mph, 28°, 2500 rpm, Nathan's aero; dopri5; errors against Purpose::Reference for the same flight)\n{:<24} {:>9} {:>8} {:>11} {:>8} {:>9} {:>8} {:>11} {:>15}",
+        "flight",
+        "tolerance",
+        "absolute",
+        "evaluations",
+        "rejected",
+        "time_us",
+        "cpu_us",
+        "range_error",
+        "direction_error"
+    );
+    for r in &report.spatial {
+        let _ = writeln!(
+            out,
+            "{:<24} {:>9.0e} {:>8.0e} {:>11} {:>8} {:>9.2} {:>8} {:>11.2e} {:>15.2e}",
+            r.flight,
+            r.tolerance,
+            r.absolute,
+            r.evaluations,
+            r.rejected,
+            r.time_us,
+            or_dash(r.cpu_us, |c| format!("{c:.2}")),
+            r.range_error,
+            r.direction_error
+        );
+    }
+    let _ = writeln!(
+        out,
         "\none optimisation per Table II pitch (errors against optimiser 1e-9, integrator 1e-12)"
     );
     let _ = writeln!(

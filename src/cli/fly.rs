@@ -53,18 +53,17 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
     let flown = FlownToFence::new(scene, fence_of(preset));
     let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.fence);
     let unlanded = (!flight.landed).then(|| landing::not_landed(flight, end_height(scene)));
-    let kind = match scene.kind {
-        SceneKind::Swing => "swing",
-        SceneKind::BattedBall => "batted_ball",
-    };
     if json {
         return pretty(&serde_json::json!({
-            "scene": kind,
+            "scene": scene.kind.name(),
             "launch": {
                 "speed": launch.speed,
                 "angle": launch.angle,
                 "spin": launch.spin,
+                "direction": launch.direction,
+                "sidespin": launch.sidespin,
             },
+            "model": model_json(scene),
             "flight": flight_json(flight, unlanded),
             "fence": {
                 "distance": fence.distance,
@@ -106,14 +105,42 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
         (
             "air",
             format!(
-                "ρ = {}, ν = {:.4e} m²/s; drag {}, lift {}",
+                "ρ = {}, ν = {:.4e} m²/s; {}",
                 air_text(&air, shown),
                 air.kinematic_viscosity,
-                scene.drag,
-                scene.lift
+                models_text(scene)
             ),
         ),
     ])
+}
+
+/// The models in force and whether the user chose them, as JSON.
+pub(super) fn model_json(scene: &Scene) -> serde_json::Value {
+    serde_json::json!({
+        "drag": scene.drag.name(),
+        "lift": scene.lift.name(),
+        "chosen": {"drag": scene.chosen.drag, "lift": scene.chosen.lift},
+    })
+}
+
+/// "drag nathan, lift nathan (a batted ball's defaults)": the models in
+/// force, and where they come from when the user did not choose them.
+pub(super) fn models_text(scene: &Scene) -> String {
+    let whose = match scene.kind {
+        SceneKind::Swing => "the paper's, a swing's default",
+        SceneKind::BattedBall => "Nathan's, a batted ball's default",
+    };
+    let source = |chosen: bool| if chosen { "chosen" } else { whose };
+    let (drag, lift) = (scene.drag, scene.lift);
+    if scene.chosen.drag == scene.chosen.lift {
+        format!("drag {drag}, lift {lift} ({})", source(scene.chosen.drag))
+    } else {
+        format!(
+            "drag {drag} ({}), lift {lift} ({})",
+            source(scene.chosen.drag),
+            source(scene.chosen.lift)
+        )
+    }
 }
 
 /// "1.194 kg/m³ from 21 °C, 5 m, 1013 hPa, 50 %" ([`Air`]'s own words in
@@ -142,5 +169,12 @@ fn end_height(scene: &Scene) -> f64 {
 /// "46.045 m/s, 261.80 rad/s of backspin, 0.4887 rad (28.0°)", or
 /// "103.000 mph, 2500 rpm of backspin, 28.0°"
 pub(super) fn batted_text(launch: &BattedBall, shown: Shown) -> String {
-    shown.launch(launch.speed, launch.spin, launch.angle)
+    let mut text = shown.launch(launch.speed, launch.spin, launch.angle);
+    if launch.direction != 0.0 {
+        text += &format!(", {}", shown.direction(launch.direction));
+    }
+    if launch.sidespin != 0.0 {
+        text += &format!(", {}", shown.sidespin(launch.sidespin));
+    }
+    text
 }

@@ -115,8 +115,13 @@ pub(super) fn flight_text(flight: &FlightSummary, unlanded: Option<&str>, shown:
     match unlanded {
         Some(why) => format!("{why}, apex {apex}"),
         None => format!(
-            "range {} in {:.3} s, apex {apex}, lands at {}, {} below horizontal",
+            "range {}{} in {:.3} s, apex {apex}, lands at {}, {} below horizontal",
             shown.value(Quantity::Distance, flight.range, 3),
+            if flight.direction == 0.0 {
+                String::new()
+            } else {
+                format!(" at {}", shown.direction(flight.direction))
+            },
             flight.flight_time,
             shown.value(Quantity::Speed, flight.landing_speed, 2),
             shown.value(Quantity::Angle, flight.landing_angle, 3),
@@ -129,6 +134,7 @@ pub(super) fn flight_text(flight: &FlightSummary, unlanded: Option<&str>, shown:
 pub(super) fn flight_json(flight: &FlightSummary, unlanded: Option<String>) -> serde_json::Value {
     let mut json = serde_json::json!({
         "range": flight.landed.then_some(flight.range),
+        "direction": flight.direction,
         "flight_time": flight.flight_time,
         "apex": flight.apex,
         "landing_speed": flight.landing_speed,
@@ -244,6 +250,7 @@ pub(super) fn trajectory(
             Column::right("time", "t (s)", 8, Digits::Fixed(3)),
             distance("x", 9),
             distance("y", 8),
+            distance("z", 8),
             Column::right("drag_coefficient", "C_D", 6, Digits::Fixed(3)),
         ],
         rows: points
@@ -253,6 +260,7 @@ pub(super) fn trajectory(
                     p.time,
                     shown.convert(Quantity::Distance, p.x),
                     shown.convert(Quantity::Distance, p.y),
+                    shown.convert(Quantity::Distance, p.z),
                     p.drag_coefficient,
                 ]
                 .map(Cell::Num)

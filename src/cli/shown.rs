@@ -62,6 +62,26 @@ impl Shown {
         }
     }
 
+    /// A direction in words: "0.3000 rad (17.2° toward right field)", "12.0°
+    /// toward left field", "toward centre field".
+    pub fn direction(self, rad: f64) -> String {
+        let side = if rad > 0.0 {
+            "right field"
+        } else {
+            "left field"
+        };
+        if rad == 0.0 {
+            "toward centre field".to_owned()
+        } else if self.is_si() {
+            format!(
+                "{rad:.4} rad ({:.1}° toward {side})",
+                rad.abs().to_degrees()
+            )
+        } else {
+            format!("{:.1}° toward {side}", rad.abs().to_degrees())
+        }
+    }
+
     /// A batted spin in words, backspin positive: "191.83 rad/s of
     /// backspin", or in whole rpm as Statcast gives it ("1832 rpm of backspin").
     pub fn spin(self, spin: f64) -> String {
@@ -72,6 +92,19 @@ impl Shown {
         } else {
             format!("{size} of backspin")
         }
+    }
+
+    /// A sidespin in words: "100.00 rad/s of sidespin toward right field"
+    /// (positive curves the ball toward right field).
+    pub fn sidespin(self, sidespin: f64) -> String {
+        let decimals = if self.is_si() { 2 } else { 0 };
+        let size = self.value_to(Quantity::Spin, sidespin.abs(), decimals);
+        let side = if sidespin < 0.0 {
+            "left field"
+        } else {
+            "right field"
+        };
+        format!("{size} of sidespin toward {side}")
     }
 
     /// A launch: "44.299 m/s, 191.83 rad/s of backspin, 0.4604 rad (26.4°)",

@@ -83,6 +83,7 @@ impl GivenLaunch {
 /// batted ball flies Nathan's aero, while a model the user chose is never
 /// changed behind their back.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct ChosenModels {
     pub drag: bool,
     pub lift: bool,

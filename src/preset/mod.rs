@@ -183,7 +183,7 @@ impl Preset {
             // A `[launch]` table makes a batted ball, even an empty one
             // (every launch value then from the swing's impact).
             if section == LAUNCH_SECTION {
-                scene.kind = SceneKind::BattedBall;
+                scene.set_kind(SceneKind::BattedBall);
             }
             for (name, value) in entries {
                 let key = format!("{section}.{name}");
@@ -269,10 +269,10 @@ impl Preset {
         let weather = self.scene.environment.atmosphere().is_some();
         let skipped: &[&str] = if weather { &AIR_KEYS } else { &ATMOSPHERE_KEYS };
         // A swing writes no `[launch]` (it would make a batted ball); a
-        // batted ball writes the launch values it gives, all three if it
+        // batted ball writes the launch values it gives, all of them if it
         // gives none (so that it reads back as a batted ball).
         let launch = self.scene.launch;
-        let given = [launch.speed, launch.angle, launch.spin];
+        let given = launch.values();
         let launch_written = |name: &str| match self.scene.kind {
             SceneKind::Swing => false,
             SceneKind::BattedBall if launch.is_empty() => true,
@@ -295,16 +295,20 @@ impl Preset {
         for head in sections {
             out += &format!("\n[{head}]\n");
             if head == "model" {
+                // A model the user chose is written; one that follows the
+                // scene's kind is left to follow it (commented out).
+                let (drag, lift) = (self.scene.drag, self.scene.lift);
+                let chosen = self.scene.chosen;
                 out += &format!(
-                    "drag = \"{}\"  # {}; one of: {}\n",
-                    self.scene.drag,
-                    self.scene.drag.description(),
+                    "{}drag = \"{drag}\"  # {}; one of: {}\n",
+                    if chosen.drag { "" } else { "# " },
+                    drag.description(),
                     DragModel::ALL.map(DragModel::name).join(", ")
                 );
                 out += &format!(
-                    "lift = \"{}\"  # {}; one of: {}\n",
-                    self.scene.lift,
-                    self.scene.lift.description(),
+                    "{}lift = \"{lift}\"  # {}; one of: {}\n",
+                    if chosen.lift { "" } else { "# " },
+                    lift.description(),
                     LiftModel::ALL.map(LiftModel::name).join(", ")
                 );
             }

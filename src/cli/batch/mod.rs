@@ -269,12 +269,15 @@ fn announce(header: &Header, base: &Preset, sinks: &mut Sinks) {
 }
 
 /// The output's columns, in order.
-pub const OUTPUT_COLUMNS: [&str; 10] = [
+pub const OUTPUT_COLUMNS: [&str; 13] = [
     "line",
     "launch.speed",
     "launch.angle",
     "launch.spin",
+    "launch.direction",
+    "launch.sidespin",
     "range",
+    "direction",
     "flight_time",
     "apex",
     "landing_angle",
@@ -283,12 +286,15 @@ pub const OUTPUT_COLUMNS: [&str; 10] = [
 ];
 
 /// What each output column measures, for its unit outside SI.
-const OUTPUT_QUANTITIES: [Quantity; 10] = [
+const OUTPUT_QUANTITIES: [Quantity; 13] = [
     Quantity::Unchanged,
     Quantity::Speed,
     Quantity::Angle,
     Quantity::Spin,
+    Quantity::Angle,
+    Quantity::Spin,
     Quantity::Distance,
+    Quantity::Angle,
     Quantity::Unchanged,
     Quantity::Distance,
     Quantity::Angle,
@@ -304,10 +310,13 @@ fn csv_line(line: usize, flown: &FlownToFence, shown: Shown) -> String {
         String::new()
     };
     format!(
-        "{line},{},{},{},{range},{:.3},{},{},{},{}\n",
+        "{line},{},{},{},{},{},{range},{},{:.3},{},{},{},{}\n",
         shown.number(Quantity::Speed, launch.speed, 4),
         shown.number(Quantity::Angle, launch.angle, 6),
         shown.number(Quantity::Spin, launch.spin, 3),
+        shown.number(Quantity::Angle, launch.direction, 6),
+        shown.number(Quantity::Spin, launch.sidespin, 3),
+        shown.number(Quantity::Angle, flight.direction, 6),
         flight.flight_time,
         shown.number(Quantity::Distance, flight.apex, 3),
         shown.number(Quantity::Angle, flight.landing_angle, 4),
@@ -320,9 +329,16 @@ fn json_line(line: usize, flown: &FlownToFence) -> String {
     let (launch, flight) = (&flown.launch, &flown.flight);
     let json = serde_json::json!({
         "line": line,
-        "launch": {"speed": launch.speed, "angle": launch.angle, "spin": launch.spin},
+        "launch": {
+            "speed": launch.speed,
+            "angle": launch.angle,
+            "spin": launch.spin,
+            "direction": launch.direction,
+            "sidespin": launch.sidespin,
+        },
         "flight": {
             "range": flight.landed.then_some(flight.range),
+            "direction": flight.direction,
             "flight_time": flight.flight_time,
             "apex": flight.apex,
             "landing_angle": flight.landing_angle,

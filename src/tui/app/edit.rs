@@ -13,11 +13,13 @@ impl App {
         match self.fields[self.selected] {
             Field::Preset => {}
             Field::Drag => {
-                self.scene.drag = cycle(&DragModel::ALL, self.scene.drag, scale);
+                self.scene
+                    .choose_drag(cycle(&DragModel::ALL, self.scene.drag, scale));
                 self.inputs_changed = true;
             }
             Field::Lift => {
-                self.scene.lift = cycle(&LiftModel::ALL, self.scene.lift, scale);
+                self.scene
+                    .choose_lift(cycle(&LiftModel::ALL, self.scene.lift, scale));
                 self.inputs_changed = true;
             }
             // The same nudge as the sensitivity column's, so that its number

@@ -8,6 +8,8 @@
 //! a solve at the tightest setting; times are medians over repeated runs.
 //! The JSON output uses the tables' field names.
 
+mod spatial;
+
 use std::time::Instant;
 
 use serde::Serialize;
@@ -20,6 +22,7 @@ use crate::model::flight::{self, Flight, FlightOptions, Launch};
 use crate::model::impact::Impact;
 use crate::model::{self, scene::Scene};
 use crate::numerics::ode::Tolerance;
+pub use spatial::SpatialRow;
 
 /// reference/model.py's range for the Table II fastball launch (m).
 pub const PYTHON_REFERENCE_RANGE: f64 = 134.698780;
@@ -65,6 +68,8 @@ pub struct Report {
     pub reference: ReferenceCheck,
     pub trajectory: Vec<TrajectoryRow>,
     pub aero: Vec<AeroRow>,
+    /// The fly ball in the plane and in 3-D: what leaving the plane costs.
+    pub spatial: Vec<SpatialRow>,
     pub optimisation: Vec<OptimisationRow>,
     pub surface: Vec<SurfaceRow>,
     /// The explorer's other background work, on the fastball.
@@ -604,6 +609,7 @@ pub fn run(quick: bool) -> Report {
         },
         trajectory: trajectories(effort, reference),
         aero: aero_trajectories(effort, quick),
+        spatial: spatial::rows(effort, quick),
         optimisation: optimisations(effort, quick),
         surface: surfaces(effort, threads, quick),
         explorer: explorer(effort),
