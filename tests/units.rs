@@ -183,9 +183,9 @@ fn csv_headers_carry_the_units_and_the_numbers_convert() {
     let args = ["trajectory", "--samples", "3", "--csv"];
     let si = stdout(dir.path(), &args);
     let imperial = stdout(dir.path(), &[&args[..], &["--units", "imperial"]].concat());
-    assert!(si.starts_with("time,x,y,drag_coefficient\n"), "{si}");
+    assert!(si.starts_with("time,x,y,z,drag_coefficient\n"), "{si}");
     assert!(
-        imperial.starts_with("time,x_ft,y_ft,drag_coefficient\n"),
+        imperial.starts_with("time,x_ft,y_ft,z_ft,drag_coefficient\n"),
         "{imperial}"
     );
     let last = |csv: &str| -> Vec<f64> {
@@ -211,7 +211,7 @@ fn csv_headers_carry_the_units_and_the_numbers_convert() {
     let mut lines = out.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "line,launch.speed_mph,launch.angle_deg,launch.spin_rpm,range_ft,flight_time,apex_ft,landing_angle_deg,landed,clears_fence"
+        "line,launch.speed_mph,launch.angle_deg,launch.spin_rpm,launch.direction_deg,launch.sidespin_rpm,range_ft,direction_deg,flight_time,apex_ft,landing_angle_deg,landed,clears_fence"
     );
     assert!(
         lines

@@ -10,9 +10,10 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::optimum::{OptimizerSettings, Status, optimize_from};
-use crate::model::flight::{self, FlightOptions, FlightSummary, TrajectoryPoint};
+use crate::model::flight::{FlightOptions, FlightSummary, TrajectoryPoint};
 use crate::model::impact::{Impact, Regime};
 use crate::model::keys::{DRAG_KEY, InputError};
+use crate::model::launch::SceneFlight;
 use crate::model::{self, scene::Scene};
 
 /// A rectangular grid over undercut (columns) and swing angle (rows).
@@ -514,8 +515,7 @@ pub fn drag_along_flight(
     options: impl Into<FlightOptions>,
 ) -> (FlightSummary, Vec<TrajectoryPoint>) {
     let impact = Impact::new(scene);
-    let (flight, start) = model::launch(scene, &impact);
-    flight::trajectory(&flight, &start, &options.into(), samples)
+    SceneFlight::of_impact(scene, &impact).trajectory(&options.into(), samples)
 }
 
 /// One point of Figs. 5–6: the batted spin ω_bf and launch angle ζ at an
