@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README's pictures in docs/ from the release build:
+# Regenerates the pictures of the README and docs/ from the release build:
 #   scripts/pictures.sh
 # Each is what the command line writes with --svg; the bench diagram is the
 # quick bench on this machine (its times vary with the machine and its load).

@@ -1,15 +1,49 @@
-//! The README's key table is written for people, but it may not fall behind
-//! the keymap: every key the explorer's help names must be in it.
+//! The README and the guides in docs/ are written for people, but they may
+//! not fall behind the program: every `$ homerun …` example is what it
+//! prints, every screen of the explorer is one of its snapshots, the key
+//! table names every key of the keymap, and every link between them leads
+//! somewhere.
 
 use homerun::tui::keymap::KEYMAP;
 
-/// The code spans (`…`) in the first column of the README's key table.
+/// The README and every guide in docs/, by path, as they are on disk.
+fn documents() -> Vec<(String, String)> {
+    let mut paths: Vec<std::path::PathBuf> = std::fs::read_dir("docs")
+        .unwrap()
+        .map(|entry| entry.unwrap().path())
+        .filter(|path| path.extension().is_some_and(|e| e == "md"))
+        .collect();
+    paths.sort();
+    paths.insert(0, "README.md".into());
+    paths
+        .into_iter()
+        .map(|path| {
+            let text = std::fs::read_to_string(&path).unwrap();
+            (path.display().to_string(), text)
+        })
+        .collect()
+}
+
+#[test]
+fn the_guides_are_there() {
+    let names: Vec<String> = documents().into_iter().map(|(name, _)| name).collect();
+    for guide in ["explorer", "cli", "models", "speed", "limits", "layout"] {
+        assert!(
+            names.contains(&format!("docs/{guide}.md")),
+            "docs/{guide}.md is missing: {names:?}"
+        );
+    }
+}
+
+/// The code spans (`…`) in the first column of the key table, which one
+/// document holds.
 fn readme_keys() -> Vec<String> {
-    let readme = include_str!("../README.md");
-    let table = readme
-        .split("| Keys | Action |")
-        .nth(1)
-        .expect("the README has a key table");
+    let tables: Vec<String> = documents()
+        .into_iter()
+        .filter_map(|(_, text)| text.split("| Keys | Action |").nth(1).map(str::to_owned))
+        .collect();
+    assert_eq!(tables.len(), 1, "one key table in the README and docs/");
+    let table = &tables[0];
     table
         .lines()
         .skip(2)
@@ -48,26 +82,35 @@ fn every_key_in_the_help_is_in_the_readme_table() {
     }
     assert!(
         missing.is_empty(),
-        "not in the README's key table: {missing:?}"
+        "not in the key table (docs/explorer.md): {missing:?}"
     );
 }
 
-/// One `$ homerun …` example of the README and the lines shown under it.
+/// One `$ homerun …` example of a document and the lines shown under it.
 struct Example {
+    document: String,
     line: usize,
     args: Vec<String>,
     tail: Option<usize>,
     shown: Vec<String>,
 }
 
-/// The README's examples that can be run as they are written: no shell
-/// variables, files or pictures, which the tests of those features cover.
+/// The examples of the README and the guides that can be run as they are
+/// written: no shell variables, files or pictures, which the tests of those
+/// features cover.
 fn readme_examples() -> Vec<Example> {
-    let readme = include_str!("../README.md");
+    let mut examples: Vec<Example> = Vec::new();
+    for (document, text) in documents() {
+        examples.extend(examples_in(&document, &text));
+    }
+    examples
+}
+
+fn examples_in(document: &str, text: &str) -> Vec<Example> {
     let mut examples: Vec<Example> = Vec::new();
     let mut in_block = false;
     let mut current: Option<Example> = None;
-    for (k, line) in readme.lines().enumerate() {
+    for (k, line) in text.lines().enumerate() {
         if line.starts_with("```") {
             in_block = !in_block;
             examples.extend(current.take());
@@ -88,6 +131,7 @@ fn readme_examples() -> Vec<Example> {
                 None => (command, None),
             };
             current = runnable.then(|| Example {
+                document: document.to_owned(),
                 line: k + 1,
                 args: command.split_whitespace().map(str::to_owned).collect(),
                 tail,
@@ -125,12 +169,20 @@ fn agrees(shown: &[String], printed: &[&str]) -> bool {
     printed.next().is_none()
 }
 
-/// What the README shows under a command is what the program prints. Both
-/// streams count (the README shows refusals too).
+/// What the README and the guides show under a command is what the program
+/// prints. Both streams count (they show refusals too).
 #[test]
 fn the_readme_examples_are_what_the_program_prints() {
     let examples = readme_examples();
-    assert!(examples.len() > 20, "found {}", examples.len());
+    assert!(examples.len() > 25, "found {}", examples.len());
+    assert!(
+        examples
+            .iter()
+            .filter(|e| e.document == "README.md")
+            .count()
+            >= 4,
+        "the README's quick start is checked too"
+    );
     let presets = tempfile::tempdir().unwrap();
     let mut wrong = Vec::new();
     for example in &examples {
@@ -149,7 +201,8 @@ fn the_readme_examples_are_what_the_program_prints() {
         let agrees = agrees(&example.shown, &printed);
         if !agrees {
             wrong.push(format!(
-                "README line {}: homerun {}\n--- README\n{}\n--- printed\n{}",
+                "{} line {}: homerun {}\n--- shown\n{}\n--- printed\n{}",
+                example.document,
                 example.line,
                 example.args.join(" "),
                 example.shown.join("\n"),
@@ -160,10 +213,10 @@ fn the_readme_examples_are_what_the_program_prints() {
     assert!(wrong.is_empty(), "{}", wrong.join("\n\n"));
 }
 
-/// The screens the README shows are the explorer's own, as the insta
-/// snapshots of `tests/tui_render.rs` hold them: each picture of the
-/// explorer equals one snapshot, so a change to a pane cannot leave the
-/// README showing the old one.
+/// The screens the README and the guides show are the explorer's own, as
+/// the insta snapshots of `tests/tui_render.rs` hold them: each picture of
+/// the explorer equals one snapshot, so a change to a pane cannot leave a
+/// document showing the old one.
 #[test]
 fn the_readme_screens_are_snapshots() {
     let snapshots: Vec<(String, Vec<String>)> = std::fs::read_dir("tests/snapshots")
@@ -180,9 +233,32 @@ fn the_readme_screens_are_snapshots() {
             (path.display().to_string(), lines)
         })
         .collect();
-    let readme = include_str!("../README.md");
-    let screens: Vec<Vec<String>> = readme
-        .split("```")
+    let documents = documents();
+    let screens: Vec<(&str, Vec<String>)> = documents
+        .iter()
+        .flat_map(|(name, text)| {
+            screens_in(text)
+                .into_iter()
+                .map(move |s| (name.as_str(), s))
+        })
+        .collect();
+    assert!(
+        screens.iter().any(|(name, _)| *name == "README.md"),
+        "the README shows the explorer"
+    );
+    assert!(screens.len() >= 4, "found {} screens", screens.len());
+    for (name, screen) in &screens {
+        assert!(
+            snapshots.iter().any(|(_, lines)| lines == screen),
+            "a screen in {name} that no snapshot holds:\n{}",
+            screen.join("\n")
+        );
+    }
+}
+
+/// The pictures of the explorer in a document's code blocks.
+fn screens_in(text: &str) -> Vec<Vec<String>> {
+    text.split("```")
         .skip(1)
         .step_by(2)
         .map(|block| {
@@ -193,13 +269,118 @@ fn the_readme_screens_are_snapshots() {
                 .collect::<Vec<_>>()
         })
         .filter(|lines: &Vec<String>| lines.first().is_some_and(|l| l.starts_with("┌ Inputs")))
-        .collect();
-    assert!(!screens.is_empty(), "the README shows the explorer");
-    for screen in &screens {
-        assert!(
-            snapshots.iter().any(|(_, lines)| lines == screen),
-            "a README screen that no snapshot holds:\n{}",
-            screen.join("\n")
-        );
+        .collect()
+}
+
+/// The targets of a document's inline links, `[text](target)`, outside
+/// code (blocks and spans), with the line each is on.
+fn links(text: &str) -> Vec<(usize, String)> {
+    let mut found = Vec::new();
+    let mut in_block = false;
+    for (k, line) in text.lines().enumerate() {
+        if line.trim_start().starts_with("```") {
+            in_block = !in_block;
+            continue;
+        }
+        if in_block {
+            continue;
+        }
+        // Code spans are the odd pieces between backquotes.
+        let prose: String = line.split('`').step_by(2).collect::<Vec<_>>().join(" ");
+        let mut rest = prose.as_str();
+        while let Some(at) = rest.find("](") {
+            rest = &rest[at + 2..];
+            let Some(end) = rest.find(')') else { break };
+            found.push((k + 1, rest[..end].to_owned()));
+            rest = &rest[end..];
+        }
     }
+    found
+}
+
+/// A heading's anchor as GitHub makes it: lower case, punctuation other
+/// than `-` and `_` dropped, each space a `-`.
+fn anchor(heading: &str) -> String {
+    heading
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter(|c| c.is_alphanumeric() || matches!(c, ' ' | '-' | '_'))
+        .map(|c| if c == ' ' { '-' } else { c })
+        .collect()
+}
+
+/// The anchors of a document's headings, outside code blocks.
+fn anchors(text: &str) -> Vec<String> {
+    let mut in_block = false;
+    let mut found = Vec::new();
+    for line in text.lines() {
+        if line.trim_start().starts_with("```") {
+            in_block = !in_block;
+        } else if !in_block && line.starts_with('#') {
+            found.push(anchor(line.trim_start_matches('#')));
+        }
+    }
+    found
+}
+
+/// Every relative link of the README and the guides leads to a file that
+/// exists, and a `#part` of one to a heading of it; links to the web are
+/// left to the reader.
+#[test]
+fn every_link_between_the_documents_resolves() {
+    let documents = documents();
+    let mut checked = 0;
+    let mut broken = Vec::new();
+    for (name, text) in &documents {
+        let folder = std::path::Path::new(name).parent().unwrap();
+        for (line, target) in links(text) {
+            if target.contains("://") || target.starts_with("mailto:") {
+                continue;
+            }
+            checked += 1;
+            let (file, part) = match target.split_once('#') {
+                Some((file, part)) => (file, Some(part)),
+                None => (target.as_str(), None),
+            };
+            let path = if file.is_empty() {
+                std::path::PathBuf::from(name)
+            } else {
+                folder.join(file)
+            };
+            if !path.exists() {
+                broken.push(format!(
+                    "{name}:{line}: {target}: no file {}",
+                    path.display()
+                ));
+                continue;
+            }
+            if let Some(part) = part {
+                let text = std::fs::read_to_string(&path).unwrap_or_default();
+                if !anchors(&text).iter().any(|a| a == part) {
+                    broken.push(format!("{name}:{line}: {target}: no heading #{part}"));
+                }
+            }
+        }
+    }
+    assert!(checked > 20, "checked {checked} links");
+    assert!(
+        broken.is_empty(),
+        "links that lead nowhere:\n{}",
+        broken.join("\n")
+    );
+}
+
+#[test]
+fn anchors_are_made_as_github_makes_them() {
+    assert_eq!(anchor(" Pictures: `--svg FILE`"), "pictures---svg-file");
+    assert_eq!(
+        anchor(" `homerun surface`: range over (E, ψ)"),
+        "homerun-surface-range-over-e-ψ"
+    );
+    assert_eq!(anchor(" The explorer's budget"), "the-explorers-budget");
+    assert_eq!(
+        links("see [a](b.md#c) and `[not](a link)`, [d](e.svg)"),
+        vec![(1, "b.md#c".to_owned()), (1, "e.svg".to_owned())]
+    );
 }

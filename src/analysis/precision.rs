@@ -1,7 +1,7 @@
 //! Accuracy budgets: each consumer states what it can show and gets the
 //! cheapest computation that meets it. Every tolerance in the program is
 //! chosen here, and only here. The numbers behind each choice are in the
-//! README's work–precision table (`homerun bench`).
+//! work–precision tables of docs/speed.md (`homerun bench`).
 //!
 //! A budget is the largest error in range (m) the consumer can accept; the
 //! tolerance is the loosest one whose measured range error stays well inside
@@ -57,8 +57,8 @@ impl Purpose {
 
     /// The loosest tolerance that keeps the range error well inside the
     /// budget, from `homerun bench` (Table II fastball; errors against
-    /// Purpose::Reference). What each costs is in the bench's tables and the
-    /// README, not here, where it would go stale.
+    /// Purpose::Reference). What each costs is in the bench's tables and in
+    /// docs/speed.md, not here, where it would go stale.
     pub fn tolerance(self) -> Tolerance {
         match self {
             // 5e-8 m, 20× inside the budget: one solve per keystroke can

@@ -299,14 +299,16 @@ pub(super) fn trajectory(
 /// ranges and the fastball's values in the units shown (`--set` takes SI).
 pub(super) fn keys(shown: Shown) -> String {
     let defaults = Scene::default();
-    let left = |head, width| Column::text(head, Width::AtLeast(width), Align::Left, " ");
+    // Each column as wide as its widest field, two spaces apart, so that no
+    // key, range or value runs into the next column however long it grows.
+    let column = |head, align| Column::text(head, Width::Fit, align, "  ");
     let columns = vec![
-        left("key", 33),
-        left("symbol", 6),
-        left("unit", 7),
-        left("accepted", 24),
-        Column::text("fastball", Width::AtLeast(10), Align::Right, " "),
-        left("meaning", 0).after("  "),
+        column("key", Align::Left),
+        column("symbol", Align::Left),
+        column("unit", Align::Left),
+        column("accepted", Align::Left),
+        column("fastball", Align::Right),
+        Column::text("meaning", Width::AtLeast(0), Align::Left, "  "),
     ];
     let text = |s: &str| Cell::Text(s.to_owned());
     // In SI as it always was; otherwise converted and shortened.

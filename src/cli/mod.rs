@@ -45,7 +45,8 @@ pub use usage::{Parsed, error_line, parse};
     about = "The physics of hitting a baseball as far as possible (Sawicki, Hubbard & Stronge 2003).",
     long_about = "The physics of hitting a baseball as far as possible, after Sawicki, Hubbard & Stronge, \
                   \"How to hit home runs\", Am. J. Phys. 71 (2003).\n\n\
-                  With no command, opens the explorer (a terminal app); the commands below print numbers."
+                  With no command, opens the explorer (a terminal app); the commands below print numbers.",
+    after_long_help = UNITS_HELP
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -53,10 +54,7 @@ pub struct Cli {
     /// Folder for the user's own presets (default: $XDG_CONFIG_HOME/homerun/presets).
     #[arg(long, global = true, value_name = "DIR")]
     pub presets_dir: Option<PathBuf>,
-    /// Units of the text and CSV printed: si (m, m/s, rad, rad/s, °C) or imperial
-    /// (ft, in, mph, °, rpm, °F). JSON, --set and presets are always SI; the numbers
-    /// of --from/--to, --undercut and --swing-angle are in these units. The
-    /// explorer starts in them (its `u` switches).
+    /// Units printed: si (the default) or imperial (ft, mph, rpm, °); see `homerun --help`.
     #[arg(
         long,
         global = true,
@@ -66,6 +64,13 @@ pub struct Cli {
     )]
     pub units: UnitSystem,
 }
+
+/// What `--units` does, said once, under `homerun --help` (every command
+/// takes `--units`, and its own help gives one line).
+pub const UNITS_HELP: &str = "Units: --units imperial prints the text and CSV in ft, in, mph, °, rpm, °F, inHg and oz \
+     instead of si's m, m/s, rad, rad/s, °C, hPa and kg. JSON, --set and presets are always SI; \
+     the numbers of sweep's --from/--to and surface's --undercut/--swing-angle are taken in the \
+     units printed. The explorer starts in them (its `u` switches).";
 
 /// Which preset to start from, and changes to it.
 #[derive(Args, Debug, Clone, Default)]
@@ -95,8 +100,10 @@ pub enum Command {
         /// How many points, launch and landing included (2 to 100000).
         #[arg(long, default_value_t = 51, allow_negative_numbers = true)]
         samples: usize,
+        /// Print JSON instead of text: range, flight time, landed, the points.
         #[arg(long, conflicts_with = "csv")]
         json: bool,
+        /// Print CSV instead of text: a header, then one line per point.
         #[arg(long)]
         csv: bool,
         /// Write the picture as SVG to FILE instead (atomically; "wrote FILE" on stderr).
@@ -108,8 +115,8 @@ pub enum Command {
     Fly {
         #[command(flatten)]
         scene: SceneArgs,
-        /// A CSV of launches, one per row (`-` for stdin): see the README.
-        #[arg(long, value_name = "FILE")]
+        /// A CSV of launches, one flight per row (`-` for stdin); `--help` lists the columns read.
+        #[arg(long, value_name = "FILE", long_help = batch::columns_help())]
         batch: Option<String>,
         /// Print JSON instead of text (with --batch: one JSON object per line).
         #[arg(long)]
@@ -121,11 +128,13 @@ pub enum Command {
     Optimize {
         #[command(flatten)]
         scene: SceneArgs,
+        /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
     },
     /// Table II: the paper's numbers beside ours, with the differences.
     Table2 {
+        /// Print JSON instead of text: one object per pitch.
         #[arg(long)]
         json: bool,
     },
@@ -133,8 +142,10 @@ pub enum Command {
     Sweep {
         /// The key to sweep, e.g. bat.speed.
         key: String,
+        /// The first value, in the key's unit (the unit printed with --units imperial).
         #[arg(long, allow_hyphen_values = true)]
         from: f64,
+        /// The last value, in the same unit.
         #[arg(long, allow_hyphen_values = true)]
         to: f64,
         /// How many values, both ends included (1 to 200).
@@ -142,8 +153,10 @@ pub enum Command {
         steps: usize,
         #[command(flatten)]
         scene: SceneArgs,
+        /// Print JSON instead of text: the key, its unit, one object per point.
         #[arg(long, conflicts_with = "csv")]
         json: bool,
+        /// Print CSV instead of text: a header, then one line per point.
         #[arg(long)]
         csv: bool,
     },
@@ -160,8 +173,10 @@ pub enum Command {
         /// Columns (undercut) x rows (swing angle).
         #[arg(long, value_name = "NxM", default_value = "21x17")]
         grid: String,
+        /// Print JSON instead of text: the windows, rows of ranges, which cells landed, the best.
         #[arg(long, conflicts_with = "csv")]
         json: bool,
+        /// Print CSV instead of text: one line per cell (undercut, swing angle, range, landed).
         #[arg(long)]
         csv: bool,
         /// Write the picture as SVG to FILE instead (atomically; "wrote FILE" on stderr).

@@ -100,6 +100,12 @@ impl Column {
     }
 }
 
+/// The columns a text takes on a terminal: a combining mark (the hat of
+/// V̂) takes none, so counting characters would misalign the column.
+fn shown_width(text: &str) -> usize {
+    unicode_width::UnicodeWidthStr::width(text)
+}
+
 /// Rows of cells under columns: one cell per column, in order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Table {
@@ -143,8 +149,8 @@ impl Table {
                 Width::AtLeast(width) => width,
                 Width::Fit => cells
                     .iter()
-                    .map(|row| row[n].chars().count())
-                    .chain(headings.then(|| heads[n].chars().count()))
+                    .map(|row| shown_width(&row[n]))
+                    .chain(headings.then(|| shown_width(&heads[n])))
                     .max()
                     .unwrap_or(0),
             })
@@ -153,7 +159,7 @@ impl Table {
             let mut text = String::new();
             for (n, field) in fields.iter().enumerate() {
                 let column = &self.columns[shown[n]];
-                let pad = " ".repeat(widths[n].saturating_sub(field.chars().count()));
+                let pad = " ".repeat(widths[n].saturating_sub(shown_width(field)));
                 if n > 0 {
                     text.push_str(column.gap);
                 }
@@ -270,6 +276,38 @@ mod tests {
         assert_eq!(
             serde_json::Value::Array(table.json_rows()).to_string(),
             r#"[{"x":1.24,"y":0.5,"z":3.0},{"x":10.0,"y":2.0,"z":null}]"#
+        );
+    }
+
+    /// Fitted columns line up by what a terminal shows (V̂ is one column
+    /// wide, two characters), and a field longer than any before (a key
+    /// name of 60 characters) widens its column instead of touching the next.
+    #[test]
+    fn fitted_columns_keep_their_gap_whatever_their_width() {
+        let column = |head| Column::text(head, Width::Fit, Align::Left, "  ");
+        let long = "environment.".repeat(5);
+        let table = Table {
+            columns: vec![column("key"), column("symbol"), column("unit")],
+            rows: vec![
+                vec![
+                    Cell::Text(long.clone()),
+                    Cell::Text("V̂_b0".into()),
+                    Cell::Text("m/s".into()),
+                ],
+                vec![
+                    Cell::Text("x".into()),
+                    Cell::Text("ω_b0".into()),
+                    Cell::Text("rad/s".into()),
+                ],
+            ],
+        };
+        let pad = " ".repeat(long.len() - 3);
+        assert_eq!(
+            table.text(),
+            format!(
+                "key{pad}  symbol  unit\n{long}  V̂_b0    m/s\nx{}  ω_b0    rad/s\n",
+                " ".repeat(long.len() - 1)
+            )
         );
     }
 }

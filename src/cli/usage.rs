@@ -170,6 +170,10 @@ fn accepted(flag: &str) -> Option<String> {
             "a preset name (homerun presets lists them) or a path to a TOML file".to_owned()
         }
         "--presets-dir" => "a folder".to_owned(),
+        "--batch" => {
+            "a CSV file of launches, or - for stdin (homerun fly --help lists the columns read)"
+                .to_owned()
+        }
         "--units" => "si or imperial".to_owned(),
         "--grid" => "NxM, e.g. 21x17".to_owned(),
         "--undercut" => "A..B in m, e.g. 0..0.05".to_owned(),

@@ -2,7 +2,7 @@
 //! after Stronge, solved as functions of the normal impulse p.
 //!
 //! Sign conventions (derived once, from first principles, and checked against
-//! all nine launch values of Table II; the README's errata list the paper's
+//! all nine launch values of Table II; docs/models.md lists the paper's
 //! misprints they settle):
 //! - flight frame x toward centre field, y up; spins are ẑ components
 //!   (counter-clockwise positive), so batted backspin and pitched topspin are

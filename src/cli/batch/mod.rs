@@ -20,6 +20,7 @@ mod rows;
 
 pub use records::MAX_RECORD_BYTES;
 use records::*;
+pub(super) use rows::columns_help;
 use rows::*;
 
 /// Rows read, flown in parallel and written at a time.

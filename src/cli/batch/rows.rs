@@ -62,6 +62,42 @@ pub(super) const LAUNCH_COLUMNS: [(&str, &[(&str, Unit)]); 3] = [
     ),
 ];
 
+/// `fly --batch`'s long help: the columns read, made from
+/// [`LAUNCH_COLUMNS`] and the keys, so that it cannot fall behind them.
+pub(in crate::cli) fn columns_help() -> String {
+    let launch: Vec<(&str, String)> = LAUNCH_COLUMNS
+        .iter()
+        .flat_map(|(key, names)| {
+            names.iter().map(move |(name, unit)| {
+                let unit = match unit {
+                    Unit::Si => Scene::key(key).map_or("", |k| k.unit),
+                    unit => unit.name(),
+                };
+                (*name, format!("{key} in {unit}"))
+            })
+        })
+        .collect();
+    let width = launch.iter().map(|(name, _)| name.len()).max().unwrap_or(0);
+    let mut text = String::from(
+        "A CSV of launches, one flight per row (`-` reads stdin). The header names the \
+         columns; these are read, in any order:\n",
+    );
+    for (name, meaning) in &launch {
+        text += &format!("  {name:<width$}  {meaning}\n");
+    }
+    text += &format!(
+        "  and any other key of `homerun keys` ({DRAG_KEY}, environment.temperature, {}, …), \
+         that input for the row, as --set takes it.\n\
+         Statcast's launch_speed and launch_angle columns are read as they are; its \
+         release_spin_rate is the pitch's spin, not the batted ball's, and is not read. \
+         Other columns are ignored (named once on stderr). A launch column not given takes \
+         the preset's value for every row; an empty cell of another column, the preset's \
+         value; a row whose launch cells are all empty is skipped.",
+        FIELD_KEYS[0].name
+    );
+    text
+}
+
 /// What one input column is.
 #[derive(Clone, Copy, Debug)]
 pub(super) enum Column {
