@@ -70,7 +70,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
 
     /// Where the step leaves its drag piece, and the piece it enters, given
     /// the Reynolds numbers at its ends.
-    #[inline]
+    #[inline(always)]
     fn kink_crossing(&self, step: &DenseStep<N>, re0: f64, re1: f64) -> Option<Switch> {
         let regime = self.regime.get();
         let (kinks, p) = (self.kinks, regime.piece.unwrap_or_default());
@@ -113,7 +113,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
     }
 
     /// Where the step enters or leaves the wind's layer, if it does.
-    #[inline]
+    #[inline(always)]
     fn layer_crossing(&self, step: &DenseStep<N>) -> Option<Switch> {
         let height = self.wind_height?;
         let regime = self.regime.get();
@@ -151,7 +151,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
     /// Sees one accepted step: switches the regime at a kink or the wind's
     /// layer (cutting the step there), records the apex and the landing, and
     /// says how to go on. `watch` is shown the step as kept.
-    #[inline]
+    #[inline(always)]
     pub fn observe(
         &mut self,
         step: &DenseStep<N>,
@@ -223,7 +223,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
     /// When the next event is near, the time by which the next step should
     /// end: a little past it rather than wherever the error control would.
     /// `step` was not cut, so re0 and re1 are its ends' Reynolds numbers.
-    #[inline]
+    #[inline(always)]
     fn next_event_by(&self, step: &DenseStep<N>, re0: f64, re1: f64) -> Option<f64> {
         let h = step.t1 - step.t0;
         // The landing, and the wind's layer: y(τ) ≈ y + v_y τ + a_y τ²/2,
@@ -260,7 +260,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
 }
 
 /// The first τ > 0 at which y + v_y τ + a_y τ²/2 = `level`, or infinity.
-#[inline]
+#[inline(always)]
 fn time_to_height(y: f64, vy: f64, ay: f64, level: f64) -> f64 {
     let y = y - level;
     let mut soonest = f64::INFINITY;

@@ -70,8 +70,11 @@ pub trait Dynamics<const N: usize> {
     const HEIGHT: usize;
     const VERTICAL_VELOCITY: usize;
 
-    /// d/dt of the state at time `t` in `regime`.
-    fn derivative(&self, t: f64, state: &State<N>, regime: Regime) -> State<N>;
+    /// d/dt of the state at time `t` in the regime of drag piece `piece`
+    /// and wind layer `in_wind` (a [`Regime`]'s fields, passed apart so
+    /// that they travel in registers: the call is the hot path).
+    fn derivative(&self, t: f64, state: &State<N>, piece: Option<usize>, in_wind: bool)
+    -> State<N>;
     fn drag(&self) -> DragModel;
     fn gravity(&self) -> f64;
     /// 2r_b/ν: turns |V_r| into Re.
@@ -213,7 +216,10 @@ fn fly_with<const N: usize, D: Dynamics<N>, S: Start<N>>(
         in_wind,
     });
     let mut events = Events::new(flight, &start, &regime);
-    let rhs = |t: f64, s: &State<N>| flight.derivative(t, s, regime.get());
+    let rhs = |t: f64, s: &State<N>| {
+        let Regime { piece, in_wind } = regime.get();
+        flight.derivative(t, s, piece, in_wind)
+    };
     let observe = |step: &DenseStep<N>| events.observe(step, &mut watch);
     let time_limit = launch.time_limit(flight.gravity());
     let (outcome, stats) = match stepper {

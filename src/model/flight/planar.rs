@@ -6,7 +6,7 @@
 
 use nalgebra::Vector2;
 
-use super::{Dynamics, Regime, time_limit};
+use super::{Dynamics, time_limit};
 use crate::model::aero::{DragCurve, DragModel, LiftCurve, LiftModel};
 use crate::model::scene::Scene;
 use crate::numerics::ode::State;
@@ -230,8 +230,14 @@ impl Dynamics<4> for Flight {
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
 
     #[inline]
-    fn derivative(&self, t: f64, state: &State<4>, regime: Regime) -> State<4> {
-        self.derivative_at(t, state, regime.piece)
+    fn derivative(
+        &self,
+        t: f64,
+        state: &State<4>,
+        piece: Option<usize>,
+        _in_wind: bool,
+    ) -> State<4> {
+        self.derivative_at(t, state, piece)
     }
 
     #[inline]

@@ -139,8 +139,14 @@ impl Dynamics<6> for Flight3d {
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
 
     #[inline]
-    fn derivative(&self, t: f64, state: &State<6>, regime: Regime) -> State<6> {
-        let a = self.acceleration_at(t, velocity(state), regime);
+    fn derivative(
+        &self,
+        t: f64,
+        state: &State<6>,
+        piece: Option<usize>,
+        in_wind: bool,
+    ) -> State<6> {
+        let a = self.acceleration_at(t, velocity(state), Regime { piece, in_wind });
         State::<6>::new(
             state[VELOCITY_X],
             state[VERTICAL_VELOCITY],
