@@ -311,6 +311,8 @@ pub fn trajectory<const N: usize, D: Dynamics<N>, S: Start<N>>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::scene::Scene;
+    use nalgebra::Vector2;
 
     #[test]
     fn the_time_limit_is_ten_vacuum_flights_straight_up() {
