@@ -29,3 +29,20 @@ pub fn bisect(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> bool) -> f64 {
     }
     0.5 * (lo + hi)
 }
+
+/// One row of a reference fixture (tests/data/*_reference.csv), by column
+/// name.
+pub struct Row<'a> {
+    pub names: &'a [&'a str],
+    pub fields: Vec<&'a str>,
+}
+
+impl Row<'_> {
+    pub fn text(&self, name: &str) -> &str {
+        let i = self.names.iter().position(|n| *n == name).expect(name);
+        self.fields[i]
+    }
+    pub fn number(&self, name: &str) -> f64 {
+        self.text(name).parse().expect(name)
+    }
+}
