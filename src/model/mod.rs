@@ -12,6 +12,7 @@ pub mod flight;
 pub mod impact;
 pub mod keys;
 pub mod launch;
+pub mod park;
 pub mod pitch;
 pub mod scene;
 
