@@ -289,8 +289,8 @@ def main():
         ]
         for d, r, h in points:
             out.append(
-                f"  {{ direction = {math.radians(d):.5f}, distance = {r * FOOT:.2f}, "
-                f"height = {h * FOOT:.2f} }},  # {d:6.1f}°  {r:5.1f} ft  {h:4.1f} ft"
+                f"  {{ direction = {math.radians(d):.5f}, distance = {r * FOOT:.3f}, "
+                f"height = {h * FOOT:.3f} }},  # {d:6.1f}°  {r:5.1f} ft  {h:4.1f} ft"
             )
         out += ["]", ""]
 
