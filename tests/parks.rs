@@ -48,7 +48,11 @@ fn fences_run_foul_line_to_foul_line_every_five_degrees_or_closer() {
         assert_eq!(points[points.len() - 1].direction, FRAC_PI_4, "{}", p.code);
         for pair in points.windows(2) {
             let gap = (pair[1].direction - pair[0].direction).to_degrees();
-            assert!((0.0..=5.0 + 1e-9).contains(&gap), "{}: a {gap}° gap", p.code);
+            assert!(
+                (0.0..=5.0 + 1e-9).contains(&gap),
+                "{}: a {gap}° gap",
+                p.code
+            );
         }
         for point in points {
             // A wall between 2 ft and 40 ft high, 290 ft to 440 ft out.
@@ -77,9 +81,15 @@ fn fences_meet_the_published_lines_and_centre_within_six_feet() {
     let lines = |code: &str| (distance_ft(code, -45.0), distance_ft(code, 45.0));
     let near = |got: f64, want: f64| (got - want).abs() <= 6.0;
     let (yankee_left, yankee_right) = lines("NYY");
-    assert!(near(yankee_right, 314.0) && near(yankee_left, 318.0), "the short porch");
+    assert!(
+        near(yankee_right, 314.0) && near(yankee_left, 318.0),
+        "the short porch"
+    );
     let (fenway_left, fenway_right) = lines("BOS");
-    assert!(near(fenway_left, 310.0) && near(fenway_right, 302.0), "the Pesky pole");
+    assert!(
+        near(fenway_left, 310.0) && near(fenway_right, 302.0),
+        "the Pesky pole"
+    );
     assert!(near(distance_ft("CHC", 0.0), 400.0));
     assert!(near(distance_ft("COL", 0.0), 415.0));
     assert!(near(lines("SF").1, 309.0));
@@ -106,7 +116,11 @@ fn famous_walls_stand_as_high_as_they_are_known_to() {
 #[test]
 fn coors_field_is_a_mile_high_and_parks_face_their_own_way() {
     let coors = park("COL");
-    assert!((coors.elevation / FOOT - 5200.0).abs() < 50.0, "{}", coors.elevation);
+    assert!(
+        (coors.elevation / FOOT - 5200.0).abs() < 50.0,
+        "{}",
+        coors.elevation
+    );
     assert!((coors.elevation - 1580.0).abs() < 15.0);
     for p in park::bundled() {
         assert!((-10.0..2200.0).contains(&p.elevation), "{}", p.code);
@@ -155,12 +169,18 @@ fn one_parks_profile_in_feet_steps_at_the_monster() {
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.starts_with("BOS Fenway Park\n"), "{text}");
-    assert!(text.contains("direction (°)  distance (ft)  height (ft)"), "{text}");
+    assert!(
+        text.contains("direction (°)  distance (ft)  height (ft)"),
+        "{text}"
+    );
     let rows: Vec<Vec<f64>> = text
         .lines()
         .skip_while(|l| !l.starts_with("direction"))
         .filter_map(|l| {
-            let v: Vec<f64> = l.split_whitespace().filter_map(|w| w.parse().ok()).collect();
+            let v: Vec<f64> = l
+                .split_whitespace()
+                .filter_map(|w| w.parse().ok())
+                .collect();
             (v.len() == 3).then_some(v)
         })
         .collect();
@@ -169,7 +189,10 @@ fn one_parks_profile_in_feet_steps_at_the_monster() {
     assert_eq!(rows.last().unwrap()[0], 45.0);
     // The step off the Monster: two rows at one direction, 37 ft then lower.
     let step = rows.windows(2).find(|w| w[0][0] == w[1][0]).unwrap();
-    assert!((step[0][2] - 37.0).abs() < 0.1 && step[1][2] < 20.0, "{step:?}");
+    assert!(
+        (step[0][2] - 37.0).abs() < 0.1 && step[1][2] < 20.0,
+        "{step:?}"
+    );
 }
 
 #[test]
@@ -179,7 +202,10 @@ fn an_unknown_code_is_one_line_naming_it_and_the_codes() {
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(err.contains("\"XYZ\"") && err.contains("AZ (ARI)") && err.contains("WSH"), "{err}");
+    assert!(
+        err.contains("\"XYZ\"") && err.contains("AZ (ARI)") && err.contains("WSH"),
+        "{err}"
+    );
 }
 
 const MY_PARK: &str = r#"
@@ -205,7 +231,10 @@ fn a_users_park_file_hides_the_bundled_park_of_its_code() {
     assert_eq!(json["name"], "Backyard");
     assert_eq!(json["fence"][1]["distance"].as_f64(), Some(70.0));
     let list = String::from_utf8(homerun(dir.path(), &["parks"]).stdout).unwrap();
-    assert!(list.contains("Backyard") && !list.contains("Fenway"), "{list}");
+    assert!(
+        list.contains("Backyard") && !list.contains("Fenway"),
+        "{list}"
+    );
     assert!(list.contains("Yours: BOS from"), "{list}");
 }
 
@@ -232,7 +261,10 @@ fn a_bad_users_park_file_is_one_clear_line() {
 fn the_outline_is_an_svg_with_every_wall_height_in_its_legend() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("fenway.svg");
-    let out = homerun(dir.path(), &["parks", "BOS", "--svg", file.to_str().unwrap()]);
+    let out = homerun(
+        dir.path(),
+        &["parks", "BOS", "--svg", file.to_str().unwrap()],
+    );
     assert!(out.status.success(), "{out:?}");
     let svg = std::fs::read_to_string(&file).unwrap();
     let doc = roxmltree::Document::parse(&svg).unwrap();
@@ -241,13 +273,18 @@ fn the_outline_is_an_svg_with_every_wall_height_in_its_legend() {
         .filter_map(|n| n.text())
         .map(str::trim)
         .collect();
-    assert!(texts.iter().any(|t| t.starts_with("Fenway Park (BOS)")), "{texts:?}");
+    assert!(
+        texts.iter().any(|t| t.starts_with("Fenway Park (BOS)")),
+        "{texts:?}"
+    );
     for wall in ["wall 1.5 m high", "wall 5.5 m high", "wall 11.3 m high"] {
         assert!(texts.contains(&wall), "{wall}: {texts:?}");
     }
     // --svg needs a park.
     assert_eq!(
-        homerun(dir.path(), &["parks", "--svg", "x.svg"]).status.code(),
+        homerun(dir.path(), &["parks", "--svg", "x.svg"])
+            .status
+            .code(),
         Some(2)
     );
 }

@@ -335,9 +335,7 @@ pub fn presets_dir(cli: &Cli) -> Option<PathBuf> {
 
 /// The user's parks folder: `--parks-dir` or the XDG default.
 pub fn parks_dir(cli: &Cli) -> Option<PathBuf> {
-    cli.parks_dir
-        .clone()
-        .or_else(preset::parks::user_dir)
+    cli.parks_dir.clone().or_else(preset::parks::user_dir)
 }
 
 /// The explorer's preset and folder, checked as every command's are.

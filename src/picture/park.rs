@@ -16,9 +16,8 @@ const MARGIN: u32 = 14;
 pub fn park_svg(park: &Park) -> Result<String, PictureError> {
     let points = park.fence.points();
     // Ground coordinates: across (toward right field) and out (toward centre).
-    let ground = |direction: f64, distance: f64| {
-        (distance * direction.sin(), distance * direction.cos())
-    };
+    let ground =
+        |direction: f64, distance: f64| (distance * direction.sin(), distance * direction.cos());
     let reach = points.iter().map(|p| p.distance).fold(1.0, f64::max) * 1.06;
     let half = reach * FOUL_LINE.sin();
     let (x_range, y_range) = (-half..half, -0.08 * reach..reach);
@@ -33,7 +32,9 @@ pub fn park_svg(park: &Park) -> Result<String, PictureError> {
     let mut svg = String::new();
     {
         let plot = SIZE - LABELS - 2 * MARGIN;
-        let height = TITLE + LABELS + 2 * MARGIN
+        let height = TITLE
+            + LABELS
+            + 2 * MARGIN
             + (f64::from(plot) * (y_range.end - y_range.start) / (2.0 * half)).round() as u32;
         let root = SVGBackend::with_string(&mut svg, (SIZE, height)).into_drawing_area();
         root.fill(&WHITE).map_err(drawn)?;
@@ -66,9 +67,11 @@ pub fn park_svg(park: &Park) -> Result<String, PictureError> {
             ground(FOUL_LINE, right.distance),
         ];
         chart
-            .draw_series(poles.iter().map(|&pole| {
-                PathElement::new(vec![(0.0, 0.0), pole], NOW.stroke_width(1))
-            }))
+            .draw_series(
+                poles
+                    .iter()
+                    .map(|&pole| PathElement::new(vec![(0.0, 0.0), pole], NOW.stroke_width(1))),
+            )
             .map_err(drawn)?;
         for (k, &wall) in heights.iter().enumerate() {
             let color = series_color(k);

@@ -116,7 +116,10 @@ mod tests {
     #[test]
     fn a_broken_park_file_is_one_line_naming_it() {
         let dir = tempfile::tempdir().unwrap();
-        let bad = MINE.replace("distance = 80, height = 2 },\n]", "distance = 80, height = -2 },\n]");
+        let bad = MINE.replace(
+            "distance = 80, height = 2 },\n]",
+            "distance = 80, height = -2 },\n]",
+        );
         std::fs::write(dir.path().join("bad.toml"), bad).unwrap();
         let e = all(Some(dir.path())).unwrap_err().to_string();
         assert!(

@@ -257,8 +257,8 @@ mod tests {
     fn refuses_what_is_not_a_fence() {
         let e = Fence::new(vec![point(-FOUL_LINE, 100.0, 3.0)]).unwrap_err();
         assert_eq!(e, FenceError::TooFew(1));
-        let e = Fence::new(vec![point(-FOUL_LINE, 100.0, 3.0), point(0.5, 100.0, 3.0)])
-            .unwrap_err();
+        let e =
+            Fence::new(vec![point(-FOUL_LINE, 100.0, 3.0), point(0.5, 100.0, 3.0)]).unwrap_err();
         assert!(e.to_string().contains("right-field line"), "{e}");
         let e = Fence::new(vec![
             point(-FOUL_LINE, 100.0, 3.0),

@@ -231,7 +231,10 @@ fence = [
         let parks = parse(ONE).unwrap();
         assert_eq!(parks.len(), 1);
         let park = &parks[0];
-        assert_eq!((park.code.as_str(), park.aliases[0].as_str()), ("XYZ", "XY1"));
+        assert_eq!(
+            (park.code.as_str(), park.aliases[0].as_str()),
+            ("XYZ", "XY1")
+        );
         assert_eq!(park.published, None);
         assert_eq!(park.fence.distance_at(0.3), Some(100.0));
     }
@@ -243,17 +246,29 @@ fence = [
             parse(&bad).unwrap_err().to_string(),
             "park XYZ: elevation = 9000: must be a finite number in [-500, 5000] m"
         );
-        let bad = ONE.replace("distance = 100, height = 3 },\n]", "distance = 0, height = 3 },\n]");
+        let bad = ONE.replace(
+            "distance = 100, height = 3 },\n]",
+            "distance = 0, height = 3 },\n]",
+        );
         assert_eq!(
             parse(&bad).unwrap_err().to_string(),
             "park XYZ: fence point 1: distance = 0: must be a finite number in (0, 1000] m"
         );
         let bad = ONE.replace("name =", "nmae =");
         let e = parse(&bad).unwrap_err().to_string();
-        assert!(e.starts_with("malformed park file: unknown field `nmae`"), "{e}");
+        assert!(
+            e.starts_with("malformed park file: unknown field `nmae`"),
+            "{e}"
+        );
         assert!(!e.contains('\n'), "{e}");
         assert_eq!(parse("").unwrap_err(), ParkError::Empty);
-        let twice = format!("{ONE}{}", ONE.replace("\"xyz\"", "\"XY1\"").replace("xy1\"]", "q\"]"));
-        assert!(matches!(parse(&twice).unwrap_err(), ParkError::Twice { .. }));
+        let twice = format!(
+            "{ONE}{}",
+            ONE.replace("\"xyz\"", "\"XY1\"").replace("xy1\"]", "q\"]")
+        );
+        assert!(matches!(
+            parse(&twice).unwrap_err(),
+            ParkError::Twice { .. }
+        ));
     }
 }
