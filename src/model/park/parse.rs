@@ -138,8 +138,13 @@ impl Entry {
                 ));
             }
         }
-        if self.name.trim().is_empty() {
-            return Err(field("name", "\"\"".into(), "a name is needed"));
+        let name = self.name.trim();
+        if name.is_empty() || name.chars().count() > 80 || name.chars().any(char::is_control) {
+            return Err(field(
+                "name",
+                format!("{:?}", self.name.chars().take(80).collect::<String>()),
+                "1 to 80 characters, none of them control characters",
+            ));
         }
         let (low, high) = ELEVATION;
         if !(self.elevation.is_finite() && (low..=high).contains(&self.elevation)) {
@@ -262,6 +267,12 @@ fence = [
         );
         assert!(!e.contains('\n'), "{e}");
         assert_eq!(parse("").unwrap_err(), ParkError::Empty);
+        let bad = ONE.replace("Test Field", "Test\\u001b[2JField");
+        let e = parse(&bad).unwrap_err().to_string();
+        assert!(
+            e.starts_with("park XYZ: name = \"Test\\u{1b}[2JField\": 1 to 80"),
+            "{e}"
+        );
         let twice = format!(
             "{ONE}{}",
             ONE.replace("\"xyz\"", "\"XY1\"").replace("xy1\"]", "q\"]")
