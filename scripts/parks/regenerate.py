@@ -250,6 +250,8 @@ def main():
             home = homes[team]
             profile = wall(outline, home, scale)
             raw = tuple(at(profile, d) for d in (-POLE, 0.0, POLE))
+            # Straightaway centre as a vertex, so that it is met exactly.
+            profile = sorted(set(profile) | {(0.0, raw[1])})
             # 4. Anchor: a factor per side, linear in direction.
             fl, fc, fr = pub["lf"] / raw[0], pub["cf"] / raw[1], pub["rf"] / raw[2]
             profile = [
