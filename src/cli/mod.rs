@@ -9,6 +9,7 @@ mod figure_units;
 mod fly;
 mod hit;
 mod optimize;
+mod parks;
 mod presets;
 mod progress;
 mod scene;
@@ -54,6 +55,9 @@ pub struct Cli {
     /// Folder for the user's own presets (default: $XDG_CONFIG_HOME/homerun/presets).
     #[arg(long, global = true, value_name = "DIR")]
     pub presets_dir: Option<PathBuf>,
+    /// Folder for the user's own parks (default: $XDG_CONFIG_HOME/homerun/parks).
+    #[arg(long, global = true, value_name = "DIR")]
+    pub parks_dir: Option<PathBuf>,
     /// Units printed: si (the default) or imperial (ft, mph, rpm, °); see `homerun --help`.
     #[arg(
         long,
@@ -185,6 +189,19 @@ pub enum Command {
     },
     /// The presets and what they are.
     Presets,
+    /// The ballparks: code, name, elevation, distances and tallest wall; with
+    /// CODE, that park's fence every 5° and at each change of wall height.
+    Parks {
+        /// A park's code, as Baseball Savant's home_team (e.g. BOS).
+        code: Option<String>,
+        /// Print JSON (SI: metres, radians from centre field, + toward right field).
+        #[arg(long)]
+        json: bool,
+        /// Draw the park's outline with its wall heights as SVG to FILE instead
+        /// (atomically; "wrote FILE" on stderr).
+        #[arg(long, value_name = "FILE", requires = "code", conflicts_with = "json")]
+        svg: Option<PathBuf>,
+    },
     /// The data behind one of the paper's figures (3–14), to plot beside it.
     Figure {
         /// The figure's number in the paper: 3 to 14.
@@ -307,6 +324,8 @@ pub enum UsageError {
     LaunchSwept(&'static str),
     #[error("--batch {input}: {message}")]
     Batch { input: String, message: String },
+    #[error("no park with code {code:?}; the parks: {accepted}")]
+    UnknownPark { code: String, accepted: String },
 }
 
 /// What is wrong with an A..B window.
@@ -327,6 +346,11 @@ pub enum WindowFault {
 /// The user's preset folder: `--presets-dir` or the XDG default.
 pub fn presets_dir(cli: &Cli) -> Option<PathBuf> {
     cli.presets_dir.clone().or_else(preset::user_dir)
+}
+
+/// The user's parks folder: `--parks-dir` or the XDG default.
+pub fn parks_dir(cli: &Cli) -> Option<PathBuf> {
+    cli.parks_dir.clone().or_else(preset::parks::user_dir)
 }
 
 /// The explorer's preset and folder, checked as every command's are.
@@ -400,7 +424,8 @@ fn svg_target(command: &Command) -> Option<&std::path::Path> {
         Command::Trajectory { svg, .. }
         | Command::Surface { svg, .. }
         | Command::Figure { svg, .. }
-        | Command::Bench { svg, .. } => svg.as_deref(),
+        | Command::Bench { svg, .. }
+        | Command::Parks { svg, .. } => svg.as_deref(),
         _ => None,
     }
 }
@@ -458,6 +483,17 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             surface::surface(&preset.scene, cells, grid, Format::new(*json, *csv), shown)
         }
         Command::Presets => Ok(presets::presets(preset::check_dir(dir)?)),
+        Command::Parks { code, json, svg } => {
+            let all = preset::parks::all(parks_dir(cli).as_deref())?;
+            let Some(code) = code else {
+                return Ok(parks::list(&all, *json, shown));
+            };
+            let park = all.find(code).ok_or_else(|| parks::unknown(code, &all))?;
+            if svg.is_some() {
+                return Ok(crate::picture::park_svg(park)?);
+            }
+            Ok(parks::profile(park, *json, shown))
+        }
         Command::Keys => Ok(hit::keys(shown)),
         Command::Trajectory {
             scene,

@@ -19,6 +19,7 @@ pub mod frame;
 pub mod impact;
 pub mod keys;
 pub mod launch;
+pub mod park;
 pub mod pitch;
 pub mod scene;
 

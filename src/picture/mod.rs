@@ -9,11 +9,13 @@
 
 mod bench;
 mod figure;
+mod park;
 mod surface;
 mod trajectory;
 
 pub use bench::bench_svg;
 pub use figure::{figure_svg, table_figure_svg};
+pub use park::park_svg;
 pub use surface::{SurfacePicture, surface_svg};
 pub use trajectory::{FlightPath, TrajectoryPicture, trajectory_svg};
 

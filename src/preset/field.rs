@@ -60,3 +60,35 @@ impl FieldKey {
         }
     }
 }
+
+impl Fence {
+    /// The preset's fence as a park's: the same distance and height in every
+    /// fair direction.
+    pub fn uniform(self) -> crate::model::park::Fence {
+        crate::model::park::Fence::uniform(self.distance, self.height)
+    }
+
+    /// The generic fence: `field.fence_distance` and `field.fence_height`'s
+    /// defaults (121.9 m, 3.0 m), what a flight is measured against when no
+    /// park is chosen.
+    pub fn generic() -> Fence {
+        Fence {
+            distance: FIELD_KEYS[0].default,
+            height: FIELD_KEYS[1].default,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_generic_fence_is_400_feet_out_and_3_metres_high_everywhere() {
+        let fence = Fence::generic().uniform();
+        for direction in [-0.785, 0.0, 0.4] {
+            let at = fence.at(direction).unwrap();
+            assert_eq!((at.distance, at.height), (121.9, 3.0));
+        }
+    }
+}

@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 mod escape;
 mod field;
 mod file;
+pub mod parks;
 
 pub use escape::{cut, escape_cut, escape_for_terminal};
 pub use field::{FIELD_KEYS, FieldKey};
@@ -107,6 +108,9 @@ pub enum PresetError {
     Binary { path: String, offset: usize },
     #[error("{path}: not UTF-8 text (an invalid byte at byte {offset})")]
     NotUtf8 { path: String, offset: usize },
+    /// A park file that is not a list of parks (the message is one line).
+    #[error("{path}: {message}")]
+    Park { path: String, message: String },
     /// The presets folder exists but is not a folder.
     #[error("{path}: not a folder ({kind}), so it cannot hold presets")]
     NotAFolder { path: String, kind: FileKind },

@@ -1,0 +1,290 @@
+//! A park's outfield fence from one foul line to the other: its distance
+//! from home plate and its height, by direction (DESIGN.md, "Parks").
+
+use std::f64::consts::FRAC_PI_4;
+
+/// The foul lines' directions: ±π/4 from the centre-field line.
+pub const FOUL_LINE: f64 = FRAC_PI_4;
+
+/// One point of a fence.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct FencePoint {
+    /// Direction from home plate (rad from the centre-field line, positive
+    /// toward right field).
+    pub direction: f64,
+    /// Horizontal distance from home plate to the wall (m).
+    pub distance: f64,
+    /// The wall's height (m).
+    pub height: f64,
+}
+
+/// The fence where a direction meets it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FenceAt {
+    /// Horizontal distance from home plate (m).
+    pub distance: f64,
+    /// Height of the wall (m).
+    pub height: f64,
+}
+
+/// A fence from foul line to foul line: points sorted by direction, the
+/// first at −π/4 and the last at +π/4, distance and height linear between
+/// them. A change of height is a step: two points at the same direction,
+/// the left one's height before it, the right one's from it on.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Fence {
+    points: Vec<FencePoint>,
+}
+
+/// Why a list of points is not a fence (the parser names the park and field).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum FenceError {
+    #[error("has {0} points; a fence needs at least 2, from -π/4 to +π/4")]
+    TooFew(usize),
+    #[error("point {index}: {field} = {value}: must be a finite number in {accepted}")]
+    OutOfRange {
+        index: usize,
+        field: &'static str,
+        value: f64,
+        accepted: &'static str,
+    },
+    #[error(
+        "point {index}: direction {direction} comes before the point ahead of it ({previous}); directions must not decrease"
+    )]
+    NotSorted {
+        index: usize,
+        direction: f64,
+        previous: f64,
+    },
+    #[error(
+        "point {index}: three points at direction {direction}; a step in height is two points at one direction"
+    )]
+    ThreeAtOnce { index: usize, direction: f64 },
+    #[error(
+        "runs from {first} to {last} rad; it must run from the left-field line (-0.7854) to the right-field line (0.7854)"
+    )]
+    NotFoulLineToFoulLine { first: f64, last: f64 },
+}
+
+/// How close to ±π/4 the end points must be (rad): the data files give
+/// directions to five decimals.
+const END_TOLERANCE: f64 = 1e-4;
+/// Largest distance and height accepted (m), as for `field.fence_distance`.
+const MAX_DISTANCE: f64 = 1000.0;
+const MAX_HEIGHT: f64 = 100.0;
+
+impl Fence {
+    /// A fence from points, checked: at least two, each distance in
+    /// (0, 1000] m and height in (0, 100] m, directions not decreasing (at
+    /// most two at one direction) from −π/4 to +π/4. The end points are
+    /// moved onto the foul lines exactly.
+    pub fn new(mut points: Vec<FencePoint>) -> Result<Fence, FenceError> {
+        if points.len() < 2 {
+            return Err(FenceError::TooFew(points.len()));
+        }
+        for (index, p) in points.iter().enumerate() {
+            let check = |field, value: f64, max: f64, accepted| {
+                if value.is_finite() && value > 0.0 && value <= max {
+                    Ok(())
+                } else {
+                    Err(FenceError::OutOfRange {
+                        index,
+                        field,
+                        value,
+                        accepted,
+                    })
+                }
+            };
+            if !p.direction.is_finite() {
+                return Err(FenceError::OutOfRange {
+                    index,
+                    field: "direction",
+                    value: p.direction,
+                    accepted: "[-0.7854, 0.7854] rad",
+                });
+            }
+            check("distance", p.distance, MAX_DISTANCE, "(0, 1000] m")?;
+            check("height", p.height, MAX_HEIGHT, "(0, 100] m")?;
+        }
+        for index in 1..points.len() {
+            let (previous, direction) = (points[index - 1].direction, points[index].direction);
+            if direction < previous {
+                return Err(FenceError::NotSorted {
+                    index,
+                    direction,
+                    previous,
+                });
+            }
+            if index >= 2 && points[index - 2].direction == direction {
+                return Err(FenceError::ThreeAtOnce { index, direction });
+            }
+        }
+        let (first, last) = (points[0].direction, points[points.len() - 1].direction);
+        if (first + FOUL_LINE).abs() > END_TOLERANCE || (last - FOUL_LINE).abs() > END_TOLERANCE {
+            return Err(FenceError::NotFoulLineToFoulLine { first, last });
+        }
+        let n = points.len();
+        points[0].direction = -FOUL_LINE;
+        points[n - 1].direction = FOUL_LINE;
+        Ok(Fence { points })
+    }
+
+    /// The same distance and height in every fair direction: the generic
+    /// fence of a preset's `field.fence_distance` and `field.fence_height`.
+    pub fn uniform(distance: f64, height: f64) -> Fence {
+        let point = |direction| FencePoint {
+            direction,
+            distance,
+            height,
+        };
+        Fence {
+            points: vec![point(-FOUL_LINE), point(FOUL_LINE)],
+        }
+    }
+
+    /// The points, sorted by direction.
+    pub fn points(&self) -> &[FencePoint] {
+        &self.points
+    }
+
+    /// The fence in `direction` (rad from the centre-field line, + toward
+    /// right field), or `None` outside the foul lines (foul) or for NaN.
+    /// A binary search and one interpolation: no allocation.
+    pub fn at(&self, direction: f64) -> Option<FenceAt> {
+        if !(-FOUL_LINE..=FOUL_LINE).contains(&direction) {
+            return None;
+        }
+        let points = &self.points;
+        // The first point past `direction`; at a step, the right-hand side.
+        let after = points
+            .partition_point(|p| p.direction <= direction)
+            .clamp(1, points.len() - 1);
+        let (a, b) = (points[after - 1], points[after]);
+        let span = b.direction - a.direction;
+        let t = if span > 0.0 {
+            ((direction - a.direction) / span).clamp(0.0, 1.0)
+        } else {
+            1.0
+        };
+        Some(FenceAt {
+            distance: a.distance + t * (b.distance - a.distance),
+            height: a.height + t * (b.height - a.height),
+        })
+    }
+
+    /// The wall's distance from home plate in `direction` (m); `None` foul.
+    pub fn distance_at(&self, direction: f64) -> Option<f64> {
+        self.at(direction).map(|f| f.distance)
+    }
+
+    /// The wall's height in `direction` (m); `None` foul.
+    pub fn height_at(&self, direction: f64) -> Option<f64> {
+        self.at(direction).map(|f| f.height)
+    }
+
+    /// How far a point on the ground (x toward centre field, z toward right
+    /// field, m from home plate) lies beyond the wall in its direction:
+    /// positive past it, negative short of it; `None` if foul. Its root in a
+    /// flight is where the ground track crosses the fence.
+    pub fn beyond(&self, x: f64, z: f64) -> Option<f64> {
+        self.distance_at(z.atan2(x)).map(|d| x.hypot(z) - d)
+    }
+
+    /// The fence at the left-field line, straightaway centre and the
+    /// right-field line.
+    pub fn lines_and_center(&self) -> [FenceAt; 3] {
+        let at = |d| self.at(d).expect("within the foul lines");
+        [at(-FOUL_LINE), at(0.0), at(FOUL_LINE)]
+    }
+
+    /// The tallest wall (m).
+    pub fn tallest(&self) -> f64 {
+        self.points.iter().map(|p| p.height).fold(0.0, f64::max)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn point(direction: f64, distance: f64, height: f64) -> FencePoint {
+        FencePoint {
+            direction,
+            distance,
+            height,
+        }
+    }
+
+    #[test]
+    fn interpolates_between_points_and_steps_at_a_corner() {
+        let fence = Fence::new(vec![
+            point(-FOUL_LINE, 100.0, 10.0),
+            point(0.0, 120.0, 10.0),
+            point(0.0, 120.0, 2.0),
+            point(FOUL_LINE, 100.0, 2.0),
+        ])
+        .unwrap();
+        let half_left = fence.at(-FOUL_LINE / 2.0).unwrap();
+        assert!((half_left.distance - 110.0).abs() < 1e-12);
+        assert_eq!(half_left.height, 10.0);
+        // At the step the right-hand wall; just left of it the left one.
+        assert_eq!(fence.height_at(0.0), Some(2.0));
+        assert_eq!(fence.height_at(-1e-9), Some(10.0));
+        assert_eq!(fence.distance_at(FOUL_LINE), Some(100.0));
+        assert_eq!(fence.distance_at(FOUL_LINE + 1e-9), None);
+        assert_eq!(fence.distance_at(f64::NAN), None);
+        // 130 m straight to centre is 10 m past a 120 m wall.
+        assert!((fence.beyond(130.0, 0.0).unwrap() - 10.0).abs() < 1e-12);
+        assert_eq!(fence.beyond(10.0, -20.0), None, "foul");
+    }
+
+    #[test]
+    fn uniform_fence_is_the_same_everywhere() {
+        let fence = Fence::uniform(121.9, 3.0);
+        for d in [-FOUL_LINE, -0.3, 0.0, 0.5, FOUL_LINE] {
+            assert_eq!(
+                fence.at(d),
+                Some(FenceAt {
+                    distance: 121.9,
+                    height: 3.0
+                })
+            );
+        }
+        assert_eq!(fence.tallest(), 3.0);
+    }
+
+    #[test]
+    fn refuses_what_is_not_a_fence() {
+        let e = Fence::new(vec![point(-FOUL_LINE, 100.0, 3.0)]).unwrap_err();
+        assert_eq!(e, FenceError::TooFew(1));
+        let e =
+            Fence::new(vec![point(-FOUL_LINE, 100.0, 3.0), point(0.5, 100.0, 3.0)]).unwrap_err();
+        assert!(e.to_string().contains("right-field line"), "{e}");
+        let e = Fence::new(vec![
+            point(-FOUL_LINE, 100.0, 3.0),
+            point(FOUL_LINE, -5.0, 3.0),
+        ])
+        .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "point 1: distance = -5: must be a finite number in (0, 1000] m"
+        );
+        let e = Fence::new(vec![
+            point(-FOUL_LINE, 100.0, 3.0),
+            point(0.2, 100.0, 3.0),
+            point(0.1, 100.0, 3.0),
+            point(FOUL_LINE, 100.0, 3.0),
+        ])
+        .unwrap_err();
+        assert!(matches!(e, FenceError::NotSorted { index: 2, .. }), "{e}");
+        let e = Fence::new(vec![
+            point(-FOUL_LINE, 100.0, 3.0),
+            point(0.0, 100.0, 3.0),
+            point(0.0, 100.0, 4.0),
+            point(0.0, 100.0, 5.0),
+            point(FOUL_LINE, 100.0, 3.0),
+        ])
+        .unwrap_err();
+        assert!(matches!(e, FenceError::ThreeAtOnce { index: 3, .. }), "{e}");
+    }
+}

@@ -1,0 +1,285 @@
+//! Parks from the text of a park file (`data/parks.toml`'s format, see
+//! docs/parks.md): one `[[park]]` table per park, SI units.
+
+use serde::Deserialize;
+
+use super::fence::{Fence, FenceError, FencePoint};
+use super::{Park, ParkDimensions};
+
+/// Why a park file's text is not a list of parks. The message is one line;
+/// the caller names the file.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ParkError {
+    #[error("malformed park file: {message}")]
+    Syntax { message: String },
+    #[error("no [[park]] table: a park file holds one or more")]
+    Empty,
+    #[error("park {code}: {field} = {value}: {expected}")]
+    Field {
+        code: String,
+        field: &'static str,
+        value: String,
+        expected: &'static str,
+    },
+    #[error("park {code}: fence {source}")]
+    Fence { code: String, source: FenceError },
+    #[error("park {code} is given twice (as {first} and {second})")]
+    Twice {
+        code: String,
+        first: String,
+        second: String,
+    },
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct File {
+    #[serde(default)]
+    park: Vec<Entry>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Entry {
+    code: String,
+    #[serde(default)]
+    aliases: Vec<String>,
+    name: String,
+    elevation: f64,
+    center_field_bearing: f64,
+    #[serde(default)]
+    published: Option<Published>,
+    fence: Vec<Point>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Published {
+    left_line: f64,
+    center: f64,
+    right_line: f64,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Point {
+    direction: f64,
+    distance: f64,
+    height: f64,
+}
+
+/// Elevations accepted (m): the Dead Sea's shore to well above any park
+/// (the same range as `environment.elevation`).
+const ELEVATION: (f64, f64) = (-500.0, 5000.0);
+
+/// The parks in `text`, each checked: a code of 1 to 8 letters or digits
+/// (and its aliases), a name, an elevation in [-500, 5000] m, a bearing in
+/// [0, 360)°, published distances in (0, 1000] m if given, and a fence
+/// ([`Fence::new`]). Codes are compared without case.
+pub fn parse(text: &str) -> Result<Vec<Park>, ParkError> {
+    let file: File = toml::from_str(text).map_err(|e| ParkError::Syntax {
+        message: one_line(&e),
+    })?;
+    if file.park.is_empty() {
+        return Err(ParkError::Empty);
+    }
+    let mut parks: Vec<Park> = Vec::with_capacity(file.park.len());
+    for entry in file.park {
+        let park = entry.checked()?;
+        for code in park.codes() {
+            if let Some(other) = parks.iter().find(|p| p.answers_to(code)) {
+                return Err(ParkError::Twice {
+                    code: code.to_owned(),
+                    first: other.code.clone(),
+                    second: park.code.clone(),
+                });
+            }
+        }
+        parks.push(park);
+    }
+    Ok(parks)
+}
+
+/// The toml crate's message with the line it points at, on one line.
+fn one_line(error: &toml::de::Error) -> String {
+    let message = error.message().trim().replace('\n', " ");
+    match error.span() {
+        Some(span) => format!("{message} (at byte {})", span.start),
+        None => message,
+    }
+}
+
+fn is_code(code: &str) -> bool {
+    (1..=8).contains(&code.len()) && code.chars().all(|c| c.is_ascii_alphanumeric())
+}
+
+impl Entry {
+    fn checked(self) -> Result<Park, ParkError> {
+        let code = self.code.to_ascii_uppercase();
+        let field = |field, value: String, expected| ParkError::Field {
+            code: code.clone(),
+            field,
+            value,
+            expected,
+        };
+        if !is_code(&self.code) {
+            return Err(field(
+                "code",
+                format!("{:?}", self.code),
+                "1 to 8 letters or digits, as Baseball Savant's home_team (e.g. \"BOS\")",
+            ));
+        }
+        for alias in &self.aliases {
+            if !is_code(alias) {
+                return Err(field(
+                    "aliases",
+                    format!("{alias:?}"),
+                    "each 1 to 8 letters or digits",
+                ));
+            }
+        }
+        let name = self.name.trim();
+        if name.is_empty() || name.chars().count() > 80 || name.chars().any(char::is_control) {
+            return Err(field(
+                "name",
+                format!("{:?}", self.name.chars().take(80).collect::<String>()),
+                "1 to 80 characters, none of them control characters",
+            ));
+        }
+        let (low, high) = ELEVATION;
+        if !(self.elevation.is_finite() && (low..=high).contains(&self.elevation)) {
+            return Err(field(
+                "elevation",
+                self.elevation.to_string(),
+                "must be a finite number in [-500, 5000] m",
+            ));
+        }
+        let bearing = self.center_field_bearing;
+        if !(bearing.is_finite() && (0.0..360.0).contains(&bearing)) {
+            return Err(field(
+                "center_field_bearing",
+                bearing.to_string(),
+                "must be a finite number in [0, 360) degrees clockwise from true north",
+            ));
+        }
+        let published = match self.published {
+            None => None,
+            Some(p) => {
+                for (name, value) in [
+                    ("published.left_line", p.left_line),
+                    ("published.center", p.center),
+                    ("published.right_line", p.right_line),
+                ] {
+                    if !(value.is_finite() && value > 0.0 && value <= 1000.0) {
+                        return Err(field(
+                            name,
+                            value.to_string(),
+                            "must be a finite number in (0, 1000] m",
+                        ));
+                    }
+                }
+                Some(ParkDimensions {
+                    left_line: p.left_line,
+                    center: p.center,
+                    right_line: p.right_line,
+                })
+            }
+        };
+        let points = self
+            .fence
+            .into_iter()
+            .map(|p| FencePoint {
+                direction: p.direction,
+                distance: p.distance,
+                height: p.height,
+            })
+            .collect();
+        let fence = Fence::new(points).map_err(|source| ParkError::Fence {
+            code: code.clone(),
+            source,
+        })?;
+        Ok(Park {
+            code,
+            aliases: self
+                .aliases
+                .iter()
+                .map(|a| a.to_ascii_uppercase())
+                .collect(),
+            name: self.name.trim().to_owned(),
+            elevation: self.elevation,
+            center_field_bearing: bearing,
+            published,
+            fence,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const ONE: &str = r#"
+[[park]]
+code = "xyz"
+aliases = ["xy1"]
+name = "Test Field"
+elevation = 100
+center_field_bearing = 90
+fence = [
+  { direction = -0.7854, distance = 100, height = 3 },
+  { direction = 0.7854, distance = 100, height = 3 },
+]
+"#;
+
+    #[test]
+    fn a_minimal_park_parses_with_codes_in_capitals() {
+        let parks = parse(ONE).unwrap();
+        assert_eq!(parks.len(), 1);
+        let park = &parks[0];
+        assert_eq!(
+            (park.code.as_str(), park.aliases[0].as_str()),
+            ("XYZ", "XY1")
+        );
+        assert_eq!(park.published, None);
+        assert_eq!(park.fence.distance_at(0.3), Some(100.0));
+    }
+
+    #[test]
+    fn errors_name_the_park_and_the_field() {
+        let bad = ONE.replace("elevation = 100", "elevation = 9000");
+        assert_eq!(
+            parse(&bad).unwrap_err().to_string(),
+            "park XYZ: elevation = 9000: must be a finite number in [-500, 5000] m"
+        );
+        let bad = ONE.replace(
+            "distance = 100, height = 3 },\n]",
+            "distance = 0, height = 3 },\n]",
+        );
+        assert_eq!(
+            parse(&bad).unwrap_err().to_string(),
+            "park XYZ: fence point 1: distance = 0: must be a finite number in (0, 1000] m"
+        );
+        let bad = ONE.replace("name =", "nmae =");
+        let e = parse(&bad).unwrap_err().to_string();
+        assert!(
+            e.starts_with("malformed park file: unknown field `nmae`"),
+            "{e}"
+        );
+        assert!(!e.contains('\n'), "{e}");
+        assert_eq!(parse("").unwrap_err(), ParkError::Empty);
+        let bad = ONE.replace("Test Field", "Test\\u001b[2JField");
+        let e = parse(&bad).unwrap_err().to_string();
+        assert!(
+            e.starts_with("park XYZ: name = \"Test\\u{1b}[2JField\": 1 to 80"),
+            "{e}"
+        );
+        let twice = format!(
+            "{ONE}{}",
+            ONE.replace("\"xyz\"", "\"XY1\"").replace("xy1\"]", "q\"]")
+        );
+        assert!(matches!(
+            parse(&twice).unwrap_err(),
+            ParkError::Twice { .. }
+        ));
+    }
+}

@@ -1,0 +1,136 @@
+//! Users' own parks: files of `data/parks.toml`'s format (one or more
+//! `[[park]]` tables) in the parks folder, `$XDG_CONFIG_HOME/homerun/parks`
+//! beside the presets, or `--parks-dir`. Each is read safely
+//! ([`read_text`]); a user's park whose code or alias names a bundled park
+//! hides that park, as a user's preset hides a bundled one.
+
+use std::path::{Path, PathBuf};
+
+use super::file::preset_files;
+use super::{PresetError, escape_cut, read_text, shown};
+use crate::model::park::{self, Park};
+
+/// The user's parks folder: `$XDG_CONFIG_HOME/homerun/parks` (or the
+/// platform's config folder).
+pub fn user_dir() -> Option<PathBuf> {
+    dirs::config_dir().map(|d| d.join("homerun").join("parks"))
+}
+
+/// Every park available, bundled first (less those a user's park hides),
+/// then the user's, with the file each came from.
+#[derive(Clone, Debug, Default)]
+pub struct Parks {
+    pub parks: Vec<Park>,
+    /// The file of each park in `parks`; `None`: bundled.
+    pub files: Vec<Option<PathBuf>>,
+}
+
+impl Parks {
+    /// The park `code` names: by code, then by alias, any case.
+    pub fn find(&self, code: &str) -> Option<&Park> {
+        park::find(&self.parks, code)
+    }
+
+    /// Every code, aliases in parentheses: "AZ (ARI), ATL, …".
+    pub fn codes(&self) -> String {
+        self.parks
+            .iter()
+            .map(|p| match p.aliases.as_slice() {
+                [] => p.code.clone(),
+                aliases => format!("{} ({})", p.code, aliases.join(", ")),
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+/// The bundled parks and the user's from `dir` (every `*.toml` in it, in
+/// name order; a missing folder holds none). A broken file is an error
+/// naming it: a park silently missing would change every count of parks.
+pub fn all(dir: Option<&Path>) -> Result<Parks, PresetError> {
+    let mut user: Vec<(Park, PathBuf)> = Vec::new();
+    if let Some(dir) = dir {
+        for path in preset_files(dir)? {
+            let text = read_text(&path)?;
+            let parks = park::parse(&text).map_err(|e| PresetError::Park {
+                path: shown(&path),
+                message: escape_cut(&e.to_string(), 400),
+            })?;
+            for park in parks {
+                if let Some((other, file)) = user
+                    .iter()
+                    .find(|(o, _)| park.codes().any(|c| o.answers_to(c)))
+                {
+                    return Err(PresetError::Park {
+                        path: shown(&path),
+                        message: format!(
+                            "park {} is also in {} (as {}); keep it in one file",
+                            park.code,
+                            shown(file),
+                            other.code
+                        ),
+                    });
+                }
+                user.push((park, path.clone()));
+            }
+        }
+    }
+    let hidden = |bundled: &Park| {
+        user.iter()
+            .any(|(u, _)| u.codes().any(|c| bundled.answers_to(c)))
+    };
+    let mut out = Parks::default();
+    for p in park::bundled().iter().filter(|p| !hidden(p)) {
+        out.parks.push(p.clone());
+        out.files.push(None);
+    }
+    for (p, file) in user {
+        out.parks.push(p);
+        out.files.push(Some(file));
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MINE: &str = "[[park]]\ncode = \"BOS\"\nname = \"My Fenway\"\nelevation = 6\ncenter_field_bearing = 45\nfence = [\n  { direction = -0.7854, distance = 80, height = 2 },\n  { direction = 0.7854, distance = 80, height = 2 },\n]\n";
+
+    #[test]
+    fn a_user_park_hides_the_bundled_one_of_its_code() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("fenway.toml"), MINE).unwrap();
+        let parks = all(Some(dir.path())).unwrap();
+        assert_eq!(parks.parks.len(), park::bundled().len());
+        let bos = parks.find("bos").unwrap();
+        assert_eq!(bos.name, "My Fenway");
+        assert_eq!(bos.fence.distance_at(0.0), Some(80.0));
+        let index = parks.parks.iter().position(|p| p.code == "BOS").unwrap();
+        assert!(parks.files[index].is_some());
+        // No folder, or a missing one: the bundled parks alone.
+        assert_eq!(all(None).unwrap().parks.len(), 30);
+        assert_eq!(all(Some(&dir.path().join("none"))).unwrap().parks.len(), 30);
+    }
+
+    #[test]
+    fn a_broken_park_file_is_one_line_naming_it() {
+        let dir = tempfile::tempdir().unwrap();
+        let bad = MINE.replace(
+            "distance = 80, height = 2 },\n]",
+            "distance = 80, height = -2 },\n]",
+        );
+        std::fs::write(dir.path().join("bad.toml"), bad).unwrap();
+        let e = all(Some(dir.path())).unwrap_err().to_string();
+        assert!(
+            e.ends_with(
+                "bad.toml: park BOS: fence point 1: height = -2: must be a finite number in (0, 100] m"
+            ),
+            "{e}"
+        );
+        std::fs::write(dir.path().join("bad.toml"), MINE).unwrap();
+        std::fs::write(dir.path().join("copy.toml"), MINE).unwrap();
+        let e = all(Some(dir.path())).unwrap_err().to_string();
+        assert!(e.contains("copy.toml: park BOS is also in"), "{e}");
+    }
+}
