@@ -182,7 +182,7 @@ impl Flight {
 
     /// d/dt of the state at time `t`, on a given piece of the drag curve
     /// (or the one its Reynolds number lies on).
-    #[inline]
+    #[inline(always)]
     pub fn derivative_at(&self, t: f64, state: &State<4>, piece: Option<usize>) -> State<4> {
         let a = self.acceleration_at(t, velocity(state), piece);
         State::<4>::new(state[VELOCITY_X], state[VERTICAL_VELOCITY], a.x, a.y)
@@ -229,7 +229,9 @@ impl Dynamics<4> for Flight {
     const HEIGHT: usize = HEIGHT;
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
 
-    #[inline]
+    // Inlined into the integrator's stages, so that only the acceleration
+    // is a call (its velocity and result travel in registers).
+    #[inline(always)]
     fn derivative(
         &self,
         t: f64,

@@ -138,7 +138,9 @@ impl Dynamics<6> for Flight3d {
     const HEIGHT: usize = HEIGHT;
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
 
-    #[inline]
+    // Inlined into the integrator's stages, so that only the acceleration
+    // is a call (its velocity and result travel in registers).
+    #[inline(always)]
     fn derivative(
         &self,
         t: f64,
