@@ -55,6 +55,7 @@ pub fn why_not_landed(
 mod tests {
     use super::*;
     use crate::analysis::precision::Purpose;
+    use crate::model;
 
     #[test]
     fn a_hovering_ball_is_still_up_and_says_so() {
