@@ -2,7 +2,7 @@
 //! instead, in one place for every command and figure.
 
 use crate::model::flight::{FlightOptions, FlightSummary};
-use crate::model::impact::Impact;
+use crate::model::impact::Collision;
 use crate::model::launch::SceneFlight;
 use crate::model::scene::Scene;
 use crate::numerics::ode;
@@ -10,7 +10,7 @@ use crate::numerics::ode;
 /// The height (m) of `scene`'s ball where its flight ends: 0 on landing, or
 /// where it is at its time or step limit.
 pub fn end_height(scene: &Scene, options: impl Into<FlightOptions>) -> f64 {
-    let impact = Impact::new(scene);
+    let impact = Collision::new(scene);
     let (_, points) = SceneFlight::of_impact(scene, &impact).trajectory(&options.into(), 2);
     points.last().map_or(0.0, |p| p.y)
 }

@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::precision::Purpose;
 use super::study::Grid;
 use crate::model::flight::{FlightOptions, FlightSummary};
-use crate::model::impact::Impact;
+use crate::model::impact::Collision;
 use crate::model::{self, scene::Scene};
 use crate::numerics::nelder_mead::{self, NelderMead};
 
@@ -87,8 +87,10 @@ pub fn lands_at_time_limit(scene: &Scene, flight: &FlightSummary) -> bool {
     if !flight.landed {
         return false;
     }
-    let (_, launch) = model::launch(scene, &Impact::new(scene));
-    flight.flight_time >= TIME_LIMIT_SHARE * launch.time_limit(scene.environment.gravity)
+    let env = scene.environment;
+    let speed = Collision::new(scene).launch_speed();
+    let limit = crate::model::flight::time_limit(speed, env.contact_height, env.gravity);
+    flight.flight_time >= TIME_LIMIT_SHARE * limit
 }
 
 /// Where the search stands.

@@ -11,8 +11,8 @@ use serde::Serialize;
 
 use super::optimum::{OptimizerSettings, Status, optimize_from};
 use crate::model::flight::{FlightOptions, FlightSummary, TrajectoryPoint};
-use crate::model::impact::{Impact, Regime};
-use crate::model::keys::{DRAG_KEY, InputError};
+use crate::model::impact::{Collision, Regime};
+use crate::model::keys::{InputError, TEXT_KEYS};
 use crate::model::launch::SceneFlight;
 use crate::model::{self, scene::Scene};
 
@@ -349,10 +349,8 @@ pub enum SweepError {
         "{0}: the optimiser chooses this one; sweep another key (e.g. bat.speed, pitch.spin, environment.wind)"
     )]
     ControlVariable(&'static str),
-    #[error(
-        "model.drag is not a number and cannot be swept; run once per model with --set model.drag=NAME"
-    )]
-    NotNumeric,
+    #[error("{0} is not a number and cannot be swept; run once per value with --set {0}=NAME")]
+    NotNumeric(&'static str),
     #[error("sweep point {index} of {count}: {source}")]
     Point {
         index: usize,
@@ -364,8 +362,8 @@ pub enum SweepError {
 /// The scenes of a sweep of `key` over `values`, each validated, before any
 /// computation: the first bad value is an error naming the key.
 pub fn sweep_scenes(scene: &Scene, key: &str, values: &[f64]) -> Result<Vec<Scene>, SweepError> {
-    if key == DRAG_KEY {
-        return Err(SweepError::NotNumeric);
+    if let Some(text) = TEXT_KEYS.iter().find(|k| **k == key) {
+        return Err(SweepError::NotNumeric(text));
     }
     let key = Scene::key(key)?;
     if key.name == "bat.undercut" || key.name == "bat.swing_angle" {
@@ -443,7 +441,7 @@ pub fn sweep_observed(
                 start = (optimum.undercut, optimum.swing_angle);
             }
             let best = s.with_swing(optimum.undercut, optimum.swing_angle);
-            let impact = Impact::new(&best);
+            let impact = Collision::new(&best);
             // One flight more per point (~0.1 ms) to say the same as `optimize`.
             let lands_at_readout = optimum.landed
                 && model::simulate(&best, crate::Purpose::Readout)
@@ -514,7 +512,7 @@ pub fn drag_along_flight(
     samples: usize,
     options: impl Into<FlightOptions>,
 ) -> (FlightSummary, Vec<TrajectoryPoint>) {
-    let impact = Impact::new(scene);
+    let impact = Collision::new(scene);
     SceneFlight::of_impact(scene, &impact).trajectory(&options.into(), samples)
 }
 
@@ -551,13 +549,13 @@ pub fn impact_curves(scene: &Scene, frictions: &[f64], undercuts: &[f64]) -> Vec
                 .map(|&undercut| {
                     let mut s = *scene;
                     s.bat.friction = friction;
-                    let impact = Impact::new(&s.with_swing(undercut, scene.bat.swing_angle));
+                    let impact = Collision::new(&s.with_swing(undercut, scene.bat.swing_angle));
                     ImpactPoint {
                         undercut,
                         launch_speed: impact.launch_speed(),
                         launch_spin: impact.launch_spin(),
                         launch_angle: impact.launch_angle(),
-                        regime: impact.regime,
+                        regime: impact.regime(),
                     }
                 })
                 .collect(),

@@ -11,9 +11,11 @@ use crate::analysis::landing;
 use crate::analysis::precision::Purpose;
 use crate::model::aero::{DragModel, LiftModel};
 use crate::model::flight::{FlightSummary, TrajectoryPoint};
-use crate::model::impact::Impact;
-use crate::model::keys::{DRAG_KEY, LIFT_KEY, all_keys};
+use crate::model::impact::{Collision, Impact3d, Regime};
+use crate::model::keys::{DRAG_KEY, HAND_KEY, LIFT_KEY, all_keys};
+use crate::model::launch::BattedBall;
 use crate::model::pitch;
+use crate::model::scene::Hand;
 use crate::picture::{self, FlightPath, TrajectoryPicture};
 use crate::preset::Preset;
 use crate::units::{Quantity, Unit};
@@ -30,23 +32,32 @@ pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
     let vertical = pitch::vertical_velocity(scene.pitch.speed, scene.environment.gravity);
     let unlanded = landing::why_not_landed(scene, flight, Purpose::Readout);
     if json {
+        let mut impact_json = serde_json::json!({
+            "normal_angle": impact.normal_angle(),
+            "restitution": impact.restitution(),
+            "regime": impact.regime(),
+            "compression_impulse": impact.compression_impulse(),
+            "separation_impulse": impact.separation_impulse(),
+            "stick_impulse": impact.stick_impulse(),
+            "launch_speed": impact.launch_speed(),
+            "launch_spin": impact.launch_spin(),
+            "launch_angle": impact.launch_angle(),
+            "launch_direction": impact.launch_direction(),
+            "launch_sidespin": impact.launch_sidespin(),
+            "launch_gyrospin": impact.launch_gyrospin(),
+        });
+        if let Some(spatial) = impact.spatial() {
+            impact_json["initial_slip"] =
+                serde_json::json!([spatial.initial_slip.x, spatial.initial_slip.y]);
+            impact_json["slip_turn"] = serde_json::json!(spatial.slip_turn(SLIP_SAMPLES));
+        }
         return pretty(&serde_json::json!({
             "pitch": {
                 "speed": scene.pitch.speed,
                 "vertical_velocity": vertical,
-                "angle": impact.descent_angle,
+                "angle": impact.descent_angle(),
             },
-            "impact": {
-                "normal_angle": impact.normal_angle,
-                "restitution": impact.restitution,
-                "regime": impact.regime,
-                "compression_impulse": impact.compression_impulse,
-                "separation_impulse": impact.separation_impulse,
-                "stick_impulse": impact.stick_impulse(),
-                "launch_speed": impact.launch_speed(),
-                "launch_spin": impact.launch_spin(),
-                "launch_angle": impact.launch_angle(),
-            },
+            "impact": impact_json,
             "flight": flight_json(flight, unlanded),
             "environment": environment_json(scene),
         }));
@@ -66,14 +77,22 @@ pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
             shown.not_landed(flight, landing::end_height(scene, Purpose::Readout))
         }
     });
-    labelled(&[
+    let slip = match impact {
+        Collision::Planar(i) => format!("v1(0) = {}", speed(i.initial_slip, 3)),
+        Collision::Spatial(i) => format!(
+            "v1(0) = {}, v2(0) = {} along the bat",
+            speed(i.initial_slip.x, 3),
+            speed(i.initial_slip.y, 3)
+        ),
+    };
+    let mut lines = vec![
         (
             "pitch",
             format!(
                 "{} at the plate, vertical velocity {}, descending at {}",
                 speed(scene.pitch.speed, 2),
                 speed(vertical, 3),
-                shown.angle_and_degrees(impact.descent_angle, 4, 1),
+                shown.angle_and_degrees(impact.descent_angle(), 4, 1),
             ),
         ),
         (
@@ -86,26 +105,83 @@ pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
                 bat.friction
             ),
         ),
-        (
-            "impact",
+    ];
+    if let Collision::Spatial(spatial) = impact {
+        lines.push((
+            "bat",
             format!(
-                "θ = {}, v1(0) = {}, v3(0) = {}, e* = {:.4}",
-                angle(impact.normal_angle, 4),
-                speed(impact.initial_slip, 3),
-                speed(impact.initial_approach, 3),
-                impact.restitution
+                "{}, barrel {} below the hands, swung {}",
+                bat.hand.description(),
+                shown.angle_and_degrees(bat.tilt, 4, 1),
+                shown.direction(bat.direction),
             ),
-        ),
-        (
-            "",
-            format!(
-                "p_c = {:.4} N·s, p_f = {:.4} N·s, {stick}",
-                impact.compression_impulse, impact.separation_impulse
+        ));
+        lines.extend([
+            (
+                "impact",
+                format!(
+                    "θ = {} square to the bat, {slip}, v3(0) = {}, e* = {:.4}",
+                    angle(impact.normal_angle(), 4),
+                    speed(impact.initial_approach(), 3),
+                    impact.restitution()
+                ),
             ),
-        ),
+            (
+                "",
+                format!(
+                    "p_c = {:.4} N·s, p_f = {:.4} N·s, {stick}",
+                    impact.compression_impulse(),
+                    impact.separation_impulse()
+                ),
+            ),
+        ]);
+        lines.extend(slip_turn_text(spatial).map(|text| ("slip", text)));
+    } else {
+        lines.extend([
+            (
+                "impact",
+                format!(
+                    "θ = {}, {slip}, v3(0) = {}, e* = {:.4}",
+                    angle(impact.normal_angle(), 4),
+                    speed(impact.initial_approach(), 3),
+                    impact.restitution()
+                ),
+            ),
+            (
+                "",
+                format!(
+                    "p_c = {:.4} N·s, p_f = {:.4} N·s, {stick}",
+                    impact.compression_impulse(),
+                    impact.separation_impulse()
+                ),
+            ),
+        ]);
+    }
+    lines.extend([
         ("launch", launch_text(impact, shown)),
         ("flight", flight_text(flight, unlanded.as_deref(), shown)),
-    ])
+    ]);
+    labelled(&lines)
+}
+
+/// How many points of the slip's turn `hit --json` gives.
+const SLIP_SAMPLES: usize = 11;
+
+/// "turns from 12.3° to 84.0° (0° square across the bat, ±90° along it)
+/// before it halts": the slip's direction in the tangent plane at the start
+/// and where it halts or the ball leaves. `None` without slip.
+fn slip_turn_text(impact: &Impact3d) -> Option<String> {
+    let turn = impact.slip_turn(SLIP_SAMPLES);
+    let (first, last) = (turn.first()?, turn.last()?);
+    let end = match impact.regime {
+        Regime::Stick => "before it halts",
+        Regime::Slip => "by separation",
+    };
+    Some(format!(
+        "turns from {:.1}° to {:.1}° (0° square across the bat, ±90° along it) {end}",
+        first.angle.to_degrees(),
+        last.angle.to_degrees()
+    ))
 }
 
 /// "range 134.699 m in 5.553 s, apex 27.03 m, lands at 23.34 m/s, 0.836
@@ -174,14 +250,11 @@ pub(super) fn labelled(lines: &[(&str, String)]) -> String {
         .collect()
 }
 
-/// The launch: speed, spin in words and angle.
+/// The launch: speed, spin in words and angle, and a 3-D swing's
+/// direction and sidespin.
 /// "44.299 m/s, 191.83 rad/s of backspin, 0.4604 rad (26.4°)"
-pub(super) fn launch_text(impact: &Impact, shown: Shown) -> String {
-    shown.launch(
-        impact.launch_speed(),
-        impact.launch_spin(),
-        impact.launch_angle(),
-    )
+pub(super) fn launch_text(impact: &Collision, shown: Shown) -> String {
+    super::fly::batted_text(&BattedBall::of(impact), shown)
 }
 
 /// The flight at readout precision, `samples` points evenly in time read
@@ -354,6 +427,14 @@ pub(super) fn keys(shown: Shown) -> String {
         Cell::Text(LiftModel::ALL.map(|m| m.name()).join(" | ")),
         text(defaults.lift.name()),
         text("lift model"),
+    ]);
+    rows.push(vec![
+        text(HAND_KEY),
+        text(""),
+        text(""),
+        Cell::Text(Hand::ALL.map(|h| h.name()).join(" | ")),
+        text(defaults.bat.hand.name()),
+        text("the batter's side (right: the barrel toward first base at a square contact)"),
     ]);
     let fence = crate::preset::bundled()
         .into_iter()

@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use super::{SceneArgs, UsageError};
-use crate::model::keys::{DRAG_KEY, InputBatch, InputError, LIFT_KEY};
+use crate::model::keys::{InputBatch, InputError, TEXT_KEYS};
 use crate::model::launch::SceneKind;
 use crate::model::scene::Scene;
 use crate::preset::{self, FIELD_KEYS, Fence, Preset, cut, escape_for_terminal};
@@ -37,8 +37,7 @@ impl SceneArgs {
                 continue;
             }
             // A value that is no number or drag model is shown cut.
-            let shown = if key != DRAG_KEY && key != LIFT_KEY && value.trim().parse::<f64>().is_ok()
-            {
+            let shown = if !TEXT_KEYS.contains(&key) && value.trim().parse::<f64>().is_ok() {
                 value.to_owned()
             } else {
                 cut(value, 80)

@@ -12,7 +12,7 @@ use super::flight::{
     self, Flight, Flight3d, FlightOptions, FlightSummary, Launch, Launch3d, TrajectoryPoint,
 };
 use super::frame;
-use super::impact::Impact;
+use super::impact::{Collision, Launches};
 use super::scene::Scene;
 use crate::numerics::ode::DenseStep;
 
@@ -36,15 +36,17 @@ pub struct BattedBall {
 }
 
 impl BattedBall {
-    /// The launch of `impact`: the paper's swing is planar, toward centre
-    /// field, with backspin only.
-    pub fn of(impact: &Impact) -> BattedBall {
+    /// The launch of `impact`: the paper's planar swing leaves toward centre
+    /// field with backspin only; a 3-D swing in any direction with
+    /// sidespin too (its spin about the launch velocity, which bends no
+    /// flight, is left out, as frame.rs has it).
+    pub fn of(impact: &impl Launches) -> BattedBall {
         BattedBall {
             speed: impact.launch_speed(),
             angle: impact.launch_angle(),
             spin: impact.launch_spin(),
-            direction: 0.0,
-            sidespin: 0.0,
+            direction: impact.launch_direction(),
+            sidespin: impact.launch_sidespin(),
         }
     }
 
@@ -69,7 +71,7 @@ impl Scene {
                 sidespin: given.sidespin.unwrap_or_default(),
             };
         }
-        let own = BattedBall::of(&Impact::new(self));
+        let own = BattedBall::of(&Collision::new(self));
         if self.kind == SceneKind::Swing {
             return own;
         }
@@ -160,12 +162,20 @@ impl SceneFlight {
     }
 
     /// The flight after `impact`, whose launch velocity is the impact's own
-    /// (not rebuilt from speed and angle), so a planar swing flies exactly
-    /// as [`super::simulate`] does.
-    pub fn of_impact(scene: &Scene, impact: &Impact) -> SceneFlight {
+    /// (not rebuilt from speed, angle and direction), so a planar swing
+    /// flies exactly as the paper's [`super::launch`] does.
+    pub fn of_impact(scene: &Scene, impact: &Collision) -> SceneFlight {
         let mut flight = SceneFlight::new(scene, &BattedBall::of(impact));
-        if let SceneFlight::Planar { launch, .. } = &mut flight {
-            launch.velocity = impact.after.ball_velocity;
+        match (&mut flight, impact) {
+            (SceneFlight::Planar { launch, .. }, Collision::Planar(impact)) => {
+                launch.velocity = impact.after.ball_velocity;
+            }
+            (SceneFlight::Spatial { launch, .. }, Collision::Spatial(impact)) => {
+                launch.velocity = impact.after.ball_velocity;
+            }
+            // A 3-D swing whose ball leaves in a vertical plane without
+            // sidespin, or a planar one into a crosswind: from the launch.
+            _ => {}
         }
         flight
     }
@@ -292,16 +302,16 @@ fn height_where<const N: usize>(
 pub struct Flown {
     pub launch: BattedBall,
     /// The impact, for a swing scene (`None` for a batted ball).
-    pub impact: Option<Impact>,
+    pub impact: Option<Collision>,
     pub flight: FlightSummary,
 }
 
 /// The flight, launch and impact (for a swing) of a (validated) scene,
 /// whatever its kind.
-pub fn scene_start(scene: &Scene) -> (SceneFlight, BattedBall, Option<Impact>) {
+pub fn scene_start(scene: &Scene) -> (SceneFlight, BattedBall, Option<Collision>) {
     match scene.kind {
         SceneKind::Swing => {
-            let impact = Impact::new(scene);
+            let impact = Collision::new(scene);
             (
                 SceneFlight::of_impact(scene, &impact),
                 BattedBall::of(&impact),

@@ -26,19 +26,19 @@ pub mod scene;
 use nalgebra::Vector2;
 
 use flight::{Flight, FlightOptions, FlightSummary, Launch};
-use impact::Impact;
+use impact::{Collision, Impact};
 use scene::Scene;
 
 /// One swing, start to finish.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Swing {
-    pub impact: Impact,
+    pub impact: Collision,
     pub flight: FlightSummary,
 }
 
-/// The planar flight's forces and starting point after `impact`, in the
-/// plane toward centre field: the paper's flight, for callers that study
-/// the paper's scene (with the wind along centre field). A scene in general
+/// The planar flight's forces and starting point after the planar
+/// `impact`, in the plane toward centre field: the paper's flight, for
+/// callers that study the paper's scene (with the wind along centre field). A scene in general
 /// flies through [`launch::SceneFlight`], as [`simulate`] does.
 pub fn launch(scene: &Scene, impact: &Impact) -> (Flight, Launch) {
     (
@@ -52,7 +52,7 @@ pub fn launch(scene: &Scene, impact: &Impact) -> (Flight, Launch) {
 
 /// Simulates a (validated) scene as precisely as `options` says.
 pub fn simulate(scene: &Scene, options: impl Into<FlightOptions>) -> Swing {
-    let impact = Impact::new(scene);
+    let impact = Collision::new(scene);
     Swing {
         impact,
         flight: launch::SceneFlight::of_impact(scene, &impact).fly(&options.into()),

@@ -119,6 +119,96 @@ pub struct Bat {
     pub radius: f64,
     /// k_B2, radius of gyration about the bat's own axis (m).
     pub gyration_radius: f64,
+    /// The barrel's angle below the hands at contact (rad): 0 is the
+    /// paper's level bat (docs/swing-3d.md).
+    #[serde(default)]
+    pub tilt: f64,
+    /// The horizontal direction of the bat's velocity at contact (rad from
+    /// the centre-field line, positive toward right field, as
+    /// [`super::frame`]): 0 is the paper's square contact.
+    #[serde(default)]
+    pub direction: f64,
+    /// Which side of the plate the batter stands on.
+    #[serde(default)]
+    pub hand: Hand,
+}
+
+impl Bat {
+    /// Whether this swing is the paper's: a level bat square to the pitch,
+    /// meeting the ball in the vertical plane toward centre field. Either
+    /// hand then swings the same (the plane is its own mirror image).
+    pub fn is_planar(&self) -> bool {
+        self.tilt == 0.0 && self.direction == 0.0
+    }
+}
+
+/// The key that chooses the batter's hand (in `--set`, presets and batch
+/// columns).
+pub const HAND_KEY: &str = "bat.hand";
+
+/// The batter's side: at a square contact a right-handed batter's barrel
+/// points toward the first-base side (+z), a left-handed batter's toward
+/// the third-base side, the mirror image in z (`../shared/DESIGN.md`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Hand {
+    #[default]
+    Right,
+    Left,
+}
+
+impl Hand {
+    pub const ALL: [Hand; 2] = [Hand::Right, Hand::Left];
+
+    /// "right" or "left", as `bat.hand` takes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Hand::Right => "right",
+            Hand::Left => "left",
+        }
+    }
+
+    /// +1 for a right-handed batter, −1 for a left-handed one: the sign of
+    /// the z component of the barrel's direction at a square contact.
+    pub fn sign(self) -> f64 {
+        match self {
+            Hand::Right => 1.0,
+            Hand::Left => -1.0,
+        }
+    }
+
+    /// "right-handed" or "left-handed".
+    pub fn description(self) -> &'static str {
+        match self {
+            Hand::Right => "right-handed",
+            Hand::Left => "left-handed",
+        }
+    }
+}
+
+/// A `bat.hand` that is neither `right` nor `left`.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{HAND_KEY} = {text:?}: unknown hand; accepted: right, left")]
+pub struct UnknownHand {
+    pub text: String,
+}
+
+impl std::str::FromStr for Hand {
+    type Err = UnknownHand;
+    fn from_str(text: &str) -> Result<Self, Self::Err> {
+        Hand::ALL
+            .into_iter()
+            .find(|h| h.name() == text.trim())
+            .ok_or_else(|| UnknownHand {
+                text: text.to_owned(),
+            })
+    }
+}
+
+impl std::fmt::Display for Hand {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
 }
 
 /// The baseball.
@@ -250,6 +340,9 @@ impl Default for Scene {
                 effective_mass: 0.8,
                 radius: 0.035,
                 gyration_radius: 0.0247,
+                tilt: 0.0,
+                direction: 0.0,
+                hand: Hand::Right,
             },
             ball: Ball {
                 mass: 0.145,

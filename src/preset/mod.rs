@@ -22,7 +22,7 @@ use file::{preset_files, size_text, through};
 
 use crate::model::aero::{DragModel, LiftModel};
 use crate::model::keys::{
-    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, InputBatch, InputError, Key, LAUNCH_KEYS, LIFT_KEY,
+    AIR_KEYS, ATMOSPHERE_KEYS, HAND_KEY, InputBatch, InputError, Key, LAUNCH_KEYS, TEXT_KEYS,
     all_keys,
 };
 use crate::model::launch::SceneKind;
@@ -173,6 +173,7 @@ impl Preset {
                 // `pitch = 5`: a section written as a value.
                 let is_section = all_keys()
                     .map(|k| k.name)
+                    .chain(TEXT_KEYS)
                     .chain(FIELD_KEYS.iter().map(|f| f.name))
                     .any(|name| name.split_once('.').is_some_and(|(s, _)| s == section));
                 if is_section {
@@ -191,10 +192,13 @@ impl Preset {
             }
             for (name, value) in entries {
                 let key = format!("{section}.{name}");
-                if key == DRAG_KEY || key == LIFT_KEY {
-                    let text = value
-                        .as_str()
-                        .ok_or_else(|| wrong(&key, value, "expected a model name in quotes"))?;
+                if TEXT_KEYS.contains(&key.as_str()) {
+                    let expected = if key == HAND_KEY {
+                        "expected \"right\" or \"left\" in quotes"
+                    } else {
+                        "expected a model name in quotes"
+                    };
+                    let text = value.as_str().ok_or_else(|| wrong(&key, value, expected))?;
                     // A name too long to be one is shown cut (the error
                     // quotes it, escaping control characters).
                     let shown = cut(text, 80);
@@ -314,6 +318,15 @@ impl Preset {
                     if chosen.lift { "" } else { "# " },
                     lift.description(),
                     LiftModel::ALL.map(LiftModel::name).join(", ")
+                );
+            }
+            if HAND_KEY
+                .split_once('.')
+                .is_some_and(|(section, _)| section == head)
+            {
+                out += &format!(
+                    "hand = \"{}\"  # the batter's side: right, left\n",
+                    self.scene.bat.hand
                 );
             }
             for key in keys

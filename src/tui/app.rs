@@ -25,9 +25,9 @@ use crate::analysis::precision::Purpose;
 use crate::analysis::sensitivity;
 use crate::analysis::study::{Grid, Surface};
 use crate::model::aero::{DragModel, LiftModel};
-use crate::model::keys::{DRAG_KEY, LIFT_KEY};
+use crate::model::keys::{DRAG_KEY, HAND_KEY, LIFT_KEY};
 use crate::model::launch::{Flown, SceneKind, fly_scene, height_at_distance, scene_start};
-use crate::model::scene::Scene;
+use crate::model::scene::{Hand, Scene};
 use crate::preset::{self, Fence, Preset};
 use crate::units::{Quantity, Unit, UnitSystem};
 use edit::prefilled;
@@ -47,6 +47,8 @@ pub enum Field {
     Drag,
     /// The lift model.
     Lift,
+    /// The batter's hand (`bat.hand`).
+    Hand,
 }
 
 impl Field {
@@ -56,6 +58,7 @@ impl Field {
             Field::Preset => "",
             Field::Key(k) => input_key(k).name.split('.').next().unwrap_or(""),
             Field::Drag | Field::Lift => "model",
+            Field::Hand => "bat",
         }
     }
 }
@@ -66,6 +69,10 @@ impl Field {
 pub fn fields(kind: SceneKind) -> Vec<Field> {
     let mut all = vec![Field::Preset];
     all.extend(scene_inputs(kind).into_iter().map(Field::Key));
+    // A batted ball has no bat.
+    if kind == SceneKind::Swing {
+        all.push(Field::Hand);
+    }
     all.extend([Field::Drag, Field::Lift]);
     let mut groups: Vec<&str> = Vec::new();
     for field in &all {

@@ -5,14 +5,14 @@ use crate::Scene;
 use crate::analysis::paper;
 use crate::analysis::study;
 use crate::model::aero::{DragCurve, DragModel, LiftCurve, LiftModel};
-use crate::model::impact::Impact;
+use crate::model::impact::Collision;
 
 /// Fig. 3: C_D against Re for the scene's drag model, with its kinks and
 /// Dryden's point. A spin-dependent C_D (Nathan's) is drawn at the scene's
 /// launch spin, the one its flight starts with.
 pub(super) fn figure3(scene: &Scene) -> FigureData {
     let model = scene.drag;
-    let spin_rate = Impact::new(scene).launch_spin().abs();
+    let spin_rate = Collision::new(scene).launch_spin().abs();
     let drag = |re: f64| model.coefficient_on(model.piece(re), re, spin_rate);
     let speed_per_re = scene.environment.kinematic_viscosity / (2.0 * scene.ball.radius);
     let mut marks: Vec<(f64, String)> = model

@@ -16,7 +16,7 @@ pub(super) fn impact_figure(number: u32, scene: &Scene) -> FigureData {
     let top = 0.07_f64.min(scene.reach() * (1.0 - 1e-9));
     let cusp = |friction: f64| {
         bisect(0.0, top, |e| {
-            impact_with(scene, e, friction).regime == Regime::Stick
+            impact_with(scene, e, friction).regime() == Regime::Stick
         })
     };
     let cusps: Vec<Option<f64>> = FRICTIONS.iter().map(|&mu| cusp(mu)).collect();
@@ -91,7 +91,7 @@ pub(super) fn impact_figure(number: u32, scene: &Scene) -> FigureData {
     }
     for (mu, c) in FRICTIONS.iter().zip(&cusps) {
         if c.is_none() {
-            let regime = impact_with(scene, 0.0, *mu).regime;
+            let regime = impact_with(scene, 0.0, *mu).regime();
             notes.push(format!(
                 "μ = {mu}: no cusp below E = {top:.4} m ({} throughout)",
                 if regime == Regime::Stick {

@@ -15,7 +15,7 @@ use crate::Scene;
 use crate::analysis::optimum::Optimum;
 use crate::analysis::paper::{FIGURES, Stated};
 use crate::analysis::study::{self, SweepError};
-use crate::model::impact::Impact;
+use crate::model::impact::Collision;
 use crate::model::launch::SceneKind;
 
 /// One table cell: a number, a label, a yes or no (`landed`), or nothing
@@ -328,10 +328,10 @@ fn with_marks(base: Vec<f64>, marks: Vec<(f64, String)>) -> Vec<(f64, String)> {
 }
 
 /// The impact of `scene` with its undercut set to `undercut` and μ to `friction`.
-fn impact_with(scene: &Scene, undercut: f64, friction: f64) -> Impact {
+fn impact_with(scene: &Scene, undercut: f64, friction: f64) -> Collision {
     let mut s = scene.with_swing(undercut, scene.bat.swing_angle);
     s.bat.friction = friction;
-    Impact::new(&s)
+    Collision::new(&s)
 }
 
 /// The undercut in [0, `top`] (and short of the bat's reach) at which the

@@ -5,7 +5,8 @@
 use super::super::fly::fence_of;
 use crate::Scene;
 use crate::model::aero::UnknownModel;
-use crate::model::keys::{DRAG_KEY, InputBatch, InputError, LIFT_KEY};
+use crate::model::keys::{DRAG_KEY, InputBatch, InputError, TEXT_KEYS};
+use crate::model::scene::UnknownHand;
 use crate::preset::{FIELD_KEYS, Fence, Preset, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem};
 
@@ -176,11 +177,8 @@ pub(super) fn column_of(name: &str) -> Column {
     if let Some(index) = FIELD_KEYS.iter().position(|f| f.name == name) {
         return Column::Field(index);
     }
-    if name == DRAG_KEY {
-        return Column::Input(DRAG_KEY);
-    }
-    if name == LIFT_KEY {
-        return Column::Input(LIFT_KEY);
+    if let Some(key) = TEXT_KEYS.iter().find(|k| **k == name) {
+        return Column::Input(key);
     }
     match Scene::key(name) {
         Ok(key) => Column::Input(key.name),
@@ -281,6 +279,9 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
                     InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
                         text: cut(&model.text, 80),
                         ..model
+                    }),
+                    InputError::UnknownHand(hand) => InputError::UnknownHand(UnknownHand {
+                        text: cut(&hand.text, 80),
                     }),
                     e => e,
                 })

@@ -1,6 +1,6 @@
 //! Inputs from one source, set key by key.
 
-use super::table::{AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, LIFT_KEY};
+use super::table::{AIR_KEYS, ATMOSPHERE_KEYS, TEXT_KEYS};
 use super::{InputError, Scene};
 
 /// Sets keys one by one from one source of inputs (one preset file, one
@@ -55,7 +55,7 @@ impl InputBatch {
         name: &str,
         text: &str,
     ) -> Result<(), InputError> {
-        let next = if name == DRAG_KEY || name == LIFT_KEY {
+        let next = if TEXT_KEYS.contains(&name) {
             *self
         } else {
             self.with(Scene::key(name)?.name)?

@@ -6,21 +6,21 @@
 //! in exactly one place. [`InputBatch`] sets the keys of one source of
 //! inputs, refusing contradictory ones.
 
-use std::f64::consts::{FRAC_PI_2, PI};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
 
 use crate::units::{Quantity, Unit, UnitSystem};
 
 use super::aero::UnknownModel;
 use super::pitch;
-use super::scene::Scene;
+use super::scene::{Scene, UnknownHand};
 
 mod batch;
 mod table;
 
 pub use batch::InputBatch;
 pub use table::{
-    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, EXTENDED_KEYS, KEYS, LAUNCH_KEYS, LIFT_KEY, all_keys,
-    swing_keys,
+    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, EXTENDED_KEYS, HAND_KEY, KEYS, LAUNCH_KEYS, LIFT_KEY,
+    TEXT_KEYS, all_keys, swing_keys,
 };
 
 /// A closed or half-open interval of accepted values.
@@ -111,8 +111,10 @@ impl std::fmt::Display for Bounds {
 fn bound_text(value: f64) -> String {
     match value {
         FRAC_PI_2 => "π/2".to_owned(),
+        FRAC_PI_3 => "π/3".to_owned(),
         PI => "π".to_owned(),
         _ if value == -FRAC_PI_2 => "-π/2".to_owned(),
+        _ if value == -FRAC_PI_3 => "-π/3".to_owned(),
         _ if value == -PI => "-π".to_owned(),
         _ => value.to_string(),
     }
@@ -194,6 +196,8 @@ pub enum InputError {
     NotANumber { key: String, text: String },
     #[error(transparent)]
     UnknownModel(#[from] UnknownModel),
+    #[error(transparent)]
+    UnknownHand(#[from] UnknownHand),
     #[error(
         "{given} and {weather} set together: the weather keys ({}) derive ρ and ν; give either ρ and ν or the weather",
         ATMOSPHERE_KEYS.join(", ")
@@ -259,6 +263,10 @@ impl Scene {
         }
         if name == LIFT_KEY {
             self.choose_lift(text.parse()?);
+            return Ok(());
+        }
+        if name == HAND_KEY {
+            self.bat.hand = text.parse()?;
             return Ok(());
         }
         let key = Self::key(name)?;
@@ -371,7 +379,7 @@ fn check_gyration(
 fn suggestion(key: &str) -> String {
     all_keys()
         .map(|k| k.name)
-        .chain([DRAG_KEY, LIFT_KEY])
+        .chain(TEXT_KEYS)
         .map(|name| (strsim::jaro_winkler(key, name), name))
         .max_by(|a, b| a.0.total_cmp(&b.0))
         .filter(|(score, _)| *score > 0.85)
@@ -400,7 +408,7 @@ fn unit_suffix(unit: &str) -> String {
 
 fn known_keys() -> String {
     let mut names: Vec<&str> = all_keys().map(|k| k.name).collect();
-    names.extend([DRAG_KEY, LIFT_KEY]);
+    names.extend(TEXT_KEYS);
     names.join(", ")
 }
 

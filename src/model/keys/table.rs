@@ -1,7 +1,7 @@
 //! The key table: every numeric input's name, symbol, unit, bounds (with
 //! the reason beside each where it is not obvious), nudge step and accessors.
 
-use std::f64::consts::{FRAC_PI_2, PI};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
 
 use super::{Bounds, Key};
 use crate::model::atmosphere::Atmosphere;
@@ -132,6 +132,30 @@ pub const KEYS: &[Key] = &[
         Bounds::closed(-FRAC_PI_2, FRAC_PI_2),
         0.01,
         bat.swing_angle
+    ),
+    // ±60°: measured barrels sit 25–35° below the hands in big-league
+    // swings and −29.6 ± 8.7° in elite softball (docs/swing-3d.md), and
+    // low and high pitches take them further; toward ±90° the bat stands
+    // upright, where "above the axis" (E) loses its meaning.
+    key!(
+        "bat.tilt",
+        "τ",
+        "rad",
+        "barrel below the hands at contact (0: the paper's level bat)",
+        Bounds::closed(-FRAC_PI_3, FRAC_PI_3),
+        0.02,
+        bat.tilt
+    ),
+    // ±60°: beyond the foul lines (±45°) with room for a pulled or late
+    // swing; a bat moving more sideways meets the pitch nearly edge-on.
+    key!(
+        "bat.direction",
+        "φ_B",
+        "rad",
+        "bat velocity's horizontal direction: 0 centre field, positive toward right field",
+        Bounds::closed(-FRAC_PI_3, FRAC_PI_3),
+        0.02,
+        bat.direction
     ),
     key!(
         "bat.friction",
@@ -437,5 +461,9 @@ pub const ATMOSPHERE_KEYS: [&str; 4] = [
     "environment.humidity",
 ];
 
-/// The non-numeric inputs: the drag and lift models.
+/// The non-numeric inputs: the drag and lift models, the batter's hand.
 pub use crate::model::aero::{DRAG_KEY, LIFT_KEY};
+pub use crate::model::scene::HAND_KEY;
+
+/// Every key that takes a name rather than a number.
+pub const TEXT_KEYS: [&str; 3] = [DRAG_KEY, LIFT_KEY, HAND_KEY];

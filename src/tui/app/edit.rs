@@ -22,6 +22,10 @@ impl App {
                     .choose_lift(cycle(&LiftModel::ALL, self.scene.lift, scale));
                 self.inputs_changed = true;
             }
+            Field::Hand => {
+                self.scene.bat.hand = cycle(&Hand::ALL, self.scene.bat.hand, scale);
+                self.inputs_changed = true;
+            }
             // The same nudge as the sensitivity column's, so that its number
             // says what this key does.
             Field::Key(k) => {
@@ -43,6 +47,7 @@ impl App {
             Field::Preset => return self.open_picker(),
             Field::Drag => self.scene.drag.name().to_owned(),
             Field::Lift => self.scene.lift.name().to_owned(),
+            Field::Hand => self.scene.bat.hand.name().to_owned(),
             Field::Key(k) => shown_value(input_key(k), (input_key(k).get)(&self.scene), self.units),
         };
         self.mode = Mode::Edit {
@@ -76,6 +81,7 @@ impl App {
                     }
                     Field::Drag => scene.set_text(DRAG_KEY, &typed),
                     Field::Lift => scene.set_text(LIFT_KEY, &typed),
+                    Field::Hand => scene.set_text(HAND_KEY, &typed),
                     Field::Preset => return,
                 };
                 match set.and_then(|()| scene.validate()) {

@@ -35,14 +35,14 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let [chart_area, text_area] =
         Layout::vertical([Constraint::Fill(1), Constraint::Length(3)]).areas(inner);
 
-    let pf = impact.separation_impulse;
+    let pf = impact.separation_impulse();
     let samples = (2 * chart_area.width as usize).clamp(8, 400);
     let states: Vec<_> = (0..samples)
         .map(|k| impact.at(pf * k as f64 / (samples - 1) as f64))
         .collect();
     let slip: Vec<(f64, f64)> = states
         .iter()
-        .map(|s| (s.impulse, speed.show(s.slip_velocity)))
+        .map(|s| (s.impulse, speed.show(s.slip.x)))
         .collect();
     let normal: Vec<(f64, f64)> = states
         .iter()
@@ -55,7 +55,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let pad = 0.05 * (hi - lo).max(1e-9);
     let (lo, hi) = (lo - pad, hi + pad);
     let vertical = |p: f64| [(p, lo), (p, hi)];
-    let pc_line = vertical(impact.compression_impulse);
+    let pc_line = vertical(impact.compression_impulse());
     let ps_line = impact.stick_impulse().map(vertical);
     let cursor = vertical(stop.impulse);
     let zero = [(0.0, 0.0), (pf, 0.0)];
@@ -95,13 +95,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                     .map_or("— (slips) ".to_owned(), |p| format!("{p:.3}  ")),
             ),
             Span::styled("p_c ", theme::COMPRESSION),
-            Span::raw(format!("{:.3}  ", impact.compression_impulse)),
+            Span::raw(format!("{:.3}  ", impact.compression_impulse())),
             Span::styled("p_f ", dim()),
             Span::raw(format!("{pf:.3}")),
         ]),
         Line::from(vec![
             Span::styled("v1 slip ", theme::SLIP),
-            Span::raw(format!("{:+.2}  ", speed.show(s.slip_velocity))),
+            Span::raw(format!("{:+.2}  ", speed.show(s.slip.x))),
             Span::styled("v3 normal ", theme::APPROACH),
             Span::raw(format!(
                 "{:+.2} {}",
@@ -117,7 +117,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 speed.show(s.ball_velocity.y),
                 speed.symbol,
                 speed.show(s.ball_velocity.norm()),
-                spin.show(s.ball_spin),
+                spin.show(s.ball_spin.z),
                 spin.symbol
             )),
         ]),

@@ -15,6 +15,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Wrap};
 
 use crate::analysis::sensitivity;
+use crate::model::keys::HAND_KEY;
 use crate::tui::app::{App, Field, GainCell, Mode, input_key};
 use crate::tui::format::{shown_bounds, shown_step, shown_value};
 use crate::tui::layout::{input_scroll, inputs_list};
@@ -251,6 +252,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             Field::Preset => ("", "preset", app.preset_name.clone(), ""),
             Field::Drag => ("C_D", "drag", app.scene.drag.name().to_owned(), ""),
             Field::Lift => ("C_L", "lift", app.scene.lift.name().to_owned(), ""),
+            Field::Hand => ("", "hand", app.scene.bat.hand.name().to_owned(), ""),
             Field::Key(k) => {
                 let key = input_key(*k);
                 let short = key.name.split('.').nth(1).unwrap_or(key.name);
@@ -335,6 +337,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 Field::Preset => format!("{} — Enter or o: open a preset", app.description),
                 Field::Drag => format!("model.drag (h l): {}", app.scene.drag.description()),
                 Field::Lift => format!("model.lift (h l): {}", app.scene.lift.description()),
+                Field::Hand => format!(
+                    "{HAND_KEY} (h l): {} batter, right or left",
+                    app.scene.bat.hand.description()
+                ),
                 Field::Key(k) => {
                     let key = input_key(k);
                     format!(

@@ -135,12 +135,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             label("impact"),
             Span::raw(format!(
                 "e* {:.4}  {}  θ {}{}",
-                impact.restitution,
-                match impact.regime {
+                impact.restitution(),
+                match impact.regime() {
                     Regime::Stick => "stick",
                     Regime::Slip => "slip",
                 },
-                angle_text(app, impact.normal_angle, false),
+                angle_text(app, impact.normal_angle(), false),
                 if app.units == UnitSystem::Si {
                     " rad"
                 } else {
@@ -155,8 +155,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 impact
                     .stick_impulse()
                     .map_or("—".to_owned(), |p| format!("{p:.3}")),
-                impact.compression_impulse,
-                impact.separation_impulse
+                impact.compression_impulse(),
+                impact.separation_impulse()
             )),
         ]));
     }
@@ -354,7 +354,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                     "{:.1} {}, descending {:.2}°",
                     speed.show(app.scene.pitch.speed),
                     speed.symbol,
-                    impact.descent_angle.to_degrees()
+                    impact.descent_angle().to_degrees()
                 )),
             ]));
         }

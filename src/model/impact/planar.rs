@@ -1,5 +1,7 @@
-//! Planar rigid-body bat–ball impact with friction: Eq. (1)–(2), (5)–(23),
-//! after Stronge, solved as functions of the normal impulse p.
+//! The paper's planar rigid-body bat–ball impact with friction: Eq. (1)–(2),
+//! (5)–(23), after Stronge, solved as functions of the normal impulse p.
+//! A level bat square to the pitch (`bat.tilt` = `bat.direction` = 0) takes
+//! this path; [`super::spatial`] is the same collision in three dimensions.
 //!
 //! Sign conventions (derived once, from first principles, and checked against
 //! all nine launch values of Table II; docs/models.md lists the paper's
@@ -18,19 +20,9 @@
 
 use nalgebra::{Rotation2, Vector2};
 
-use super::pitch;
-use super::scene::Scene;
-
-/// How the tangential slip ends.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Regime {
-    /// Slip halts before separation (p_s < p_f) and the contact then sticks:
-    /// for this geometry the stick coefficient μ̄ = β2/β1 = 0 ≤ μ.
-    Stick,
-    /// The contact slips until separation (p_s ≥ p_f).
-    Slip,
-}
+use super::{Regime, Stop, normal_phase, pair_mass, stops};
+use crate::model::pitch;
+use crate::model::scene::Scene;
 
 /// The ball and bat states at some normal impulse p during contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -113,7 +105,7 @@ impl Impact {
 
         let ball_inertia = ball.mass * ball.gyration_radius.powi(2);
         let bat_inertia = bat.effective_mass * bat.gyration_radius.powi(2);
-        let pair_mass = ball.mass * bat.effective_mass / (ball.mass + bat.effective_mass); // Eq. (11)
+        let pair_mass = pair_mass(ball.mass, bat.effective_mass);
         // Eq. (13) with r_b3 = −r_b, r_B3 = r_B, r_b1 = r_B1 = 0.
         let beta1 = 1.0
             + pair_mass * ball.radius.powi(2) / ball_inertia
@@ -131,11 +123,8 @@ impl Impact {
             - bat.radius * bat_spin_before;
         let initial_approach = ball_local.x - bat_local.x;
 
-        // Eq. (19), in the approach speed. A swing that does not approach the
-        // ball (v3(0) ≥ 0) exchanges no impulse: the pitch flies on.
-        let restitution = 0.540 - (initial_approach.abs() - 26.8) / 400.0;
-        let compression_impulse = (-pair_mass * initial_approach).max(0.0); // Eq. (18)
-        let separation_impulse = compression_impulse * (1.0 + restitution); // Eq. (20)
+        let (restitution, compression_impulse, separation_impulse) =
+            normal_phase(pair_mass, initial_approach);
         // Eq. (17) with s = sign v1(0): p_s = m|v1(0)|/(μβ1).
         let slip_halt_impulse = if initial_slip == 0.0 {
             0.0
@@ -288,32 +277,13 @@ mod tests {
     }
 }
 
-/// A stop of the collision step by step: a phase's name and its normal
-/// impulse p.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Stop {
-    pub name: &'static str,
-    pub impulse: f64,
-}
-
 impl Impact {
-    /// The phases of the collision in order of impulse (paper Fig. 2):
-    /// approach, compression, maximum compression (p_c), restitution and
-    /// separation (p_f), with the halt of slip (p_s) where the contact sticks.
+    /// The phases of the collision in order of impulse (paper Fig. 2).
     pub fn stops(&self) -> Vec<Stop> {
-        let (pc, pf) = (self.compression_impulse, self.separation_impulse);
-        let stop = |name, impulse| Stop { name, impulse };
-        let mut stops = vec![
-            stop("approach", 0.0),
-            stop("compression", 0.5 * pc),
-            stop("max compression", pc),
-            stop("restitution", 0.5 * (pc + pf)),
-            stop("separation", pf),
-        ];
-        if let Some(ps) = self.stick_impulse() {
-            stops.push(stop("slip halts, stick", ps));
-        }
-        stops.sort_by(|a, b| a.impulse.total_cmp(&b.impulse));
-        stops
+        stops(
+            self.compression_impulse,
+            self.separation_impulse,
+            self.stick_impulse(),
+        )
     }
 }
