@@ -16,26 +16,7 @@ fn scenes() -> impl Strategy<Value = Scene> {
         (-0.0715..0.0715f64, -0.8..1.0f64, 0.0..1.0f64),
         (0.3..2.0f64, 0.1..0.3f64),
     )
-        .prop_map(
-            |(
-                (pitch_speed, pitch_spin),
-                (bat_speed, bat_spin),
-                (undercut, swing_angle, friction),
-                (bat_mass, ball_mass),
-            )| {
-                let mut s = Scene::default();
-                s.pitch.speed = pitch_speed;
-                s.pitch.spin = pitch_spin;
-                s.bat.speed = bat_speed;
-                s.bat.spin = bat_spin;
-                s.bat.undercut = undercut;
-                s.bat.swing_angle = swing_angle;
-                s.bat.friction = friction;
-                s.bat.effective_mass = bat_mass;
-                s.ball.mass = ball_mass;
-                s
-            },
-        )
+        .prop_map(|(pitch, bat, swing, masses)| common::impact_scene(pitch, bat, swing, masses))
         .prop_filter("valid", |s| s.validate().is_ok())
 }
 
@@ -82,8 +63,8 @@ proptest! {
         let impact = Impact::new(&scene);
         prop_assume!(impact.initial_approach < 0.0 && impact.initial_slip != 0.0);
         // μ at which slip halts exactly at separation: p_s = p_f (Eq. 17).
-        let threshold = impact.pair_mass * impact.initial_slip.abs()
-            / (impact.beta1 * impact.separation_impulse);
+        let threshold = impact.bodies.pair_mass * impact.initial_slip.abs()
+            / (impact.bodies.beta1 * impact.separation_impulse);
         prop_assume!(threshold < 1.5);
         let outcome = |friction: f64| {
             let mut s = scene;

@@ -106,7 +106,7 @@ pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
             ),
         ),
     ];
-    if let Collision::Spatial(spatial) = impact {
+    if impact.spatial().is_some() {
         lines.push((
             "bat",
             format!(
@@ -116,46 +116,33 @@ pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
                 shown.direction(bat.direction),
             ),
         ));
-        lines.extend([
-            (
-                "impact",
-                format!(
-                    "θ = {} square to the bat, {slip}, v3(0) = {}, e* = {:.4}",
-                    angle(impact.normal_angle(), 4),
-                    speed(impact.initial_approach(), 3),
-                    impact.restitution()
-                ),
-            ),
-            (
-                "",
-                format!(
-                    "p_c = {:.4} N·s, p_f = {:.4} N·s, {stick}",
-                    impact.compression_impulse(),
-                    impact.separation_impulse()
-                ),
-            ),
-        ]);
-        lines.extend(slip_turn_text(spatial).map(|text| ("slip", text)));
+    }
+    let square = if impact.spatial().is_some() {
+        " square to the bat"
     } else {
-        lines.extend([
-            (
-                "impact",
-                format!(
-                    "θ = {}, {slip}, v3(0) = {}, e* = {:.4}",
-                    angle(impact.normal_angle(), 4),
-                    speed(impact.initial_approach(), 3),
-                    impact.restitution()
-                ),
+        ""
+    };
+    lines.extend([
+        (
+            "impact",
+            format!(
+                "θ = {}{square}, {slip}, v3(0) = {}, e* = {:.4}",
+                angle(impact.normal_angle(), 4),
+                speed(impact.initial_approach(), 3),
+                impact.restitution()
             ),
-            (
-                "",
-                format!(
-                    "p_c = {:.4} N·s, p_f = {:.4} N·s, {stick}",
-                    impact.compression_impulse(),
-                    impact.separation_impulse()
-                ),
+        ),
+        (
+            "",
+            format!(
+                "p_c = {:.4} N·s, p_f = {:.4} N·s, {stick}",
+                impact.compression_impulse(),
+                impact.separation_impulse()
             ),
-        ]);
+        ),
+    ]);
+    if let Some(spatial) = impact.spatial() {
+        lines.extend(slip_turn_text(spatial).map(|text| ("slip", text)));
     }
     lines.extend([
         ("launch", launch_text(impact, shown)),

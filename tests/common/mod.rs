@@ -9,6 +9,28 @@ pub fn scene(name: &str) -> Scene {
     preset::load(name, None).expect("bundled preset").scene
 }
 
+/// The fastball with every input that matters to the impact replaced:
+/// the pitch (speed, spin), the bat (speed, roll), the swing (E, ψ, μ) and
+/// the masses (bat, ball), for the property tests' random scenes.
+pub fn impact_scene(
+    (pitch_speed, pitch_spin): (f64, f64),
+    (bat_speed, bat_spin): (f64, f64),
+    (undercut, swing_angle, friction): (f64, f64, f64),
+    (bat_mass, ball_mass): (f64, f64),
+) -> Scene {
+    let mut s = Scene::default();
+    s.pitch.speed = pitch_speed;
+    s.pitch.spin = pitch_spin;
+    s.bat.speed = bat_speed;
+    s.bat.spin = bat_spin;
+    s.bat.undercut = undercut;
+    s.bat.swing_angle = swing_angle;
+    s.bat.friction = friction;
+    s.bat.effective_mass = bat_mass;
+    s.ball.mass = ball_mass;
+    s
+}
+
 /// `scene` with its swing replaced by (E, ψ).
 pub fn with_swing(scene: &Scene, undercut: f64, swing_angle: f64) -> Scene {
     scene.with_swing(undercut, swing_angle)

@@ -32,9 +32,50 @@ pub enum Regime {
     Slip,
 }
 
-/// m = M_b·M_B/(M_b + M_B), the pair's effective mass (Eq. 11).
-fn pair_mass(ball_mass: f64, bat_mass: f64) -> f64 {
-    ball_mass * bat_mass / (ball_mass + bat_mass)
+/// The two bodies as the impact sees them: the ball, and the bat at the
+/// contact (its effective mass and its roll about its own axis), with the
+/// constants of Eq. (11) and (13).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bodies {
+    pub ball_mass: f64,
+    pub ball_radius: f64,
+    /// M_b·k_b².
+    pub ball_inertia: f64,
+    /// M_B.
+    pub bat_mass: f64,
+    pub bat_radius: f64,
+    /// M_B·k_B2², about the bat's own axis.
+    pub bat_inertia: f64,
+    /// m = M_b·M_B/(M_b + M_B) (Eq. 11).
+    pub pair_mass: f64,
+    /// β1 of Eq. (13) with r_b = −r_b·n3, r_B = r_B·n3: across the bat
+    /// both bodies roll (β2 = 0 and β3 = 1, the contact points lying on the
+    /// line of centres).
+    pub beta1: f64,
+    /// The same along the bat (3-D only), where the bat cannot roll: only
+    /// the ball's term.
+    pub beta_axial: f64,
+}
+
+impl Bodies {
+    pub fn of(scene: &Scene) -> Bodies {
+        let (ball, bat) = (scene.ball, scene.bat);
+        let ball_inertia = ball.mass * ball.gyration_radius.powi(2);
+        let bat_inertia = bat.effective_mass * bat.gyration_radius.powi(2);
+        let pair_mass = ball.mass * bat.effective_mass / (ball.mass + bat.effective_mass);
+        let ball_roll = pair_mass * ball.radius.powi(2) / ball_inertia;
+        Bodies {
+            ball_mass: ball.mass,
+            ball_radius: ball.radius,
+            ball_inertia,
+            bat_mass: bat.effective_mass,
+            bat_radius: bat.radius,
+            bat_inertia,
+            pair_mass,
+            beta1: 1.0 + ball_roll + pair_mass * bat.radius.powi(2) / bat_inertia,
+            beta_axial: 1.0 + ball_roll,
+        }
+    }
 }
 
 /// The normal phase from the approach v3(0): e* (Eq. 19, in the approach

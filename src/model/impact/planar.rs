@@ -20,7 +20,7 @@
 
 use nalgebra::{Rotation2, Vector2};
 
-use super::{Regime, Stop, normal_phase, pair_mass, stops};
+use super::{Bodies, Regime, Stop, normal_phase, stops};
 use crate::model::pitch;
 use crate::model::scene::Scene;
 
@@ -53,10 +53,8 @@ pub struct Impact {
     /// Rotation from impact-frame components (n1, n3) to flight-frame (x, y)
     /// is `frame * Vector2::new(c3, c1)` — n3 along the rotated x axis.
     pub frame: Rotation2<f64>,
-    /// m, effective mass of the pair (Eq. 11).
-    pub pair_mass: f64,
-    /// β1 of Eq. (13) (β2 = 0 and β3 = 1 here because r_b1 = r_B1 = 0).
-    pub beta1: f64,
+    /// Masses, radii, inertias, m (Eq. 11) and β1 (Eq. 13).
+    pub bodies: Bodies,
     /// μ.
     pub friction: f64,
     /// v1(0), v3(0): initial slip and approach (Eq. 16); v3(0) < 0 approaches.
@@ -78,12 +76,6 @@ pub struct Impact {
     pub bat_spin_before: f64,
     /// Ball and bat at separation.
     pub after: ContactState,
-    pub ball_mass: f64,
-    pub ball_radius: f64,
-    pub ball_inertia: f64,
-    pub bat_mass: f64,
-    pub bat_radius: f64,
-    pub bat_inertia: f64,
 }
 
 impl Impact {
@@ -103,13 +95,10 @@ impl Impact {
         // Fig. 9's positive roll is −ẑ (see Scene::bat.spin).
         let bat_spin_before = -bat.spin;
 
-        let ball_inertia = ball.mass * ball.gyration_radius.powi(2);
-        let bat_inertia = bat.effective_mass * bat.gyration_radius.powi(2);
-        let pair_mass = pair_mass(ball.mass, bat.effective_mass);
-        // Eq. (13) with r_b3 = −r_b, r_B3 = r_B, r_b1 = r_B1 = 0.
-        let beta1 = 1.0
-            + pair_mass * ball.radius.powi(2) / ball_inertia
-            + pair_mass * bat.radius.powi(2) / bat_inertia;
+        let bodies = Bodies::of(scene);
+        let Bodies {
+            pair_mass, beta1, ..
+        } = bodies;
 
         // Eq. (16): components in the impact frame. The contact point of the
         // ball is −r_b·n3 from its centre, so ω×r adds −r_b·ω along n1; the
@@ -143,8 +132,7 @@ impl Impact {
             normal_angle,
             descent_angle,
             frame,
-            pair_mass,
-            beta1,
+            bodies,
             friction: scene.bat.friction,
             initial_slip,
             initial_approach,
@@ -167,12 +155,6 @@ impl Impact {
                 bat_velocity: bat_velocity_before,
                 bat_spin: bat_spin_before,
             },
-            ball_mass: ball.mass,
-            ball_radius: ball.radius,
-            ball_inertia,
-            bat_mass: bat.effective_mass,
-            bat_radius: bat.radius,
-            bat_inertia,
         };
         impact.after = impact.at(separation_impulse);
         impact
@@ -204,15 +186,16 @@ impl Impact {
         let p1 = self.tangential_impulse(impulse);
         let p3 = impulse;
         // Eq. (15) with β2 = 0, β3 = 1.
-        let slip_velocity = self.initial_slip + self.beta1 * p1 / self.pair_mass;
-        let normal_velocity = self.initial_approach + p3 / self.pair_mass;
+        let slip_velocity = self.initial_slip + self.bodies.beta1 * p1 / self.bodies.pair_mass;
+        let normal_velocity = self.initial_approach + p3 / self.bodies.pair_mass;
         let on_ball = self.frame * Vector2::new(p3, p1); // flight-frame impulse
         // Eq. (8): r × p about ẑ is −r_b·p1 for the ball (r = −r_b n3) and,
         // for the bat, r_B n3 × (−p) = −r_B·p1 as well.
-        let ball_velocity = self.ball_velocity_before + on_ball / self.ball_mass;
-        let ball_spin = self.ball_spin_before - self.ball_radius * p1 / self.ball_inertia;
-        let bat_velocity = self.bat_velocity_before - on_ball / self.bat_mass;
-        let bat_spin = self.bat_spin_before - self.bat_radius * p1 / self.bat_inertia;
+        let ball_velocity = self.ball_velocity_before + on_ball / self.bodies.ball_mass;
+        let ball_spin =
+            self.ball_spin_before - self.bodies.ball_radius * p1 / self.bodies.ball_inertia;
+        let bat_velocity = self.bat_velocity_before - on_ball / self.bodies.bat_mass;
+        let bat_spin = self.bat_spin_before - self.bodies.bat_radius * p1 / self.bodies.bat_inertia;
         ContactState {
             impulse,
             tangential_impulse: p1,
@@ -250,10 +233,10 @@ impl Impact {
     /// Kinetic energy of ball and bat (translation of the bat's equivalent
     /// mass plus its roll), for the energy check.
     pub fn kinetic_energy(&self, state: &ContactState) -> f64 {
-        0.5 * self.ball_mass * state.ball_velocity.norm_squared()
-            + 0.5 * self.ball_inertia * state.ball_spin.powi(2)
-            + 0.5 * self.bat_mass * state.bat_velocity.norm_squared()
-            + 0.5 * self.bat_inertia * state.bat_spin.powi(2)
+        0.5 * self.bodies.ball_mass * state.ball_velocity.norm_squared()
+            + 0.5 * self.bodies.ball_inertia * state.ball_spin.powi(2)
+            + 0.5 * self.bodies.bat_mass * state.bat_velocity.norm_squared()
+            + 0.5 * self.bodies.bat_inertia * state.bat_spin.powi(2)
     }
 }
 

@@ -23,7 +23,7 @@ use nalgebra::{Vector2, Vector3};
 
 use super::geometry::{BatFrame, ContactFrame};
 use super::slip::Slip;
-use super::{Regime, Stop, normal_phase, pair_mass, stops};
+use super::{Bodies, Regime, Stop, normal_phase, stops};
 use crate::model::frame;
 use crate::model::pitch;
 use crate::model::scene::Scene;
@@ -76,14 +76,9 @@ pub struct Impact3d {
     pub descent_angle: f64,
     /// n1, n2 (along the bat), n3 in the flight frame, and the bat's frame.
     pub frame: ContactFrame,
-    /// m (Eq. 11).
-    pub pair_mass: f64,
-    /// β1 of Eq. (13), across the bat: the ball's roll and the bat's.
-    pub beta1: f64,
-    /// The same along the bat (n2), where the bat cannot roll: only the
-    /// ball's. Eq. (12)'s other elements vanish (the contact points lie on
-    /// the line of centres).
-    pub beta_axial: f64,
+    /// Masses, radii, inertias, m (Eq. 11), β1 across the bat and β_a
+    /// along it (Eq. 13 in space).
+    pub bodies: Bodies,
     /// μ.
     pub friction: f64,
     /// s(0) = (v1(0), v2(0)) and v3(0) (Eq. 16 in space).
@@ -101,12 +96,6 @@ pub struct Impact3d {
     pub bat_roll_before: f64,
     /// Ball and bat at separation.
     pub after: Contact3d,
-    pub ball_mass: f64,
-    pub ball_radius: f64,
-    pub ball_inertia: f64,
-    pub bat_mass: f64,
-    pub bat_radius: f64,
-    pub bat_inertia: f64,
     slip: Slip,
 }
 
@@ -128,14 +117,15 @@ impl Impact3d {
         // Fig. 9's positive roll adds backspin: it turns about −n2.
         let bat_roll_before = -bat.spin;
 
-        let ball_inertia = ball.mass * ball.gyration_radius.powi(2);
-        let bat_inertia = bat.effective_mass * bat.gyration_radius.powi(2);
-        let pair_mass = pair_mass(ball.mass, bat.effective_mass);
-        // Eq. (13) with r_b = −r_b·n3 and r_B = r_B·n3: the ball rolls under
-        // either tangential impulse, the bat only under one across it.
-        let ball_roll = pair_mass * ball.radius.powi(2) / ball_inertia;
-        let beta1 = 1.0 + ball_roll + pair_mass * bat.radius.powi(2) / bat_inertia;
-        let beta_axial = 1.0 + ball_roll;
+        // Eq. (13) in space: the ball rolls under either tangential
+        // impulse, the bat only under one across it.
+        let bodies = Bodies::of(scene);
+        let Bodies {
+            pair_mass,
+            beta1,
+            beta_axial,
+            ..
+        } = bodies;
 
         // Eq. (9)–(10): the contact points' velocities, V̂ + ω × r.
         let to_ball_contact = frame.n3 * -ball.radius;
@@ -168,9 +158,7 @@ impl Impact3d {
             normal_angle,
             descent_angle,
             frame,
-            pair_mass,
-            beta1,
-            beta_axial,
+            bodies,
             friction: bat.friction,
             initial_slip,
             initial_approach,
@@ -183,12 +171,6 @@ impl Impact3d {
             bat_velocity_before,
             bat_roll_before,
             after: before,
-            ball_mass: ball.mass,
-            ball_radius: ball.radius,
-            ball_inertia,
-            bat_mass: bat.effective_mass,
-            bat_radius: bat.radius,
-            bat_inertia,
             slip,
         };
         impact.after = impact.at(separation_impulse);
@@ -201,10 +183,10 @@ impl Impact3d {
         // ds = m⁻¹·diag(β1, β_a)·dp_t, so the tangential impulse so far is
         // read off the slip lost (exactly 0 without friction).
         let s0 = self.initial_slip;
-        let m = self.pair_mass;
+        let m = self.bodies.pair_mass;
         let tangential = Vector2::new(
-            m * (slip.x - s0.x) / self.beta1,
-            m * (slip.y - s0.y) / self.beta_axial,
+            m * (slip.x - s0.x) / self.bodies.beta1,
+            m * (slip.y - s0.y) / self.bodies.beta_axial,
         );
         let (p1, p2) = (tangential.x, tangential.y);
         let f = &self.frame;
@@ -212,16 +194,17 @@ impl Impact3d {
         // Eq. (8): r × p for the ball (r = −r_b·n3) is −r_b(p1·n2 − p2·n1);
         // the bat's roll takes the n2 part of r_B·n3 × (−p), −r_B·p1. The
         // normal impulse has no moment about either centre.
-        let ball_turn = (f.n1 * p2 - f.n2 * p1) * (self.ball_radius / self.ball_inertia);
+        let ball_turn =
+            (f.n1 * p2 - f.n2 * p1) * (self.bodies.ball_radius / self.bodies.ball_inertia);
         Contact3d {
             impulse,
             tangential_impulse: tangential,
             slip,
             normal_velocity: self.initial_approach + impulse / m,
-            ball_velocity: self.ball_velocity_before + on_ball / self.ball_mass,
+            ball_velocity: self.ball_velocity_before + on_ball / self.bodies.ball_mass,
             ball_spin: self.ball_spin_before + ball_turn,
-            bat_velocity: self.bat_velocity_before - on_ball / self.bat_mass,
-            bat_roll: self.bat_roll_before - self.bat_radius * p1 / self.bat_inertia,
+            bat_velocity: self.bat_velocity_before - on_ball / self.bodies.bat_mass,
+            bat_roll: self.bat_roll_before - self.bodies.bat_radius * p1 / self.bodies.bat_inertia,
         }
     }
 
@@ -310,9 +293,9 @@ impl Impact3d {
 
     /// Kinetic energy of ball and bat (the bat's effective mass and roll).
     pub fn kinetic_energy(&self, state: &Contact3d) -> f64 {
-        0.5 * self.ball_mass * state.ball_velocity.norm_squared()
-            + 0.5 * self.ball_inertia * state.ball_spin.norm_squared()
-            + 0.5 * self.bat_mass * state.bat_velocity.norm_squared()
-            + 0.5 * self.bat_inertia * state.bat_roll.powi(2)
+        0.5 * self.bodies.ball_mass * state.ball_velocity.norm_squared()
+            + 0.5 * self.bodies.ball_inertia * state.ball_spin.norm_squared()
+            + 0.5 * self.bodies.bat_mass * state.bat_velocity.norm_squared()
+            + 0.5 * self.bodies.bat_inertia * state.bat_roll.powi(2)
     }
 }

@@ -1,0 +1,295 @@
+"""Independent reference for the bat-ball impact in three dimensions: a bat
+tilted (barrel below the hands), swung toward any direction, by a right- or
+left-handed batter (docs/swing-3d.md, shared/DESIGN.md "Three dimensions").
+
+Written from the physics, apart from the Rust core, in the most literal form:
+  - the geometry by rotation matrices: a right-handed batter's level, square
+    bat lies along +z; tilt it by tau about the direction of its motion, turn
+    it by phi about the vertical; a left-handed batter is that bat, swung
+    toward -phi, reflected in z;
+  - the bodies as full rigid-body vectors in the flight frame (ball velocity
+    and spin, bat velocity and spin), with the bat's inverse inertia
+    a a^T / (M_B k_B2^2) (it rolls about its own axis only) and its point on
+    the axis moving with the effective mass M_B in every direction;
+  - the collision integrated over the normal impulse p with scipy's
+    solve_ivp (DOP853, rtol = atol = 1e-13), the impulse increment
+    dP = (n3 - mu s_hat) dp with s_hat the unit sliding velocity of the
+    contact points (V + omega x r, Eq. 9-10) while they slide; when the slip
+    falls below 1e-11 of its start (an event), the contact sticks if the
+    tangential impulse that keeps it stuck, from the inverse-inertia matrix
+    built numerically, is within mu of the normal one, and slides on if not;
+  - the end of contact from the energetic definition of e* (Stronge, as the
+    paper): compression ends where the normal relative velocity vanishes
+    (an event); restitution ends where the normal force has given back
+    e*^2 of the work it took in compression, e* from Eq. (19) in the
+    approach speed. No closed form for p_c or p_f is used.
+The Rust core instead solves the slip in tau = int dp/|s| (closed-form
+exponentials) and integrates p(tau) with DOPRI5.
+
+    python3 reference/impact3d.py > tests/data/impact3d_reference.csv
+"""
+import math
+import random
+import sys
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from model import G, K_BALL, K_BAT, M_BAT, MB_BALL, R_BALL, R_BAT, pitch
+
+RTOL = ATOL = 1e-13
+STUCK = 1e-11  # the slip, relative to its start, that counts as halted
+
+
+def rot_x(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
+
+
+def rot_y(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+
+
+MIRROR = np.diag([1.0, 1.0, -1.0])
+
+
+def bat_frame(tilt, direction, hand):
+    """(axis hands->barrel, up square to it, the horizontal it moves along)."""
+    if hand == "left":
+        axis, up, forward = bat_frame(tilt, -direction, "right")
+        return MIRROR @ axis, MIRROR @ up, MIRROR @ forward
+    # Tilt about x (the direction of motion): +z goes down toward -y; then
+    # turn about y so that x goes to (cos phi, 0, sin phi).
+    turn = rot_y(-direction) @ rot_x(tilt)
+    return turn @ np.array([0.0, 0.0, 1.0]), turn @ np.array([0.0, 1.0, 0.0]), turn @ np.array(
+        [1.0, 0.0, 0.0]
+    )
+
+
+def impact(case):
+    hand = case["hand"]
+    axis, up, forward = bat_frame(case["tilt"], case["direction"], hand)
+    theta = math.asin(case["undercut"] / (R_BALL + R_BAT))
+    n3 = math.cos(theta) * forward + math.sin(theta) * up
+    # The paper's frame: n2 along the bat (+z for either hand at a square,
+    # level contact), n1 = n2 x n3.
+    n2 = axis if hand == "right" else -axis
+    n1 = np.cross(n2, n3)
+
+    speed, spin = case["pitch_speed"], case["pitch_spin"]
+    _, gamma = pitch(speed, G)
+    vb0 = np.array([-speed * math.cos(gamma), -speed * math.sin(gamma), 0.0])
+    wb0 = np.array([0.0, 0.0, spin])
+    psi = case["swing_angle"]
+    vB0 = case["bat_speed"] * (math.cos(psi) * forward + math.sin(psi) * np.array([0.0, 1.0, 0.0]))
+    # Fig. 9's positive roll adds backspin: about -n2.
+    wB0 = -case["bat_spin"] * n2
+
+    r_ball = -R_BALL * n3  # centre of the ball -> contact point
+    r_bat = R_BAT * n3  # the bat's axis -> contact point
+    i_ball = MB_BALL * K_BALL**2
+    i_bat = M_BAT * K_BAT**2
+    mu = case["friction"]
+
+    def unpack(y):
+        return y[0:3], y[3:6], y[6:9], y[9:12]
+
+    def relative(y):
+        vb, wb, vB, wB = unpack(y)
+        return vb + np.cross(wb, r_ball) - vB - np.cross(wB, r_bat)
+
+    def apply(y, dP):
+        """d(state) for an impulse dP on the ball (-dP on the bat)."""
+        return np.concatenate(
+            [
+                dP / MB_BALL,
+                np.cross(r_ball, dP) / i_ball,
+                -dP / M_BAT,
+                axis * np.dot(axis, np.cross(r_bat, -dP)) / i_bat,
+            ]
+        )
+
+    # The inverse-inertia matrix at the contact, column by column.
+    y_any = np.zeros(12)
+    K = np.column_stack([relative(apply(y_any, e)) - relative(y_any) for e in np.eye(3)])
+
+    def tangential(v):
+        return v - np.dot(v, n3) * n3
+
+    s0 = np.linalg.norm(tangential(relative(np.concatenate([vb0, wb0, vB0, wB0]))))
+
+    def rhs_slip(p, y):
+        v = relative(y[:12])
+        t = tangential(v)
+        dP = n3 - mu * t / np.linalg.norm(t)
+        return np.concatenate([apply(y, dP), [np.dot(v, n3)]])
+
+    # Sticking: the tangential impulse rate that keeps dv_t = 0, solved in
+    # the tangent plane's basis (n1, n2).
+    basis = np.column_stack([n1, n2])
+    Ktt = basis.T @ K @ basis
+    Ktn = basis.T @ K @ n3
+    stick_rate = -np.linalg.solve(Ktt, Ktn)  # d(p1, p2)/dp
+    sticks = np.linalg.norm(stick_rate) <= mu
+
+    def rhs_stick(p, y):
+        v = relative(y[:12])
+        dP = n3 + basis @ stick_rate
+        return np.concatenate([apply(y, dP), [np.dot(v, n3)]])
+
+    y = np.concatenate([vb0, wb0, vB0, wB0, [0.0]])
+    approach = np.dot(relative(y[:12]), n3)
+    restitution = 0.540 - (abs(approach) - 26.8) / 400.0
+
+    # No slip at all: stuck from the start.
+    state = {"p": 0.0, "y": y, "stuck": s0 == 0.0, "halt": 0.0 if s0 == 0.0 else None}
+
+    def run(until, event):
+        """Integrates from the current state, stopping at `event` (or at the
+        halt of slip, which switches to sticking)."""
+        while state["p"] < until:
+            slipping = not state["stuck"]
+            rhs = rhs_slip if slipping else rhs_stick
+            events = [event] if event else []
+            if slipping and mu > 0:
+
+                def halt(p, y):
+                    return np.linalg.norm(tangential(relative(y[:12]))) - STUCK * s0
+
+                halt.terminal, halt.direction = True, -1
+                events.append(halt)
+            sol = solve_ivp(
+                rhs, (state["p"], until), state["y"], method="DOP853",
+                rtol=RTOL, atol=ATOL, events=events or None, dense_output=True,
+            )
+            if sol.status == 1:
+                fired = [k for k, t in enumerate(sol.t_events) if len(t)]
+                k = min(fired, key=lambda k: sol.t_events[k][0])
+                p_event = sol.t_events[k][0]
+                state["p"], state["y"] = p_event, sol.y_events[k][0]
+                if event and k == 0:
+                    return True
+                # The slip halted.
+                state["halt"] = p_event
+                state["stuck"] = sticks
+                if not sticks:
+                    raise RuntimeError("slip halts but mu is below the stick coefficient")
+                continue
+            state["p"], state["y"] = until, sol.y[:, -1]
+            return False
+        return False
+
+    # Compression: to v3 = 0.
+    def compressed(p, y):
+        return np.dot(relative(y[:12]), n3)
+
+    compressed.terminal, compressed.direction = True, 1
+    if approach < 0:
+        run(1e3, compressed)
+    p_c = state["p"]
+    work_in = state["y"][12]  # < 0
+
+    def restored(p, y):
+        return (y[12] - work_in) + restitution**2 * work_in
+
+    restored.terminal, restored.direction = True, 1
+    if approach < 0:
+        run(1e3, restored)
+    p_f = state["p"]
+    vb, wb, _, _ = unpack(state["y"][:12])
+
+    # The slip's direction halfway to where it halts or the ball leaves.
+    p_half = 0.5 * min(state["halt"] if state["halt"] is not None else math.inf, p_f)
+    half = solve_ivp(
+        rhs_slip, (0.0, p_half), np.concatenate([vb0, wb0, vB0, wB0, [0.0]]),
+        method="DOP853", rtol=RTOL, atol=ATOL,
+    ).y[:, -1] if p_half > 0 and mu > 0 else np.concatenate([vb0, wb0, vB0, wB0, [0.0]])
+    v_half = relative(half[:12])
+    slip_angle = math.atan2(np.dot(v_half, n2), np.dot(v_half, n1))
+
+    launch_speed = np.linalg.norm(vb)
+    angle = math.atan2(vb[1], math.hypot(vb[0], vb[2]))
+    direction = math.atan2(vb[2], vb[0])
+    back_axis = np.array([-math.sin(direction), 0.0, math.cos(direction)])
+    side_axis = np.array(
+        [
+            math.sin(angle) * math.cos(direction),
+            -math.cos(angle),
+            math.sin(angle) * math.sin(direction),
+        ]
+    )
+    return {
+        "launch_speed": launch_speed,
+        "launch_angle": angle,
+        "launch_direction": direction,
+        "backspin": np.dot(wb, back_axis),
+        "sidespin": np.dot(wb, side_axis),
+        "gyrospin": np.dot(wb, vb) / launch_speed,
+        "regime": "stick" if state["halt"] is not None and state["halt"] < p_f else "slip",
+        "stick_impulse": state["halt"] if state["halt"] is not None and state["halt"] < p_f else math.nan,
+        "separation_impulse": p_f,
+        "compression_impulse": p_c,
+        "slip_angle_half": slip_angle,
+        "coupling": np.linalg.norm(Ktn),
+    }
+
+
+INPUTS = [
+    "hand", "tilt", "direction", "undercut", "swing_angle", "friction",
+    "pitch_speed", "pitch_spin", "bat_speed", "bat_spin",
+]
+OUTPUTS = [
+    "launch_speed", "launch_angle", "launch_direction", "backspin", "sidespin", "gyrospin",
+    "regime", "stick_impulse", "compression_impulse", "separation_impulse", "slip_angle_half",
+]
+
+
+def cases():
+    # Representative swings first: the fastball at Table II's swing with the
+    # barrel 30 degrees down, square, pulled and late, both hands.
+    fast = dict(undercut=0.0265, swing_angle=0.1594, friction=0.5,
+                pitch_speed=42.0, pitch_spin=-200.0, bat_speed=30.0, bat_spin=0.0)
+    out = []
+    for direction in (0.0, -0.349, 0.349):
+        for hand in ("right", "left"):
+            out.append(dict(fast, hand=hand, tilt=0.5236, direction=direction))
+    # The rest drawn across the keys' bounds, with low friction often enough
+    # to slide through separation, and some topspin and bat roll.
+    rng = random.Random(17)
+    while len(out) < 32:
+        mu = rng.choice([0.0, 0.05, 0.1, 0.2, 0.35, 0.5, 0.8])
+        out.append(dict(
+            hand=rng.choice(["right", "left"]),
+            tilt=round(rng.uniform(-1.0, 1.0), 4),
+            direction=round(rng.uniform(-1.0, 1.0), 4),
+            undercut=round(rng.uniform(-0.06, 0.06), 5),
+            swing_angle=round(rng.uniform(-0.5, 0.8), 4),
+            friction=mu,
+            pitch_speed=round(rng.uniform(30.0, 45.0), 2),
+            pitch_spin=round(rng.uniform(-300.0, 300.0), 1),
+            bat_speed=round(rng.uniform(20.0, 40.0), 2),
+            bat_spin=round(rng.choice([0.0, rng.uniform(-60.0, 60.0)]), 1),
+        ))
+    return out
+
+
+def main():
+    print("# generated by: python3 reference/impact3d.py > tests/data/impact3d_reference.csv")
+    print("# angles and directions in rad (0 centre field, positive toward right field), spins in")
+    print("# rad/s, impulses in N*s; stick_impulse is nan where the contact slips to separation;")
+    print("# slip_angle_half is atan2(v2, v1) halfway to the halt or the separation")
+    print(",".join(INPUTS + OUTPUTS))
+    worst = 0.0
+    for case in cases():
+        result = impact(case)
+        worst = max(worst, result["coupling"])
+        row = [str(case[k]) for k in INPUTS] + [
+            result[k] if isinstance(result[k], str) else repr(float(result[k])) for k in OUTPUTS
+        ]
+        print(",".join(row))
+    print(f"largest normal-tangential coupling |K_tn| = {worst:.3e} 1/kg", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
