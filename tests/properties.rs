@@ -123,7 +123,7 @@ proptest! {
         s.environment.contact_height = height;
         s.environment.wind = wind;
         let swing = simulate(&s, Purpose::Readout);
-        let v = swing.impact.after.ball_velocity;
+        let v = swing.impact.launch_velocity();
         let g = s.environment.gravity;
         let time = (v.y + (v.y * v.y + 2.0 * g * height).sqrt()) / g;
         prop_assert!(swing.flight.landed);
