@@ -1,5 +1,6 @@
 //! `homerun hit --json` over random accepted scenes (proptest): every key of
-//! `KEYS` drawn anywhere within its bounds, and the drag model, keeping the
+//! `KEYS` and the 3-D swing's (`bat.tilt`, `bat.direction`) drawn anywhere
+//! within its bounds, the hand and the drag model, keeping the
 //! scenes that `validate()` accepts. Whatever the scene, every number is
 //! finite, a null stands only where it means something (no stick, no
 //! landing), and a flight either lands or says why not. Rendered through the
@@ -11,13 +12,22 @@ use clap::Parser as _;
 use homerun::Scene;
 use homerun::cli::{self, Cli};
 use homerun::model::aero::DragModel;
-use homerun::model::keys::KEYS;
+use homerun::model::keys::{EXTENDED_KEYS, KEYS, Key, SWING_3D_KEYS};
 use proptest::prelude::*;
 use serde_json::Value;
 
+/// The keys drawn: the paper's and the 3-D swing's numbers.
+fn drawn() -> impl Iterator<Item = &'static Key> {
+    KEYS.iter().chain(
+        EXTENDED_KEYS
+            .iter()
+            .filter(|k| SWING_3D_KEYS.contains(&k.name)),
+    )
+}
+
 /// Each key's accepted range (an excluded minimum nudged up by one ulp).
 fn bounds() -> Vec<RangeInclusive<f64>> {
-    KEYS.iter()
+    drawn()
         .map(|k| {
             let min = if k.bounds.min_exclusive {
                 k.bounds.min.next_up()
@@ -31,22 +41,22 @@ fn bounds() -> Vec<RangeInclusive<f64>> {
 
 /// Accepted scenes, as `--set` arguments.
 fn scenes() -> impl Strategy<Value = Vec<String>> {
-    (bounds(), 0..DragModel::ALL.len()).prop_filter_map(
+    (bounds(), 0..DragModel::ALL.len(), any::<bool>()).prop_filter_map(
         "not accepted by validate()",
-        |(values, drag)| {
+        |(values, drag, left)| {
             let mut scene = Scene::default();
-            for (key, &value) in KEYS.iter().zip(&values) {
+            for (key, &value) in drawn().zip(&values) {
                 (key.set)(&mut scene, value);
             }
             scene.drag = DragModel::ALL[drag];
             scene.validate().ok()?;
-            let mut sets: Vec<String> = KEYS
-                .iter()
+            let mut sets: Vec<String> = drawn()
                 .zip(&values)
                 // `{}` is the shortest text that reads back as the same number.
                 .map(|(key, value)| format!("{}={value}", key.name))
                 .collect();
             sets.push(format!("model.drag={}", DragModel::ALL[drag].name()));
+            sets.push(format!("bat.hand={}", if left { "left" } else { "right" }));
             Some(sets)
         },
     )
@@ -82,6 +92,11 @@ fn leaves<'a>(value: &'a Value, path: String, out: &mut Vec<(String, &'a Value)>
                     format!("{path}.{key}")
                 };
                 leaves(v, path, out);
+            }
+        }
+        Value::Array(items) => {
+            for (k, v) in items.iter().enumerate() {
+                leaves(v, format!("{path}[{k}]"), out);
             }
         }
         _ => out.push((path, value)),

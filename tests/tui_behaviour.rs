@@ -553,9 +553,13 @@ fn every_key_is_offered_and_the_weather_derives_the_air() {
         );
     }
     assert!(app.fields.contains(&Field::Drag) && app.fields.contains(&Field::Lift));
-    // Each group is listed once.
+    assert!(app.fields.contains(&Field::Hand));
+    // Each group is listed once, the swing beyond the paper's plane last.
     let headers = app.input_lines().iter().filter(|l| l.is_none()).count();
-    assert_eq!(headers, 5, "pitch, bat, ball, environment, model");
+    assert_eq!(
+        headers, 6,
+        "pitch, bat, ball, environment, model, 3-D swing"
+    );
 
     select(&mut app, "environment.temperature");
     key(&mut app, KeyCode::Enter);
@@ -686,7 +690,15 @@ fn b_flies_the_swings_launch_on_its_own_and_back() {
     assert_eq!(app.flown.flight.range, range);
     assert_eq!(
         groups(&app),
-        ["", "pitch", "bat", "ball", "environment", "model"]
+        [
+            "",
+            "pitch",
+            "bat",
+            "ball",
+            "environment",
+            "model",
+            "3-D swing"
+        ]
     );
     assert!(screen(&app).contains("swing · "));
 }
@@ -944,4 +956,23 @@ fn an_optimum_that_lands_only_at_the_optimisers_precision_is_tagged() {
     assert!(!optimum.lands_at_readout, "{optimum:?}");
     let screen = screen(&app);
     assert!(screen.contains("(readout: does not land)"), "{screen}");
+}
+
+#[test]
+fn the_3d_swing_is_offered_and_a_left_handed_batter_mirrors_the_flight() {
+    use homerun::model::scene::Hand;
+    let mut app = app(80, 24, None);
+    // A tilted bat swung late: the ball flies toward right field.
+    set_and_settle(&mut app, "bat.tilt", "0.5");
+    set_and_settle(&mut app, "bat.direction", "0.2");
+    let right = app.flown.flight;
+    assert!(right.direction > 0.0, "{right:?}");
+    // The hand, a named input like the models, cycles with l.
+    app.selected = app.fields.iter().position(|f| *f == Field::Hand).unwrap();
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.scene.bat.hand, Hand::Left);
+    // A left-handed batter swinging toward −φ_B is the mirror image.
+    set_and_settle(&mut app, "bat.direction", "-0.2");
+    assert_eq!(app.flown.flight.range, right.range);
+    assert_eq!(app.flown.flight.direction, -right.direction);
 }

@@ -47,8 +47,10 @@ pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
             "launch_gyrospin": impact.launch_gyrospin(),
         });
         if let Some(spatial) = impact.spatial() {
-            impact_json["initial_slip"] =
-                serde_json::json!([spatial.initial_slip.x, spatial.initial_slip.y]);
+            impact_json["initial_slip"] = serde_json::json!({
+                "across": spatial.initial_slip.x,
+                "along": spatial.initial_slip.y,
+            });
             impact_json["slip_turn"] = serde_json::json!(spatial.slip_turn(SLIP_SAMPLES));
         }
         return pretty(&serde_json::json!({

@@ -25,7 +25,7 @@ use crate::analysis::precision::Purpose;
 use crate::analysis::sensitivity;
 use crate::analysis::study::{Grid, Surface};
 use crate::model::aero::{DragModel, LiftModel};
-use crate::model::keys::{DRAG_KEY, HAND_KEY, LIFT_KEY};
+use crate::model::keys::{DRAG_KEY, HAND_KEY, LIFT_KEY, SWING_3D_KEYS};
 use crate::model::launch::{Flown, SceneKind, fly_scene, height_at_distance, scene_start};
 use crate::model::scene::{Hand, Scene};
 use crate::preset::{self, Fence, Preset};
@@ -51,29 +51,35 @@ pub enum Field {
     Hand,
 }
 
+/// The inputs pane's group of the swing in three dimensions.
+const SWING_3D: &str = "3-D swing";
+
 impl Field {
     /// The group it is listed under in the inputs pane.
     pub fn group(self) -> &'static str {
         match self {
             Field::Preset => "",
+            // The swing beyond the paper's plane, on its own after the
+            // paper's inputs (as docs/swing-3d.md describes it).
+            Field::Key(k) if SWING_3D_KEYS.contains(&input_key(k).name) => SWING_3D,
             Field::Key(k) => input_key(k).name.split('.').next().unwrap_or(""),
             Field::Drag | Field::Lift => "model",
-            Field::Hand => "bat",
+            Field::Hand => SWING_3D,
         }
     }
 }
 
 /// Every row of the inputs pane for a scene of `kind`, top to bottom: each
-/// group once (the weather after the paper's environment keys, the models
-/// last).
+/// group once (the weather after the paper's environment keys, then the
+/// models, and last the swing in three dimensions).
 pub fn fields(kind: SceneKind) -> Vec<Field> {
     let mut all = vec![Field::Preset];
     all.extend(scene_inputs(kind).into_iter().map(Field::Key));
+    all.extend([Field::Drag, Field::Lift]);
     // A batted ball has no bat.
     if kind == SceneKind::Swing {
         all.push(Field::Hand);
     }
-    all.extend([Field::Drag, Field::Lift]);
     let mut groups: Vec<&str> = Vec::new();
     for field in &all {
         if !groups.contains(&field.group()) {

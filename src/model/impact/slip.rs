@@ -6,17 +6,21 @@
 //! the bat, where the bat's roll adds to the ball's; β_a along it, where
 //! only the ball rolls):
 //!
-//!     ds/dp = −(μ/m)·diag(β1, β_a)·s/|s|.
+//! ```text
+//! ds/dp = −(μ/m)·diag(β1, β_a)·s/|s|
+//! ```
 //!
 //! With β1 > β_a the part across the bat dies faster, so the slip turns
 //! toward the bat's axis as it slows. In p the turn rate grows as 1/|s| near
-//! the halt, where an integrator in p would crawl; in τ = ∫dp/|s| the slip
-//! is exact, v1 = v1(0)·e^(−k1·τ), v2 = v2(0)·e^(−k2·τ) with k = μβ/m, and
-//! only p(τ) = ∫|s|dτ is left, a smooth integral of decaying exponentials.
-//! Scaled (T = k2·τ, P = k2·p/|s(0)|, r = β1/β_a ≥ 1, â and b̂ the initial
+//! the halt, where an integrator in p would crawl; in σ = ∫dp/|s| the slip
+//! is exact, v1 = v1(0)·e^(−k1·σ), v2 = v2(0)·e^(−k2·σ) with k = μβ/m, and
+//! only p(σ) = ∫|s|dσ is left, a smooth integral of decaying exponentials.
+//! Scaled (T = k2·σ, P = k2·p/|s(0)|, r = β1/β_a ≥ 1, â and b̂ the initial
 //! slip's direction cosines squared):
 //!
-//!     dP/dT = √(â·e^(−2rT) + b̂·e^(−2T)),
+//! ```text
+//! dP/dT = √(â·e^(−2rT) + b̂·e^(−2T))
+//! ```
 //!
 //! which is integrated with the crate's Dormand–Prince pair, the event
 //! P = P_f found on its continuous extension. The slip halts at
@@ -40,7 +44,7 @@ const TOLERANCE: f64 = 1e-14;
 pub struct Slip {
     /// s(0) = (v1(0), v2(0)) (m/s).
     pub initial: Vector2<f64>,
-    /// k2 = μ·β_a/m (1/kg), the slower decay rate in τ (kg); 0 without
+    /// k2 = μ·β_a/m (1/kg), the slower decay rate in σ (kg); 0 without
     /// friction.
     rate: f64,
     /// r = β1/β_a.

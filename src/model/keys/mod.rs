@@ -20,7 +20,7 @@ mod table;
 pub use batch::InputBatch;
 pub use table::{
     AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, EXTENDED_KEYS, HAND_KEY, KEYS, LAUNCH_KEYS, LIFT_KEY,
-    TEXT_KEYS, all_keys, swing_keys,
+    SWING_3D_KEYS, TEXT_KEYS, all_keys, swing_keys,
 };
 
 /// A closed or half-open interval of accepted values.

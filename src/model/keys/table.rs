@@ -119,7 +119,7 @@ pub const KEYS: &[Key] = &[
         "bat.undercut",
         "E",
         "m",
-        "undercut: ball centre above bat axis",
+        "undercut: ball centre above bat axis (square to a tilted bat)",
         Bounds::closed(-0.4, 0.4),
         0.0005,
         bat.undercut
@@ -132,30 +132,6 @@ pub const KEYS: &[Key] = &[
         Bounds::closed(-FRAC_PI_2, FRAC_PI_2),
         0.01,
         bat.swing_angle
-    ),
-    // ±60°: measured barrels sit 25–35° below the hands in big-league
-    // swings and −29.6 ± 8.7° in elite softball (docs/swing-3d.md), and
-    // low and high pitches take them further; toward ±90° the bat stands
-    // upright, where "above the axis" (E) loses its meaning.
-    key!(
-        "bat.tilt",
-        "τ",
-        "rad",
-        "barrel below the hands at contact (0: the paper's level bat)",
-        Bounds::closed(-FRAC_PI_3, FRAC_PI_3),
-        0.02,
-        bat.tilt
-    ),
-    // ±60°: beyond the foul lines (±45°) with room for a pulled or late
-    // swing; a bat moving more sideways meets the pitch nearly edge-on.
-    key!(
-        "bat.direction",
-        "φ_B",
-        "rad",
-        "bat velocity's horizontal direction: 0 centre field, positive toward right field",
-        Bounds::closed(-FRAC_PI_3, FRAC_PI_3),
-        0.02,
-        bat.direction
     ),
     key!(
         "bat.friction",
@@ -305,8 +281,10 @@ pub const KEYS: &[Key] = &[
     ),
 ];
 
-/// The inputs beyond the paper, from Alan Nathan's trajectory calculator:
-/// the spin's decay and the weather. Kept apart from [`KEYS`] while the
+/// The inputs beyond the paper: from Alan Nathan's trajectory calculator,
+/// the spin's decay and the weather; and the swing in three dimensions, the
+/// bat's tilt and direction (with `bat.hand`, [`SWING_3D_KEYS`];
+/// docs/swing-3d.md). Kept apart from [`KEYS`] while the
 /// explorer's rows, a saved preset's lines and `homerun keys` are built from
 /// that table alone; `Scene::key`, `Scene::set` and `Scene::validate` take
 /// both (see [`all_keys`]).
@@ -369,6 +347,30 @@ pub const EXTENDED_KEYS: &[Key] = &[
         Bounds::closed(0.0, 100.0),
         5.0,
         humidity
+    ),
+    // ±60°: measured barrels sit 25–35° below the hands in big-league
+    // swings and −29.6 ± 8.7° in elite softball (docs/swing-3d.md), and
+    // low and high pitches take them further; toward ±90° the bat stands
+    // upright, where "above the axis" (E) loses its meaning.
+    key!(
+        "bat.tilt",
+        "τ_B",
+        "rad",
+        "barrel below the hands at contact (0: the paper's level bat)",
+        Bounds::closed(-FRAC_PI_3, FRAC_PI_3),
+        0.02,
+        bat.tilt
+    ),
+    // ±60°: beyond the foul lines (±45°) with room for a pulled or late
+    // swing; a bat moving more sideways meets the pitch nearly edge-on.
+    key!(
+        "bat.direction",
+        "φ_B",
+        "rad",
+        "bat velocity's horizontal direction: 0 centre field, positive toward right field",
+        Bounds::closed(-FRAC_PI_3, FRAC_PI_3),
+        0.02,
+        bat.direction
     ),
 ];
 
@@ -467,3 +469,7 @@ pub use crate::model::scene::HAND_KEY;
 
 /// Every key that takes a name rather than a number.
 pub const TEXT_KEYS: [&str; 3] = [DRAG_KEY, LIFT_KEY, HAND_KEY];
+
+/// The keys that take the swing out of the paper's plane: with the first
+/// two at 0 the swing is the paper's, whatever the hand.
+pub const SWING_3D_KEYS: [&str; 3] = ["bat.tilt", "bat.direction", HAND_KEY];
