@@ -10,7 +10,6 @@ mod common;
 use common::Row;
 use homerun::Scene;
 use homerun::model::impact::{Collision, Impact, Impact3d, Regime};
-use homerun::model::keys::KEYS;
 use homerun::model::launch::{BattedBall, fly_scene};
 use homerun::model::scene::Hand;
 use homerun::{Purpose, simulate};
@@ -277,7 +276,7 @@ fn energies(scene: &Scene) -> (f64, Vec<f64>) {
 
 /// Each key's accepted range.
 fn range_of(name: &str) -> std::ops::RangeInclusive<f64> {
-    let key = KEYS.iter().find(|k| k.name == name).expect(name);
+    let key = Scene::key(name).expect(name);
     let min = if key.bounds.min_exclusive {
         key.bounds.min.next_up()
     } else {
@@ -462,4 +461,38 @@ fn an_independent_implementation_agrees_on_varied_3d_impacts() {
     }
     assert!(stuck >= 10 && slid >= 5, "{stuck} stuck, {slid} slid");
     eprintln!("worst scaled disagreement with reference/impact3d.py: {worst:.1e}");
+}
+
+#[test]
+fn the_hand_is_a_named_input_as_the_models_are() {
+    use homerun::preset::{Preset, Source};
+    let text = "[bat]\nhand = \"left\"\ntilt = 0.5\ndirection = -0.3\n";
+    let preset = Preset::parse(text, "lefty", "lefty.toml", Source::Bundled).unwrap();
+    assert_eq!(preset.scene.bat.hand, Hand::Left);
+    assert_eq!(
+        (preset.scene.bat.tilt, preset.scene.bat.direction),
+        (0.5, -0.3)
+    );
+    // A saved preset writes the hand and reads back the same scene.
+    let saved = preset.to_toml();
+    assert!(saved.contains("hand = \"left\""), "{saved}");
+    let again = Preset::parse(&saved, "again", "again.toml", Source::Bundled).unwrap();
+    assert_eq!(again.scene, preset.scene);
+    // Refusals name the key, the value and what is accepted.
+    let wrong = Preset::parse("[bat]\nhand = 3\n", "w", "w.toml", Source::Bundled).unwrap_err();
+    assert_eq!(
+        wrong.to_string(),
+        "w.toml: bat.hand = 3: expected \"right\" or \"left\" in quotes"
+    );
+    let mut scene = Scene::default();
+    let unknown = scene.set_text("bat.hand", "up").unwrap_err();
+    assert_eq!(
+        unknown.to_string(),
+        "bat.hand = \"up\": unknown hand; accepted: right, left"
+    );
+    scene.set_text("bat.tilt", "1.1").unwrap();
+    assert_eq!(
+        scene.validate().unwrap_err().to_string(),
+        "bat.tilt = 1.1: must be a finite number in [-π/3, π/3] rad"
+    );
 }
