@@ -14,6 +14,7 @@ use homerun::model::launch::{BattedBall, fly_scene};
 use homerun::model::scene::Hand;
 use homerun::{Purpose, simulate};
 use proptest::prelude::*;
+use std::f64::consts::FRAC_PI_6;
 
 /// The impact blocks of `homerun hit --json` for Table II's three pitches at
 /// their published swings, as printed before the 3-D impact existed
@@ -146,8 +147,8 @@ fn a_left_handed_batter_is_the_mirror_image_of_a_right_handed_one() {
     for name in ["fastball", "curveball"] {
         let base = common::scene(name);
         for (tilt, direction, undercut, friction) in [
-            (0.5236, 0.349, 0.0265, 0.5),
-            (0.5236, -0.349, 0.0265, 0.5),
+            (FRAC_PI_6, 0.349, 0.0265, 0.5),
+            (FRAC_PI_6, -0.349, 0.0265, 0.5),
             (0.3, 0.0, -0.01, 0.5),
             (-0.4, 0.7, 0.05, 0.1),
             (0.9, -0.9, 0.03, 0.05),
@@ -221,7 +222,7 @@ fn a_barrel_below_the_hands_that_undercuts_slices_toward_the_opposite_field() {
 
 #[test]
 fn the_slip_turns_toward_the_bat_as_it_slows_and_the_step_through_shows_it() {
-    let scene = swing(&common::scene("fastball"), Hand::Right, 0.5236, 0.349);
+    let scene = swing(&common::scene("fastball"), Hand::Right, FRAC_PI_6, 0.349);
     let impact = Impact3d::new(&scene);
     assert_eq!(impact.regime, Regime::Stick);
     let turn = impact.slip_turn(11);
@@ -244,7 +245,7 @@ fn the_slip_turns_toward_the_bat_as_it_slows_and_the_step_through_shows_it() {
 
 #[test]
 fn a_3d_swing_flies_in_3d_and_its_batted_ball_flies_the_same() {
-    let scene = swing(&common::scene("fastball"), Hand::Right, 0.5236, -0.349);
+    let scene = swing(&common::scene("fastball"), Hand::Right, FRAC_PI_6, -0.349);
     let flown = fly_scene(&scene, Purpose::Readout);
     let impact = flown.impact.expect("a swing");
     assert!(impact.spatial().is_some());

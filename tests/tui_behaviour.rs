@@ -975,4 +975,12 @@ fn the_3d_swing_is_offered_and_a_left_handed_batter_mirrors_the_flight() {
     set_and_settle(&mut app, "bat.direction", "-0.2");
     assert_eq!(app.flown.flight.range, right.range);
     assert_eq!(app.flown.flight.direction, -right.direction);
+    // The impact tab steps through the 3-D collision to its last stop.
+    key(&mut app, KeyCode::Char('3'));
+    for _ in 0..8 {
+        key(&mut app, KeyCode::Char('.'));
+    }
+    let shown = screen(&app);
+    assert!(shown.contains("Impact: separation"), "{shown}");
+    assert!(!shown.contains("NaN") && !shown.contains("inf"), "{shown}");
 }

@@ -1,5 +1,6 @@
 //! The paper's model, one file per phase: pitch (Eq. 3–4) → impact
-//! (Eq. 1–2, 5–23) → flight (Eq. 25–29, in the plane or in 3-D), with the
+//! (Eq. 1–2, 5–23, in the plane or, for a tilted or turned bat, in 3-D) →
+//! flight (Eq. 25–29, in the plane or in 3-D), with the
 //! aerodynamic models in `aero`, the air from the weather in `atmosphere`
 //! and the 3-D frame's conventions in `frame`; a batted ball flown from its
 //! launch alone, and which flight a scene needs, in `launch`; the inputs in

@@ -1,7 +1,7 @@
 //! The paper's planar rigid-body bat–ball impact with friction: Eq. (1)–(2),
 //! (5)–(23), after Stronge, solved as functions of the normal impulse p.
 //! A level bat square to the pitch (`bat.tilt` = `bat.direction` = 0) takes
-//! this path; [`super::spatial`] is the same collision in three dimensions.
+//! this path; [`super::Impact3d`] is the same collision in three dimensions.
 //!
 //! Sign conventions (derived once, from first principles, and checked against
 //! all nine launch values of Table II; docs/models.md lists the paper's
@@ -240,6 +240,17 @@ impl Impact {
     }
 }
 
+impl Impact {
+    /// The phases of the collision in order of impulse (paper Fig. 2).
+    pub fn stops(&self) -> Vec<Stop> {
+        stops(
+            self.compression_impulse,
+            self.separation_impulse,
+            self.stick_impulse(),
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -257,16 +268,5 @@ mod tests {
             (impact.after.normal_velocity + impact.restitution * impact.initial_approach).abs()
                 < 1e-9
         );
-    }
-}
-
-impl Impact {
-    /// The phases of the collision in order of impulse (paper Fig. 2).
-    pub fn stops(&self) -> Vec<Stop> {
-        stops(
-            self.compression_impulse,
-            self.separation_impulse,
-            self.stick_impulse(),
-        )
     }
 }
