@@ -166,6 +166,7 @@ fn a_trajectory_draws_every_path_point_and_the_fence() {
         paths: vec![FlightPath {
             name: "now".into(),
             points: points.clone(),
+            ground: Vec::new(),
         }],
         range: Some(120.0),
         apex: 28.69,
@@ -180,7 +181,54 @@ fn a_trajectory_draws_every_path_point_and_the_fence() {
     let text = texts(&svg);
     assert!(text.contains("range 120.00 m, apex 28.69 m"), "{text}");
     assert!(text.contains("fence: 100 m out"), "{text}");
-    assert!(text.contains("x (m)") && text.contains("y (m)"), "{text}");
+    assert!(
+        text.contains("distance from the plate (m)") && text.contains("y (m)"),
+        "{text}"
+    );
+    // No ground track given: no top view.
+    assert!(!text.contains("From above"), "{text}");
+}
+
+#[test]
+fn a_trajectory_with_a_ground_track_draws_the_field_from_above() {
+    // A ball pulled 20° toward left field, curving further: its track, the
+    // fence's arc (91 points) and the two foul lines (2 points each, not
+    // counted by `lines`).
+    let ground: Vec<(f64, f64)> = (0..=30)
+        .map(|k| {
+            let r = f64::from(k) * 4.0;
+            let direction = -0.35 - 0.001 * r;
+            (r * direction.cos(), r * direction.sin())
+        })
+        .collect();
+    let side: Vec<(f64, f64)> = ground
+        .iter()
+        .map(|&(x, z)| (x.hypot(z), 1.0 + x.hypot(z) * (120.0 - x.hypot(z)) / 130.0))
+        .collect();
+    let picture = TrajectoryPicture {
+        preset: "fly-ball".into(),
+        paths: vec![FlightPath {
+            name: "now".into(),
+            points: side.clone(),
+            ground: ground.clone(),
+        }],
+        range: Some(120.0),
+        apex: 28.69,
+        not_landed: None,
+        fence: Some(Fence {
+            distance: 100.0,
+            height: 3.0,
+        }),
+    };
+    let svg = picture::trajectory_svg(&picture).unwrap();
+    let mut drawn = lines(&svg);
+    drawn.sort_unstable();
+    assert_eq!(drawn, vec![side.len(), ground.len(), 91]);
+    let text = texts(&svg);
+    assert!(
+        text.contains("From above") && text.contains("z (m)"),
+        "{text}"
+    );
 }
 
 fn row(method: &'static str, tolerance: Option<f64>, time_us: f64, error: f64) -> TrajectoryRow {

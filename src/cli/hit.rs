@@ -14,6 +14,7 @@ use crate::model::flight::{FlightSummary, TrajectoryPoint};
 use crate::model::impact::Impact;
 use crate::model::keys::{DRAG_KEY, LIFT_KEY, all_keys};
 use crate::model::pitch;
+use crate::model::scene::SceneKind;
 use crate::picture::{self, FlightPath, TrajectoryPicture};
 use crate::preset::Preset;
 use crate::units::{Quantity, Unit};
@@ -207,11 +208,21 @@ pub(super) fn trajectory_svg(preset: &Preset, samples: usize) -> Result<String, 
     let picture = TrajectoryPicture {
         preset: preset.name.clone(),
         paths: vec![FlightPath {
-            name: format!(
-                "E = {} m, ψ = {} rad",
-                preset.scene.bat.undercut, preset.scene.bat.swing_angle
-            ),
-            points: points.iter().map(|p| (p.x, p.y)).collect(),
+            name: match preset.scene.kind {
+                SceneKind::Swing => format!(
+                    "E = {} m, ψ = {} rad",
+                    preset.scene.bat.undercut, preset.scene.bat.swing_angle
+                ),
+                SceneKind::BattedBall => {
+                    let launch = preset.scene.batted_ball();
+                    format!(
+                        "launched at {:.2} m/s, {:.4} rad up, {:.4} rad across",
+                        launch.speed, launch.angle, launch.direction
+                    )
+                }
+            },
+            points: points.iter().map(|p| (p.distance, p.y)).collect(),
+            ground: points.iter().map(|p| (p.x, p.z)).collect(),
         }],
         range: summary.landed.then_some(summary.range),
         apex: summary.apex,

@@ -113,17 +113,20 @@ impl App {
                 let mut paths = vec![FlightPath {
                     name: "now".into(),
                     points: self.path.clone(),
+                    ground: Vec::new(),
                 }];
                 if !self.optimal_path.is_empty() {
                     paths.push(FlightPath {
                         name: "best".into(),
                         points: self.optimal_path.clone(),
+                        ground: Vec::new(),
                     });
                 }
                 if let Some(pin) = &self.pin {
                     paths.push(FlightPath {
                         name: "pin".into(),
                         points: pin.path.clone(),
+                        ground: Vec::new(),
                     });
                 }
                 let picture = TrajectoryPicture {
