@@ -318,7 +318,10 @@ fn svg_writes_the_file_says_so_on_stderr_and_leaves_no_temporary() {
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(err.trim(), format!("wrote {}", target.display()));
     let svg = std::fs::read_to_string(&target).unwrap();
-    assert_eq!(lines(&svg), vec![30]);
+    // The side view's 30 points, the ground track's 30 and the fence's arc.
+    let mut drawn = lines(&svg);
+    drawn.sort_unstable();
+    assert_eq!(drawn, vec![30, 30, 91]);
     assert!(texts(&svg).contains("range 134.70 m, apex 27.03 m"));
     let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
     assert_eq!(names.len(), 1, "no temporary left: {names:?}");
