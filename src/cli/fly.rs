@@ -56,13 +56,8 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
     if json {
         return pretty(&serde_json::json!({
             "scene": scene.kind.name(),
-            "launch": {
-                "speed": launch.speed,
-                "angle": launch.angle,
-                "spin": launch.spin,
-                "direction": launch.direction,
-                "sidespin": launch.sidespin,
-            },
+            // {speed, angle, spin, direction, sidespin}: BattedBall's fields.
+            "launch": launch,
             "model": model_json(scene),
             "flight": flight_json(flight, unlanded),
             "fence": {

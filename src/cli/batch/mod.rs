@@ -330,13 +330,8 @@ fn json_line(line: usize, flown: &FlownToFence) -> String {
     let (launch, flight) = (&flown.launch, &flown.flight);
     let json = serde_json::json!({
         "line": line,
-        "launch": {
-            "speed": launch.speed,
-            "angle": launch.angle,
-            "spin": launch.spin,
-            "direction": launch.direction,
-            "sidespin": launch.sidespin,
-        },
+        // {speed, angle, spin, direction, sidespin}, as `fly --json`.
+        "launch": launch,
         "flight": {
             "range": flight.landed.then_some(flight.range),
             "direction": flight.direction,
