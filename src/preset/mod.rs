@@ -197,18 +197,35 @@ impl Preset {
                     batch.set_text(&mut scene, &key, &shown).map_err(input)?;
                     continue;
                 }
+                // An unknown key is named escaped, as it cannot be printed.
+                let named = |e| {
+                    let shown = escape_for_terminal(&key);
+                    input(if shown == key { e } else { unknown(&shown) })
+                };
+                let field = FIELD_KEYS.iter().find(|f| f.name == key);
                 let number = match value {
                     toml::Value::Float(f) => *f,
                     toml::Value::Integer(i) => *i as f64,
-                    _ => return Err(wrong(&key, value, "expected a number")),
+                    // A number with its unit, "103mph", as `--set` takes it.
+                    toml::Value::String(text) => match field {
+                        Some(field) => field.read(text).map_err(input)?,
+                        None => {
+                            batch.set_text(&mut scene, &key, text).map_err(named)?;
+                            continue;
+                        }
+                    },
+                    _ => {
+                        return Err(wrong(
+                            &key,
+                            value,
+                            "expected a number, or a number and its unit in quotes (\"103mph\")",
+                        ));
+                    }
                 };
                 match key.as_str() {
                     k if k == FIELD_KEYS[0].name => fence_distance = Some(number),
                     k if k == FIELD_KEYS[1].name => fence_height = Some(number),
-                    _ => batch.set(&mut scene, &key, number).map_err(|e| {
-                        let shown = escape_for_terminal(&key);
-                        input(if shown == key { e } else { unknown(&shown) })
-                    })?,
+                    _ => batch.set(&mut scene, &key, number).map_err(named)?,
                 }
             }
         }

@@ -226,10 +226,13 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
                 Err(format!("{} is empty", LAUNCH_COLUMNS[index].0))
             }
             _ if value.is_empty() => Ok(()), // the preset's value
+            // A launch.* cell as `--set` takes it (`103mph`).
+            Column::Launch(index, Unit::Si) => batch
+                .set_text(&mut scene, LAUNCH_COLUMNS[index].0, value)
+                .map_err(|e| e.to_string()),
+            // Statcast's own columns: a bare number in their unit.
             Column::Launch(index, unit) => number().and_then(|v| {
-                if unit != Unit::Si {
-                    converted.push(format!("{name} = {shown} {}", unit.name()));
-                }
+                converted.push(format!("{name} = {shown} {}", unit.name()));
                 batch
                     .set(&mut scene, LAUNCH_COLUMNS[index].0, unit.to_si(v))
                     .map_err(|e| e.to_string())
@@ -249,18 +252,12 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
                     e => e,
                 })
                 .map_err(|e| e.to_string()),
-            Column::Field(index) => number().and_then(|v| {
+            Column::Field(index) => {
                 let key = &FIELD_KEYS[index];
-                if key.bounds.contains(v) {
-                    (key.set)(&mut fence, v);
-                    Ok(())
-                } else {
-                    Err(format!(
-                        "{} = {shown}: must be a finite number in {} {}",
-                        key.name, key.bounds, key.unit
-                    ))
-                }
-            }),
+                key.read(value)
+                    .map(|v| (key.set)(&mut fence, v))
+                    .map_err(|e| e.to_string())
+            }
         };
         if let Err(reason) = done {
             return bad(reason);

@@ -8,7 +8,7 @@
 
 use std::f64::consts::FRAC_PI_2;
 
-use crate::units::{Quantity, Unit, UnitSystem};
+use crate::units::{self, Quantity, TypedError, Unit, UnitSystem};
 
 use super::aero::UnknownModel;
 use super::pitch;
@@ -75,6 +75,7 @@ impl Bounds {
                 value,
                 bounds: self,
                 unit,
+                typed: None,
             })
         }
     }
@@ -157,6 +158,103 @@ impl Key {
     pub fn unit_in(&self, system: UnitSystem) -> Unit {
         self.quantity().unit(system, self.unit)
     }
+
+    /// A value of this key typed as text, in SI: a bare number (SI) or one
+    /// with a unit of the key's quantity (`103mph`, `28°`), checked against
+    /// the bounds. The one reading of `--set`, preset strings and batch cells.
+    pub fn read(&self, text: &str) -> Result<f64, InputError> {
+        read_typed((self.name, self.quantity(), self.unit, self.bounds), text)
+    }
+}
+
+/// [`Key::read`] for any input named `name`, of `quantity` (its SI unit
+/// `unit`), accepted in `bounds` (the fence's keys too).
+pub fn read_typed(
+    (name, quantity, unit, bounds): (&'static str, Quantity, &'static str, Bounds),
+    text: &str,
+) -> Result<f64, InputError> {
+    let shown = typed_text(text);
+    let reading = units::read_typed(text, quantity, unit).map_err(|error| match error {
+        TypedError::NotANumber => InputError::NotANumber {
+            key: name.to_owned(),
+            text: shown.clone(),
+        },
+        TypedError::OtherQuantity {
+            unit: typed,
+            quantity: other,
+        } => InputError::WrongUnit {
+            key: name,
+            text: shown.clone(),
+            why: match quantity {
+                Quantity::Unchanged => format!("{} measures {}", typed_text(&typed), other.noun()),
+                _ => format!(
+                    "{} measures {}, not {}",
+                    typed_text(&typed),
+                    other.noun(),
+                    quantity.noun()
+                ),
+            },
+            accepted: accepted_units(quantity, unit),
+        },
+        TypedError::UnknownUnit { unit: typed } => InputError::WrongUnit {
+            key: name,
+            text: shown.clone(),
+            why: format!("unknown unit `{}`", typed_text(&typed)),
+            accepted: accepted_units(quantity, unit),
+        },
+    })?;
+    if bounds.contains(reading.si) {
+        return Ok(reading.si);
+    }
+    let (typed, suggestion) = match reading.unit {
+        // The SI value the unit gave, to six significant digits.
+        Some(given) if !given.is_identity() => (
+            format!("{shown} ({} {unit})", units::significant(reading.si)),
+            String::new(),
+        ),
+        Some(_) => (shown, String::new()),
+        None => {
+            let likely = units::suggested_units(quantity, reading.number, |si| bounds.contains(si));
+            let number = text.trim();
+            let guesses: Vec<String> = likely.iter().map(|u| format!("{number}{u}")).collect();
+            let suggestion = if guesses.is_empty() {
+                String::new()
+            } else {
+                format!(" (did you mean {}?)", guesses.join(" or "))
+            };
+            (shown, suggestion)
+        }
+    };
+    Err(InputError::OutOfRange {
+        key: name,
+        value: reading.si,
+        bounds,
+        unit,
+        typed: Some(Box::new(Typed {
+            text: typed,
+            suggestion,
+        })),
+    })
+}
+
+/// The units an input is typed in, for an error: "m/s, km/h, mph, ft/s
+/// (a bare number is m/s)", or that it takes a plain number.
+fn accepted_units(quantity: Quantity, unit: &str) -> String {
+    match units::accepted(quantity, unit).as_str() {
+        "" => "a plain number".to_owned(),
+        listed => format!("{listed} (a bare number is {unit})"),
+    }
+}
+
+/// Text as typed, for an error: control characters escaped, cut to 80
+/// characters.
+fn typed_text(text: &str) -> String {
+    let escaped: String = text.trim().chars().flat_map(char::escape_debug).collect();
+    if escaped.chars().count() <= 80 {
+        escaped
+    } else {
+        escaped.chars().take(79).chain(['…']).collect()
+    }
 }
 
 impl std::fmt::Debug for Key {
@@ -165,16 +263,44 @@ impl std::fmt::Debug for Key {
     }
 }
 
+/// A value typed as text, as an error about it shows it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Typed {
+    /// As typed, with its SI value if a unit came with it ("300mph
+    /// (134.112 m/s)").
+    pub text: String,
+    /// " (did you mean 103mph?)" for a bare number that a likely unit
+    /// brings in range, else empty.
+    pub suggestion: String,
+}
+
 /// Why a set of inputs was refused. Each message names the key, the value and
 /// what would have been accepted.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum InputError {
-    #[error("{key} = {}: must be a finite number in {bounds}{}", number_text(*.value), unit_suffix(.unit))]
+    #[error(
+        "{key} = {}: must be a finite number in {bounds}{}{}",
+        .typed.as_ref().map_or_else(|| number_text(*.value), |t| t.text.clone()),
+        unit_suffix(.unit),
+        .typed.as_ref().map_or("", |t| t.suggestion.as_str())
+    )]
     OutOfRange {
         key: &'static str,
+        /// In SI.
         value: f64,
         bounds: Bounds,
         unit: &'static str,
+        /// The text typed, when the value was typed as text.
+        typed: Option<Box<Typed>>,
+    },
+    #[error("{key} = {text}: {why}; {key} takes {accepted}")]
+    WrongUnit {
+        key: &'static str,
+        text: String,
+        /// What is wrong with the unit typed.
+        why: String,
+        /// The units the key takes.
+        accepted: String,
     },
     #[error(
         "bat.undercut = {value}: the bat misses the ball; |E| must be below r_b + r_B = {limit} m"
@@ -251,7 +377,8 @@ impl Scene {
         Ok(())
     }
 
-    /// Sets any key from text, as `--set KEY=VALUE` does.
+    /// Sets any key from text, as `--set KEY=VALUE` does: a number in SI,
+    /// or with a unit of the key's quantity ([`Key::read`]), in range.
     pub fn set_text(&mut self, name: &str, text: &str) -> Result<(), InputError> {
         if name == DRAG_KEY {
             self.drag = text.parse()?;
@@ -262,10 +389,7 @@ impl Scene {
             return Ok(());
         }
         let key = Self::key(name)?;
-        let value: f64 = text.trim().parse().map_err(|_| InputError::NotANumber {
-            key: name.to_owned(),
-            text: text.to_owned(),
-        })?;
+        let value = key.read(text)?;
         (key.set)(self, value);
         Ok(())
     }
