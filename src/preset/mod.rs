@@ -17,7 +17,7 @@ pub use escape::{cut, escape_cut, escape_for_terminal};
 pub use field::{FIELD_KEYS, FieldKey};
 pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
-use file::{preset_files, size_text, through};
+use file::{check_save_target, preset_files, size_text, through};
 
 use crate::model::aero::{DragModel, LiftModel};
 use crate::model::keys::{
@@ -355,7 +355,9 @@ impl Preset {
 
     /// Writes the preset as `dir/name.toml`: first to a temporary file in the
     /// same folder, flushed to disk, then renamed over the target, so that a
-    /// crash or a full disk never leaves a half-written preset.
+    /// crash or a full disk never leaves a half-written preset. A target that
+    /// exists and is not a regular file (a FIFO, a device, a folder) is
+    /// refused, as reading refuses it.
     pub fn save(&self, dir: &Path) -> Result<PathBuf, PresetError> {
         check_name(&self.name)?;
         let io = |path: &Path| {
@@ -364,7 +366,8 @@ impl Preset {
         };
         fs::create_dir_all(dir).map_err(io(dir))?;
         let target = dir.join(format!("{}.toml", self.name));
-        crate::atomic_file::write(&target, self.to_toml().as_bytes()).map_err(io(&target))?;
+        check_save_target(&target)?;
+        crate::atomic_file::replace(&target, self.to_toml().as_bytes()).map_err(io(&target))?;
         Ok(target)
     }
 }
