@@ -357,9 +357,14 @@ impl Preset {
     /// same folder, flushed to disk, then renamed over the target, so that a
     /// crash or a full disk never leaves a half-written preset. A target that
     /// exists and is not a regular file (a FIFO, a device, a folder) is
-    /// refused, as reading refuses it.
+    /// refused, as reading refuses it; so is a scene that reading refuses.
     pub fn save(&self, dir: &Path) -> Result<PathBuf, PresetError> {
         check_name(&self.name)?;
+        // Never write what `load` would refuse.
+        self.scene.validate().map_err(|source| PresetError::Input {
+            path: format!("{}.toml", self.name),
+            source,
+        })?;
         let io = |path: &Path| {
             let path = path.display().to_string();
             move |source| PresetError::Io { path, source }

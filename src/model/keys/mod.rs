@@ -318,6 +318,18 @@ pub enum InputError {
     UnknownKey { key: String, known: String },
     #[error("{key} = {text:?}: not a number")]
     NotANumber { key: String, text: String },
+    #[error(
+        "{key} = {} {unit}, taken from the swing ({swing}): must be in {bounds} {unit}, as if given; give {key}, or change the swing",
+        units::significant(*.value)
+    )]
+    SwingLaunch {
+        key: &'static str,
+        value: f64,
+        bounds: Bounds,
+        unit: &'static str,
+        /// The swing's inputs that made it: "pitch.speed = 42, …".
+        swing: String,
+    },
     #[error(transparent)]
     UnknownModel(#[from] UnknownModel),
     #[error(
@@ -454,7 +466,7 @@ impl Scene {
                 minimum: pitch::minimum_speed(self.environment.gravity),
             });
         }
-        Ok(())
+        self.check_swing_launch()
     }
 }
 

@@ -1,0 +1,160 @@
+//! The eight failures a stress pass found (issue 15, F1–F8), each held by
+//! a test here (F1, a preset saved onto a FIFO, is in `hostile_files.rs`).
+
+use std::path::Path;
+
+use assert_cmd::Command;
+use homerun::Scene;
+use ratatui::crossterm::event::KeyCode;
+
+mod tui_support;
+use homerun::preset::{Preset, Source};
+
+fn homerun(presets: &Path, args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .arg("--presets-dir")
+        .arg(presets)
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// The one line of a refusal (status 2, nothing on stdout).
+fn refusal(presets: &Path, args: &[&str]) -> String {
+    let output = homerun(presets, args);
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(output.status.code(), Some(2), "{args:?}: {stderr}");
+    assert!(output.stdout.is_empty(), "{args:?}");
+    assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+    stderr.trim_end().to_owned()
+}
+
+/// F2: a batted ball's launch values taken from its swing are held to the
+/// launch.* bounds: 100 m/s of bat speed launches the fastball at
+/// 106.9 m/s, which `fly --set launch.angle=0.5` flew. Refused, naming the
+/// value, the bound and the swing that made it.
+#[test]
+fn f2_a_batted_ball_taking_a_launch_out_of_bounds_from_its_swing_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let line = refusal(
+        dir.path(),
+        &["fly", "--set", "bat.speed=100", "--set", "launch.angle=0.5"],
+    );
+    assert_eq!(
+        line,
+        "homerun: launch.speed = 106.906 m/s, taken from the swing (pitch.speed = 42, pitch.spin = -200, bat.speed = 100, bat.spin = 0, bat.undercut = 0.0265, bat.swing_angle = 0.1594): must be in (0, 100] m/s, as if given; give launch.speed, or change the swing"
+    );
+    // Given, the launch speed no longer comes from the swing.
+    let output = homerun(
+        dir.path(),
+        &[
+            "fly",
+            "--set",
+            "bat.speed=100",
+            "--set",
+            "launch.angle=0.5",
+            "--set",
+            "launch.speed=45",
+        ],
+    );
+    assert!(output.status.success(), "{output:?}");
+}
+
+/// The swing of F2's second repro: its impact launches at 1518 rad/s.
+fn fierce_swing() -> Preset {
+    let mut preset = homerun::preset::load("fastball", None).unwrap();
+    preset.name = "fierce".into();
+    preset.scene.bat.speed = 100.0;
+    preset.scene.bat.undercut = 0.06;
+    preset.scene.pitch.spin = -1000.0;
+    preset.scene.bat.spin = 200.0;
+    preset
+}
+
+/// F2: the swing still flies (its inputs are the swing), but its launch,
+/// outside launch.spin's bounds, becomes no batted ball: the explorer's `b`
+/// refuses it, saying why, and a preset of it is not saved.
+#[test]
+fn f2_a_swings_launch_out_of_bounds_is_not_frozen_nor_saved() {
+    use homerun::model::launch::SceneKind;
+    let swing = fierce_swing();
+    swing.scene.validate().unwrap();
+    assert!((swing.scene.batted_ball().spin - 1518.14).abs() < 0.01);
+    let mut app = homerun::tui::app::App::new(
+        swing.clone(),
+        None,
+        homerun::tui::theme::ColorMode::Indexed,
+        ratatui::layout::Rect::new(0, 0, 80, 24),
+    );
+    tui_support::key(&mut app, KeyCode::Char('b'));
+    assert_eq!(app.scene.kind, SceneKind::Swing);
+    let (message, error) = app.message.clone().unwrap();
+    assert!(
+        error
+            && message.starts_with("no batted ball: launch.spin = ")
+            && message.contains("[-1000, 1000] rad/s"),
+        "{message}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let mut frozen = swing;
+    frozen.scene = frozen.scene.with_launch(frozen.scene.batted_ball());
+    let error = frozen.save(dir.path()).unwrap_err().to_string();
+    assert!(
+        error.starts_with("fierce.toml: launch.spin = ") && error.contains("[-1000, 1000] rad/s"),
+        "{error}"
+    );
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
+
+/// F2's principle: whatever the program flies, it accepts back as input.
+/// Over swings at the edges of every input of the impact, each batted ball
+/// made from a swing (frozen whole, as `b` does, or with the angle given
+/// and the rest taken from the swing, as `--set launch.angle` does) is
+/// either refused before it flies, or saved and loaded back unchanged.
+#[test]
+fn f2_every_batted_ball_flown_loads_back_from_its_saved_preset() {
+    let dir = tempfile::tempdir().unwrap();
+    let (mut accepted, mut refused) = (0, 0);
+    let mut preset = homerun::preset::load("fastball", None).unwrap();
+    preset.name = "frozen".into();
+    for bat_speed in [20.0, 60.0, 93.0, 100.0] {
+        for undercut in [-0.06, 0.0, 0.03, 0.06] {
+            for pitch_spin in [-1000.0, 0.0, 1000.0] {
+                for bat_spin in [-200.0, 200.0] {
+                    for swing_angle in [-1.0, 0.16, 1.2] {
+                        let mut scene = Scene::default();
+                        scene.bat.speed = bat_speed;
+                        scene.bat.undercut = undercut;
+                        scene.pitch.spin = pitch_spin;
+                        scene.bat.spin = bat_spin;
+                        scene.bat.swing_angle = swing_angle;
+                        scene.validate().unwrap();
+                        let mut angled = scene;
+                        angled.set("launch.angle", 0.5).unwrap();
+                        for batted in [scene.with_launch(scene.batted_ball()), angled] {
+                            preset.scene = batted;
+                            match batted.validate() {
+                                Ok(()) => {
+                                    accepted += 1;
+                                    let path = preset.save(dir.path()).unwrap();
+                                    assert_eq!(Preset::read(&path).unwrap().scene, batted);
+                                }
+                                Err(_) => {
+                                    refused += 1;
+                                    assert!(preset.save(dir.path()).is_err());
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // Both outcomes are there: the test covers the edge it is about.
+    assert!(
+        accepted > 100 && refused > 50,
+        "{accepted} accepted, {refused} refused"
+    );
+    let text = "[bat]\nspeed = 100\n\n[launch]\nangle = 0.5\n";
+    assert!(Preset::parse(text, "x", "x.toml", Source::Bundled).is_err());
+}
