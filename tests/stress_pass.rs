@@ -158,3 +158,38 @@ fn f2_every_batted_ball_flown_loads_back_from_its_saved_preset() {
     let text = "[bat]\nspeed = 100\n\n[launch]\nangle = 0.5\n";
     assert!(Preset::parse(text, "x", "x.toml", Source::Bundled).is_err());
 }
+
+/// F3: `model.spin_decay=1e-310`, inside [0, 1000] s, "did not land within
+/// 0.0 s": 1/τ overflowed and the spin was NaN at launch. A τ that small
+/// decays the spin to nothing at once, so the ball flies as one launched
+/// without spin, to the integrator's tolerance.
+#[test]
+fn f3_a_subnormal_spin_decay_time_flies_as_no_spin() {
+    use homerun::analysis::precision::Purpose;
+    use homerun::model::launch::{BattedBall, fly_scene};
+    let fastball = Scene::default();
+    let launch = fastball.batted_ball();
+    let spinless = fastball.with_launch(BattedBall {
+        spin: 0.0,
+        ..launch
+    });
+    let without = fly_scene(&spinless, Purpose::Readout).flight;
+    for tau in [1e-310, 5e-324, 1e-300, 1e-9] {
+        let mut scene = fastball;
+        scene.spin_decay = tau;
+        scene.validate().unwrap();
+        let flight = fly_scene(&scene, Purpose::Readout).flight;
+        assert!(flight.landed, "τ = {tau:e}: {flight:?}");
+        assert!(
+            (flight.range - without.range).abs() < 1e-3,
+            "τ = {tau:e}: {} m, without spin {} m",
+            flight.range,
+            without.range
+        );
+    }
+    // And the spin decays as it did for an ordinary τ.
+    let mut scene = fastball;
+    scene.spin_decay = 40.0;
+    let decayed = fly_scene(&scene, Purpose::Readout).flight.range;
+    assert!(decayed > without.range + 10.0, "{decayed}");
+}
