@@ -193,3 +193,79 @@ fn f3_a_subnormal_spin_decay_time_flies_as_no_spin() {
     let decayed = fly_scene(&scene, Purpose::Readout).flight.range;
     assert!(decayed > without.range + 10.0, "{decayed}");
 }
+
+/// The ends of `interval`, "(0, 223.693]", as (number, open) pairs.
+fn ends(interval: &str) -> [(f64, bool); 2] {
+    let (min, max) = interval[1..interval.len() - 1].split_once(", ").unwrap();
+    let number = |s: &str| s.parse::<f64>().unwrap_or_else(|_| panic!("{interval}"));
+    [
+        (number(min), interval.starts_with('(')),
+        (number(max), interval.ends_with(')')),
+    ]
+}
+
+/// F4: bounds printed in imperial units were rounded outward and refused
+/// themselves (`sweep pitch.speed --to 223.694 --units imperial`: "(0,
+/// 223.694] mph"). For every key, in both systems, each printed end typed
+/// back is what its bracket says: accepted at a closed end, refused at an
+/// open one, with a value a last digit inside it accepted.
+#[test]
+fn f4_every_printed_bound_typed_back_is_what_its_bracket_says() {
+    use homerun::model::keys::{Bounds, all_keys};
+    use homerun::units::{Quantity, UnitSystem};
+    let field_keys = homerun::preset::FIELD_KEYS
+        .iter()
+        .map(|f| (f.name, f.bounds, Quantity::Distance, f.unit));
+    let keys = all_keys()
+        .map(|k| (k.name, k.bounds, k.quantity(), k.unit))
+        .chain(field_keys);
+    let mut checked = 0;
+    for (name, bounds, quantity, si_unit) in keys {
+        for system in UnitSystem::ALL {
+            let unit = quantity.unit(system, si_unit);
+            let printed = bounds.shown_in(unit);
+            if printed.contains('π') {
+                continue; // SI's ±π/2, exact by name
+            }
+            for ((end, open), inward) in ends(&printed).into_iter().zip([1.0, -1.0]) {
+                let accepted = |v: f64| Bounds::contains(&bounds, unit.read(v));
+                if open {
+                    assert!(!accepted(end), "{name} {system}: {printed}");
+                    assert!(accepted(end + inward * 1e-3), "{name} {system}: {printed}");
+                } else {
+                    assert!(accepted(end), "{name} {system}: {printed}");
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 100, "{checked}");
+    // The repro: the bound the error prints is a bound the sweep takes.
+    let dir = tempfile::tempdir().unwrap();
+    let line = refusal(
+        dir.path(),
+        &[
+            "sweep",
+            "pitch.speed",
+            "--from",
+            "1",
+            "--to",
+            "300",
+            "--units",
+            "imperial",
+        ],
+    );
+    let printed = line.split(" in ").nth(1).unwrap().trim_end_matches(" mph");
+    let [_, (to, _)] = ends(printed);
+    let args = [
+        "sweep",
+        "pitch.speed",
+        "--from",
+        "90",
+        "--to",
+        &to.to_string(),
+    ];
+    let args = [&args[..], &["--steps", "2", "--units", "imperial"]].concat();
+    let output = homerun(dir.path(), &args);
+    assert!(output.status.success(), "{args:?}: {output:?}");
+}

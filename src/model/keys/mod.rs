@@ -95,6 +95,64 @@ impl Bounds {
     }
 }
 
+impl Bounds {
+    /// This interval in `unit` (the unit's symbol not written), each end to
+    /// at most three decimals and rounded so that the number printed, typed
+    /// back in `unit`, is what the bracket says: accepted at a closed end,
+    /// refused at an open one. An end that is not a round number in `unit`
+    /// is rounded inward, and shown closed: pitch.speed's (0, 100] m/s is
+    /// "(0, 223.693]" mph, since 223.694 mph is 100.0003 m/s. In SI (an
+    /// identity unit), the table's own text, with its π/2.
+    pub fn shown_in(&self, unit: Unit) -> String {
+        if unit.is_identity() {
+            return self.to_string();
+        }
+        let (min, min_open) = self.shown_end(unit, self.min, self.min_exclusive, 1.0);
+        let (max, max_open) = self.shown_end(unit, self.max, self.max_exclusive, -1.0);
+        let open = if min_open { '(' } else { '[' };
+        let close = if max_open { ')' } else { ']' };
+        format!("{open}{min}, {max}{close}")
+    }
+
+    /// One end, `bound` in SI, as [`Bounds::shown_in`] writes it, and
+    /// whether it is shown open; `inward` is +1 at the minimum, −1 at the
+    /// maximum.
+    fn shown_end(&self, unit: Unit, bound: f64, exclusive: bool, inward: f64) -> (String, bool) {
+        const PER_UNIT: f64 = 1000.0;
+        let shown = unit.show(bound);
+        let nearest = (shown * PER_UNIT).round() / PER_UNIT;
+        let round = (nearest - shown).abs() <= 1e-9 * shown.abs().max(1.0);
+        if exclusive && round {
+            return (decimals_text(nearest), true);
+        }
+        if !exclusive && self.contains(unit.read(nearest)) {
+            return (decimals_text(nearest), false);
+        }
+        // Inward: up at the minimum, down at the maximum, a last digit more
+        // if the conversion back lands just outside.
+        let scaled = shown * PER_UNIT;
+        let mut end = if inward > 0.0 {
+            scaled.ceil()
+        } else {
+            scaled.floor()
+        } / PER_UNIT;
+        for _ in 0..3 {
+            if self.contains(unit.read(end)) {
+                break;
+            }
+            end += inward / PER_UNIT;
+        }
+        (decimals_text(end), false)
+    }
+}
+
+/// At most three decimals, trailing zeros trimmed, never "-0".
+fn decimals_text(value: f64) -> String {
+    let text = format!("{value:.3}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" { "0" } else { text }.to_owned()
+}
+
 impl std::fmt::Display for Bounds {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let open = if self.min_exclusive { '(' } else { '[' };
