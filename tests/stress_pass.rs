@@ -269,3 +269,69 @@ fn f4_every_printed_bound_typed_back_is_what_its_bracket_says() {
     let output = homerun(dir.path(), &args);
     assert!(output.status.success(), "{args:?}: {output:?}");
 }
+
+/// The text of a command that succeeds.
+fn stdout(presets: &Path, args: &[&str]) -> String {
+    let output = homerun(presets, args);
+    assert!(output.status.success(), "{args:?}: {output:?}");
+    String::from_utf8(output.stdout).unwrap()
+}
+
+/// F5: the surface's column headings ran together once |E| ≥ 100 mm
+/// (`-400.0-325.0…`, and `-50.0-40.0` already), and a ball landing 0.4 m
+/// behind the plate printed `-0`. Every heading now stands apart, over
+/// its column, and a range that rounds to zero is 0.
+#[test]
+fn f5_surface_headings_stand_apart_and_no_cell_is_minus_zero() {
+    let dir = tempfile::tempdir().unwrap();
+    let big_ball = [
+        "--set",
+        "ball.radius=0.1",
+        "--set",
+        "ball.gyration_radius=0.05",
+        "--set",
+        "ball.mass=1",
+    ];
+    let surface = |window: &[&str]| {
+        let args = [&["surface"][..], window, &big_ball].concat();
+        stdout(dir.path(), &args)
+    };
+    let text = surface(&["--undercut", "-0.4..-0.1", "--grid", "5x2"]);
+    let lines: Vec<&str> = text.lines().collect();
+    let heads: Vec<&str> = lines[1].split_whitespace().collect();
+    assert_eq!(
+        heads,
+        [
+            "ψ", "\\", "E", "-400.0", "-325.0", "-250.0", "-175.0", "-100.0"
+        ],
+        "{text}"
+    );
+    // Each row's numbers end a mark's width (" " or "*") before their
+    // headings end.
+    let ends = |line: &str| -> Vec<usize> {
+        let chars: Vec<char> = line.chars().collect();
+        (1..=chars.len())
+            .filter(|&k| chars[k - 1] != ' ' && chars.get(k).is_none_or(|c| *c == ' '))
+            .collect()
+    };
+    for row in &lines[2..4] {
+        let row = row.replace('*', " ");
+        let numbers: Vec<usize> = ends(&row)[1..].iter().map(|k| k + 1).collect();
+        assert_eq!(numbers, ends(lines[1])[3..], "{text}");
+    }
+    let text = surface(&[
+        "--undercut",
+        "-0.05..-0.04",
+        "--swing-angle",
+        "-1.2692307692307692..-1.2",
+        "--grid",
+        "2x2",
+    ]);
+    assert!(
+        text.lines().nth(1).unwrap().ends_with(" -50.0 -40.0"),
+        "{text}"
+    );
+    assert!(text.ends_with("range -0.36 m\n"), "{text}");
+    assert!(!text.contains("-0 ") && !text.contains("-0*"), "{text}");
+    assert!(text.contains("     0     0*"), "{text}");
+}
