@@ -313,7 +313,11 @@ pub fn significant(value: f64) -> String {
         return "0".to_owned();
     }
     if !(1e-6..1e9).contains(&magnitude) {
-        return format!("{value:e}");
+        // 1.42278e301, 1e-300: the mantissa to six digits, trimmed.
+        let text = format!("{value:.5e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, ""));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        return format!("{mantissa}e{exponent}");
     }
     let decimals = (5 - magnitude.log10().floor() as i32).max(0) as usize;
     let text = format!("{value:.decimals$}");
@@ -370,6 +374,7 @@ mod tests {
         assert_eq!(significant(0.0254), "0.0254");
         assert_eq!(significant(-0.0), "0");
         assert_eq!(significant(1e-300), "1e-300");
+        assert_eq!(significant(-1.422_784_810_126_582_3e301), "-1.42278e301");
     }
 
     #[test]

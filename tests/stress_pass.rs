@@ -335,3 +335,68 @@ fn f5_surface_headings_stand_apart_and_no_cell_is_minus_zero() {
     assert!(!text.contains("-0 ") && !text.contains("-0*"), "{text}");
     assert!(text.contains("     0     0*"), "{text}");
 }
+
+/// F6: `hit --set pitch.speed=1e-300` was a 771-character error (its
+/// vertical velocity, 1.7e302 m/s, written out in full), and 5e-324 one
+/// with `-inf` in it. For every key and every extreme value, an error is
+/// one short line, with the value as typed and no inf or NaN of ours.
+#[test]
+fn f6_errors_show_extreme_values_short_and_without_inf() {
+    let dir = tempfile::tempdir().unwrap();
+    assert_eq!(
+        refusal(dir.path(), &["hit", "--set", "pitch.speed=1e-300"]),
+        "homerun: pitch.speed = 1e-300: Eq. (3)'s fit gives a vertical velocity of -1.72597e302 m/s, more than the speed itself; at this gravity it needs a pitch speed of at least 9.92 m/s"
+    );
+    assert_eq!(
+        refusal(dir.path(), &["hit", "--set", "pitch.speed=5e-324"]),
+        "homerun: pitch.speed = 5e-324: Eq. (3)'s fit gives an infinite vertical velocity, more than the speed itself; at this gravity it needs a pitch speed of at least 9.92 m/s"
+    );
+    let long = format!("0.{}1", "0".repeat(300));
+    let values = [
+        "1e-300",
+        "-1e-300",
+        "5e-324",
+        "-5e-324",
+        "1e300",
+        "-1e300",
+        "1.7976931348623157e308",
+        long.as_str(),
+        "0.30000000000000004",
+    ];
+    let mut refused = 0;
+    for key in homerun::model::keys::all_keys() {
+        for value in values {
+            let mut scene = Scene::default();
+            let Err(error) = scene
+                .set_text(key.name, value)
+                .and_then(|()| scene.validate())
+            else {
+                continue;
+            };
+            refused += 1;
+            let message = error.to_string();
+            assert!(
+                message.chars().count() <= 300,
+                "{}={value}: {message}",
+                key.name
+            );
+            let words = message.split(|c: char| !c.is_alphanumeric());
+            assert!(
+                !words.into_iter().any(|w| w == "inf" || w == "NaN"),
+                "{}={value}: {message}",
+                key.name
+            );
+            // The value as typed, cut to 80 characters (the long one), or
+            // its shortest digits (1.7976931348623157e308).
+            let shown = value.chars().take(79).collect::<String>();
+            let short = value.parse::<f64>().unwrap().to_string();
+            let shortest = format!("{:e}", value.parse::<f64>().unwrap());
+            assert!(
+                message.contains(&shown) || message.contains(&short) || message.contains(&shortest),
+                "{}={value}: {message}",
+                key.name
+            );
+        }
+    }
+    assert!(refused > 100, "{refused}");
+}

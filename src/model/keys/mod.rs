@@ -361,11 +361,15 @@ pub enum InputError {
         accepted: String,
     },
     #[error(
-        "bat.undercut = {value}: the bat misses the ball; |E| must be below r_b + r_B = {limit} m"
+        "bat.undercut = {}: the bat misses the ball; |E| must be below r_b + r_B = {} m",
+        number_text(*.value),
+        units::significant(*.limit)
     )]
     Miss { value: f64, limit: f64 },
     #[error(
-        "pitch.speed = {speed}: Eq. (3)'s fit gives a vertical velocity of {vertical:.2} m/s, more than the speed itself; at this gravity it needs a pitch speed of at least {minimum:.2} m/s"
+        "pitch.speed = {}: Eq. (3)'s fit gives {}, more than the speed itself; at this gravity it needs a pitch speed of at least {minimum:.2} m/s",
+        number_text(*.speed),
+        vertical_text(*.vertical)
     )]
     PitchOutsideFit {
         speed: f64,
@@ -401,7 +405,9 @@ pub enum InputError {
         weather: &'static str,
     },
     #[error(
-        "ball.mass = {mass} kg: with ball.radius = {radius} m the ball is {density:.3} kg/m³ on average; the model ignores buoyancy and needs at least {MIN_BALL_DENSITY} kg/m³ (a ping-pong ball is ~80), so ball.mass ≥ {minimum:.4} kg"
+        "ball.mass = {} kg: with ball.radius = {} m the ball is {density:.3} kg/m³ on average; the model ignores buoyancy and needs at least {MIN_BALL_DENSITY} kg/m³ (a ping-pong ball is ~80), so ball.mass ≥ {minimum:.4} kg",
+        number_text(*.mass),
+        number_text(*.radius)
     )]
     BallTooLight {
         mass: f64,
@@ -410,8 +416,11 @@ pub enum InputError {
         minimum: f64,
     },
     #[error(
-        "{key} = {value} m: must be in [{min:.4}, {max:.4}] m, from {} to {} of {radius_key} = {radius} m",
-        GYRATION_CORE, .shape
+        "{key} = {} m: must be in [{min:.4}, {max:.4}] m, from {} to {} of {radius_key} = {} m",
+        number_text(*.value),
+        GYRATION_CORE,
+        .shape,
+        number_text(*.radius)
     )]
     GyrationRadius {
         key: &'static str,
@@ -574,14 +583,29 @@ fn suggestion(key: &str) -> String {
         .unwrap_or_default()
 }
 
-/// A number as typed when that is short (0.09, 1000, NaN), in scientific
-/// notation when Rust's plain form would run to hundreds of digits (1e-200).
+/// A number as typed when that is short (0.09, 1000, NaN, 1518.1420786309536),
+/// in scientific notation when Rust's plain form would run to hundreds of
+/// digits (1e-200): either way the shortest digits that read back as it.
 pub fn number_text(value: f64) -> String {
     let plain = value.to_string();
-    if plain.len() <= 16 {
+    if plain.len() <= 20 {
         plain
     } else {
         format!("{value:e}")
+    }
+}
+
+/// Eq. (3)'s vertical velocity in an error: "a vertical velocity of
+/// -6.51 m/s", or of 1e301 m/s for a pitch of 1e-300 m/s; infinite below
+/// that (5e-324 m/s).
+fn vertical_text(vertical: f64) -> String {
+    if vertical.is_finite() {
+        format!(
+            "a vertical velocity of {} m/s",
+            units::significant(vertical)
+        )
+    } else {
+        "an infinite vertical velocity".to_owned()
     }
 }
 
