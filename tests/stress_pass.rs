@@ -400,3 +400,50 @@ fn f6_errors_show_extreme_values_short_and_without_inf() {
     }
     assert!(refused > 100, "{refused}");
 }
+
+/// `fly --batch -` on `input`: (status, stdout, stderr).
+fn batch(presets: &Path, input: &str) -> (Option<i32>, String, String) {
+    let output = Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .arg("--presets-dir")
+        .arg(presets)
+        .args(["fly", "--batch", "-"])
+        .write_stdin(input)
+        .output()
+        .unwrap();
+    (
+        output.status.code(),
+        String::from_utf8(output.stdout).unwrap(),
+        String::from_utf8(output.stderr).unwrap(),
+    )
+}
+
+/// F7: lines of spaces or tabs vanished from the count ("1 of 2 rows
+/// failed" for four records). Each is a record of one field, named and
+/// counted; a line with nothing on it is counted as skipped.
+#[test]
+fn f7_every_record_line_is_counted() {
+    let dir = tempfile::tempdir().unwrap();
+    let (status, out, err) = batch(dir.path(), "launch_speed,des\n \n\t\n\"\"\n100,x\n\n");
+    assert_eq!(status, Some(1), "{err}");
+    assert_eq!(out.lines().count(), 2, "{out}");
+    for line in 2..=4 {
+        assert!(
+            err.contains(&format!(
+                "line {line}: 1 field where the header has 2; skipped"
+            )),
+            "{err}"
+        );
+    }
+    assert!(err.contains("homerun: 1 empty line skipped\n"), "{err}");
+    assert!(
+        err.ends_with("homerun: 3 of 4 rows failed and were skipped (exit status 1)\n"),
+        "{err}"
+    );
+    // With one column, a line of spaces is a row whose launch is empty.
+    let (status, _, err) = batch(dir.path(), "launch_speed\n \n100\n");
+    assert_eq!(status, Some(0), "{err}");
+    assert!(
+        err.contains("1 row with every launch column empty (pitches not put in play) skipped"),
+        "{err}"
+    );
+}

@@ -34,6 +34,8 @@ pub struct Outcome {
     pub failed: usize,
     /// Rows with every launch column empty.
     pub without_launch: usize,
+    /// Empty lines, skipped.
+    pub empty: usize,
     /// Reading stopped early (binary input, a read error).
     pub stopped: bool,
 }
@@ -186,7 +188,7 @@ pub(super) fn batch(
                     }
                 }
                 Row::NoLaunch => outcome.without_launch += 1,
-                Row::Blank => {}
+                Row::Blank => outcome.empty += 1,
             }
         }
         let flown: Vec<FlownToFence> = jobs
@@ -221,6 +223,13 @@ pub(super) fn batch(
         let n = outcome.without_launch;
         sinks.note(&format!(
             "{n} row{} with every launch column empty (pitches not put in play) skipped",
+            if n == 1 { "" } else { "s" }
+        ));
+    }
+    if outcome.empty > 0 {
+        let n = outcome.empty;
+        sinks.note(&format!(
+            "{n} empty line{} skipped",
             if n == 1 { "" } else { "s" }
         ));
     }

@@ -172,12 +172,13 @@ pub(super) enum Row {
     /// Every launch column empty (in a Statcast export: a pitch not put in
     /// play): skipped and counted, not a failure.
     NoLaunch,
-    /// An empty line.
+    /// An empty line (not even a space): skipped and counted. A line of
+    /// spaces or tabs is a record of one field, and fails or flies as one.
     Blank,
 }
 
 pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
-    if text.trim().is_empty() {
+    if text.is_empty() {
         return Row::Blank;
     }
     let bad = |reason: String| Row::Bad { line, reason };
