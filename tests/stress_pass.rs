@@ -447,3 +447,94 @@ fn f7_every_record_line_is_counted() {
         "{err}"
     );
 }
+
+/// `homerun ARGS` with its standard output closed (`>&-`) and `input` on
+/// its standard input: (status, stderr).
+#[cfg(target_os = "linux")]
+fn with_stdout_closed(presets: &Path, args: &[&str], input: &str) -> (Option<i32>, String) {
+    use std::io::Write as _;
+    use std::os::unix::process::CommandExt as _;
+    let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"));
+    command
+        .arg("--presets-dir")
+        .arg(presets)
+        .args(args)
+        .stdin(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped());
+    // SAFETY: close is async-signal-safe and touches no memory of ours.
+    unsafe {
+        command.pre_exec(|| {
+            libc::close(libc::STDOUT_FILENO);
+            Ok(())
+        });
+    }
+    let mut child = command.spawn().unwrap();
+    // The program may exit before reading it all: a broken pipe is fine.
+    let _ = child.stdin.take().unwrap().write_all(input.as_bytes());
+    let output = child.wait_with_output().unwrap();
+    (
+        output.status.code(),
+        String::from_utf8(output.stderr).unwrap(),
+    )
+}
+
+/// F8: with its standard output closed, `keys` and `fly --batch` exited 0
+/// having written nothing (Rust's runtime put /dev/null there). Now each
+/// exits 2 with one line, the batch before reading a row.
+#[cfg(target_os = "linux")]
+#[test]
+fn f8_a_closed_stdout_is_refused_before_any_work() {
+    let dir = tempfile::tempdir().unwrap();
+    let closed =
+        "homerun: standard output is closed: nothing could be written (give it a file or a pipe)\n";
+    let rows = format!("launch_speed,des\n{}", "100,x\n".repeat(10_000));
+    for (args, input) in [
+        (&["keys"][..], ""),
+        (&["hit", "--json"][..], ""),
+        (&["fly", "--batch", "-"][..], rows.as_str()),
+        (&["--help"][..], ""),
+    ] {
+        let (status, stderr) = with_stdout_closed(dir.path(), args, input);
+        assert_eq!(status, Some(2), "{args:?}: {stderr}");
+        // One line: not even the header's note on the ignored column.
+        assert_eq!(stderr, closed, "{args:?}");
+    }
+    // A picture goes to its file, whatever stdout is.
+    let svg = dir.path().join("t.svg");
+    let (status, stderr) = with_stdout_closed(
+        dir.path(),
+        &["trajectory", "--svg", svg.to_str().unwrap()],
+        "",
+    );
+    assert_eq!(status, Some(0), "{stderr}");
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+}
+
+/// F8: the batch's notice said "every row takes preset fastball's
+/// launch.speed" when a bat.speed column gave each row its own swing, and
+/// so its own launch speed.
+#[test]
+fn f8_the_batch_notice_names_each_rows_own_swing_when_columns_change_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let (status, out, err) = batch(dir.path(), "bat.speed,launch.angle\n30,0.3\n35,0.3\n");
+    assert_eq!(status, Some(0), "{err}");
+    assert!(
+        err.contains(
+            "no launch.speed or launch_speed column: each row's launch.speed comes from its own swing (column bat.speed)"
+        ) && !err.contains("every row takes"),
+        "{err}"
+    );
+    // And it does: the faster bat launches faster.
+    let speeds: Vec<f64> = out
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(1).unwrap().parse().unwrap())
+        .collect();
+    assert!(speeds[1] > speeds[0] + 4.0, "{out}");
+    // Without such a column, every row takes the preset's swing's launch.
+    let (_, _, err) = batch(dir.path(), "launch.angle\n0.3\n");
+    assert!(
+        err.contains("no launch.speed or launch_speed column: every row takes preset fastball's launch.speed = 44.29906800990522"),
+        "{err}"
+    );
+}

@@ -121,6 +121,22 @@ impl Header {
             .any(|c| matches!(c, Column::Launch(i, _) if *i == index))
     }
 
+    /// The input columns that change a row's swing, and so the launch
+    /// values the row takes from it: the pitch, the bat, the ball and
+    /// gravity (which bends the pitch, Eq. 3).
+    pub(super) fn swing_columns(&self) -> Vec<&str> {
+        self.names
+            .iter()
+            .zip(&self.columns)
+            .filter(|(_, c)| {
+                matches!(c, Column::Input(key)
+                    if ["pitch.", "bat.", "ball."].iter().any(|s| key.starts_with(s))
+                        || *key == "environment.gravity")
+            })
+            .map(|(n, _)| n.as_str())
+            .collect()
+    }
+
     pub(super) fn ignored(&self) -> Vec<&str> {
         self.names
             .iter()
