@@ -23,9 +23,10 @@ pub fn read_typed(
 ) -> Result<f64, InputError> {
     let shown = typed_text(text);
     let reading = units::read_typed(text, quantity, unit).map_err(|error| match error {
+        // Quoted by the error itself, which escapes what must be.
         TypedError::NotANumber => InputError::NotANumber {
             key: name.to_owned(),
-            text: shown.clone(),
+            text: cut(text.trim()),
         },
         TypedError::OtherQuantity {
             unit: typed,
@@ -97,11 +98,26 @@ fn accepted_units(quantity: Quantity, unit: &str) -> String {
 /// Text as typed, for an error: control characters escaped, cut to 80
 /// characters.
 fn typed_text(text: &str) -> String {
-    let escaped: String = text.trim().chars().flat_map(char::escape_debug).collect();
-    if escaped.chars().count() <= 80 {
-        escaped
+    let escaped: String = text
+        .trim()
+        .chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_debug().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect();
+    cut(&escaped)
+}
+
+/// `text` cut to 80 characters, the last an "…" if it was longer.
+fn cut(text: &str) -> String {
+    if text.chars().count() <= 80 {
+        text.to_owned()
     } else {
-        escaped.chars().take(79).chain(['…']).collect()
+        text.chars().take(79).chain(['…']).collect()
     }
 }
 
