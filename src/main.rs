@@ -5,6 +5,9 @@ use homerun::cli::{self, Cli, Command, Parsed};
 fn main() -> ExitCode {
     let cli = match cli::parse(std::env::args_os()) {
         Parsed::Run(cli) => cli,
+        Parsed::Help(_) if stdout_at_start::closed() => {
+            return refuse(&cli::UsageError::StdoutClosed);
+        }
         Parsed::Help(help) => {
             // Help and the version go to stdout; a closed pipe loses them.
             let _ = help.print();
@@ -16,6 +19,10 @@ fn main() -> ExitCode {
         preset: "fastball".to_owned(),
     };
     let command = cli.command.as_ref().unwrap_or(&default);
+    // Refused before any work: a batch would fly every row for nothing.
+    if stdout_at_start::closed() && cli::writes_stdout(command) {
+        return refuse(&cli::UsageError::StdoutClosed);
+    }
     let result = match command {
         Command::Tui { preset } => explore(&cli, preset).map(|()| ExitCode::SUCCESS),
         command => cli::run(&cli, command),
@@ -36,4 +43,38 @@ fn refuse(error: &cli::UsageError) -> ExitCode {
 fn explore(cli: &Cli, preset: &str) -> Result<(), cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
     Ok(homerun::tui::run(preset, dir, cli.units)?)
+}
+
+/// Whether standard output was closed when the process started (`homerun
+/// keys >&-`). Rust's runtime opens /dev/null on a closed standard stream
+/// before `main`, where the output would vanish and the exit status say
+/// all went well; so fd 1 is looked at before it, by the C runtime's
+/// initialisers (`.init_array`), as the `ctor` crate does.
+#[cfg(target_os = "linux")]
+mod stdout_at_start {
+    use std::sync::atomic::{AtomicBool, Ordering};
+
+    static CLOSED: AtomicBool = AtomicBool::new(false);
+
+    extern "C" fn record() {
+        // SAFETY: F_GETFD only reads the process's table of descriptors.
+        let closed = unsafe { libc::fcntl(libc::STDOUT_FILENO, libc::F_GETFD) } == -1;
+        CLOSED.store(closed, Ordering::Relaxed);
+    }
+
+    #[used]
+    #[unsafe(link_section = ".init_array")]
+    static RECORD: extern "C" fn() = record;
+
+    pub fn closed() -> bool {
+        CLOSED.load(Ordering::Relaxed)
+    }
+}
+
+/// Elsewhere the runtime's own handling of a closed stream stands.
+#[cfg(not(target_os = "linux"))]
+mod stdout_at_start {
+    pub fn closed() -> bool {
+        false
+    }
 }

@@ -354,7 +354,7 @@ fn every_bad_input_is_one_clear_line_and_status_2() {
     refuses(
         d,
         &["hit", "--preset", &text],
-        &["bat.speed", "expected a number"],
+        &["bat.speed", "\"fast\": not a number"],
     );
     refuses(
         d,

@@ -848,7 +848,7 @@ fn u_shows_and_takes_every_value_in_baseball_units() {
             error: Some(error), ..
         } => assert_eq!(
             error,
-            "pitch.speed = 300 mph: must be a finite number in (0, 223.69] mph"
+            "pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph"
         ),
         other => panic!("an error, not {other:?}"),
     }

@@ -394,8 +394,9 @@ pub(super) fn keys(shown: Shown) -> String {
     if !shown.is_si() {
         let _ = writeln!(
             out,
-            "Ranges and values are shown in imperial units; --set and presets take each key's SI\n\
-             unit (m, m/s, rad, rad/s, kg, °C, hPa: `homerun keys` without --units lists them)."
+            "Ranges and values are shown in imperial units; --set and presets take a bare number in\n\
+             each key's SI unit (`homerun keys` without --units lists them), or a number with its\n\
+             unit: 103mph, 28deg, 2500rpm, 70F, 29.92inHg (see docs/units-on-input.md)."
         );
     }
     out

@@ -326,6 +326,8 @@ pub enum UsageError {
     Batch { input: String, message: String },
     #[error("no park with code {code:?}; the parks: {accepted}")]
     UnknownPark { code: String, accepted: String },
+    #[error("standard output is closed: nothing could be written (give it a file or a pipe)")]
+    StdoutClosed,
 }
 
 /// What is wrong with an A..B window.
@@ -416,6 +418,12 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
         _ => Ok(ExitCode::SUCCESS),
     }
+}
+
+/// Whether `command` writes its output to stdout (the explorer draws on
+/// the terminal; `--svg FILE` writes a file and says so on stderr).
+pub fn writes_stdout(command: &Command) -> bool {
+    !matches!(command, Command::Tui { .. }) && svg_target(command).is_none()
 }
 
 /// Where the command writes its picture, if it was given `--svg FILE`.

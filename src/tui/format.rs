@@ -4,7 +4,7 @@
 //! through here.
 
 use crate::model::keys::{InputError, Key, number_text};
-use crate::units::{Quantity, Unit, UnitSystem};
+use crate::units::{Quantity, UnitSystem};
 
 /// A value as the inputs pane shows it in SI: enough digits for a thousandth
 /// of the key's step, trailing zeros trimmed.
@@ -69,33 +69,12 @@ pub fn read_value(key: &Key, text: &str, system: UnitSystem) -> Result<f64, Inpu
     Ok(key.unit_in(system).read(shown))
 }
 
-/// A bound in the unit shown, to five significant digits (90, 223.69).
-fn bound_text(unit: Unit, si: f64) -> String {
-    let shown = unit.show(si);
-    if shown == 0.0 {
-        return "0".to_owned();
-    }
-    let decimals = (4 - shown.abs().log10().floor() as i32).clamp(0, 12) as usize;
-    trim(format!("{shown:.decimals$}"))
-}
-
 /// A key's accepted range in the unit shown, with the unit: "(0, 100] m/s",
-/// "(0, 223.69] mph", "(-90, 90) °".
+/// "(0, 223.693] mph", "(-90, 90) °".
 pub fn shown_bounds(key: &Key, system: UnitSystem) -> String {
     let unit = key.unit_in(system);
-    let bounds = key.bounds;
-    let range = if unit.is_identity() {
-        // The table's own text, with its π/2.
-        bounds.to_string()
-    } else {
-        let open = if bounds.min_exclusive { '(' } else { '[' };
-        let close = if bounds.max_exclusive { ')' } else { ']' };
-        format!(
-            "{open}{}, {}{close}",
-            bound_text(unit, bounds.min),
-            bound_text(unit, bounds.max)
-        )
-    };
+    // Each end accepted when typed back (in SI the table's own text).
+    let range = key.bounds.shown_in(unit);
     if unit.symbol.is_empty() {
         range
     } else {
@@ -105,7 +84,7 @@ pub fn shown_bounds(key: &Key, system: UnitSystem) -> String {
 
 /// Why a value was refused, in the units shown: a range error on a key
 /// names the value and its accepted range in the key's shown unit
-/// ("pitch.speed = 300 mph: must be a finite number in (0, 223.69] mph");
+/// ("pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph");
 /// a miss, in the undercut's. Other relations between inputs keep the
 /// library's SI text.
 pub fn error_text(error: &InputError, system: UnitSystem) -> String {
@@ -162,7 +141,7 @@ mod tests {
         let error = scene.validate().unwrap_err();
         assert_eq!(
             error_text(&error, imperial),
-            "pitch.speed = 300 mph: must be a finite number in (0, 223.69] mph"
+            "pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph"
         );
         // An angle's bound, π/2, is 90°.
         let angle = Scene::key("launch.angle").unwrap();
