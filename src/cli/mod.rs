@@ -72,8 +72,8 @@ pub struct Cli {
 /// What `--units` does, said once, under `homerun --help` (every command
 /// takes `--units`, and its own help gives one line).
 pub const UNITS_HELP: &str = "Units: --units imperial prints the text and CSV in ft, in, mph, °, rpm, °F, inHg and oz \
-     instead of si's m, m/s, rad, rad/s, °C, hPa and kg. JSON, --set and presets are always SI; \
-     the numbers of sweep's --from/--to and surface's --undercut/--swing-angle are taken in the \
+     instead of si's m, m/s, rad, rad/s, °C, hPa and kg. JSON is always SI, and so is a bare number \
+     in --set, a preset or a batch cell (103mph, 28deg, 2500rpm, 400ft, 70F take their unit); the numbers of sweep's --from/--to and surface's --undercut/--swing-angle are taken in the \
      units printed. The explorer starts in them (its `u` switches).";
 
 /// Which preset to start from, and changes to it.

@@ -135,13 +135,7 @@ impl Scene {
             return Ok(());
         }
         let own = BattedBall::of(&Impact::new(self));
-        let own = [
-            own.speed,
-            own.angle,
-            own.spin,
-            own.direction,
-            own.sidespin,
-        ];
+        let own = [own.speed, own.angle, own.spin, own.direction, own.sidespin];
         for (key, (given, value)) in LAUNCH_KEYS.iter().zip(given.values().into_iter().zip(own)) {
             if given.is_none() && !key.bounds.contains(value) {
                 let swing = SWING_KEYS
