@@ -169,10 +169,14 @@ fn f3_a_subnormal_spin_decay_time_flies_as_no_spin() {
     use homerun::model::launch::{BattedBall, fly_scene};
     let fastball = Scene::default();
     let launch = fastball.batted_ball();
-    let spinless = fastball.with_launch(BattedBall {
+    let mut spinless = fastball.with_launch(BattedBall {
         spin: 0.0,
         ..launch
     });
+    // The swing's (the paper's) models, which a batted ball would not fly
+    // unless chosen.
+    spinless.choose_drag(fastball.drag);
+    spinless.choose_lift(fastball.lift);
     let without = fly_scene(&spinless, Purpose::Readout).flight;
     for tau in [1e-310, 5e-324, 1e-300, 1e-9] {
         let mut scene = fastball;

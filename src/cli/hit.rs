@@ -308,6 +308,27 @@ pub(super) fn trajectory(
 
 /// The input keys, as `--set` and the TOML presets take them, with their
 /// ranges and the fastball's values in the units shown (`--set` takes SI).
+/// `head` then `text` wrapped at words to `width` columns, the lines after
+/// the first indented under the text.
+fn hanging(head: &str, text: &str, width: usize) -> String {
+    let indent = head.chars().count() + 2;
+    let mut out = format!("{head}  ");
+    let mut column = indent;
+    for word in text.split_whitespace() {
+        let length = word.chars().count();
+        if column > indent && column + 1 + length > width {
+            out += &format!("\n{}", " ".repeat(indent));
+            column = indent;
+        } else if column > indent {
+            out.push(' ');
+            column += 1;
+        }
+        out += word;
+        column += length;
+    }
+    out
+}
+
 pub(super) fn keys(shown: Shown) -> String {
     let defaults = Scene::default();
     // Each column as wide as its widest field, two spaces apart, so that no
@@ -391,6 +412,15 @@ pub(super) fn keys(shown: Shown) -> String {
         "\nAlso: bat.undercut must stay below r_b + r_B in size (the bat must reach the ball), and\n\
          pitch.speed must be fast enough for Eq. (3) to hold at the chosen gravity."
     );
+    let _ = writeln!(out, "\nWhy each range is what it is:");
+    let names = all_keys()
+        .map(|k| k.name.chars().count())
+        .max()
+        .unwrap_or(0);
+    for key in all_keys() {
+        let head = format!("{:names$}", key.name);
+        let _ = writeln!(out, "{}", hanging(&head, key.bounds_reason, 100));
+    }
     if !shown.is_si() {
         let _ = writeln!(
             out,

@@ -131,6 +131,8 @@ pub struct Key {
     pub unit: &'static str,
     pub description: &'static str,
     pub bounds: Bounds,
+    /// Why the bounds are where they are, in a sentence or two.
+    pub bounds_reason: &'static str,
     /// A nudge that suits the quantity (the explorer's arrow keys).
     pub step: f64,
     pub get: fn(&Scene) -> f64,
