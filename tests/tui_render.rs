@@ -65,6 +65,31 @@ fn input_edited_with_an_invalid_value() {
 }
 
 #[test]
+fn editing_a_value_keeps_its_symbol_and_unit() {
+    // The box takes the value's place: the symbol before it and the unit
+    // after it stay, and the line under the list says what it takes.
+    for (w, h) in SIZES {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        select(&mut app, "bat.speed");
+        key(&mut app, KeyCode::Enter);
+        typed(&mut app, "3");
+        let screen = screen(&app);
+        let row = screen
+            .lines()
+            .find(|l| l.contains("▶"))
+            .expect("the selected row");
+        assert!(
+            row.contains("V̂_B0") && row.contains(" 3 ") && row.contains("m/s"),
+            "{row}"
+        );
+        let help: String = screen.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(help.contains("bat.speed in m/s, (0, 100]"), "{screen}");
+        insta::assert_snapshot!(format!("edit_{w}x{h}"), screen);
+    }
+}
+
+#[test]
 fn failed_save() {
     for (w, h) in SIZES {
         // A folder that cannot be created: /dev/null is not a directory.

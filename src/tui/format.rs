@@ -82,9 +82,20 @@ fn bound_text(unit: Unit, si: f64) -> String {
 /// A key's accepted range in the unit shown, with the unit: "(0, 100] m/s",
 /// "(0, 223.69] mph", "(-90, 90) °".
 pub fn shown_bounds(key: &Key, system: UnitSystem) -> String {
+    let (range, symbol) = (shown_range(key, system), key.unit_in(system).symbol);
+    if symbol.is_empty() {
+        range
+    } else {
+        format!("{range} {symbol}")
+    }
+}
+
+/// A key's accepted range in the unit shown, without the unit: "(0, 100]",
+/// "(-90, 90)", "[-π/2, π/2]".
+pub fn shown_range(key: &Key, system: UnitSystem) -> String {
     let unit = key.unit_in(system);
     let bounds = key.bounds;
-    let range = if unit.is_identity() {
+    if unit.is_identity() {
         // The table's own text, with its π/2.
         bounds.to_string()
     } else {
@@ -95,11 +106,6 @@ pub fn shown_bounds(key: &Key, system: UnitSystem) -> String {
             bound_text(unit, bounds.min),
             bound_text(unit, bounds.max)
         )
-    };
-    if unit.symbol.is_empty() {
-        range
-    } else {
-        format!("{range} {}", unit.symbol)
     }
 }
 
