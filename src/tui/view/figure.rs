@@ -7,9 +7,9 @@ use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Chart, Paragraph, Wrap};
+use ratatui::widgets::{Block, Chart, Paragraph};
 
-use super::chart;
+use super::{chart, words};
 use crate::analysis::figures::curves::{
     Curve, axis_title, column_input, current_value, curves, marked_points, panels, x_column,
 };
@@ -119,7 +119,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         None => return,
         Some(Err(e)) => {
             frame.render_widget(
-                Paragraph::new(Line::styled(e.as_str(), theme::ERROR)),
+                Paragraph::new(Line::styled(e.as_str(), theme::ERROR))
+                    .wrap(ratatui::widgets::Wrap { trim: true }),
                 inner,
             );
             return;
@@ -149,52 +150,50 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         })
         .collect();
 
-    // The paper's numbers beside ours, as many as leave the chart room.
-    let mut notes: Vec<Line> = data
+    // The paper's numbers beside ours, and the notes: each gets a row, and
+    // rows to spare go to the first ones' further words.
+    let notes: Vec<Vec<Span>> = data
         .comparisons
         .iter()
         .map(|c| {
-            // The numbers first, so that a narrow pane cuts only the words.
-            Line::from(vec![
+            // The numbers first, so that a narrow pane loses only words.
+            vec![
                 Span::styled(format!("paper {}", trimmed(c.paper)), dim()),
                 Span::raw(format!(" · ours {} {}", sig(c.ours, 3), c.unit)),
                 Span::styled(format!("  {}", c.what), dim()),
-            ])
+            ]
         })
+        .chain(
+            data.notes
+                .iter()
+                .map(|n| vec![Span::styled(n.as_str(), dim())]),
+        )
         .collect();
-    notes.extend(data.notes.iter().map(|n| Line::styled(n.as_str(), dim())));
-    let room = (inner.height as usize).saturating_sub(10).max(1);
-    // Whole notes, wrapped, when they take at most a quarter of the pane
-    // (the chart comes first); else one line each, as many as fit, cut at
-    // the edge (the numbers come first).
-    let wrapped: usize = notes
+    let width = inner.width as usize;
+    let height = inner.height as usize;
+    // The caption takes two rows where the pane is tall enough.
+    let caption = [Span::styled(data.title.as_str(), dim())];
+    let caption = words::fit(&caption, width, if height >= 18 { 2 } else { 1 });
+    // The chart keeps at least 10 rows; the notes a quarter of the pane,
+    // or a row each.
+    let budget = height
+        .saturating_sub(10 + caption.len())
+        .min((height / 4).max(notes.len()))
+        .max(1);
+    let rows = note_rows(&notes, width, budget);
+    let below: Vec<Line> = notes
         .iter()
-        .map(|note| wrapped_rows(&note.to_string(), inner.width as usize))
-        .sum();
-    let wrap = wrapped <= room.min(inner.height as usize / 4);
-    let rows = if wrap {
-        wrapped
-    } else {
-        notes.truncate(room);
-        notes.len()
-    };
-    let [heading, plot, below] = Layout::vertical([
-        Constraint::Length(1),
+        .zip(&rows)
+        .flat_map(|(note, &rows)| words::fit(note, width, rows))
+        .collect();
+    let [heading, plot, below_area] = Layout::vertical([
+        Constraint::Length(caption.len() as u16),
         Constraint::Fill(1),
-        Constraint::Length(rows as u16),
+        Constraint::Length(below.len() as u16),
     ])
     .areas(inner);
-    frame.render_widget(
-        Paragraph::new(Line::styled(data.title.as_str(), dim())),
-        heading,
-    );
-    let notes = Paragraph::new(notes);
-    let notes = if wrap {
-        notes.wrap(Wrap { trim: true })
-    } else {
-        notes
-    };
-    frame.render_widget(notes, below);
+    frame.render_widget(Paragraph::new(caption), heading);
+    frame.render_widget(Paragraph::new(below), below_area);
 
     let points = curves.iter().flat_map(|c| c.points.iter());
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
@@ -240,31 +239,15 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .legend_position(None);
     frame.render_widget(chart, plot);
 }
-/// How many rows `text` takes when wrapped at words to `width` cells, as
-/// `Wrap { trim: true }` does: spaces inside a row count, those at a break
-/// do not, and a word longer than a row is split.
-fn wrapped_rows(text: &str, width: usize) -> usize {
-    if width == 0 {
-        return u16::MAX.into();
-    }
-    let (mut rows, mut used) = (1, 0);
-    // Each word with the spaces before it (the second and later spaces of
-    // a gap are empty pieces).
-    let mut gap = 0;
-    for word in text.trim().split(' ') {
-        gap += 1;
-        if word.is_empty() {
-            continue;
-        }
-        let cells = Span::raw(word).width().max(1);
-        let needed = if used == 0 { cells } else { used + gap + cells };
-        if needed <= width {
-            used = needed;
-        } else {
-            rows += usize::from(used > 0) + (cells - 1) / width;
-            used = (cells - 1) % width + 1;
-        }
-        gap = 0;
+/// The rows each note gets out of `budget`: one each, in order, while they
+/// last; then the rest of their words, first notes first.
+fn note_rows(notes: &[Vec<Span>], width: usize, budget: usize) -> Vec<usize> {
+    let mut rows: Vec<usize> = (0..notes.len()).map(|k| usize::from(k < budget)).collect();
+    let mut spare = budget.saturating_sub(notes.len());
+    for (note, rows) in notes.iter().zip(rows.iter_mut()) {
+        let more = words::rows_needed(note, width).saturating_sub(1).min(spare);
+        *rows += more;
+        spare -= more;
     }
     rows
 }
@@ -274,14 +257,12 @@ mod tests {
     use super::*;
 
     #[test]
-    fn notes_wrap_at_words() {
-        assert_eq!(wrapped_rows("paper 5 · ours 4.01 m", 40), 1);
-        // "range gained" does not fit in 10 after "paper 5 ·".
-        assert_eq!(wrapped_rows("paper 5 · range gained", 10), 3);
-        assert_eq!(wrapped_rows("abcdefghijkl", 5), 3);
-        assert_eq!(wrapped_rows("", 5), 1);
-        // A double space counts: 11 cells do not fit in 10.
-        assert_eq!(wrapped_rows("ab cd  efgh", 10), 2);
-        assert_eq!(wrapped_rows("ab cd efgh", 10), 1);
+    fn notes_get_a_row_each_then_the_rest_of_their_words() {
+        let note = |text: &'static str| vec![Span::raw(text)];
+        let notes = [note("one two three four"), note("five six"), note("seven")];
+        // 10 cells: the first needs 2 rows.
+        assert_eq!(note_rows(&notes, 10, 2), [1, 1, 0]);
+        assert_eq!(note_rows(&notes, 10, 3), [1, 1, 1]);
+        assert_eq!(note_rows(&notes, 10, 5), [2, 1, 1]);
     }
 }

@@ -9,6 +9,7 @@ mod inputs;
 mod overlay;
 mod readout;
 mod trajectory;
+mod words;
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
