@@ -60,3 +60,29 @@ fn figure_captions_and_notes_are_never_cut_mid_word() {
         }
     }
 }
+
+#[test]
+fn figures_8_to_12_show_their_three_panels_where_there_is_room() {
+    for number in [8, 9, 10, 11, 12] {
+        for ((w, h), all) in [((200, 60), true), ((80, 24), false)] {
+            let mut app = app(w, h, None);
+            key(&mut app, KeyCode::Char('4'));
+            while app.figure_number != number {
+                key(&mut app, KeyCode::Char('f'));
+            }
+            settle(&mut app);
+            let pane = layout(app.size, app.tab, true).figure.unwrap();
+            let text = rows_in(&app, pane).join("\n");
+            // The caption names all three; the axes only those drawn.
+            let axes: String = text.lines().skip(2).collect::<Vec<_>>().join("\n");
+            for title in ["range (", "E_opt (", "ψ_opt ("] {
+                let drawn = axes.contains(&format!("│{title}"));
+                let expected = all || title == "range (";
+                assert_eq!(
+                    drawn, expected,
+                    "Fig. {number} at {w}×{h}, {title}:\n{text}"
+                );
+            }
+        }
+    }
+}

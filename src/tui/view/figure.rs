@@ -5,13 +5,12 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Chart, Paragraph};
+use ratatui::widgets::{Block, Paragraph};
 
-use super::{chart, words};
+use super::{figure_panels, words};
 use crate::analysis::figures::curves::{
-    Curve, axis_title, column_input, current_value, curves, marked_points, panels, x_column,
+    Curve, axis_title, column_input, curves, marked_points, panels, x_column,
 };
 use crate::analysis::figures::{Column, FigureData, trimmed};
 use crate::tui::app::{AERO_FIGURES, App, FIGURES};
@@ -38,7 +37,7 @@ pub fn chart_marks(data: &FigureData) -> Vec<(f64, f64)> {
 /// swept input's, else what its heading's SI unit measures (a range in m
 /// is a distance, ω in rad/s a spin). Dimensionless columns (Re, S, C_D)
 /// and times stay as they are.
-fn column_unit(app: &App, column: &Column) -> (Unit, String) {
+pub(super) fn column_unit(app: &App, column: &Column) -> (Unit, String) {
     let title = axis_title(&column.head);
     let si = title
         .rsplit_once('(')
@@ -67,7 +66,7 @@ fn column_unit(app: &App, column: &Column) -> (Unit, String) {
 }
 
 /// `value` to `digits` significant digits.
-fn sig(value: f64, digits: i32) -> String {
+pub(super) fn sig(value: f64, digits: i32) -> String {
     if value == 0.0 || !value.is_finite() {
         return format!("{value}");
     }
@@ -127,29 +126,6 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
         Some(Ok(data)) => data,
     };
-    let (x, curves) = chart_curves(data);
-    // In the units shown: the swept input's and the curves' (range in ft).
-    let (x_unit, x_title) = column_unit(app, &data.columns[x]);
-    let panel = panels(data.number)[0];
-    let (y_unit, y_head) = data
-        .columns
-        .iter()
-        .find(|c| c.key.starts_with(panel))
-        .map_or(
-            (Quantity::Unchanged.unit(app.units, ""), String::new()),
-            |c| column_unit(app, c),
-        );
-    let shown = |(px, py): (f64, f64)| (x_unit.show(px), y_unit.show(py));
-    // The paper's marked points (A, B, Dryden's point…), each on its curve.
-    let marks: Vec<(f64, f64)> = chart_marks(data).into_iter().map(shown).collect();
-    let curves: Vec<Curve> = curves
-        .into_iter()
-        .map(|curve| Curve {
-            points: curve.points.iter().copied().map(shown).collect(),
-            ..curve
-        })
-        .collect();
-
     // The paper's numbers beside ours, and the notes: each gets a row, and
     // rows to spare go to the first ones' further words.
     let notes: Vec<Vec<Span>> = data
@@ -195,50 +171,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     frame.render_widget(Paragraph::new(caption), heading);
     frame.render_widget(Paragraph::new(below), below_area);
 
-    let points = curves.iter().flat_map(|c| c.points.iter());
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for &(px, py) in points {
-        (x0, x1, y0, y1) = (x0.min(px), x1.max(px), y0.min(py), y1.max(py));
-    }
-    if x0 >= x1 || y0 > y1 {
-        return;
-    }
-    let pad = 0.05 * (y1 - y0).max(1e-9);
-    let (y0, y1) = (y0 - pad, y1 + pad);
-
-    // The current input's value, where the x column is an input.
-    let now = current_value(data, &app.scene)
-        .map(|v| x_unit.show(v))
-        .filter(|v| (x0..=x1).contains(v));
-    let now_line = now.map_or(Vec::new(), |v| vec![(v, y0), (v, y1)]);
-
-    let mut datasets = Vec::new();
-    let mut legend = Vec::new();
-    for (k, curve) in curves.iter().enumerate() {
-        let style = theme::FIGURE_CURVES[k % theme::FIGURE_CURVES.len()];
-        datasets.push(chart::line(style, &curve.points));
-        if curves.len() > 1 {
-            legend.push(Span::styled(format!("━ {} ", curve.name), style));
-        }
-    }
-    if !now_line.is_empty() {
-        datasets.push(chart::line(theme::SWING, &now_line));
-        legend.push(Span::styled("│ now ", theme::SWING));
-    }
-    datasets.push(chart::points(Marker::Dot, theme::APEX, &marks));
-    let y_head = if curves.is_empty() {
-        String::new()
-    } else {
-        y_head
-    };
-    let labels = |a: f64, b: f64| [a, 0.5 * (a + b), b].map(|v| sig(v, 3));
-    let chart = Chart::new(datasets)
-        .block(Block::new().title_top(Line::from(legend).right_aligned()))
-        .x_axis(chart::axis(x_title, [x0, x1], labels(x0, x1)))
-        .y_axis(chart::axis(y_head, [y0, y1], labels(y0, y1)))
-        .legend_position(None);
-    frame.render_widget(chart, plot);
+    figure_panels::draw(frame, plot, app, data);
 }
+
 /// The rows each note gets out of `budget`: one each, in order, while they
 /// last; then the rest of their words, first notes first.
 fn note_rows(notes: &[Vec<Span>], width: usize, budget: usize) -> Vec<usize> {

@@ -3,6 +3,7 @@
 
 mod chart;
 pub mod figure;
+mod figure_panels;
 mod heatmap;
 mod impact;
 mod inputs;

@@ -1,0 +1,195 @@
+//! A figure's chart: its panels stacked over one x axis (Figs. 8–12 have
+//! three, the optimal range, E_opt and ψ_opt, shown where the pane has
+//! room; the others one), with the current input's value as a vertical
+//! line and the paper's marked points on the first.
+
+use ratatui::Frame;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Axis, Chart, Paragraph};
+
+use super::chart;
+use super::figure::{column_unit, sig};
+use crate::analysis::figures::FigureData;
+use crate::analysis::figures::curves::{
+    Curve, current_value, curves, marked_points, panels, x_column,
+};
+use crate::tui::app::App;
+use crate::tui::theme;
+use crate::units::{Quantity, Unit};
+
+/// The fewest rows a panel's graph gets; a panel that would get fewer is
+/// left out (the first always shows).
+const PANEL_ROWS: u16 = 5;
+
+/// One panel: its y axis title and its curves, in the units shown.
+struct Panel {
+    title: String,
+    y_unit: Unit,
+    curves: Vec<Curve>,
+}
+
+/// How many of `count` panels to draw in `height` rows: all of them if,
+/// after a row for the legend and two for the x axis, each gets
+/// [`PANEL_ROWS`]; else only the first (two of three would hide one
+/// half-heartedly).
+fn panels_that_fit(height: u16, count: usize) -> usize {
+    let rows = (height.saturating_sub(3) / PANEL_ROWS) as usize;
+    if rows >= count { count.max(1) } else { 1 }
+}
+
+/// The panel of `data` whose y columns start with `prefix`, in the units
+/// shown, against the x column in `x_unit`.
+fn panel(app: &App, data: &FigureData, prefix: &str, x_unit: Unit) -> Panel {
+    let (y_unit, title) = data
+        .columns
+        .iter()
+        .find(|c| c.key.starts_with(prefix))
+        .map_or(
+            (Quantity::Unchanged.unit(app.units, ""), String::new()),
+            |c| column_unit(app, c),
+        );
+    let curves = curves(data, prefix)
+        .into_iter()
+        .map(|curve| Curve {
+            points: curve
+                .points
+                .iter()
+                .map(|&(x, y)| (x_unit.show(x), y_unit.show(y)))
+                .collect(),
+            ..curve
+        })
+        .collect::<Vec<_>>();
+    let title = if curves.is_empty() {
+        String::new()
+    } else {
+        title
+    };
+    Panel {
+        title,
+        y_unit,
+        curves,
+    }
+}
+
+/// The least and greatest of `values`, if they are any.
+fn span(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    values.fold(None, |range, v| match range {
+        None => Some((v, v)),
+        Some((a, b)) => Some((v.min(a), v.max(b))),
+    })
+}
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
+    let x = x_column(data);
+    let (x_unit, x_title) = column_unit(app, &data.columns[x]);
+    let all = panels(data.number);
+    let count = panels_that_fit(area.height, all.len());
+    let shown: Vec<Panel> = all[..count]
+        .iter()
+        .map(|prefix| panel(app, data, prefix, x_unit))
+        .collect();
+    let Some((x0, x1)) = span(
+        shown
+            .iter()
+            .flat_map(|p| p.curves.iter().flat_map(|c| c.points.iter().map(|p| p.0))),
+    )
+    .filter(|(a, b)| a < b) else {
+        return;
+    };
+    // The paper's marked points (A, B, Dryden's point…), each on its curve
+    // of the first panel.
+    let marks: Vec<(f64, f64)> = marked_points(data, &curves(data, all[0]))
+        .into_iter()
+        .map(|m| (x_unit.show(m.point.0), shown[0].y_unit.show(m.point.1)))
+        .collect();
+    // The current input's value, where the x column is an input.
+    let now = current_value(data, &app.scene)
+        .map(|v| x_unit.show(v))
+        .filter(|v| (x0..=x1).contains(v));
+
+    let [legend_row, stack] =
+        Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
+    let mut legend = Vec::new();
+    let main = &shown[0].curves;
+    if main.len() > 1 {
+        for (k, curve) in main.iter().enumerate() {
+            legend.push(Span::styled(format!("━ {} ", curve.name), curve_style(k)));
+        }
+    }
+    if now.is_some() {
+        legend.push(Span::styled("│ now ", theme::SWING));
+    }
+    frame.render_widget(
+        Paragraph::new(Line::from(legend).right_aligned()),
+        legend_row,
+    );
+
+    // Every panel's y labels as wide, so that the graphs line up over the
+    // one x axis (whose first label may reach left of it too).
+    let labels = |a: f64, b: f64| [a, 0.5 * (a + b), b].map(|v| sig(v, 3));
+    let x_labels = labels(x0, x1);
+    let bounds: Vec<(f64, f64)> = shown.iter().map(|p| y_bounds(p)).collect();
+    let label_width = bounds
+        .iter()
+        .flat_map(|&(a, b)| labels(a, b))
+        .map(|l| l.chars().count())
+        .chain([x_labels[0].chars().count().saturating_sub(1)])
+        .max()
+        .unwrap_or(0);
+    let rows = (stack.height.saturating_sub(2) / count as u16).max(1);
+    let constraints = (0..count).map(|k| {
+        if k + 1 < count {
+            Constraint::Length(rows)
+        } else {
+            Constraint::Fill(1)
+        }
+    });
+    let areas = Layout::vertical(constraints).split(stack);
+    for (k, (panel, &(y0, y1))) in shown.iter().zip(&bounds).enumerate() {
+        let now_line = now.map_or(Vec::new(), |v| vec![(v, y0), (v, y1)]);
+        let mut datasets: Vec<_> = panel
+            .curves
+            .iter()
+            .enumerate()
+            .map(|(c, curve)| chart::line(curve_style(c), &curve.points))
+            .collect();
+        if !now_line.is_empty() {
+            datasets.push(chart::line(theme::SWING, &now_line));
+        }
+        if k == 0 {
+            datasets.push(chart::points(Marker::Dot, theme::APEX, &marks));
+        }
+        // Only the lowest panel has the x axis.
+        let x_axis = if k + 1 == count {
+            chart::axis(x_title.clone(), [x0, x1], x_labels.clone())
+        } else {
+            Axis::default().bounds([x0, x1])
+        };
+        let y_labels = labels(y0, y1).map(|l| format!("{l:>label_width$}"));
+        let chart = Chart::new(datasets)
+            .x_axis(x_axis)
+            .y_axis(chart::axis(panel.title.clone(), [y0, y1], y_labels))
+            .legend_position(None);
+        frame.render_widget(chart, areas[k]);
+    }
+}
+
+/// A figure's curve `k`'s style.
+fn curve_style(k: usize) -> ratatui::style::Style {
+    theme::FIGURE_CURVES[k % theme::FIGURE_CURVES.len()]
+}
+
+/// A panel's y bounds: its curves' span, padded by a twentieth.
+fn y_bounds(panel: &Panel) -> (f64, f64) {
+    let (y0, y1) = span(
+        panel
+            .curves
+            .iter()
+            .flat_map(|c| c.points.iter().map(|p| p.1)),
+    )
+    .unwrap_or((0.0, 1.0));
+    let pad = 0.05 * (y1 - y0).max(1e-9);
+    (y0 - pad, y1 + pad)
+}
