@@ -86,3 +86,105 @@ fn figures_8_to_12_show_their_three_panels_where_there_is_room() {
         }
     }
 }
+
+/// A chart's tick labels in `pane`: (x labels, y labels), read off the row
+/// under the axes' corner and the column left of the y axis.
+fn ticks_in(app: &homerun::tui::app::App, pane: ratatui::layout::Rect) -> (Vec<f64>, Vec<f64>) {
+    let buffer = buffer(app);
+    let at = |x: u16, y: u16| buffer[(x, y)].symbol().to_owned();
+    let (corner_x, corner_y) = (pane.y..pane.bottom())
+        .flat_map(|y| (pane.x..pane.right()).map(move |x| (x, y)))
+        .find(|&(x, y)| at(x, y) == "└")
+        .expect("a chart");
+    let numbers = |text: String| -> Vec<f64> {
+        text.split_whitespace()
+            .filter_map(|w| w.parse().ok())
+            .collect()
+    };
+    let x = numbers(
+        (pane.x + 1..pane.right() - 1)
+            .map(|c| at(c, corner_y + 1))
+            .collect(),
+    );
+    let y = (pane.y + 1..corner_y)
+        .flat_map(|row| numbers((pane.x + 1..corner_x).map(|c| at(c, row)).collect()))
+        .collect();
+    (x, y)
+}
+
+/// Whether `ticks` are round: evenly spaced by 1, 2 or 5 times a power of
+/// ten (the y labels top down), each a multiple of it.
+fn round(ticks: &[f64]) -> bool {
+    if ticks.len() < 2 {
+        return false;
+    }
+    let step = (ticks[1] - ticks[0]).abs();
+    let decade = 10f64.powf((step.log10() + 1e-9).floor());
+    let mantissa = step / decade;
+    let nice = [1.0, 2.0, 5.0].iter().any(|m| (mantissa - m).abs() < 1e-6);
+    let even = ticks
+        .windows(2)
+        .all(|w| ((w[1] - w[0]).abs() - step).abs() < 1e-9 * step);
+    let multiples = ticks
+        .iter()
+        .all(|t| ((t / step).round() - t / step).abs() < 1e-6);
+    nice && even && multiples
+}
+
+#[test]
+fn axis_ticks_are_round_numbers() {
+    // The trajectory, the impact and each figure, at 80×24 and 200×60.
+    for (w, h) in [(80, 24), (200, 60)] {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        let panes = layout(app.size, app.tab, true);
+        let (x, y) = ticks_in(&app, panes.trajectory.unwrap());
+        assert!(round(&x) && round(&y), "trajectory at {w}×{h}: {x:?} {y:?}");
+        key(&mut app, KeyCode::Char('3'));
+        let (x, y) = ticks_in(&app, layout(app.size, app.tab, true).impact.unwrap());
+        assert!(round(&x) && round(&y), "impact at {w}×{h}: {x:?} {y:?}");
+        key(&mut app, KeyCode::Char('4'));
+        for number in homerun::tui::app::FIGURES {
+            while app.figure_number != number {
+                key(&mut app, KeyCode::Char('f'));
+            }
+            settle(&mut app);
+            let (x, y) = ticks_in(&app, layout(app.size, app.tab, true).figure.unwrap());
+            // Stacked panels each have their own y ticks: check the lowest's.
+            let y: Vec<f64> = y.into_iter().rev().take(2).collect();
+            assert!(
+                round(&x) && round(&y),
+                "Fig. {number} at {w}×{h}: {x:?} {y:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn fig_13_names_its_points_a_and_b_and_p_c_is_named_in_a_colour_that_reads_on_black() {
+    let mut app = app(80, 24, None);
+    key(&mut app, KeyCode::Char('4'));
+    while app.figure_number != 13 {
+        key(&mut app, KeyCode::Char('f'));
+    }
+    settle(&mut app);
+    let text = rows_in(&app, layout(app.size, app.tab, true).figure.unwrap()).join("\n");
+    assert!(text.contains("•A") && text.contains("•B"), "{text}");
+    key(&mut app, KeyCode::Char('3'));
+    let pane = layout(app.size, app.tab, true).impact.unwrap();
+    let buffer = buffer(&app);
+    let label = (pane.y..pane.bottom())
+        .flat_map(|y| (pane.x..pane.right() - 2).map(move |x| (x, y)))
+        .find(|&(x, y)| {
+            (0..3)
+                .map(|k| buffer[(x + k, y)].symbol())
+                .collect::<String>()
+                == "p_c"
+        })
+        .expect("p_c named on the chart");
+    let colour = buffer[label].fg;
+    assert!(
+        ![ratatui::style::Color::Blue, ratatui::style::Color::Black].contains(&colour),
+        "{colour:?}"
+    );
+}

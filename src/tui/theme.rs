@@ -132,7 +132,7 @@ pub const SLIP: Style = Style::new().fg(Color::Cyan);
 /// v3, their normal approach.
 pub const APPROACH: Style = Style::new().fg(Color::Yellow);
 /// p_c, the end of compression.
-pub const COMPRESSION: Style = Style::new().fg(Color::Blue);
+pub const COMPRESSION: Style = Style::new().fg(Color::LightBlue);
 /// p_s, where slip halts.
 pub const STICK: Style = Style::new().fg(Color::Magenta);
 /// p at the step-through's cursor.

@@ -7,10 +7,10 @@ use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Axis, Chart, Paragraph};
+use ratatui::widgets::Paragraph;
 
-use super::chart;
-use super::figure::{column_unit, sig};
+use super::chart::{self, AxisSpec, Ticks};
+use super::figure::column_unit;
 use crate::analysis::figures::FigureData;
 use crate::analysis::figures::curves::{
     Curve, current_value, curves, marked_points, panels, x_column,
@@ -99,11 +99,15 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
         return;
     };
     // The paper's marked points (A, B, Dryden's point…), each on its curve
-    // of the first panel.
-    let marks: Vec<(f64, f64)> = marked_points(data, &curves(data, all[0]))
+    // of the first panel, with a word where a short one names it.
+    let marks: Vec<((f64, f64), String)> = marked_points(data, &curves(data, all[0]))
         .into_iter()
-        .map(|m| (x_unit.show(m.point.0), shown[0].y_unit.show(m.point.1)))
+        .map(|m| {
+            let point = (x_unit.show(m.point.0), shown[0].y_unit.show(m.point.1));
+            (point, short_label(&m.label))
+        })
         .collect();
+    let mark_points: Vec<(f64, f64)> = marks.iter().map(|m| m.0).collect();
     // The current input's value, where the x column is an input.
     let now = current_value(data, &app.scene)
         .map(|v| x_unit.show(v))
@@ -126,19 +130,26 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
         legend_row,
     );
 
+    let rows = (stack.height.saturating_sub(2) / count as u16).max(1);
+    let x_ticks = Ticks::across(x0, x1, stack.width.saturating_sub(8));
+    let y_ticks: Vec<Ticks> = shown
+        .iter()
+        .map(|p| {
+            let (y0, y1) = span(p.curves.iter().flat_map(|c| c.points.iter().map(|p| p.1)))
+                .unwrap_or((0.0, 1.0));
+            let pad = 0.05 * (y1 - y0);
+            Ticks::up(y0 - pad, y1 + pad, rows)
+        })
+        .collect();
     // Every panel's y labels as wide, so that the graphs line up over the
     // one x axis (whose first label may reach left of it too).
-    let labels = |a: f64, b: f64| [a, 0.5 * (a + b), b].map(|v| sig(v, 3));
-    let x_labels = labels(x0, x1);
-    let bounds: Vec<(f64, f64)> = shown.iter().map(|p| y_bounds(p)).collect();
-    let label_width = bounds
+    let width = y_ticks
         .iter()
-        .flat_map(|&(a, b)| labels(a, b))
+        .flat_map(|t| t.labels())
         .map(|l| l.chars().count())
-        .chain([x_labels[0].chars().count().saturating_sub(1)])
+        .chain([x_ticks.labels()[0].chars().count().saturating_sub(1)])
         .max()
         .unwrap_or(0);
-    let rows = (stack.height.saturating_sub(2) / count as u16).max(1);
     let constraints = (0..count).map(|k| {
         if k + 1 < count {
             Constraint::Length(rows)
@@ -147,8 +158,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
         }
     });
     let areas = Layout::vertical(constraints).split(stack);
-    for (k, (panel, &(y0, y1))) in shown.iter().zip(&bounds).enumerate() {
-        let now_line = now.map_or(Vec::new(), |v| vec![(v, y0), (v, y1)]);
+    for (k, (panel, y)) in shown.iter().zip(&y_ticks).enumerate() {
+        let now_line = now.map_or(Vec::new(), |v| vec![(v, y.lo), (v, y.hi)]);
         let mut datasets: Vec<_> = panel
             .curves
             .iter()
@@ -159,20 +170,40 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
             datasets.push(chart::line(theme::SWING, &now_line));
         }
         if k == 0 {
-            datasets.push(chart::points(Marker::Dot, theme::APEX, &marks));
+            datasets.push(chart::points(Marker::Dot, theme::APEX, &mark_points));
         }
-        // Only the lowest panel has the x axis.
-        let x_axis = if k + 1 == count {
-            chart::axis(x_title.clone(), [x0, x1], x_labels.clone())
-        } else {
-            Axis::default().bounds([x0, x1])
+        // Only the lowest panel has the x axis and its title.
+        let lowest = k + 1 == count;
+        let x = AxisSpec {
+            labelled: lowest,
+            ..AxisSpec::new(if lowest { x_title.as_str() } else { "" }, x_ticks)
         };
-        let y_labels = labels(y0, y1).map(|l| format!("{l:>label_width$}"));
-        let chart = Chart::new(datasets)
-            .x_axis(x_axis)
-            .y_axis(chart::axis(panel.title.clone(), [y0, y1], y_labels))
-            .legend_position(None);
-        frame.render_widget(chart, areas[k]);
+        let y_axis = AxisSpec {
+            width,
+            ..AxisSpec::new(panel.title.clone(), *y)
+        };
+        let graph = chart::draw(frame, areas[k], datasets, &x, &y_axis);
+        if k == 0 {
+            let named: Vec<((f64, f64), &str)> = marks
+                .iter()
+                .filter(|(_, text)| !text.is_empty())
+                .map(|(point, text)| (*point, text.as_str()))
+                .collect();
+            let ticks = (&x_ticks, y);
+            chart::labels(frame, graph, ticks, Marker::Dot, &named, theme::APEX);
+        }
+    }
+}
+
+/// A mark's name on the chart: its words before any "(" or ":", if short
+/// ("A", "highest", "kink"); longer names stay in the caption and notes.
+fn short_label(label: &str) -> String {
+    let name = label.split_once(" (").map_or(label, |(name, _)| name);
+    let name = name.split(':').next().unwrap_or(name).trim();
+    if name.chars().count() <= 8 {
+        name.to_owned()
+    } else {
+        String::new()
     }
 }
 
@@ -181,15 +212,24 @@ fn curve_style(k: usize) -> ratatui::style::Style {
     theme::FIGURE_CURVES[k % theme::FIGURE_CURVES.len()]
 }
 
-/// A panel's y bounds: its curves' span, padded by a twentieth.
-fn y_bounds(panel: &Panel) -> (f64, f64) {
-    let (y0, y1) = span(
-        panel
-            .curves
-            .iter()
-            .flat_map(|c| c.points.iter().map(|p| p.1)),
-    )
-    .unwrap_or((0.0, 1.0));
-    let pad = 0.05 * (y1 - y0).max(1e-9);
-    (y0 - pad, y1 + pad)
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn short_names_label_their_marks_and_long_ones_do_not() {
+        assert_eq!(short_label("A (182.4 rad/s)"), "A");
+        assert_eq!(short_label("highest"), "highest");
+        assert_eq!(short_label("kink"), "kink");
+        assert_eq!(short_label("cusp μ = 0.35: slip halts at separation"), "");
+        assert_eq!(short_label("Dryden's point (paper: C_D = 0.3)"), "");
+    }
+
+    #[test]
+    fn all_three_panels_or_the_first() {
+        assert_eq!(panels_that_fit(18, 3), 3);
+        assert_eq!(panels_that_fit(17, 3), 1);
+        assert_eq!(panels_that_fit(40, 1), 1);
+        assert_eq!(panels_that_fit(0, 3), 1);
+    }
 }

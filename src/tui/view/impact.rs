@@ -4,10 +4,11 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Chart, Paragraph};
+use ratatui::widgets::{Block, Paragraph};
 
-use super::chart;
+use super::chart::{self, AxisSpec, Ticks};
 use crate::tui::app::App;
 use crate::tui::theme::{self, dim, title_style};
 use crate::units::Quantity;
@@ -52,13 +53,14 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .iter()
         .chain(&normal)
         .fold((0.0f64, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
-    let pad = 0.05 * (hi - lo).max(1e-9);
-    let (lo, hi) = (lo - pad, hi + pad);
-    let vertical = |p: f64| [(p, lo), (p, hi)];
+    let x = Ticks::across(0.0, pf, chart_area.width.saturating_sub(6));
+    let pad = 0.05 * (hi - lo);
+    let y = Ticks::up(lo - pad, hi + pad, chart_area.height.saturating_sub(2));
+    let vertical = |p: f64| [(p, y.lo), (p, y.hi)];
     let pc_line = vertical(impact.compression_impulse);
     let ps_line = impact.stick_impulse().map(vertical);
     let cursor = vertical(stop.impulse);
-    let zero = [(0.0, 0.0), (pf, 0.0)];
+    let zero = [(0.0, 0.0), (x.hi, 0.0)];
     let mut datasets = vec![
         chart::line(dim(), &zero),
         chart::line(theme::COMPRESSION, &pc_line),
@@ -67,21 +69,30 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         datasets.push(chart::line(theme::STICK, ps));
     }
     datasets.push(chart::line(theme::CURSOR, &cursor));
-    datasets.push(chart::line(theme::SLIP, &slip).name("v1 slip"));
-    datasets.push(chart::line(theme::APPROACH, &normal).name("v3 normal"));
-    let chart = Chart::new(datasets)
-        .legend_position(None)
-        .x_axis(chart::axis(
-            "p (N·s)",
-            [0.0, pf],
-            ["0".into(), format!("{pf:.2}")],
-        ))
-        .y_axis(chart::axis(
-            speed.symbol,
-            [lo, hi],
-            [format!("{lo:.0}"), format!("{hi:.0}")],
-        ));
-    frame.render_widget(chart, chart_area);
+    datasets.push(chart::line(theme::SLIP, &slip));
+    datasets.push(chart::line(theme::APPROACH, &normal));
+    let graph = chart::draw(
+        frame,
+        chart_area,
+        datasets,
+        &AxisSpec::new("p (N·s)", x),
+        &AxisSpec::new(speed.symbol, y),
+    );
+    // Each line's name at its top, where the chart leaves room.
+    let top = |p: f64| (p, y.hi);
+    let at = |p: f64, name| [(top(p), name)];
+    chart::labels(
+        frame,
+        graph,
+        (&x, &y),
+        Marker::Braille,
+        &at(impact.compression_impulse, "p_c"),
+        theme::COMPRESSION,
+    );
+    if let Some(ps) = impact.stick_impulse() {
+        let marker = Marker::Braille;
+        chart::labels(frame, graph, (&x, &y), marker, &at(ps, "p_s"), theme::STICK);
+    }
 
     let s = impact.at(stop.impulse);
     let lines = vec![
