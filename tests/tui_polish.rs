@@ -188,3 +188,42 @@ fn fig_13_names_its_points_a_and_b_and_p_c_is_named_in_a_colour_that_reads_on_bl
         "{colour:?}"
     );
 }
+
+#[test]
+fn the_trajectory_is_stretched_at_most_twice_as_the_svg_is() {
+    // The fly ball: 28°, 143 m long and 34 m high. Measured on screen: the
+    // rows from the ground to the apex against the columns from the plate
+    // to the landing, a row being CELL_ASPECT columns tall.
+    use homerun::tui::layout::CELL_ASPECT;
+    for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+        let mut app = app_on("fly-ball", w, h, None);
+        settle(&mut app);
+        let pane = layout(app.size, app.tab, false).trajectory.unwrap();
+        let buffer = buffer(&app);
+        let cells: Vec<(u16, u16)> = (pane.y..pane.bottom())
+            .flat_map(|y| (pane.x..pane.right()).map(move |x| (x, y)))
+            .collect();
+        let at = |(x, y): (u16, u16)| buffer[(x, y)].symbol().to_owned();
+        let braille = |c: &(u16, u16)| {
+            at(*c)
+                .chars()
+                .all(|ch| ('\u{2801}'..='\u{28ff}').contains(&ch))
+        };
+        let top = cells
+            .iter()
+            .filter(|c| braille(c))
+            .map(|c| c.1)
+            .min()
+            .unwrap();
+        let &(corner_x, ground) = cells.iter().find(|&&c| at(c) == "└").unwrap();
+        let &(landing, _) = cells.iter().find(|&&c| at(c) == "█").unwrap();
+        let flight = app.flown.flight;
+        let rows = f64::from(ground - top);
+        let columns = f64::from(landing - corner_x);
+        let stretch = (rows * CELL_ASPECT / flight.apex) / (columns / flight.range);
+        assert!(
+            stretch < 2.3,
+            "{w}×{h}: {stretch:.2}× ({rows} rows, {columns} columns)"
+        );
+    }
+}

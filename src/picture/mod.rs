@@ -15,7 +15,7 @@ mod trajectory;
 pub use bench::bench_svg;
 pub use figure::{figure_svg, table_figure_svg};
 pub use surface::{SurfacePicture, surface_svg};
-pub use trajectory::{FlightPath, TrajectoryPicture, trajectory_svg};
+pub use trajectory::{FlightPath, MAX_STRETCH, TrajectoryPicture, trajectory_svg};
 
 use plotters::chart::{ChartContext, MeshStyle, SeriesLabelPosition};
 use plotters::coord::CoordTranslate;

@@ -30,6 +30,10 @@ impl Tab {
     }
 }
 
+/// A terminal cell's height over its width, about: what a chart drawn to
+/// scale must allow for.
+pub const CELL_ASPECT: f64 = 2.0;
+
 /// The smallest screen the explorer draws on.
 pub const MIN_SIZE: (u16, u16) = (60, 16);
 

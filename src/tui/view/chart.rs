@@ -229,12 +229,7 @@ pub fn draw(
         Vec::new()
     };
     let chart = Chart::new(datasets)
-        .x_axis(
-            Axis::default()
-                .title(Span::styled(x.title.clone(), dim()))
-                .bounds(x.ticks.bounds())
-                .labels(x_blanks),
-        )
+        .x_axis(Axis::default().bounds(x.ticks.bounds()).labels(x_blanks))
         .y_axis(
             Axis::default()
                 .title(Span::styled(y.title.clone(), dim()))
@@ -255,9 +250,20 @@ pub fn draw(
             }
         }
     }
-    // x: centred under its column, where it clears its neighbours.
+    // x: the title at the right of the labels' row (in the graph it would
+    // hide the data's end: the landing point), then each label centred
+    // under its column, where it clears its neighbours and the title.
     if x.labelled && area.height > 2 {
         let row = area.bottom() - 1;
+        let title = x.title.chars().count() as u16;
+        let title_at = area.right().saturating_sub(title);
+        let titled = title > 0 && title_at > graph.x + 4;
+        let end = if titled {
+            buf.set_string(title_at, row, &x.title, dim());
+            title_at - 1
+        } else {
+            area.right()
+        };
         let bounds = (x.ticks.bounds(), [0.0, 1.0]);
         let mut free_from = area.x;
         for (value, text) in x.ticks.values().iter().zip(x.ticks.labels()) {
@@ -268,7 +274,7 @@ pub fn draw(
             let start = column
                 .saturating_sub(width / 2)
                 .min(area.right().saturating_sub(width));
-            if start >= free_from {
+            if start >= free_from && start + width <= end {
                 buf.set_string(start, row, &text, dim());
                 free_from = start + width + 1;
             }

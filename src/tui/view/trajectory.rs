@@ -9,7 +9,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Block;
 
 use super::chart::{self, AxisSpec, Ticks};
+use crate::picture::MAX_STRETCH;
 use crate::tui::app::App;
+use crate::tui::layout::CELL_ASPECT;
 use crate::tui::theme::{self, title_style};
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
@@ -92,9 +94,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .title_top(legend.right_aligned());
     let inner = block.inner(area);
     frame.render_widget(block, area);
-    // Round ticks, as many as the pane has room for.
+    // Round ticks, as many as the pane has room for; the height drawn at
+    // most MAX_STRETCH times taller than true, as the SVG draws it (the y
+    // labels' width sets the graph's, and a taller axis may widen them).
+    let rows = inner.height.saturating_sub(2);
     let x = Ticks::across(x_least, x_most, inner.width.saturating_sub(6));
-    let y = Ticks::up(0.0, y_most, inner.height.saturating_sub(2));
+    let mut y = Ticks::up(0.0, y_most, rows);
+    for _ in 0..2 {
+        let least = true_height(inner, &x, &y) / MAX_STRETCH;
+        y = Ticks::up(0.0, y_most.max(least), rows);
+    }
     chart::draw(
         frame,
         inner,
@@ -102,4 +111,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         &AxisSpec::new(format!("x ({unit})"), x),
         &AxisSpec::new(format!("y ({unit})"), y),
     );
+}
+
+/// The y span that draws heights true to scale against `x` in the graph a
+/// chart in `inner` gets with `y`'s labels: a cell is [`CELL_ASPECT`]
+/// times as tall as it is wide.
+fn true_height(inner: Rect, x: &Ticks, y: &Ticks) -> f64 {
+    let label = y.labels().iter().map(|l| l.len()).max().unwrap_or(1) as u16;
+    let graph = chart::graph_area(inner, label, 1, true);
+    CELL_ASPECT * f64::from(graph.height) * (x.hi - x.lo) / f64::from(graph.width.max(1))
 }
