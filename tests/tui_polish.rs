@@ -227,3 +227,52 @@ fn the_trajectory_is_stretched_at_most_twice_as_the_svg_is() {
         );
     }
 }
+
+#[test]
+fn a_120x40_screen_shows_a_second_pane_and_below_80x24_a_notice() {
+    let mut wide = app(120, 40, None);
+    settle(&mut wide);
+    let panes = layout(wide.size, wide.tab, true);
+    assert!(panes.trajectory.is_some() && panes.readout.is_some());
+    assert!(
+        panes.heatmap.is_some(),
+        "the surface beside the flight: {panes:?}"
+    );
+    let shown = screen(&wide);
+    for title in ["Readout", "Range over (E, ψ)", "apex 27.0 m"] {
+        assert!(shown.contains(title), "{title}: {shown}");
+    }
+    // Tabs 3 and 4 choose the second pane; the flight stays.
+    for (tab, title) in [('3', "Impact:"), ('4', "Fig. 8")] {
+        key(&mut wide, KeyCode::Char(tab));
+        settle(&mut wide);
+        let shown = screen(&wide);
+        assert!(
+            shown.contains(title) && shown.contains("Readout"),
+            "{shown}"
+        );
+    }
+    // A batted ball has no surface: its figure takes the place.
+    let mut batted = app_on("fly-ball", 120, 40, None);
+    settle(&mut batted);
+    assert!(screen(&batted).contains("Fig. 3"));
+
+    for (w, h) in [(79, 24), (80, 23), (60, 16), (20, 5)] {
+        let mut small = app(w, h, None);
+        settle(&mut small);
+        let shown = screen(&small);
+        let text = shown
+            .replace('"', " ")
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert!(
+            text.contains("terminal too small (need 80×24)"),
+            "{w}×{h}: {shown}"
+        );
+        assert!(!shown.contains("Inputs"), "{w}×{h}: {shown}");
+    }
+    let mut enough = app(80, 24, None);
+    settle(&mut enough);
+    assert!(!screen(&enough).contains("too small"));
+}

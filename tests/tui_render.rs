@@ -18,6 +18,21 @@ fn default_screen() {
 }
 
 #[test]
+fn a_second_pane_at_120x40() {
+    // The trajectory and the readout side by side, the surface under them.
+    let mut app = app(120, 40, None);
+    settle(&mut app);
+    insta::assert_snapshot!("default_120x40", screen(&app));
+}
+
+#[test]
+fn a_screen_too_small() {
+    let mut app = app(70, 20, None);
+    settle(&mut app);
+    insta::assert_snapshot!("too_small_70x20", screen(&app));
+}
+
+#[test]
 fn range_surface_tab_on_a_small_screen() {
     let mut app = app(80, 24, None);
     settle(&mut app);

@@ -26,14 +26,7 @@ use super::worker::Gain;
 pub fn draw(frame: &mut Frame, app: &App) {
     let area = frame.area();
     if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
-        let text = format!(
-            "homerun needs at least {}×{} (this is {}×{}); q quits",
-            MIN_SIZE.0, MIN_SIZE.1, area.width, area.height
-        );
-        frame.render_widget(
-            Paragraph::new(text).wrap(ratatui::widgets::Wrap { trim: true }),
-            area,
-        );
+        too_small(frame, area);
         return;
     }
     let panes = layout(area, app.tab, app.is_swing());
@@ -83,6 +76,25 @@ pub fn draw(frame: &mut Frame, app: &App) {
         } => overlay::open(frame, area, items, *selected, error.as_deref()),
         Mode::Normal | Mode::Edit { .. } => {}
     }
+}
+
+/// In place of a layout cut to pieces: what size the explorer needs, in
+/// the middle of the screen.
+fn too_small(frame: &mut Frame, area: Rect) {
+    let (w, h) = MIN_SIZE;
+    let lines = vec![
+        Line::styled(format!("terminal too small (need {w}×{h})"), theme::ERROR),
+        Line::raw(format!("this one is {}×{}", area.width, area.height)),
+        Line::styled("enlarge it, or q to quit", dim()),
+    ];
+    let rows = 3.min(area.height);
+    let top = area.y + area.height.saturating_sub(rows) / 2;
+    frame.render_widget(
+        Paragraph::new(lines)
+            .centered()
+            .wrap(ratatui::widgets::Wrap { trim: true }),
+        Rect::new(area.x, top, area.width, area.height - (top - area.y)),
+    );
 }
 
 /// A swing scene's pane in the batted-ball scene: one line saying so.
