@@ -276,3 +276,32 @@ fn a_120x40_screen_shows_a_second_pane_and_below_80x24_a_notice() {
     settle(&mut enough);
     assert!(!screen(&enough).contains("too small"));
 }
+
+#[test]
+fn spin_decay_goes_from_off_to_a_baseballs_30_s_and_its_delta_says_so() {
+    use homerun::analysis::sensitivity;
+    use homerun::model::keys::all_keys;
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    select(&mut app, "model.spin_decay");
+    assert_eq!(app.scene.spin_decay, 0.0);
+    // The Δ column measures this same nudge: off → 30 s.
+    let tau = all_keys().find(|k| k.name == "model.spin_decay").unwrap();
+    let on = sensitivity::nudge(&app.scene, tau, 1.0).unwrap();
+    assert_eq!(on.spin_decay, 30.0);
+    let gain = sensitivity::range_gain(&app.scene, tau, app.flown.flight.range).unwrap();
+    // 30 s costs the fastball a little range (less lift late in the flight),
+    // far less than the 12.9 m that 1 s cost.
+    assert!(gain < 0.0 && gain > -3.0, "{gain}");
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.scene.spin_decay, 30.0);
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.scene.spin_decay, 31.0);
+    key(&mut app, KeyCode::Char('h'));
+    key(&mut app, KeyCode::Char('h'));
+    assert_eq!(app.scene.spin_decay, 29.0);
+    // Down from off stays refused, as below any key's bound.
+    let mut off = app.scene;
+    off.spin_decay = 0.0;
+    assert!(sensitivity::nudge(&off, tau, -1.0).is_err());
+}
