@@ -374,7 +374,7 @@ fn mouse(app: &mut homerun::tui::app::App, kind: MouseEventKind, column: u16, ro
 }
 
 #[test]
-fn a_click_on_the_heatmap_moves_the_swing_to_that_cells_centre() {
+fn a_click_on_the_heatmap_moves_the_swing_to_that_cells_centre_on_the_steps() {
     for (w, h, tab) in [(80, 24, '2'), (200, 60, '1')] {
         let mut app = app(w, h, None);
         settle(&mut app);
@@ -395,6 +395,10 @@ fn a_click_on_the_heatmap_moves_the_swing_to_that_cells_centre() {
         let j = rows - 1.5 - 2.0 * row as f64;
         let psi =
             window.swing_angle.0 + (window.swing_angle.1 - window.swing_angle.0) * j / (rows - 1.0);
+        // Rounded to the inputs' steps (0.5 mm, 0.01 rad).
+        let step = |name| homerun::Scene::key(name).unwrap().step;
+        let on_step = |v: f64, name| (v / step(name)).round() * step(name);
+        let (e, psi) = (on_step(e, "bat.undercut"), on_step(psi, "bat.swing_angle"));
         assert!((app.scene.bat.undercut - e).abs() < 1e-12, "{w}x{h}");
         assert!((app.scene.bat.swing_angle - psi).abs() < 1e-12, "{w}x{h}");
         // The swing's mark is drawn in the cell clicked.

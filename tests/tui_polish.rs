@@ -305,3 +305,43 @@ fn spin_decay_goes_from_off_to_a_baseballs_30_s_and_its_delta_says_so() {
     off.spin_decay = 0.0;
     assert!(sensitivity::nudge(&off, tau, -1.0).is_err());
 }
+
+#[test]
+fn a_click_on_the_surface_sets_values_on_the_inputs_steps() {
+    use ratatui::crossterm::event::{Event, KeyModifiers, MouseButton, MouseEvent, MouseEventKind};
+    // In SI (0.5 mm, 0.01 rad) and in baseball units (0.02 in, 0.5°), over
+    // cells across the surface: the inputs pane shows each value whole.
+    for imperial in [false, true] {
+        let mut app = app(80, 24, None);
+        if imperial {
+            key(&mut app, KeyCode::Char('u'));
+        }
+        settle(&mut app);
+        key(&mut app, KeyCode::Char('2'));
+        let plot =
+            homerun::tui::layout::heatmap_plot(layout(app.size, app.tab, true).heatmap.unwrap());
+        for (column, row) in [
+            (1, 1),
+            (plot.width / 3, 2 * plot.height / 3),
+            (plot.width - 2, 3),
+        ] {
+            app.handle(&Event::Mouse(MouseEvent {
+                kind: MouseEventKind::Down(MouseButton::Left),
+                column: plot.x + column,
+                row: plot.y + row,
+                modifiers: KeyModifiers::NONE,
+            }));
+            app.flush();
+            let (e, psi) = (app.scene.bat.undercut, app.scene.bat.swing_angle);
+            let (e_step, psi_step, e_shown, psi_shown) = if imperial {
+                (0.02, 0.5, e / 0.0254, psi.to_degrees())
+            } else {
+                (0.0005, 0.01, e, psi)
+            };
+            for (value, step) in [(e_shown, e_step), (psi_shown, psi_step)] {
+                let steps = value / step;
+                assert!((steps - steps.round()).abs() < 1e-9, "{value} by {step}");
+            }
+        }
+    }
+}

@@ -24,6 +24,14 @@ pub fn shown_step(key: &Key, system: UnitSystem) -> f64 {
     }
 }
 
+/// An SI value of `key` rounded to its step in the unit shown (0.5 mm or
+/// 0.02 in for the undercut): what a click on the surface sets, so that
+/// the inputs pane shows it whole.
+pub fn on_step(key: &Key, si: f64, system: UnitSystem) -> f64 {
+    let (unit, step) = (key.unit_in(system), shown_step(key, system));
+    unit.read((unit.show(si) / step).round() * step)
+}
+
 /// An SI value of `key` as shown in `system`: in SI (and in a unit that
 /// does not convert) to a thousandth of the step, as it always was; in a
 /// converted unit to the step's own last digit (29.92 inHg for a 0.02 inHg
