@@ -345,3 +345,30 @@ fn a_click_on_the_surface_sets_values_on_the_inputs_steps() {
         }
     }
 }
+
+#[test]
+fn the_fence_reads_the_same_in_the_cli_and_the_explorer() {
+    // The fastball's flight passes the default fence 12.20 m up: over the
+    // 3.0 m wall by 9.2 m; in feet the 121.9 m fence is the 400 ft it was.
+    for (units, sentence) in [
+        ("si", "121.9 m, 3.0 m high: over by 9.2 m"),
+        ("imperial", "400 ft, 10 ft high: over by 30.2 ft"),
+    ] {
+        let output = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"))
+            .args(["fly", "--units", units])
+            .output()
+            .unwrap();
+        let cli = String::from_utf8(output.stdout).unwrap();
+        assert!(cli.contains(&format!("fence    {sentence}\n")), "{cli}");
+        let mut app = app(80, 24, None);
+        if units == "imperial" {
+            key(&mut app, KeyCode::Char('u'));
+        }
+        settle(&mut app);
+        assert!(
+            screen(&app).contains(&format!("fence    {sentence}")),
+            "{}",
+            screen(&app)
+        );
+    }
+}

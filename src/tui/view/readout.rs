@@ -7,6 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
 use crate::analysis::figures::trimmed;
+use crate::analysis::landing::fence_text;
 use crate::analysis::optimum::Status;
 use crate::model::impact::Regime;
 use crate::model::launch::BattedBall;
@@ -318,20 +319,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         lines.push(landing.clone());
     }
     if let Some(fence) = app.fence {
-        // Whether it clears: its height where it passes the fence.
-        let clearance = match app.fence_height {
-            Some(h) if h >= fence.height => format!(": over by {:.1} {u}", d(h - fence.height)),
-            Some(h) => format!(": under by {:.1} {u}", d(fence.height - h)),
-            None => ": falls short".to_owned(),
-        };
-        lines.push(Line::from(vec![
-            label("fence"),
-            Span::raw(format!(
-                "{:.1} {u}, {:.1} {u} high{clearance}",
-                d(fence.distance),
-                d(fence.height)
-            )),
-        ]));
+        // Whether it clears, in the command line's words.
+        let unit = app.unit(Quantity::Distance);
+        let text = fence_text(fence.distance, fence.height, app.fence_height, unit);
+        lines.push(Line::from(vec![label("fence"), Span::raw(text)]));
     }
     // A batted ball's readout has room for the given air too.
     if batted && !derived {
