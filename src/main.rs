@@ -14,10 +14,13 @@ fn main() -> ExitCode {
     };
     let default = Command::Tui {
         preset: "fastball".to_owned(),
+        theme: None,
     };
     let command = cli.command.as_ref().unwrap_or(&default);
     let result = match command {
-        Command::Tui { preset } => explore(&cli, preset).map(|()| ExitCode::SUCCESS),
+        Command::Tui { preset, theme } => {
+            explore(&cli, preset, theme.or(cli.theme)).map(|()| ExitCode::SUCCESS)
+        }
         command => cli::run(&cli, command),
     };
     match result {
@@ -32,8 +35,13 @@ fn refuse(error: &cli::UsageError) -> ExitCode {
     ExitCode::from(2)
 }
 
-/// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s) folder.
-fn explore(cli: &Cli, preset: &str) -> Result<(), cli::UsageError> {
+/// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s)
+/// folder, in the colours for `background` (`None`: detected).
+fn explore(
+    cli: &Cli,
+    preset: &str,
+    background: Option<homerun::tui::theme::Background>,
+) -> Result<(), cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
-    Ok(homerun::tui::run(preset, dir, cli.units)?)
+    Ok(homerun::tui::run(preset, dir, cli.units, background)?)
 }

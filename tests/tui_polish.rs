@@ -372,3 +372,50 @@ fn the_fence_reads_the_same_in_the_cli_and_the_explorer() {
         );
     }
 }
+
+/// The explorer on the fastball with `theme`.
+fn themed(theme: homerun::tui::theme::Theme, w: u16, h: u16) -> homerun::tui::app::App {
+    homerun::tui::app::App::new(
+        homerun::preset::load("fastball", None).unwrap(),
+        None,
+        theme,
+        ratatui::layout::Rect::new(0, 0, w, h),
+    )
+}
+
+#[test]
+fn without_colour_every_cell_is_in_the_terminals_own_colours() {
+    use homerun::tui::theme::{Background, ColorMode, Theme};
+    use ratatui::style::{Color, Modifier};
+    for (w, h) in [(80, 24), (200, 60)] {
+        let mut app = themed(Theme::new(Background::Dark, ColorMode::NoColor), w, h);
+        settle(&mut app);
+        for tab in ['1', '2', '3', '4', '?'] {
+            key(&mut app, KeyCode::Char(tab));
+            settle(&mut app);
+            let buffer = buffer(&app);
+            for cell in buffer.content() {
+                assert!(
+                    cell.fg == Color::Reset && cell.bg == Color::Reset,
+                    "{tab}: {cell:?}"
+                );
+            }
+            // The selected input stands out in reverse video.
+            let reversed = buffer
+                .content()
+                .iter()
+                .any(|c| c.modifier.contains(Modifier::REVERSED));
+            assert!(reversed, "{w}×{h} {tab}");
+            key(&mut app, KeyCode::Esc);
+        }
+    }
+    // The surface in shades, its contour dotted, the marks in reverse.
+    let mut app = themed(Theme::new(Background::Dark, ColorMode::NoColor), 80, 24);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('2'));
+    let shown = screen(&app);
+    for glyph in ["▓", "▒", "░", "•", "✚"] {
+        assert!(shown.contains(glyph), "{glyph}: {shown}");
+    }
+    insta::assert_snapshot!("surface_no_color_80x24", shown);
+}

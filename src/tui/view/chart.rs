@@ -14,12 +14,16 @@ use ratatui::symbols::Marker;
 use ratatui::text::Span;
 use ratatui::widgets::{Axis, Chart, Dataset, GraphType};
 
-use crate::tui::theme::dim;
-
 /// A curve in braille.
 pub fn line(style: Style, data: &[(f64, f64)]) -> Dataset<'_> {
+    curve(Marker::Braille, style, data)
+}
+
+/// A curve drawn in `marker` (braille, or dots and blocks where colour
+/// does not tell curves apart).
+pub fn curve(marker: Marker, style: Style, data: &[(f64, f64)]) -> Dataset<'_> {
     Dataset::default()
-        .marker(Marker::Braille)
+        .marker(marker)
         .graph_type(GraphType::Line)
         .style(style)
         .data(data)
@@ -210,8 +214,8 @@ pub fn draw(
     frame: &mut Frame,
     area: Rect,
     datasets: Vec<Dataset>,
-    x: &AxisSpec,
-    y: &AxisSpec,
+    (x, y): (&AxisSpec, &AxisSpec),
+    dim: Style,
 ) -> Rect {
     let y_labels = y.ticks.labels();
     let y_width = y_labels
@@ -232,7 +236,7 @@ pub fn draw(
         .x_axis(Axis::default().bounds(x.ticks.bounds()).labels(x_blanks))
         .y_axis(
             Axis::default()
-                .title(Span::styled(y.title.clone(), dim()))
+                .title(Span::styled(y.title.clone(), dim))
                 .bounds(y.ticks.bounds())
                 .labels([blank(y_width), blank(y_width)]),
         )
@@ -246,7 +250,7 @@ pub fn draw(
         for (value, text) in y.ticks.values().iter().zip(&y_labels) {
             if let Some((_, row)) = cell_of(graph, bounds, (0.0, *value), Marker::Braille) {
                 let width = graph.x - 1 - area.x;
-                buf.set_string(area.x, row, format!("{text:>0$}", width as usize), dim());
+                buf.set_string(area.x, row, format!("{text:>0$}", width as usize), dim);
             }
         }
     }
@@ -259,7 +263,7 @@ pub fn draw(
         let title_at = area.right().saturating_sub(title);
         let titled = title > 0 && title_at > graph.x + 4;
         let end = if titled {
-            buf.set_string(title_at, row, &x.title, dim());
+            buf.set_string(title_at, row, &x.title, dim);
             title_at - 1
         } else {
             area.right()
@@ -275,7 +279,7 @@ pub fn draw(
                 .saturating_sub(width / 2)
                 .min(area.right().saturating_sub(width));
             if start >= free_from && start + width <= end {
-                buf.set_string(start, row, &text, dim());
+                buf.set_string(start, row, &text, dim);
                 free_from = start + width + 1;
             }
         }
@@ -375,7 +379,7 @@ mod tests {
             let x = AxisSpec::new("", Ticks::new(-1000.0, 1000.0, 2));
             let mut graph = Rect::default();
             terminal
-                .draw(|frame| graph = draw(frame, area, vec![], &x, &y))
+                .draw(|frame| graph = draw(frame, area, vec![], (&x, &y), Style::new()))
                 .unwrap();
             let buffer = terminal.backend().buffer();
             // The axes' corner is left of the graph's first column, under

@@ -14,7 +14,6 @@ use crate::analysis::figures::curves::{
 };
 use crate::analysis::figures::{Column, FigureData, trimmed};
 use crate::tui::app::{AERO_FIGURES, App, FIGURES};
-use crate::tui::theme::{self, dim, title_style};
 use crate::units::{Quantity, Unit};
 
 /// The curves of `data` the explorer draws (its main panel, as
@@ -98,7 +97,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         k + 1,
         if stale { " computing…" } else { "" }
     );
-    let block = Block::bordered().title(Span::styled(title, title_style()));
+    let block = Block::bordered().title(Span::styled(title, app.theme.title));
     let inner = block.inner(area);
     frame.render_widget(block, area);
     // A batted ball has no pitch or bat to sweep: only the aero applies.
@@ -109,7 +108,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             AERO_FIGURES.map(|n| n.to_string()).join("–")
         );
         frame.render_widget(
-            Paragraph::new(Line::styled(text, dim())).wrap(ratatui::widgets::Wrap { trim: true }),
+            Paragraph::new(Line::styled(text, app.theme.dim))
+                .wrap(ratatui::widgets::Wrap { trim: true }),
             inner,
         );
         return;
@@ -118,7 +118,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         None => return,
         Some(Err(e)) => {
             frame.render_widget(
-                Paragraph::new(Line::styled(e.as_str(), theme::ERROR))
+                Paragraph::new(Line::styled(e.as_str(), app.theme.error))
                     .wrap(ratatui::widgets::Wrap { trim: true }),
                 inner,
             );
@@ -134,21 +134,21 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .map(|c| {
             // The numbers first, so that a narrow pane loses only words.
             vec![
-                Span::styled(format!("paper {}", trimmed(c.paper)), dim()),
+                Span::styled(format!("paper {}", trimmed(c.paper)), app.theme.dim),
                 Span::raw(format!(" · ours {} {}", sig(c.ours, 3), c.unit)),
-                Span::styled(format!("  {}", c.what), dim()),
+                Span::styled(format!("  {}", c.what), app.theme.dim),
             ]
         })
         .chain(
             data.notes
                 .iter()
-                .map(|n| vec![Span::styled(n.as_str(), dim())]),
+                .map(|n| vec![Span::styled(n.as_str(), app.theme.dim)]),
         )
         .collect();
     let width = inner.width as usize;
     let height = inner.height as usize;
     // The caption takes two rows where the pane is tall enough.
-    let caption = [Span::styled(data.title.as_str(), dim())];
+    let caption = [Span::styled(data.title.as_str(), app.theme.dim)];
     let caption = words::fit(&caption, width, if height >= 18 { 2 } else { 1 });
     // The chart keeps at least 10 rows; the notes a quarter of the pane,
     // or a row each.

@@ -16,7 +16,7 @@ use crate::analysis::figures::curves::{
     Curve, current_value, curves, marked_points, panels, x_column,
 };
 use crate::tui::app::App;
-use crate::tui::theme;
+use crate::tui::theme::Theme;
 use crate::units::{Quantity, Unit};
 
 /// The fewest rows a panel's graph gets; a panel that would get fewer is
@@ -108,6 +108,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
         })
         .collect();
     let mark_points: Vec<(f64, f64)> = marks.iter().map(|m| m.0).collect();
+    // Dots, or blocks where the second curve is in dots.
+    let mark_marker = if app.theme.colored() {
+        Marker::Dot
+    } else {
+        Marker::Block
+    };
     // The current input's value, where the x column is an input.
     let now = current_value(data, &app.scene)
         .map(|v| x_unit.show(v))
@@ -119,11 +125,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
     let main = &shown[0].curves;
     if main.len() > 1 {
         for (k, curve) in main.iter().enumerate() {
-            legend.push(Span::styled(format!("━ {} ", curve.name), curve_style(k)));
+            let glyph = app.theme.path(k).1;
+            let style = curve_style(&app.theme, k);
+            legend.push(Span::styled(format!("{glyph} {} ", curve.name), style));
         }
     }
     if now.is_some() {
-        legend.push(Span::styled("│ now ", theme::SWING));
+        legend.push(Span::styled("│ now ", app.theme.swing));
     }
     frame.render_widget(
         Paragraph::new(Line::from(legend).right_aligned()),
@@ -164,13 +172,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
             .curves
             .iter()
             .enumerate()
-            .map(|(c, curve)| chart::line(curve_style(c), &curve.points))
+            .map(|(c, curve)| {
+                let marker = app.theme.path(c).0;
+                chart::curve(marker, curve_style(&app.theme, c), &curve.points)
+            })
             .collect();
         if !now_line.is_empty() {
-            datasets.push(chart::line(theme::SWING, &now_line));
+            datasets.push(chart::line(app.theme.swing, &now_line));
         }
         if k == 0 {
-            datasets.push(chart::points(Marker::Dot, theme::APEX, &mark_points));
+            datasets.push(chart::points(mark_marker, app.theme.apex, &mark_points));
         }
         // Only the lowest panel has the x axis and its title.
         let lowest = k + 1 == count;
@@ -182,7 +193,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
             width,
             ..AxisSpec::new(panel.title.clone(), *y)
         };
-        let graph = chart::draw(frame, areas[k], datasets, &x, &y_axis);
+        let graph = chart::draw(frame, areas[k], datasets, (&x, &y_axis), app.theme.dim);
         if k == 0 {
             let named: Vec<((f64, f64), &str)> = marks
                 .iter()
@@ -190,7 +201,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
                 .map(|(point, text)| (*point, text.as_str()))
                 .collect();
             let ticks = (&x_ticks, y);
-            chart::labels(frame, graph, ticks, Marker::Dot, &named, theme::APEX);
+            chart::labels(frame, graph, ticks, mark_marker, &named, app.theme.apex);
         }
     }
 }
@@ -208,8 +219,8 @@ fn short_label(label: &str) -> String {
 }
 
 /// A figure's curve `k`'s style.
-fn curve_style(k: usize) -> ratatui::style::Style {
-    theme::FIGURE_CURVES[k % theme::FIGURE_CURVES.len()]
+fn curve_style(theme: &Theme, k: usize) -> ratatui::style::Style {
+    theme.figure_curves[k % theme.figure_curves.len()]
 }
 
 #[cfg(test)]

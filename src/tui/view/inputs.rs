@@ -19,7 +19,6 @@ use crate::model::aero::{DragModel, LiftModel};
 use crate::tui::app::{App, Field, GainCell, Mode, input_key};
 use crate::tui::format::{shown_bounds, shown_range, shown_step, shown_value};
 use crate::tui::layout::{input_scroll, inputs_list};
-use crate::tui::theme::{self, dim, title_style};
 use crate::tui::worker::Gain;
 
 /// Display width of the symbol column (V̂_b0, k_B2, y(0): four cells).
@@ -122,10 +121,10 @@ fn gain_span(
     fixed: bool,
 ) -> Span<'static> {
     let (text, style) = match cell {
-        None => (String::new(), theme::PLAIN),
+        None => (String::new(), app.theme.plain),
         // At the optimum, the swing's own inputs change nothing.
-        Some(GainCell { value: None, .. }) if !fixed => ("—".to_owned(), dim()),
-        Some(GainCell { value: None, .. }) => ("0".to_owned(), dim()),
+        Some(GainCell { value: None, .. }) if !fixed => ("—".to_owned(), app.theme.dim),
+        Some(GainCell { value: None, .. }) => ("0".to_owned(), app.theme.dim),
         Some(GainCell {
             value: Some(v),
             generation,
@@ -136,9 +135,9 @@ fn gain_span(
                 Sensitivity::Signs => gain_signs(v, max),
             };
             let style = if generation != app.generation {
-                theme::STALE_GAIN
+                app.theme.stale_gain
             } else {
-                theme::gain(v, max)
+                app.theme.gain(v, max)
             };
             (text, style)
         }
@@ -160,7 +159,7 @@ fn largest(app: &App, gain: Gain) -> f64 {
 /// The pane's title: "Inputs" at the left, the Δ columns' heads at the right
 /// above their columns (in the busy colour while any is being computed).
 fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
-    let left = Line::from(Span::styled(" Inputs ", title_style()));
+    let left = Line::from(Span::styled(" Inputs ", app.theme.title));
     let Some(form) = c.swing else {
         return (left, None);
     };
@@ -168,7 +167,7 @@ fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
     // Each head is right-aligned over its column; the border runs on to it.
     let head = |text: String, gain: Gain, cells: usize| {
         let busy = app.gains_done(gain) < app.gain_count();
-        let style = if busy { theme::BUSY } else { dim() };
+        let style = if busy { app.theme.busy } else { app.theme.dim };
         let text = format!(" {text}");
         [
             Span::raw("─".repeat(cells.saturating_sub(width(&text)))),
@@ -242,7 +241,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     for (line, field) in lines.iter().enumerate() {
         let Some(i) = *field else {
             let group = lines[line + 1].map_or("", |i| app.fields[i].group());
-            rows.push(Line::styled(format!("─ {group}"), dim()));
+            rows.push(Line::styled(format!("─ {group}"), app.theme.dim));
             continue;
         };
         let field = &app.fields[i];
@@ -297,9 +296,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
         let marker = if selected { "▶" } else { " " };
         let style = if selected {
-            theme::SELECTED
+            app.theme.selected
         } else {
-            theme::PLAIN
+            app.theme.plain
         };
         let mut spans = vec![Span::raw(marker), Span::styled(label, style)];
         let edited = selected && editing.is_some();
@@ -345,14 +344,18 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     }
 
     let about_text = match editing {
-        Some((_, Some(error))) => Paragraph::new(Line::styled(error.as_str(), theme::ERROR)),
+        Some((_, Some(error))) => Paragraph::new(Line::styled(error.as_str(), app.theme.error)),
         Some((_, None)) => Paragraph::new(Line::styled(
             edit_help(app, app.fields[app.selected]),
-            dim(),
+            app.theme.dim,
         )),
         None if app.message.is_some() => {
             let (message, error) = app.message.as_ref().expect("checked");
-            let style = if *error { theme::ERROR } else { theme::GOOD };
+            let style = if *error {
+                app.theme.error
+            } else {
+                app.theme.good
+            };
             Paragraph::new(Line::styled(message.as_str(), style))
         }
         None => {
@@ -371,7 +374,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                     )
                 }
             };
-            Paragraph::new(Line::styled(text, dim()))
+            Paragraph::new(Line::styled(text, app.theme.dim))
         }
     };
     frame.render_widget(about_text.wrap(Wrap { trim: true }), about);

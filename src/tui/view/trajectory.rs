@@ -12,7 +12,6 @@ use super::chart::{self, AxisSpec, Ticks};
 use crate::picture::MAX_STRETCH;
 use crate::tui::app::App;
 use crate::tui::layout::CELL_ASPECT;
-use crate::tui::theme::{self, title_style};
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let flight = &app.flown.flight;
@@ -50,26 +49,29 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         Vec::new()
     };
     let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
+    // Each path's marker and legend glyph: told apart by colour, or by
+    // glyph where there is none.
+    let (now, best, pin) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
     let mut datasets = Vec::new();
     if !optimal_path.is_empty() {
-        datasets.push(chart::line(theme::OPTIMAL, &optimal_path).name("optimal"));
+        datasets.push(chart::curve(best.0, app.theme.optimal, &optimal_path).name("optimal"));
     }
     if !pinned_path.is_empty() {
-        datasets.push(chart::line(theme::PINNED, &pinned_path).name("pinned"));
+        datasets.push(chart::curve(pin.0, app.theme.pinned, &pinned_path).name("pinned"));
     }
-    datasets.push(chart::line(theme::SWING, &path).name("this swing"));
-    datasets.push(chart::points(Marker::Dot, theme::APEX, &apex).name("apex"));
-    datasets.push(chart::points(Marker::Block, theme::LANDING, &landing).name("landing"));
+    datasets.push(chart::curve(now.0, app.theme.swing, &path).name("this swing"));
+    datasets.push(chart::points(Marker::Dot, app.theme.apex, &apex).name("apex"));
+    datasets.push(chart::points(Marker::Block, app.theme.landing, &landing).name("landing"));
     if app.fence.is_some() {
-        datasets.push(chart::line(theme::FENCE, &fence_line).name("fence"));
+        datasets.push(chart::line(app.theme.fence, &fence_line).name("fence"));
     }
     // The legend sits in the border, where it hides no data.
-    let mut legend = vec![Span::styled("━ now ", theme::SWING)];
+    let mut legend = vec![Span::styled(format!("{} now ", now.1), app.theme.swing)];
     if !optimal_path.is_empty() {
-        legend.push(Span::styled("━ best ", theme::OPTIMAL));
+        legend.push(Span::styled(format!("{} best ", best.1), app.theme.optimal));
     }
     if !pinned_path.is_empty() {
-        legend.push(Span::styled("━ pin ", theme::PINNED));
+        legend.push(Span::styled(format!("{} pin ", pin.1), app.theme.pinned));
     }
     let legend = Line::from(legend);
     let numbers = if flight.landed {
@@ -90,7 +92,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         format!(" {numbers}")
     };
     let block = Block::bordered()
-        .title(Span::styled(title, title_style()))
+        .title(Span::styled(title, app.theme.title))
         .title_top(legend.right_aligned());
     let inner = block.inner(area);
     frame.render_widget(block, area);
@@ -108,8 +110,11 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         frame,
         inner,
         datasets,
-        &AxisSpec::new(format!("x ({unit})"), x),
-        &AxisSpec::new(format!("y ({unit})"), y),
+        (
+            &AxisSpec::new(format!("x ({unit})"), x),
+            &AxisSpec::new(format!("y ({unit})"), y),
+        ),
+        app.theme.dim,
     );
 }
 
