@@ -17,6 +17,7 @@ fn main() -> ExitCode {
     };
     let default = Command::Tui {
         preset: "fastball".to_owned(),
+        theme: None,
     };
     let command = cli.command.as_ref().unwrap_or(&default);
     // Refused before any work: a batch would fly every row for nothing.
@@ -24,7 +25,9 @@ fn main() -> ExitCode {
         return refuse(&cli::UsageError::StdoutClosed);
     }
     let result = match command {
-        Command::Tui { preset } => explore(&cli, preset).map(|()| ExitCode::SUCCESS),
+        Command::Tui { preset, theme } => {
+            explore(&cli, preset, theme.or(cli.theme)).map(|()| ExitCode::SUCCESS)
+        }
         command => cli::run(&cli, command),
     };
     match result {
@@ -39,10 +42,15 @@ fn refuse(error: &cli::UsageError) -> ExitCode {
     ExitCode::from(2)
 }
 
-/// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s) folder.
-fn explore(cli: &Cli, preset: &str) -> Result<(), cli::UsageError> {
+/// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s)
+/// folder, in the colours for `background` (`None`: detected).
+fn explore(
+    cli: &Cli,
+    preset: &str,
+    background: Option<homerun::tui::theme::Background>,
+) -> Result<(), cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
-    Ok(homerun::tui::run(preset, dir, cli.units)?)
+    Ok(homerun::tui::run(preset, dir, cli.units, background)?)
 }
 
 /// Whether standard output was closed when the process started (`homerun

@@ -375,7 +375,7 @@ fn mouse(app: &mut homerun::tui::app::App, kind: MouseEventKind, column: u16, ro
 }
 
 #[test]
-fn a_click_on_the_heatmap_moves_the_swing_to_that_cells_centre() {
+fn a_click_on_the_heatmap_moves_the_swing_to_that_cells_centre_on_the_steps() {
     for (w, h, tab) in [(80, 24, '2'), (200, 60, '1')] {
         let mut app = app(w, h, None);
         settle(&mut app);
@@ -396,6 +396,10 @@ fn a_click_on_the_heatmap_moves_the_swing_to_that_cells_centre() {
         let j = rows - 1.5 - 2.0 * row as f64;
         let psi =
             window.swing_angle.0 + (window.swing_angle.1 - window.swing_angle.0) * j / (rows - 1.0);
+        // Rounded to the inputs' steps (0.5 mm, 0.01 rad).
+        let step = |name| homerun::Scene::key(name).unwrap().step;
+        let on_step = |v: f64, name| (v / step(name)).round() * step(name);
+        let (e, psi) = (on_step(e, "bat.undercut"), on_step(psi, "bat.swing_angle"));
         assert!((app.scene.bat.undercut - e).abs() < 1e-12, "{w}x{h}");
         assert!((app.scene.bat.swing_angle - psi).abs() < 1e-12, "{w}x{h}");
         // The swing's mark is drawn in the cell clicked.
@@ -907,12 +911,16 @@ fn a_ball_that_lands_behind_the_plate_is_drawn_behind_it() {
     set_and_settle(&mut app, "launch.angle", "1.4835");
     let range = app.flown.flight.range;
     assert!(app.flown.flight.landed && range < -5.0, "{range}");
+    // The plate's tick, 0, stands well right of the axis' corner.
     let screen = screen(&app);
-    let axis = screen
-        .lines()
-        .find(|l| l.contains("││-30 "))
-        .unwrap_or_else(|| panic!("no negative x label: {screen}"));
-    assert!(axis.contains("160"), "{axis}");
+    let lines: Vec<Vec<char>> = screen.lines().map(|l| l.chars().collect()).collect();
+    let corner_row = lines.iter().position(|l| l.contains(&'└')).unwrap();
+    let corner = lines[corner_row].iter().position(|&c| c == '└').unwrap();
+    let labels: String = lines[corner_row + 1][corner..].iter().collect();
+    let zero = labels
+        .find(" 0 ")
+        .unwrap_or_else(|| panic!("no 0 tick: {screen}"));
+    assert!(zero >= 3, "the axis starts at the plate: {screen}");
 }
 
 /// The readout says what `optimize` says when the optimiser's best grazes

@@ -83,8 +83,12 @@ fn the_fly_ball_preset_reads_back_as_its_launch() {
         text.starts_with("launch   103.0 mph, 2500 rpm of backspin, 28.0°\n"),
         "{text}"
     );
-    // The default fence, 121.9 m and 3.0 m, in feet.
-    assert!(text.contains("at 399.9 ft, over 9.8 ft"), "{text}");
+    // The default fence, 121.9 m and 3.0 m, in feet: as given, 400 ft,
+    // and in the explorer's words.
+    assert!(
+        text.contains("fence    400 ft, 10 ft high: over by "),
+        "{text}"
+    );
 }
 
 #[test]

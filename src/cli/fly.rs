@@ -73,18 +73,13 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
         SceneKind::Swing => " (from the swing's impact)",
         SceneKind::BattedBall => "",
     };
-    let distance = |m, decimals| shown.value(Quantity::Distance, m, decimals);
-    let (at, high) = (distance(fence.distance, 1), distance(fence.height, 1));
-    let fence_line = match flown.height_at_fence {
-        Some(h) if flown.clears_fence() => {
-            format!("clears it: {} up at {at}, over {high}", distance(h, 2))
-        }
-        Some(h) => format!(
-            "does not clear it: {} up at {at}, under {high}",
-            distance(h, 2)
-        ),
-        None => format!("does not reach it, {at} away"),
-    };
+    // The explorer's words (analysis::landing::fence_text).
+    let fence_line = landing::fence_text(
+        fence.distance,
+        fence.height,
+        flown.height_at_fence,
+        shown.unit(Quantity::Distance),
+    );
     let air = scene.environment.air();
     let unlanded = unlanded.map(|why| {
         if shown.is_si() {

@@ -31,6 +31,7 @@ use crate::analysis::study::SweepError;
 use crate::model::keys::{InputError, Key};
 use crate::preset::{self, Preset};
 use crate::tui::TuiError;
+use crate::tui::theme::Background;
 use crate::units::UnitSystem;
 use shown::Shown;
 
@@ -67,6 +68,10 @@ pub struct Cli {
         hide_default_value = true
     )]
     pub units: UnitSystem,
+    /// The explorer's colours: dark or light, for the terminal's background
+    /// (default: from COLORFGBG, else dark). NO_COLOR turns colour off.
+    #[arg(long, value_name = "THEME")]
+    pub theme: Option<Background>,
 }
 
 /// What `--units` does, said once, under `homerun --help` (every command
@@ -239,6 +244,10 @@ pub enum Command {
         /// The preset to start from.
         #[arg(long, short, value_name = "P", default_value = "fastball")]
         preset: String,
+        /// The colours: dark or light, for the terminal's background
+        /// (default: from COLORFGBG, else dark). NO_COLOR turns colour off.
+        #[arg(long, value_name = "THEME")]
+        theme: Option<Background>,
     },
 }
 

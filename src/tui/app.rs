@@ -18,7 +18,7 @@ use super::format::{error_text, read_value, shown_value};
 pub use super::inputs::{input_count, input_key, scene_inputs};
 use super::keymap::{self, Action};
 use super::layout::{Tab, heatmap_resolution, shows_optimum_gains, trajectory_samples};
-use super::theme::ColorMode;
+use super::theme::Theme;
 use super::worker::{FigureJob, Gain, Job, Report, Work};
 use crate::analysis::optimum::{Point, Status};
 use crate::analysis::precision::Purpose;
@@ -175,7 +175,8 @@ pub struct App {
     /// What `x` wrote, or why not, and whether it is an error: shown in the
     /// status line (the full width) until the next key.
     pub export_message: Option<(String, bool)>,
-    pub color: ColorMode,
+    /// How everything looks: the background's colours, or none.
+    pub theme: Theme,
     pub size: Rect,
     /// The current scene's launch, impact (a swing's) and flight at the
     /// readout's precision.
@@ -240,7 +241,12 @@ impl App {
         scene_inputs(self.scene.kind).len()
     }
 
-    pub fn new(preset: Preset, presets_dir: Option<PathBuf>, color: ColorMode, size: Rect) -> App {
+    pub fn new(
+        preset: Preset,
+        presets_dir: Option<PathBuf>,
+        theme: impl Into<Theme>,
+        size: Rect,
+    ) -> App {
         let flown = fly_scene(&preset.scene, Purpose::Readout);
         let fields = fields(preset.scene.kind);
         let selected = first_input(&fields, preset.scene.kind);
@@ -256,7 +262,7 @@ impl App {
             tab: Tab::Flight,
             message: None,
             export_message: None,
-            color,
+            theme: theme.into(),
             size,
             flown,
             fence_height: None,
@@ -574,7 +580,7 @@ impl App {
                 // A name that hides no bundled preset and overwrites no file.
                 let name = preset::fresh_name(&self.preset_name, self.presets_dir.as_deref());
                 self.mode = Mode::Save {
-                    text: prefilled(name),
+                    text: prefilled(name, &self.theme),
                     error: None,
                     overwrite: None,
                 };

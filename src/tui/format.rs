@@ -24,6 +24,14 @@ pub fn shown_step(key: &Key, system: UnitSystem) -> f64 {
     }
 }
 
+/// An SI value of `key` rounded to its step in the unit shown (0.5 mm or
+/// 0.02 in for the undercut): what a click on the surface sets, so that
+/// the inputs pane shows it whole.
+pub fn on_step(key: &Key, si: f64, system: UnitSystem) -> f64 {
+    let (unit, step) = (key.unit_in(system), shown_step(key, system));
+    unit.read((unit.show(si) / step).round() * step)
+}
+
 /// An SI value of `key` as shown in `system`: in SI (and in a unit that
 /// does not convert) to a thousandth of the step, as it always was; in a
 /// converted unit to the step's own last digit (29.92 inHg for a 0.02 inHg
@@ -72,14 +80,20 @@ pub fn read_value(key: &Key, text: &str, system: UnitSystem) -> Result<f64, Inpu
 /// A key's accepted range in the unit shown, with the unit: "(0, 100] m/s",
 /// "(0, 223.693] mph", "(-90, 90) °".
 pub fn shown_bounds(key: &Key, system: UnitSystem) -> String {
-    let unit = key.unit_in(system);
-    // Each end accepted when typed back (in SI the table's own text).
-    let range = key.bounds.shown_in(unit);
-    if unit.symbol.is_empty() {
+    let (range, symbol) = (shown_range(key, system), key.unit_in(system).symbol);
+    if symbol.is_empty() {
         range
     } else {
-        format!("{range} {}", unit.symbol)
+        format!("{range} {symbol}")
     }
+}
+
+/// A key's accepted range in the unit shown, without the unit: "(0, 100]",
+/// "(-90, 90)", "[-π/2, π/2]".
+pub fn shown_range(key: &Key, system: UnitSystem) -> String {
+    let unit = key.unit_in(system);
+    // Each end accepted when typed back (in SI the table's own text).
+    key.bounds.shown_in(unit)
 }
 
 /// Why a value was refused, in the units shown: a range error on a key

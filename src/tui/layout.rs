@@ -30,8 +30,12 @@ impl Tab {
     }
 }
 
-/// The smallest screen the explorer draws on.
-pub const MIN_SIZE: (u16, u16) = (60, 16);
+/// A terminal cell's height over its width, about: what a chart drawn to
+/// scale must allow for.
+pub const CELL_ASPECT: f64 = 2.0;
+
+/// The smallest screen the explorer draws on; a smaller one gets a notice.
+pub const MIN_SIZE: (u16, u16) = (80, 24);
 
 /// Where each pane goes; `None` for a pane not shown at this size and tab.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -56,6 +60,12 @@ pub fn is_wide(area: Rect) -> bool {
 /// at the left, and trajectory, figure, surface and impact in a 2×2 grid.
 pub fn is_big(area: Rect) -> bool {
     area.width >= 190 && area.height >= 54
+}
+
+/// Whether a second pane fits beside the flight (e.g. 120×40): the
+/// trajectory and the readout side by side above the tab's pane.
+pub fn is_medium(area: Rect) -> bool {
+    area.width >= 116 && area.height >= 34
 }
 
 /// Whether the inputs pane is wide enough for the Δopt column (44 or 58
@@ -124,6 +134,8 @@ pub fn layout(area: Rect, tab: Tab, swing: bool) -> Panes {
         } else {
             panes.impact = Some(other);
         }
+    } else if is_medium(area) {
+        medium_layout(&mut panes, right, tab, swing);
     } else {
         let [tabs, content] =
             Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(right);
@@ -142,6 +154,28 @@ pub fn layout(area: Rect, tab: Tab, swing: bool) -> Panes {
         }
     }
     panes
+}
+
+/// A second pane (e.g. 120×40): the tabs, the trajectory and the readout
+/// side by side, and under them the tab's pane: the range surface for the
+/// flight's tab (a batted ball's figure), the impact or the figures.
+fn medium_layout(panes: &mut Panes, right: Rect, tab: Tab, swing: bool) {
+    let [tabs, top, bottom] = Layout::vertical([
+        Constraint::Length(1),
+        Constraint::Percentage(40),
+        Constraint::Fill(1),
+    ])
+    .areas(right);
+    let [trajectory, readout] =
+        Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(top);
+    panes.tabs = Some(tabs);
+    panes.trajectory = Some(trajectory);
+    panes.readout = Some(readout);
+    match (tab, swing) {
+        (Tab::Flight, true) | (Tab::Surface, _) => panes.heatmap = Some(bottom),
+        (Tab::Impact, _) => panes.impact = Some(bottom),
+        (Tab::Flight, false) | (Tab::Figures, _) => panes.figure = Some(bottom),
+    }
 }
 
 /// Everything at once: the inputs over the readout at the left, and a 2×2

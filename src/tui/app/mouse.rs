@@ -5,7 +5,13 @@
 use ratatui::crossterm::event::{MouseEvent, MouseEventKind};
 
 use super::{App, Mode};
+use crate::model::scene::Scene;
+use crate::tui::format::{error_text, on_step};
 use crate::tui::layout::{self, heatmap_point, input_scroll, inputs_list};
+
+/// The keys a click on the surface sets.
+const UNDERCUT: &str = "bat.undercut";
+const SWING_ANGLE: &str = "bat.swing_angle";
 
 impl App {
     pub(super) fn mouse(&mut self, event: MouseEvent) {
@@ -26,10 +32,22 @@ impl App {
                     .filter(|_| self.is_swing())
                     .and_then(|h| heatmap_point(h, x, y))
                 {
-                    self.scene = self.scene.with_swing(e, psi);
-                    self.inputs_changed = true;
-                    self.message = None;
+                    // On the inputs' steps, as typed or nudged values are.
+                    let round = |name, si| match Scene::key(name) {
+                        Ok(key) => on_step(key, si, self.units),
+                        Err(_) => si,
+                    };
+                    let (e, psi) = (round(UNDERCUT, e), round(SWING_ANGLE, psi));
+                    let scene = self.scene.with_swing(e, psi);
                     self.dirty = true;
+                    match scene.validate() {
+                        Ok(()) => {
+                            self.scene = scene;
+                            self.inputs_changed = true;
+                            self.message = None;
+                        }
+                        Err(error) => self.message = Some((error_text(&error, self.units), true)),
+                    }
                 }
             }
             MouseEventKind::ScrollUp | MouseEventKind::ScrollDown => {
