@@ -98,7 +98,7 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
                 "ρ = {}, ν = {:.4e} m²/s; {}",
                 air_text(&air, shown),
                 air.kinematic_viscosity,
-                models_text(scene)
+                scene.models_text()
             ),
         ),
     ])
@@ -111,26 +111,6 @@ pub(super) fn model_json(scene: &Scene) -> serde_json::Value {
         "lift": scene.lift.name(),
         "chosen": {"drag": scene.chosen.drag, "lift": scene.chosen.lift},
     })
-}
-
-/// "drag nathan, lift nathan (a batted ball's defaults)": the models in
-/// force, and where they come from when the user did not choose them.
-pub(super) fn models_text(scene: &Scene) -> String {
-    let whose = match scene.kind {
-        SceneKind::Swing => "the paper's, a swing's default",
-        SceneKind::BattedBall => "Nathan's, a batted ball's default",
-    };
-    let source = |chosen: bool| if chosen { "chosen" } else { whose };
-    let (drag, lift) = (scene.drag, scene.lift);
-    if scene.chosen.drag == scene.chosen.lift {
-        format!("drag {drag}, lift {lift} ({})", source(scene.chosen.drag))
-    } else {
-        format!(
-            "drag {drag} ({}), lift {lift} ({})",
-            source(scene.chosen.drag),
-            source(scene.chosen.lift)
-        )
-    }
 }
 
 /// "1.194 kg/m³ from 21 °C, 5 m, 1013 hPa, 50 %" ([`Air`]'s own words in

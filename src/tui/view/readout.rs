@@ -333,9 +333,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         let text = fence_text(fence.distance, fence.height, app.fence_height, unit);
         lines.push(Line::from(vec![label("fence"), Span::raw(text)]));
     }
-    // A batted ball's readout has room for the given air too.
+    // A batted ball's readout has room for the given air too, and for the
+    // models in force (Nathan's unless chosen: not the swing's).
     if batted && !derived {
         lines.extend(air_lines(inner.width));
+    }
+    if batted {
+        lines.push(Line::from(vec![
+            label("model"),
+            Span::raw(app.scene.models_text()),
+        ]));
     }
     // Room to spare (the large layouts): the rest of the story.
     if area.height as usize >= lines.len() + 6 {
@@ -354,6 +361,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                     speed.symbol,
                     impact.descent_angle.to_degrees()
                 )),
+            ]));
+        }
+        if !batted {
+            lines.push(Line::from(vec![
+                label("model"),
+                Span::raw(app.scene.models_text()),
             ]));
         }
         lines.push(Line::from(vec![
