@@ -156,6 +156,8 @@ pub struct Pin {
     pub flown: Flown,
     /// Its path, sampled at the plot's resolution.
     pub path: Vec<(f64, f64)>,
+    /// Its ground track (x, z), from the same samples.
+    pub ground: Vec<(f64, f64)>,
 }
 
 /// The explorer.
@@ -183,11 +185,17 @@ pub struct App {
     pub flown: Flown,
     /// The ball's height (m) where it passes the fence, if it gets there.
     pub fence_height: Option<f64>,
-    /// The current flight's path, sampled at the plot's resolution.
+    /// The current flight's path (distance from the plate, height), sampled
+    /// at the plot's resolution.
     pub path: Vec<(f64, f64)>,
+    /// Its ground track (x toward centre field, z toward right field), from
+    /// the same samples: the field view draws it from above.
+    pub ground: Vec<(f64, f64)>,
     pub optimum: Option<OptimumState>,
     /// The optimal swing's path, once the optimiser has converged.
     pub optimal_path: Vec<(f64, f64)>,
+    /// Its ground track.
+    pub optimal_ground: Vec<(f64, f64)>,
     pub surface: Option<SurfaceState>,
     /// Bumped on every change of inputs; results for older ones are dropped.
     pub generation: u64,
@@ -267,8 +275,10 @@ impl App {
             flown,
             fence_height: None,
             path: Vec::new(),
+            ground: Vec::new(),
             optimum: None,
             optimal_path: Vec::new(),
+            optimal_ground: Vec::new(),
             surface: None,
             generation: 0,
             warm_start: None,
@@ -358,11 +368,13 @@ impl App {
         self.fence_height = self
             .fence
             .and_then(|fence| height_at_distance(&self.scene, fence.distance, Purpose::Readout).1);
-        self.path = self.plot_path(&self.scene);
+        (self.path, self.ground) = self.plot_tracks(&self.scene);
         // The pin's scene stays; its path follows the plot's resolution.
         if let Some(pin) = self.pin.take() {
+            let (path, ground) = self.plot_tracks(&pin.scene);
             self.pin = Some(Pin {
-                path: self.plot_path(&pin.scene),
+                path,
+                ground,
                 ..pin
             });
         }
@@ -374,6 +386,7 @@ impl App {
         // stale, until the new one is at least as fine (see `apply`).
         self.optimum = None;
         self.optimal_path.clear();
+        self.optimal_ground.clear();
         self.job = Some(self.job_for(Work::Everything));
     }
 
@@ -429,12 +442,18 @@ impl App {
         }));
     }
 
-    fn plot_path(&self, scene: &Scene) -> Vec<(f64, f64)> {
+    /// A scene's flight sampled at the plot's resolution, flown once: its
+    /// side view (distance from the plate, height) and its ground track
+    /// (x, z).
+    fn plot_tracks(&self, scene: &Scene) -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
         let samples = trajectory_samples(self.size, self.is_swing());
         let (_, points) = scene_start(scene)
             .0
             .trajectory(&Purpose::Plot.flight_options(), samples);
-        points.iter().map(|p| (p.distance, p.y)).collect()
+        points
+            .iter()
+            .map(|p| ((p.distance, p.y), (p.x, p.z)))
+            .unzip()
     }
 
     /// Takes in a background result, unless it is for older inputs.
@@ -469,7 +488,7 @@ impl App {
                 // start from or to draw.
                 if done && best.range.is_finite() {
                     self.warm_start = Some((best.undercut, best.swing_angle));
-                    self.optimal_path = self.plot_path(&scene);
+                    (self.optimal_path, self.optimal_ground) = self.plot_tracks(&scene);
                 }
             }
             Report::Sensitivity {
@@ -594,6 +613,7 @@ impl App {
                     scene: self.scene,
                     flown: self.flown,
                     path: self.path.clone(),
+                    ground: self.ground.clone(),
                 });
                 self.message = Some((
                     "pinned: the trajectory and readout compare with it (P clears)".into(),

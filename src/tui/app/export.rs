@@ -113,20 +113,20 @@ impl App {
                 let mut paths = vec![FlightPath {
                     name: "now".into(),
                     points: self.path.clone(),
-                    ground: Vec::new(),
+                    ground: self.ground.clone(),
                 }];
                 if !self.optimal_path.is_empty() {
                     paths.push(FlightPath {
                         name: "best".into(),
                         points: self.optimal_path.clone(),
-                        ground: Vec::new(),
+                        ground: self.optimal_ground.clone(),
                     });
                 }
                 if let Some(pin) = &self.pin {
                     paths.push(FlightPath {
                         name: "pin".into(),
                         points: pin.path.clone(),
-                        ground: Vec::new(),
+                        ground: pin.ground.clone(),
                     });
                 }
                 let picture = TrajectoryPicture {

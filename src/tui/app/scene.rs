@@ -31,6 +31,7 @@ impl App {
             // The old scene's results are of another kind: drop them now.
             self.optimum = None;
             self.optimal_path.clear();
+            self.optimal_ground.clear();
             self.fit_figure();
         }
     }
