@@ -9,6 +9,7 @@ use ratatui_textarea::TextArea;
 
 mod edit;
 mod export;
+mod field;
 mod figures;
 mod mouse;
 mod presets;

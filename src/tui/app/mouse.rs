@@ -1,5 +1,5 @@
-//! The mouse: a click on the heatmap moves the swing there, a click on an
-//! input selects it, the wheel over an input nudges it. Where things are
+//! The mouse: a click on the heatmap moves the swing there, one on the
+//! field sets the launch direction, a click on an input selects it, the wheel over an input nudges it. Where things are
 //! comes from `layout`, the same rectangles the views draw into.
 
 use ratatui::crossterm::event::{MouseEvent, MouseEventKind};
@@ -27,6 +27,8 @@ impl App {
                     self.selected = field;
                     self.message = None;
                     self.dirty = true;
+                } else if panes.field.is_some_and(|pane| self.click_field(pane, x, y)) {
+                    // The field set the launch's direction (or said why not).
                 } else if let Some((e, psi)) = panes
                     .heatmap
                     .filter(|_| self.is_swing())

@@ -2,6 +2,7 @@
 //! Nothing here changes the state or computes physics.
 
 mod chart;
+mod field;
 pub mod figure;
 mod figure_panels;
 mod heatmap;
@@ -33,11 +34,13 @@ pub fn draw(frame: &mut Frame, app: &App) {
     inputs::draw(frame, panes.inputs, app);
     if let Some(tabs) = panes.tabs {
         let selected = Tab::ALL.iter().position(|t| *t == app.tab).unwrap_or(0);
+        let short = Tab::short_titles(tabs.width);
         frame.render_widget(
-            Tabs::new(Tab::ALL.iter().map(|t| t.title()))
+            Tabs::new(Tab::ALL.iter().map(|t| t.title(short)))
                 .select(selected)
                 .highlight_style(app.theme.selected)
-                .divider("│"),
+                .padding("", "")
+                .divider(Tab::DIVIDER),
             tabs,
         );
     }
@@ -69,6 +72,9 @@ pub fn draw(frame: &mut Frame, app: &App) {
     }
     if let Some(r) = panes.figure {
         figure::draw(frame, r, app);
+    }
+    if let Some(r) = panes.field {
+        field::draw(frame, r, app);
     }
     status_line(frame, panes.status, app);
     match &app.mode {
