@@ -140,29 +140,27 @@ pub fn layout(area: Rect, tab: Tab, swing: bool) -> Panes {
         ..Panes::default()
     };
     if is_wide(area) {
-        // The readout over the field at the right; the trajectory over the
-        // swing's views (or a batted ball's figure) beside them.
-        let [main, side] =
-            Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(right);
-        let [readout, field] =
-            Layout::vertical([Constraint::Percentage(45), Constraint::Fill(1)]).areas(side);
-        let [trajectory, bottom] =
-            Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(main);
+        // The side view beside the readout; under them the range surface
+        // (a batted ball's figure) beside the field from above, which gives
+        // its place to the impact (`3`) or the figures (`4`) when chosen.
+        let [top, bottom] =
+            Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
+        let [trajectory, readout] =
+            Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(top);
+        let [left, other] =
+            Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
         panes.trajectory = Some(trajectory);
         panes.readout = Some(readout);
-        panes.field = Some(field);
         if !swing {
-            panes.figure = Some(bottom);
+            panes.field = Some(left);
+            panes.figure = Some(other);
             return panes;
         }
-        let [heatmap, other] =
-            Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
-        panes.heatmap = Some(heatmap);
-        // The figures take the impact's place when chosen (`4`).
-        if tab == Tab::Figures {
-            panes.figure = Some(other);
-        } else {
-            panes.impact = Some(other);
+        panes.heatmap = Some(left);
+        match tab {
+            Tab::Impact => panes.impact = Some(other),
+            Tab::Figures => panes.figure = Some(other),
+            Tab::Flight | Tab::Surface | Tab::Field => panes.field = Some(other),
         }
     } else if is_medium(area) {
         medium_layout(&mut panes, right, tab, swing);
