@@ -337,7 +337,9 @@ fn explorer_x_writes_fresh_files_and_never_overwrites() {
     assert!(first.ends_with("homerun-trajectory-1.svg"), "{first:?}");
     assert!(second.ends_with("homerun-trajectory-2.svg"), "{second:?}");
     let svg = std::fs::read_to_string(&first).unwrap();
-    assert_eq!(lines(&svg)[0], app.path.len());
+    // The side view and the ground track from above, one vertex a sample.
+    let samples = app.path.len();
+    assert_eq!(lines(&svg).iter().filter(|&&n| n == samples).count(), 2);
     // Into a folder that is not there: refused with the path, nothing written.
     let gone = dir.path().join("gone");
     let err = app.export_to(&gone).unwrap_err();
@@ -392,4 +394,28 @@ fn explorer_x_writes_fresh_files_and_never_overwrites() {
         "{screen}"
     );
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3);
+}
+
+#[test]
+fn explorer_x_on_the_field_writes_both_views_with_every_ground_sample() {
+    use ratatui::crossterm::event::KeyCode;
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = tui_support::app_on("fly-ball", 80, 24, None);
+    tui_support::set_and_settle(&mut app, "launch.direction", "-0.35");
+    tui_support::key(&mut app, KeyCode::Char('5'));
+    let path = app.export_to(dir.path()).unwrap();
+    assert!(path.ends_with("homerun-trajectory-1.svg"), "{path:?}");
+    let svg = std::fs::read_to_string(&path).unwrap();
+    assert!(texts(&svg).contains("From above"), "the top view is drawn");
+    // The side view's path and the ground track, one vertex per sample.
+    let samples = app.ground.len();
+    assert!(samples > 20 && samples == app.path.len());
+    let drawn = lines(&svg);
+    assert_eq!(
+        drawn.iter().filter(|&&n| n == samples).count(),
+        2,
+        "{drawn:?} vs {samples}"
+    );
+    // The track leaves toward left field.
+    assert!(app.ground.last().unwrap().1 < -30.0);
 }

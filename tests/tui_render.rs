@@ -235,3 +235,18 @@ fn baseball_units() {
     settle(&mut app);
     insta::assert_snapshot!("imperial_80x24", screen(&app));
 }
+
+/// The fly ball pulled and hooked, so that its ground track curves: the
+/// field tab at 80×24, and the field beside the side view at 160×48.
+#[test]
+fn field_from_above() {
+    for (w, h, tab) in [(80, 24, Some('5')), (160, 48, None)] {
+        let mut app = app_on("fly-ball", w, h, None);
+        set_and_settle(&mut app, "launch.direction", "-0.35");
+        set_and_settle(&mut app, "launch.sidespin", "-100");
+        if let Some(tab) = tab {
+            key(&mut app, KeyCode::Char(tab));
+        }
+        insta::assert_snapshot!(format!("field_{w}x{h}"), screen(&app));
+    }
+}

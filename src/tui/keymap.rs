@@ -240,7 +240,7 @@ pub const KEYMAP: &[Row] = &[
             ch('4', ShowTab(Tab::Figures)),
             ch('5', ShowTab(Tab::Field)),
         ],
-        "flight / surface / impact / figures / field from above",
+        "flight / surface / impact / figures / field",
     ),
     row(
         &[ch('f', NextFigure), ch('F', PreviousFigure)],
@@ -278,7 +278,7 @@ pub const KEYMAP: &[Row] = &[
 pub const MOUSE: &[(&str, &str)] = &[
     (
         "click",
-        "surface: move (E, ψ) there · field: aim there · input: select it",
+        "surface: set (E, ψ) · field: aim there · input: select it",
     ),
     ("wheel", "over an input: nudge it (up raises)"),
     (
