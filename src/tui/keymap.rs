@@ -276,10 +276,7 @@ pub const KEYMAP: &[Row] = &[
 
 /// What the mouse does, for the help (the app handles it in `app/mouse.rs`).
 pub const MOUSE: &[(&str, &str)] = &[
-    (
-        "click",
-        "surface: set (E, ψ) · field: aim there · input: select it",
-    ),
+    ("click", "surface: set (E, ψ) · field: aim · input: select"),
     ("wheel", "over an input: nudge it (up raises)"),
     (
         "Shift-drag",
