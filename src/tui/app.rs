@@ -36,6 +36,9 @@ use figures::FigureInputs;
 pub use figures::{AERO_FIGURES, FIGURES, FigureState};
 use scene::first_input;
 
+/// Points of a plotted flight: (distance, height) or, from above, (x, z).
+pub type Path = Vec<(f64, f64)>;
+
 /// One row of the inputs pane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Field {
@@ -446,7 +449,7 @@ impl App {
     /// A scene's flight sampled at the plot's resolution, flown once: its
     /// side view (distance from the plate, height) and its ground track
     /// (x, z).
-    fn plot_tracks(&self, scene: &Scene) -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+    fn plot_tracks(&self, scene: &Scene) -> (Path, Path) {
         let samples = trajectory_samples(self.size, self.is_swing());
         let (_, points) = scene_start(scene)
             .0

@@ -71,7 +71,7 @@ impl App {
             return true;
         };
         let direction = direction_of(along, across);
-        if !(direction.abs() < FRAC_PI_2) {
+        if direction.is_nan() || direction.abs() >= FRAC_PI_2 {
             self.message = Some((
                 format!(
                     "{DIRECTION}: a click behind the plate's line gives no launch; click in front of it"

@@ -170,11 +170,14 @@ pub fn direction_words(rad: f64) -> String {
     format!("{:.0}° toward {side} field", degrees.abs())
 }
 
+/// The wind's arrow (points across, up), its tail and its label.
+type WindArrow = (Vec<(f64, f64)>, (f64, f64), String);
+
 /// The wind as an arrow in the upper left of the field, pointing where it
 /// blows, its length growing with its speed (a quarter of the view's reach
 /// at 20 m/s and beyond), with its tail and its speed in the unit shown;
 /// `None` in calm air.
-fn wind_arrow(app: &App, map: &FieldMap) -> Option<(Vec<(f64, f64)>, (f64, f64), String)> {
+fn wind_arrow(app: &App, map: &FieldMap) -> Option<WindArrow> {
     let speed = app.scene.environment.wind;
     if speed == 0.0 || !speed.is_finite() {
         return None;
