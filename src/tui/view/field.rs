@@ -115,7 +115,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     frame.render_widget(chart, map.plot);
 
     // The rings' distances just left of the left-field line, the wind's
-    // speed by its arrow's tail.
+    // speed under its arrow.
     let bounds = (map.z, map.x);
     let buf = frame.buffer_mut();
     let mut write = |point: (f64, f64), text: &str, style: Style, left: bool| {
@@ -170,12 +170,12 @@ pub fn direction_words(rad: f64) -> String {
     format!("{:.0}° toward {side} field", degrees.abs())
 }
 
-/// The wind's arrow (points across, up), its tail and its label.
+/// The wind's arrow (points across, up), where its label starts, the label.
 type WindArrow = (Vec<(f64, f64)>, (f64, f64), String);
 
 /// The wind as an arrow in the upper left of the field, pointing where it
 /// blows, its length growing with its speed (a quarter of the view's reach
-/// at 20 m/s and beyond), with its tail and its speed in the unit shown;
+/// at 15 m/s and beyond), with its speed in the unit shown under it;
 /// `None` in calm air.
 fn wind_arrow(app: &App, map: &FieldMap) -> Option<WindArrow> {
     let speed = app.scene.environment.wind;
@@ -189,7 +189,7 @@ fn wind_arrow(app: &App, map: &FieldMap) -> Option<WindArrow> {
             0.0
         };
     let reach = map.x[1];
-    let length = 0.25 * reach * (speed.abs() / 20.0).clamp(0.3, 1.0);
+    let length = 0.25 * reach * (speed.abs() / 15.0).clamp(0.5, 1.0);
     // The arrow's middle, in foul territory clear of the fence.
     let centre = (
         map.z[0] + 0.2 * (map.z[1] - map.z[0]),
@@ -206,7 +206,13 @@ fn wind_arrow(app: &App, map: &FieldMap) -> Option<WindArrow> {
         )
     };
     let arrow = vec![tail, head, barb(0.5), head, barb(-0.5)];
+    // The label under the arrow, from its left end: a row's height below.
+    let row = (map.x[1] - map.x[0]) / f64::from(map.plot.height.max(1));
+    let under = (
+        arrow.iter().map(|p| p.0).fold(f64::INFINITY, f64::min),
+        arrow.iter().map(|p| p.1).fold(f64::INFINITY, f64::min) - row,
+    );
     let unit = app.unit(Quantity::Speed);
     let label = format!("wind {:.0} {}", unit.show(speed.abs()), unit.symbol);
-    Some((arrow, tail, label))
+    Some((arrow, under, label))
 }
