@@ -78,7 +78,8 @@ def screens(path, shots):
             body.pop()
         if not body or not body[0].startswith("┌ Inputs") or body in shots:
             continue
-        same_size = [s for s in shots if len(s) == len(body) and len(s[0]) == len(body[0])]
+        # The second line: the first (the tab bar) may end short of the edge.
+        same_size = [s for s in shots if len(s) == len(body) and len(s[1]) == len(body[1])]
         best = max(same_size, key=lambda s: difflib.SequenceMatcher(None, "\n".join(s), "\n".join(body)).ratio())
         blocks[k] = lines[0] + "\n" + "\n".join(best) + "\n"
         changed += 1

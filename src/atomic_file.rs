@@ -5,9 +5,11 @@
 //! temporary is removed on failure.
 //!
 //! Two targets are not renamed over: a symbolic link stays a link (the file
-//! it points to is replaced, in that file's folder), and a device, FIFO or
-//! socket (`/dev/null`, `/dev/stdout`, a named pipe) is written to in place,
-//! since a rename would replace the device node itself with a file.
+//! it points to is replaced, in that file's folder), and, for pictures
+//! ([`write`]), a device, FIFO or socket (`/dev/null`, `/dev/stdout`, a named
+//! pipe) is written to in place, since a rename would replace the device
+//! node itself with a file. Files that are read back ([`replace`]) are
+//! never written into one.
 
 use std::fs;
 use std::io::{self, Write as _};
@@ -39,8 +41,9 @@ pub fn resolved(target: &Path) -> PathBuf {
     }
 }
 
-/// Writes `bytes` to `target` atomically (see the module's comment). The
-/// folder must exist: it is not created.
+/// Writes `bytes` to `target` atomically (see the module's comment), or in
+/// place into a device, FIFO or socket: for pictures, which may go to
+/// `/dev/stdout`. The folder must exist: it is not created.
 pub fn write(target: &Path, bytes: &[u8]) -> io::Result<()> {
     if is_special(target) {
         return fs::OpenOptions::new()
@@ -48,6 +51,15 @@ pub fn write(target: &Path, bytes: &[u8]) -> io::Result<()> {
             .open(target)?
             .write_all(bytes);
     }
+    replace(target, bytes)
+}
+
+/// Writes `bytes` as a regular file at `target`, atomically, never into a
+/// device or FIFO: for files read back (presets), whose caller refuses any
+/// target but a regular file or a new name. A FIFO that appears at `target`
+/// meanwhile is replaced by the file, not written into (which would block
+/// until a reader came).
+pub fn replace(target: &Path, bytes: &[u8]) -> io::Result<()> {
     let target = resolved(target);
     let temporary = temporary_for(&target);
     let written = (|| {

@@ -5,6 +5,9 @@ use homerun::cli::{self, Cli, Command, Parsed};
 fn main() -> ExitCode {
     let cli = match cli::parse(std::env::args_os()) {
         Parsed::Run(cli) => cli,
+        Parsed::Help(_) if stdout_at_start::closed() => {
+            return refuse(&cli::UsageError::StdoutClosed);
+        }
         Parsed::Help(help) => {
             // Help and the version go to stdout; a closed pipe loses them.
             let _ = help.print();
@@ -14,10 +17,17 @@ fn main() -> ExitCode {
     };
     let default = Command::Tui {
         preset: "fastball".to_owned(),
+        theme: None,
     };
     let command = cli.command.as_ref().unwrap_or(&default);
+    // Refused before any work: a batch would fly every row for nothing.
+    if stdout_at_start::closed() && cli::writes_stdout(command) {
+        return refuse(&cli::UsageError::StdoutClosed);
+    }
     let result = match command {
-        Command::Tui { preset } => explore(&cli, preset).map(|()| ExitCode::SUCCESS),
+        Command::Tui { preset, theme } => {
+            explore(&cli, preset, theme.or(cli.theme)).map(|()| ExitCode::SUCCESS)
+        }
         command => cli::run(&cli, command),
     };
     match result {
@@ -32,8 +42,47 @@ fn refuse(error: &cli::UsageError) -> ExitCode {
     ExitCode::from(2)
 }
 
-/// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s) folder.
-fn explore(cli: &Cli, preset: &str) -> Result<(), cli::UsageError> {
+/// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s)
+/// folder, in the colours for `background` (`None`: detected).
+fn explore(
+    cli: &Cli,
+    preset: &str,
+    background: Option<homerun::tui::theme::Background>,
+) -> Result<(), cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
-    Ok(homerun::tui::run(preset, dir, cli.units)?)
+    Ok(homerun::tui::run(preset, dir, cli.units, background)?)
+}
+
+/// Whether standard output was closed when the process started (`homerun
+/// keys >&-`). Rust's runtime opens /dev/null on a closed standard stream
+/// before `main`, where the output would vanish and the exit status say
+/// all went well; so fd 1 is looked at before it, by the C runtime's
+/// initialisers (`.init_array`), as the `ctor` crate does.
+#[cfg(target_os = "linux")]
+mod stdout_at_start {
+    use std::sync::atomic::{AtomicBool, Ordering};
+
+    static CLOSED: AtomicBool = AtomicBool::new(false);
+
+    extern "C" fn record() {
+        // SAFETY: F_GETFD only reads the process's table of descriptors.
+        let closed = unsafe { libc::fcntl(libc::STDOUT_FILENO, libc::F_GETFD) } == -1;
+        CLOSED.store(closed, Ordering::Relaxed);
+    }
+
+    #[used]
+    #[unsafe(link_section = ".init_array")]
+    static RECORD: extern "C" fn() = record;
+
+    pub fn closed() -> bool {
+        CLOSED.load(Ordering::Relaxed)
+    }
+}
+
+/// Elsewhere the runtime's own handling of a closed stream stands.
+#[cfg(not(target_os = "linux"))]
+mod stdout_at_start {
+    pub fn closed() -> bool {
+        false
+    }
 }

@@ -10,6 +10,10 @@ use std::f64::consts::PI;
 use std::fmt;
 use std::str::FromStr;
 
+mod input;
+
+pub use input::{Reading, TypedError, TypedUnit, accepted, read_typed, suggested_units};
+
 /// Which units text is shown and typed in.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum UnitSystem {
@@ -96,8 +100,19 @@ pub const METRES_PER_INCH: f64 = 0.0254;
 pub const METRES_PER_SECOND_PER_MPH: f64 = 0.44704;
 /// Kilograms per avoirdupois ounce (exact).
 pub const KILOGRAMS_PER_OUNCE: f64 = 0.028_349_523_125;
-/// Hectopascals per inch of mercury (at 0 °C, standard gravity).
-pub const HECTOPASCALS_PER_INCH_OF_MERCURY: f64 = 33.863_886_666;
+/// Hectopascals per inch of mercury, the factor US weather services use
+/// (3386.38866667 Pa). The conventional inch (13.5951 g/cm³ of mercury
+/// under standard gravity) is 3386.38864 Pa: 8 parts in 10⁹ apart, far
+/// below a barometer's last digit.
+pub const HECTOPASCALS_PER_INCH_OF_MERCURY: f64 = 33.863_886_666_7;
+/// Kilograms per avoirdupois pound (exact).
+pub const KILOGRAMS_PER_POUND: f64 = 0.453_592_37;
+/// Radians per second per revolution per minute: 2π/60.
+pub const RADIANS_PER_SECOND_PER_RPM: f64 = 2.0 * PI / 60.0;
+/// Radians per degree, π/180 as `f64::to_radians` multiplies by it.
+pub const RADIANS_PER_DEGREE: f64 = PI / 180.0;
+/// The kelvin scale's zero in °C (exact).
+pub const ZERO_CELSIUS_IN_KELVIN: f64 = 273.15;
 
 /// One displayed unit: shown = si · scale + offset.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -105,20 +120,36 @@ pub struct Unit {
     pub symbol: &'static str,
     scale: f64,
     offset: f64,
-    /// SI per shown unit, the exact definition (0.44704 m/s per mph):
-    /// typed values multiply by it, so that 100 mph is 44.704 m/s to the
-    /// last bit, as in a preset written by hand or a batch's column.
-    si_per_shown: f64,
+    /// SI per shown unit as the exact definition's ratio, numerator over
+    /// denominator (0.44704 / 1 m/s per mph, 5 / 9 °C per °F, 5 / 18 m/s
+    /// per km/h): a typed value is multiplied by the one and divided by the
+    /// other, so that 100 mph is 44.704 m/s to the last bit and 70 °F is
+    /// 190/9 °C, as in a preset written by hand or a batch's column.
+    si_per_shown: (f64, f64),
 }
 
 impl Unit {
     /// A unit `si_per_shown` SI units large (0.3048 for the foot).
     const fn linear(symbol: &'static str, si_per_shown: f64) -> Unit {
+        Unit::ratio(symbol, si_per_shown, 1.0)
+    }
+
+    /// A unit `numerator / denominator` SI units large (1 / 100 for cm).
+    const fn ratio(symbol: &'static str, numerator: f64, denominator: f64) -> Unit {
         Unit {
             symbol,
-            scale: 1.0 / si_per_shown,
+            scale: denominator / numerator,
             offset: 0.0,
-            si_per_shown,
+            si_per_shown: (numerator, denominator),
+        }
+    }
+
+    /// °F (or kelvin, `Unit::affine("K", 1.0, 1.0, 273.15)`): shown =
+    /// si · denominator / numerator + offset.
+    const fn affine(symbol: &'static str, numerator: f64, denominator: f64, offset: f64) -> Unit {
+        Unit {
+            offset,
+            ..Unit::ratio(symbol, numerator, denominator)
         }
     }
 
@@ -129,7 +160,8 @@ impl Unit {
 
     /// A value typed in this unit, back in SI.
     pub fn read(self, shown: f64) -> f64 {
-        (shown - self.offset) * self.si_per_shown
+        let (numerator, denominator) = self.si_per_shown;
+        (shown - self.offset) * numerator / denominator
     }
 
     /// A difference of SI values (a nudge, a Δ) in this unit: no offset.
@@ -192,7 +224,46 @@ impl Unit {
     }
 }
 
+/// The units of baseball, shown by `--units imperial` and typed anywhere.
+pub(crate) const FOOT: Unit = Unit::linear("ft", METRES_PER_FOOT);
+pub(crate) const INCH: Unit = Unit::linear("in", METRES_PER_INCH);
+pub(crate) const MPH: Unit = Unit::linear("mph", METRES_PER_SECOND_PER_MPH);
+pub(crate) const RPM: Unit = Unit::linear("rpm", RADIANS_PER_SECOND_PER_RPM);
+pub(crate) const DEGREE: Unit = Unit::linear("°", RADIANS_PER_DEGREE);
+pub(crate) const FAHRENHEIT: Unit = Unit::affine("°F", 5.0, 9.0, 32.0);
+pub(crate) const INCH_OF_MERCURY: Unit = Unit::linear("inHg", HECTOPASCALS_PER_INCH_OF_MERCURY);
+pub(crate) const OUNCE: Unit = Unit::linear("oz", KILOGRAMS_PER_OUNCE);
+
 impl Quantity {
+    /// Every quantity.
+    pub const ALL: [Quantity; 10] = [
+        Quantity::Distance,
+        Quantity::Size,
+        Quantity::Speed,
+        Quantity::Spin,
+        Quantity::Angle,
+        Quantity::Temperature,
+        Quantity::Pressure,
+        Quantity::Mass,
+        Quantity::Acceleration,
+        Quantity::Unchanged,
+    ];
+
+    /// What it measures, in words: "a speed", "an angle".
+    pub fn noun(self) -> &'static str {
+        match self {
+            Quantity::Distance | Quantity::Size => "a length",
+            Quantity::Speed => "a speed",
+            Quantity::Spin => "a spin rate",
+            Quantity::Angle => "an angle",
+            Quantity::Temperature => "a temperature",
+            Quantity::Pressure => "a pressure",
+            Quantity::Mass => "a mass",
+            Quantity::Acceleration => "an acceleration",
+            Quantity::Unchanged => "a plain number",
+        }
+    }
+
     /// The unit to show this quantity in. `si_symbol` is the SI unit's
     /// label, used as is in the SI system (the key table's `unit`).
     pub fn unit(self, system: UnitSystem, si_symbol: &'static str) -> Unit {
@@ -200,20 +271,14 @@ impl Quantity {
             return Unit::linear(si_symbol, 1.0);
         }
         match self {
-            Quantity::Distance => Unit::linear("ft", METRES_PER_FOOT),
-            Quantity::Size => Unit::linear("in", METRES_PER_INCH),
-            Quantity::Speed => Unit::linear("mph", METRES_PER_SECOND_PER_MPH),
-            Quantity::Spin => Unit::linear("rpm", 2.0 * PI / 60.0),
-            // As f64::to_radians: π/180 exactly as it multiplies.
-            Quantity::Angle => Unit::linear("°", PI / 180.0),
-            Quantity::Temperature => Unit {
-                symbol: "°F",
-                scale: 9.0 / 5.0,
-                offset: 32.0,
-                si_per_shown: 5.0 / 9.0,
-            },
-            Quantity::Pressure => Unit::linear("inHg", HECTOPASCALS_PER_INCH_OF_MERCURY),
-            Quantity::Mass => Unit::linear("oz", KILOGRAMS_PER_OUNCE),
+            Quantity::Distance => FOOT,
+            Quantity::Size => INCH,
+            Quantity::Speed => MPH,
+            Quantity::Spin => RPM,
+            Quantity::Angle => DEGREE,
+            Quantity::Temperature => FAHRENHEIT,
+            Quantity::Pressure => INCH_OF_MERCURY,
+            Quantity::Mass => OUNCE,
             Quantity::Acceleration => Unit::linear("ft/s²", METRES_PER_FOOT),
             Quantity::Unchanged => Unit::linear(si_symbol, 1.0),
         }
@@ -237,6 +302,29 @@ impl Quantity {
     /// The unit to show this quantity in, with its own SI label.
     pub fn in_system(self, system: UnitSystem) -> Unit {
         self.unit(system, self.si_symbol())
+    }
+}
+
+/// A number as a person reads it: to six significant digits, trailing zeros trimmed (134.112,
+/// 0.0254); in scientific notation beyond 10⁹ or below 10⁻⁶.
+pub fn significant(value: f64) -> String {
+    let magnitude = value.abs();
+    if magnitude == 0.0 {
+        return "0".to_owned();
+    }
+    if !(1e-6..1e9).contains(&magnitude) {
+        // 1.42278e301, 1e-300: the mantissa to six digits, trimmed.
+        let text = format!("{value:.5e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, ""));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        return format!("{mantissa}e{exponent}");
+    }
+    let decimals = (5 - magnitude.log10().floor() as i32).max(0) as usize;
+    let text = format!("{value:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text
     }
 }
 
@@ -275,6 +363,21 @@ mod tests {
     }
 
     #[test]
+    fn significant_digits_are_six_and_trimmed() {
+        assert_eq!(significant(190.0 / 9.0), "21.1111");
+        assert_eq!(
+            significant(29.92 * HECTOPASCALS_PER_INCH_OF_MERCURY),
+            "1013.21"
+        );
+        assert_eq!(significant(1580.0), "1580");
+        assert_eq!(significant(300.0 * 0.44704), "134.112");
+        assert_eq!(significant(0.0254), "0.0254");
+        assert_eq!(significant(-0.0), "0");
+        assert_eq!(significant(1e-300), "1e-300");
+        assert_eq!(significant(-1.422_784_810_126_582_3e301), "-1.42278e301");
+    }
+
+    #[test]
     fn temperature_is_affine_and_differences_are_not() {
         let fahrenheit = Quantity::Temperature.in_system(UnitSystem::Imperial);
         assert_eq!(fahrenheit.show(0.0), 32.0);
@@ -286,19 +389,7 @@ mod tests {
 
     #[test]
     fn show_and_read_are_inverse_and_si_is_identity() {
-        let quantities = [
-            Quantity::Distance,
-            Quantity::Size,
-            Quantity::Speed,
-            Quantity::Spin,
-            Quantity::Angle,
-            Quantity::Temperature,
-            Quantity::Pressure,
-            Quantity::Mass,
-            Quantity::Acceleration,
-            Quantity::Unchanged,
-        ];
-        for quantity in quantities {
+        for quantity in Quantity::ALL {
             for system in UnitSystem::ALL {
                 let unit = quantity.in_system(system);
                 for si in [-31.7, 0.0, 1e-3, 42.0, 1013.25] {

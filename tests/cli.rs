@@ -354,7 +354,7 @@ fn every_bad_input_is_one_clear_line_and_status_2() {
     refuses(
         d,
         &["hit", "--preset", &text],
-        &["bat.speed", "expected a number"],
+        &["bat.speed", "\"fast\": not a number"],
     );
     refuses(
         d,
@@ -513,4 +513,20 @@ fn keys_lists_every_input_with_its_range() {
     }
     assert!(text.contains("model.drag") && text.contains("sawicki2003 | constant"));
     assert!(text.contains("[-π/2, π/2]"));
+    // Every key, the 3-D flight's among them, says why its range is what
+    // it is: its reason follows its name, whole (wrapped at words).
+    let why = text.split("Why each range is what it is:").nth(1).unwrap();
+    let words = |s: &str| s.split_whitespace().collect::<Vec<_>>().join(" ");
+    for key in homerun::model::keys::all_keys() {
+        assert!(key.bounds_reason.ends_with('.'), "{}", key.name);
+        let start = why
+            .find(&format!("\n{} ", key.name))
+            .unwrap_or_else(|| panic!("no reason for {}", key.name));
+        assert!(
+            words(&why[start..]).contains(&words(key.bounds_reason)),
+            "{}",
+            key.name
+        );
+    }
+    assert!(why.contains("environment.wind_height") && why.contains("launch.sidespin"));
 }

@@ -216,7 +216,7 @@ fn what_users_typed_is_escaped_and_cut_in_errors() {
         ),
         (
             &["hit", "--set", "bat.speed=3\x1b[2J"],
-            &["bat.speed = \"3\\u{1b}[2J\""],
+            &["bat.speed = 3\\u{1b}[2J: unknown unit `\\u{1b}[2J`"],
         ),
         (
             &["hit", "--set", &drag],

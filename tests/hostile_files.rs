@@ -356,3 +356,49 @@ fn listing_a_hostile_folder_returns_at_once() {
     assert_eq!(broken.len(), 4, "{broken:?}");
     assert!(all.iter().any(|p| p.as_ref().is_ok_and(|p| p.name == "ok")));
 }
+
+/// F1: saving a preset onto a FIFO (the explorer's `s`, name `pipe`) once
+/// froze the explorer, writing into the pipe until a reader came. A save
+/// refuses anything but a regular file or a new name, at once.
+#[test]
+fn saving_a_preset_onto_a_fifo_or_a_device_is_refused_at_once() {
+    let (dir, at) = folder();
+    mkfifo(&at("pipe.toml"));
+    std::os::unix::fs::symlink("/dev/null", at("null.toml")).unwrap();
+    std::fs::create_dir(at("dir.toml")).unwrap();
+    let root = dir.path().to_owned();
+    let (send, receive) = mpsc::channel();
+    std::thread::spawn(move || {
+        let mut preset = homerun::preset::load("fastball", None).unwrap();
+        let mut results = Vec::new();
+        for name in ["pipe", "null", "dir", "new"] {
+            preset.name = name.to_owned();
+            results.push(preset.save(&root).map_err(|e| e.to_string()));
+        }
+        send.send(results).unwrap();
+    });
+    let results = receive.recv_timeout(LIMIT).expect("the saves returned");
+    let why = |i: usize| results[i].as_ref().unwrap_err().clone();
+    assert!(
+        why(0).ends_with("pipe.toml: not a regular file (a FIFO)"),
+        "{results:?}"
+    );
+    assert!(
+        why(1).ends_with(
+            "null.toml: not a regular file (a character device, through a symlink to /dev/null)"
+        ),
+        "{results:?}"
+    );
+    assert!(why(2).ends_with("dir.toml: not a regular file (a folder)"));
+    // The FIFO is still one; a new name is saved and reads back.
+    use std::os::unix::fs::FileTypeExt as _;
+    let kind = std::fs::symlink_metadata(at("pipe.toml"))
+        .unwrap()
+        .file_type();
+    assert!(kind.is_fifo());
+    let saved = results[3].as_ref().unwrap();
+    assert_eq!(
+        homerun::preset::Preset::read(saved).unwrap().scene,
+        homerun::preset::load("fastball", None).unwrap().scene
+    );
+}

@@ -491,9 +491,8 @@ fn the_hand_is_a_named_input_as_the_models_are() {
         unknown.to_string(),
         "bat.hand = \"up\": unknown hand; accepted: right, left"
     );
-    scene.set_text("bat.tilt", "1.1").unwrap();
     assert_eq!(
-        scene.validate().unwrap_err().to_string(),
-        "bat.tilt = 1.1: must be a finite number in [-π/3, π/3] rad"
+        scene.set_text("bat.tilt", "1.1").unwrap_err().to_string(),
+        "bat.tilt = 1.1: must be a finite number in [-π/3, π/3] rad (did you mean 1.1deg?)"
     );
 }

@@ -166,6 +166,7 @@ fn a_trajectory_draws_every_path_point_and_the_fence() {
         paths: vec![FlightPath {
             name: "now".into(),
             points: points.clone(),
+            ground: Vec::new(),
         }],
         range: Some(120.0),
         apex: 28.69,
@@ -180,7 +181,54 @@ fn a_trajectory_draws_every_path_point_and_the_fence() {
     let text = texts(&svg);
     assert!(text.contains("range 120.00 m, apex 28.69 m"), "{text}");
     assert!(text.contains("fence: 100 m out"), "{text}");
-    assert!(text.contains("x (m)") && text.contains("y (m)"), "{text}");
+    assert!(
+        text.contains("distance from the plate (m)") && text.contains("y (m)"),
+        "{text}"
+    );
+    // No ground track given: no top view.
+    assert!(!text.contains("From above"), "{text}");
+}
+
+#[test]
+fn a_trajectory_with_a_ground_track_draws_the_field_from_above() {
+    // A ball pulled 20° toward left field, curving further: its track, the
+    // fence's arc (91 points) and the two foul lines (2 points each, not
+    // counted by `lines`).
+    let ground: Vec<(f64, f64)> = (0..=30)
+        .map(|k| {
+            let r = f64::from(k) * 4.0;
+            let direction = -0.35 - 0.001 * r;
+            (r * direction.cos(), r * direction.sin())
+        })
+        .collect();
+    let side: Vec<(f64, f64)> = ground
+        .iter()
+        .map(|&(x, z)| (x.hypot(z), 1.0 + x.hypot(z) * (120.0 - x.hypot(z)) / 130.0))
+        .collect();
+    let picture = TrajectoryPicture {
+        preset: "fly-ball".into(),
+        paths: vec![FlightPath {
+            name: "now".into(),
+            points: side.clone(),
+            ground: ground.clone(),
+        }],
+        range: Some(120.0),
+        apex: 28.69,
+        not_landed: None,
+        fence: Some(Fence {
+            distance: 100.0,
+            height: 3.0,
+        }),
+    };
+    let svg = picture::trajectory_svg(&picture).unwrap();
+    let mut drawn = lines(&svg);
+    drawn.sort_unstable();
+    assert_eq!(drawn, vec![side.len(), ground.len(), 91]);
+    let text = texts(&svg);
+    assert!(
+        text.contains("From above") && text.contains("z (m)"),
+        "{text}"
+    );
 }
 
 fn row(method: &'static str, tolerance: Option<f64>, time_us: f64, error: f64) -> TrajectoryRow {
@@ -270,7 +318,10 @@ fn svg_writes_the_file_says_so_on_stderr_and_leaves_no_temporary() {
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(err.trim(), format!("wrote {}", target.display()));
     let svg = std::fs::read_to_string(&target).unwrap();
-    assert_eq!(lines(&svg), vec![30]);
+    // The side view's 30 points, the ground track's 30 and the fence's arc.
+    let mut drawn = lines(&svg);
+    drawn.sort_unstable();
+    assert_eq!(drawn, vec![30, 30, 91]);
     assert!(texts(&svg).contains("range 134.70 m, apex 27.03 m"));
     let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
     assert_eq!(names.len(), 1, "no temporary left: {names:?}");
@@ -286,7 +337,9 @@ fn explorer_x_writes_fresh_files_and_never_overwrites() {
     assert!(first.ends_with("homerun-trajectory-1.svg"), "{first:?}");
     assert!(second.ends_with("homerun-trajectory-2.svg"), "{second:?}");
     let svg = std::fs::read_to_string(&first).unwrap();
-    assert_eq!(lines(&svg)[0], app.path.len());
+    // The side view and the ground track from above, one vertex a sample.
+    let samples = app.path.len();
+    assert_eq!(lines(&svg).iter().filter(|&&n| n == samples).count(), 2);
     // Into a folder that is not there: refused with the path, nothing written.
     let gone = dir.path().join("gone");
     let err = app.export_to(&gone).unwrap_err();
@@ -341,4 +394,28 @@ fn explorer_x_writes_fresh_files_and_never_overwrites() {
         "{screen}"
     );
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3);
+}
+
+#[test]
+fn explorer_x_on_the_field_writes_both_views_with_every_ground_sample() {
+    use ratatui::crossterm::event::KeyCode;
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = tui_support::app_on("fly-ball", 80, 24, None);
+    tui_support::set_and_settle(&mut app, "launch.direction", "-0.35");
+    tui_support::key(&mut app, KeyCode::Char('5'));
+    let path = app.export_to(dir.path()).unwrap();
+    assert!(path.ends_with("homerun-trajectory-1.svg"), "{path:?}");
+    let svg = std::fs::read_to_string(&path).unwrap();
+    assert!(texts(&svg).contains("From above"), "the top view is drawn");
+    // The side view's path and the ground track, one vertex per sample.
+    let samples = app.ground.len();
+    assert!(samples > 20 && samples == app.path.len());
+    let drawn = lines(&svg);
+    assert_eq!(
+        drawn.iter().filter(|&&n| n == samples).count(),
+        2,
+        "{drawn:?} vs {samples}"
+    );
+    // The track leaves toward left field.
+    assert!(app.ground.last().unwrap().1 < -30.0);
 }

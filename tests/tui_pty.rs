@@ -20,6 +20,11 @@ struct Session {
 
 impl Session {
     fn start(args: &[&str], cols: u16, rows: u16) -> Session {
+        Session::start_with(args, cols, rows, &[])
+    }
+
+    /// [`Session::start`] with `env` set too.
+    fn start_with(args: &[&str], cols: u16, rows: u16, env: &[(&str, &str)]) -> Session {
         let pair = native_pty_system()
             .openpty(PtySize {
                 rows,
@@ -32,6 +37,11 @@ impl Session {
         command.args(args);
         command.env("TERM", "xterm-256color");
         command.env_remove("COLORTERM");
+        command.env_remove("NO_COLOR");
+        command.env_remove("COLORFGBG");
+        for (name, value) in env {
+            command.env(name, value);
+        }
         let child = pair.slave.spawn_command(command).unwrap();
         drop(pair.slave);
         let mut reader = pair.master.try_clone_reader().unwrap();
@@ -322,4 +332,102 @@ fn mouse_capture_is_on_while_running_and_off_after_quitting() {
     let on = bytes.find("\x1b[?1000h").expect("mouse capture enabled");
     let off = bytes.rfind("\x1b[?1000l").expect("mouse capture disabled");
     assert!(on < off);
+}
+
+/// Every SGR parameter the explorer wrote, as numbers (`38;5;4` gives 38,
+/// 5 and 4).
+fn sgr_codes(bytes: &[u8]) -> Vec<Vec<u16>> {
+    let text = String::from_utf8_lossy(bytes);
+    let mut codes = Vec::new();
+    for (at, _) in text.match_indices("\x1b[") {
+        let rest = &text[at + 2..];
+        let Some(end) = rest.find(|c: char| !(c.is_ascii_digit() || c == ';')) else {
+            continue;
+        };
+        if rest[end..].starts_with('m') {
+            codes.push(
+                rest[..end]
+                    .split(';')
+                    .map(|p| p.parse().unwrap_or(0))
+                    .collect(),
+            );
+        }
+    }
+    codes
+}
+
+/// Whether an SGR sequence sets a colour (the terminal's own, 39 and 49,
+/// only resets one).
+fn sets_colour(codes: &[u16]) -> bool {
+    codes
+        .iter()
+        .any(|&c| matches!(c, 30..=38 | 40..=48 | 58 | 90..=97 | 100..=107))
+}
+
+#[test]
+fn no_color_writes_no_colour_and_stays_usable() {
+    let mut session = Session::start_with(&[], 80, 24, &[("NO_COLOR", "1")]);
+    session.wait_for("optimum ✓");
+    // The surface reads without colour: in shades (crossterm alone drops
+    // the colour escapes, which left it a block of blank half blocks).
+    session.press("2");
+    session.wait_for("surface ✓");
+    let screen = session.wait_for("▓");
+    assert!(screen.contains('░') && screen.contains('✚'), "{screen}");
+    // The other tabs, the help and an edit.
+    for (key, shown) in [("3", "Impact:"), ("4", "Fig. 8"), ("1", "Trajectory")] {
+        session.press(key);
+        session.wait_for(shown);
+    }
+    session.press("?");
+    session.wait_for("this help");
+    session.press("x");
+    session.press("\r");
+    session.wait_for("Enter accepts");
+    session.press("\x1b");
+    // Esc and q at once would read as Alt-q: wait for the edit to close.
+    session.wait_for("step 0.5");
+    session.press("q");
+    assert_eq!(session.exit_code(), 0);
+    let codes = sgr_codes(&session.bytes.lock().unwrap());
+    assert!(codes.len() > 10, "{codes:?}");
+    let coloured: Vec<_> = codes.iter().filter(|c| sets_colour(c)).collect();
+    assert!(coloured.is_empty(), "{coloured:?}");
+    // The selected row and tab still stand out: in reverse video.
+    assert!(codes.iter().any(|c| c.contains(&7)), "{codes:?}");
+}
+
+#[test]
+fn a_light_background_gets_colours_that_read_on_white() {
+    // Detected from COLORFGBG (black on white), and asked for with --theme
+    // (which wins over a dark COLORFGBG).
+    for (args, colorfgbg) in [(&[][..], "0;15"), (&["--theme", "light"][..], "15;0")] {
+        let mut session = Session::start_with(args, 80, 24, &[("COLORFGBG", colorfgbg)]);
+        session.wait_for("optimum ✓");
+        session.wait_for("Δ ✓");
+        session.press("q");
+        assert_eq!(session.exit_code(), 0);
+        let codes = sgr_codes(&session.bytes.lock().unwrap());
+        // The current swing in blue (xterm 4); no yellow (3, 11), cyan (6)
+        // or white (7, 15) text, which a white background hides.
+        let fg = |c: &Vec<u16>| (c.len() >= 3 && c[0] == 38 && c[1] == 5).then(|| c[2]);
+        let colours: Vec<u16> = codes.iter().filter_map(fg).collect();
+        assert!(colours.contains(&4), "{args:?}: {colours:?}");
+        for hidden in [3, 6, 7, 11, 15] {
+            assert!(
+                !colours.contains(&hidden),
+                "{args:?}: {hidden} in {colours:?}"
+            );
+        }
+    }
+    // The dark theme does use them.
+    let mut session = Session::start_with(&[], 80, 24, &[("COLORFGBG", "15;0")]);
+    session.wait_for("optimum ✓");
+    session.press("q");
+    assert_eq!(session.exit_code(), 0);
+    let codes = sgr_codes(&session.bytes.lock().unwrap());
+    assert!(
+        codes.iter().any(|c| c.starts_with(&[38, 5, 6])),
+        "{codes:?}"
+    );
 }

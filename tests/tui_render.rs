@@ -18,6 +18,21 @@ fn default_screen() {
 }
 
 #[test]
+fn a_second_pane_at_120x40() {
+    // The trajectory and the readout side by side, the surface under them.
+    let mut app = app(120, 40, None);
+    settle(&mut app);
+    insta::assert_snapshot!("default_120x40", screen(&app));
+}
+
+#[test]
+fn a_screen_too_small() {
+    let mut app = app(70, 20, None);
+    settle(&mut app);
+    insta::assert_snapshot!("too_small_70x20", screen(&app));
+}
+
+#[test]
 fn range_surface_tab_on_a_small_screen() {
     let mut app = app(80, 24, None);
     settle(&mut app);
@@ -61,6 +76,31 @@ fn input_edited_with_an_invalid_value() {
         key(&mut app, KeyCode::Enter);
         assert_eq!(app.scene.bat.undercut, 0.0265, "the old value is kept");
         insta::assert_snapshot!(format!("invalid_edit_{w}x{h}"), screen(&app));
+    }
+}
+
+#[test]
+fn editing_a_value_keeps_its_symbol_and_unit() {
+    // The box takes the value's place: the symbol before it and the unit
+    // after it stay, and the line under the list says what it takes.
+    for (w, h) in SIZES {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        select(&mut app, "bat.speed");
+        key(&mut app, KeyCode::Enter);
+        typed(&mut app, "3");
+        let screen = screen(&app);
+        let row = screen
+            .lines()
+            .find(|l| l.contains("▶"))
+            .expect("the selected row");
+        assert!(
+            row.contains("V̂_B0") && row.contains(" 3 ") && row.contains("m/s"),
+            "{row}"
+        );
+        let help: String = screen.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(help.contains("bat.speed in m/s, (0, 100]"), "{screen}");
+        insta::assert_snapshot!(format!("edit_{w}x{h}"), screen);
     }
 }
 
@@ -194,4 +234,19 @@ fn baseball_units() {
     key(&mut app, KeyCode::Char('u'));
     settle(&mut app);
     insta::assert_snapshot!("imperial_80x24", screen(&app));
+}
+
+/// The fly ball pulled and hooked, so that its ground track curves: the
+/// field tab at 80×24, and the field beside the side view at 160×48.
+#[test]
+fn field_from_above() {
+    for (w, h, tab) in [(80, 24, Some('5')), (160, 48, None)] {
+        let mut app = app_on("fly-ball", w, h, None);
+        set_and_settle(&mut app, "launch.direction", "-0.35");
+        set_and_settle(&mut app, "launch.sidespin", "-100");
+        if let Some(tab) = tab {
+            key(&mut app, KeyCode::Char(tab));
+        }
+        insta::assert_snapshot!(format!("field_{w}x{h}"), screen(&app));
+    }
 }

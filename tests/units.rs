@@ -83,8 +83,12 @@ fn the_fly_ball_preset_reads_back_as_its_launch() {
         text.starts_with("launch   103.0 mph, 2500 rpm of backspin, 28.0°\n"),
         "{text}"
     );
-    // The default fence, 121.9 m and 3.0 m, in feet.
-    assert!(text.contains("at 399.9 ft, over 9.8 ft"), "{text}");
+    // The default fence, 121.9 m and 3.0 m, in feet: as given, 400 ft,
+    // and in the explorer's words.
+    assert!(
+        text.contains("fence    400 ft, 10 ft high: over by "),
+        "{text}"
+    );
 }
 
 #[test]
@@ -154,12 +158,12 @@ fn keys_gives_ranges_and_values_in_the_units_shown() {
             .split_whitespace()
             .collect::<Vec<_>>()
     };
-    // pitch.speed in (0, 100] m/s is (0, 223.694] mph; the fastball's 42 m/s
-    // is 93.951 mph.
+    // pitch.speed in (0, 100] m/s is (0, 223.693] mph (223.694 mph would be
+    // 100.0003 m/s); the fastball's 42 m/s is 93.951 mph.
     let speed = line("pitch.speed");
     assert_eq!(
         speed[2..6],
-        ["mph", "(0,", "223.694]", "93.951"],
+        ["mph", "(0,", "223.693]", "93.951"],
         "{speed:?}"
     );
     assert!((100.0 / MPH - 223.694).abs() < 5e-4);
@@ -172,7 +176,7 @@ fn keys_gives_ranges_and_values_in_the_units_shown() {
     // ρ has no imperial unit here: kg/m³ as in SI.
     assert_eq!(line("environment.air_density")[2..4], ["kg/m³", "[0,"]);
     assert!(
-        text.contains("--set and presets take each key's SI"),
+        text.contains("--set and presets take a bare number in"),
         "{text}"
     );
 }
@@ -261,7 +265,7 @@ fn sweep_bounds_are_given_and_checked_in_the_units_shown() {
     assert_eq!(output.status.code(), Some(2));
     assert_eq!(
         String::from_utf8(output.stderr).unwrap(),
-        "homerun: --to 300: bat.speed must be a finite number in (0, 223.694] mph\n"
+        "homerun: --to 300: bat.speed must be a finite number in (0, 223.693] mph\n"
     );
 }
 

@@ -17,11 +17,18 @@ pub fn nudge(scene: &Scene, key: &Key, scale: f64) -> Result<Scene, InputError> 
     nudge_in(scene, key, scale, UnitSystem::Si)
 }
 
+/// Keys whose 0 means "off", and the value a nudge up from off goes to:
+/// one the quantity takes when on, not the smallest step. A baseball's spin
+/// decays over 30–50 s (§II.D); 1 s, off plus a step, would stop the spin
+/// early in the flight.
+const FROM_OFF: [(&str, f64); 1] = [("model.spin_decay", 30.0)];
+
 /// [`nudge`] as a person sees it in `system`: outside SI the step is the
 /// key's step in the shown unit rounded to 1, 2 or 5 (`Unit::nice_step`:
 /// 1 mph, 100 rpm, 0.5°). A converted value is rarely on that step's grid,
 /// so the snap there only removes the conversion's rounding noise, and each
-/// nudge moves by the shown step exactly.
+/// nudge moves by the shown step exactly. Up from off, a key of
+/// [`FROM_OFF`] goes to its value when on.
 pub fn nudge_in(
     scene: &Scene,
     key: &Key,
@@ -30,7 +37,10 @@ pub fn nudge_in(
 ) -> Result<Scene, InputError> {
     let mut nudged = *scene;
     let unit = key.unit_in(system);
-    if unit.is_identity() {
+    let on = FROM_OFF.iter().find(|(name, _)| *name == key.name);
+    if let Some((_, on)) = on.filter(|_| (key.get)(scene) == 0.0 && scale > 0.0) {
+        (key.set)(&mut nudged, *on);
+    } else if unit.is_identity() {
         let value = (key.get)(scene) + scale * key.step;
         let quantum = key.step * 1e-3;
         (key.set)(&mut nudged, (value / quantum).round() * quantum);

@@ -56,13 +56,8 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
     if json {
         return pretty(&serde_json::json!({
             "scene": scene.kind.name(),
-            "launch": {
-                "speed": launch.speed,
-                "angle": launch.angle,
-                "spin": launch.spin,
-                "direction": launch.direction,
-                "sidespin": launch.sidespin,
-            },
+            // {speed, angle, spin, direction, sidespin}: BattedBall's fields.
+            "launch": launch,
             "model": model_json(scene),
             "flight": flight_json(flight, unlanded),
             "fence": {
@@ -78,18 +73,13 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
         SceneKind::Swing => " (from the swing's impact)",
         SceneKind::BattedBall => "",
     };
-    let distance = |m, decimals| shown.value(Quantity::Distance, m, decimals);
-    let (at, high) = (distance(fence.distance, 1), distance(fence.height, 1));
-    let fence_line = match flown.height_at_fence {
-        Some(h) if flown.clears_fence() => {
-            format!("clears it: {} up at {at}, over {high}", distance(h, 2))
-        }
-        Some(h) => format!(
-            "does not clear it: {} up at {at}, under {high}",
-            distance(h, 2)
-        ),
-        None => format!("does not reach it, {at} away"),
-    };
+    // The explorer's words (analysis::landing::fence_text).
+    let fence_line = landing::fence_text(
+        fence.distance,
+        fence.height,
+        flown.height_at_fence,
+        shown.unit(Quantity::Distance),
+    );
     let air = scene.environment.air();
     let unlanded = unlanded.map(|why| {
         if shown.is_si() {
@@ -108,7 +98,7 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
                 "ρ = {}, ν = {:.4e} m²/s; {}",
                 air_text(&air, shown),
                 air.kinematic_viscosity,
-                models_text(scene)
+                scene.models_text()
             ),
         ),
     ])
@@ -121,26 +111,6 @@ pub(super) fn model_json(scene: &Scene) -> serde_json::Value {
         "lift": scene.lift.name(),
         "chosen": {"drag": scene.chosen.drag, "lift": scene.chosen.lift},
     })
-}
-
-/// "drag nathan, lift nathan (a batted ball's defaults)": the models in
-/// force, and where they come from when the user did not choose them.
-pub(super) fn models_text(scene: &Scene) -> String {
-    let whose = match scene.kind {
-        SceneKind::Swing => "the paper's, a swing's default",
-        SceneKind::BattedBall => "Nathan's, a batted ball's default",
-    };
-    let source = |chosen: bool| if chosen { "chosen" } else { whose };
-    let (drag, lift) = (scene.drag, scene.lift);
-    if scene.chosen.drag == scene.chosen.lift {
-        format!("drag {drag}, lift {lift} ({})", source(scene.chosen.drag))
-    } else {
-        format!(
-            "drag {drag} ({}), lift {lift} ({})",
-            source(scene.chosen.drag),
-            source(scene.chosen.lift)
-        )
-    }
 }
 
 /// "1.194 kg/m³ from 21 °C, 5 m, 1013 hPa, 50 %" ([`Air`]'s own words in

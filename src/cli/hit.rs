@@ -16,6 +16,7 @@ use crate::model::keys::{DRAG_KEY, HAND_KEY, LIFT_KEY, all_keys};
 use crate::model::launch::BattedBall;
 use crate::model::pitch;
 use crate::model::scene::Hand;
+use crate::model::scene::SceneKind;
 use crate::picture::{self, FlightPath, TrajectoryPicture};
 use crate::preset::Preset;
 use crate::units::{Quantity, Unit};
@@ -269,11 +270,21 @@ pub(super) fn trajectory_svg(preset: &Preset, samples: usize) -> Result<String, 
     let picture = TrajectoryPicture {
         preset: preset.name.clone(),
         paths: vec![FlightPath {
-            name: format!(
-                "E = {} m, ψ = {} rad",
-                preset.scene.bat.undercut, preset.scene.bat.swing_angle
-            ),
-            points: points.iter().map(|p| (p.x, p.y)).collect(),
+            name: match preset.scene.kind {
+                SceneKind::Swing => format!(
+                    "E = {} m, ψ = {} rad",
+                    preset.scene.bat.undercut, preset.scene.bat.swing_angle
+                ),
+                SceneKind::BattedBall => {
+                    let launch = preset.scene.batted_ball();
+                    format!(
+                        "launched at {:.2} m/s, {:.4} rad up, {:.4} rad across",
+                        launch.speed, launch.angle, launch.direction
+                    )
+                }
+            },
+            points: points.iter().map(|p| (p.distance, p.y)).collect(),
+            ground: points.iter().map(|p| (p.x, p.z)).collect(),
         }],
         range: summary.landed.then_some(summary.range),
         apex: summary.apex,
@@ -359,6 +370,27 @@ pub(super) fn trajectory(
 
 /// The input keys, as `--set` and the TOML presets take them, with their
 /// ranges and the fastball's values in the units shown (`--set` takes SI).
+/// `head` then `text` wrapped at words to `width` columns, the lines after
+/// the first indented under the text.
+fn hanging(head: &str, text: &str, width: usize) -> String {
+    let indent = head.chars().count() + 2;
+    let mut out = format!("{head}  ");
+    let mut column = indent;
+    for word in text.split_whitespace() {
+        let length = word.chars().count();
+        if column > indent && column + 1 + length > width {
+            out += &format!("\n{}", " ".repeat(indent));
+            column = indent;
+        } else if column > indent {
+            out.push(' ');
+            column += 1;
+        }
+        out += word;
+        column += length;
+    }
+    out
+}
+
 pub(super) fn keys(shown: Shown) -> String {
     let defaults = Scene::default();
     // Each column as wide as its widest field, two spaces apart, so that no
@@ -450,11 +482,21 @@ pub(super) fn keys(shown: Shown) -> String {
         "\nAlso: bat.undercut must stay below r_b + r_B in size (the bat must reach the ball), and\n\
          pitch.speed must be fast enough for Eq. (3) to hold at the chosen gravity."
     );
+    let _ = writeln!(out, "\nWhy each range is what it is:");
+    let names = all_keys()
+        .map(|k| k.name.chars().count())
+        .max()
+        .unwrap_or(0);
+    for key in all_keys() {
+        let head = format!("{:names$}", key.name);
+        let _ = writeln!(out, "{}", hanging(&head, key.bounds_reason, 100));
+    }
     if !shown.is_si() {
         let _ = writeln!(
             out,
-            "Ranges and values are shown in imperial units; --set and presets take each key's SI\n\
-             unit (m, m/s, rad, rad/s, kg, °C, hPa: `homerun keys` without --units lists them)."
+            "Ranges and values are shown in imperial units; --set and presets take a bare number in\n\
+             each key's SI unit (`homerun keys` without --units lists them), or a number with its\n\
+             unit: 103mph, 28deg, 2500rpm, 70F, 29.92inHg (see docs/units-on-input.md)."
         );
     }
     out

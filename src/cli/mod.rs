@@ -31,6 +31,7 @@ use crate::analysis::study::SweepError;
 use crate::model::keys::{InputError, Key};
 use crate::preset::{self, Preset};
 use crate::tui::TuiError;
+use crate::tui::theme::Background;
 use crate::units::UnitSystem;
 use shown::Shown;
 
@@ -67,13 +68,17 @@ pub struct Cli {
         hide_default_value = true
     )]
     pub units: UnitSystem,
+    /// The explorer's colours: dark or light, for the terminal's background
+    /// (default: from COLORFGBG, else dark). NO_COLOR turns colour off.
+    #[arg(long, value_name = "THEME")]
+    pub theme: Option<Background>,
 }
 
 /// What `--units` does, said once, under `homerun --help` (every command
 /// takes `--units`, and its own help gives one line).
 pub const UNITS_HELP: &str = "Units: --units imperial prints the text and CSV in ft, in, mph, °, rpm, °F, inHg and oz \
-     instead of si's m, m/s, rad, rad/s, °C, hPa and kg. JSON, --set and presets are always SI; \
-     the numbers of sweep's --from/--to and surface's --undercut/--swing-angle are taken in the \
+     instead of si's m, m/s, rad, rad/s, °C, hPa and kg. JSON is always SI, and so is a bare number \
+     in --set, a preset or a batch cell (103mph, 28deg, 2500rpm, 400ft, 70F take their unit); the numbers of sweep's --from/--to and surface's --undercut/--swing-angle are taken in the \
      units printed. The explorer starts in them (its `u` switches).";
 
 /// Which preset to start from, and changes to it.
@@ -239,6 +244,10 @@ pub enum Command {
         /// The preset to start from.
         #[arg(long, short, value_name = "P", default_value = "fastball")]
         preset: String,
+        /// The colours: dark or light, for the terminal's background
+        /// (default: from COLORFGBG, else dark). NO_COLOR turns colour off.
+        #[arg(long, value_name = "THEME")]
+        theme: Option<Background>,
     },
 }
 
@@ -326,6 +335,8 @@ pub enum UsageError {
     Batch { input: String, message: String },
     #[error("no park with code {code:?}; the parks: {accepted}")]
     UnknownPark { code: String, accepted: String },
+    #[error("standard output is closed: nothing could be written (give it a file or a pipe)")]
+    StdoutClosed,
 }
 
 /// What is wrong with an A..B window.
@@ -416,6 +427,12 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
         _ => Ok(ExitCode::SUCCESS),
     }
+}
+
+/// Whether `command` writes its output to stdout (the explorer draws on
+/// the terminal; `--svg FILE` writes a file and says so on stderr).
+pub fn writes_stdout(command: &Command) -> bool {
+    !matches!(command, Command::Tui { .. }) && svg_target(command).is_none()
 }
 
 /// Where the command writes its picture, if it was given `--svg FILE`.

@@ -33,17 +33,18 @@ impl SceneArgs {
                     distance: FIELD_KEYS[0].default,
                     height: FIELD_KEYS[1].default,
                 });
-                (field.set)(fence, number(key, value)?);
+                (field.set)(fence, field.read(value)?);
                 continue;
             }
-            // A value that is no number or drag model is shown cut.
-            let shown = if !TEXT_KEYS.contains(&key) && value.trim().parse::<f64>().is_ok() {
-                value.to_owned()
-            } else {
+            // A name (a model's, a hand's) too long to be one is shown cut; a number is
+            // read whole (its error shows it cut).
+            let value = if TEXT_KEYS.contains(&key) {
                 cut(value, 80)
+            } else {
+                value.to_owned()
             };
             batch
-                .set_text(&mut preset.scene, key, &shown)
+                .set_text(&mut preset.scene, key, &value)
                 .map_err(with_field_keys)?;
         }
         if let Some(fence) = &preset.fence {
@@ -108,17 +109,6 @@ fn with_field_keys(error: InputError) -> InputError {
         },
         other => other,
     }
-}
-
-/// A `[field]` value as a number.
-fn number(key: &str, text: &str) -> Result<f64, UsageError> {
-    text.trim().parse().map_err(|_| {
-        InputError::NotANumber {
-            key: key.to_owned(),
-            text: cut(text, 80),
-        }
-        .into()
-    })
 }
 
 /// The preset named (or at the path) `spec`, refusing first a `spec` too

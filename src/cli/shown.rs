@@ -142,7 +142,7 @@ impl Shown {
     }
 
     /// A key's accepted range with its unit: "(0, 100] m/s" in SI (as
-    /// [`Bounds`] writes it), "(0, 223.694] mph" otherwise.
+    /// [`Bounds`] writes it), "(0, 223.693] mph" otherwise.
     pub fn bounds(self, key: &Key) -> String {
         let unit = key.unit_in(self.0);
         if self.is_si() || unit.is_identity() {
@@ -151,15 +151,10 @@ impl Shown {
         format!("{}{}", self.interval(key.bounds, unit), spaced(unit.symbol))
     }
 
-    /// An interval's ends in `unit`, without the unit.
+    /// An interval's ends in `unit`, without the unit, each printed so
+    /// that it is accepted when typed back ([`Bounds::shown_in`]).
     pub fn interval(self, bounds: Bounds, unit: Unit) -> String {
-        let open = if bounds.min_exclusive { '(' } else { '[' };
-        let close = if bounds.max_exclusive { ')' } else { ']' };
-        format!(
-            "{open}{}, {}{close}",
-            short(unit.show(bounds.min)),
-            short(unit.show(bounds.max))
-        )
+        bounds.shown_in(unit)
     }
 
     /// Why a flight has no range, as [`landing::not_landed`] says it, with
@@ -223,7 +218,7 @@ mod tests {
         );
         assert_eq!(IMPERIAL.value(Quantity::Distance, 121.92, 1), "400.0 ft");
         let speed = Scene::key("pitch.speed").unwrap();
-        assert_eq!(IMPERIAL.bounds(speed), "(0, 223.694] mph");
+        assert_eq!(IMPERIAL.bounds(speed), "(0, 223.693] mph");
         let angle = Scene::key("launch.angle").unwrap();
         assert_eq!(IMPERIAL.bounds(angle), "(-90, 90)°");
         assert_eq!(IMPERIAL.csv_key("x", Quantity::Distance), "x_ft");

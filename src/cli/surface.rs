@@ -287,7 +287,11 @@ fn surface_text(surface: &Surface, shown: Shown) -> String {
     };
     let mut columns = vec![Column::right("", "ψ \\ E", 7, Digits::Fixed(psi_decimals))];
     columns.extend(undercuts.iter().enumerate().map(|(i, e)| {
-        let column = Column::right("", &column_head(*e), 5, Digits::Shortest);
+        // A cell is five characters ("  71*"); a longer heading ("-400.0")
+        // widens its column by a space before it, so headings never touch.
+        let head = column_head(*e);
+        let width = (head.chars().count() + 1).max(5);
+        let column = Column::right("", &head, width, Digits::Shortest);
         column.after(if i == 0 { " " } else { "" })
     }));
     // ψ grows upward, as in Fig. 7.
@@ -303,7 +307,8 @@ fn surface_text(surface: &Surface, shown: Shown) -> String {
                 };
                 let text = match surface.outcome(i, j) {
                     CellOutcome::Landed(r) => {
-                        let r = shown.convert(Quantity::Distance, r);
+                        // Rounded first, so that -0.4 m is 0, not "-0".
+                        let r = shown.convert(Quantity::Distance, r).round() + 0.0;
                         return Cell::Text(format!("{r:>4.0}{mark}"));
                     }
                     CellOutcome::NotLanded => "up",

@@ -7,6 +7,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::units::significant;
+
 /// The weather at the ballpark.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Atmosphere {
@@ -60,12 +62,16 @@ impl Default for Atmosphere {
 }
 
 impl std::fmt::Display for Atmosphere {
-    /// "21 °C, 5 m, 1013 hPa, 50 %".
+    /// "21 °C, 5 m, 1013 hPa, 50 %", each to six significant digits (70 °F
+    /// typed is 21.1111 °C, not 21.11111111111111).
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
             "{} °C, {} m, {} hPa, {} %",
-            self.temperature, self.elevation, self.pressure, self.humidity
+            significant(self.temperature),
+            significant(self.elevation),
+            significant(self.pressure),
+            significant(self.humidity)
         )
     }
 }

@@ -13,8 +13,10 @@ use super::flight::{
 };
 use super::frame;
 use super::impact::{Collision, Launches};
+use super::keys::{InputError, LAUNCH_KEYS};
 use super::scene::Scene;
 use crate::numerics::ode::DenseStep;
+use crate::units::significant;
 
 pub use super::scene::{GivenLaunch, SceneKind};
 
@@ -107,6 +109,65 @@ impl Scene {
         let mut scene = *self;
         scene.set_kind(SceneKind::Swing);
         scene
+    }
+}
+
+/// The 3-D swing's numbers beyond those.
+const SWING_3D_KEYS: [&str; 2] = ["bat.tilt", "bat.direction"];
+
+/// The inputs of a swing that make its launch, as an error names them.
+const SWING_KEYS: [&str; 6] = [
+    "pitch.speed",
+    "pitch.spin",
+    "bat.speed",
+    "bat.spin",
+    "bat.undercut",
+    "bat.swing_angle",
+];
+
+impl Scene {
+    /// Refuses a batted ball that would fly a launch value taken from its
+    /// swing outside that `launch.*` key's bounds (`--set bat.speed=100
+    /// --set launch.angle=0.5` would fly the swing's 106.9 m/s): what a
+    /// batted ball flies must be a launch that could be given, so that the
+    /// preset saved from it loads. A swing scene flies whatever its impact
+    /// gives (a foul tip backwards, the spins of Fig. 5's cusps): its inputs
+    /// are the swing, and its launch becomes a batted ball only through
+    /// [`Scene::with_launch`], whose scene this validation then refuses.
+    pub(super) fn check_swing_launch(&self) -> Result<(), InputError> {
+        let given = self.launch;
+        if self.kind == SceneKind::Swing || given.is_complete() {
+            return Ok(());
+        }
+        let own = BattedBall::of(&Collision::new(self));
+        let own = [own.speed, own.angle, own.spin, own.direction, own.sidespin];
+        // A swing out of the paper's plane names its tilt and direction too.
+        let out_of_plane: &[&str] = if self.bat.is_planar() {
+            &[]
+        } else {
+            &SWING_3D_KEYS
+        };
+        for (key, (given, value)) in LAUNCH_KEYS.iter().zip(given.values().into_iter().zip(own)) {
+            if given.is_none() && !key.bounds.contains(value) {
+                let swing = SWING_KEYS
+                    .iter()
+                    .chain(out_of_plane)
+                    .map(|name| {
+                        let value = self.get(name).unwrap_or(f64::NAN);
+                        format!("{name} = {}", significant(value))
+                    })
+                    .collect::<Vec<_>>()
+                    .join(", ");
+                return Err(InputError::SwingLaunch {
+                    key: key.name,
+                    value,
+                    bounds: key.bounds,
+                    unit: key.unit,
+                    swing,
+                });
+            }
+        }
+        Ok(())
     }
 }
 

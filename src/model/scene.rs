@@ -404,6 +404,27 @@ impl Scene {
         self.chosen.lift = true;
     }
 
+    /// "drag nathan, lift nathan (Nathan's, a batted ball's default)": the
+    /// models in force, and where they come from when the user did not
+    /// choose them, as the command line and the explorer say it.
+    pub fn models_text(&self) -> String {
+        let whose = match self.kind {
+            SceneKind::Swing => "the paper's, a swing's default",
+            SceneKind::BattedBall => "Nathan's, a batted ball's default",
+        };
+        let source = |chosen: bool| if chosen { "chosen" } else { whose };
+        let (drag, lift) = (self.drag, self.lift);
+        if self.chosen.drag == self.chosen.lift {
+            format!("drag {drag}, lift {lift} ({})", source(self.chosen.drag))
+        } else {
+            format!(
+                "drag {drag} ({}), lift {lift} ({})",
+                source(self.chosen.drag),
+                source(self.chosen.lift)
+            )
+        }
+    }
+
     /// r_b + r_B: the centre distance at contact, so |E| must stay below it
     /// for the bat to meet the ball.
     pub fn reach(&self) -> f64 {

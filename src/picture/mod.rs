@@ -17,7 +17,7 @@ pub use bench::bench_svg;
 pub use figure::{figure_svg, table_figure_svg};
 pub use park::park_svg;
 pub use surface::{SurfacePicture, surface_svg};
-pub use trajectory::{FlightPath, TrajectoryPicture, trajectory_svg};
+pub use trajectory::{FlightPath, MAX_STRETCH, TrajectoryPicture, trajectory_svg};
 
 use plotters::chart::{ChartContext, MeshStyle, SeriesLabelPosition};
 use plotters::coord::CoordTranslate;

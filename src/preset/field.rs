@@ -1,7 +1,8 @@
 //! The keys of a preset's `[field]` section: the fence.
 
 use super::Fence;
-use crate::model::keys::Bounds;
+use crate::model::keys::{Bounds, InputError, read_typed};
+use crate::units::Quantity;
 
 /// One key of a preset's `[field]`: the fence the explorer draws, not an
 /// input of the physics (so not in [`crate::model::keys::KEYS`]). The TOML
@@ -36,6 +37,15 @@ pub const FIELD_KEYS: [FieldKey; 2] = [
 ];
 
 impl FieldKey {
+    /// A value typed for this key (`400ft`, or metres bare), in metres,
+    /// checked against the bounds, as [`crate::model::keys::Key::read`].
+    pub fn read(&self, text: &str) -> Result<f64, InputError> {
+        read_typed(
+            (self.name, Quantity::Distance, self.unit, self.bounds),
+            text,
+        )
+    }
+
     /// A length in metres in (0, max], `default` when not given.
     const fn new(
         name: &'static str,

@@ -141,18 +141,7 @@ fn open_nonblocking(path: &Path) -> std::io::Result<fs::File> {
 /// Refuses anything but a regular file of at most [`MAX_BYTES`].
 fn check_file(path: &Path, name: &str, metadata: &fs::Metadata) -> Result<(), PresetError> {
     if !metadata.is_file() {
-        let link = fs::symlink_metadata(path)
-            .is_ok_and(|m| m.file_type().is_symlink())
-            .then(|| {
-                fs::canonicalize(path)
-                    .or_else(|_| fs::read_link(path))
-                    .map_or_else(|_| "?".to_owned(), |target| shown(&target))
-            });
-        return Err(PresetError::NotAFile {
-            path: name.to_owned(),
-            kind: FileKind::of(metadata.file_type()),
-            link,
-        });
+        return Err(not_a_file(path, name, metadata));
     }
     if metadata.len() > MAX_BYTES {
         return Err(PresetError::TooBig {
@@ -161,6 +150,33 @@ fn check_file(path: &Path, name: &str, metadata: &fs::Metadata) -> Result<(), Pr
         });
     }
     Ok(())
+}
+
+/// The error for `path`, which is not a regular file (`metadata`, after
+/// links): what it is, and where a symlink there leads.
+fn not_a_file(path: &Path, name: &str, metadata: &fs::Metadata) -> PresetError {
+    let link = fs::symlink_metadata(path)
+        .is_ok_and(|m| m.file_type().is_symlink())
+        .then(|| {
+            fs::canonicalize(path)
+                .or_else(|_| fs::read_link(path))
+                .map_or_else(|_| "?".to_owned(), |target| shown(&target))
+        });
+    PresetError::NotAFile {
+        path: name.to_owned(),
+        kind: FileKind::of(metadata.file_type()),
+        link,
+    }
+}
+
+/// Refuses to save a preset over anything but a regular file or a new
+/// name: a FIFO would block the save until a reader came, a device would
+/// take the text, a folder cannot be replaced.
+pub(super) fn check_save_target(path: &Path) -> Result<(), PresetError> {
+    match fs::metadata(path) {
+        Ok(metadata) if !metadata.is_file() => Err(not_a_file(path, &shown(path), &metadata)),
+        _ => Ok(()),
+    }
 }
 
 /// The error for a path whose metadata cannot be read: a symlink loop and a

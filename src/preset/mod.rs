@@ -18,7 +18,7 @@ pub use escape::{cut, escape_cut, escape_for_terminal};
 pub use field::{FIELD_KEYS, FieldKey};
 pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
-use file::{preset_files, size_text, through};
+use file::{check_save_target, preset_files, size_text, through};
 
 use crate::model::aero::{DragModel, LiftModel};
 use crate::model::keys::{
@@ -205,18 +205,35 @@ impl Preset {
                     batch.set_text(&mut scene, &key, &shown).map_err(input)?;
                     continue;
                 }
+                // An unknown key is named escaped, as it cannot be printed.
+                let named = |e| {
+                    let shown = escape_for_terminal(&key);
+                    input(if shown == key { e } else { unknown(&shown) })
+                };
+                let field = FIELD_KEYS.iter().find(|f| f.name == key);
                 let number = match value {
                     toml::Value::Float(f) => *f,
                     toml::Value::Integer(i) => *i as f64,
-                    _ => return Err(wrong(&key, value, "expected a number")),
+                    // A number with its unit, "103mph", as `--set` takes it.
+                    toml::Value::String(text) => match field {
+                        Some(field) => field.read(text).map_err(input)?,
+                        None => {
+                            batch.set_text(&mut scene, &key, text).map_err(named)?;
+                            continue;
+                        }
+                    },
+                    _ => {
+                        return Err(wrong(
+                            &key,
+                            value,
+                            "expected a number, or a number and its unit in quotes (\"103mph\")",
+                        ));
+                    }
                 };
                 match key.as_str() {
                     k if k == FIELD_KEYS[0].name => fence_distance = Some(number),
                     k if k == FIELD_KEYS[1].name => fence_height = Some(number),
-                    _ => batch.set(&mut scene, &key, number).map_err(|e| {
-                        let shown = escape_for_terminal(&key);
-                        input(if shown == key { e } else { unknown(&shown) })
-                    })?,
+                    _ => batch.set(&mut scene, &key, number).map_err(named)?,
                 }
             }
         }
@@ -359,16 +376,24 @@ impl Preset {
 
     /// Writes the preset as `dir/name.toml`: first to a temporary file in the
     /// same folder, flushed to disk, then renamed over the target, so that a
-    /// crash or a full disk never leaves a half-written preset.
+    /// crash or a full disk never leaves a half-written preset. A target that
+    /// exists and is not a regular file (a FIFO, a device, a folder) is
+    /// refused, as reading refuses it; so is a scene that reading refuses.
     pub fn save(&self, dir: &Path) -> Result<PathBuf, PresetError> {
         check_name(&self.name)?;
+        // Never write what `load` would refuse.
+        self.scene.validate().map_err(|source| PresetError::Input {
+            path: format!("{}.toml", self.name),
+            source,
+        })?;
         let io = |path: &Path| {
             let path = path.display().to_string();
             move |source| PresetError::Io { path, source }
         };
         fs::create_dir_all(dir).map_err(io(dir))?;
         let target = dir.join(format!("{}.toml", self.name));
-        crate::atomic_file::write(&target, self.to_toml().as_bytes()).map_err(io(&target))?;
+        check_save_target(&target)?;
+        crate::atomic_file::replace(&target, self.to_toml().as_bytes()).map_err(io(&target))?;
         Ok(target)
     }
 }

@@ -9,6 +9,7 @@ use ratatui_textarea::TextArea;
 
 mod edit;
 mod export;
+mod field;
 mod figures;
 mod mouse;
 mod presets;
@@ -18,7 +19,7 @@ use super::format::{error_text, read_value, shown_value};
 pub use super::inputs::{input_count, input_key, scene_inputs};
 use super::keymap::{self, Action};
 use super::layout::{Tab, heatmap_resolution, shows_optimum_gains, trajectory_samples};
-use super::theme::ColorMode;
+use super::theme::Theme;
 use super::worker::{FigureJob, Gain, Job, Report, Work};
 use crate::analysis::optimum::{Point, Status};
 use crate::analysis::precision::Purpose;
@@ -34,6 +35,9 @@ use edit::prefilled;
 use figures::FigureInputs;
 pub use figures::{AERO_FIGURES, FIGURES, FigureState};
 use scene::first_input;
+
+/// Points of a plotted flight: (distance, height) or, from above, (x, z).
+pub type Path = Vec<(f64, f64)>;
 
 /// One row of the inputs pane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -169,6 +173,8 @@ pub struct Pin {
     pub flown: Flown,
     /// Its path, sampled at the plot's resolution.
     pub path: Vec<(f64, f64)>,
+    /// Its ground track (x, z), from the same samples.
+    pub ground: Vec<(f64, f64)>,
 }
 
 /// The explorer.
@@ -188,18 +194,25 @@ pub struct App {
     /// What `x` wrote, or why not, and whether it is an error: shown in the
     /// status line (the full width) until the next key.
     pub export_message: Option<(String, bool)>,
-    pub color: ColorMode,
+    /// How everything looks: the background's colours, or none.
+    pub theme: Theme,
     pub size: Rect,
     /// The current scene's launch, impact (a swing's) and flight at the
     /// readout's precision.
     pub flown: Flown,
     /// The ball's height (m) where it passes the fence, if it gets there.
     pub fence_height: Option<f64>,
-    /// The current flight's path, sampled at the plot's resolution.
+    /// The current flight's path (distance from the plate, height), sampled
+    /// at the plot's resolution.
     pub path: Vec<(f64, f64)>,
+    /// Its ground track (x toward centre field, z toward right field), from
+    /// the same samples: the field view draws it from above.
+    pub ground: Vec<(f64, f64)>,
     pub optimum: Option<OptimumState>,
     /// The optimal swing's path, once the optimiser has converged.
     pub optimal_path: Vec<(f64, f64)>,
+    /// Its ground track.
+    pub optimal_ground: Vec<(f64, f64)>,
     pub surface: Option<SurfaceState>,
     /// Bumped on every change of inputs; results for older ones are dropped.
     pub generation: u64,
@@ -253,7 +266,12 @@ impl App {
         scene_inputs(self.scene.kind).len()
     }
 
-    pub fn new(preset: Preset, presets_dir: Option<PathBuf>, color: ColorMode, size: Rect) -> App {
+    pub fn new(
+        preset: Preset,
+        presets_dir: Option<PathBuf>,
+        theme: impl Into<Theme>,
+        size: Rect,
+    ) -> App {
         let flown = fly_scene(&preset.scene, Purpose::Readout);
         let fields = fields(preset.scene.kind);
         let selected = first_input(&fields, preset.scene.kind);
@@ -269,13 +287,15 @@ impl App {
             tab: Tab::Flight,
             message: None,
             export_message: None,
-            color,
+            theme: theme.into(),
             size,
             flown,
             fence_height: None,
             path: Vec::new(),
+            ground: Vec::new(),
             optimum: None,
             optimal_path: Vec::new(),
+            optimal_ground: Vec::new(),
             surface: None,
             generation: 0,
             warm_start: None,
@@ -365,11 +385,13 @@ impl App {
         self.fence_height = self
             .fence
             .and_then(|fence| height_at_distance(&self.scene, fence.distance, Purpose::Readout).1);
-        self.path = self.plot_path(&self.scene);
+        (self.path, self.ground) = self.plot_tracks(&self.scene);
         // The pin's scene stays; its path follows the plot's resolution.
         if let Some(pin) = self.pin.take() {
+            let (path, ground) = self.plot_tracks(&pin.scene);
             self.pin = Some(Pin {
-                path: self.plot_path(&pin.scene),
+                path,
+                ground,
                 ..pin
             });
         }
@@ -381,6 +403,7 @@ impl App {
         // stale, until the new one is at least as fine (see `apply`).
         self.optimum = None;
         self.optimal_path.clear();
+        self.optimal_ground.clear();
         self.job = Some(self.job_for(Work::Everything));
     }
 
@@ -436,12 +459,18 @@ impl App {
         }));
     }
 
-    fn plot_path(&self, scene: &Scene) -> Vec<(f64, f64)> {
+    /// A scene's flight sampled at the plot's resolution, flown once: its
+    /// side view (distance from the plate, height) and its ground track
+    /// (x, z).
+    fn plot_tracks(&self, scene: &Scene) -> (Path, Path) {
         let samples = trajectory_samples(self.size, self.is_swing());
         let (_, points) = scene_start(scene)
             .0
             .trajectory(&Purpose::Plot.flight_options(), samples);
-        points.iter().map(|p| (p.distance, p.y)).collect()
+        points
+            .iter()
+            .map(|p| ((p.distance, p.y), (p.x, p.z)))
+            .unzip()
     }
 
     /// Takes in a background result, unless it is for older inputs.
@@ -476,7 +505,7 @@ impl App {
                 // start from or to draw.
                 if done && best.range.is_finite() {
                     self.warm_start = Some((best.undercut, best.swing_angle));
-                    self.optimal_path = self.plot_path(&scene);
+                    (self.optimal_path, self.optimal_ground) = self.plot_tracks(&scene);
                 }
             }
             Report::Sensitivity {
@@ -587,7 +616,7 @@ impl App {
                 // A name that hides no bundled preset and overwrites no file.
                 let name = preset::fresh_name(&self.preset_name, self.presets_dir.as_deref());
                 self.mode = Mode::Save {
-                    text: prefilled(name),
+                    text: prefilled(name, &self.theme),
                     error: None,
                     overwrite: None,
                 };
@@ -601,6 +630,7 @@ impl App {
                     scene: self.scene,
                     flown: self.flown,
                     path: self.path.clone(),
+                    ground: self.ground.clone(),
                 });
                 self.message = Some((
                     "pinned: the trajectory and readout compare with it (P clears)".into(),

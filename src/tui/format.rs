@@ -4,7 +4,7 @@
 //! through here.
 
 use crate::model::keys::{InputError, Key, number_text};
-use crate::units::{Quantity, Unit, UnitSystem};
+use crate::units::{Quantity, UnitSystem};
 
 /// A value as the inputs pane shows it in SI: enough digits for a thousandth
 /// of the key's step, trailing zeros trimmed.
@@ -22,6 +22,14 @@ pub fn shown_step(key: &Key, system: UnitSystem) -> f64 {
     } else {
         unit.nice_step(key.step)
     }
+}
+
+/// An SI value of `key` rounded to its step in the unit shown (0.5 mm or
+/// 0.02 in for the undercut): what a click on the surface sets, so that
+/// the inputs pane shows it whole.
+pub fn on_step(key: &Key, si: f64, system: UnitSystem) -> f64 {
+    let (unit, step) = (key.unit_in(system), shown_step(key, system));
+    unit.read((unit.show(si) / step).round() * step)
 }
 
 /// An SI value of `key` as shown in `system`: in SI (and in a unit that
@@ -69,43 +77,28 @@ pub fn read_value(key: &Key, text: &str, system: UnitSystem) -> Result<f64, Inpu
     Ok(key.unit_in(system).read(shown))
 }
 
-/// A bound in the unit shown, to five significant digits (90, 223.69).
-fn bound_text(unit: Unit, si: f64) -> String {
-    let shown = unit.show(si);
-    if shown == 0.0 {
-        return "0".to_owned();
-    }
-    let decimals = (4 - shown.abs().log10().floor() as i32).clamp(0, 12) as usize;
-    trim(format!("{shown:.decimals$}"))
-}
-
 /// A key's accepted range in the unit shown, with the unit: "(0, 100] m/s",
-/// "(0, 223.69] mph", "(-90, 90) °".
+/// "(0, 223.693] mph", "(-90, 90) °".
 pub fn shown_bounds(key: &Key, system: UnitSystem) -> String {
-    let unit = key.unit_in(system);
-    let bounds = key.bounds;
-    let range = if unit.is_identity() {
-        // The table's own text, with its π/2.
-        bounds.to_string()
-    } else {
-        let open = if bounds.min_exclusive { '(' } else { '[' };
-        let close = if bounds.max_exclusive { ')' } else { ']' };
-        format!(
-            "{open}{}, {}{close}",
-            bound_text(unit, bounds.min),
-            bound_text(unit, bounds.max)
-        )
-    };
-    if unit.symbol.is_empty() {
+    let (range, symbol) = (shown_range(key, system), key.unit_in(system).symbol);
+    if symbol.is_empty() {
         range
     } else {
-        format!("{range} {}", unit.symbol)
+        format!("{range} {symbol}")
     }
+}
+
+/// A key's accepted range in the unit shown, without the unit: "(0, 100]",
+/// "(-90, 90)", "[-π/2, π/2]".
+pub fn shown_range(key: &Key, system: UnitSystem) -> String {
+    let unit = key.unit_in(system);
+    // Each end accepted when typed back (in SI the table's own text).
+    key.bounds.shown_in(unit)
 }
 
 /// Why a value was refused, in the units shown: a range error on a key
 /// names the value and its accepted range in the key's shown unit
-/// ("pitch.speed = 300 mph: must be a finite number in (0, 223.69] mph");
+/// ("pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph");
 /// a miss, in the undercut's. Other relations between inputs keep the
 /// library's SI text.
 pub fn error_text(error: &InputError, system: UnitSystem) -> String {
@@ -162,7 +155,7 @@ mod tests {
         let error = scene.validate().unwrap_err();
         assert_eq!(
             error_text(&error, imperial),
-            "pitch.speed = 300 mph: must be a finite number in (0, 223.69] mph"
+            "pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph"
         );
         // An angle's bound, π/2, is 90°.
         let angle = Scene::key("launch.angle").unwrap();

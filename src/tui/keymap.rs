@@ -238,8 +238,9 @@ pub const KEYMAP: &[Row] = &[
             ch('2', ShowTab(Tab::Surface)),
             ch('3', ShowTab(Tab::Impact)),
             ch('4', ShowTab(Tab::Figures)),
+            ch('5', ShowTab(Tab::Field)),
         ],
-        "flight / surface / impact / the paper's figures",
+        "flight / surface / impact / figures / field",
     ),
     row(
         &[ch('f', NextFigure), ch('F', PreviousFigure)],
@@ -275,7 +276,7 @@ pub const KEYMAP: &[Row] = &[
 
 /// What the mouse does, for the help (the app handles it in `app/mouse.rs`).
 pub const MOUSE: &[(&str, &str)] = &[
-    ("click", "surface: move (E, ψ) there · input: select it"),
+    ("click", "surface: set (E, ψ) · field: aim · input: select"),
     ("wheel", "over an input: nudge it (up raises)"),
     (
         "Shift-drag",
@@ -399,7 +400,7 @@ mod tests {
                 "r",
                 "u",
                 "p P",
-                "Tab  1 2 3 4",
+                "Tab  1 2 3 4 5",
                 "f F",
                 ", .",
                 "s o",

@@ -16,22 +16,51 @@ pub enum Tab {
     Impact,
     /// The paper's figures for the current inputs.
     Figures,
+    /// The field from above: the spray chart.
+    Field,
 }
 
 impl Tab {
-    pub const ALL: [Tab; 4] = [Tab::Flight, Tab::Surface, Tab::Impact, Tab::Figures];
-    pub fn title(self) -> &'static str {
-        match self {
-            Tab::Flight => "1 Flight",
-            Tab::Surface => "2 Range surface",
-            Tab::Impact => "3 Impact",
-            Tab::Figures => "4 Figures",
+    pub const ALL: [Tab; 5] = [
+        Tab::Flight,
+        Tab::Surface,
+        Tab::Impact,
+        Tab::Figures,
+        Tab::Field,
+    ];
+    /// The tab's title, `short` where the tab bar is narrow (all five fit
+    /// the 50 columns right of the inputs at 80×24).
+    pub fn title(self, short: bool) -> &'static str {
+        match (self, short) {
+            (Tab::Flight, _) => "1 Flight",
+            (Tab::Surface, false) => "2 Range surface",
+            (Tab::Surface, true) => "2 Surface",
+            (Tab::Impact, _) => "3 Impact",
+            (Tab::Figures, false) => "4 Figures",
+            (Tab::Figures, true) => "4 Figs",
+            (Tab::Field, _) => "5 Field",
         }
+    }
+
+    /// The tab bar's divider: the titles are unpadded.
+    pub const DIVIDER: &'static str = " │ ";
+
+    /// Whether the titles must be short to fit `width` columns.
+    pub fn short_titles(width: u16) -> bool {
+        let long: usize = Tab::ALL
+            .iter()
+            .map(|t| t.title(false).chars().count())
+            .sum();
+        long + 3 * (Tab::ALL.len() - 1) > width as usize
     }
 }
 
-/// The smallest screen the explorer draws on.
-pub const MIN_SIZE: (u16, u16) = (60, 16);
+/// A terminal cell's height over its width, about: what a chart drawn to
+/// scale must allow for.
+pub const CELL_ASPECT: f64 = 2.0;
+
+/// The smallest screen the explorer draws on; a smaller one gets a notice.
+pub const MIN_SIZE: (u16, u16) = (80, 24);
 
 /// Where each pane goes; `None` for a pane not shown at this size and tab.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -43,6 +72,8 @@ pub struct Panes {
     pub heatmap: Option<Rect>,
     pub impact: Option<Rect>,
     pub figure: Option<Rect>,
+    /// The field from above (the spray chart).
+    pub field: Option<Rect>,
     pub status: Rect,
 }
 
@@ -56,6 +87,12 @@ pub fn is_wide(area: Rect) -> bool {
 /// at the left, and trajectory, figure, surface and impact in a 2×2 grid.
 pub fn is_big(area: Rect) -> bool {
     area.width >= 190 && area.height >= 54
+}
+
+/// Whether a second pane fits beside the flight (e.g. 120×40): the
+/// trajectory and the readout side by side above the tab's pane.
+pub fn is_medium(area: Rect) -> bool {
+    area.width >= 116 && area.height >= 34
 }
 
 /// Whether the inputs pane is wide enough for the Δopt column (44 or 58
@@ -103,27 +140,30 @@ pub fn layout(area: Rect, tab: Tab, swing: bool) -> Panes {
         ..Panes::default()
     };
     if is_wide(area) {
+        // The side view beside the readout; under them the range surface
+        // (a batted ball's figure) beside the field from above, which gives
+        // its place to the impact (`3`) or the figures (`4`) when chosen.
         let [top, bottom] =
             Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
         let [trajectory, readout] =
             Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(top);
-        if !swing {
-            panes.trajectory = Some(trajectory);
-            panes.readout = Some(readout);
-            panes.figure = Some(bottom);
-            return panes;
-        }
-        let [heatmap, other] =
+        let [left, other] =
             Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
         panes.trajectory = Some(trajectory);
         panes.readout = Some(readout);
-        panes.heatmap = Some(heatmap);
-        // The figures take the impact's place when chosen (`4`).
-        if tab == Tab::Figures {
+        if !swing {
+            panes.field = Some(left);
             panes.figure = Some(other);
-        } else {
-            panes.impact = Some(other);
+            return panes;
         }
+        panes.heatmap = Some(left);
+        match tab {
+            Tab::Impact => panes.impact = Some(other),
+            Tab::Figures => panes.figure = Some(other),
+            Tab::Flight | Tab::Surface | Tab::Field => panes.field = Some(other),
+        }
+    } else if is_medium(area) {
+        medium_layout(&mut panes, right, tab, swing);
     } else {
         let [tabs, content] =
             Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(right);
@@ -139,13 +179,37 @@ pub fn layout(area: Rect, tab: Tab, swing: bool) -> Panes {
             Tab::Surface => panes.heatmap = Some(content),
             Tab::Impact => panes.impact = Some(content),
             Tab::Figures => panes.figure = Some(content),
+            Tab::Field => panes.field = Some(content),
         }
     }
     panes
 }
 
-/// Everything at once: the inputs over the readout at the left, and a 2×2
-/// grid of trajectory, figure, range surface and impact.
+/// A second pane (e.g. 120×40): the tabs, the trajectory and the readout
+/// side by side, and under them the tab's pane: the range surface for the
+/// flight's tab (a batted ball's figure), the impact or the figures.
+fn medium_layout(panes: &mut Panes, right: Rect, tab: Tab, swing: bool) {
+    let [tabs, top, bottom] = Layout::vertical([
+        Constraint::Length(1),
+        Constraint::Percentage(40),
+        Constraint::Fill(1),
+    ])
+    .areas(right);
+    let [trajectory, readout] =
+        Layout::horizontal([Constraint::Fill(1), Constraint::Length(50)]).areas(top);
+    panes.tabs = Some(tabs);
+    panes.trajectory = Some(trajectory);
+    panes.readout = Some(readout);
+    match (tab, swing) {
+        (Tab::Flight, true) | (Tab::Surface, _) => panes.heatmap = Some(bottom),
+        (Tab::Impact, _) => panes.impact = Some(bottom),
+        (Tab::Flight, false) | (Tab::Figures, _) => panes.figure = Some(bottom),
+        (Tab::Field, _) => panes.field = Some(bottom),
+    }
+}
+
+/// Everything at once: the inputs over the readout at the left; the
+/// trajectory, the field and the figure over the range surface and impact.
 fn big_layout(body: Rect, status: Rect, swing: bool) -> Panes {
     let [left, right] =
         Layout::horizontal([Constraint::Length(BIG_INPUTS_WIDTH), Constraint::Fill(1)]).areas(body);
@@ -153,9 +217,11 @@ fn big_layout(body: Rect, status: Rect, swing: bool) -> Panes {
     let [inputs, readout] =
         Layout::vertical([Constraint::Length(inputs_height), Constraint::Fill(1)]).areas(left);
     if !swing {
-        // A batted ball: the trajectory and the aero figure, full height.
-        let [trajectory, figure] =
-            Layout::horizontal([Constraint::Percentage(60), Constraint::Fill(1)]).areas(right);
+        // A batted ball: the trajectory and the field over the aero figure.
+        let [top, figure] =
+            Layout::vertical([Constraint::Percentage(55), Constraint::Fill(1)]).areas(right);
+        let [trajectory, field] =
+            Layout::horizontal([Constraint::Percentage(55), Constraint::Fill(1)]).areas(top);
         return Panes {
             inputs,
             tabs: None,
@@ -164,13 +230,19 @@ fn big_layout(body: Rect, status: Rect, swing: bool) -> Panes {
             heatmap: None,
             impact: None,
             figure: Some(figure),
+            field: Some(field),
             status,
         };
     }
+    // The side and top views beside the figure, over the swing's views.
     let [top, bottom] =
         Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
-    let [trajectory, figure] =
-        Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(top);
+    let [trajectory, field, figure] = Layout::horizontal([
+        Constraint::Percentage(38),
+        Constraint::Percentage(28),
+        Constraint::Fill(1),
+    ])
+    .areas(top);
     let [heatmap, impact] =
         Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
     Panes {
@@ -181,6 +253,7 @@ fn big_layout(body: Rect, status: Rect, swing: bool) -> Panes {
         heatmap: Some(heatmap),
         impact: Some(impact),
         figure: Some(figure),
+        field: Some(field),
         status,
     }
 }
@@ -269,4 +342,61 @@ pub fn heatmap_point(area: Rect, x: u16, y: u16) -> Option<(f64, f64)> {
     let top = grid.rows - 1 - 2 * (y - plot.y) as usize;
     let psi = 0.5 * (grid.swing_angle_at(top) + grid.swing_angle_at(top - 1));
     Some((grid.undercut_at(column), psi))
+}
+
+/// The field view's scale: the plot (the pane inside its border, which
+/// ratatui's chart fills when its axes carry no labels), and the lateral
+/// (z) and centre-field (x) bounds it spans, in metres, at equal scales.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FieldMap {
+    pub plot: Rect,
+    pub z: [f64; 2],
+    pub x: [f64; 2],
+}
+
+impl FieldMap {
+    /// The view over `pane` that shows `half` metres either side of the
+    /// centre-field line and from `behind` metres behind the plate to
+    /// `reach` beyond it, as large as fits at equal scales: a braille dot is
+    /// half a cell wide and a quarter of a cell tall, and a cell is
+    /// [`CELL_ASPECT`] times as tall as wide. The plate is at the bottom
+    /// centre; room to spare goes above (centre field) or to the sides.
+    pub fn new(pane: Rect, half: f64, behind: f64, reach: f64) -> FieldMap {
+        let plot = Block::bordered().inner(pane);
+        let (dots_z, dots_x) = (
+            f64::from(2 * plot.width.max(1)) - 1.0,
+            f64::from(4 * plot.height.max(1)) - 1.0,
+        );
+        // Metres per cell's width, from the wider need.
+        let across = 2.0 * (2.0 * half) / dots_z;
+        let up = 4.0 * (reach + behind) / (CELL_ASPECT * dots_x);
+        let cell = across.max(up).max(f64::MIN_POSITIVE);
+        let (span_z, span_x) = (cell * dots_z / 2.0, cell * CELL_ASPECT * dots_x / 4.0);
+        FieldMap {
+            plot,
+            z: [-span_z / 2.0, span_z / 2.0],
+            x: [-behind, span_x - behind],
+        }
+    }
+
+    /// The point (x, z) at the centre of the cell at screen (column, row),
+    /// or `None` outside the plot. A cell's centre is between its braille
+    /// dots 0.5 across and 1.5 down, where the chart puts dot k at
+    /// k / (dots − 1) of the span.
+    pub fn point(&self, column: u16, row: u16) -> Option<(f64, f64)> {
+        let plot = self.plot;
+        if !plot.contains(ratatui::layout::Position { x: column, y: row }) {
+            return None;
+        }
+        let (dots_z, dots_x) = (
+            f64::from(2 * plot.width) - 1.0,
+            f64::from(4 * plot.height) - 1.0,
+        );
+        let across = (2.0 * f64::from(column - plot.x) + 0.5) / dots_z;
+        let down = (4.0 * f64::from(row - plot.y) + 1.5) / dots_x;
+        Some((
+            self.x[1] - down * (self.x[1] - self.x[0]),
+            self.z[0] + across * (self.z[1] - self.z[0]),
+        ))
+    }
 }

@@ -32,7 +32,7 @@ use ratatui::layout::Rect;
 
 use crate::preset::Preset;
 use app::App;
-use theme::ColorMode;
+use theme::{Background, ColorMode, Theme};
 use worker::Worker;
 
 /// Why the explorer did not run.
@@ -99,11 +99,14 @@ impl Drop for Restore {
 }
 
 /// Runs the explorer on `preset` until the user quits or a signal (TERM,
-/// HUP, INT) asks it to stop; the terminal is restored either way.
+/// HUP, INT) asks it to stop; the terminal is restored either way. Its
+/// colours are for `background` (else the one `COLORFGBG` names), none
+/// under `NO_COLOR`.
 pub fn run(
     preset: Preset,
     presets_dir: Option<PathBuf>,
     units: crate::units::UnitSystem,
+    background: Option<Background>,
 ) -> Result<(), TuiError> {
     if !(io::stdin().is_terminal() && io::stdout().is_terminal()) {
         return Err(TuiError::NoTerminal);
@@ -118,10 +121,14 @@ pub fn run(
     // Clicks and the wheel (see `app/mouse.rs`); Shift-drag still selects text.
     execute!(io::stdout(), EnableMouseCapture)?;
     let size = terminal.size()?;
+    let theme = Theme::new(
+        background.unwrap_or_else(Background::detect),
+        ColorMode::detect(),
+    );
     let mut app = App::new(
         preset,
         presets_dir,
-        ColorMode::detect(),
+        theme,
         Rect::new(0, 0, size.width, size.height),
     );
     app.set_units(units);

@@ -94,3 +94,24 @@ pub fn app_on(name: &str, width: u16, height: u16, presets_dir: Option<PathBuf>)
         Rect::new(0, 0, width, height),
     )
 }
+
+/// The screen as drawn, cell by cell.
+pub fn buffer(app: &App) -> ratatui::buffer::Buffer {
+    let mut terminal = Terminal::new(TestBackend::new(app.size.width, app.size.height)).unwrap();
+    terminal.draw(|frame| view::draw(frame, app)).unwrap();
+    terminal.backend().buffer().clone()
+}
+
+/// The text of each row of `area`, inside its borders, trimmed.
+pub fn rows_in(app: &App, area: Rect) -> Vec<String> {
+    let buffer = buffer(app);
+    (area.y + 1..area.bottom().saturating_sub(1))
+        .map(|y| {
+            (area.x + 1..area.right().saturating_sub(1))
+                .map(|x| buffer[(x, y)].symbol())
+                .collect::<String>()
+                .trim()
+                .to_owned()
+        })
+        .collect()
+}

@@ -12,6 +12,7 @@ use super::UsageError;
 use super::fly::FlownToFence;
 use super::progress::{self, Progress, Work};
 use super::shown::Shown;
+use crate::model::launch::SceneKind;
 use crate::preset::{Preset, escape_cut};
 use crate::units::Quantity;
 
@@ -35,6 +36,8 @@ pub struct Outcome {
     pub failed: usize,
     /// Rows with every launch column empty.
     pub without_launch: usize,
+    /// Empty lines, skipped.
+    pub empty: usize,
     /// Reading stopped early (binary input, a read error).
     pub stopped: bool,
 }
@@ -187,7 +190,7 @@ pub(super) fn batch(
                     }
                 }
                 Row::NoLaunch => outcome.without_launch += 1,
-                Row::Blank => {}
+                Row::Blank => outcome.empty += 1,
             }
         }
         let flown: Vec<FlownToFence> = jobs
@@ -225,6 +228,13 @@ pub(super) fn batch(
             if n == 1 { "" } else { "s" }
         ));
     }
+    if outcome.empty > 0 {
+        let n = outcome.empty;
+        sinks.note(&format!(
+            "{n} empty line{} skipped",
+            if n == 1 { "" } else { "s" }
+        ));
+    }
     if outcome.failed > 0 {
         sinks.note(&format!(
             "{} of {} rows failed and were skipped (exit status 1)",
@@ -256,16 +266,32 @@ fn announce(header: &Header, base: &Preset, sinks: &mut Sinks) {
     }
     let own = base.scene.batted_ball();
     let values = [own.speed, own.angle, own.spin];
+    let given = base.scene.launch;
+    let given = [given.speed, given.angle, given.spin];
+    let batted = base.scene.kind == SceneKind::BattedBall;
+    let swing_columns = header.swing_columns();
     for (index, (key, names)) in LAUNCH_COLUMNS.iter().enumerate() {
-        if !header.has_launch(index) {
-            let accepted: Vec<&str> = names.iter().map(|(n, _)| *n).collect();
-            sinks.note(&format!(
-                "no {} column: every row takes preset {}'s {key} = {}",
-                accepted.join(" or "),
-                base.name,
-                values[index]
-            ));
+        if header.has_launch(index) {
+            continue;
         }
+        let accepted: Vec<&str> = names.iter().map(|(n, _)| *n).collect();
+        // A value the preset gives is every row's; one it takes from its
+        // swing comes from each row's own swing when columns change it.
+        let preset_gives = batted && given[index].is_some();
+        let from_rows = !preset_gives && !swing_columns.is_empty();
+        let source = if from_rows {
+            format!(
+                "each row's {key} comes from its own swing (column{} {})",
+                if swing_columns.len() == 1 { "" } else { "s" },
+                swing_columns.join(", ")
+            )
+        } else {
+            format!(
+                "every row takes preset {}'s {key} = {}",
+                base.name, values[index]
+            )
+        };
+        sinks.note(&format!("no {} column: {source}", accepted.join(" or ")));
     }
 }
 
@@ -330,13 +356,8 @@ fn json_line(line: usize, flown: &FlownToFence) -> String {
     let (launch, flight) = (&flown.launch, &flown.flight);
     let json = serde_json::json!({
         "line": line,
-        "launch": {
-            "speed": launch.speed,
-            "angle": launch.angle,
-            "spin": launch.spin,
-            "direction": launch.direction,
-            "sidespin": launch.sidespin,
-        },
+        // {speed, angle, spin, direction, sidespin}, as `fly --json`.
+        "launch": launch,
         "flight": {
             "range": flight.landed.then_some(flight.range),
             "direction": flight.direction,

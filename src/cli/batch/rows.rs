@@ -158,6 +158,22 @@ impl Header {
             .any(|c| matches!(c, Column::Launch(i, _) if *i == index))
     }
 
+    /// The input columns that change a row's swing, and so the launch
+    /// values the row takes from it: the pitch, the bat, the ball and
+    /// gravity (which bends the pitch, Eq. 3).
+    pub(super) fn swing_columns(&self) -> Vec<&str> {
+        self.names
+            .iter()
+            .zip(&self.columns)
+            .filter(|(_, c)| {
+                matches!(c, Column::Input(key)
+                    if ["pitch.", "bat.", "ball."].iter().any(|s| key.starts_with(s))
+                        || *key == "environment.gravity")
+            })
+            .map(|(n, _)| n.as_str())
+            .collect()
+    }
+
     pub(super) fn ignored(&self) -> Vec<&str> {
         self.names
             .iter()
@@ -206,12 +222,13 @@ pub(super) enum Row {
     /// Every launch column empty (in a Statcast export: a pitch not put in
     /// play): skipped and counted, not a failure.
     NoLaunch,
-    /// An empty line.
+    /// An empty line (not even a space): skipped and counted. A line of
+    /// spaces or tabs is a record of one field, and fails or flies as one.
     Blank,
 }
 
 pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
-    if text.trim().is_empty() {
+    if text.is_empty() {
         return Row::Blank;
     }
     let bad = |reason: String| Row::Bad { line, reason };
@@ -260,10 +277,13 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
                 Err(format!("{} is empty", LAUNCH_COLUMNS[index].0))
             }
             _ if value.is_empty() => Ok(()), // the preset's value
+            // A launch.* cell as `--set` takes it (`103mph`).
+            Column::Launch(index, Unit::Si) => batch
+                .set_text(&mut scene, LAUNCH_COLUMNS[index].0, value)
+                .map_err(|e| e.to_string()),
+            // Statcast's own columns: a bare number in their unit.
             Column::Launch(index, unit) => number().and_then(|v| {
-                if unit != Unit::Si {
-                    converted.push(format!("{name} = {shown} {}", unit.name()));
-                }
+                converted.push(format!("{name} = {shown} {}", unit.name()));
                 batch
                     .set(&mut scene, LAUNCH_COLUMNS[index].0, unit.to_si(v))
                     .map_err(|e| e.to_string())
@@ -286,18 +306,12 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
                     e => e,
                 })
                 .map_err(|e| e.to_string()),
-            Column::Field(index) => number().and_then(|v| {
+            Column::Field(index) => {
                 let key = &FIELD_KEYS[index];
-                if key.bounds.contains(v) {
-                    (key.set)(&mut fence, v);
-                    Ok(())
-                } else {
-                    Err(format!(
-                        "{} = {shown}: must be a finite number in {} {}",
-                        key.name, key.bounds, key.unit
-                    ))
-                }
-            }),
+                key.read(value)
+                    .map(|v| (key.set)(&mut fence, v))
+                    .map_err(|e| e.to_string())
+            }
         };
         if let Err(reason) = done {
             return bad(reason);

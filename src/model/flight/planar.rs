@@ -76,8 +76,11 @@ impl Flight {
                 0.0
             },
             spin,
+            // A subnormal τ makes 1/τ infinite, and −t/τ NaN at t = 0:
+            // capped, the spin is whole at launch and gone at any later
+            // time, as e^(−t/τ) is for so small a τ.
             spin_decay_rate: if scene.spin_decay > 0.0 {
-                1.0 / scene.spin_decay
+                (1.0 / scene.spin_decay).min(f64::MAX)
             } else {
                 0.0
             },

@@ -8,7 +8,7 @@
 
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
 
-use crate::units::{Quantity, Unit, UnitSystem};
+use crate::units::{self, Quantity, Unit, UnitSystem};
 
 use super::aero::UnknownModel;
 use super::pitch;
@@ -16,12 +16,14 @@ use super::scene::{Scene, UnknownHand};
 
 mod batch;
 mod table;
+mod typed;
 
 pub use batch::InputBatch;
 pub use table::{
     AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, EXTENDED_KEYS, HAND_KEY, KEYS, LAUNCH_KEYS, LIFT_KEY,
     SWING_3D_KEYS, TEXT_KEYS, all_keys, swing_keys,
 };
+pub use typed::{Typed, read_typed};
 
 /// A closed or half-open interval of accepted values.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -75,6 +77,7 @@ impl Bounds {
                 value,
                 bounds: self,
                 unit,
+                typed: None,
             })
         }
     }
@@ -130,6 +133,8 @@ pub struct Key {
     pub unit: &'static str,
     pub description: &'static str,
     pub bounds: Bounds,
+    /// Why the bounds are where they are, in a sentence or two.
+    pub bounds_reason: &'static str,
     /// A nudge that suits the quantity (the explorer's arrow keys).
     pub step: f64,
     pub get: fn(&Scene) -> f64,
@@ -171,19 +176,40 @@ impl std::fmt::Debug for Key {
 /// what would have been accepted.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum InputError {
-    #[error("{key} = {}: must be a finite number in {bounds}{}", number_text(*.value), unit_suffix(.unit))]
+    #[error(
+        "{key} = {}: must be a finite number in {bounds}{}{}",
+        .typed.as_ref().map_or_else(|| number_text(*.value), |t| t.text.clone()),
+        unit_suffix(.unit),
+        .typed.as_ref().map_or("", |t| t.suggestion.as_str())
+    )]
     OutOfRange {
         key: &'static str,
+        /// In SI.
         value: f64,
         bounds: Bounds,
         unit: &'static str,
+        /// The text typed, when the value was typed as text.
+        typed: Option<Box<Typed>>,
+    },
+    #[error("{key} = {text}: {why}; {key} takes {accepted}")]
+    WrongUnit {
+        key: &'static str,
+        text: String,
+        /// What is wrong with the unit typed.
+        why: String,
+        /// The units the key takes.
+        accepted: String,
     },
     #[error(
-        "bat.undercut = {value}: the bat misses the ball; |E| must be below r_b + r_B = {limit} m"
+        "bat.undercut = {}: the bat misses the ball; |E| must be below r_b + r_B = {} m",
+        number_text(*.value),
+        units::significant(*.limit)
     )]
     Miss { value: f64, limit: f64 },
     #[error(
-        "pitch.speed = {speed}: Eq. (3)'s fit gives a vertical velocity of {vertical:.2} m/s, more than the speed itself; at this gravity it needs a pitch speed of at least {minimum:.2} m/s"
+        "pitch.speed = {}: Eq. (3)'s fit gives {}, more than the speed itself; at this gravity it needs a pitch speed of at least {minimum:.2} m/s",
+        number_text(*.speed),
+        vertical_text(*.vertical)
     )]
     PitchOutsideFit {
         speed: f64,
@@ -194,6 +220,18 @@ pub enum InputError {
     UnknownKey { key: String, known: String },
     #[error("{key} = {text:?}: not a number")]
     NotANumber { key: String, text: String },
+    #[error(
+        "{key} = {} {unit}, taken from the swing ({swing}): must be in {bounds} {unit}, as if given; give {key}, or change the swing",
+        units::significant(*.value)
+    )]
+    SwingLaunch {
+        key: &'static str,
+        value: f64,
+        bounds: Bounds,
+        unit: &'static str,
+        /// The swing's inputs that made it: "pitch.speed = 42, …".
+        swing: String,
+    },
     #[error(transparent)]
     UnknownModel(#[from] UnknownModel),
     #[error(transparent)]
@@ -209,7 +247,9 @@ pub enum InputError {
         weather: &'static str,
     },
     #[error(
-        "ball.mass = {mass} kg: with ball.radius = {radius} m the ball is {density:.3} kg/m³ on average; the model ignores buoyancy and needs at least {MIN_BALL_DENSITY} kg/m³ (a ping-pong ball is ~80), so ball.mass ≥ {minimum:.4} kg"
+        "ball.mass = {} kg: with ball.radius = {} m the ball is {density:.3} kg/m³ on average; the model ignores buoyancy and needs at least {MIN_BALL_DENSITY} kg/m³ (a ping-pong ball is ~80), so ball.mass ≥ {minimum:.4} kg",
+        number_text(*.mass),
+        number_text(*.radius)
     )]
     BallTooLight {
         mass: f64,
@@ -218,8 +258,11 @@ pub enum InputError {
         minimum: f64,
     },
     #[error(
-        "{key} = {value} m: must be in [{min:.4}, {max:.4}] m, from {} to {} of {radius_key} = {radius} m",
-        GYRATION_CORE, .shape
+        "{key} = {} m: must be in [{min:.4}, {max:.4}] m, from {} to {} of {radius_key} = {} m",
+        number_text(*.value),
+        GYRATION_CORE,
+        .shape,
+        number_text(*.radius)
     )]
     GyrationRadius {
         key: &'static str,
@@ -255,7 +298,8 @@ impl Scene {
         Ok(())
     }
 
-    /// Sets any key from text, as `--set KEY=VALUE` does.
+    /// Sets any key from text, as `--set KEY=VALUE` does: a number in SI,
+    /// or with a unit of the key's quantity ([`Key::read`]), in range.
     pub fn set_text(&mut self, name: &str, text: &str) -> Result<(), InputError> {
         if name == DRAG_KEY {
             self.choose_drag(text.parse()?);
@@ -270,10 +314,7 @@ impl Scene {
             return Ok(());
         }
         let key = Self::key(name)?;
-        let value: f64 = text.trim().parse().map_err(|_| InputError::NotANumber {
-            key: name.to_owned(),
-            text: text.to_owned(),
-        })?;
+        let value = key.read(text)?;
         (key.set)(self, value);
         Ok(())
     }
@@ -337,7 +378,7 @@ impl Scene {
                 minimum: pitch::minimum_speed(self.environment.gravity),
             });
         }
-        Ok(())
+        self.check_swing_launch()
     }
 }
 
@@ -387,14 +428,29 @@ fn suggestion(key: &str) -> String {
         .unwrap_or_default()
 }
 
-/// A number as typed when that is short (0.09, 1000, NaN), in scientific
-/// notation when Rust's plain form would run to hundreds of digits (1e-200).
+/// A number as typed when that is short (0.09, 1000, NaN, 1518.1420786309536),
+/// in scientific notation when Rust's plain form would run to hundreds of
+/// digits (1e-200): either way the shortest digits that read back as it.
 pub fn number_text(value: f64) -> String {
     let plain = value.to_string();
-    if plain.len() <= 16 {
+    if plain.len() <= 20 {
         plain
     } else {
         format!("{value:e}")
+    }
+}
+
+/// Eq. (3)'s vertical velocity in an error: "a vertical velocity of
+/// -6.51 m/s", or of 1e301 m/s for a pitch of 1e-300 m/s; infinite below
+/// that (5e-324 m/s).
+fn vertical_text(vertical: f64) -> String {
+    if vertical.is_finite() {
+        format!(
+            "a vertical velocity of {} m/s",
+            units::significant(vertical)
+        )
+    } else {
+        "an infinite vertical velocity".to_owned()
     }
 }
 

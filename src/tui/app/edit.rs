@@ -6,6 +6,7 @@ use ratatui::crossterm::event::KeyEvent;
 use ratatui_textarea::TextArea;
 
 use super::*;
+use crate::tui::theme::Theme;
 
 impl App {
     /// Moves the selected input by `scale` of its step, if the result is valid.
@@ -52,7 +53,7 @@ impl App {
         };
         self.mode = Mode::Edit {
             field,
-            text: prefilled(current.clone()),
+            text: prefilled(current.clone(), &self.theme),
             error: None,
             initial: current,
         };
@@ -121,9 +122,12 @@ pub(super) fn cycle<T: Copy + PartialEq>(all: &[T], current: T, by: f64) -> T {
 }
 
 /// A one-line text field holding `value`, all of it selected: typing
-/// replaces it (as in a form), while ← → or End keep and edit it.
-pub(super) fn prefilled(value: String) -> TextArea<'static> {
+/// replaces it (as in a form), while ← → or End keep and edit it. The
+/// selection is reversed, as the selected row is (the crate's light blue
+/// is a colour, and hides light text).
+pub(super) fn prefilled(value: String, theme: &Theme) -> TextArea<'static> {
     let mut text = TextArea::new(vec![value]);
+    text.set_selection_style(theme.selected);
     text.select_all();
     text
 }

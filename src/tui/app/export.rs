@@ -2,7 +2,7 @@
 //! folder (`homerun-trajectory-1.svg`, `-2`, …; never over an existing
 //! file), with where it went, or why not, in the status line (the screen's
 //! full width, where a path fits best; until the next key). The trajectory
-//! for tabs 1 and 3, the range surface for tab 2, the figure for tab 4. A
+//! (from the side and from above) for tabs 1, 3 and 5, the range surface for tab 2, the figure for tab 4. A
 //! write of ~50 KB is done at once, on the UI thread.
 
 use std::path::{Path, PathBuf};
@@ -108,22 +108,25 @@ impl App {
                     picture::table_figure_svg(data, &self.scene, &self.preset_name),
                 ))
             }
-            Tab::Flight | Tab::Impact => {
+            Tab::Flight | Tab::Impact | Tab::Field => {
                 let flight = &self.flown.flight;
                 let mut paths = vec![FlightPath {
                     name: "now".into(),
                     points: self.path.clone(),
+                    ground: self.ground.clone(),
                 }];
                 if !self.optimal_path.is_empty() {
                     paths.push(FlightPath {
                         name: "best".into(),
                         points: self.optimal_path.clone(),
+                        ground: self.optimal_ground.clone(),
                     });
                 }
                 if let Some(pin) = &self.pin {
                     paths.push(FlightPath {
                         name: "pin".into(),
                         points: pin.path.clone(),
+                        ground: pin.ground.clone(),
                     });
                 }
                 let picture = TrajectoryPicture {

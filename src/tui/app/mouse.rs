@@ -1,11 +1,17 @@
-//! The mouse: a click on the heatmap moves the swing there, a click on an
-//! input selects it, the wheel over an input nudges it. Where things are
+//! The mouse: a click on the heatmap moves the swing there, one on the
+//! field sets the launch direction, a click on an input selects it, the wheel over an input nudges it. Where things are
 //! comes from `layout`, the same rectangles the views draw into.
 
 use ratatui::crossterm::event::{MouseEvent, MouseEventKind};
 
 use super::{App, Mode};
+use crate::model::scene::Scene;
+use crate::tui::format::{error_text, on_step};
 use crate::tui::layout::{self, heatmap_point, input_scroll, inputs_list};
+
+/// The keys a click on the surface sets.
+const UNDERCUT: &str = "bat.undercut";
+const SWING_ANGLE: &str = "bat.swing_angle";
 
 impl App {
     pub(super) fn mouse(&mut self, event: MouseEvent) {
@@ -21,15 +27,29 @@ impl App {
                     self.selected = field;
                     self.message = None;
                     self.dirty = true;
+                } else if panes.field.is_some_and(|pane| self.click_field(pane, x, y)) {
+                    // The field set the launch's direction (or said why not).
                 } else if let Some((e, psi)) = panes
                     .heatmap
                     .filter(|_| self.is_swing())
                     .and_then(|h| heatmap_point(h, x, y))
                 {
-                    self.scene = self.scene.with_swing(e, psi);
-                    self.inputs_changed = true;
-                    self.message = None;
+                    // On the inputs' steps, as typed or nudged values are.
+                    let round = |name, si| match Scene::key(name) {
+                        Ok(key) => on_step(key, si, self.units),
+                        Err(_) => si,
+                    };
+                    let (e, psi) = (round(UNDERCUT, e), round(SWING_ANGLE, psi));
+                    let scene = self.scene.with_swing(e, psi);
                     self.dirty = true;
+                    match scene.validate() {
+                        Ok(()) => {
+                            self.scene = scene;
+                            self.inputs_changed = true;
+                            self.message = None;
+                        }
+                        Err(error) => self.message = Some((error_text(&error, self.units), true)),
+                    }
                 }
             }
             MouseEventKind::ScrollUp | MouseEventKind::ScrollDown => {

@@ -31,6 +31,7 @@ impl App {
             // The old scene's results are of another kind: drop them now.
             self.optimum = None;
             self.optimal_path.clear();
+            self.optimal_ground.clear();
             self.fit_figure();
         }
     }
@@ -40,8 +41,15 @@ impl App {
     /// ball, air and models as now).
     pub(super) fn switch_scene(&mut self) {
         let (scene, message) = if self.is_swing() {
+            // A swing's validation refuses a launch outside launch.*'s
+            // bounds; this holds it for a swing set by a click or an optimum.
+            let batted = self.scene.with_launch(self.flown.launch);
+            if let Err(e) = batted.validate() {
+                self.message = Some((format!("no batted ball: {e}"), true));
+                return;
+            }
             (
-                self.scene.with_launch(self.flown.launch),
+                batted,
                 "batted-ball scene: this swing's launch, flown on its own (b: back to the swing)",
             )
         } else {

@@ -5,17 +5,15 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Chart, Paragraph, Wrap};
+use ratatui::widgets::{Block, Paragraph};
 
-use super::chart;
+use super::{figure_panels, words};
 use crate::analysis::figures::curves::{
-    Curve, axis_title, column_input, current_value, curves, marked_points, panels, x_column,
+    Curve, axis_title, column_input, curves, marked_points, panels, x_column,
 };
 use crate::analysis::figures::{Column, FigureData, trimmed};
 use crate::tui::app::{AERO_FIGURES, App, FIGURES};
-use crate::tui::theme::{self, dim, title_style};
 use crate::units::{Quantity, Unit};
 
 /// The curves of `data` the explorer draws (its main panel, as
@@ -38,7 +36,7 @@ pub fn chart_marks(data: &FigureData) -> Vec<(f64, f64)> {
 /// swept input's, else what its heading's SI unit measures (a range in m
 /// is a distance, ω in rad/s a spin). Dimensionless columns (Re, S, C_D)
 /// and times stay as they are.
-fn column_unit(app: &App, column: &Column) -> (Unit, String) {
+pub(super) fn column_unit(app: &App, column: &Column) -> (Unit, String) {
     let title = axis_title(&column.head);
     let si = title
         .rsplit_once('(')
@@ -67,7 +65,7 @@ fn column_unit(app: &App, column: &Column) -> (Unit, String) {
 }
 
 /// `value` to `digits` significant digits.
-fn sig(value: f64, digits: i32) -> String {
+pub(super) fn sig(value: f64, digits: i32) -> String {
     if value == 0.0 || !value.is_finite() {
         return format!("{value}");
     }
@@ -99,7 +97,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         k + 1,
         if stale { " computing…" } else { "" }
     );
-    let block = Block::bordered().title(Span::styled(title, title_style()));
+    let block = Block::bordered().title(Span::styled(title, app.theme.title));
     let inner = block.inner(area);
     frame.render_widget(block, area);
     // A batted ball has no pitch or bat to sweep: only the aero applies.
@@ -110,7 +108,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             AERO_FIGURES.map(|n| n.to_string()).join("–")
         );
         frame.render_widget(
-            Paragraph::new(Line::styled(text, dim())).wrap(ratatui::widgets::Wrap { trim: true }),
+            Paragraph::new(Line::styled(text, app.theme.dim))
+                .wrap(ratatui::widgets::Wrap { trim: true }),
             inner,
         );
         return;
@@ -119,152 +118,71 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         None => return,
         Some(Err(e)) => {
             frame.render_widget(
-                Paragraph::new(Line::styled(e.as_str(), theme::ERROR)),
+                Paragraph::new(Line::styled(e.as_str(), app.theme.error))
+                    .wrap(ratatui::widgets::Wrap { trim: true }),
                 inner,
             );
             return;
         }
         Some(Ok(data)) => data,
     };
-    let (x, curves) = chart_curves(data);
-    // In the units shown: the swept input's and the curves' (range in ft).
-    let (x_unit, x_title) = column_unit(app, &data.columns[x]);
-    let panel = panels(data.number)[0];
-    let (y_unit, y_head) = data
-        .columns
-        .iter()
-        .find(|c| c.key.starts_with(panel))
-        .map_or(
-            (Quantity::Unchanged.unit(app.units, ""), String::new()),
-            |c| column_unit(app, c),
-        );
-    let shown = |(px, py): (f64, f64)| (x_unit.show(px), y_unit.show(py));
-    // The paper's marked points (A, B, Dryden's point…), each on its curve.
-    let marks: Vec<(f64, f64)> = chart_marks(data).into_iter().map(shown).collect();
-    let curves: Vec<Curve> = curves
-        .into_iter()
-        .map(|curve| Curve {
-            points: curve.points.iter().copied().map(shown).collect(),
-            ..curve
-        })
-        .collect();
-
-    // The paper's numbers beside ours, as many as leave the chart room.
-    let mut notes: Vec<Line> = data
+    // The paper's numbers beside ours, and the notes: each gets a row, and
+    // rows to spare go to the first ones' further words.
+    let notes: Vec<Vec<Span>> = data
         .comparisons
         .iter()
         .map(|c| {
-            // The numbers first, so that a narrow pane cuts only the words.
-            Line::from(vec![
-                Span::styled(format!("paper {}", trimmed(c.paper)), dim()),
+            // The numbers first, so that a narrow pane loses only words.
+            vec![
+                Span::styled(format!("paper {}", trimmed(c.paper)), app.theme.dim),
                 Span::raw(format!(" · ours {} {}", sig(c.ours, 3), c.unit)),
-                Span::styled(format!("  {}", c.what), dim()),
-            ])
+                Span::styled(format!("  {}", c.what), app.theme.dim),
+            ]
         })
+        .chain(
+            data.notes
+                .iter()
+                .map(|n| vec![Span::styled(n.as_str(), app.theme.dim)]),
+        )
         .collect();
-    notes.extend(data.notes.iter().map(|n| Line::styled(n.as_str(), dim())));
-    let room = (inner.height as usize).saturating_sub(10).max(1);
-    // Whole notes, wrapped, when they take at most a quarter of the pane
-    // (the chart comes first); else one line each, as many as fit, cut at
-    // the edge (the numbers come first).
-    let wrapped: usize = notes
+    let width = inner.width as usize;
+    let height = inner.height as usize;
+    // The caption takes two rows where the pane is tall enough.
+    let caption = [Span::styled(data.title.as_str(), app.theme.dim)];
+    let caption = words::fit(&caption, width, if height >= 18 { 2 } else { 1 });
+    // The chart keeps at least 10 rows; the notes a quarter of the pane,
+    // or a row each.
+    let budget = height
+        .saturating_sub(10 + caption.len())
+        .min((height / 4).max(notes.len()))
+        .max(1);
+    let rows = note_rows(&notes, width, budget);
+    let below: Vec<Line> = notes
         .iter()
-        .map(|note| wrapped_rows(&note.to_string(), inner.width as usize))
-        .sum();
-    let wrap = wrapped <= room.min(inner.height as usize / 4);
-    let rows = if wrap {
-        wrapped
-    } else {
-        notes.truncate(room);
-        notes.len()
-    };
-    let [heading, plot, below] = Layout::vertical([
-        Constraint::Length(1),
+        .zip(&rows)
+        .flat_map(|(note, &rows)| words::fit(note, width, rows))
+        .collect();
+    let [heading, plot, below_area] = Layout::vertical([
+        Constraint::Length(caption.len() as u16),
         Constraint::Fill(1),
-        Constraint::Length(rows as u16),
+        Constraint::Length(below.len() as u16),
     ])
     .areas(inner);
-    frame.render_widget(
-        Paragraph::new(Line::styled(data.title.as_str(), dim())),
-        heading,
-    );
-    let notes = Paragraph::new(notes);
-    let notes = if wrap {
-        notes.wrap(Wrap { trim: true })
-    } else {
-        notes
-    };
-    frame.render_widget(notes, below);
+    frame.render_widget(Paragraph::new(caption), heading);
+    frame.render_widget(Paragraph::new(below), below_area);
 
-    let points = curves.iter().flat_map(|c| c.points.iter());
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for &(px, py) in points {
-        (x0, x1, y0, y1) = (x0.min(px), x1.max(px), y0.min(py), y1.max(py));
-    }
-    if x0 >= x1 || y0 > y1 {
-        return;
-    }
-    let pad = 0.05 * (y1 - y0).max(1e-9);
-    let (y0, y1) = (y0 - pad, y1 + pad);
-
-    // The current input's value, where the x column is an input.
-    let now = current_value(data, &app.scene)
-        .map(|v| x_unit.show(v))
-        .filter(|v| (x0..=x1).contains(v));
-    let now_line = now.map_or(Vec::new(), |v| vec![(v, y0), (v, y1)]);
-
-    let mut datasets = Vec::new();
-    let mut legend = Vec::new();
-    for (k, curve) in curves.iter().enumerate() {
-        let style = theme::FIGURE_CURVES[k % theme::FIGURE_CURVES.len()];
-        datasets.push(chart::line(style, &curve.points));
-        if curves.len() > 1 {
-            legend.push(Span::styled(format!("━ {} ", curve.name), style));
-        }
-    }
-    if !now_line.is_empty() {
-        datasets.push(chart::line(theme::SWING, &now_line));
-        legend.push(Span::styled("│ now ", theme::SWING));
-    }
-    datasets.push(chart::points(Marker::Dot, theme::APEX, &marks));
-    let y_head = if curves.is_empty() {
-        String::new()
-    } else {
-        y_head
-    };
-    let labels = |a: f64, b: f64| [a, 0.5 * (a + b), b].map(|v| sig(v, 3));
-    let chart = Chart::new(datasets)
-        .block(Block::new().title_top(Line::from(legend).right_aligned()))
-        .x_axis(chart::axis(x_title, [x0, x1], labels(x0, x1)))
-        .y_axis(chart::axis(y_head, [y0, y1], labels(y0, y1)))
-        .legend_position(None);
-    frame.render_widget(chart, plot);
+    figure_panels::draw(frame, plot, app, data);
 }
-/// How many rows `text` takes when wrapped at words to `width` cells, as
-/// `Wrap { trim: true }` does: spaces inside a row count, those at a break
-/// do not, and a word longer than a row is split.
-fn wrapped_rows(text: &str, width: usize) -> usize {
-    if width == 0 {
-        return u16::MAX.into();
-    }
-    let (mut rows, mut used) = (1, 0);
-    // Each word with the spaces before it (the second and later spaces of
-    // a gap are empty pieces).
-    let mut gap = 0;
-    for word in text.trim().split(' ') {
-        gap += 1;
-        if word.is_empty() {
-            continue;
-        }
-        let cells = Span::raw(word).width().max(1);
-        let needed = if used == 0 { cells } else { used + gap + cells };
-        if needed <= width {
-            used = needed;
-        } else {
-            rows += usize::from(used > 0) + (cells - 1) / width;
-            used = (cells - 1) % width + 1;
-        }
-        gap = 0;
+
+/// The rows each note gets out of `budget`: one each, in order, while they
+/// last; then the rest of their words, first notes first.
+fn note_rows(notes: &[Vec<Span>], width: usize, budget: usize) -> Vec<usize> {
+    let mut rows: Vec<usize> = (0..notes.len()).map(|k| usize::from(k < budget)).collect();
+    let mut spare = budget.saturating_sub(notes.len());
+    for (note, rows) in notes.iter().zip(rows.iter_mut()) {
+        let more = words::rows_needed(note, width).saturating_sub(1).min(spare);
+        *rows += more;
+        spare -= more;
     }
     rows
 }
@@ -274,14 +192,12 @@ mod tests {
     use super::*;
 
     #[test]
-    fn notes_wrap_at_words() {
-        assert_eq!(wrapped_rows("paper 5 · ours 4.01 m", 40), 1);
-        // "range gained" does not fit in 10 after "paper 5 ·".
-        assert_eq!(wrapped_rows("paper 5 · range gained", 10), 3);
-        assert_eq!(wrapped_rows("abcdefghijkl", 5), 3);
-        assert_eq!(wrapped_rows("", 5), 1);
-        // A double space counts: 11 cells do not fit in 10.
-        assert_eq!(wrapped_rows("ab cd  efgh", 10), 2);
-        assert_eq!(wrapped_rows("ab cd efgh", 10), 1);
+    fn notes_get_a_row_each_then_the_rest_of_their_words() {
+        let note = |text: &'static str| vec![Span::raw(text)];
+        let notes = [note("one two three four"), note("five six"), note("seven")];
+        // 10 cells: the first needs 2 rows.
+        assert_eq!(note_rows(&notes, 10, 2), [1, 1, 0]);
+        assert_eq!(note_rows(&notes, 10, 3), [1, 1, 1]);
+        assert_eq!(note_rows(&notes, 10, 5), [2, 1, 1]);
     }
 }

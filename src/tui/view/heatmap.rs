@@ -15,7 +15,7 @@ use ratatui::widgets::{Block, Paragraph};
 use crate::analysis::study::{CellOutcome, Grid, Surface};
 use crate::tui::app::App;
 use crate::tui::layout::{HEATMAP_BAR, heatmap_plot};
-use crate::tui::theme::{self, dim, ramp, title_style};
+use crate::tui::theme::{Theme, ramp};
 use crate::units::UnitSystem;
 
 /// The surface's cell at pixel (px, py) of a w×h picture, py from the top.
@@ -30,6 +30,11 @@ fn sample(surface: &Surface, px: usize, py: usize, w: usize, h: usize) -> CellOu
 /// legend.
 pub const NOT_LANDED_GLYPH: &str = "░";
 pub const NOT_LANDED_LEGEND: &str = "░░   up";
+/// Without colour: the hatch (the shades use ░), its legend, and the
+/// fence's contour.
+pub const NOT_LANDED_PLAIN_GLYPH: &str = "╳";
+pub const NOT_LANDED_PLAIN_LEGEND: &str = "╳╳   up";
+const CONTOUR_GLYPH: &str = "•";
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let level = app.fence.map(|f| f.distance);
@@ -49,7 +54,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
         None => format!(" Range over (E, ψ){stale} "),
     };
-    let block = Block::bordered().title(Span::styled(title, title_style()));
+    let block = Block::bordered().title(Span::styled(title, app.theme.title));
     frame.render_widget(block, area);
     let plot = heatmap_plot(area);
     if plot.width < 4 || plot.height < 2 {
@@ -80,35 +85,35 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         inner.x,
         plot.y,
         format!("{:>5}", psi_text(window.swing_angle.1)),
-        dim(),
+        app.theme.dim,
     );
-    buf.set_string(inner.x, plot.y + plot.height / 2, "  ψ ↑", dim());
+    buf.set_string(inner.x, plot.y + plot.height / 2, "  ψ ↑", app.theme.dim);
     buf.set_string(
         inner.x,
         plot.bottom().saturating_sub(1),
         format!("{:>5}", psi_text(window.swing_angle.0)),
-        dim(),
+        app.theme.dim,
     );
     let bottom = plot.bottom();
-    buf.set_string(plot.x, bottom, e_text(window.undercut.0), dim());
+    buf.set_string(plot.x, bottom, e_text(window.undercut.0), app.theme.dim);
     let e_label = format!("E ({e_unit}) →");
     buf.set_string(
         plot.x + plot.width.saturating_sub(e_label.chars().count() as u16) / 2,
         bottom,
         &e_label,
-        dim(),
+        app.theme.dim,
     );
     let right = e_text(window.undercut.1);
     buf.set_string(
         plot.right().saturating_sub(right.len() as u16),
         bottom,
         &right,
-        dim(),
+        app.theme.dim,
     );
 
     let Some(state) = &app.surface else {
         frame.render_widget(
-            Paragraph::new(Line::styled("computing the surface…", dim())),
+            Paragraph::new(Line::styled("computing the surface…", app.theme.dim)),
             plot,
         );
         return;
@@ -126,7 +131,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .map(|(px, py)| sample(surface, px, py, w, h))
         .collect();
     let at = |px: usize, py: usize| pixels[py * w + px];
-    let colour = |px: usize, py: usize| -> Color {
+    let pixel = |px: usize, py: usize| -> Pixel {
         let v = at(px, py);
         if let (Some(l), Some(here)) = (level, v.range()) {
             // A pixel on the contour: the level lies between it and a
@@ -136,19 +141,29 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             let edge =
                 (px + 1 < w && crosses(at(px + 1, py))) || (py + 1 < h && crosses(at(px, py + 1)));
             if edge {
-                return theme::CONTOUR;
+                return Pixel::Contour;
             }
         }
         match v {
-            CellOutcome::Landed(v) => app.color.rgb(ramp((v - min) / (max - min).max(1e-9))),
-            CellOutcome::NotLanded => theme::NOT_LANDED,
-            CellOutcome::BatMisses | CellOutcome::NotComputed => theme::NO_RANGE,
+            CellOutcome::Landed(v) => Pixel::Landed((v - min) / (max - min).max(1e-9)),
+            CellOutcome::NotLanded => Pixel::NotLanded,
+            CellOutcome::BatMisses | CellOutcome::NotComputed => Pixel::NoRange,
         }
     };
-    let hatched = |col: usize, row: usize| {
-        at(col, 2 * row) == CellOutcome::NotLanded && at(col, 2 * row + 1) == CellOutcome::NotLanded
-    };
-    draw_pixels(frame.buffer_mut(), plot, &colour, &hatched);
+    let theme = &app.theme;
+    if theme.colored() {
+        let colour = |px: usize, py: usize| -> Color {
+            match pixel(px, py) {
+                Pixel::Contour => theme.contour,
+                Pixel::Landed(t) => theme.rgb(ramp(t)),
+                Pixel::NotLanded => theme.not_landed,
+                Pixel::NoRange => theme.no_range,
+            }
+        };
+        draw_pixels(frame.buffer_mut(), plot, &colour, theme);
+    } else {
+        draw_shades(frame.buffer_mut(), plot, &pixel);
+    }
 
     // Markers: the current swing and the optimum.
     // A point outside the window is pinned to its edge.
@@ -166,21 +181,21 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         let symbol = if inside { symbol } else { "◆" };
         buf[(x, y)]
             .set_symbol(symbol)
-            .set_style(theme::mark(colour));
+            .set_style(app.theme.mark(colour));
     };
     if let Some(o) = app.optimum.filter(|o| o.done && o.best.range.is_finite()) {
         mark(
             buf,
             to_cell(o.best.undercut, o.best.swing_angle),
             "★",
-            theme::OPTIMUM_MARK,
+            app.theme.optimum_mark,
         );
     }
     mark(
         buf,
         to_cell(app.scene.bat.undercut, app.scene.bat.swing_angle),
         "✚",
-        theme::SWING_MARK,
+        app.theme.swing_mark,
     );
 
     // The colour bar, top = max.
@@ -188,57 +203,110 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let [_, bar_area] = Layout::horizontal([Constraint::Length(0), Constraint::Fill(1)]).areas(bar);
     for row in 0..bar_area.height {
         let t = 1.0 - row as f64 / (bar_area.height.max(2) - 1) as f64;
-        let c = app.color.rgb(ramp(t));
-        buf.set_string(bar_area.x, bar_area.y + row, "██", theme::swatch(c));
+        let c = app.theme.rgb(ramp(t));
+        let swatch = if app.theme.colored() {
+            "██"
+        } else {
+            &Theme::shade(t).repeat(2)
+        };
+        buf.set_string(bar_area.x, bar_area.y + row, swatch, app.theme.swatch(c));
     }
     let (top, unit) = app.distance(max);
-    buf.set_string(bar_area.x + 2, bar_area.y, format!("{top:>5.0}"), dim());
+    buf.set_string(
+        bar_area.x + 2,
+        bar_area.y,
+        format!("{top:>5.0}"),
+        app.theme.dim,
+    );
     buf.set_string(
         bar_area.x + 2,
         bar_area.y + bar_area.height / 2,
         format!("{unit:>5}"),
-        dim(),
+        app.theme.dim,
     );
     buf.set_string(
         bar_area.x + 2,
         bar_area.bottom().saturating_sub(1),
         format!("{:>5.0}", app.distance(min).0),
-        dim(),
+        app.theme.dim,
     );
     // The legend of the cells off the scale, under the bar.
     if surface.any_not_landed() {
         buf.set_string(
             bar_area.x,
             bar_area.bottom(),
-            NOT_LANDED_LEGEND,
-            theme::swatch(theme::NOT_LANDED),
+            if app.theme.colored() {
+                NOT_LANDED_LEGEND
+            } else {
+                NOT_LANDED_PLAIN_LEGEND
+            },
+            app.theme.swatch(app.theme.not_landed),
         );
     }
 }
 
+/// What a pixel of the map shows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Pixel {
+    /// On the fence's contour.
+    Contour,
+    /// A landing, at `t` of the colour scale (0 to 1).
+    Landed(f64),
+    NotLanded,
+    /// The bat misses the ball.
+    NoRange,
+}
+
 /// Fills `area` with half blocks: the upper pixel as foreground, the lower
-/// as background; a character that is `hatched` whole gets the hatch glyph
-/// instead, on black.
+/// as background; a character whose two pixels both do not land gets the
+/// hatch glyph instead, on the no-range colour.
 fn draw_pixels(
     buf: &mut Buffer,
     area: Rect,
     colour: &dyn Fn(usize, usize) -> Color,
-    hatched: &dyn Fn(usize, usize) -> bool,
+    theme: &Theme,
 ) {
     for row in 0..area.height {
         for col in 0..area.width {
             let (c, r) = (col as usize, row as usize);
-            let top = colour(c, 2 * r);
+            let (top, bottom) = (colour(c, 2 * r), colour(c, 2 * r + 1));
             let cell = &mut buf[(area.x + col, area.y + row)];
-            if hatched(c, r) {
+            if top == theme.not_landed && bottom == theme.not_landed {
                 cell.set_symbol(NOT_LANDED_GLYPH)
-                    .set_fg(theme::NOT_LANDED)
-                    .set_bg(theme::NO_RANGE);
+                    .set_fg(theme.not_landed)
+                    .set_bg(theme.no_range);
             } else {
-                cell.set_symbol("▀")
-                    .set_fg(top)
-                    .set_bg(colour(c, 2 * r + 1));
+                cell.set_symbol("▀").set_fg(top).set_bg(bottom);
             }
+        }
+    }
+}
+
+/// Fills `area` without colour, a glyph per character: the contour's dot,
+/// the hatch where neither pixel lands, else the shade of its landings'
+/// mean place on the scale (blank where the bat misses).
+fn draw_shades(buf: &mut Buffer, area: Rect, pixel: &dyn Fn(usize, usize) -> Pixel) {
+    for row in 0..area.height {
+        for col in 0..area.width {
+            let (c, r) = (col as usize, row as usize);
+            let pair = [pixel(c, 2 * r), pixel(c, 2 * r + 1)];
+            let landed: Vec<f64> = pair
+                .iter()
+                .filter_map(|p| match p {
+                    Pixel::Landed(t) => Some(*t),
+                    _ => None,
+                })
+                .collect();
+            let glyph = if pair.contains(&Pixel::Contour) {
+                CONTOUR_GLYPH
+            } else if pair == [Pixel::NotLanded; 2] {
+                NOT_LANDED_PLAIN_GLYPH
+            } else if landed.is_empty() {
+                " "
+            } else {
+                Theme::shade(landed.iter().sum::<f64>() / landed.len() as f64)
+            };
+            buf[(area.x + col, area.y + row)].set_symbol(glyph);
         }
     }
 }

@@ -4,12 +4,12 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Chart, Paragraph};
+use ratatui::widgets::{Block, Paragraph};
 
-use super::chart;
+use super::chart::{self, AxisSpec, Ticks};
 use crate::tui::app::App;
-use crate::tui::theme::{self, dim, title_style};
 use crate::units::Quantity;
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
@@ -28,7 +28,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             app.impact_stop + 1,
             stops.len()
         ),
-        title_style(),
+        app.theme.title,
     ));
     let inner = block.inner(area);
     frame.render_widget(block, area);
@@ -52,57 +52,89 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .iter()
         .chain(&normal)
         .fold((0.0f64, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
-    let pad = 0.05 * (hi - lo).max(1e-9);
-    let (lo, hi) = (lo - pad, hi + pad);
-    let vertical = |p: f64| [(p, lo), (p, hi)];
+    let x = Ticks::across(0.0, pf, chart_area.width.saturating_sub(6));
+    let pad = 0.05 * (hi - lo);
+    let y = Ticks::up(lo - pad, hi + pad, chart_area.height.saturating_sub(2));
+    let vertical = |p: f64| [(p, y.lo), (p, y.hi)];
     let pc_line = vertical(impact.compression_impulse());
     let ps_line = impact.stick_impulse().map(vertical);
     let cursor = vertical(stop.impulse);
-    let zero = [(0.0, 0.0), (pf, 0.0)];
+    let zero = [(0.0, 0.0), (x.hi, 0.0)];
     let mut datasets = vec![
-        chart::line(dim(), &zero),
-        chart::line(theme::COMPRESSION, &pc_line),
+        chart::line(app.theme.dim, &zero),
+        chart::line(app.theme.compression, &pc_line),
     ];
     if let Some(ps) = &ps_line {
-        datasets.push(chart::line(theme::STICK, ps));
+        datasets.push(chart::line(app.theme.stick, ps));
     }
-    datasets.push(chart::line(theme::CURSOR, &cursor));
-    datasets.push(chart::line(theme::SLIP, &slip).name("v1 slip"));
-    datasets.push(chart::line(theme::APPROACH, &normal).name("v3 normal"));
-    let chart = Chart::new(datasets)
-        .legend_position(None)
-        .x_axis(chart::axis(
-            "p (N·s)",
-            [0.0, pf],
-            ["0".into(), format!("{pf:.2}")],
-        ))
-        .y_axis(chart::axis(
-            speed.symbol,
-            [lo, hi],
-            [format!("{lo:.0}"), format!("{hi:.0}")],
-        ));
-    frame.render_widget(chart, chart_area);
+    datasets.push(chart::line(app.theme.cursor, &cursor));
+    let (slip_path, normal_path) = (app.theme.path(0), app.theme.path(1));
+    datasets.push(chart::curve(slip_path.0, app.theme.slip, &slip));
+    datasets.push(chart::curve(normal_path.0, app.theme.approach, &normal));
+    let graph = chart::draw(
+        frame,
+        chart_area,
+        datasets,
+        (
+            &AxisSpec::new("p (N·s)", x),
+            &AxisSpec::new(speed.symbol, y),
+        ),
+        app.theme.dim,
+    );
+    // Each line's name at its top, where the chart leaves room.
+    let top = |p: f64| (p, y.hi);
+    let at = |p: f64, name| [(top(p), name)];
+    chart::labels(
+        frame,
+        graph,
+        (&x, &y),
+        Marker::Braille,
+        &at(impact.compression_impulse(), "p_c"),
+        app.theme.compression,
+    );
+    if let Some(ps) = impact.stick_impulse() {
+        let marker = Marker::Braille;
+        chart::labels(
+            frame,
+            graph,
+            (&x, &y),
+            marker,
+            &at(ps, "p_s"),
+            app.theme.stick,
+        );
+    }
 
     let s = impact.at(stop.impulse);
+    // Without colour, the curves' names carry their glyphs.
+    let named = |glyph: &str| {
+        if app.theme.colored() {
+            String::new()
+        } else {
+            format!("{glyph} ")
+        }
+    };
     let lines = vec![
         Line::from(vec![
-            Span::styled("p ", theme::CURSOR),
+            Span::styled("p ", app.theme.cursor),
             Span::raw(format!("{:.3} N·s  ", stop.impulse)),
-            Span::styled("p_s ", theme::STICK),
+            Span::styled("p_s ", app.theme.stick),
             Span::raw(
                 impact
                     .stick_impulse()
                     .map_or("— (slips) ".to_owned(), |p| format!("{p:.3}  ")),
             ),
-            Span::styled("p_c ", theme::COMPRESSION),
+            Span::styled("p_c ", app.theme.compression),
             Span::raw(format!("{:.3}  ", impact.compression_impulse())),
-            Span::styled("p_f ", dim()),
+            Span::styled("p_f ", app.theme.dim),
             Span::raw(format!("{pf:.3}")),
         ]),
         Line::from(vec![
-            Span::styled("v1 slip ", theme::SLIP),
+            Span::styled(format!("{}v1 slip ", named(slip_path.1)), app.theme.slip),
             Span::raw(format!("{:+.2}  ", speed.show(s.slip.x))),
-            Span::styled("v3 normal ", theme::APPROACH),
+            Span::styled(
+                format!("{}v3 normal ", named(normal_path.1)),
+                app.theme.approach,
+            ),
             Span::raw(format!(
                 "{:+.2} {}",
                 speed.show(s.normal_velocity),
@@ -110,7 +142,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             )),
         ]),
         Line::from(vec![
-            Span::styled("ball ", dim()),
+            Span::styled("ball ", app.theme.dim),
             Span::raw(format!(
                 "({:+.2}, {:+.2}) {}  |v| {:.2}  spin {:+.1} {}",
                 speed.show(s.ball_velocity.x),

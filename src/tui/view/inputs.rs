@@ -15,11 +15,12 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Wrap};
 
 use crate::analysis::sensitivity;
+use crate::model::aero::{DragModel, LiftModel};
 use crate::model::keys::HAND_KEY;
+use crate::model::scene::Hand;
 use crate::tui::app::{App, Field, GainCell, Mode, input_key};
-use crate::tui::format::{shown_bounds, shown_step, shown_value};
+use crate::tui::format::{shown_bounds, shown_range, shown_step, shown_value};
 use crate::tui::layout::{input_scroll, inputs_list};
-use crate::tui::theme::{self, dim, title_style};
 use crate::tui::worker::Gain;
 
 /// Display width of the symbol column (V̂_b0, k_B2, y(0): four cells).
@@ -122,10 +123,10 @@ fn gain_span(
     fixed: bool,
 ) -> Span<'static> {
     let (text, style) = match cell {
-        None => (String::new(), theme::PLAIN),
+        None => (String::new(), app.theme.plain),
         // At the optimum, the swing's own inputs change nothing.
-        Some(GainCell { value: None, .. }) if !fixed => ("—".to_owned(), dim()),
-        Some(GainCell { value: None, .. }) => ("0".to_owned(), dim()),
+        Some(GainCell { value: None, .. }) if !fixed => ("—".to_owned(), app.theme.dim),
+        Some(GainCell { value: None, .. }) => ("0".to_owned(), app.theme.dim),
         Some(GainCell {
             value: Some(v),
             generation,
@@ -136,9 +137,9 @@ fn gain_span(
                 Sensitivity::Signs => gain_signs(v, max),
             };
             let style = if generation != app.generation {
-                theme::STALE_GAIN
+                app.theme.stale_gain
             } else {
-                theme::gain(v, max)
+                app.theme.gain(v, max)
             };
             (text, style)
         }
@@ -160,7 +161,7 @@ fn largest(app: &App, gain: Gain) -> f64 {
 /// The pane's title: "Inputs" at the left, the Δ columns' heads at the right
 /// above their columns (in the busy colour while any is being computed).
 fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
-    let left = Line::from(Span::styled(" Inputs ", title_style()));
+    let left = Line::from(Span::styled(" Inputs ", app.theme.title));
     let Some(form) = c.swing else {
         return (left, None);
     };
@@ -168,7 +169,7 @@ fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
     // Each head is right-aligned over its column; the border runs on to it.
     let head = |text: String, gain: Gain, cells: usize| {
         let busy = app.gains_done(gain) < app.gain_count();
-        let style = if busy { theme::BUSY } else { dim() };
+        let style = if busy { app.theme.busy } else { app.theme.dim };
         let text = format!(" {text}");
         [
             Span::raw("─".repeat(cells.saturating_sub(width(&text)))),
@@ -230,6 +231,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         Mode::Edit { text, error, .. } => Some((text, error)),
         _ => None,
     };
+    // Where the edit box goes: (offset from the list's left, width).
+    let mut edit_box = (0, 0);
     let (max_swing, max_optimum) = (largest(app, Gain::Swing), largest(app, Gain::Optimum));
 
     // Rows, with a header line before each group (as `layout` counts them,
@@ -240,7 +243,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     for (line, field) in lines.iter().enumerate() {
         let Some(i) = *field else {
             let group = lines[line + 1].map_or("", |i| app.fields[i].group());
-            rows.push(Line::styled(format!("─ {group}"), dim()));
+            rows.push(Line::styled(format!("─ {group}"), app.theme.dim));
             continue;
         };
         let field = &app.fields[i];
@@ -276,15 +279,33 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             // A name spans the value and unit columns, and further if long.
             _ => format!(" {}", pad(&value, c.value + 1 + UNIT, true)),
         };
-        label.push_str(&text);
+        if let (true, Some((typing, _))) = (selected, editing) {
+            // The box takes the value's place; the symbol (and the name)
+            // before it and the unit after it stay.
+            let at = 1 + width(&label) + 1;
+            let typed = width(&typing.lines().join("")) + 1;
+            let (room, unit_cells) = match field {
+                Field::Key(_) => (c.value.max(typed), 1 + UNIT),
+                _ => ((c.value + 1 + UNIT).max(typed), 0),
+            };
+            let room = room.min((list.width as usize).saturating_sub(at + unit_cells));
+            edit_box = (at, room);
+            label.push_str(&" ".repeat(1 + room));
+            if let Field::Key(_) = field {
+                label.push_str(&format!(" {}", pad(unit, UNIT, false)));
+            }
+        } else {
+            label.push_str(&text);
+        }
         let marker = if selected { "▶" } else { " " };
         let style = if selected {
-            theme::SELECTED
+            app.theme.selected
         } else {
-            theme::PLAIN
+            app.theme.plain
         };
         let mut spans = vec![Span::raw(marker), Span::styled(label, style)];
-        if let (Field::Key(k), Some(form)) = (field, c.swing) {
+        let edited = selected && editing.is_some();
+        if let (Field::Key(k), Some(form), false) = (field, c.swing, edited) {
             let cells = match form {
                 Sensitivity::Numbers => GAIN,
                 Sensitivity::Signs => COMPACT,
@@ -318,18 +339,26 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     if let Some((text, _)) = editing {
         let row = list.y + (selected_row - offset) as u16;
         if row < list.y + list.height {
-            let edit = Rect::new(list.x + 1, row, list.width.saturating_sub(1), 1);
+            let (at, cells) = edit_box;
+            let edit = Rect::new(list.x + at as u16, row, cells as u16, 1);
             frame.render_widget(ratatui::widgets::Clear, edit);
             frame.render_widget(text, edit);
         }
     }
 
     let about_text = match editing {
-        Some((_, Some(error))) => Paragraph::new(Line::styled(error.as_str(), theme::ERROR)),
-        Some((_, None)) => Paragraph::new(Line::styled("Enter accepts · Esc cancels", dim())),
+        Some((_, Some(error))) => Paragraph::new(Line::styled(error.as_str(), app.theme.error)),
+        Some((_, None)) => Paragraph::new(Line::styled(
+            edit_help(app, app.fields[app.selected]),
+            app.theme.dim,
+        )),
         None if app.message.is_some() => {
             let (message, error) = app.message.as_ref().expect("checked");
-            let style = if *error { theme::ERROR } else { theme::GOOD };
+            let style = if *error {
+                app.theme.error
+            } else {
+                app.theme.good
+            };
             Paragraph::new(Line::styled(message.as_str(), style))
         }
         None => {
@@ -352,10 +381,39 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                     )
                 }
             };
-            Paragraph::new(Line::styled(text, dim()))
+            Paragraph::new(Line::styled(text, app.theme.dim))
         }
     };
     frame.render_widget(about_text.wrap(Wrap { trim: true }), about);
+}
+
+/// What an edit takes, under its box: the key, its unit and its accepted
+/// range ("bat.speed in m/s, (0, 100]"), or a model's choices.
+fn edit_help(app: &App, field: Field) -> String {
+    let takes = match field {
+        Field::Key(k) => {
+            let key = input_key(k);
+            let range = shown_range(key, app.units);
+            match key.unit_in(app.units).symbol {
+                "" => format!("{}: {range}", key.name),
+                unit => format!("{} in {unit}, {range}", key.name),
+            }
+        }
+        Field::Drag => format!("model.drag: {}", names(&DragModel::ALL.map(|m| m.name()))),
+        Field::Lift => format!("model.lift: {}", names(&LiftModel::ALL.map(|m| m.name()))),
+        Field::Hand => format!("{HAND_KEY}: {}", names(&Hand::ALL.map(|h| h.name()))),
+        Field::Preset => String::new(),
+    };
+    format!("{takes} · Enter accepts · Esc cancels")
+}
+
+/// "a, b or c".
+fn names(all: &[&str]) -> String {
+    match all.split_last() {
+        Some((last, [])) => (*last).to_owned(),
+        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+        None => String::new(),
+    }
 }
 
 #[cfg(test)]

@@ -2,13 +2,16 @@
 //! Nothing here changes the state or computes physics.
 
 mod chart;
+mod field;
 pub mod figure;
+mod figure_panels;
 mod heatmap;
 mod impact;
 mod inputs;
 mod overlay;
 mod readout;
 mod trajectory;
+mod words;
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
@@ -17,32 +20,27 @@ use ratatui::widgets::{Paragraph, Tabs};
 
 use super::app::{App, Mode};
 use super::layout::{MIN_SIZE, Tab, layout};
-use super::theme::{self, dim};
+use super::theme::Theme;
 use super::worker::Gain;
 
 /// Draws the whole screen from the app's state.
 pub fn draw(frame: &mut Frame, app: &App) {
     let area = frame.area();
     if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
-        let text = format!(
-            "homerun needs at least {}×{} (this is {}×{}); q quits",
-            MIN_SIZE.0, MIN_SIZE.1, area.width, area.height
-        );
-        frame.render_widget(
-            Paragraph::new(text).wrap(ratatui::widgets::Wrap { trim: true }),
-            area,
-        );
+        too_small(frame, area, &app.theme);
         return;
     }
     let panes = layout(area, app.tab, app.is_swing());
     inputs::draw(frame, panes.inputs, app);
     if let Some(tabs) = panes.tabs {
         let selected = Tab::ALL.iter().position(|t| *t == app.tab).unwrap_or(0);
+        let short = Tab::short_titles(tabs.width);
         frame.render_widget(
-            Tabs::new(Tab::ALL.iter().map(|t| t.title()))
+            Tabs::new(Tab::ALL.iter().map(|t| t.title(short)))
                 .select(selected)
-                .highlight_style(theme::SELECTED)
-                .divider("│"),
+                .highlight_style(app.theme.selected)
+                .padding("", "")
+                .divider(Tab::DIVIDER),
             tabs,
         );
     }
@@ -57,41 +55,74 @@ pub fn draw(frame: &mut Frame, app: &App) {
         if app.is_swing() {
             heatmap::draw(frame, r, app);
         } else {
-            swing_only(frame, r, " Range over (E, ψ) ", "The range surface");
+            swing_only(
+                frame,
+                r,
+                (" Range over (E, ψ) ", "The range surface"),
+                &app.theme,
+            );
         }
     }
     if let Some(r) = panes.impact {
         if app.is_swing() {
             impact::draw(frame, r, app);
         } else {
-            swing_only(frame, r, " Impact ", "The impact");
+            swing_only(frame, r, (" Impact ", "The impact"), &app.theme);
         }
     }
     if let Some(r) = panes.figure {
         figure::draw(frame, r, app);
     }
+    if let Some(r) = panes.field {
+        field::draw(frame, r, app);
+    }
     status_line(frame, panes.status, app);
     match &app.mode {
-        Mode::Help => overlay::help(frame, area),
+        Mode::Help => overlay::help(frame, area, &app.theme),
         Mode::Save { text, error, .. } => overlay::save(frame, area, app, text, error.as_deref()),
         Mode::Open {
             items,
             selected,
             error,
-        } => overlay::open(frame, area, items, *selected, error.as_deref()),
+        } => overlay::open(
+            frame,
+            (area, &app.theme),
+            items,
+            *selected,
+            error.as_deref(),
+        ),
         Mode::Normal | Mode::Edit { .. } => {}
     }
 }
 
+/// In place of a layout cut to pieces: what size the explorer needs, in
+/// the middle of the screen.
+fn too_small(frame: &mut Frame, area: Rect, theme: &Theme) {
+    let (w, h) = MIN_SIZE;
+    let lines = vec![
+        Line::styled(format!("terminal too small (need {w}×{h})"), theme.error),
+        Line::raw(format!("this one is {}×{}", area.width, area.height)),
+        Line::styled("enlarge it, or q to quit", theme.dim),
+    ];
+    let rows = 3.min(area.height);
+    let top = area.y + area.height.saturating_sub(rows) / 2;
+    frame.render_widget(
+        Paragraph::new(lines)
+            .centered()
+            .wrap(ratatui::widgets::Wrap { trim: true }),
+        Rect::new(area.x, top, area.width, area.height - (top - area.y)),
+    );
+}
+
 /// A swing scene's pane in the batted-ball scene: one line saying so.
-fn swing_only(frame: &mut Frame, area: Rect, title: &str, what: &str) {
+fn swing_only(frame: &mut Frame, area: Rect, (title, what): (&str, &str), theme: &Theme) {
     let text = format!("{what} belongs to the swing scene: b switches to it.");
     frame.render_widget(
-        Paragraph::new(Line::styled(text, dim()))
+        Paragraph::new(Line::styled(text, theme.dim))
             .wrap(ratatui::widgets::Wrap { trim: true })
             .block(
                 ratatui::widgets::Block::bordered()
-                    .title(Span::styled(title.to_owned(), theme::title_style())),
+                    .title(Span::styled(title.to_owned(), theme.title)),
             ),
         area,
     );
@@ -101,7 +132,11 @@ fn swing_only(frame: &mut Frame, area: Rect, title: &str, what: &str) {
 /// is; or, until the next key, what `x` wrote or why not.
 fn status_line(frame: &mut Frame, area: Rect, app: &App) {
     if let Some((text, error)) = &app.export_message {
-        let style = if *error { theme::ERROR } else { theme::GOOD };
+        let style = if *error {
+            app.theme.error
+        } else {
+            app.theme.good
+        };
         let text = fitted(text, area.width as usize);
         frame.render_widget(Paragraph::new(Line::styled(text, style)), area);
         return;
@@ -113,7 +148,7 @@ fn status_line(frame: &mut Frame, area: Rect, app: &App) {
         } else {
             "batted ball · "
         },
-        theme::title_style(),
+        app.theme.title,
     ));
     spans.push(Span::raw("readout ✓ "));
     if app.is_swing() {
@@ -123,16 +158,16 @@ fn status_line(frame: &mut Frame, area: Rect, app: &App) {
     let n = app.gain_count();
     let (swing, optimum) = (app.gains_done(Gain::Swing), app.gains_done(Gain::Optimum));
     spans.push(if swing < n {
-        Span::styled("· Δ… ", theme::BUSY)
+        Span::styled("· Δ… ", app.theme.busy)
     } else if !app.optimum_gains_fresh() {
-        Span::styled(format!("· Δopt {optimum}/{n}… "), theme::BUSY)
+        Span::styled(format!("· Δopt {optimum}/{n}… "), app.theme.busy)
     } else {
         Span::raw("· Δ ✓ ")
     });
     if !app.is_swing() {
-        spans.push(Span::styled("· b swing ", dim()));
+        spans.push(Span::styled("· b swing ", app.theme.dim));
     }
-    spans.push(Span::styled("· ? help  q quit", dim()));
+    spans.push(Span::styled("· ? help  q quit", app.theme.dim));
     frame.render_widget(Paragraph::new(Line::from(spans)), area);
 }
 
@@ -142,13 +177,13 @@ fn swing_status(spans: &mut Vec<Span<'static>>, app: &App) {
         Some(o) if o.done => Span::raw(format!("· optimum ✓ {} evals ", o.evaluations)),
         Some(o) => Span::styled(
             format!("· optimising… {} evals ", o.evaluations),
-            theme::BUSY,
+            app.theme.busy,
         ),
-        None => Span::styled("· optimising… ", theme::BUSY),
+        None => Span::styled("· optimising… ", app.theme.busy),
     });
     spans.push(match &app.surface {
         Some(s) if s.generation != app.generation => {
-            Span::styled("· surface stale, updating… ", theme::BUSY)
+            Span::styled("· surface stale, updating… ", app.theme.busy)
         }
         Some(s) if s.last => Span::raw(format!(
             "· surface ✓ {}×{} ",
@@ -159,9 +194,9 @@ fn swing_status(spans: &mut Vec<Span<'static>>, app: &App) {
                 "· surface {}×{}, refining… ",
                 s.surface.grid.columns, s.surface.grid.rows
             ),
-            theme::BUSY,
+            app.theme.busy,
         ),
-        None => Span::styled("· surface… ", theme::BUSY),
+        None => Span::styled("· surface… ", app.theme.busy),
     });
 }
 

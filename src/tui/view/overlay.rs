@@ -8,7 +8,7 @@ use ratatui_textarea::TextArea;
 
 use crate::tui::app::{App, PickItem};
 use crate::tui::keymap;
-use crate::tui::theme::{self, dim, title_style};
+use crate::tui::theme::Theme;
 
 fn centered(area: Rect, width: u16, height: u16) -> Rect {
     let [row] = Layout::vertical([Constraint::Length(height.min(area.height))])
@@ -20,21 +20,21 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
     cell
 }
 
-pub fn help(frame: &mut Frame, area: Rect) {
+pub fn help(frame: &mut Frame, area: Rect, theme: &Theme) {
     let mut lines: Vec<Line> = keymap::help()
         .into_iter()
         .map(|(keys, what)| {
             Line::from(vec![
-                Span::styled(format!("{keys:<16}"), theme::KEY),
+                Span::styled(format!("{keys:<16}"), theme.key),
                 Span::raw(what),
             ])
         })
         .collect();
-    lines.push(Line::styled("any key closes this help", dim()));
+    lines.push(Line::styled("any key closes this help", theme.dim));
     let popup = centered(area, 68, lines.len() as u16 + 2);
     frame.render_widget(Clear, popup);
     frame.render_widget(
-        Paragraph::new(lines).block(Block::bordered().title(Span::styled(" Keys ", title_style()))),
+        Paragraph::new(lines).block(Block::bordered().title(Span::styled(" Keys ", theme.title))),
         popup,
     );
 }
@@ -42,7 +42,7 @@ pub fn help(frame: &mut Frame, area: Rect) {
 pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Option<&str>) {
     let popup = centered(area, 64, 8);
     frame.render_widget(Clear, popup);
-    let block = Block::bordered().title(Span::styled(" Save preset ", title_style()));
+    let block = Block::bordered().title(Span::styled(" Save preset ", app.theme.title));
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
     let [folder, input, message] = Layout::vertical([
@@ -56,15 +56,15 @@ pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Op
         .as_ref()
         .map_or("(no folder)".to_owned(), |d| d.display().to_string());
     frame.render_widget(
-        Paragraph::new(Line::styled(format!("name, into {dir}:"), dim())),
+        Paragraph::new(Line::styled(format!("name, into {dir}:"), app.theme.dim)),
         folder,
     );
     frame.render_widget(text, input);
     let line = match error {
-        Some(e) => Paragraph::new(Line::styled(e, theme::ERROR)),
+        Some(e) => Paragraph::new(Line::styled(e, app.theme.error)),
         None => Paragraph::new(Line::styled(
             "letters, digits, - and _ · Enter saves · Esc cancels",
-            dim(),
+            app.theme.dim,
         )),
     };
     frame.render_widget(line.wrap(Wrap { trim: true }), message);
@@ -72,14 +72,14 @@ pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Op
 
 pub fn open(
     frame: &mut Frame,
-    area: Rect,
+    (area, theme): (Rect, &Theme),
     items: &[PickItem],
     selected: usize,
     error: Option<&str>,
 ) {
     let popup = centered(area, 76, items.len() as u16 + 6);
     frame.render_widget(Clear, popup);
-    let block = Block::bordered().title(Span::styled(" Open preset ", title_style()));
+    let block = Block::bordered().title(Span::styled(" Open preset ", theme.title));
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
     let [list_area, message] =
@@ -88,12 +88,12 @@ pub fn open(
         .iter()
         .map(|item| {
             let style = if item.preset.is_some() {
-                theme::PLAIN
+                theme.plain
             } else {
-                theme::BROKEN
+                theme.broken
             };
             ListItem::new(Line::from(vec![
-                Span::styled(format!("{:<14}", item.name), theme::strong(style)),
+                Span::styled(format!("{:<14}", item.name), Theme::strong(style)),
                 Span::styled(item.detail.clone(), style),
             ]))
         })
@@ -101,14 +101,14 @@ pub fn open(
     let mut state = ListState::default().with_selected(Some(selected));
     frame.render_stateful_widget(
         List::new(list)
-            .highlight_style(theme::SELECTED)
+            .highlight_style(theme.selected)
             .highlight_symbol("▶ "),
         list_area,
         &mut state,
     );
     let line = match error {
-        Some(e) => Paragraph::new(Line::styled(e, theme::BROKEN)),
-        None => Paragraph::new(Line::styled("Enter loads · Esc cancels", dim())),
+        Some(e) => Paragraph::new(Line::styled(e, theme.broken)),
+        None => Paragraph::new(Line::styled("Enter loads · Esc cancels", theme.dim)),
     };
     frame.render_widget(line.wrap(Wrap { trim: true }), message);
 }

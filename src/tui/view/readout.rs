@@ -7,11 +7,11 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
 use crate::analysis::figures::trimmed;
+use crate::analysis::landing::fence_text;
 use crate::analysis::optimum::Status;
 use crate::model::impact::Regime;
 use crate::model::launch::BattedBall;
 use crate::tui::app::App;
-use crate::tui::theme::{self, dim, title_style};
 use crate::units::{Quantity, UnitSystem};
 
 /// A launch as the readout writes it, in the units shown: "44.30 m/s
@@ -100,7 +100,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let u = app.distance(1.0).1;
     let d = |metres: f64| app.distance(metres).0;
     let speed = app.unit(Quantity::Speed);
-    let label = |s: &'static str| Span::styled(format!("{s:<9}"), dim());
+    let label = |s: &'static str| Span::styled(format!("{s:<9}"), app.theme.dim);
     let mut lines = vec![
         Line::from(vec![
             label("launch"),
@@ -124,7 +124,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                         flight.flight_time,
                         d(app.path.last().map_or(0.0, |p| p.1))
                     ),
-                    theme::BUSY,
+                    app.theme.busy,
                 )
             },
         ]),
@@ -190,8 +190,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     // pane is short, the deltas take the impact's two lines (tab 3 shows it).
     if let Some(pin) = &app.pin {
         let (now, was, was_flight) = (&app.flown.launch, &pin.flown.launch, &pin.flown.flight);
-        let pinned =
-            |text: String| Line::from(vec![label(" now−pin"), Span::styled(text, theme::PINNED)]);
+        let pinned = |text: String| {
+            Line::from(vec![
+                label(" now−pin"),
+                Span::styled(text, app.theme.pinned),
+            ])
+        };
         let difference = BattedBall {
             speed: now.speed - was.speed,
             angle: now.angle - was.angle,
@@ -232,13 +236,17 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                     Status::NothingLands => "no swing of 64 over the window lands",
                     _ => "no swing tried lands (stopped at a limit)",
                 };
-                Span::styled(format!("none: {why}"), theme::ERROR)
+                Span::styled(format!("none: {why}"), app.theme.error)
             } else {
-                Span::styled("searching… no swing lands yet", theme::BUSY)
+                Span::styled("searching… no swing lands yet", app.theme.busy)
             },
         ])),
         Some(o) => {
-            let style = if o.done { theme::GOOD } else { theme::BUSY };
+            let style = if o.done {
+                app.theme.good
+            } else {
+                app.theme.busy
+            };
             let mut state = match (o.done, o.status) {
                 (false, _) => " (searching)",
                 (true, Status::OutOfWork) => " (work limit)",
@@ -302,7 +310,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
         None => lines.push(Line::from(vec![
             label("optimum"),
-            Span::styled("searching…", theme::BUSY),
+            Span::styled("searching…", app.theme.busy),
         ])),
     }
     let landing = Line::from(vec![
@@ -320,24 +328,21 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         lines.push(landing.clone());
     }
     if let Some(fence) = app.fence {
-        // Whether it clears: its height where it passes the fence.
-        let clearance = match app.fence_height {
-            Some(h) if h >= fence.height => format!(": over by {:.1} {u}", d(h - fence.height)),
-            Some(h) => format!(": under by {:.1} {u}", d(fence.height - h)),
-            None => ": falls short".to_owned(),
-        };
-        lines.push(Line::from(vec![
-            label("fence"),
-            Span::raw(format!(
-                "{:.1} {u}, {:.1} {u} high{clearance}",
-                d(fence.distance),
-                d(fence.height)
-            )),
-        ]));
+        // Whether it clears, in the command line's words.
+        let unit = app.unit(Quantity::Distance);
+        let text = fence_text(fence.distance, fence.height, app.fence_height, unit);
+        lines.push(Line::from(vec![label("fence"), Span::raw(text)]));
     }
-    // A batted ball's readout has room for the given air too.
+    // A batted ball's readout has room for the given air too, and for the
+    // models in force (Nathan's unless chosen: not the swing's).
     if batted && !derived {
         lines.extend(air_lines(inner.width));
+    }
+    if batted {
+        lines.push(Line::from(vec![
+            label("model"),
+            Span::raw(app.scene.models_text()),
+        ]));
     }
     // Room to spare (the large layouts): the rest of the story.
     if area.height as usize >= lines.len() + 6 {
@@ -358,6 +363,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 )),
             ]));
         }
+        if !batted {
+            lines.push(Line::from(vec![
+                label("model"),
+                Span::raw(app.scene.models_text()),
+            ]));
+        }
         lines.push(Line::from(vec![
             label("drag"),
             Span::raw(app.scene.drag.description()),
@@ -376,7 +387,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             ]));
         }
     }
-    let block = Block::bordered().title(Span::styled(" Readout ", title_style()));
+    let block = Block::bordered().title(Span::styled(" Readout ", app.theme.title));
     // Long lines (a model's description) wrap rather than run off the pane.
     frame.render_widget(
         Paragraph::new(lines)

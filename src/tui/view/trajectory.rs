@@ -6,24 +6,12 @@ use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Chart};
+use ratatui::widgets::Block;
 
-use super::chart;
+use super::chart::{self, AxisSpec, Ticks};
+use crate::picture::MAX_STRETCH;
 use crate::tui::app::App;
-use crate::tui::theme::{self, title_style};
-
-/// A round axis end at or above `value`, so that the halfway label is round too.
-pub fn nice_ceiling(value: f64) -> f64 {
-    if !(value.is_finite() && value > 0.0) {
-        return 1.0;
-    }
-    let power = 10f64.powf(value.log10().floor());
-    [1.0, 1.2, 1.6, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0]
-        .iter()
-        .map(|m| m * power)
-        .find(|&v| v >= value)
-        .unwrap_or(10.0 * power)
-}
+use crate::tui::layout::CELL_ASPECT;
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let flight = &app.flown.flight;
@@ -42,24 +30,17 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let fence = app
         .fence
         .map_or((0.0, 0.0), |f| (k * f.distance, k * f.height));
-    let x_max = nice_ceiling(1.05 * k * flight.range.max(optimal_range).max(pin_range))
-        .max(nice_ceiling(1.05 * fence.0));
-    // A ball carried back over the plate (a steep launch with backspin)
-    // lands behind it: the axis then starts behind the plate too.
+    // The x axis reaches past the farthest landing and the fence; a ball
+    // carried back over the plate (a steep launch with backspin) lands
+    // behind it, and the axis then starts behind the plate too.
+    let x_most = 1.03 * (k * flight.range.max(optimal_range).max(pin_range)).max(fence.0);
     let x_least = path
         .iter()
         .chain(&optimal_path)
         .chain(&pinned_path)
         .map(|p| p.0)
         .fold(0.0, f64::min);
-    let x_min = if x_least < 0.0 {
-        -nice_ceiling(-1.05 * x_least)
-    } else {
-        0.0
-    };
-    let y_max = nice_ceiling(1.1 * k * flight.apex.max(optimal_apex).max(pin_apex))
-        .max(nice_ceiling(1.1 * fence.1));
-
+    let y_most = 1.1 * (k * flight.apex.max(optimal_apex).max(pin_apex)).max(fence.1);
     let apex = [(k * flight.apex_distance, k * flight.apex)];
     // A ball that does not land has no landing point (nor range).
     let landing = if flight.landed {
@@ -68,27 +49,29 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         Vec::new()
     };
     let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
+    // Each path's marker and legend glyph: told apart by colour, or by
+    // glyph where there is none.
+    let (now, best, pin) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
     let mut datasets = Vec::new();
     if !optimal_path.is_empty() {
-        datasets.push(chart::line(theme::OPTIMAL, &optimal_path).name("optimal"));
+        datasets.push(chart::curve(best.0, app.theme.optimal, &optimal_path).name("optimal"));
     }
     if !pinned_path.is_empty() {
-        datasets.push(chart::line(theme::PINNED, &pinned_path).name("pinned"));
+        datasets.push(chart::curve(pin.0, app.theme.pinned, &pinned_path).name("pinned"));
     }
-    datasets.push(chart::line(theme::SWING, &path).name("this swing"));
-    datasets.push(chart::points(Marker::Dot, theme::APEX, &apex).name("apex"));
-    datasets.push(chart::points(Marker::Block, theme::LANDING, &landing).name("landing"));
+    datasets.push(chart::curve(now.0, app.theme.swing, &path).name("this swing"));
+    datasets.push(chart::points(Marker::Dot, app.theme.apex, &apex).name("apex"));
+    datasets.push(chart::points(Marker::Block, app.theme.landing, &landing).name("landing"));
     if app.fence.is_some() {
-        datasets.push(chart::line(theme::FENCE, &fence_line).name("fence"));
+        datasets.push(chart::line(app.theme.fence, &fence_line).name("fence"));
     }
-    let labels = |min: f64, max: f64| [min, 0.5 * (min + max), max].map(|v| format!("{v:.0}"));
     // The legend sits in the border, where it hides no data.
-    let mut legend = vec![Span::styled("━ now ", theme::SWING)];
+    let mut legend = vec![Span::styled(format!("{} now ", now.1), app.theme.swing)];
     if !optimal_path.is_empty() {
-        legend.push(Span::styled("━ best ", theme::OPTIMAL));
+        legend.push(Span::styled(format!("{} best ", best.1), app.theme.optimal));
     }
     if !pinned_path.is_empty() {
-        legend.push(Span::styled("━ pin ", theme::PINNED));
+        legend.push(Span::styled(format!("{} pin ", pin.1), app.theme.pinned));
     }
     let legend = Line::from(legend);
     let numbers = if flight.landed {
@@ -108,22 +91,38 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     } else {
         format!(" {numbers}")
     };
-    let chart = Chart::new(datasets)
-        .block(
-            Block::bordered()
-                .title(Span::styled(title, title_style()))
-                .title_top(legend.right_aligned()),
-        )
-        .x_axis(chart::axis(
-            format!("x ({unit})"),
-            [x_min, x_max],
-            labels(x_min, x_max),
-        ))
-        .y_axis(chart::axis(
-            format!("y ({unit})"),
-            [0.0, y_max],
-            labels(0.0, y_max),
-        ))
-        .legend_position(None);
-    frame.render_widget(chart, area);
+    let block = Block::bordered()
+        .title(Span::styled(title, app.theme.title))
+        .title_top(legend.right_aligned());
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    // Round ticks, as many as the pane has room for; the height drawn at
+    // most MAX_STRETCH times taller than true, as the SVG draws it (the y
+    // labels' width sets the graph's, and a taller axis may widen them).
+    let rows = inner.height.saturating_sub(2);
+    let x = Ticks::across(x_least, x_most, inner.width.saturating_sub(6));
+    let mut y = Ticks::up(0.0, y_most, rows);
+    for _ in 0..2 {
+        let least = true_height(inner, &x, &y) / MAX_STRETCH;
+        y = Ticks::up(0.0, y_most.max(least), rows);
+    }
+    chart::draw(
+        frame,
+        inner,
+        datasets,
+        (
+            &AxisSpec::new(format!("x ({unit})"), x),
+            &AxisSpec::new(format!("y ({unit})"), y),
+        ),
+        app.theme.dim,
+    );
+}
+
+/// The y span that draws heights true to scale against `x` in the graph a
+/// chart in `inner` gets with `y`'s labels: a cell is [`CELL_ASPECT`]
+/// times as tall as it is wide.
+fn true_height(inner: Rect, x: &Ticks, y: &Ticks) -> f64 {
+    let label = y.labels().iter().map(|l| l.len()).max().unwrap_or(1) as u16;
+    let graph = chart::graph_area(inner, label, 1, true);
+    CELL_ASPECT * f64::from(graph.height) * (x.hi - x.lo) / f64::from(graph.width.max(1))
 }
