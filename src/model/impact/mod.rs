@@ -151,23 +151,31 @@ impl Launches for Impact {
     }
 }
 
-impl Launches for Impact3d {
-    fn launch_speed(&self) -> f64 {
-        Impact3d::launch_speed(self)
-    }
-    fn launch_angle(&self) -> f64 {
-        Impact3d::launch_angle(self)
-    }
-    fn launch_spin(&self) -> f64 {
-        Impact3d::launch_spin(self)
-    }
-    fn launch_direction(&self) -> f64 {
-        Impact3d::launch_direction(self)
-    }
-    fn launch_sidespin(&self) -> f64 {
-        Impact3d::launch_sidespin(self)
-    }
+/// [`Launches`] from a type's own methods of the same names.
+macro_rules! launches_by_its_own_methods {
+    ($type:ty) => {
+        impl Launches for $type {
+            fn launch_speed(&self) -> f64 {
+                <$type>::launch_speed(self)
+            }
+            fn launch_angle(&self) -> f64 {
+                <$type>::launch_angle(self)
+            }
+            fn launch_spin(&self) -> f64 {
+                <$type>::launch_spin(self)
+            }
+            fn launch_direction(&self) -> f64 {
+                <$type>::launch_direction(self)
+            }
+            fn launch_sidespin(&self) -> f64 {
+                <$type>::launch_sidespin(self)
+            }
+        }
+    };
 }
+
+launches_by_its_own_methods!(Impact3d);
+launches_by_its_own_methods!(Collision);
 
 /// A scene's collision: the paper's planar one for a level bat square to
 /// the pitch (bit for bit the paper's numbers), the 3-D one otherwise.
@@ -328,24 +336,6 @@ pub struct Moment {
     /// is its z component).
     pub ball_velocity: nalgebra::Vector3<f64>,
     pub ball_spin: nalgebra::Vector3<f64>,
-}
-
-impl Launches for Collision {
-    fn launch_speed(&self) -> f64 {
-        Collision::launch_speed(self)
-    }
-    fn launch_angle(&self) -> f64 {
-        Collision::launch_angle(self)
-    }
-    fn launch_spin(&self) -> f64 {
-        Collision::launch_spin(self)
-    }
-    fn launch_direction(&self) -> f64 {
-        Collision::launch_direction(self)
-    }
-    fn launch_sidespin(&self) -> f64 {
-        Collision::launch_sidespin(self)
-    }
 }
 
 impl From<Impact> for Collision {
