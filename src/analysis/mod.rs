@@ -12,5 +12,6 @@ pub mod landing;
 pub mod optimum;
 pub mod paper;
 pub mod precision;
+pub mod savant;
 pub mod sensitivity;
 pub mod study;

@@ -14,6 +14,7 @@
 
 pub mod aero;
 pub mod atmosphere;
+pub mod clearing;
 pub mod flight;
 pub mod frame;
 pub mod impact;
@@ -22,6 +23,7 @@ pub mod launch;
 pub mod park;
 pub mod pitch;
 pub mod scene;
+pub mod spin_estimate;
 
 use nalgebra::Vector2;
 

@@ -2,14 +2,16 @@
 //! or Statcast's own names in mph, degrees and rpm), and each row made a
 //! scene to fly, or the reason it cannot be one.
 
-use super::super::fly::fence_of;
 use crate::Scene;
+use crate::analysis::savant::RowLaunch;
 use crate::model::aero::UnknownModel;
 use crate::model::keys::{DRAG_KEY, InputBatch, InputError, LIFT_KEY};
-use crate::preset::{FIELD_KEYS, Fence, Preset, cut, escape_cut};
+use crate::model::park::GivenWeather;
+use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem};
 
 use super::records::*;
+use super::savant_columns::{SavantCells, SavantColumn, Setup};
 
 /// How a column's values become a launch value in SI.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -107,6 +109,8 @@ pub(super) enum Column {
     Input(&'static str),
     /// A `[field]` key (index into [`FIELD_KEYS`]).
     Field(usize),
+    /// A Savant column that is no key (hit coordinates, side, park, distance).
+    Savant(SavantColumn),
     /// Not an input: ignored (Statcast's other 80-odd columns).
     Ignored,
 }
@@ -115,6 +119,8 @@ pub(super) enum Column {
 pub(super) struct Header {
     pub(super) names: Vec<String>,
     pub(super) columns: Vec<Column>,
+    /// The columns `--keep` copies, by index (the first of a repeated name).
+    pub(super) keep: Vec<usize>,
 }
 
 impl Header {
@@ -128,6 +134,13 @@ impl Header {
                 Column::Launch(i, _) => Some(LAUNCH_COLUMNS[i].0),
                 Column::Input(key) => Some(key),
                 Column::Field(i) => Some(FIELD_KEYS[i].name),
+                // The hit coordinates give the launch direction.
+                Column::Savant(SavantColumn::HcX | SavantColumn::HcY)
+                    if names.iter().any(|n| n.trim() == "launch.direction") =>
+                {
+                    Some("launch.direction")
+                }
+                Column::Savant(c) => Some(c.name()),
                 Column::Ignored => None,
             };
             if let Some(key) = key {
@@ -142,7 +155,61 @@ impl Header {
             }
             columns.push(column);
         }
-        Ok(Header { names, columns })
+        Ok(Header {
+            names,
+            columns,
+            keep: Vec::new(),
+        })
+    }
+
+    /// Sets the columns `--keep` copies: each name must be a column (the
+    /// first of that name, if the header repeats it, as Savant's 2019
+    /// layout does `pitcher` and `fielder_2`).
+    pub(super) fn keep(&mut self, names: &[String]) -> Result<(), String> {
+        self.keep = names
+            .iter()
+            .map(|name| {
+                self.names.iter().position(|n| n == name).ok_or_else(|| {
+                    format!(
+                        "--keep {}: no column of that name in the header",
+                        escape_cut(name, 80)
+                    )
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        Ok(())
+    }
+
+    /// Whether a column is `column`.
+    pub(super) fn has(&self, column: SavantColumn) -> bool {
+        self.columns
+            .iter()
+            .any(|c| matches!(c, Column::Savant(s) if *s == column))
+    }
+
+    /// Whether a column is the key `key`.
+    pub(super) fn has_key(&self, key: &str) -> bool {
+        self.columns.iter().any(|c| match c {
+            Column::Launch(i, _) => LAUNCH_COLUMNS[*i].0 == key,
+            Column::Input(k) => *k == key,
+            _ => false,
+        })
+    }
+
+    /// The names of the columns read that are not keys of `homerun keys`:
+    /// Statcast's launch columns and the Savant ones.
+    pub(super) fn savant_used(&self) -> Vec<&str> {
+        self.names
+            .iter()
+            .zip(&self.columns)
+            .filter(|(_, c)| {
+                matches!(
+                    c,
+                    Column::Savant(_) | Column::Launch(_, Unit::Mph | Unit::Degrees | Unit::Rpm)
+                )
+            })
+            .map(|(n, _)| n.as_str())
+            .collect()
     }
 
     /// Whether any column is an input: a header with none (a file separated
@@ -176,6 +243,9 @@ pub(super) fn column_of(name: &str) -> Column {
     if let Some(index) = FIELD_KEYS.iter().position(|f| f.name == name) {
         return Column::Field(index);
     }
+    if let Some(column) = SavantColumn::of(name) {
+        return Column::Savant(column);
+    }
     if name == DRAG_KEY {
         return Column::Input(DRAG_KEY);
     }
@@ -189,11 +259,23 @@ pub(super) fn column_of(name: &str) -> Column {
 }
 
 /// One row, ready to fly.
-#[derive(Clone, Copy)]
 pub(super) struct Job {
     pub(super) line: usize,
+    /// Its speed, angle and any spin and direction it gave; the rest is
+    /// `launch`'s to fill in.
     pub(super) scene: Scene,
+    pub(super) launch: RowLaunch,
+    /// The generic fence (the preset's, or the row's `field.*`), used when
+    /// the row is at no park.
     pub(super) fence: Fence,
+    /// The index of the row's park, if it is at one.
+    pub(super) park: Option<usize>,
+    /// Statcast's distance (m).
+    pub(super) statcast: Option<f64>,
+    /// The `--keep` cells, as read.
+    pub(super) kept: Vec<String>,
+    /// The air keys given, by `--set` and by the row: a park keeps them.
+    pub(super) given: GivenWeather,
 }
 
 /// What a row turned out to be. Unboxed: each is moved once, into the
@@ -205,14 +287,19 @@ pub(super) enum Row {
         line: usize,
         reason: String,
     },
-    /// Every launch column empty (in a Statcast export: a pitch not put in
-    /// play): skipped and counted, not a failure.
+    /// Every launch column empty, or no launch speed (in a Statcast export:
+    /// a pitch not put in play): skipped and counted, not a failure.
     NoLaunch,
     /// An empty line.
     Blank,
 }
 
-pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
+/// Savant's missing value in its 2019 layout: the string `null`.
+fn is_missing(value: &str) -> bool {
+    value.is_empty() || value.eq_ignore_ascii_case("null")
+}
+
+pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str) -> Row {
     if text.trim().is_empty() {
         return Row::Blank;
     }
@@ -229,23 +316,32 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
             header.columns.len()
         ));
     }
-    let launch_given = header
-        .columns
-        .iter()
-        .zip(&fields)
-        .filter(|(c, _)| matches!(c, Column::Launch(..)))
-        .map(|(_, v)| !v.trim().is_empty())
-        .collect::<Vec<_>>();
-    if !launch_given.is_empty() && launch_given.iter().all(|given| !given) {
+    let cell = |i: usize| {
+        let value = fields[i].trim();
+        if is_missing(value) { "" } else { value }
+    };
+    let launch_cells = || {
+        header
+            .columns
+            .iter()
+            .enumerate()
+            .filter_map(|(i, c)| matches!(c, Column::Launch(..)).then_some((*c, cell(i))))
+    };
+    let no_speed = launch_cells().any(|(c, v)| matches!(c, Column::Launch(0, _)) && v.is_empty());
+    let any_launch = launch_cells().next().is_some();
+    if no_speed || (any_launch && launch_cells().all(|(_, v)| v.is_empty())) {
         return Row::NoLaunch;
     }
-    let mut scene = base.scene;
-    let mut fence = fence_of(base);
+    let mut scene = setup.base.scene;
+    let mut fence = setup.base.fence.unwrap_or(Fence::generic());
+    let mut savant = SavantCells::default();
+    let mut given = setup.given;
+    let (mut spin_given, mut sidespin_given) = (setup.spin_given, setup.sidespin_given);
     // One row is one source: ρ beside the weather is refused.
     let mut batch = InputBatch::new();
     let mut converted = Vec::new();
-    for ((column, name), value) in header.columns.iter().zip(&header.names).zip(&fields) {
-        let value = value.trim();
+    for (i, (column, name)) in header.columns.iter().zip(&header.names).enumerate() {
+        let value = cell(i);
         let shown = escape_cut(value, 80);
         let number = || {
             value.parse::<f64>().map_err(|_| {
@@ -258,33 +354,41 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
         };
         let done = match *column {
             Column::Ignored => Ok(()),
+            // No spin: the estimate's.
+            Column::Launch(2, _) if value.is_empty() => Ok(()),
             Column::Launch(index, _) if value.is_empty() => {
                 Err(format!("{} is empty", LAUNCH_COLUMNS[index].0))
             }
             _ if value.is_empty() => Ok(()), // the preset's value
+            Column::Savant(column) => savant.read(column, value, setup.parks),
             Column::Launch(index, unit) => number().and_then(|v| {
                 if unit != Unit::Si {
                     converted.push(format!("{name} = {shown} {}", unit.name()));
                 }
+                spin_given |= index == 2;
                 batch
                     .set(&mut scene, LAUNCH_COLUMNS[index].0, unit.to_si(v))
                     .map_err(|e| e.to_string())
             }),
             // The whole value is parsed; only the error's copy is cut.
-            Column::Input(key) => batch
-                .set_text(&mut scene, key, value)
-                .map_err(|e| match e {
-                    InputError::NotANumber { key, text } => InputError::NotANumber {
-                        key,
-                        text: cut(&text, 80),
-                    },
-                    InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
-                        text: cut(&model.text, 80),
-                        ..model
-                    }),
-                    e => e,
-                })
-                .map_err(|e| e.to_string()),
+            Column::Input(key) => {
+                given.note(key);
+                sidespin_given |= key == "launch.sidespin";
+                batch
+                    .set_text(&mut scene, key, value)
+                    .map_err(|e| match e {
+                        InputError::NotANumber { key, text } => InputError::NotANumber {
+                            key,
+                            text: cut(&text, 80),
+                        },
+                        InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
+                            text: cut(&model.text, 80),
+                            ..model
+                        }),
+                        e => e,
+                    })
+                    .map_err(|e| e.to_string())
+            }
             Column::Field(index) => number().and_then(|v| {
                 let key = &FIELD_KEYS[index];
                 if key.bounds.contains(v) {
@@ -302,6 +406,10 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
             return bad(reason);
         }
     }
+    let park = setup.park.or(savant.park);
+    if let Some(index) = park {
+        super::super::ground::to_park(&mut scene, &setup.parks.parks[index], given);
+    }
     if let Err(e) = scene.validate() {
         let from = if converted.is_empty() {
             String::new()
@@ -310,5 +418,22 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
         };
         return bad(format!("{e}{from}"));
     }
-    Row::Job(Job { line, scene, fence })
+    let launch = RowLaunch {
+        spray: savant
+            .spray()
+            .filter(|_| !header.has_key("launch.direction")),
+        side: savant.side,
+        estimate_backspin: !spin_given,
+        estimate_sidespin: !sidespin_given,
+    };
+    Row::Job(Job {
+        line,
+        scene,
+        launch,
+        fence,
+        park,
+        statcast: savant.distance,
+        kept: header.keep.iter().map(|&i| fields[i].clone()).collect(),
+        given,
+    })
 }
