@@ -228,7 +228,7 @@ pub(super) fn parks_text(flown: &FlownToFence, parks: &Parks, own_air: bool) -> 
         if own_air {
             " (each in its own air)"
         } else {
-            " (this flight, their fences)"
+            ""
         }
     )
 }

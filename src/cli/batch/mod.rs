@@ -425,8 +425,8 @@ fn csv_line(
     if statcast {
         line += &format!(
             ",{},{}",
-            distance(job.statcast, 1),
-            distance(difference(job, flown), 1)
+            distance(job.statcast, 2),
+            distance(difference(job, flown), 2)
         );
     }
     for kept in &job.kept {

@@ -67,7 +67,7 @@ pub(super) const LAUNCH_COLUMNS: [(&str, &[(&str, Unit)]); 3] = [
 /// `fly --batch`'s long help: the columns read, made from
 /// [`LAUNCH_COLUMNS`] and the keys, so that it cannot fall behind them.
 pub(in crate::cli) fn columns_help() -> String {
-    let launch: Vec<(&str, String)> = LAUNCH_COLUMNS
+    let mut launch: Vec<(&str, String)> = LAUNCH_COLUMNS
         .iter()
         .flat_map(|(key, names)| {
             names.iter().map(move |(name, unit)| {
@@ -79,6 +79,24 @@ pub(in crate::cli) fn columns_help() -> String {
             })
         })
         .collect();
+    launch.extend(
+        [
+            (
+                "hc_x, hc_y",
+                "Savant's hit coordinates: the spray angle (see --spray)",
+            ),
+            ("stand", "the batter's side, R or L (for the spin estimate)"),
+            (
+                "home_team",
+                "the park: its fence, and the standard air at its elevation",
+            ),
+            (
+                "hit_distance_sc",
+                "Statcast's distance (ft): the output adds it and the difference",
+            ),
+        ]
+        .map(|(name, meaning)| (name, meaning.to_owned())),
+    );
     let width = launch.iter().map(|(name, _)| name.len()).max().unwrap_or(0);
     let mut text = String::from(
         "A CSV of launches, one flight per row (`-` reads stdin). The header names the \
@@ -91,7 +109,9 @@ pub(in crate::cli) fn columns_help() -> String {
         "  and any other key of `homerun keys` ({DRAG_KEY}, environment.temperature, {}, …), \
          that input for the row, as --set takes it.\n\
          Statcast's launch_speed and launch_angle columns are read as they are; its \
-         release_spin_rate is the pitch's spin, not the batted ball's, and is not read. \
+         release_spin_rate is the pitch's spin, not the batted ball's, and is not read: a row \
+         without spin gets Nathan's estimate from its angle, direction and side. \
+         `null` is a missing value; a row without a launch speed is skipped. \
          Other columns are ignored (named once on stderr). A launch column not given takes \
          the preset's value for every row; an empty cell of another column, the preset's \
          value; a row whose launch cells are all empty is skipped.",
@@ -423,8 +443,10 @@ pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str)
             .spray()
             .filter(|_| !header.has_key("launch.direction")),
         side: savant.side,
+        // A row that gives its backspin has its spin: only a row without
+        // one is filled, both parts (a sidespin given is kept).
         estimate_backspin: !spin_given,
-        estimate_sidespin: !sidespin_given,
+        estimate_sidespin: !spin_given && !sidespin_given,
     };
     Row::Job(Job {
         line,
