@@ -8,6 +8,7 @@
 
 use assert_cmd::Command;
 use homerun::Scene;
+use homerun::analysis::calibrate::median;
 use homerun::analysis::precision::Purpose;
 use homerun::model::launch::{BattedBall, fly_scene};
 use serde_json::Value;
@@ -15,16 +16,6 @@ use serde_json::Value;
 const SAMPLE: &str = "tests/data/savant_home_runs.csv";
 const PYBASEBALL: &str = "tests/data/savant_home_runs_pybaseball.csv";
 const FOOT: f64 = 0.3048;
-
-fn median(mut values: Vec<f64>) -> f64 {
-    values.sort_by(f64::total_cmp);
-    let n = values.len();
-    if n % 2 == 1 {
-        values[n / 2]
-    } else {
-        0.5 * (values[n / 2 - 1] + values[n / 2])
-    }
-}
 
 /// The sample's rows as the default pipeline flies them (JSON lines), with
 /// the hit coordinates kept to tell which rows had them.

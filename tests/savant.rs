@@ -3,24 +3,12 @@
 //! hit coordinates, batter's side, home team, Statcast's distance, "null",
 //! repeated column names, `--keep`, `--spray`).
 
-use assert_cmd::Command;
+mod common;
+
+use common::run_homerun as homerun;
 use homerun::analysis::savant::spray_angle;
 use homerun::model::spin_estimate::{Side, nathan_spin};
 use serde_json::Value;
-
-fn homerun(args: &[&str], input: Option<&str>) -> (Option<i32>, String, String) {
-    let mut command = Command::new(env!("CARGO_BIN_EXE_homerun"));
-    command.args(args);
-    if let Some(input) = input {
-        command.write_stdin(input);
-    }
-    let out = command.output().unwrap();
-    (
-        out.status.code(),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
 
 fn json(args: &[&str]) -> Value {
     let (status, out, err) = homerun(args, None);

@@ -7,6 +7,7 @@
 //! explorer.
 
 pub mod bench;
+pub mod calibrate;
 pub mod figures;
 pub mod landing;
 pub mod optimum;

@@ -156,6 +156,28 @@ pub enum Command {
         )]
         spray: SprayArg,
     },
+    /// Fit model.drag_scale (and model.lift_scale, given hang_time or apex
+    /// columns) to the measured distances of a CSV of flights, as `fly --batch`
+    /// reads them (a Savant export: hit_distance_sc).
+    Calibrate {
+        /// The CSV (`-` for stdin): launches and hit_distance_sc (ft); hang_time (s)
+        /// and apex (ft) fit the lift too.
+        file: String,
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// The park every row is at [default: each row's home_team].
+        #[arg(long, value_name = "CODE")]
+        park: Option<String>,
+        /// What Savant's spray angle is (as `fly --batch --spray`).
+        #[arg(long, value_name = "WHAT", default_value = "landing")]
+        spray: SprayArg,
+        /// Save the preset with the factors found as NAME in the presets folder.
+        #[arg(long, value_name = "NAME")]
+        save: Option<String>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
     /// Every input key: symbol, unit, accepted range and the fastball's value.
     Keys,
     /// The undercut and swing angle that maximise range (§II.E).
@@ -435,25 +457,9 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         let preset = scene.resolve(checked_presets_dir(cli)?.as_deref())?;
         scene::check_path("--batch", source)?;
         let parks = preset::parks::all(parks_dir(cli).as_deref())?;
-        let mut setup = batch::Setup::new(&preset, &parks);
-        setup.given = ground::given_weather(&scene.set);
-        let set_keys: Vec<&str> = scene
-            .set
-            .iter()
-            .filter_map(|a| a.split_once('=').map(|(k, _)| k.trim()))
-            .collect();
-        setup.spin_given = set_keys.contains(&"launch.spin");
-        setup.sidespin_given = set_keys.contains(&"launch.sidespin");
+        let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
         setup.own_air = *own_air;
-        if let Some(code) = park {
-            let found = parks
-                .parks
-                .iter()
-                .position(|p| p.answers_to(code.trim()))
-                .ok_or_else(|| parks::unknown(code, &parks))?;
-            setup.park = Some(found);
-        }
         if let Some(keep) = keep {
             setup.keep = keep
                 .split(',')
@@ -477,6 +483,26 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
             },
         )?;
         return Ok(ExitCode::from(outcome.exit_status()));
+    }
+    if let Command::Calibrate {
+        file,
+        scene,
+        park,
+        spray,
+        save,
+        json,
+    } = command
+    {
+        let dir = checked_presets_dir(cli)?;
+        let preset = scene.resolve(dir.as_deref())?;
+        scene::check_path("calibrate", file)?;
+        let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+        let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
+        setup.spray = (*spray).into();
+        let save = save.as_deref().map(|name| (name, dir.as_deref()));
+        let text = batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?;
+        print!("{text}");
+        return Ok(ExitCode::SUCCESS);
     }
     let svg = svg_target(command);
     // A folder that cannot take the file is refused before any work.
@@ -636,6 +662,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             shown,
         ),
         Command::Tui { .. } => Err(UsageError::NotHeadless),
+        Command::Calibrate { .. } => unreachable!("run() answers calibrate"),
     }
 }
 

@@ -17,6 +17,7 @@ use crate::analysis::savant;
 use crate::preset::escape_cut;
 use crate::units::Quantity;
 
+pub(super) mod calibrate;
 mod records;
 mod rows;
 mod savant_columns;

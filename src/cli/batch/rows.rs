@@ -292,6 +292,9 @@ pub(super) struct Job {
     pub(super) park: Option<usize>,
     /// Statcast's distance (m).
     pub(super) statcast: Option<f64>,
+    /// Measured hang time (s) and apex (m), for `calibrate`.
+    pub(super) hang_time: Option<f64>,
+    pub(super) apex: Option<f64>,
     /// The `--keep` cells, as read.
     pub(super) kept: Vec<String>,
     /// The air keys given, by `--set` and by the row: a park keeps them.
@@ -455,6 +458,8 @@ pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str)
         fence,
         park,
         statcast: savant.distance,
+        hang_time: savant.hang_time,
+        apex: savant.apex,
         kept: header.keep.iter().map(|&i| fields[i].clone()).collect(),
         given,
     })

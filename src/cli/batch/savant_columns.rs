@@ -4,6 +4,7 @@
 //! command line's choices), and the one summary line said at the end.
 
 use crate::analysis::savant::{Spray, spray_angle};
+use crate::cli::UsageError;
 use crate::model::park::{self, GivenWeather};
 use crate::model::spin_estimate::Side;
 use crate::preset::parks::Parks;
@@ -26,15 +27,20 @@ pub(super) enum SavantColumn {
     HomeTeam,
     /// Statcast's projected distance (ft).
     Distance,
+    /// Measured hang time (s) and apex (ft), for `calibrate`'s lift.
+    HangTime,
+    Apex,
 }
 
 impl SavantColumn {
-    pub(super) const ALL: [(&'static str, SavantColumn); 5] = [
+    pub(super) const ALL: [(&'static str, SavantColumn); 7] = [
         ("hc_x", SavantColumn::HcX),
         ("hc_y", SavantColumn::HcY),
         ("stand", SavantColumn::Stand),
         ("home_team", SavantColumn::HomeTeam),
         ("hit_distance_sc", SavantColumn::Distance),
+        ("hang_time", SavantColumn::HangTime),
+        ("apex", SavantColumn::Apex),
     ];
 
     pub(super) fn of(name: &str) -> Option<SavantColumn> {
@@ -74,6 +80,33 @@ pub(in crate::cli) struct Setup<'a> {
 }
 
 impl<'a> Setup<'a> {
+    /// The setup a command line gives: its `--set` list's air and spin keys,
+    /// and `--park`'s park.
+    pub fn for_command(
+        base: &'a Preset,
+        parks: &'a Parks,
+        set: &[String],
+        park: Option<&str>,
+    ) -> Result<Setup<'a>, UsageError> {
+        let mut setup = Setup::new(base, parks);
+        setup.given = super::super::ground::given_weather(set);
+        let keys: Vec<&str> = set
+            .iter()
+            .filter_map(|a| a.split_once('=').map(|(k, _)| k.trim()))
+            .collect();
+        setup.spin_given = keys.contains(&"launch.spin");
+        setup.sidespin_given = keys.contains(&"launch.sidespin");
+        if let Some(code) = park {
+            let found = parks
+                .parks
+                .iter()
+                .position(|p| p.answers_to(code.trim()))
+                .ok_or_else(|| super::super::parks::unknown(code, parks))?;
+            setup.park = Some(found);
+        }
+        Ok(setup)
+    }
+
     pub fn new(base: &'a Preset, parks: &'a Parks) -> Setup<'a> {
         Setup {
             base,
@@ -100,6 +133,9 @@ pub(super) struct SavantCells {
     pub park: Option<usize>,
     /// Statcast's distance (m).
     pub distance: Option<f64>,
+    /// Hang time (s) and apex (m).
+    pub hang_time: Option<f64>,
+    pub apex: Option<f64>,
 }
 
 impl SavantCells {
@@ -121,6 +157,8 @@ impl SavantCells {
             SavantColumn::HcX => self.hc_x = Some(number()?),
             SavantColumn::HcY => self.hc_y = Some(number()?),
             SavantColumn::Distance => self.distance = Some(number()? * METRES_PER_FOOT),
+            SavantColumn::HangTime => self.hang_time = Some(number()?),
+            SavantColumn::Apex => self.apex = Some(number()? * METRES_PER_FOOT),
             SavantColumn::Stand => {
                 self.side = Some(match value {
                     "R" | "r" => Side::Right,

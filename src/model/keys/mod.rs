@@ -19,8 +19,8 @@ mod table;
 
 pub use batch::InputBatch;
 pub use table::{
-    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, EXTENDED_KEYS, KEYS, LAUNCH_KEYS, LIFT_KEY, all_keys,
-    swing_keys,
+    AIR_KEYS, ATMOSPHERE_KEYS, CALIBRATION_KEYS, DRAG_KEY, EXTENDED_KEYS, KEYS, LAUNCH_KEYS,
+    LIFT_KEY, all_keys, swing_keys,
 };
 
 /// A closed or half-open interval of accepted values.
