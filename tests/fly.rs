@@ -266,7 +266,7 @@ fn a_batch_keeps_the_input_order_across_chunks() {
     let rows: Vec<&str> = out.lines().collect();
     assert_eq!(
         rows[0],
-        "line,launch.speed,launch.angle,launch.spin,launch.direction,launch.sidespin,range,direction,flight_time,apex,landing_angle,landed,clears_fence"
+        "line,launch.speed,launch.angle,launch.spin,launch.direction,launch.sidespin,range,direction,flight_time,apex,landing_angle,landed,clears_fence,park,outcome,margin,parks_cleared,spin_estimated"
     );
     assert_eq!(rows.len(), 3001);
     let mut last_range = 0.0;
@@ -329,7 +329,7 @@ fn statcast_columns_are_converted_and_other_columns_ignored() {
         "{err}"
     );
     assert!(
-        err.contains("1 row with every launch column empty"),
+        err.contains("skipped 1 row without a launch speed"),
         "{err}"
     );
     let statcast: Value = serde_json::from_str(out.trim()).unwrap();

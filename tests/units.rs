@@ -215,7 +215,7 @@ fn csv_headers_carry_the_units_and_the_numbers_convert() {
     let mut lines = out.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "line,launch.speed_mph,launch.angle_deg,launch.spin_rpm,launch.direction_deg,launch.sidespin_rpm,range_ft,direction_deg,flight_time,apex_ft,landing_angle_deg,landed,clears_fence"
+        "line,launch.speed_mph,launch.angle_deg,launch.spin_rpm,launch.direction_deg,launch.sidespin_rpm,range_ft,direction_deg,flight_time,apex_ft,landing_angle_deg,landed,clears_fence,park,outcome,margin_ft,parks_cleared,spin_estimated"
     );
     assert!(
         lines

@@ -7,10 +7,12 @@
 //! explorer.
 
 pub mod bench;
+pub mod calibrate;
 pub mod figures;
 pub mod landing;
 pub mod optimum;
 pub mod paper;
 pub mod precision;
+pub mod savant;
 pub mod sensitivity;
 pub mod study;

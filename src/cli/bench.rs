@@ -110,6 +110,21 @@ fn render(report: &Report) -> String {
     }
     let _ = writeln!(
         out,
+        "\na home run judged at the parks (102 mph, 28°, Nathan's spin for a right-handed batter, landing 15° toward left field; readout precision)\n{:<28} {:>7} {:>9} {:>8}",
+        "work", "flights", "time_us", "cpu_us"
+    );
+    for r in &report.parks {
+        let _ = writeln!(
+            out,
+            "{:<28} {:>7} {:>9.2} {:>8}",
+            r.work,
+            r.flights,
+            r.time_us,
+            or_dash(r.cpu_us, |c| format!("{c:.2}"))
+        );
+    }
+    let _ = writeln!(
+        out,
         "\none optimisation per Table II pitch (errors against optimiser 1e-9, integrator 1e-12)"
     );
     let _ = writeln!(

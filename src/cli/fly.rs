@@ -2,6 +2,10 @@
 //! from `launch.*`, or a swing's launch from its impact); and `fly --batch`,
 //! one launch per CSV row (see [`super::batch`]).
 
+use super::ground::{
+    FlownToFence, Ground, all_parks_json, all_parks_table, clearing_json, clearing_text,
+    parks_json, parks_text,
+};
 use super::hit::{environment_json, flight_json, flight_text, labelled};
 use super::pretty;
 use super::shown::Shown;
@@ -9,77 +13,48 @@ use crate::Scene;
 use crate::analysis::landing;
 use crate::analysis::precision::Purpose;
 use crate::model::atmosphere::Air;
-use crate::model::flight::FlightSummary;
 use crate::model::launch::{self, BattedBall, SceneKind};
-use crate::preset::{FIELD_KEYS, Fence, Preset};
+use crate::model::park::{self, GivenWeather};
+use crate::preset::Preset;
+use crate::preset::parks::Parks;
 use crate::units::Quantity;
 
-/// The fence a preset draws, or the default one (121.9 m, 3.0 m).
-pub(super) fn fence_of(preset: &Preset) -> Fence {
-    preset.fence.unwrap_or(Fence {
-        distance: FIELD_KEYS[0].default,
-        height: FIELD_KEYS[1].default,
-    })
-}
-
-/// One scene's flight, at readout precision, with the fence it clears or not.
-pub(super) struct FlownToFence {
-    pub launch: BattedBall,
-    pub flight: FlightSummary,
-    /// The ball's height where it passes the fence's distance, if it gets there.
-    pub height_at_fence: Option<f64>,
-    pub fence: Fence,
-}
-
-impl FlownToFence {
-    pub fn new(scene: &Scene, fence: Fence) -> FlownToFence {
-        let (flight, height_at_fence) =
-            launch::height_at_distance(scene, fence.distance, Purpose::Readout);
-        FlownToFence {
-            launch: scene.batted_ball(),
-            flight,
-            height_at_fence,
-            fence,
-        }
-    }
-
-    pub fn clears_fence(&self) -> bool {
-        self.height_at_fence.is_some_and(|h| h >= self.fence.height)
-    }
-}
-
-pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
+pub(super) fn fly(
+    preset: &Preset,
+    ground: Ground,
+    parks: &Parks,
+    (all_parks, own_air): (bool, Option<GivenWeather>),
+    json: bool,
+    shown: Shown,
+) -> String {
     let scene = &preset.scene;
-    let flown = FlownToFence::new(scene, fence_of(preset));
-    let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.fence);
+    let fences: Vec<&park::Fence> = parks.parks.iter().map(|p| &p.fence).collect();
+    let own_air = own_air.map(|given| (parks, given));
+    let flown = FlownToFence::new(scene, ground.fence(), &fences, own_air);
+    let (launch, flight) = (&flown.launch, &flown.flight);
     let unlanded = (!flight.landed).then(|| landing::not_landed(flight, end_height(scene)));
     if json {
-        return pretty(&serde_json::json!({
+        let mut fence = clearing_json(ground.code(), &flown.clearing);
+        fence["clears"] = flown.clears_fence().into();
+        let mut json = serde_json::json!({
             "scene": scene.kind.name(),
             // {speed, angle, spin, direction, sidespin}: BattedBall's fields.
             "launch": launch,
             "model": model_json(scene),
             "flight": flight_json(flight, unlanded),
-            "fence": {
-                "distance": fence.distance,
-                "height": fence.height,
-                "height_at_fence": flown.height_at_fence,
-                "clears": flown.clears_fence(),
-            },
+            "fence": fence,
+            "parks": parks_json(&flown, parks),
             "environment": environment_json(scene),
-        }));
+        });
+        if all_parks {
+            json["all_parks"] = all_parks_json(&flown, parks);
+        }
+        return pretty(&json);
     }
     let from = match scene.kind {
         SceneKind::Swing => " (from the swing's impact)",
         SceneKind::BattedBall => "",
     };
-    // The explorer's words (analysis::landing::fence_text).
-    let fence_line = landing::fence_text(
-        fence.distance,
-        fence.height,
-        flown.height_at_fence,
-        shown.unit(Quantity::Distance),
-    );
     let air = scene.environment.air();
     let unlanded = unlanded.map(|why| {
         if shown.is_si() {
@@ -88,10 +63,11 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
             shown.not_landed(flight, end_height(scene))
         }
     });
-    labelled(&[
+    let mut text = labelled(&[
         ("launch", format!("{}{from}", batted_text(launch, shown))),
         ("flight", flight_text(flight, unlanded.as_deref(), shown)),
-        ("fence", fence_line),
+        ("fence", clearing_text(&ground, &flown.clearing, shown)),
+        ("parks", parks_text(&flown, parks, own_air.is_some())),
         (
             "air",
             format!(
@@ -101,7 +77,12 @@ pub(super) fn fly(preset: &Preset, json: bool, shown: Shown) -> String {
                 scene.models_text()
             ),
         ),
-    ])
+    ]);
+    if all_parks {
+        text.push('\n');
+        text += &all_parks_table(&flown, parks, shown);
+    }
+    text
 }
 
 /// The models in force and whether the user chose them, as JSON.

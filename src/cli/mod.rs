@@ -7,6 +7,7 @@ mod bench;
 mod figure;
 mod figure_units;
 mod fly;
+mod ground;
 mod hit;
 mod optimize;
 mod parks;
@@ -130,6 +131,57 @@ pub enum Command {
         /// Print JSON instead of text (with --batch: one JSON object per line).
         #[arg(long)]
         json: bool,
+        /// The park whose fence the ball meets, and whose air it flies in unless
+        /// air or weather keys are given: a Savant home_team code (`homerun parks`
+        /// lists them) [default: the generic fence, the same in every direction;
+        /// with --batch: each row's home_team].
+        #[arg(long, value_name = "CODE")]
+        park: Option<String>,
+        /// Also list every park with the outcome and margin there.
+        #[arg(long, conflicts_with = "batch")]
+        all_parks: bool,
+        /// Count (and list) the parks each in its own air, the standard air at
+        /// its elevation (the weather given kept): a flight per park, where by
+        /// default this one flight meets every park's fence.
+        #[arg(long)]
+        own_air: bool,
+        /// With --batch: copy these input columns into the output, after the
+        /// others (comma-separated, e.g. player_name,game_date,events).
+        #[arg(long, value_name = "COLS", requires = "batch")]
+        keep: Option<String>,
+        /// With --batch: what Savant's spray angle (from hc_x, hc_y) is: `landing`,
+        /// where the ball came down (the launch direction is solved so that the
+        /// flight lands there), or `launch`, the launch direction itself (the
+        /// recipe of pybaseball's calculator).
+        #[arg(
+            long,
+            value_name = "WHAT",
+            default_value = "landing",
+            requires = "batch"
+        )]
+        spray: SprayArg,
+    },
+    /// Fit model.drag_scale (and model.lift_scale, given hang_time or apex
+    /// columns) to the measured distances of a CSV of flights, as `fly --batch`
+    /// reads them (a Savant export: hit_distance_sc).
+    Calibrate {
+        /// The CSV (`-` for stdin): launches and hit_distance_sc (ft); hang_time (s)
+        /// and apex (ft) fit the lift too.
+        file: String,
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// The park every row is at [default: each row's home_team].
+        #[arg(long, value_name = "CODE")]
+        park: Option<String>,
+        /// What Savant's spray angle is (as `fly --batch --spray`).
+        #[arg(long, value_name = "WHAT", default_value = "landing")]
+        spray: SprayArg,
+        /// Save the preset with the factors found as NAME in the presets folder.
+        #[arg(long, value_name = "NAME")]
+        save: Option<String>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
     },
     /// Every input key: symbol, unit, accepted range and the fastball's value.
     Keys,
@@ -249,6 +301,25 @@ pub enum Command {
         #[arg(long, value_name = "THEME")]
         theme: Option<Background>,
     },
+}
+
+/// What Savant's spray angle is taken to be (`fly --batch --spray`).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SprayArg {
+    /// Where the ball came down: the launch direction is solved.
+    #[default]
+    Landing,
+    /// The launch direction.
+    Launch,
+}
+
+impl From<SprayArg> for crate::analysis::savant::Spray {
+    fn from(spray: SprayArg) -> Self {
+        match spray {
+            SprayArg::Landing => crate::analysis::savant::Spray::Landing,
+            SprayArg::Launch => crate::analysis::savant::Spray::Launch,
+        }
+    }
 }
 
 /// A failure the user can fix: printed as one line, exit status 2.
@@ -387,16 +458,32 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         scene,
         batch: Some(source),
         json,
+        park,
+        keep,
+        spray,
+        own_air,
+        ..
     } = command
     {
         let preset = scene.resolve(checked_presets_dir(cli)?.as_deref())?;
         scene::check_path("--batch", source)?;
+        let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+        let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
+        setup.spray = (*spray).into();
+        setup.own_air = *own_air;
+        if let Some(keep) = keep {
+            setup.keep = keep
+                .split(',')
+                .map(|c| c.trim().to_owned())
+                .filter(|c| !c.is_empty())
+                .collect();
+        }
         let stdout = std::io::stdout().lock();
         let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
         let mut err = std::io::stderr().lock();
         let erase = err.is_terminal();
         let outcome = batch::run(
-            &preset,
+            &setup,
             source,
             *json,
             Shown(cli.units),
@@ -407,6 +494,26 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
             },
         )?;
         return Ok(ExitCode::from(outcome.exit_status()));
+    }
+    if let Command::Calibrate {
+        file,
+        scene,
+        park,
+        spray,
+        save,
+        json,
+    } = command
+    {
+        let dir = checked_presets_dir(cli)?;
+        let preset = scene.resolve(dir.as_deref())?;
+        scene::check_path("calibrate", file)?;
+        let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+        let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
+        setup.spray = (*spray).into();
+        let save = save.as_deref().map(|name| (name, dir.as_deref()));
+        let text = batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?;
+        print!("{text}");
+        return Ok(ExitCode::SUCCESS);
     }
     let svg = svg_target(command);
     // A folder that cannot take the file is refused before any work.
@@ -461,7 +568,37 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             *json,
             shown,
         )),
-        Command::Fly { scene, json, .. } => Ok(fly::fly(&scene.resolve(dir)?, *json, shown)),
+        Command::Fly {
+            scene,
+            json,
+            park,
+            all_parks,
+            own_air,
+            ..
+        } => {
+            let mut preset = scene.resolve(dir)?;
+            let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+            let generic = ground::generic_fence(&preset);
+            let ground = match park {
+                Some(code) => {
+                    let park = parks
+                        .find(code)
+                        .ok_or_else(|| parks::unknown(code, &parks))?;
+                    ground::to_park(&mut preset.scene, park, ground::given_weather(&scene.set));
+                    ground::Ground::Park(park)
+                }
+                None => ground::Ground::Generic(&generic),
+            };
+            let own_air = own_air.then(|| ground::given_weather(&scene.set));
+            Ok(fly::fly(
+                &preset,
+                ground,
+                &parks,
+                (*all_parks, own_air),
+                *json,
+                shown,
+            ))
+        }
         Command::Table2 { json } => Ok(elapsed("table2", || table2::table2(*json))),
         Command::Bench { json, quick, svg } => {
             elapsed("bench", || bench::output(*json, *quick, svg.is_some()))
@@ -542,6 +679,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             shown,
         ),
         Command::Tui { .. } => Err(UsageError::NotHeadless),
+        Command::Calibrate { .. } => unreachable!("run() answers calibrate"),
     }
 }
 

@@ -14,8 +14,8 @@ use super::flight::{
 use super::frame;
 use super::impact::{Collision, Launches};
 use super::keys::{InputError, LAUNCH_KEYS};
+use super::park::Fence;
 use super::scene::Scene;
-use crate::numerics::ode::DenseStep;
 use crate::units::significant;
 
 pub use super::scene::{GivenLaunch, SceneKind};
@@ -297,65 +297,19 @@ impl SceneFlight {
 
     /// The ball's height (m) where it first gets `distance` (m) from the
     /// plate, horizontally, read off the integrator's continuous extension;
-    /// and the flight. `None` if it never gets that far.
+    /// and the flight. `None` if it never gets that far above the field.
+    /// The crossing of a fence the same distance away in every direction
+    /// ([`SceneFlight::fly_to_fences`]).
     pub fn height_at_distance(
         &self,
         distance: f64,
         options: &FlightOptions,
     ) -> (FlightSummary, Option<f64>) {
-        let mut height = None;
-        let summary = match self {
-            SceneFlight::Planar {
-                flight,
-                launch,
-                plane,
-            } => {
-                let summary = flight::fly_observed(flight, launch, options, |step| {
-                    if height.is_none() {
-                        height = height_where(step, distance, |s| s[0]);
-                    }
-                });
-                FlightSummary {
-                    direction: *plane,
-                    ..summary
-                }
-            }
-            SceneFlight::Spatial { flight, launch } => {
-                flight::fly_observed(flight, launch, options, |step| {
-                    if height.is_none() {
-                        height = height_where(step, distance, |s| s[0].hypot(s[2]));
-                    }
-                })
-            }
-        };
-        // A step may carry the dense output past the landing: only a
-        // crossing above the ground counts.
-        (summary, height.filter(|&h| h >= 0.0))
+        let circle = Fence::uniform(distance, 1.0);
+        let mut crossing = [None];
+        let summary = self.fly_to_fences(options, &[&circle], &mut crossing);
+        (summary, crossing[0].map(|c| c.height))
     }
-}
-
-/// The height where `reach` (a horizontal distance) passes `distance` in
-/// `step`, if it does: bisection on reach(t) = distance, reach rising
-/// through the step (it did at both ends; a ball that turns back within
-/// one step is no home run).
-fn height_where<const N: usize>(
-    step: &DenseStep<N>,
-    distance: f64,
-    reach: impl Fn(&crate::numerics::ode::State<N>) -> f64,
-) -> Option<f64> {
-    if !(reach(&step.y0) < distance && distance <= reach(&step.y1)) {
-        return None;
-    }
-    let (mut low, mut high) = (step.t0, step.t1);
-    for _ in 0..60 {
-        let middle = 0.5 * (low + high);
-        if reach(&step.at(middle)) < distance {
-            low = middle;
-        } else {
-            high = middle;
-        }
-    }
-    Some(step.at(high)[1])
 }
 
 /// A scene's launch and its flight, whatever the scene's kind.

@@ -15,6 +15,7 @@
 
 pub mod aero;
 pub mod atmosphere;
+pub mod clearing;
 pub mod flight;
 pub mod frame;
 pub mod impact;
@@ -23,6 +24,7 @@ pub mod launch;
 pub mod park;
 pub mod pitch;
 pub mod scene;
+pub mod spin_estimate;
 
 use nalgebra::Vector2;
 

@@ -292,6 +292,11 @@ impl Environment {
     }
 }
 
+/// A scale factor's default: the model as published.
+fn unscaled() -> f64 {
+    1.0
+}
+
 /// Everything that determines one swing's outcome.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Scene {
@@ -306,6 +311,12 @@ pub struct Scene {
     /// none (the paper's constant spin).
     #[serde(default)]
     pub spin_decay: f64,
+    /// Factors on C_D and C_L (1: the model as published), fitted to
+    /// measured distances by `homerun calibrate`.
+    #[serde(default = "unscaled")]
+    pub drag_scale: f64,
+    #[serde(default = "unscaled")]
+    pub lift_scale: f64,
     /// A swing (the paper's scene) or a batted ball flown from `launch`.
     /// Set it with [`Scene::set_kind`], which keeps the models in step.
     #[serde(default)]
@@ -362,6 +373,8 @@ impl Default for Scene {
             drag: DragModel::Sawicki2003,
             lift: LiftModel::Sawicki2003,
             spin_decay: 0.0,
+            drag_scale: 1.0,
+            lift_scale: 1.0,
             kind: SceneKind::Swing,
             chosen: ChosenModels::default(),
             launch: GivenLaunch::default(),

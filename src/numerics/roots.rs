@@ -10,12 +10,23 @@
 /// number is the cost.
 pub fn find_root_newton(
     mut g: impl FnMut(f64) -> (f64, f64),
-    mut a: f64,
-    mut b: f64,
+    a: f64,
+    b: f64,
     tolerance: f64,
 ) -> f64 {
     let (ga, _) = g(a);
     let (gb, _) = g(b);
+    find_root_newton_from(g, (a, ga), (b, gb), tolerance)
+}
+
+/// [`find_root_newton`] with g's values at the bracket's ends known already
+/// (a caller that tests many functions at a step's ends has them).
+pub fn find_root_newton_from(
+    mut g: impl FnMut(f64) -> (f64, f64),
+    (mut a, ga): (f64, f64),
+    (mut b, gb): (f64, f64),
+    tolerance: f64,
+) -> f64 {
     if ga == 0.0 {
         return a;
     }

@@ -22,8 +22,8 @@ use file::{check_save_target, preset_files, size_text, through};
 
 use crate::model::aero::{DragModel, LiftModel};
 use crate::model::keys::{
-    AIR_KEYS, ATMOSPHERE_KEYS, HAND_KEY, InputBatch, InputError, Key, LAUNCH_KEYS, TEXT_KEYS,
-    all_keys,
+    AIR_KEYS, ATMOSPHERE_KEYS, CALIBRATION_KEYS, HAND_KEY, InputBatch, InputError, Key,
+    LAUNCH_KEYS, TEXT_KEYS, all_keys,
 };
 use crate::model::launch::SceneKind;
 
@@ -306,8 +306,12 @@ impl Preset {
                 .zip(given)
                 .any(|(k, v)| k.name == name && v.is_some()),
         };
+        // A calibration factor is written only when it scales (1: as published).
+        let unscaled = |k: &Key| {
+            CALIBRATION_KEYS.iter().any(|c| c.name == k.name) && (k.get)(&self.scene) == 1.0
+        };
         let keys: Vec<&Key> = all_keys()
-            .filter(|k| !skipped.contains(&k.name))
+            .filter(|k| !skipped.contains(&k.name) && !unscaled(k))
             .filter(|k| !LAUNCH_KEYS.iter().any(|l| l.name == k.name) || launch_written(k.name))
             .collect();
         let mut sections: Vec<&str> = Vec::new();

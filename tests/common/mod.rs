@@ -68,3 +68,19 @@ impl Row<'_> {
         self.text(name).parse().expect(name)
     }
 }
+
+/// Runs the binary with `args` (and `input` on stdin): exit status, stdout
+/// and stderr.
+pub fn run_homerun(args: &[&str], input: Option<&str>) -> (Option<i32>, String, String) {
+    let mut command = assert_cmd::Command::new(env!("CARGO_BIN_EXE_homerun"));
+    command.args(args);
+    if let Some(input) = input {
+        command.write_stdin(input);
+    }
+    let out = command.output().unwrap();
+    (
+        out.status.code(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}

@@ -8,6 +8,7 @@
 //! a solve at the tightest setting; times are medians over repeated runs.
 //! The JSON output uses the tables' field names.
 
+mod parks;
 mod spatial;
 
 use std::time::Instant;
@@ -22,6 +23,7 @@ use crate::model::flight::{self, Flight, FlightOptions, Launch};
 use crate::model::impact::Impact;
 use crate::model::{self, scene::Scene};
 use crate::numerics::ode::Tolerance;
+pub use parks::ParksRow;
 pub use spatial::SpatialRow;
 
 /// reference/model.py's range for the Table II fastball launch (m).
@@ -78,6 +80,8 @@ pub struct Report {
     pub defaults: Vec<DefaultRow>,
     /// `fly --batch`'s flights: rows per second on one thread and on all.
     pub batch: Vec<BatchRow>,
+    /// A flight judged at the parks, and a Savant row's whole work.
+    pub parks: Vec<ParksRow>,
 }
 
 /// A batch of batted balls, each flown as a `fly --batch` row is (readout
@@ -615,6 +619,7 @@ pub fn run(quick: bool) -> Report {
         explorer: explorer(effort),
         defaults: defaults(reference),
         batch: batch(effort, threads, quick),
+        parks: parks::rows(effort),
     }
 }
 

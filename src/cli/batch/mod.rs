@@ -9,20 +9,26 @@ use std::io::{self, BufRead, Write};
 use rayon::prelude::*;
 
 use super::UsageError;
-use super::fly::FlownToFence;
+use super::ground::{FlownToFence, clearing_json};
 use super::progress::{self, Progress, Work};
 use super::shown::Shown;
+use crate::analysis::precision::Purpose;
+use crate::analysis::savant;
 use crate::model::launch::SceneKind;
-use crate::preset::{Preset, escape_cut};
+use crate::preset::escape_cut;
 use crate::units::Quantity;
 
+pub(super) mod calibrate;
 mod records;
 mod rows;
+mod savant_columns;
 
 pub use records::MAX_RECORD_BYTES;
 use records::*;
 pub(super) use rows::columns_help;
 use rows::*;
+pub(super) use savant_columns::Setup;
+use savant_columns::{SavantColumn, Summary, quoted};
 
 /// Rows read, flown in parallel and written at a time.
 const CHUNK_ROWS: usize = 2048;
@@ -69,7 +75,7 @@ impl Sinks<'_> {
 /// Opens `source` ("-" for stdin) and flies every row, showing progress on
 /// stderr when it is a terminal.
 pub(super) fn run(
-    base: &Preset,
+    setup: &Setup,
     source: &str,
     json: bool,
     shown: Shown,
@@ -81,14 +87,14 @@ pub(super) fn run(
     };
     if source == "-" {
         let stdin = io::stdin().lock();
-        progress::run(work, |p| batch(base, stdin, json, shown, sinks, p))
+        progress::run(work, |p| batch(setup, stdin, json, shown, sinks, p))
     } else {
         let file = std::fs::File::open(source).map_err(|e| UsageError::Batch {
             input: escape_cut(source, 200),
             message: e.to_string(),
         })?;
         let reader = io::BufReader::with_capacity(MAX_RECORD_BYTES, file);
-        progress::run(work, |p| batch(base, reader, json, shown, sinks, p))
+        progress::run(work, |p| batch(setup, reader, json, shown, sinks, p))
     }
     .map_err(|message| UsageError::Batch {
         input: escape_cut(source, 200),
@@ -99,7 +105,7 @@ pub(super) fn run(
 /// Flies every row of `input` against `base`; `Err` only for a header that
 /// cannot be used (nothing was flown).
 pub(super) fn batch(
-    base: &Preset,
+    setup: &Setup,
     input: impl BufRead,
     json: bool,
     shown: Shown,
@@ -114,7 +120,7 @@ pub(super) fn batch(
         Ok(Record::Text { text, .. }) => {
             let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
             let names = split_fields(text).map_err(|e| format!("line 1 (the header): {e}"))?;
-            let header = Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?;
+            let mut header = Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?;
             if !header.has_input() {
                 return Err(format!(
                     "line 1 (the header): no column is an input (launch_speed, launch_angle, \
@@ -123,6 +129,7 @@ pub(super) fn batch(
                     escape_cut(&header.names[0], 80)
                 ));
             }
+            header.keep(&setup.keep)?;
             Some(header)
         }
         Ok(Record::TooLong { .. }) => {
@@ -137,20 +144,37 @@ pub(super) fn batch(
         Err(Stop::Io(e)) => return Err(e.to_string()),
     };
     records.read_past_long = true;
+    let statcast = header
+        .as_ref()
+        .is_some_and(|h| h.has(SavantColumn::Distance));
     if !json {
-        let names: Vec<String> = OUTPUT_COLUMNS
+        let mut names: Vec<String> = OUTPUT_COLUMNS
             .iter()
+            .copied()
             .zip(OUTPUT_QUANTITIES)
+            .chain(STATCAST_COLUMNS.into_iter().filter(|_| statcast))
             .map(|(name, quantity)| shown.csv_key(name, quantity))
             .collect();
+        names.extend(setup.keep.iter().map(|n| quoted(n)));
         let _ = writeln!(sinks.out, "{}", names.join(","));
     }
     let Some(header) = header else {
         sinks.note("the input is empty: no rows to fly");
         return Ok(outcome);
     };
-    announce(&header, base, sinks);
+    announce(&header, setup, sinks);
+    let mut summary = Summary::new(setup.parks.parks.len());
+    let options = Purpose::Readout.flight_options();
     let mut messages = 0;
+    let mut fail = |sinks: &mut Sinks, outcome: &mut Outcome, line: usize, reason: &str| {
+        outcome.failed += 1;
+        messages += 1;
+        if messages <= MAX_ROW_MESSAGES {
+            sinks.note(&format!("line {line}: {reason}; skipped"));
+        } else if messages == MAX_ROW_MESSAGES + 1 {
+            sinks.note("more bad rows: counted, not shown");
+        }
+    };
     loop {
         let mut jobs = Vec::with_capacity(CHUNK_ROWS);
         let mut ended = false;
@@ -160,7 +184,7 @@ pub(super) fn batch(
                     ended = true;
                     break;
                 }
-                Ok(Record::Text { line, text }) => parse_row(&header, base, line, &text),
+                Ok(Record::Text { line, text }) => parse_row(&header, setup, line, &text),
                 Ok(Record::TooLong { line }) => Row::Bad {
                     line,
                     reason: format!("longer than {} KiB", MAX_RECORD_BYTES / 1024),
@@ -180,28 +204,28 @@ pub(super) fn batch(
             };
             match row {
                 Row::Job(job) => jobs.push(job),
-                Row::Bad { line, reason } => {
-                    outcome.failed += 1;
-                    messages += 1;
-                    if messages <= MAX_ROW_MESSAGES {
-                        sinks.note(&format!("line {line}: {reason}; skipped"));
-                    } else if messages == MAX_ROW_MESSAGES + 1 {
-                        sinks.note("more bad rows: counted, not shown");
-                    }
-                }
+                Row::Bad { line, reason } => fail(sinks, &mut outcome, line, &reason),
                 Row::NoLaunch => outcome.without_launch += 1,
                 Row::Blank => outcome.empty += 1,
             }
         }
-        let flown: Vec<FlownToFence> = jobs
+        let flown: Vec<Result<(FlownToFence, usize), String>> = jobs
             .par_iter()
-            .map(|job| FlownToFence::new(&job.scene, job.fence))
+            .map(|job| fly_job(job, setup, &options))
             .collect();
-        for (job, flown) in jobs.iter().zip(&flown) {
+        for (job, flown) in jobs.iter().zip(flown) {
+            let (flown, flights) = match flown {
+                Ok(flown) => flown,
+                Err(reason) => {
+                    fail(sinks, &mut outcome, job.line, &reason);
+                    continue;
+                }
+            };
+            summary.count(job, &header, flights);
             let text = if json {
-                json_line(job.line, flown)
+                json_line(job, &flown, setup)
             } else {
-                csv_line(job.line, flown, shown)
+                csv_line(job, &flown, statcast, setup, shown)
             };
             match sinks.out.write_all(text.as_bytes()) {
                 // `| head`: the reader has what it wanted.
@@ -221,12 +245,9 @@ pub(super) fn batch(
             break;
         }
     }
-    if outcome.without_launch > 0 {
-        let n = outcome.without_launch;
-        sinks.note(&format!(
-            "{n} row{} with every launch column empty (pitches not put in play) skipped",
-            if n == 1 { "" } else { "s" }
-        ));
+    summary.without_speed = outcome.without_launch;
+    if let Some(line) = summary.line(&header.savant_used(), outcome.flown, setup) {
+        sinks.note(&line);
     }
     if outcome.empty > 0 {
         let n = outcome.empty;
@@ -247,7 +268,8 @@ pub(super) fn batch(
 
 /// One stderr note for the columns ignored and the launch values every
 /// row takes from the preset.
-fn announce(header: &Header, base: &Preset, sinks: &mut Sinks) {
+fn announce(header: &Header, setup: &Setup, sinks: &mut Sinks) {
+    let base = setup.base;
     let ignored = header.ignored();
     if !ignored.is_empty() {
         let shown: Vec<String> = ignored.iter().take(8).map(|n| escape_cut(n, 40)).collect();
@@ -271,7 +293,10 @@ fn announce(header: &Header, base: &Preset, sinks: &mut Sinks) {
     let batted = base.scene.kind == SceneKind::BattedBall;
     let swing_columns = header.swing_columns();
     for (index, (key, names)) in LAUNCH_COLUMNS.iter().enumerate() {
-        if header.has_launch(index) {
+        // Without a spin column the spin is estimated (said at the end),
+        // unless --set gave it.
+        let estimated = index == 2 && !setup.spin_given;
+        if header.has_launch(index) || estimated {
             continue;
         }
         let accepted: Vec<&str> = names.iter().map(|(n, _)| *n).collect();
@@ -295,8 +320,9 @@ fn announce(header: &Header, base: &Preset, sinks: &mut Sinks) {
     }
 }
 
-/// The output's columns, in order.
-pub const OUTPUT_COLUMNS: [&str; 13] = [
+/// The output's columns, in order: then [`STATCAST_COLUMNS`] when the input
+/// has Statcast's distance, then `--keep`'s.
+pub const OUTPUT_COLUMNS: [&str; 18] = [
     "line",
     "launch.speed",
     "launch.angle",
@@ -310,10 +336,15 @@ pub const OUTPUT_COLUMNS: [&str; 13] = [
     "landing_angle",
     "landed",
     "clears_fence",
+    "park",
+    "outcome",
+    "margin",
+    "parks_cleared",
+    "spin_estimated",
 ];
 
 /// What each output column measures, for its unit outside SI.
-const OUTPUT_QUANTITIES: [Quantity; 13] = [
+const OUTPUT_QUANTITIES: [Quantity; 18] = [
     Quantity::Unchanged,
     Quantity::Speed,
     Quantity::Angle,
@@ -327,17 +358,80 @@ const OUTPUT_QUANTITIES: [Quantity; 13] = [
     Quantity::Angle,
     Quantity::Unchanged,
     Quantity::Unchanged,
+    Quantity::Unchanged,
+    Quantity::Unchanged,
+    Quantity::Distance,
+    Quantity::Unchanged,
+    Quantity::Unchanged,
 ];
 
-fn csv_line(line: usize, flown: &FlownToFence, shown: Shown) -> String {
-    let (launch, flight) = (&flown.launch, &flown.flight);
-    let range = if flight.landed {
-        shown.number(Quantity::Distance, flight.range, 3)
-    } else {
-        String::new()
+/// Statcast's distance and the model's range less it.
+const STATCAST_COLUMNS: [(&str, Quantity); 2] = [
+    ("statcast_distance", Quantity::Distance),
+    ("difference", Quantity::Distance),
+];
+
+/// A row's launch completed (the spin estimated, the direction solved:
+/// [`savant::launch`]) and flown once, judged at its park's fence (or the
+/// generic one) and at every park's; and the flights the solve took.
+fn fly_job(
+    job: &Job,
+    setup: &Setup,
+    options: &crate::model::flight::FlightOptions,
+) -> Result<(FlownToFence, usize), String> {
+    let launched =
+        savant::launch(&job.scene, &job.launch, setup.spray, options).map_err(|e| e.to_string())?;
+    launched.scene.validate().map_err(|e| {
+        if job.launch.estimates_spin() {
+            format!("{e} (the spin estimated from the launch angle)")
+        } else {
+            e.to_string()
+        }
+    })?;
+    let generic;
+    let fence = match job.park {
+        Some(index) => setup.fences[index],
+        None => {
+            generic = job.fence.uniform();
+            &generic
+        }
     };
-    format!(
-        "{line},{},{},{},{},{},{range},{},{:.3},{},{},{},{}\n",
+    let own_air = setup.own_air.then_some((setup.parks, job.given));
+    let flown = FlownToFence::new(&launched.scene, fence, &setup.fences, own_air);
+    Ok((flown, launched.flights))
+}
+
+/// The row's park code, or "generic".
+fn park_code<'a>(job: &Job, setup: &Setup<'a>) -> &'a str {
+    job.park
+        .map_or("generic", |i| setup.parks.parks[i].code.as_str())
+}
+
+/// The model's range less Statcast's distance (m), if both are known.
+fn difference(job: &Job, flown: &FlownToFence) -> Option<f64> {
+    let flight = &flown.flight;
+    job.statcast
+        .filter(|_| flight.landed)
+        .map(|measured| flight.range - measured)
+}
+
+fn csv_line(
+    job: &Job,
+    flown: &FlownToFence,
+    statcast: bool,
+    setup: &Setup,
+    shown: Shown,
+) -> String {
+    let (launch, flight) = (&flown.launch, &flown.flight);
+    let distance = |m: Option<f64>, decimals| {
+        m.map_or(String::new(), |m| {
+            shown.number(Quantity::Distance, m, decimals)
+        })
+    };
+    let range = distance(flight.landed.then_some(flight.range), 3);
+    let mut line = format!(
+        "{},{},{},{},{},{},{range},{},{:.3},{},{},{},{},{},{},{},{},{}",
+        job.line,
         shown.number(Quantity::Speed, launch.speed, 4),
         shown.number(Quantity::Angle, launch.angle, 6),
         shown.number(Quantity::Spin, launch.spin, 3),
@@ -348,14 +442,31 @@ fn csv_line(line: usize, flown: &FlownToFence, shown: Shown) -> String {
         shown.number(Quantity::Distance, flight.apex, 3),
         shown.number(Quantity::Angle, flight.landing_angle, 4),
         flight.landed,
-        flown.clears_fence()
-    )
+        flown.clears_fence(),
+        quoted(park_code(job, setup)),
+        flown.clearing.outcome.name(),
+        distance(flown.clearing.margin, 3),
+        flown.parks_cleared(),
+        job.launch.estimates_spin(),
+    );
+    if statcast {
+        line += &format!(
+            ",{},{}",
+            distance(job.statcast, 2),
+            distance(difference(job, flown), 2)
+        );
+    }
+    for kept in &job.kept {
+        line.push(',');
+        line += &quoted(kept);
+    }
+    line + "\n"
 }
 
-fn json_line(line: usize, flown: &FlownToFence) -> String {
+fn json_line(job: &Job, flown: &FlownToFence, setup: &Setup) -> String {
     let (launch, flight) = (&flown.launch, &flown.flight);
-    let json = serde_json::json!({
-        "line": line,
+    let mut json = serde_json::json!({
+        "line": job.line,
         // {speed, angle, spin, direction, sidespin}, as `fly --json`.
         "launch": launch,
         "flight": {
@@ -367,7 +478,28 @@ fn json_line(line: usize, flown: &FlownToFence) -> String {
             "landed": flight.landed,
         },
         "clears_fence": flown.clears_fence(),
+        "fence": clearing_json(park_code(job, setup), &flown.clearing),
+        "parks": {
+            "cleared": flown.parks_cleared(),
+            "codes": flown.codes_cleared(setup.parks),
+        },
+        "spin_estimated": job.launch.estimates_spin(),
     });
+    if let Some(measured) = job.statcast {
+        json["statcast"] = serde_json::json!({
+            "distance": measured,
+            "difference": difference(job, flown),
+        });
+    }
+    if !job.kept.is_empty() {
+        json["kept"] = setup
+            .keep
+            .iter()
+            .zip(&job.kept)
+            .map(|(name, value)| (name.clone(), serde_json::Value::from(value.as_str())))
+            .collect::<serde_json::Map<_, _>>()
+            .into();
+    }
     json.to_string() + "\n"
 }
 
@@ -433,12 +565,14 @@ mod tests {
         };
         let reader = io::BufReader::with_capacity(4096, &mut endless);
         let fastball = crate::preset::load("fastball", None).unwrap();
+        let parks = crate::preset::parks::all(None).unwrap();
+        let setup = Setup::new(&fastball, &parks);
         let work = Work {
             what: "test",
             steps: None,
         };
         let refused = progress::run(work, |p| {
-            batch(&fastball, reader, false, Shown::default(), &mut sinks, p)
+            batch(&setup, reader, false, Shown::default(), &mut sinks, p)
         });
         assert!(refused.unwrap_err().contains("longer than 64 KiB"));
         assert!(

@@ -2,15 +2,17 @@
 //! or Statcast's own names in mph, degrees and rpm), and each row made a
 //! scene to fly, or the reason it cannot be one.
 
-use super::super::fly::fence_of;
 use crate::Scene;
+use crate::analysis::savant::RowLaunch;
 use crate::model::aero::UnknownModel;
 use crate::model::keys::{DRAG_KEY, InputBatch, InputError, TEXT_KEYS};
+use crate::model::park::GivenWeather;
 use crate::model::scene::UnknownHand;
-use crate::preset::{FIELD_KEYS, Fence, Preset, cut, escape_cut};
+use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem};
 
 use super::records::*;
+use super::savant_columns::{SavantCells, SavantColumn, Setup};
 
 /// How a column's values become a launch value in SI.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,7 +68,7 @@ pub(super) const LAUNCH_COLUMNS: [(&str, &[(&str, Unit)]); 3] = [
 /// `fly --batch`'s long help: the columns read, made from
 /// [`LAUNCH_COLUMNS`] and the keys, so that it cannot fall behind them.
 pub(in crate::cli) fn columns_help() -> String {
-    let launch: Vec<(&str, String)> = LAUNCH_COLUMNS
+    let mut launch: Vec<(&str, String)> = LAUNCH_COLUMNS
         .iter()
         .flat_map(|(key, names)| {
             names.iter().map(move |(name, unit)| {
@@ -78,6 +80,24 @@ pub(in crate::cli) fn columns_help() -> String {
             })
         })
         .collect();
+    launch.extend(
+        [
+            (
+                "hc_x, hc_y",
+                "Savant's hit coordinates: the spray angle (see --spray)",
+            ),
+            ("stand", "the batter's side, R or L (for the spin estimate)"),
+            (
+                "home_team",
+                "the park: its fence, and the standard air at its elevation",
+            ),
+            (
+                "hit_distance_sc",
+                "Statcast's distance (ft): the output adds it and the difference",
+            ),
+        ]
+        .map(|(name, meaning)| (name, meaning.to_owned())),
+    );
     let width = launch.iter().map(|(name, _)| name.len()).max().unwrap_or(0);
     let mut text = String::from(
         "A CSV of launches, one flight per row (`-` reads stdin). The header names the \
@@ -90,7 +110,9 @@ pub(in crate::cli) fn columns_help() -> String {
         "  and any other key of `homerun keys` ({DRAG_KEY}, environment.temperature, {}, …), \
          that input for the row, as --set takes it.\n\
          Statcast's launch_speed and launch_angle columns are read as they are; its \
-         release_spin_rate is the pitch's spin, not the batted ball's, and is not read. \
+         release_spin_rate is the pitch's spin, not the batted ball's, and is not read: a row \
+         without spin gets Nathan's estimate from its angle, direction and side. \
+         `null` is a missing value; a row without a launch speed is skipped. \
          Other columns are ignored (named once on stderr). A launch column not given takes \
          the preset's value for every row; an empty cell of another column, the preset's \
          value; a row whose launch cells are all empty is skipped.",
@@ -108,6 +130,8 @@ pub(super) enum Column {
     Input(&'static str),
     /// A `[field]` key (index into [`FIELD_KEYS`]).
     Field(usize),
+    /// A Savant column that is no key (hit coordinates, side, park, distance).
+    Savant(SavantColumn),
     /// Not an input: ignored (Statcast's other 80-odd columns).
     Ignored,
 }
@@ -116,6 +140,8 @@ pub(super) enum Column {
 pub(super) struct Header {
     pub(super) names: Vec<String>,
     pub(super) columns: Vec<Column>,
+    /// The columns `--keep` copies, by index (the first of a repeated name).
+    pub(super) keep: Vec<usize>,
 }
 
 impl Header {
@@ -129,6 +155,13 @@ impl Header {
                 Column::Launch(i, _) => Some(LAUNCH_COLUMNS[i].0),
                 Column::Input(key) => Some(key),
                 Column::Field(i) => Some(FIELD_KEYS[i].name),
+                // The hit coordinates give the launch direction.
+                Column::Savant(SavantColumn::HcX | SavantColumn::HcY)
+                    if names.iter().any(|n| n.trim() == "launch.direction") =>
+                {
+                    Some("launch.direction")
+                }
+                Column::Savant(c) => Some(c.name()),
                 Column::Ignored => None,
             };
             if let Some(key) = key {
@@ -143,7 +176,61 @@ impl Header {
             }
             columns.push(column);
         }
-        Ok(Header { names, columns })
+        Ok(Header {
+            names,
+            columns,
+            keep: Vec::new(),
+        })
+    }
+
+    /// Sets the columns `--keep` copies: each name must be a column (the
+    /// first of that name, if the header repeats it, as Savant's 2019
+    /// layout does `pitcher` and `fielder_2`).
+    pub(super) fn keep(&mut self, names: &[String]) -> Result<(), String> {
+        self.keep = names
+            .iter()
+            .map(|name| {
+                self.names.iter().position(|n| n == name).ok_or_else(|| {
+                    format!(
+                        "--keep {}: no column of that name in the header",
+                        escape_cut(name, 80)
+                    )
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        Ok(())
+    }
+
+    /// Whether a column is `column`.
+    pub(super) fn has(&self, column: SavantColumn) -> bool {
+        self.columns
+            .iter()
+            .any(|c| matches!(c, Column::Savant(s) if *s == column))
+    }
+
+    /// Whether a column is the key `key`.
+    pub(super) fn has_key(&self, key: &str) -> bool {
+        self.columns.iter().any(|c| match c {
+            Column::Launch(i, _) => LAUNCH_COLUMNS[*i].0 == key,
+            Column::Input(k) => *k == key,
+            _ => false,
+        })
+    }
+
+    /// The names of the columns read that are not keys of `homerun keys`:
+    /// Statcast's launch columns and the Savant ones.
+    pub(super) fn savant_used(&self) -> Vec<&str> {
+        self.names
+            .iter()
+            .zip(&self.columns)
+            .filter(|(_, c)| {
+                matches!(
+                    c,
+                    Column::Savant(_) | Column::Launch(_, Unit::Mph | Unit::Degrees | Unit::Rpm)
+                )
+            })
+            .map(|(n, _)| n.as_str())
+            .collect()
     }
 
     /// Whether any column is an input: a header with none (a file separated
@@ -193,6 +280,9 @@ pub(super) fn column_of(name: &str) -> Column {
     if let Some(index) = FIELD_KEYS.iter().position(|f| f.name == name) {
         return Column::Field(index);
     }
+    if let Some(column) = SavantColumn::of(name) {
+        return Column::Savant(column);
+    }
     if let Some(key) = TEXT_KEYS.iter().find(|k| **k == name) {
         return Column::Input(key);
     }
@@ -203,11 +293,26 @@ pub(super) fn column_of(name: &str) -> Column {
 }
 
 /// One row, ready to fly.
-#[derive(Clone, Copy)]
 pub(super) struct Job {
     pub(super) line: usize,
+    /// Its speed, angle and any spin and direction it gave; the rest is
+    /// `launch`'s to fill in.
     pub(super) scene: Scene,
+    pub(super) launch: RowLaunch,
+    /// The generic fence (the preset's, or the row's `field.*`), used when
+    /// the row is at no park.
     pub(super) fence: Fence,
+    /// The index of the row's park, if it is at one.
+    pub(super) park: Option<usize>,
+    /// Statcast's distance (m).
+    pub(super) statcast: Option<f64>,
+    /// Measured hang time (s) and apex (m), for `calibrate`.
+    pub(super) hang_time: Option<f64>,
+    pub(super) apex: Option<f64>,
+    /// The `--keep` cells, as read.
+    pub(super) kept: Vec<String>,
+    /// The air keys given, by `--set` and by the row: a park keeps them.
+    pub(super) given: GivenWeather,
 }
 
 /// What a row turned out to be. Unboxed: each is moved once, into the
@@ -219,15 +324,20 @@ pub(super) enum Row {
         line: usize,
         reason: String,
     },
-    /// Every launch column empty (in a Statcast export: a pitch not put in
-    /// play): skipped and counted, not a failure.
+    /// Every launch column empty, or no launch speed (in a Statcast export:
+    /// a pitch not put in play): skipped and counted, not a failure.
     NoLaunch,
     /// An empty line (not even a space): skipped and counted. A line of
     /// spaces or tabs is a record of one field, and fails or flies as one.
     Blank,
 }
 
-pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str) -> Row {
+/// Savant's missing value in its 2019 layout: the string `null`.
+fn is_missing(value: &str) -> bool {
+    value.is_empty() || value.eq_ignore_ascii_case("null")
+}
+
+pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str) -> Row {
     if text.is_empty() {
         return Row::Blank;
     }
@@ -244,23 +354,32 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
             header.columns.len()
         ));
     }
-    let launch_given = header
-        .columns
-        .iter()
-        .zip(&fields)
-        .filter(|(c, _)| matches!(c, Column::Launch(..)))
-        .map(|(_, v)| !v.trim().is_empty())
-        .collect::<Vec<_>>();
-    if !launch_given.is_empty() && launch_given.iter().all(|given| !given) {
+    let cell = |i: usize| {
+        let value = fields[i].trim();
+        if is_missing(value) { "" } else { value }
+    };
+    let launch_cells = || {
+        header
+            .columns
+            .iter()
+            .enumerate()
+            .filter_map(|(i, c)| matches!(c, Column::Launch(..)).then_some((*c, cell(i))))
+    };
+    let no_speed = launch_cells().any(|(c, v)| matches!(c, Column::Launch(0, _)) && v.is_empty());
+    let any_launch = launch_cells().next().is_some();
+    if no_speed || (any_launch && launch_cells().all(|(_, v)| v.is_empty())) {
         return Row::NoLaunch;
     }
-    let mut scene = base.scene;
-    let mut fence = fence_of(base);
+    let mut scene = setup.base.scene;
+    let mut fence = setup.base.fence.unwrap_or(Fence::generic());
+    let mut savant = SavantCells::default();
+    let mut given = setup.given;
+    let (mut spin_given, mut sidespin_given) = (setup.spin_given, setup.sidespin_given);
     // One row is one source: ρ beside the weather is refused.
     let mut batch = InputBatch::new();
     let mut converted = Vec::new();
-    for ((column, name), value) in header.columns.iter().zip(&header.names).zip(&fields) {
-        let value = value.trim();
+    for (i, (column, name)) in header.columns.iter().zip(&header.names).enumerate() {
+        let value = cell(i);
         let shown = escape_cut(value, 80);
         let number = || {
             value.parse::<f64>().map_err(|_| {
@@ -273,39 +392,50 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
         };
         let done = match *column {
             Column::Ignored => Ok(()),
+            // No spin: the estimate's.
+            Column::Launch(2, _) if value.is_empty() => Ok(()),
             Column::Launch(index, _) if value.is_empty() => {
                 Err(format!("{} is empty", LAUNCH_COLUMNS[index].0))
             }
             _ if value.is_empty() => Ok(()), // the preset's value
+            Column::Savant(column) => savant.read(column, value, setup.parks),
             // A launch.* cell as `--set` takes it (`103mph`).
-            Column::Launch(index, Unit::Si) => batch
-                .set_text(&mut scene, LAUNCH_COLUMNS[index].0, value)
-                .map_err(|e| e.to_string()),
+            Column::Launch(index, Unit::Si) => {
+                spin_given |= index == 2;
+                batch
+                    .set_text(&mut scene, LAUNCH_COLUMNS[index].0, value)
+                    .map_err(|e| e.to_string())
+            }
             // Statcast's own columns: a bare number in their unit.
             Column::Launch(index, unit) => number().and_then(|v| {
                 converted.push(format!("{name} = {shown} {}", unit.name()));
+                spin_given |= index == 2;
                 batch
                     .set(&mut scene, LAUNCH_COLUMNS[index].0, unit.to_si(v))
                     .map_err(|e| e.to_string())
             }),
             // The whole value is parsed; only the error's copy is cut.
-            Column::Input(key) => batch
-                .set_text(&mut scene, key, value)
-                .map_err(|e| match e {
-                    InputError::NotANumber { key, text } => InputError::NotANumber {
-                        key,
-                        text: cut(&text, 80),
-                    },
-                    InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
-                        text: cut(&model.text, 80),
-                        ..model
-                    }),
-                    InputError::UnknownHand(hand) => InputError::UnknownHand(UnknownHand {
-                        text: cut(&hand.text, 80),
-                    }),
-                    e => e,
-                })
-                .map_err(|e| e.to_string()),
+            Column::Input(key) => {
+                given.note(key);
+                sidespin_given |= key == "launch.sidespin";
+                batch
+                    .set_text(&mut scene, key, value)
+                    .map_err(|e| match e {
+                        InputError::NotANumber { key, text } => InputError::NotANumber {
+                            key,
+                            text: cut(&text, 80),
+                        },
+                        InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
+                            text: cut(&model.text, 80),
+                            ..model
+                        }),
+                        InputError::UnknownHand(hand) => InputError::UnknownHand(UnknownHand {
+                            text: cut(&hand.text, 80),
+                        }),
+                        e => e,
+                    })
+                    .map_err(|e| e.to_string())
+            }
             Column::Field(index) => {
                 let key = &FIELD_KEYS[index];
                 key.read(value)
@@ -317,6 +447,10 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
             return bad(reason);
         }
     }
+    let park = setup.park.or(savant.park);
+    if let Some(index) = park {
+        super::super::ground::to_park(&mut scene, &setup.parks.parks[index], given);
+    }
     if let Err(e) = scene.validate() {
         let from = if converted.is_empty() {
             String::new()
@@ -325,5 +459,26 @@ pub(super) fn parse_row(header: &Header, base: &Preset, line: usize, text: &str)
         };
         return bad(format!("{e}{from}"));
     }
-    Row::Job(Job { line, scene, fence })
+    let launch = RowLaunch {
+        spray: savant
+            .spray()
+            .filter(|_| !header.has_key("launch.direction")),
+        side: savant.side,
+        // A row that gives its backspin has its spin: only a row without
+        // one is filled, both parts (a sidespin given is kept).
+        estimate_backspin: !spin_given,
+        estimate_sidespin: !spin_given && !sidespin_given,
+    };
+    Row::Job(Job {
+        line,
+        scene,
+        launch,
+        fence,
+        park,
+        statcast: savant.distance,
+        hang_time: savant.hang_time,
+        apex: savant.apex,
+        kept: header.keep.iter().map(|&i| fields[i].clone()).collect(),
+        given,
+    })
 }

@@ -8,6 +8,7 @@
 
 use nalgebra::Vector3;
 
+use super::planar::scaled;
 use super::{Dynamics, Regime, time_limit};
 use crate::model::aero::{DragCurve, DragModel, LiftCurve, LiftModel};
 use crate::model::frame;
@@ -46,8 +47,11 @@ pub struct Flight3d {
     pub force_per_mass: f64,
     /// 2r_b/ν (Eq. 27).
     pub reynolds_per_speed: f64,
-    /// ω̂, the spin's direction (zero without spin): fixed in space.
+    /// ω̂, the spin's direction (zero without spin), fixed in space, times
+    /// `model.lift_scale` (folded in: at 1 every bit is as it was).
     pub spin_axis: Vector3<f64>,
+    /// `model.drag_scale`, on C_D (see `planar::scaled`).
+    pub drag_scale: f64,
     /// |ω| at launch (rad/s), and r_b·|ω| (m/s).
     pub spin_rate: f64,
     pub surface_speed: f64,
@@ -73,10 +77,11 @@ impl Flight3d {
             force_per_mass: planar.force_per_mass,
             reynolds_per_speed: planar.reynolds_per_speed,
             spin_axis: if spin_rate > 0.0 {
-                spin / spin_rate
+                spin / spin_rate * scene.lift_scale
             } else {
                 Vector3::zeros()
             },
+            drag_scale: scene.drag_scale,
             spin_rate,
             surface_speed: scene.ball.radius * spin_rate,
             spin_decay_rate: planar.spin_decay_rate,
@@ -117,7 +122,10 @@ impl Flight3d {
         let air_speed = rel.norm();
         let re = air_speed * self.reynolds_per_speed;
         let piece = regime.piece.unwrap_or_else(|| self.drag.piece(re));
-        let drag_coefficient = self.drag.coefficient_on(piece, re, spin_rate);
+        let drag_coefficient = scaled(
+            self.drag.coefficient_on(piece, re, spin_rate),
+            self.drag_scale,
+        );
         // ω̂ × (V_b − V_w) = ω̂ × (−V_r) = V_r × ω̂, scaled by |V_r|.
         let lift_direction = rel.cross(&self.spin_axis);
         let lift = self.lift.coefficient_times_speed(air_speed, surface_speed);
@@ -129,8 +137,10 @@ impl Flight3d {
     /// C_D at time `t` and `velocity`, in or out of the wind.
     pub fn drag_coefficient_at(&self, t: f64, velocity: Vector3<f64>, in_wind: bool) -> f64 {
         let re = (self.wind_in(in_wind) - velocity).norm() * self.reynolds_per_speed;
-        self.drag
-            .coefficient_on(self.drag.piece(re), re, self.spin_at(t).0)
+        let cd = self
+            .drag
+            .coefficient_on(self.drag.piece(re), re, self.spin_at(t).0);
+        scaled(cd, self.drag_scale)
     }
 }
 

@@ -20,8 +20,8 @@ mod typed;
 
 pub use batch::InputBatch;
 pub use table::{
-    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, EXTENDED_KEYS, HAND_KEY, KEYS, LAUNCH_KEYS, LIFT_KEY,
-    SWING_3D_KEYS, TEXT_KEYS, all_keys, swing_keys,
+    AIR_KEYS, ATMOSPHERE_KEYS, CALIBRATION_KEYS, DRAG_KEY, EXTENDED_KEYS, HAND_KEY, KEYS,
+    LAUNCH_KEYS, LIFT_KEY, SWING_3D_KEYS, TEXT_KEYS, all_keys, swing_keys,
 };
 pub use typed::{Typed, read_typed};
 

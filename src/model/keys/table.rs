@@ -430,9 +430,38 @@ pub const LAUNCH_KEYS: &[Key] = &[
     ),
 ];
 
-/// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`], then [`LAUNCH_KEYS`].
+/// Factors on the drag and lift coefficients, for fitting a model to
+/// measured flights (`homerun calibrate`); 1 is the model as published.
+/// Kept apart from [`EXTENDED_KEYS`] so that the explorer's rows stay as
+/// they are; `homerun keys`, `--set`, presets and batch columns take them.
+pub const CALIBRATION_KEYS: &[Key] = &[
+    key!(
+        "model.drag_scale",
+        "k_D",
+        "",
+        "factor on C_D (1: the model as published; homerun calibrate fits it)",
+        Bounds::closed(0.3, 3.0),
+        "From a third to three times the model's: a season's ball differs from another's by a few per cent in drag (the 2019 \"juiced\" ball was put at 3–5 % less), a wrong model by tens of per cent; outside these a fit is telling of bad data, not of a ball. Above 0, since no drag is another model (a vacuum), not a scale of this one.",
+        0.01,
+        drag_scale
+    ),
+    key!(
+        "model.lift_scale",
+        "k_L",
+        "",
+        "factor on C_L (1: the model as published; homerun calibrate fits it where apex or hang time is measured)",
+        Bounds::closed(0.0, 3.0),
+        "As the drag's, from 0: lift can be switched off (model.lift = none says so more plainly).",
+        0.01,
+        lift_scale
+    ),
+];
+
+/// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`], then
+/// [`LAUNCH_KEYS`], then [`CALIBRATION_KEYS`] (last, so that the explorer's
+/// indices into the others stay).
 pub fn all_keys() -> impl Iterator<Item = &'static Key> {
-    swing_keys().chain(LAUNCH_KEYS)
+    swing_keys().chain(LAUNCH_KEYS).chain(CALIBRATION_KEYS)
 }
 
 /// The numeric inputs of a swing scene: all but the launch, which a swing

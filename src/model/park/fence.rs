@@ -34,6 +34,10 @@ pub struct FenceAt {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Fence {
     points: Vec<FencePoint>,
+    /// The shortest distance to the wall (m): a ball nearer the plate has
+    /// not reached it, whatever its direction (one comparison per step
+    /// when a flight is tested against many fences).
+    nearest: f64,
 }
 
 /// Why a list of points is not a fence (the parser names the park and field).
@@ -126,7 +130,7 @@ impl Fence {
         let n = points.len();
         points[0].direction = -FOUL_LINE;
         points[n - 1].direction = FOUL_LINE;
-        Ok(Fence { points })
+        Ok(Fence::of(points))
     }
 
     /// The same distance and height in every fair direction: the generic
@@ -137,8 +141,38 @@ impl Fence {
             distance,
             height,
         };
-        Fence {
-            points: vec![point(-FOUL_LINE), point(FOUL_LINE)],
+        Fence::of(vec![point(-FOUL_LINE), point(FOUL_LINE)])
+    }
+
+    fn of(points: Vec<FencePoint>) -> Fence {
+        let nearest = points
+            .iter()
+            .map(|p| p.distance)
+            .fold(f64::INFINITY, f64::min);
+        Fence { points, nearest }
+    }
+
+    /// The shortest distance from home plate to the wall (m).
+    pub fn nearest(&self) -> f64 {
+        self.nearest
+    }
+
+    /// The wall's distance (m) in `direction` and its rate of change with
+    /// the direction (m/rad), the fence continued past each foul pole at
+    /// the pole's distance: a function of every direction, so that a root
+    /// finder can follow a ground track that leaves fair territory (the
+    /// crossing's direction then says foul). Where the distance jumps (a
+    /// jog at one direction) the slope is the right-hand side's.
+    pub fn reach(&self, direction: f64) -> (f64, f64) {
+        let fair = direction.clamp(-FOUL_LINE, FOUL_LINE);
+        let (a, b) = self.segment(fair);
+        let span = b.direction - a.direction;
+        if span > 0.0 {
+            let slope = (b.distance - a.distance) / span;
+            let distance = a.distance + slope * (fair - a.direction);
+            (distance, if fair == direction { slope } else { 0.0 })
+        } else {
+            (b.distance, 0.0)
         }
     }
 
@@ -154,12 +188,7 @@ impl Fence {
         if !(-FOUL_LINE..=FOUL_LINE).contains(&direction) {
             return None;
         }
-        let points = &self.points;
-        // The first point past `direction`; at a step, the right-hand side.
-        let after = points
-            .partition_point(|p| p.direction <= direction)
-            .clamp(1, points.len() - 1);
-        let (a, b) = (points[after - 1], points[after]);
+        let (a, b) = self.segment(direction);
         let span = b.direction - a.direction;
         let t = if span > 0.0 {
             ((direction - a.direction) / span).clamp(0.0, 1.0)
@@ -170,6 +199,17 @@ impl Fence {
             distance: a.distance + t * (b.distance - a.distance),
             height: a.height + t * (b.height - a.height),
         })
+    }
+
+    /// The two points around `direction` (in [−π/4, π/4]); at a step, the
+    /// pair that starts there (the right-hand side).
+    fn segment(&self, direction: f64) -> (FencePoint, FencePoint) {
+        let points = &self.points;
+        // The first point past `direction`.
+        let after = points
+            .partition_point(|p| p.direction <= direction)
+            .clamp(1, points.len() - 1);
+        (points[after - 1], points[after])
     }
 
     /// The wall's distance from home plate in `direction` (m); `None` foul.

@@ -4,11 +4,13 @@
 //! docs/parks.md), parsed once on first use. Users' own park files are read
 //! by [`crate::preset::parks`].
 
+mod air;
 mod fence;
 mod parse;
 
 use std::sync::LazyLock;
 
+pub use air::GivenWeather;
 pub use fence::{FOUL_LINE, Fence, FenceAt, FenceError, FencePoint};
 pub use parse::{ParkError, parse};
 

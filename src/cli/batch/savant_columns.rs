@@ -1,0 +1,322 @@
+//! A Baseball Savant export read as it comes: the columns beyond the launch
+//! that `fly --batch` reads (the hit coordinates, the batter's side, the
+//! park, Statcast's distance), what every row shares (the parks, the
+//! command line's choices), and the one summary line said at the end.
+
+use crate::analysis::savant::{Spray, spray_angle};
+use crate::cli::UsageError;
+use crate::model::park::{self, GivenWeather};
+use crate::model::spin_estimate::Side;
+use crate::preset::parks::Parks;
+use crate::preset::{Preset, cut, escape_cut};
+
+use super::rows::{Header, Job};
+
+/// Exactly 0.3048 m to the foot (Statcast's distances are in feet).
+const METRES_PER_FOOT: f64 = 0.3048;
+
+/// A Savant column that is no key: read for what it says of the row.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum SavantColumn {
+    /// Hit coordinates: with `hc_y`, the spray angle.
+    HcX,
+    HcY,
+    /// The batter's side, R or L.
+    Stand,
+    /// The home team's code: the park.
+    HomeTeam,
+    /// Statcast's projected distance (ft).
+    Distance,
+    /// Measured hang time (s) and apex (ft), for `calibrate`'s lift.
+    HangTime,
+    Apex,
+}
+
+impl SavantColumn {
+    pub(super) const ALL: [(&'static str, SavantColumn); 7] = [
+        ("hc_x", SavantColumn::HcX),
+        ("hc_y", SavantColumn::HcY),
+        ("stand", SavantColumn::Stand),
+        ("home_team", SavantColumn::HomeTeam),
+        ("hit_distance_sc", SavantColumn::Distance),
+        ("hang_time", SavantColumn::HangTime),
+        ("apex", SavantColumn::Apex),
+    ];
+
+    pub(super) fn of(name: &str) -> Option<SavantColumn> {
+        Self::ALL.iter().find(|(n, _)| *n == name).map(|(_, c)| *c)
+    }
+
+    pub(super) fn name(self) -> &'static str {
+        Self::ALL
+            .iter()
+            .find(|(_, c)| *c == self)
+            .map_or("", |(n, _)| n)
+    }
+}
+
+/// What every row of a batch shares.
+pub(in crate::cli) struct Setup<'a> {
+    pub base: &'a Preset,
+    /// Every park: a row's `home_team` is looked up here, and every flight
+    /// is judged at each of their fences.
+    pub parks: &'a Parks,
+    /// The parks' fences, in `parks`' order.
+    pub fences: Vec<&'a park::Fence>,
+    /// `--park`: the index of the park every row is taken to, whatever its
+    /// `home_team`.
+    pub park: Option<usize>,
+    /// The air keys `--set` gave: a park does not replace them.
+    pub given: GivenWeather,
+    /// Whether `--set` gave `launch.spin`, `launch.sidespin`: then no row's
+    /// is estimated.
+    pub spin_given: bool,
+    pub sidespin_given: bool,
+    pub spray: Spray,
+    /// `--own-air`: each park counted in its own air (a flight per park).
+    pub own_air: bool,
+    /// `--keep`'s column names.
+    pub keep: Vec<String>,
+}
+
+impl<'a> Setup<'a> {
+    /// The setup a command line gives: its `--set` list's air and spin keys,
+    /// and `--park`'s park.
+    pub fn for_command(
+        base: &'a Preset,
+        parks: &'a Parks,
+        set: &[String],
+        park: Option<&str>,
+    ) -> Result<Setup<'a>, UsageError> {
+        let mut setup = Setup::new(base, parks);
+        setup.given = super::super::ground::given_weather(set);
+        let keys: Vec<&str> = set
+            .iter()
+            .filter_map(|a| a.split_once('=').map(|(k, _)| k.trim()))
+            .collect();
+        setup.spin_given = keys.contains(&"launch.spin");
+        setup.sidespin_given = keys.contains(&"launch.sidespin");
+        if let Some(code) = park {
+            let found = parks
+                .parks
+                .iter()
+                .position(|p| p.answers_to(code.trim()))
+                .ok_or_else(|| super::super::parks::unknown(code, parks))?;
+            setup.park = Some(found);
+        }
+        Ok(setup)
+    }
+
+    pub fn new(base: &'a Preset, parks: &'a Parks) -> Setup<'a> {
+        Setup {
+            base,
+            parks,
+            fences: parks.parks.iter().map(|p| &p.fence).collect(),
+            park: None,
+            given: GivenWeather::default(),
+            spin_given: false,
+            sidespin_given: false,
+            spray: Spray::Landing,
+            own_air: false,
+            keep: Vec::new(),
+        }
+    }
+}
+
+/// What a row's Savant cells say.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(super) struct SavantCells {
+    pub hc_x: Option<f64>,
+    pub hc_y: Option<f64>,
+    pub side: Option<Side>,
+    /// The index of the row's park in the list.
+    pub park: Option<usize>,
+    /// Statcast's distance (m).
+    pub distance: Option<f64>,
+    /// Hang time (s) and apex (m).
+    pub hang_time: Option<f64>,
+    pub apex: Option<f64>,
+}
+
+impl SavantCells {
+    /// Reads one (trimmed, non-empty, not "null") cell.
+    pub(super) fn read(
+        &mut self,
+        column: SavantColumn,
+        value: &str,
+        parks: &Parks,
+    ) -> Result<(), String> {
+        let number = || {
+            value
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| format!("{} = {:?}: not a number", column.name(), cut(value, 80)))
+        };
+        match column {
+            SavantColumn::HcX => self.hc_x = Some(number()?),
+            SavantColumn::HcY => self.hc_y = Some(number()?),
+            SavantColumn::Distance => self.distance = Some(number()? * METRES_PER_FOOT),
+            SavantColumn::HangTime => self.hang_time = Some(number()?),
+            SavantColumn::Apex => self.apex = Some(number()? * METRES_PER_FOOT),
+            SavantColumn::Stand => {
+                self.side = Some(match value {
+                    "R" | "r" => Side::Right,
+                    "L" | "l" => Side::Left,
+                    _ => {
+                        return Err(format!(
+                            "stand = {:?}: expected R or L (the batter's side)",
+                            cut(value, 80)
+                        ));
+                    }
+                });
+            }
+            SavantColumn::HomeTeam => {
+                let park = parks.parks.iter().position(|p| p.answers_to(value));
+                self.park = Some(park.ok_or_else(|| {
+                    format!(
+                        "home_team = {:?}: no park has that code (`homerun parks` lists them)",
+                        escape_cut(value, 20)
+                    )
+                })?);
+            }
+        }
+        Ok(())
+    }
+
+    /// The spray angle (rad), if the row has both hit coordinates.
+    pub(super) fn spray(&self) -> Option<f64> {
+        Some(spray_angle(self.hc_x?, self.hc_y?))
+    }
+}
+
+/// A field for CSV output, quoted as RFC 4180 asks when it holds a comma, a
+/// quote or a line break (and when it starts or ends with a space, which
+/// some readers would trim).
+pub(super) fn quoted(field: &str) -> String {
+    let needs =
+        field.contains([',', '"', '\n', '\r']) || field.starts_with(' ') || field.ends_with(' ');
+    if needs {
+        format!("\"{}\"", field.replace('"', "\"\""))
+    } else {
+        field.to_owned()
+    }
+}
+
+/// What the batch used and skipped, said in one line at the end.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Summary {
+    /// Rows flown with an estimated spin.
+    pub estimated: usize,
+    /// Rows flown whose direction came from a spray angle.
+    pub sprayed: usize,
+    /// Rows flown without hit coordinates (though the header has them).
+    pub without_spray: usize,
+    /// Flights spent solving launch directions.
+    pub solve_flights: usize,
+    /// Rows flown at each park (by index), and at the generic fence.
+    pub at_park: Vec<usize>,
+    pub at_generic: usize,
+    /// Rows skipped for having no launch speed.
+    pub without_speed: usize,
+}
+
+impl Summary {
+    pub(super) fn new(parks: usize) -> Summary {
+        Summary {
+            at_park: vec![0; parks],
+            ..Summary::default()
+        }
+    }
+
+    /// Counts a row flown, whose direction took `flights` to solve.
+    pub(super) fn count(&mut self, job: &Job, header: &Header, flights: usize) {
+        self.estimated += usize::from(job.launch.estimates_spin());
+        if job.launch.spray.is_some() {
+            self.sprayed += 1;
+            self.solve_flights += flights;
+        } else if header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY) {
+            self.without_spray += 1;
+        }
+        match job.park {
+            Some(index) => self.at_park[index] += 1,
+            None => self.at_generic += 1,
+        }
+    }
+
+    /// "read launch_speed, …; spin estimated (Nathan's relation) on 239 of
+    /// 239 rows; …": the line's text, if there is anything to say.
+    pub(super) fn line(&self, used: &[&str], flown: usize, setup: &Setup) -> Option<String> {
+        let mut parts = Vec::new();
+        if !used.is_empty() {
+            parts.push(format!("read {}", used.join(", ")));
+        }
+        if self.estimated > 0 {
+            parts.push(format!(
+                "spin estimated (Nathan's relation) on {} of {flown} rows",
+                self.estimated
+            ));
+        }
+        if self.sprayed > 0 {
+            parts.push(match setup.spray {
+                Spray::Landing => format!(
+                    "spray taken as the landing bearing on {} rows (launch direction solved, {:.1} flights a row)",
+                    self.sprayed,
+                    self.solve_flights as f64 / self.sprayed as f64
+                ),
+                Spray::Launch => {
+                    format!("spray taken as the launch direction on {} rows", self.sprayed)
+                }
+            });
+        }
+        if self.without_spray > 0 {
+            parts.push(format!(
+                "{} rows without hit coordinates flown toward the preset's direction",
+                self.without_spray
+            ));
+        }
+        let parks = self.at_park.iter().filter(|&&n| n > 0).count();
+        if parks > 0 {
+            let how = if setup.park.is_some() {
+                "--park"
+            } else {
+                "home_team"
+            };
+            let air = if setup.given.any() {
+                "the air given"
+            } else {
+                "each in the standard air at its elevation"
+            };
+            parts.push(format!(
+                "{parks} park{} from {how}, {air}",
+                if parks == 1 { "" } else { "s" }
+            ));
+        }
+        if self.at_generic > 0 && parks > 0 {
+            parts.push(format!("{} rows at the generic fence", self.at_generic));
+        }
+        if self.without_speed > 0 {
+            parts.push(format!(
+                "skipped {} row{} without a launch speed (not batted balls)",
+                self.without_speed,
+                if self.without_speed == 1 { "" } else { "s" }
+            ));
+        }
+        (!parts.is_empty()).then(|| parts.join("; "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kept_fields_are_quoted_as_rfc_4180_asks() {
+        assert_eq!(quoted("Target Field"), "Target Field");
+        assert_eq!(quoted("homers, to left"), "\"homers, to left\"");
+        assert_eq!(quoted("say \"hi\""), "\"say \"\"hi\"\"\"");
+        assert_eq!(quoted("two\nlines"), "\"two\nlines\"");
+        assert_eq!(quoted("trailing "), "\"trailing \"");
+        assert_eq!(quoted(""), "");
+    }
+}
