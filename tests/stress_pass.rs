@@ -447,7 +447,7 @@ fn f7_every_record_line_is_counted() {
     let (status, _, err) = batch(dir.path(), "launch_speed\n \n100\n");
     assert_eq!(status, Some(0), "{err}");
     assert!(
-        err.contains("1 row with every launch column empty (pitches not put in play) skipped"),
+        err.contains("skipped 1 row without a launch speed (not batted balls)"),
         "{err}"
     );
 }
