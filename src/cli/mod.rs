@@ -20,6 +20,8 @@ mod svg_file;
 mod table;
 mod table2;
 mod usage;
+mod usage_error;
+pub use usage_error::{UsageError, WindowFault};
 
 use std::io::{IsTerminal as _, Write as _};
 use std::path::PathBuf;
@@ -27,11 +29,7 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
-use crate::analysis::figures::FigureError;
-use crate::analysis::study::SweepError;
-use crate::model::keys::{InputError, Key};
 use crate::preset::{self, Preset};
-use crate::tui::TuiError;
 use crate::tui::theme::Background;
 use crate::units::UnitSystem;
 use shown::Shown;
@@ -320,109 +318,6 @@ impl From<SprayArg> for crate::analysis::savant::Spray {
             SprayArg::Launch => crate::analysis::savant::Spray::Launch,
         }
     }
-}
-
-/// A failure the user can fix: printed as one line, exit status 2.
-#[derive(Debug, thiserror::Error)]
-pub enum UsageError {
-    #[error(transparent)]
-    Preset(#[from] preset::PresetError),
-    #[error(transparent)]
-    Input(#[from] InputError),
-    #[error(transparent)]
-    Sweep(#[from] SweepError),
-    #[error(transparent)]
-    Figure(#[from] FigureError),
-    #[error(transparent)]
-    Tui(#[from] TuiError),
-    #[error("--set {assignment:?}: expected KEY=VALUE, e.g. bat.speed=32")]
-    BadAssignment { assignment: String },
-    #[error("--steps {steps}: must be a whole number in [1, {max}]", max = MAX_STEPS)]
-    BadSteps { steps: usize },
-    #[error("{flag} {value}: {} must be a finite number in {accepted}", .key.name)]
-    BadBound {
-        flag: &'static str,
-        value: f64,
-        key: &'static Key,
-        /// The key's range in the units the value was given in.
-        accepted: String,
-    },
-    /// More work than the command's budget; `detail` says how much and what fits.
-    #[error("{flag} {text}: {detail}")]
-    TooMuchWork {
-        flag: &'static str,
-        text: String,
-        detail: String,
-    },
-    #[error("{flag} \"{text}\": {length} bytes, longer than any path can be ({max} bytes)")]
-    TooLong {
-        flag: &'static str,
-        text: String,
-        length: usize,
-        max: usize,
-    },
-    /// A command line clap refused, in one line.
-    #[error("{0}")]
-    CommandLine(String),
-    #[error("--samples {samples}: must be a whole number in [2, {max}]", max = hit::MAX_SAMPLES)]
-    BadSamples { samples: usize },
-    #[error(
-        "{flag} {text:?}: {fault}; expected A..B with finite A < B in {accepted}, e.g. {example}"
-    )]
-    BadWindow {
-        flag: &'static str,
-        text: String,
-        fault: WindowFault,
-        /// The accepted interval, with its unit.
-        accepted: String,
-        example: &'static str,
-    },
-    #[error(
-        "--grid {text:?}: expected NxM, columns (undercut) x rows (swing angle), each an integer in [1, {max}], e.g. 21x17",
-        max = MAX_GRID
-    )]
-    BadGrid { text: String },
-    #[error("this command opens the explorer; it is not a headless command")]
-    NotHeadless,
-    #[error("writing the output: {0}")]
-    Output(#[source] std::io::Error),
-    #[error(transparent)]
-    Picture(#[from] crate::picture::PictureError),
-    /// An SVG that cannot be written where asked: the path and why.
-    #[error("--svg {path}: {reason}")]
-    SvgFile { path: String, reason: String },
-    #[error(
-        "{command} needs a swing scene (pitch → impact → flight), and preset {preset} with these --set is a batted ball (it gives launch.*): fly it with `homerun fly` or `homerun trajectory`"
-    )]
-    NotASwing {
-        command: &'static str,
-        preset: String,
-    },
-    #[error(
-        "{0}: a launch key makes a batted ball, which has no swing to optimise; to fly many launches use `homerun fly --batch`"
-    )]
-    LaunchSwept(&'static str),
-    #[error("--batch {input}: {message}")]
-    Batch { input: String, message: String },
-    #[error("no park with code {code:?}; the parks: {accepted}")]
-    UnknownPark { code: String, accepted: String },
-    #[error("standard output is closed: nothing could be written (give it a file or a pipe)")]
-    StdoutClosed,
-}
-
-/// What is wrong with an A..B window.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum WindowFault {
-    #[error("no `..`")]
-    NoDots,
-    #[error("{0:?} is not a number")]
-    NotANumber(String),
-    #[error("not finite")]
-    NotFinite,
-    #[error("A must be below B")]
-    Reversed,
-    #[error("out of range")]
-    OutOfRange,
 }
 
 /// The user's preset folder: `--presets-dir` or the XDG default.

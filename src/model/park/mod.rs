@@ -2,7 +2,7 @@
 //! fence. The 30 MLB parks are bundled from `data/parks.toml` (built by
 //! `scripts/parks/regenerate.py`; sources, vintage and format in
 //! docs/parks.md), parsed once on first use. Users' own park files are read
-//! by [`crate::preset::parks`].
+//! by `preset::parks` (a frontend: the model reads no files).
 
 mod air;
 mod fence;
