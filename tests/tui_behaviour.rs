@@ -1123,3 +1123,39 @@ fn cell(map: &FieldMap, x: f64, z: f64) -> (u16, u16) {
     let row = ((map.x[1] - x) * dots_x / (map.x[1] - map.x[0])).round() as u16 / 4;
     (plot.x + column, plot.y + row)
 }
+
+/// `m` picks a ballpark: the field draws its fence, the side view its wall
+/// where the ball crosses, and the readout says what the ball does there and
+/// in how many parks it clears, as judging each park's fence apart does.
+#[test]
+fn m_picks_a_park_and_the_readout_judges_the_ball_there() {
+    use homerun::model::park;
+    let mut app = app_on("fly-ball", 80, 24, None);
+    settle(&mut app);
+    let (flight, _, _) = homerun::model::launch::scene_start(&app.scene);
+    let options = Purpose::Readout.flight_options();
+    let cleared = park::bundled()
+        .iter()
+        .filter(|p| flight.judge(&options, &[&p.fence]).1[0].clears())
+        .count();
+    let at = app.at_parks.unwrap();
+    assert_eq!((at.cleared, at.of), (cleared, 30));
+    assert!(screen(&app).contains(&format!("clears {cleared} of 30 parks")));
+    key(&mut app, KeyCode::Char('m'));
+    let first = &park::bundled()[0];
+    assert_eq!(app.park, Some(0));
+    assert_eq!(app.field_fence().unwrap(), first.fence);
+    let here = app.at_parks.unwrap().here.unwrap();
+    assert_eq!(here, flight.judge(&options, &[&first.fence]).1[0]);
+    let wall = here.wall.unwrap();
+    assert_eq!(app.side_fence(), Some((wall.distance, wall.height)));
+    assert!(
+        screen(&app).contains(&format!("{} ", first.code)),
+        "{}",
+        screen(&app)
+    );
+    // Back past the first park: none, the preset's fence again.
+    key(&mut app, KeyCode::Char('M'));
+    assert_eq!(app.park, None);
+    assert!(app.at_parks.unwrap().here.is_none());
+}

@@ -10,6 +10,7 @@ use ratatui_textarea::TextArea;
 mod edit;
 mod export;
 mod field;
+pub use field::AtParks;
 mod figures;
 mod mouse;
 mod presets;
@@ -202,6 +203,11 @@ pub struct App {
     pub flown: Flown,
     /// The ball's height (m) where it passes the fence, if it gets there.
     pub fence_height: Option<f64>,
+    /// The park chosen (`m`/`M`), an index into `park::bundled()`: its
+    /// fence replaces the preset's in the field and the side view.
+    pub park: Option<usize>,
+    /// The current flight judged at every park, and at the one chosen.
+    pub at_parks: Option<AtParks>,
     /// The current flight's path (distance from the plate, height), sampled
     /// at the plot's resolution.
     pub path: Vec<(f64, f64)>,
@@ -291,6 +297,8 @@ impl App {
             size,
             flown,
             fence_height: None,
+            park: None,
+            at_parks: None,
             path: Vec::new(),
             ground: Vec::new(),
             optimum: None,
@@ -382,6 +390,7 @@ impl App {
         self.inputs_changed = false;
         self.dirty = true;
         self.flown = fly_scene(&self.scene, Purpose::Readout);
+        self.at_parks = Some(self.judge_parks());
         self.fence_height = self
             .fence
             .and_then(|fence| height_at_distance(&self.scene, fence.distance, Purpose::Readout).1);
@@ -638,6 +647,9 @@ impl App {
                 ));
             }
             Action::Unpin => self.pin = None,
+            Action::NextPark | Action::PreviousPark => {
+                self.cycle_park(action == Action::NextPark);
+            }
             Action::NextTab | Action::PreviousTab => {
                 let n = Tab::ALL.len();
                 let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);

@@ -54,6 +54,10 @@ pub enum Action {
     /// Keep the current scene to compare with.
     Pin,
     Unpin,
+    /// The next / previous park: its fence in the field and the side view,
+    /// its verdict in the readout.
+    NextPark,
+    PreviousPark,
     NextTab,
     PreviousTab,
     ShowTab(Tab),
@@ -229,6 +233,10 @@ pub const KEYMAP: &[Row] = &[
     row(
         &[ch('p', Pin), ch('P', Unpin)],
         "pin the scene to compare with / clear the pin",
+    ),
+    row(
+        &[ch('m', NextPark), ch('M', PreviousPark)],
+        "next / previous ballpark (its fence; none: the preset's)",
     ),
     row(
         &[

@@ -12,6 +12,15 @@ use crate::model::park;
 use crate::tui::format::on_step;
 use crate::tui::layout::FieldMap;
 
+/// The current flight at the parks: how many it clears, and what it does
+/// at the one chosen.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AtParks {
+    pub cleared: usize,
+    pub of: usize,
+    pub here: Option<crate::model::clearing::Clearing>,
+}
+
 /// The key a click on the field sets.
 pub const DIRECTION: &str = "launch.direction";
 
@@ -22,11 +31,61 @@ impl App {
         self.ground.iter().chain(&self.optimal_ground).chain(pinned)
     }
 
-    /// The fence from above. Today the preset's generic fence, the same in
-    /// every direction; a park's fence (per direction) fits the same place.
+    /// The fence from above: the chosen park's, else the preset's generic
+    /// fence, the same in every direction.
     pub fn field_fence(&self) -> Option<park::Fence> {
+        if let Some(k) = self.park {
+            return park::bundled().get(k).map(|p| p.fence.clone());
+        }
         self.fence
             .map(|f| park::Fence::uniform(f.distance, f.height))
+    }
+
+    /// The fence the side view draws, (distance, height) in m: the chosen
+    /// park's wall where the ball's track crosses it (or toward its
+    /// landing), else the preset's fence.
+    pub fn side_fence(&self) -> Option<(f64, f64)> {
+        if self.park.is_some() {
+            let wall = self.at_parks.as_ref()?.here?.wall?;
+            return Some((wall.distance, wall.height));
+        }
+        self.fence.map(|f| (f.distance, f.height))
+    }
+
+    /// The current flight judged at every bundled park: one flight, each
+    /// park's fence (in the scene's own air, as `fly`'s count).
+    pub fn judge_parks(&self) -> AtParks {
+        let parks = park::bundled();
+        let fences: Vec<&park::Fence> = parks.iter().map(|p| &p.fence).collect();
+        let (flight, _, _) = scene_start(&self.scene);
+        let (_, clearings) = flight.judge(&Purpose::Readout.flight_options(), &fences);
+        AtParks {
+            cleared: clearings.iter().filter(|c| c.clears()).count(),
+            of: parks.len(),
+            here: self.park.and_then(|k| clearings.get(k).copied()),
+        }
+    }
+
+    /// `m`/`M`: the next or previous park, through "none" (the preset's
+    /// fence) at either end.
+    pub(super) fn cycle_park(&mut self, forward: bool) {
+        let n = park::bundled().len();
+        self.park = match (self.park, forward) {
+            (None, true) => Some(0),
+            (None, false) => n.checked_sub(1),
+            (Some(k), true) => (k + 1 < n).then_some(k + 1),
+            (Some(k), false) => k.checked_sub(1),
+        };
+        self.at_parks = Some(self.judge_parks());
+        self.dirty = true;
+        let text = match self.park.and_then(|k| park::bundled().get(k)) {
+            Some(p) => format!(
+                "park: {} ({}), its fence drawn (m/M: the next)",
+                p.code, p.name
+            ),
+            None => "park: none, the preset's fence (m/M: a park)".to_owned(),
+        };
+        self.message = Some((text, false));
     }
 
     /// The field view's scale in `pane`: the fence and every track with a

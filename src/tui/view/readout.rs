@@ -327,11 +327,17 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     if batted && flight.landed {
         lines.push(landing.clone());
     }
-    if let Some(fence) = app.fence {
+    if let Some(fence) = app.fence.filter(|_| app.park.is_none()) {
         // Whether it clears, in the command line's words.
         let unit = app.unit(Quantity::Distance);
         let text = fence_text(fence.distance, fence.height, app.fence_height, unit);
         lines.push(Line::from(vec![label("fence"), Span::raw(text)]));
+    }
+    if let Some(at) = &app.at_parks {
+        lines.push(Line::from(vec![
+            label("parks"),
+            Span::raw(parks_text(app, at)),
+        ]));
     }
     // A batted ball's readout has room for the given air too, and for the
     // models in force (Nathan's unless chosen: not the swing's).
@@ -395,4 +401,25 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             .wrap(ratatui::widgets::Wrap { trim: false }),
         area,
     );
+}
+
+/// "clears 26 of 30 parks", or with a park chosen "BOS clears by 8.6 m;
+/// 26/30 parks" (off the wall by, short by, foul), in the units shown.
+fn parks_text(app: &App, at: &crate::tui::app::AtParks) -> String {
+    use crate::model::clearing::Outcome;
+    let (Some(k), Some(here)) = (app.park, at.here) else {
+        return format!("clears {} of {} parks", at.cleared, at.of);
+    };
+    let code = crate::model::park::bundled()
+        .get(k)
+        .map_or("?", |p| p.code.as_str());
+    let unit = app.unit(Quantity::Distance);
+    let by = |m: f64| format!("{:.1} {}", unit.show_difference(m.abs()), unit.symbol);
+    let verdict = match (here.outcome, here.margin) {
+        (Outcome::Clears, Some(m)) => format!("clears by {}", by(m)),
+        (Outcome::OffTheWall, Some(m)) => format!("off the wall by {}", by(m)),
+        (Outcome::Short, Some(m)) => format!("short by {}", by(m)),
+        (outcome, _) => outcome.name().to_owned(),
+    };
+    format!("{code} {verdict}; {}/{} parks", at.cleared, at.of)
 }

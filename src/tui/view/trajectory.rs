@@ -28,8 +28,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let optimal_range = app.optimum.filter(|o| o.done).map_or(0.0, |o| o.best.range);
     let optimal_apex = app.optimal_path.iter().map(|p| p.1).fold(0.0, f64::max);
     let fence = app
-        .fence
-        .map_or((0.0, 0.0), |f| (k * f.distance, k * f.height));
+        .side_fence()
+        .map_or((0.0, 0.0), |(distance, height)| (k * distance, k * height));
     // The x axis reaches past the farthest landing and the fence; a ball
     // carried back over the plate (a steep launch with backspin) lands
     // behind it, and the axis then starts behind the plate too.
@@ -62,7 +62,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     datasets.push(chart::curve(now.0, app.theme.swing, &path).name("this swing"));
     datasets.push(chart::points(Marker::Dot, app.theme.apex, &apex).name("apex"));
     datasets.push(chart::points(Marker::Block, app.theme.landing, &landing).name("landing"));
-    if app.fence.is_some() {
+    if app.side_fence().is_some() {
         datasets.push(chart::line(app.theme.fence, &fence_line).name("fence"));
     }
     // The legend sits in the border, where it hides no data.
