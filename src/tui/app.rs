@@ -28,7 +28,7 @@ use crate::analysis::sensitivity;
 use crate::analysis::study::{Grid, Surface};
 use crate::model::aero::{DragModel, LiftModel};
 use crate::model::keys::{DRAG_KEY, HAND_KEY, LIFT_KEY, SWING_3D_KEYS};
-use crate::model::launch::{Flown, SceneKind, fly_scene, height_at_distance, scene_start};
+use crate::model::launch::{Flown, SceneKind, fly_scene, scene_start};
 use crate::model::scene::{Hand, Scene};
 use crate::preset::{self, Fence, Preset};
 use crate::units::{Quantity, Unit, UnitSystem};
@@ -390,10 +390,7 @@ impl App {
         self.inputs_changed = false;
         self.dirty = true;
         self.flown = fly_scene(&self.scene, Purpose::Readout);
-        self.at_parks = Some(self.judge_parks());
-        self.fence_height = self
-            .fence
-            .and_then(|fence| height_at_distance(&self.scene, fence.distance, Purpose::Readout).1);
+        self.judge_fences();
         (self.path, self.ground) = self.plot_tracks(&self.scene);
         // The pin's scene stays; its path follows the plot's resolution.
         if let Some(pin) = self.pin.take() {

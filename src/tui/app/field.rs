@@ -52,18 +52,30 @@ impl App {
         self.fence.map(|f| (f.distance, f.height))
     }
 
-    /// The current flight judged at every bundled park: one flight, each
-    /// park's fence (in the scene's own air, as `fly`'s count).
-    pub fn judge_parks(&self) -> AtParks {
+    /// The current flight judged at the preset's fence (`fence_height`) and
+    /// at every bundled park (`at_parks`, in the scene's own air, as `fly`'s
+    /// count): one flight for all of them.
+    pub(super) fn judge_fences(&mut self) {
         let parks = park::bundled();
-        let fences: Vec<&park::Fence> = parks.iter().map(|p| &p.fence).collect();
+        let generic = self
+            .fence
+            .map(|f| park::Fence::uniform(f.distance, f.height));
+        let fences: Vec<&park::Fence> = generic
+            .iter()
+            .chain(parks.iter().map(|p| &p.fence))
+            .collect();
         let (flight, _, _) = scene_start(&self.scene);
-        let (_, clearings) = flight.judge(&Purpose::Readout.flight_options(), &fences);
-        AtParks {
+        let (_, mut clearings) = flight.judge(&Purpose::Readout.flight_options(), &fences);
+        self.fence_height = if generic.is_some() {
+            clearings.remove(0).height_at_fence
+        } else {
+            None
+        };
+        self.at_parks = Some(AtParks {
             cleared: clearings.iter().filter(|c| c.clears()).count(),
             of: parks.len(),
             here: self.park.and_then(|k| clearings.get(k).copied()),
-        }
+        });
     }
 
     /// `m`/`M`: the next or previous park, through "none" (the preset's
@@ -76,7 +88,7 @@ impl App {
             (Some(k), true) => (k + 1 < n).then_some(k + 1),
             (Some(k), false) => k.checked_sub(1),
         };
-        self.at_parks = Some(self.judge_parks());
+        self.judge_fences();
         self.dirty = true;
         let text = match self.park.and_then(|k| park::bundled().get(k)) {
             Some(p) => format!(
