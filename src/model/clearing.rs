@@ -141,6 +141,26 @@ impl Clearing {
     pub fn clears(&self) -> bool {
         self.outcome == Outcome::Clears
     }
+
+    /// The height (m) by which the ball clears the wall, negative under its
+    /// top, continuous across every fair outcome, so that an optimiser can
+    /// climb it: where the track crosses the fence, the ball's height over
+    /// the wall's top (as [`Clearing::margin`]); for a ball that lands
+    /// short, the height it would have at the wall had it gone on down its
+    /// landing line below the field, less the wall's height:
+    /// −(wall distance − range)·tan(landing angle) − wall height. At a
+    /// landing on the wall's foot both read −(wall height). None when foul
+    /// or not landed.
+    pub fn clearance(&self, flight: &FlightSummary) -> Option<f64> {
+        match (self.outcome, self.wall) {
+            (Outcome::Clears | Outcome::OffTheWall, _) => self.margin,
+            (Outcome::Short, Some(wall)) if flight.landed => {
+                let short = wall.distance - flight.range.abs();
+                Some(-short * flight.landing_angle.tan() - wall.height)
+            }
+            _ => None,
+        }
+    }
 }
 
 impl SceneFlight {
@@ -362,6 +382,12 @@ mod tests {
         assert!((summary.range - range).abs() < 1e-8);
         assert_eq!(c[0].outcome, Outcome::Short);
         assert!((c[0].margin.unwrap() - (range - 120.0)).abs() < 1e-8);
+        // Its clearance: on down its landing line to the wall (2.5 m high
+        // where the fence steps down, dead centre).
+        let landing = (v * a.sin() - G * t).atan2(v * a.cos()).abs();
+        let below = (120.0 - range) * landing.tan() + c[0].wall.unwrap().height;
+        let clearance = c[0].clearance(&summary).unwrap();
+        assert!((clearance + below).abs() < 1e-8, "{clearance} {below}");
         // Launched outside the line: foul, with or without reaching the
         // fence's distance.
         for speed in [20.0, 40.0] {
@@ -369,6 +395,24 @@ mod tests {
             assert_eq!(c[0].outcome, Outcome::Foul, "{speed}");
             assert_eq!(c[0].margin, None);
         }
+    }
+
+    #[test]
+    fn the_clearance_is_continuous_from_short_to_off_the_wall() {
+        // Vacuum, at the 14 m wall 116.8 m away in left-centre: speeds
+        // either side of the one that lands at the wall's foot give nearly
+        // the same clearance, and it grows with speed.
+        let fence = sloping_fence();
+        let clearance = |speed: f64| {
+            let (summary, c) = vacuum(speed, 0.6, -0.1, 0.0).judge(&options(), &[&fence]);
+            (c[0].outcome, c[0].clearance(&summary).unwrap())
+        };
+        // 34.8 m/s at 0.6 rad lands 116.5 m away; 34.9 m/s reaches the wall.
+        let (before, low) = clearance(34.8);
+        let (after, high) = clearance(34.9);
+        assert_eq!((before, after), (Outcome::Short, Outcome::OffTheWall));
+        assert!(low < high && high - low < 0.5, "{low} {high}");
+        assert!((low + 14.0).abs() < 1.0 && (high + 14.0).abs() < 1.0);
     }
 
     #[test]
