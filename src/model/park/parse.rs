@@ -68,6 +68,48 @@ struct Point {
     height: f64,
 }
 
+/// A bundled park as build.rs writes it from data/parks.toml: the file's
+/// fields, unchecked (fence points as [direction, distance, height]).
+pub(super) struct BundledEntry {
+    pub code: &'static str,
+    pub aliases: &'static [&'static str],
+    pub name: &'static str,
+    pub elevation: f64,
+    pub center_field_bearing: f64,
+    pub published: Option<[f64; 3]>,
+    pub fence: &'static [[f64; 3]],
+}
+
+impl BundledEntry {
+    /// The park, checked as a park file's would be.
+    pub(super) fn checked(&self) -> Result<Park, ParkError> {
+        Entry {
+            code: self.code.to_owned(),
+            aliases: self.aliases.iter().map(|&a| a.to_owned()).collect(),
+            name: self.name.to_owned(),
+            elevation: self.elevation,
+            center_field_bearing: self.center_field_bearing,
+            published: self
+                .published
+                .map(|[left_line, center, right_line]| Published {
+                    left_line,
+                    center,
+                    right_line,
+                }),
+            fence: self
+                .fence
+                .iter()
+                .map(|&[direction, distance, height]| Point {
+                    direction,
+                    distance,
+                    height,
+                })
+                .collect(),
+        }
+        .checked()
+    }
+}
+
 /// Elevations accepted (m): the Dead Sea's shore to well above any park
 /// (the same range as `environment.elevation`).
 const ELEVATION: (f64, f64) = (-500.0, 5000.0);
