@@ -236,6 +236,7 @@ fn render(report: &Report) -> String {
             row.rows_per_second
         );
     }
+    render_floor(&mut out, &report.floor);
     let _ = writeln!(
         out,
         "\n(all cores = {} threads; time = median wall clock, cpu = median CPU time summed over threads; \
@@ -243,6 +244,54 @@ fn render(report: &Report) -> String {
         report.threads
     );
     out
+}
+
+/// The floor table: each workload's evaluations times one evaluation's
+/// cost, beside its measured time.
+fn render_floor(out: &mut String, floor: &bench::FloorReport) {
+    use std::fmt::Write;
+    let _ = writeln!(
+        out,
+        "\none right-hand-side evaluation (ns): in a dependent chain, and with independent ones interleaved\n{:<7} {:<7} {:>9} {:>15}",
+        "aero", "flight", "chain_ns", "interleaved_ns"
+    );
+    for c in &floor.evaluation {
+        let _ = writeln!(
+            out,
+            "{:<7} {:<7} {:>9.2} {:>15.2}",
+            c.aero, c.flight, c.chain_ns, c.interleaved_ns
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\nthe floor: evaluations x one evaluation's cost (the chain's for one flight, interleaved for many), on one core\n{:<50} {:<18} {:>7} {:>11} {:>7} {:>10} {:>7} {:>10} {:>10} {:>10}",
+        "workload",
+        "setting",
+        "flights",
+        "evaluations",
+        "eval_ns",
+        "floor_us",
+        "threads",
+        "time_us",
+        "cpu_us",
+        "over_floor"
+    );
+    for r in &floor.workloads {
+        let _ = writeln!(
+            out,
+            "{:<50} {:<18} {:>7} {:>11} {:>7.2} {:>10.2} {:>7} {:>10.2} {:>10} {:>10.1}",
+            r.workload,
+            r.setting,
+            r.flights,
+            r.evaluations,
+            r.evaluation_ns,
+            r.floor_us,
+            r.threads,
+            r.time_us,
+            or_dash(r.cpu_us, |c| format!("{c:.2}")),
+            r.over_floor
+        );
+    }
 }
 
 /// `homerun bench [--json] [--quick] [--svg FILE]`: with `svg`, the
