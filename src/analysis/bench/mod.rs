@@ -8,6 +8,7 @@
 //! a solve at the tightest setting; times are medians over repeated runs.
 //! The JSON output uses the tables' field names.
 
+mod impact;
 mod parks;
 mod spatial;
 
@@ -23,6 +24,7 @@ use crate::model::flight::{self, Flight, FlightOptions, Launch};
 use crate::model::impact::Impact;
 use crate::model::{self, scene::Scene};
 use crate::numerics::ode::Tolerance;
+pub use impact::ImpactRow;
 pub use parks::ParksRow;
 pub use spatial::SpatialRow;
 
@@ -82,6 +84,8 @@ pub struct Report {
     pub batch: Vec<BatchRow>,
     /// A flight judged at the parks, and a Savant row's whole work.
     pub parks: Vec<ParksRow>,
+    /// The 3-D impact, and `optimize --park`.
+    pub impact: Vec<ImpactRow>,
 }
 
 /// A batch of batted balls, each flown as a `fly --batch` row is (readout
@@ -620,6 +624,7 @@ pub fn run(quick: bool) -> Report {
         defaults: defaults(reference),
         batch: batch(effort, threads, quick),
         parks: parks::rows(effort),
+        impact: impact::rows(effort, quick),
     }
 }
 
