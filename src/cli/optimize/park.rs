@@ -9,6 +9,7 @@ use super::super::progress::{self, Work};
 use super::super::shown::Shown;
 use super::super::{UsageError, pretty};
 use crate::Scene;
+use crate::analysis::landing;
 use crate::analysis::optimum::OptimizerSettings;
 use crate::analysis::optimum::park::{Held, Judged, ParkOptimum, SEARCHED_KEYS, optimize_park};
 use crate::analysis::precision::Purpose;
@@ -61,6 +62,7 @@ pub(in crate::cli) fn park_optimum(
         .map(|(k, _)| *k)
         .collect();
     let ground = Ground::Park(park);
+    let unlanded = landing::why_not_landed(&best, &flown.flight, Purpose::Readout);
     if json {
         let launch = &flown.launch;
         let found = optimum.found;
@@ -81,7 +83,7 @@ pub(in crate::cli) fn park_optimum(
             "launch_angle": launch.angle,
             "launch_sidespin": launch.sidespin,
             "fence": clearing_json(&park.code, &flown.clearing),
-            "flight": flight_json(&flown.flight, None),
+            "flight": flight_json(&flown.flight, unlanded),
             "held": held_keys,
             "evaluations": optimum.evaluations,
             "starts": optimum.starts,
@@ -134,7 +136,15 @@ pub(in crate::cli) fn park_optimum(
         }
         None => "none: it neither lands nor reaches the fence".to_owned(),
     };
-    let unlanded = (!flown.flight.landed).then_some("does not land");
+    // In the units shown, as `fly` says it.
+    let unlanded = unlanded.map(|why| {
+        if shown.is_si() {
+            why
+        } else {
+            let height = landing::end_height(&best, Purpose::Readout);
+            shown.not_landed(&flown.flight, height)
+        }
+    });
     labelled(&[
         (
             "optimum",
@@ -148,7 +158,10 @@ pub(in crate::cli) fn park_optimum(
         ("margin", margin_text),
         ("fence", clearing_text(&ground, &flown.clearing, shown)),
         ("launch", batted_text(&flown.launch, shown)),
-        ("flight", flight_text(&flown.flight, unlanded, shown)),
+        (
+            "flight",
+            flight_text(&flown.flight, unlanded.as_deref(), shown),
+        ),
         search,
         ("air", air),
     ])
