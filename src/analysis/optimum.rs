@@ -1,7 +1,10 @@
 //! The swing that maximises range (§II.E): Nelder–Mead over the undercut E
 //! and swing angle ψ, as the paper did with MATLAB's `fminsearch`, through
 //! [`crate::numerics::nelder_mead`], with the range as the (negated) cost and
-//! the geometric bound |E| < r_b + r_B as an infeasible region.
+//! the geometric bound |E| < r_b + r_B as an infeasible region. [`park`]
+//! searches E, ψ and the bat's direction for the margin over a park's wall.
+
+pub mod park;
 
 use serde::Serialize;
 

@@ -123,6 +123,7 @@ fn render(report: &Report) -> String {
             or_dash(r.cpu_us, |c| format!("{c:.2}"))
         );
     }
+    impact_table(&mut out, report);
     let _ = writeln!(
         out,
         "\none optimisation per Table II pitch (errors against optimiser 1e-9, integrator 1e-12)"
@@ -290,6 +291,27 @@ fn render_floor(out: &mut String, floor: &bench::FloorReport) {
             r.time_us,
             or_dash(r.cpu_us, |c| format!("{c:.2}")),
             r.over_floor
+        );
+    }
+}
+
+/// The 3-D swing's table: an impact each way, and `optimize --park`.
+fn impact_table(out: &mut String, report: &Report) {
+    use std::fmt::Write;
+    let _ = writeln!(
+        out,
+        "\nthe 3-D impact (the fastball's swing; each on its own) and the park search (barrel 30° below the hands, in the park's air)\n{:<38} {:>7} {:>11} {:>10}  detail",
+        "work", "flights", "time_us", "cpu_us"
+    );
+    for r in &report.impact {
+        let _ = writeln!(
+            out,
+            "{:<38} {:>7} {:>11.2} {:>10}  {}",
+            r.work,
+            r.flights,
+            r.time_us,
+            or_dash(r.cpu_us, |c| format!("{c:.2}")),
+            r.detail
         );
     }
 }

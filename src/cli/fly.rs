@@ -96,7 +96,7 @@ pub(super) fn model_json(scene: &Scene) -> serde_json::Value {
 
 /// "1.194 kg/m³ from 21 °C, 5 m, 1013 hPa, 50 %" ([`Air`]'s own words in
 /// SI), with the weather in °F, ft and inHg otherwise; ρ is kg/m³ in both.
-fn air_text(air: &Air, shown: Shown) -> String {
+pub(super) fn air_text(air: &Air, shown: Shown) -> String {
     match air.atmosphere {
         Some(weather) if !shown.is_si() => format!(
             "{:.3} kg/m³ from {}, {}, {}, {} %",

@@ -183,13 +183,23 @@ pub enum Command {
     },
     /// Every input key: symbol, unit, accepted range and the fastball's value.
     Keys,
-    /// The undercut and swing angle that maximise range (§II.E).
+    /// The undercut and swing angle that maximise range (§II.E); with --park,
+    /// the swing that clears that park's wall by the most.
     Optimize {
         #[command(flatten)]
         scene: SceneArgs,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
+        /// Maximise the margin over this park's wall instead, searching the bat's
+        /// direction too, in the park's air as `fly --park` flies (a Savant
+        /// home_team code; `homerun parks` lists them).
+        #[arg(long, value_name = "CODE")]
+        park: Option<String>,
+        /// With --park: hold KEY at the scene's value (bat.undercut,
+        /// bat.swing_angle or bat.direction; repeatable).
+        #[arg(long, value_name = "KEY", requires = "park")]
+        fix: Vec<String>,
     },
     /// Table II: the paper's numbers beside ours, with the differences.
     Table2 {
@@ -458,11 +468,38 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         Command::Hit { scene, json } => {
             Ok(hit::hit(&scene.resolve_swing("hit", dir)?, *json, shown))
         }
-        Command::Optimize { scene, json } => Ok(optimize::optimum(
+        Command::Optimize {
+            scene,
+            json,
+            park: None,
+            ..
+        } => Ok(optimize::optimum(
             &scene.resolve_swing("optimize", dir)?,
             *json,
             shown,
         )),
+        Command::Optimize {
+            scene,
+            json,
+            park: Some(code),
+            fix,
+        } => {
+            let held = optimize::held(fix)?;
+            let mut preset = scene.resolve(dir)?;
+            scene::swing_only("optimize", &preset)?;
+            let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+            let park = parks
+                .find(code)
+                .ok_or_else(|| parks::unknown(code, &parks))?;
+            ground::to_park(&mut preset.scene, park, ground::given_weather(&scene.set));
+            Ok(optimize::park_optimum(
+                &preset.scene,
+                park,
+                held,
+                *json,
+                shown,
+            ))
+        }
         Command::Fly {
             scene,
             json,

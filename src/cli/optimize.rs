@@ -1,4 +1,8 @@
-//! The optimum: `optimize` (one scene) and `sweep` (against one input).
+//! The optimum: `optimize` (one scene; with `--park`, see [`park`]) and
+//! `sweep` (against one input).
+
+mod park;
+pub(super) use park::{held, park_optimum};
 
 use super::hit::{environment_json, labelled, launch_text};
 use super::progress::{self, Work};
@@ -192,12 +196,16 @@ fn status_name(status: Status) -> String {
 
 /// How a search ended: "converged (…)" or "NOT converged: stopped at …".
 fn stopped(optimum: &Optimum) -> String {
-    match optimum.status {
+    stopped_at(optimum.status, optimum.flight_steps)
+}
+
+/// [`stopped`], given the status and the integration steps taken.
+fn stopped_at(status: Status, flight_steps: u64) -> String {
+    match status {
         Status::Converged => "converged (Nelder–Mead, tolerances 1e-4)".to_owned(),
-        Status::OutOfWork => format!(
-            "NOT converged: stopped at the work limit ({} integration steps)",
-            optimum.flight_steps
-        ),
+        Status::OutOfWork => {
+            format!("NOT converged: stopped at the work limit ({flight_steps} integration steps)")
+        }
         Status::OutOfEvaluations => "NOT converged: stopped at the evaluation limit".to_owned(),
         Status::NothingLands => "nothing to converge to: no swing lands".to_owned(),
         Status::Running => "NOT converged".to_owned(),

@@ -9,6 +9,7 @@
 //! The JSON output uses the tables' field names.
 
 mod floor;
+mod impact;
 mod parks;
 mod spatial;
 
@@ -25,6 +26,7 @@ use crate::model::impact::Impact;
 use crate::model::{self, scene::Scene};
 use crate::numerics::ode::Tolerance;
 pub use floor::{EvaluationCost, FloorReport, FloorRow};
+pub use impact::ImpactRow;
 pub use parks::ParksRow;
 pub use spatial::SpatialRow;
 
@@ -86,6 +88,8 @@ pub struct Report {
     pub parks: Vec<ParksRow>,
     /// Each workload's floor: evaluations × one evaluation's cost.
     pub floor: FloorReport,
+    /// The 3-D impact, and `optimize --park`.
+    pub impact: Vec<ImpactRow>,
 }
 
 /// A batch of batted balls, each flown as a `fly --batch` row is (readout
@@ -625,6 +629,7 @@ pub fn run(quick: bool) -> Report {
         batch: batch(effort, threads, quick),
         parks: parks::rows(effort),
         floor: floor::report(effort, threads, quick),
+        impact: impact::rows(effort, quick),
     }
 }
 
