@@ -252,7 +252,7 @@ fn fly_line(
         flown.parks_cleared(),
     );
     if let Some(measured) = statcast {
-        let difference = flight.landed.then(|| flight.range - measured);
+        let difference = flight.landed.then_some(flight.range - measured);
         text += &format!(
             ",{},{}",
             distance(Some(measured), 2),
