@@ -39,7 +39,11 @@ pub(super) struct RowFlight {
 /// What flying a piece reuses from row to row.
 #[derive(Default)]
 pub(super) struct Scratch {
+    /// Each row's crossings of its fences: its own, then each park's.
     crossings: Vec<Option<Crossing>>,
+    /// One row's, flown again.
+    again: Vec<Option<Crossing>>,
+    summaries: Vec<FlightSummary>,
     clearings: Vec<Clearing>,
     /// For each row flown, a flag per park: cleared.
     pub cleared: Vec<bool>,
@@ -56,21 +60,20 @@ pub(super) struct Printed {
     pub json: bool,
 }
 
-/// A row ready to fly: its launch complete and checked.
-struct Ready {
+/// A row ready to fly: its launch complete and checked, and the fence it
+/// is judged at (its park's, or the generic one).
+pub(super) struct Ready<'f> {
     scene: Scene,
-    flight: SceneFlight,
+    pub flight: SceneFlight,
     launch: BattedBall,
     flights: usize,
+    pub own: &'f park::Fence,
 }
 
-/// Flies `jobs` into `out`, in order (a reason where a row cannot fly).
-///
-/// The lock-step engine for many flights plugs in at the loop marked below:
-/// every row's [`SceneFlight::fly_to_fences`] is independent (its own
-/// launch, the same options, its own fence then the parks' fences), so the
-/// loop can hand the piece's flights to it at once; the readout's second
-/// flights of unsettled rows are few and can stay scalar.
+/// Flies `jobs` into `out`, in order (a reason where a row cannot fly), in
+/// three steps: each row made ready; every row flown once ([`fly_all`],
+/// where the lock-step engine for many flights plugs in); each judged,
+/// checked, and flown again at the readout's precision where unsettled.
 pub(super) fn fly_chunk(
     jobs: &[Job],
     setup: &Setup,
@@ -94,51 +97,131 @@ pub(super) fn fly_chunk(
             generic.push((job.fence, job.fence.uniform()));
         }
     }
-    let mut fences: Vec<&park::Fence> = Vec::with_capacity(setup.fences.len() + 1);
-    for job in jobs {
-        let ready = match ready(job, setup, &readout) {
+    let own = |job: &Job| match job.park {
+        Some(index) => setup.fences[index],
+        None => {
+            &generic
+                .iter()
+                .find(|(f, _)| *f == job.fence)
+                .expect("cached")
+                .1
+        }
+    };
+    let ready: Vec<Result<Ready, String>> = jobs
+        .iter()
+        .map(|job| ready(job, setup, &readout, own(job)))
+        .collect();
+    // With --own-air each park is judged on a flight in its own air.
+    let parks: &[&park::Fence] = if setup.own_air { &[] } else { &setup.fences };
+    let flying: Vec<&Ready> = ready.iter().flatten().collect();
+    fly_all(
+        &flying,
+        parks,
+        &purpose.flight_options(),
+        &mut scratch.crossings,
+        &mut scratch.summaries,
+    );
+    let width = parks.len() + 1;
+    let mut flown = 0;
+    let mut fences: Vec<&park::Fence> = Vec::with_capacity(width);
+    for (job, ready) in jobs.iter().zip(&ready) {
+        let ready = match ready {
             Ok(ready) => ready,
             Err(reason) => {
-                out.push(Err(reason));
+                out.push(Err(reason.clone()));
                 continue;
             }
         };
         fences.clear();
-        fences.push(match job.park {
-            Some(index) => setup.fences[index],
-            None => {
-                &generic
-                    .iter()
-                    .find(|(f, _)| *f == job.fence)
-                    .expect("cached")
-                    .1
-            }
-        });
+        fences.push(ready.own);
+        fences.extend_from_slice(parks);
         let own_air = setup.own_air.then_some((setup, job.given));
-        if own_air.is_none() {
-            fences.extend_from_slice(&setup.fences);
-        }
-        // The flight: here a lock-step engine would take the piece's rows.
-        let mut row = fly(&ready, &fences, own_air, &purpose.flight_options(), scratch);
+        let crossings = &scratch.crossings[flown * width..][..width];
+        let mut summary = scratch.summaries[flown];
+        flown += 1;
+        judge(
+            ready,
+            &fences,
+            crossings,
+            &summary,
+            own_air,
+            &purpose.flight_options(),
+            &mut scratch.clearings,
+        );
         if purpose == Purpose::Batch
-            && !settled(&row, ready.flight.is_planar(), scratch, printed, job)
+            && !settled(
+                &summary,
+                ready.flight.is_planar(),
+                &scratch.clearings,
+                printed,
+                job,
+            )
         {
             scratch.refined += 1;
-            row = fly(&ready, &fences, own_air, &readout, scratch);
+            scratch.again.clear();
+            scratch.again.resize(width, None);
+            summary = ready
+                .flight
+                .fly_to_fences(&readout, &fences, &mut scratch.again);
+            let again = &scratch.again;
+            judge(
+                ready,
+                &fences,
+                again,
+                &summary,
+                own_air,
+                &readout,
+                &mut scratch.clearings,
+            );
         }
         let from = scratch.cleared.len();
         let cleared = scratch.clearings[1..].iter().map(Clearing::clears);
         scratch.cleared.extend(cleared);
         out.push(Ok(RowFlight {
+            launch: ready.launch,
+            flight: summary,
+            clearing: scratch.clearings[0],
             parks_cleared: scratch.cleared[from..].iter().filter(|&&c| c).count(),
             cleared_from: from,
-            ..row
+            flights: ready.flights,
         }));
     }
 }
 
+/// Flies each row once to the ground, noting where it crosses its own fence
+/// and then each of `parks`: row i's crossings are `crossings[i * (parks.len()
+/// + 1)..][..parks.len() + 1]`, its summary `summaries[i]`.
+///
+/// The one place a piece's flights are flown: the lock-step engine for many
+/// flights replaces this loop. The rows are independent (each its own
+/// [`SceneFlight`] and own fence, every one the same options and parks).
+pub(super) fn fly_all(
+    rows: &[&Ready],
+    parks: &[&park::Fence],
+    options: &FlightOptions,
+    crossings: &mut Vec<Option<Crossing>>,
+    summaries: &mut Vec<FlightSummary>,
+) {
+    let width = parks.len() + 1;
+    crossings.clear();
+    crossings.resize(rows.len() * width, None);
+    summaries.clear();
+    let mut fences: Vec<&park::Fence> = Vec::with_capacity(width);
+    for (row, crossings) in rows.iter().zip(crossings.chunks_mut(width)) {
+        fences.clear();
+        fences.push(row.own);
+        fences.extend_from_slice(parks);
+        summaries.push(row.flight.fly_to_fences(options, &fences, crossings));
+    }
+}
+
 /// The row's launch completed and checked.
-fn ready(job: &Job, setup: &Setup, options: &FlightOptions) -> Result<Ready, String> {
+fn ready<'f>(
+    job: &Job,
+    setup: &Setup,
+    options: &FlightOptions,
+    own: &'f park::Fence,
+) -> Result<Ready<'f>, String> {
     // The direction's solve stays at the readout's precision: its stopping
     // test is a threshold a looser flight could cross in another iteration.
     let launched =
@@ -156,30 +239,28 @@ fn ready(job: &Job, setup: &Setup, options: &FlightOptions) -> Result<Ready, Str
         flight,
         launch,
         flights: launched.flights,
+        own,
     })
 }
 
-/// One flight to the ground and `fences` (with `own_air`, the parks each
-/// flown in their own air instead), judged into `scratch.clearings`: the
-/// row's own fence first, then each park.
-fn fly(
+/// A flight judged at `fences` (the row's own, then each park's; with
+/// `own_air`, its own alone, and each park on a flight of its own in its own
+/// air) into `clearings`, in that order.
+fn judge(
     ready: &Ready,
     fences: &[&park::Fence],
+    crossings: &[Option<Crossing>],
+    summary: &FlightSummary,
     own_air: Option<(&Setup, GivenWeather)>,
     options: &FlightOptions,
-    scratch: &mut Scratch,
-) -> RowFlight {
-    scratch.crossings.clear();
-    scratch.crossings.resize(fences.len(), None);
-    let summary = ready
-        .flight
-        .fly_to_fences(options, fences, &mut scratch.crossings);
-    scratch.clearings.clear();
-    scratch.clearings.extend(
+    clearings: &mut Vec<Clearing>,
+) {
+    clearings.clear();
+    clearings.extend(
         fences
             .iter()
-            .zip(&scratch.crossings)
-            .map(|(fence, crossing)| Clearing::judge(fence, *crossing, &summary)),
+            .zip(crossings)
+            .map(|(fence, crossing)| Clearing::judge(fence, *crossing, summary)),
     );
     if let Some((setup, given)) = own_air {
         for park in &setup.parks.parks {
@@ -188,18 +269,8 @@ fn fly(
             let (flight, _, _) = launch::scene_start(&there);
             let mut crossing = [None];
             let flown = flight.fly_to_fences(options, &[&park.fence], &mut crossing);
-            scratch
-                .clearings
-                .push(Clearing::judge(&park.fence, crossing[0], &flown));
+            clearings.push(Clearing::judge(&park.fence, crossing[0], &flown));
         }
-    }
-    RowFlight {
-        launch: ready.launch,
-        flight: summary,
-        clearing: scratch.clearings[0],
-        parks_cleared: 0,
-        cleared_from: 0,
-        flights: ready.flights,
     }
 }
 
@@ -207,9 +278,14 @@ fn fly(
 /// would: every printed number [`BATCH_GUARD`] away from a change of its
 /// last digit or its sign, every outcome as far from its threshold (a
 /// margin's zero, a foul line), and the ball landed.
-fn settled(row: &RowFlight, planar: bool, scratch: &Scratch, printed: Printed, job: &Job) -> bool {
+fn settled(
+    flight: &FlightSummary,
+    planar: bool,
+    clearings: &[Clearing],
+    printed: Printed,
+    job: &Job,
+) -> bool {
     let guard = BATCH_GUARD;
-    let flight = &row.flight;
     let same = |quantity, value: f64, error: f64, decimals| {
         printed_alike(printed.shown, quantity, value, error, decimals)
     };
@@ -220,8 +296,7 @@ fn settled(row: &RowFlight, planar: bool, scratch: &Scratch, printed: Printed, j
         && same(Quantity::Unchanged, flight.flight_time, guard.time, 3)
         && same(Quantity::Distance, flight.apex, guard.distance, 3)
         && same(Quantity::Angle, flight.landing_angle, guard.angle, 4)
-        && row
-            .clearing
+        && clearings[0]
             .margin
             .is_none_or(|m| same(Quantity::Distance, m, guard.distance, 3))
         && (!printed.statcast
@@ -233,7 +308,7 @@ fn settled(row: &RowFlight, planar: bool, scratch: &Scratch, printed: Printed, j
                     2,
                 )
             }));
-    numbers && scratch.clearings.iter().all(|c| decided(c, guard))
+    numbers && clearings.iter().all(|c| decided(c, guard))
 }
 
 /// Whether `value` and anything within `error` of it print alike (the
