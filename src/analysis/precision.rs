@@ -39,8 +39,8 @@ pub enum Purpose {
 /// to a change sends the row to the readout's flight. Each is ~10× the
 /// worst difference from the readout's over 200 000 Statcast-like rows,
 /// planar and with spray and sidespin (`scripts/batch_rows.py`'s spread):
-/// 9.3e-7 m in range (pop-ups at 75°), 6.3e-8 s, 5.7e-9 rad. So ~6 % of
-/// planar rows and ~15 % of 3-D ones (the direction, printed to 1e-6 rad)
+/// 9.3e-7 m in range (pop-ups at 75°), 6.3e-8 s, 5.7e-9 rad. So ~4 % of
+/// planar rows and ~13 % of 3-D ones (the direction, printed to 1e-6 rad)
 /// are flown twice, and the rest once at ~55 % of the readout's cost.
 pub const BATCH_GUARD: Guard = Guard {
     distance: 1e-5,

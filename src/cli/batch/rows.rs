@@ -317,7 +317,7 @@ pub(super) struct Job {
 }
 
 /// What a row turned out to be. Unboxed: each is moved once, into the
-/// chunk's jobs, and a box would allocate per row.
+/// piece's jobs, and a box would allocate per row.
 #[allow(clippy::large_enum_variant)]
 pub(super) enum Row {
     Job(Job),
