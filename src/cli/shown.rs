@@ -45,13 +45,6 @@ impl Shown {
         format!("{value:.decimals$}{}", spaced(unit.symbol))
     }
 
-    /// A number alone, converted: `si_decimals` in SI, as fine otherwise.
-    pub fn number(self, quantity: Quantity, si: f64, si_decimals: usize) -> String {
-        let unit = self.unit(quantity);
-        let decimals = unit.decimals(si_decimals);
-        format!("{:.decimals$}", self.convert(quantity, si))
-    }
-
     /// An angle with its degrees: "0.4604 rad (26.4°)" in SI; in degrees
     /// alone otherwise, to the parenthesis' decimals ("26.4°").
     pub fn angle_and_degrees(self, rad: f64, si_decimals: usize, degrees: usize) -> String {

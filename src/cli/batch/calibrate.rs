@@ -9,7 +9,7 @@ use std::path::Path;
 
 use rayon::prelude::*;
 
-use super::records::{MAX_RECORD_BYTES, Record, Records, Stop, split_fields};
+use super::records::{Fields, MAX_RECORD_BYTES, Record, Records, Stop, split_fields};
 use super::rows::{Header, Row, parse_row};
 use super::savant_columns::{SavantColumn, Setup};
 use crate::analysis::calibrate::{self, Errors, Fit, Measured};
@@ -111,7 +111,7 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
             Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?
         }
         Ok(Record::End) => return Err("the input is empty".to_owned()),
-        Ok(Record::TooLong { .. }) => return Err("line 1 (the header) is too long".to_owned()),
+        Ok(Record::TooLong) => return Err("line 1 (the header) is too long".to_owned()),
         Err(Stop::Binary { .. }) => return Err("binary data, not CSV text".to_owned()),
         Err(Stop::Io(e)) => return Err(e.to_string()),
     };
@@ -119,21 +119,24 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
     let mut jobs = Vec::new();
     let mut skipped = 0;
     let mut rows = 0;
+    let (mut fields, mut kept) = (Fields::default(), Fields::default());
     loop {
         match records.next() {
             Ok(Record::End) => break,
-            Ok(Record::Text { line, text }) => match parse_row(&header, setup, line, &text) {
-                Row::Job(job) => {
-                    rows += 1;
-                    jobs.push(job);
+            Ok(Record::Text { line, text }) => {
+                match parse_row(&header, setup, line, &text, &mut fields, &mut kept) {
+                    Row::Job(job) => {
+                        rows += 1;
+                        jobs.push(job);
+                    }
+                    Row::Blank => {}
+                    Row::Bad { .. } | Row::NoLaunch => {
+                        rows += 1;
+                        skipped += 1;
+                    }
                 }
-                Row::Blank => {}
-                Row::Bad { .. } | Row::NoLaunch => {
-                    rows += 1;
-                    skipped += 1;
-                }
-            },
-            Ok(Record::TooLong { .. }) => skipped += 1,
+            }
+            Ok(Record::TooLong) => skipped += 1,
             Err(Stop::Binary { line }) => {
                 return Err(format!(
                     "line {line}: a NUL byte: binary data, not CSV text"

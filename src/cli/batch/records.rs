@@ -10,31 +10,83 @@ pub const MAX_RECORD_BYTES: usize = 64 * 1024;
 
 /// A CSV record's fields (RFC 4180: commas inside quotes, `""` for a quote).
 pub(super) fn split_fields(text: &str) -> Result<Vec<String>, &'static str> {
-    let mut fields = Vec::new();
-    let mut field = String::new();
-    let mut chars = text.chars().peekable();
-    let mut quoted = false;
-    while let Some(c) = chars.next() {
-        match (quoted, c) {
-            (true, '"') if chars.peek() == Some(&'"') => {
-                field.push('"');
-                chars.next();
+    let mut fields = Fields::default();
+    fields.split(text)?;
+    Ok((0..fields.len())
+        .map(|i| fields.get(i).to_owned())
+        .collect())
+}
+
+/// One record's fields, unquoted, in one buffer reused from record to
+/// record (as the csv crate's `ByteRecord`), so that a row costs no
+/// allocation. Not the csv crate itself: a quote opens a field here after
+/// leading spaces too (`1, "a, b"` is two fields, as hand-written files
+/// mean it), where csv reads the quote as text and finds three.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Fields {
+    text: String,
+    /// Where each field ends in `text`.
+    ends: Vec<usize>,
+}
+
+impl Fields {
+    /// Splits `record`, replacing the fields held.
+    pub(super) fn split(&mut self, record: &str) -> Result<(), &'static str> {
+        self.text.clear();
+        self.ends.clear();
+        let mut start = 0;
+        let mut quoted = false;
+        let mut rest = record;
+        // Quotes and commas are ASCII: the text between them is copied whole.
+        while let Some(i) = rest.find(['"', ',']) {
+            self.text.push_str(&rest[..i]);
+            let special = rest.as_bytes()[i];
+            rest = &rest[i + 1..];
+            match (quoted, special) {
+                (true, b'"') if rest.starts_with('"') => {
+                    self.text.push('"');
+                    rest = &rest[1..];
+                }
+                (true, b'"') => quoted = false,
+                (true, _) => self.text.push(','),
+                (false, b'"') if self.text[start..].trim().is_empty() => {
+                    self.text.truncate(start);
+                    quoted = true;
+                }
+                (false, b'"') => self.text.push('"'),
+                (false, _) => {
+                    self.ends.push(self.text.len());
+                    start = self.text.len();
+                }
             }
-            (true, '"') => quoted = false,
-            (true, c) => field.push(c),
-            (false, '"') if field.trim().is_empty() => {
-                field.clear();
-                quoted = true;
-            }
-            (false, ',') => fields.push(std::mem::take(&mut field)),
-            (false, c) => field.push(c),
         }
+        if quoted {
+            return Err("an unterminated quote");
+        }
+        self.text.push_str(rest);
+        self.ends.push(self.text.len());
+        Ok(())
     }
-    if quoted {
-        return Err("an unterminated quote");
+
+    pub(super) fn len(&self) -> usize {
+        self.ends.len()
     }
-    fields.push(field);
-    Ok(fields)
+
+    /// Adds a field at the end (to keep cells of many rows in one buffer).
+    pub(super) fn push(&mut self, field: &str) {
+        self.text.push_str(field);
+        self.ends.push(self.text.len());
+    }
+
+    pub(super) fn clear(&mut self) {
+        self.text.clear();
+        self.ends.clear();
+    }
+
+    pub(super) fn get(&self, index: usize) -> &str {
+        let start = if index == 0 { 0 } else { self.ends[index - 1] };
+        &self.text[start..self.ends[index]]
+    }
 }
 
 /// Why reading stopped before the end.
@@ -52,6 +104,20 @@ pub(super) enum Record {
     Text {
         line: usize,
         text: String,
+    },
+    /// Longer than [`MAX_RECORD_BYTES`]: read to its end and dropped.
+    TooLong,
+    End,
+}
+
+/// Where [`Records::next_into`] put a record.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Span {
+    /// Its first line's number and its bytes' place in the buffer.
+    Text {
+        line: usize,
+        start: usize,
+        end: usize,
     },
     /// Longer than [`MAX_RECORD_BYTES`]: read to its end and dropped.
     TooLong {
@@ -84,7 +150,26 @@ impl<R: BufRead> Records<R> {
     }
 
     pub(super) fn next(&mut self) -> Result<Record, Stop> {
-        self.bytes.clear();
+        let mut bytes = std::mem::take(&mut self.bytes);
+        bytes.clear();
+        let span = self.next_into(&mut bytes);
+        let record = match span? {
+            Span::End => Record::End,
+            Span::TooLong { .. } => Record::TooLong,
+            Span::Text { line, .. } => Record::Text {
+                line,
+                text: String::from_utf8_lossy(&bytes).into_owned(),
+            },
+        };
+        self.bytes = bytes;
+        Ok(record)
+    }
+
+    /// Appends the next record's bytes (without its line end, nor the `\r`
+    /// before it) to `out`, and says where they lie: the batch gathers a
+    /// round of records into one buffer this way, with no allocation each.
+    pub(super) fn next_into(&mut self, out: &mut Vec<u8>) -> Result<Span, Stop> {
+        let start = out.len();
         let first = self.line;
         let (mut quoted, mut too_long, mut newlines, mut any) = (false, false, 0, false);
         loop {
@@ -95,14 +180,17 @@ impl<R: BufRead> Records<R> {
             };
             if available.is_empty() {
                 if !any {
-                    return Ok(Record::End);
+                    return Ok(Span::End);
                 }
                 break;
             }
             any = true;
             let (mut used, mut ended) = (available.len(), false);
-            for (i, &byte) in available.iter().enumerate() {
-                match byte {
+            let mut at = 0;
+            while let Some(found) = memchr::memchr3(b'"', b'\n', 0, &available[at..]) {
+                let i = at + found;
+                at = i + 1;
+                match available[i] {
                     0 => {
                         return Err(Stop::Binary {
                             line: first + newlines,
@@ -111,26 +199,25 @@ impl<R: BufRead> Records<R> {
                     b'"' => quoted = !quoted,
                     // Once too long, the next line end ends it whatever the
                     // quotes say, so one stray quote cannot swallow the file.
-                    b'\n' => {
+                    _ => {
                         newlines += 1;
                         if !quoted || too_long {
                             (used, ended) = (i + 1, true);
                             break;
                         }
                     }
-                    _ => {}
                 }
             }
             if !too_long {
                 let take = if ended { used - 1 } else { used };
-                if self.bytes.len() + take > MAX_RECORD_BYTES {
+                if out.len() - start + take > MAX_RECORD_BYTES {
                     too_long = true;
-                    self.bytes = Vec::new();
+                    out.truncate(start);
                     if !self.read_past_long {
-                        return Ok(Record::TooLong { line: first });
+                        return Ok(Span::TooLong { line: first });
                     }
                 } else {
-                    self.bytes.extend_from_slice(&available[..take]);
+                    out.extend_from_slice(&available[..take]);
                 }
             }
             self.reader.consume(used);
@@ -140,10 +227,15 @@ impl<R: BufRead> Records<R> {
         }
         self.line = first + newlines.max(1);
         if too_long {
-            return Ok(Record::TooLong { line: first });
+            return Ok(Span::TooLong { line: first });
         }
-        let text = String::from_utf8_lossy(&self.bytes);
-        let text = text.strip_suffix('\r').unwrap_or(&text).to_owned();
-        Ok(Record::Text { line: first, text })
+        if out.last() == Some(&b'\r') {
+            out.pop();
+        }
+        Ok(Span::Text {
+            line: first,
+            start,
+            end: out.len(),
+        })
     }
 }

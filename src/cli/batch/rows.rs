@@ -309,14 +309,15 @@ pub(super) struct Job {
     /// Measured hang time (s) and apex (m), for `calibrate`.
     pub(super) hang_time: Option<f64>,
     pub(super) apex: Option<f64>,
-    /// The `--keep` cells, as read.
-    pub(super) kept: Vec<String>,
+    /// The `--keep` cells, as read: their indices in the store
+    /// [`parse_row`] was given.
+    pub(super) kept: std::ops::Range<usize>,
     /// The air keys given, by `--set` and by the row: a park keeps them.
     pub(super) given: GivenWeather,
 }
 
 /// What a row turned out to be. Unboxed: each is moved once, into the
-/// chunk's jobs, and a box would allocate per row.
+/// piece's jobs, and a box would allocate per row.
 #[allow(clippy::large_enum_variant)]
 pub(super) enum Row {
     Job(Job),
@@ -337,15 +338,24 @@ fn is_missing(value: &str) -> bool {
     value.is_empty() || value.eq_ignore_ascii_case("null")
 }
 
-pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str) -> Row {
+/// The row on `line`, its `text` split into `fields` (a buffer reused from
+/// row to row) and its `--keep` cells added to `kept`.
+pub(super) fn parse_row(
+    header: &Header,
+    setup: &Setup,
+    line: usize,
+    text: &str,
+    fields: &mut Fields,
+    kept: &mut Fields,
+) -> Row {
     if text.is_empty() {
         return Row::Blank;
     }
     let bad = |reason: String| Row::Bad { line, reason };
-    let fields = match split_fields(text) {
-        Ok(fields) => fields,
-        Err(reason) => return bad(reason.to_owned()),
-    };
+    if let Err(reason) = fields.split(text) {
+        return bad(reason.to_owned());
+    }
+    let fields = &*fields;
     if fields.len() != header.columns.len() {
         return bad(format!(
             "{} field{} where the header has {}",
@@ -355,7 +365,7 @@ pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str)
         ));
     }
     let cell = |i: usize| {
-        let value = fields[i].trim();
+        let value = fields.get(i).trim();
         if is_missing(value) { "" } else { value }
     };
     let launch_cells = || {
@@ -377,10 +387,10 @@ pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str)
     let (mut spin_given, mut sidespin_given) = (setup.spin_given, setup.sidespin_given);
     // One row is one source: ρ beside the weather is refused.
     let mut batch = InputBatch::new();
-    let mut converted = Vec::new();
+    // Statcast's columns read in their units, named only if the row fails.
+    let mut converted = false;
     for (i, (column, name)) in header.columns.iter().zip(&header.names).enumerate() {
         let value = cell(i);
-        let shown = escape_cut(value, 80);
         let number = || {
             value.parse::<f64>().map_err(|_| {
                 format!(
@@ -408,7 +418,7 @@ pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str)
             }
             // Statcast's own columns: a bare number in their unit.
             Column::Launch(index, unit) => number().and_then(|v| {
-                converted.push(format!("{name} = {shown} {}", unit.name()));
+                converted = true;
                 spin_given |= index == 2;
                 batch
                     .set(&mut scene, LAUNCH_COLUMNS[index].0, unit.to_si(v))
@@ -452,10 +462,22 @@ pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str)
         super::super::ground::to_park(&mut scene, &setup.parks.parks[index], given);
     }
     if let Err(e) = scene.validate() {
-        let from = if converted.is_empty() {
-            String::new()
+        let from = if converted {
+            let read: Vec<String> = header
+                .columns
+                .iter()
+                .zip(&header.names)
+                .enumerate()
+                .filter_map(|(i, (column, name))| match column {
+                    Column::Launch(_, unit) if *unit != Unit::Si && !cell(i).is_empty() => Some(
+                        format!("{name} = {} {}", escape_cut(cell(i), 80), unit.name()),
+                    ),
+                    _ => None,
+                })
+                .collect();
+            format!(" (from {})", read.join(", "))
         } else {
-            format!(" (from {})", converted.join(", "))
+            String::new()
         };
         return bad(format!("{e}{from}"));
     }
@@ -478,7 +500,13 @@ pub(super) fn parse_row(header: &Header, setup: &Setup, line: usize, text: &str)
         statcast: savant.distance,
         hang_time: savant.hang_time,
         apex: savant.apex,
-        kept: header.keep.iter().map(|&i| fields[i].clone()).collect(),
+        kept: {
+            let first = kept.len();
+            for &i in &header.keep {
+                kept.push(fields.get(i));
+            }
+            first..kept.len()
+        },
         given,
     })
 }

@@ -194,13 +194,27 @@ impl SavantCells {
 /// quote or a line break (and when it starts or ends with a space, which
 /// some readers would trim).
 pub(super) fn quoted(field: &str) -> String {
+    let mut out = Vec::with_capacity(field.len());
+    write_quoted(&mut out, field);
+    String::from_utf8(out).expect("text in, text out")
+}
+
+/// [`quoted`], appended to a byte buffer.
+pub(super) fn write_quoted(out: &mut Vec<u8>, field: &str) {
     let needs =
         field.contains([',', '"', '\n', '\r']) || field.starts_with(' ') || field.ends_with(' ');
-    if needs {
-        format!("\"{}\"", field.replace('"', "\"\""))
-    } else {
-        field.to_owned()
+    if !needs {
+        out.extend_from_slice(field.as_bytes());
+        return;
     }
+    out.push(b'"');
+    for piece in field.split_inclusive('"') {
+        out.extend_from_slice(piece.as_bytes());
+        if piece.ends_with('"') {
+            out.push(b'"');
+        }
+    }
+    out.push(b'"');
 }
 
 /// What the batch used and skipped, said in one line at the end.
@@ -227,6 +241,19 @@ impl Summary {
             at_park: vec![0; parks],
             ..Summary::default()
         }
+    }
+
+    /// Adds another piece's counts.
+    pub(super) fn add(&mut self, other: &Summary) {
+        self.estimated += other.estimated;
+        self.sprayed += other.sprayed;
+        self.without_spray += other.without_spray;
+        self.solve_flights += other.solve_flights;
+        for (mine, theirs) in self.at_park.iter_mut().zip(&other.at_park) {
+            *mine += theirs;
+        }
+        self.at_generic += other.at_generic;
+        self.without_speed += other.without_speed;
     }
 
     /// Counts a row flown, whose direction took `flights` to solve.

@@ -21,7 +21,8 @@ pub fn read_typed(
     (name, quantity, unit, bounds): (&'static str, Quantity, &'static str, Bounds),
     text: &str,
 ) -> Result<f64, InputError> {
-    let shown = typed_text(text);
+    // Made only for an error: an input read well costs no allocation.
+    let shown = || typed_text(text);
     let reading = units::read_typed(text, quantity, unit).map_err(|error| match error {
         // Quoted by the error itself, which escapes what must be.
         TypedError::NotANumber => InputError::NotANumber {
@@ -33,7 +34,7 @@ pub fn read_typed(
             quantity: other,
         } => InputError::WrongUnit {
             key: name,
-            text: shown.clone(),
+            text: shown(),
             why: match quantity {
                 Quantity::Unchanged => format!("{} measures {}", typed_text(&typed), other.noun()),
                 _ => format!(
@@ -47,7 +48,7 @@ pub fn read_typed(
         },
         TypedError::UnknownUnit { unit: typed } => InputError::WrongUnit {
             key: name,
-            text: shown.clone(),
+            text: shown(),
             why: format!("unknown unit `{}`", typed_text(&typed)),
             accepted: accepted_units(quantity, unit),
         },
@@ -58,10 +59,10 @@ pub fn read_typed(
     let (typed, suggestion) = match reading.unit {
         // The SI value the unit gave, to six significant digits.
         Some(given) if !given.is_identity() => (
-            format!("{shown} ({} {unit})", units::significant(reading.si)),
+            format!("{} ({} {unit})", shown(), units::significant(reading.si)),
             String::new(),
         ),
-        Some(_) => (shown, String::new()),
+        Some(_) => (shown(), String::new()),
         None => {
             let likely = units::suggested_units(quantity, reading.number, |si| bounds.contains(si));
             let number = text.trim();
@@ -71,7 +72,7 @@ pub fn read_typed(
             } else {
                 format!(" (did you mean {}?)", guesses.join(" or "))
             };
-            (shown, suggestion)
+            (shown(), suggestion)
         }
     };
     Err(InputError::OutOfRange {

@@ -1,0 +1,343 @@
+//! A piece of a batch flown: each row's launch completed (the spin
+//! estimated, the direction solved: [`savant::launch`]), flown once to the
+//! ground and its fences, and judged there and at every park.
+//!
+//! CSV rows fly at [`Purpose::Batch`], looser than the readout, and each is
+//! then checked ([`settled`]): a row whose printed digits, or any of its
+//! outcomes, that flight cannot settle is flown again at
+//! [`Purpose::Readout`], as `fly` flies it. So the batch prints what `fly`
+//! prints, digit for digit. JSON prints every digit, so it flies at the
+//! readout's precision throughout.
+
+use super::rows::Job;
+use super::savant_columns::Setup;
+use crate::Scene;
+use crate::analysis::precision::{BATCH_GUARD, Guard, Purpose};
+use crate::analysis::savant;
+use crate::cli::shown::Shown;
+use crate::model::clearing::{Clearing, Crossing};
+use crate::model::flight::{FlightOptions, FlightSummary};
+use crate::model::launch::{self, BattedBall, SceneFlight};
+use crate::model::park::{self, GivenWeather};
+use crate::units::Quantity;
+
+/// A row's flight, as the output needs it.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct RowFlight {
+    pub launch: BattedBall,
+    pub flight: FlightSummary,
+    /// At the row's own fence (its park's, or the generic one).
+    pub clearing: Clearing,
+    pub parks_cleared: usize,
+    /// Where the parks cleared are marked, one flag a park, in
+    /// [`Scratch::cleared`].
+    pub cleared_from: usize,
+    /// Flights spent solving the launch direction.
+    pub flights: usize,
+}
+
+/// What flying a piece reuses from row to row.
+#[derive(Default)]
+pub(super) struct Scratch {
+    /// Each row's crossings of its fences: its own, then each park's.
+    crossings: Vec<Option<Crossing>>,
+    /// One row's, flown again.
+    again: Vec<Option<Crossing>>,
+    summaries: Vec<FlightSummary>,
+    clearings: Vec<Clearing>,
+    /// For each row flown, a flag per park: cleared.
+    pub cleared: Vec<bool>,
+    /// Rows flown twice (unsettled at the batch's precision).
+    pub refined: usize,
+}
+
+/// What the output prints of a row, for [`settled`].
+#[derive(Clone, Copy)]
+pub(super) struct Printed {
+    pub shown: Shown,
+    /// The `difference` column (range less Statcast's) is printed.
+    pub statcast: bool,
+    pub json: bool,
+}
+
+/// A row ready to fly: its launch complete and checked, and the fence it
+/// is judged at (its park's, or the generic one).
+pub(super) struct Ready<'f> {
+    scene: Scene,
+    pub flight: SceneFlight,
+    launch: BattedBall,
+    flights: usize,
+    pub own: &'f park::Fence,
+}
+
+/// Flies `jobs` into `out`, in order (a reason where a row cannot fly), in
+/// three steps: each row made ready; every row flown once ([`fly_all`],
+/// where the lock-step engine for many flights plugs in); each judged,
+/// checked, and flown again at the readout's precision where unsettled.
+pub(super) fn fly_chunk(
+    jobs: &[Job],
+    setup: &Setup,
+    printed: Printed,
+    scratch: &mut Scratch,
+    out: &mut Vec<Result<RowFlight, String>>,
+) {
+    out.clear();
+    scratch.cleared.clear();
+    scratch.refined = 0;
+    let purpose = if printed.json {
+        Purpose::Readout
+    } else {
+        Purpose::Batch
+    };
+    let readout = Purpose::Readout.flight_options();
+    // The generic fences of the piece (one, unless rows give field.*).
+    let mut generic: Vec<(crate::preset::Fence, park::Fence)> = Vec::new();
+    for job in jobs.iter().filter(|j| j.park.is_none()) {
+        if !generic.iter().any(|(f, _)| *f == job.fence) {
+            generic.push((job.fence, job.fence.uniform()));
+        }
+    }
+    let own = |job: &Job| match job.park {
+        Some(index) => setup.fences[index],
+        None => {
+            &generic
+                .iter()
+                .find(|(f, _)| *f == job.fence)
+                .expect("cached")
+                .1
+        }
+    };
+    let ready: Vec<Result<Ready, String>> = jobs
+        .iter()
+        .map(|job| ready(job, setup, &readout, own(job)))
+        .collect();
+    // With --own-air each park is judged on a flight in its own air.
+    let parks: &[&park::Fence] = if setup.own_air { &[] } else { &setup.fences };
+    let flying: Vec<&Ready> = ready.iter().flatten().collect();
+    fly_all(
+        &flying,
+        parks,
+        &purpose.flight_options(),
+        &mut scratch.crossings,
+        &mut scratch.summaries,
+    );
+    let width = parks.len() + 1;
+    let mut flown = 0;
+    let mut fences: Vec<&park::Fence> = Vec::with_capacity(width);
+    for (job, ready) in jobs.iter().zip(&ready) {
+        let ready = match ready {
+            Ok(ready) => ready,
+            Err(reason) => {
+                out.push(Err(reason.clone()));
+                continue;
+            }
+        };
+        fences.clear();
+        fences.push(ready.own);
+        fences.extend_from_slice(parks);
+        let own_air = setup.own_air.then_some((setup, job.given));
+        let crossings = &scratch.crossings[flown * width..][..width];
+        let mut summary = scratch.summaries[flown];
+        flown += 1;
+        judge(
+            ready,
+            &fences,
+            crossings,
+            &summary,
+            own_air,
+            &purpose.flight_options(),
+            &mut scratch.clearings,
+        );
+        if purpose == Purpose::Batch
+            && !settled(
+                &summary,
+                ready.flight.is_planar(),
+                &scratch.clearings,
+                printed,
+                job,
+            )
+        {
+            scratch.refined += 1;
+            scratch.again.clear();
+            scratch.again.resize(width, None);
+            summary = ready
+                .flight
+                .fly_to_fences(&readout, &fences, &mut scratch.again);
+            let again = &scratch.again;
+            judge(
+                ready,
+                &fences,
+                again,
+                &summary,
+                own_air,
+                &readout,
+                &mut scratch.clearings,
+            );
+        }
+        let from = scratch.cleared.len();
+        let cleared = scratch.clearings[1..].iter().map(Clearing::clears);
+        scratch.cleared.extend(cleared);
+        out.push(Ok(RowFlight {
+            launch: ready.launch,
+            flight: summary,
+            clearing: scratch.clearings[0],
+            parks_cleared: scratch.cleared[from..].iter().filter(|&&c| c).count(),
+            cleared_from: from,
+            flights: ready.flights,
+        }));
+    }
+}
+
+/// Flies each row once to the ground, noting where it crosses its own fence
+/// and then each of `parks`: row i's crossings are `crossings[i * (parks.len()
+/// + 1)..][..parks.len() + 1]`, its summary `summaries[i]`.
+///
+/// The one place a piece's flights are flown: the lock-step engine for many
+/// flights replaces this loop. The rows are independent (each its own
+/// [`SceneFlight`] and own fence, every one the same options and parks).
+pub(super) fn fly_all(
+    rows: &[&Ready],
+    parks: &[&park::Fence],
+    options: &FlightOptions,
+    crossings: &mut Vec<Option<Crossing>>,
+    summaries: &mut Vec<FlightSummary>,
+) {
+    let width = parks.len() + 1;
+    crossings.clear();
+    crossings.resize(rows.len() * width, None);
+    summaries.clear();
+    let mut fences: Vec<&park::Fence> = Vec::with_capacity(width);
+    for (row, crossings) in rows.iter().zip(crossings.chunks_mut(width)) {
+        fences.clear();
+        fences.push(row.own);
+        fences.extend_from_slice(parks);
+        summaries.push(row.flight.fly_to_fences(options, &fences, crossings));
+    }
+}
+
+/// The row's launch completed and checked.
+fn ready<'f>(
+    job: &Job,
+    setup: &Setup,
+    options: &FlightOptions,
+    own: &'f park::Fence,
+) -> Result<Ready<'f>, String> {
+    // The direction's solve stays at the readout's precision: its stopping
+    // test is a threshold a looser flight could cross in another iteration.
+    let launched =
+        savant::launch(&job.scene, &job.launch, setup.spray, options).map_err(|e| e.to_string())?;
+    launched.scene.validate().map_err(|e| {
+        if job.launch.estimates_spin() {
+            format!("{e} (the spin estimated from the launch angle)")
+        } else {
+            e.to_string()
+        }
+    })?;
+    let (flight, launch, _) = launch::scene_start(&launched.scene);
+    Ok(Ready {
+        scene: launched.scene,
+        flight,
+        launch,
+        flights: launched.flights,
+        own,
+    })
+}
+
+/// A flight judged at `fences` (the row's own, then each park's; with
+/// `own_air`, its own alone, and each park on a flight of its own in its own
+/// air) into `clearings`, in that order.
+fn judge(
+    ready: &Ready,
+    fences: &[&park::Fence],
+    crossings: &[Option<Crossing>],
+    summary: &FlightSummary,
+    own_air: Option<(&Setup, GivenWeather)>,
+    options: &FlightOptions,
+    clearings: &mut Vec<Clearing>,
+) {
+    clearings.clear();
+    clearings.extend(
+        fences
+            .iter()
+            .zip(crossings)
+            .map(|(fence, crossing)| Clearing::judge(fence, *crossing, summary)),
+    );
+    if let Some((setup, given)) = own_air {
+        for park in &setup.parks.parks {
+            let mut there = ready.scene;
+            given.park_air(&mut there.environment, park.elevation);
+            let (flight, _, _) = launch::scene_start(&there);
+            let mut crossing = [None];
+            let flown = flight.fly_to_fences(options, &[&park.fence], &mut crossing);
+            clearings.push(Clearing::judge(&park.fence, crossing[0], &flown));
+        }
+    }
+}
+
+/// Whether the row prints, and judges, exactly what the readout's flight
+/// would: every printed number [`BATCH_GUARD`] away from a change of its
+/// last digit or its sign, every outcome as far from its threshold (a
+/// margin's zero, a foul line), and the ball landed.
+fn settled(
+    flight: &FlightSummary,
+    planar: bool,
+    clearings: &[Clearing],
+    printed: Printed,
+    job: &Job,
+) -> bool {
+    let guard = BATCH_GUARD;
+    let same = |quantity, value: f64, error: f64, decimals| {
+        printed_alike(printed.shown, quantity, value, error, decimals)
+    };
+    let numbers = flight.landed
+        && same(Quantity::Distance, flight.range, guard.distance, 3)
+        // A planar flight's direction is its plane's, exactly.
+        && (planar || same(Quantity::Angle, flight.direction, guard.angle, 6))
+        && same(Quantity::Unchanged, flight.flight_time, guard.time, 3)
+        && same(Quantity::Distance, flight.apex, guard.distance, 3)
+        && same(Quantity::Angle, flight.landing_angle, guard.angle, 4)
+        && clearings[0]
+            .margin
+            .is_none_or(|m| same(Quantity::Distance, m, guard.distance, 3))
+        && (!printed.statcast
+            || job.statcast.is_none_or(|measured| {
+                same(
+                    Quantity::Distance,
+                    flight.range - measured,
+                    guard.distance,
+                    2,
+                )
+            }));
+    numbers && clearings.iter().all(|c| decided(c, guard))
+}
+
+/// Whether `value` and anything within `error` of it print alike (the
+/// same digits and sign) to `si_decimals` of `quantity` as `shown` prints it.
+fn printed_alike(
+    shown: Shown,
+    quantity: Quantity,
+    value: f64,
+    error: f64,
+    si_decimals: usize,
+) -> bool {
+    let decimals = shown.unit(quantity).decimals(si_decimals) as i32;
+    let low = shown.convert(quantity, value - error);
+    let high = shown.convert(quantity, value + error);
+    let scale = 10f64.powi(decimals);
+    let (low, high) = if low <= high {
+        (low, high)
+    } else {
+        (high, low)
+    };
+    (low * scale).round() == (high * scale).round()
+        && low.is_sign_negative() == high.is_sign_negative()
+}
+
+/// Whether a clearing's outcome stands `guard` from each threshold it was
+/// decided at: its margin's zero, the ground at the fence, the foul lines.
+fn decided(c: &Clearing, guard: Guard) -> bool {
+    let margin = c.margin.is_none_or(|m| m.abs() > guard.distance);
+    let height = c.height_at_fence.is_none_or(|h| h > guard.distance);
+    let lines = (c.direction.abs() - park::FOUL_LINE).abs() > guard.angle;
+    margin && height && lines
+}
