@@ -12,6 +12,8 @@ mod export;
 mod field;
 pub use field::AtParks;
 mod figures;
+mod impact;
+pub use impact::impact_stops;
 mod mouse;
 mod presets;
 mod scene;
@@ -402,7 +404,7 @@ impl App {
             });
         }
         if let Some(impact) = &self.flown.impact {
-            self.impact_stop = self.impact_stop.min(impact.stops().len() - 1);
+            self.impact_stop = self.impact_stop.min(impact_stops(impact).len() - 1);
         }
         self.generation += 1;
         // A stale optimum is never shown; the old surface stays, marked
@@ -660,7 +662,7 @@ impl App {
             Action::ShowTab(tab) => self.tab = tab,
             Action::NextStop => {
                 if let Some(impact) = &self.flown.impact {
-                    let last = impact.stops().len() - 1;
+                    let last = impact_stops(impact).len() - 1;
                     self.impact_stop = (self.impact_stop + 1).min(last);
                 }
             }

@@ -157,6 +157,8 @@ pub struct Theme {
     // The impact: each curve or mark in the chart and in its legend below.
     /// v1, the tangential slip of the contact points.
     pub slip: Style,
+    /// v2, a 3-D swing's slip along the bat.
+    pub slip_along: Style,
     /// v3, their normal approach.
     pub approach: Style,
     /// p_c, the end of compression.
@@ -223,6 +225,7 @@ impl Theme {
             fence: fg(Color::White),
             figure_curves: [fg(Color::Green), fg(Color::Yellow), fg(Color::Magenta)],
             slip: fg(Color::Cyan),
+            slip_along: fg(Color::LightGreen),
             approach: fg(Color::Yellow),
             // Light blue: xterm's dark blue hardly shows on black.
             compression: fg(Color::LightBlue),
@@ -251,6 +254,7 @@ impl Theme {
             fence: fg(Color::Black),
             figure_curves: [fg(DARK_GREEN), fg(AMBER), fg(Color::Magenta)],
             slip: fg(TEAL),
+            slip_along: fg(DARK_GREEN),
             approach: fg(AMBER),
             compression: fg(Color::Blue),
             cursor: fg(Color::Black),
@@ -292,6 +296,7 @@ impl Theme {
             &mut theme.landing,
             &mut theme.fence,
             &mut theme.slip,
+            &mut theme.slip_along,
             &mut theme.approach,
             &mut theme.compression,
             &mut theme.stick,
@@ -515,6 +520,7 @@ mod tests {
             theme.landing,
             theme.fence,
             theme.slip,
+            theme.slip_along,
             theme.approach,
             theme.compression,
             theme.stick,

@@ -7,6 +7,7 @@ pub mod figure;
 mod figure_panels;
 mod heatmap;
 mod impact;
+mod impact3d;
 mod inputs;
 mod overlay;
 mod readout;
