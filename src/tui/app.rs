@@ -14,6 +14,8 @@ pub use field::AtParks;
 mod figures;
 mod impact;
 pub use impact::impact_stops;
+mod margin;
+pub use margin::{MarginMap, MarginState};
 mod mouse;
 mod presets;
 mod scene;
@@ -210,6 +212,8 @@ pub struct App {
     pub park: Option<usize>,
     /// The current flight judged at every park, and at the one chosen.
     pub at_parks: Option<AtParks>,
+    /// The heatmap's margin over the park's wall (key `c`).
+    pub margin: MarginMap,
     /// The current flight's path (distance from the plate, height), sampled
     /// at the plot's resolution.
     pub path: Vec<(f64, f64)>,
@@ -301,6 +305,7 @@ impl App {
             fence_height: None,
             park: None,
             at_parks: None,
+            margin: MarginMap::default(),
             path: Vec::new(),
             ground: Vec::new(),
             optimum: None,
@@ -339,7 +344,7 @@ impl App {
     pub fn busy(&self) -> bool {
         let swing_work = !self.is_swing()
             || (self.optimum.is_some_and(|o| o.done)
-                && self.surface_fresh()
+                && self.heatmap_fresh()
                 && self.optimum_gains_fresh());
         !(swing_work && self.gains_done(Gain::Swing) == self.gain_count() && self.figure_fresh())
     }
@@ -413,6 +418,7 @@ impl App {
         self.optimal_path.clear();
         self.optimal_ground.clear();
         self.job = Some(self.job_for(Work::Everything));
+        self.refresh_margin(false);
     }
 
     /// The background work for the current inputs.
@@ -427,6 +433,7 @@ impl App {
             window: Grid::explorer_window(),
             resolution: heatmap_resolution(self.size),
             optimum_gains: self.wants_optimum_gains(),
+            range_surface: !self.shows_margin(),
             units: self.units,
             work,
         }
@@ -649,6 +656,7 @@ impl App {
             Action::NextPark | Action::PreviousPark => {
                 self.cycle_park(action == Action::NextPark);
             }
+            Action::MarginMap => self.toggle_margin(),
             Action::NextTab | Action::PreviousTab => {
                 let n = Tab::ALL.len();
                 let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);

@@ -14,6 +14,7 @@ pub mod format;
 pub mod inputs;
 pub mod keymap;
 pub mod layout;
+pub mod margin;
 pub mod theme;
 pub mod view;
 pub mod worker;
@@ -22,7 +23,7 @@ use std::io::{self, IsTerminal, Write};
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::TryRecvError;
+use std::sync::mpsc::{Receiver, TryRecvError};
 use std::time::Duration;
 
 use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture, Event};
@@ -142,6 +143,9 @@ pub fn run(
         if let Some(job) = app.take_figure_job() {
             worker.submit_figure(job);
         }
+        if let Some(job) = app.take_margin_job() {
+            worker.submit_margin(job);
+        }
         if app.dirty {
             app.dirty = false;
             queue!(terminal.backend_mut(), BeginSynchronizedUpdate)?;
@@ -164,22 +168,22 @@ pub fn run(
             }
             app.flush();
         }
-        loop {
-            match worker.reports.try_recv() {
-                Ok(report) => app.apply(report),
-                Err(TryRecvError::Empty) => break,
-                // The worker is gone (it panicked): stop rather than show a
-                // screen that will never update.
-                Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
-            }
-        }
-        loop {
-            match worker.figures.try_recv() {
-                Ok(report) => app.apply_figure(report),
-                Err(TryRecvError::Empty) => break,
-                Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
-            }
-        }
+        drain(&worker.reports, |report| app.apply(report))?;
+        drain(&worker.figures, |report| app.apply_figure(report))?;
+        drain(&worker.margins, |report| app.apply_margin(report))?;
     }
     Ok(())
+}
+
+/// Takes in every result waiting on `reports`. A thread that is gone (it
+/// panicked) stops the explorer rather than leave a screen that will never
+/// update.
+fn drain<R>(reports: &Receiver<R>, mut apply: impl FnMut(R)) -> Result<(), TuiError> {
+    loop {
+        match reports.try_recv() {
+            Ok(report) => apply(report),
+            Err(TryRecvError::Empty) => return Ok(()),
+            Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
+        }
+    }
 }

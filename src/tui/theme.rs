@@ -170,6 +170,9 @@ pub struct Theme {
     // The heatmap, painted cell by cell (in colour only).
     /// The fence's distance as a contour.
     pub contour: Color,
+    /// The margin map's zero (the wall's top) as a contour: dark, on the
+    /// light tints either side of it.
+    pub zero_contour: Color,
     /// Where the bat misses the ball: no range.
     pub no_range: Color,
     /// Where the ball does not land within its limits: no range, and off
@@ -232,6 +235,7 @@ impl Theme {
             stick: fg(Color::Magenta),
             cursor: fg(Color::White),
             contour: Color::White,
+            zero_contour: Color::Black,
             no_range: Color::Black,
             not_landed: Color::Gray,
             optimum_mark: Color::Yellow,
@@ -282,6 +286,7 @@ impl Theme {
             key: Style::new().add_modifier(Modifier::BOLD),
             stale_gain: Style::new().add_modifier(Modifier::ITALIC | Modifier::DIM),
             contour: Color::Reset,
+            zero_contour: Color::Reset,
             no_range: Color::Reset,
             not_landed: Color::Reset,
             optimum_mark: Color::Reset,
@@ -398,6 +403,53 @@ impl Theme {
     }
 }
 
+/// The margin map's glyph for a cell at `t` of its scale (0 to 1, the
+/// wall's top at ½) where there is no colour: lines below the wall,
+/// heavier the further under it; shades above it, darker the higher.
+pub fn margin_shade(t: f64) -> &'static str {
+    const GLYPHS: [&str; 6] = ["=", "-", "·", "░", "▒", "▓"];
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.5
+    };
+    GLYPHS[((t * GLYPHS.len() as f64) as usize).min(GLYPHS.len() - 1)]
+}
+
+/// The margin map's diverging ramp, t in [0, 1] with the wall's top at ½:
+/// magenta under the wall, green over it, through a light grey
+/// (ColorBrewer's PiYG, which colour-blind eyes tell apart). Both ends
+/// are dark, so that they read on a dark and a light terminal alike.
+pub fn diverging(t: f64) -> (u8, u8, u8) {
+    const STOPS: [(f64, f64, f64); 9] = [
+        (142.0, 1.0, 82.0),
+        (197.0, 27.0, 125.0),
+        (222.0, 119.0, 174.0),
+        (241.0, 182.0, 218.0),
+        (247.0, 247.0, 247.0),
+        (184.0, 225.0, 134.0),
+        (127.0, 188.0, 65.0),
+        (77.0, 146.0, 33.0),
+        (39.0, 100.0, 25.0),
+    ];
+    interpolate(&STOPS, t)
+}
+
+/// The colour at `t` in [0, 1] along evenly spaced `stops`.
+fn interpolate(stops: &[(f64, f64, f64)], t: f64) -> (u8, u8, u8) {
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let x = t * (stops.len() - 1) as f64;
+    let k = (x.floor() as usize).min(stops.len() - 2);
+    let f = x - k as f64;
+    let (a, b) = (stops[k], stops[k + 1]);
+    let mix = |p: f64, q: f64| (p + f * (q - p)).round() as u8;
+    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
 impl From<ColorMode> for Theme {
     /// The dark theme in `color`s.
     fn from(color: ColorMode) -> Theme {
@@ -415,17 +467,7 @@ pub fn ramp(t: f64) -> (u8, u8, u8) {
         (122.0, 209.0, 81.0),
         (253.0, 231.0, 37.0),
     ];
-    let t = if t.is_finite() {
-        t.clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let x = t * (STOPS.len() - 1) as f64;
-    let k = (x.floor() as usize).min(STOPS.len() - 2);
-    let f = x - k as f64;
-    let (a, b) = (STOPS[k], STOPS[k + 1]);
-    let mix = |p: f64, q: f64| (p + f * (q - p)).round() as u8;
-    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+    interpolate(&STOPS, t)
 }
 
 #[cfg(test)]
@@ -570,6 +612,29 @@ mod tests {
         }
         assert_eq!(Theme::shade(0.0), "·");
         assert_eq!(Theme::shade(1.0), "█");
+    }
+
+    #[test]
+    fn the_margin_scale_tells_over_the_wall_from_under_it() {
+        // Magenta under the wall, green over it, grey at its top; both
+        // ends dark enough to read on white, and light enough on black.
+        for k in 0..=20 {
+            let t = f64::from(k) / 20.0;
+            let (r, g, b) = diverging(t);
+            if t < 0.5 {
+                assert!(r > g && b > g, "{t}: {:?}", (r, g, b));
+                assert_eq!(margin_shade(t).chars().count(), 1);
+                assert!(["=", "-", "·"].contains(&margin_shade(t)), "{t}");
+            } else if t > 0.5 {
+                assert!(g > r && g > b, "{t}: {:?}", (r, g, b));
+                assert!(["░", "▒", "▓"].contains(&margin_shade(t)), "{t}");
+            }
+        }
+        assert_eq!(diverging(0.5), (247, 247, 247));
+        for end in [diverging(0.0), diverging(1.0)] {
+            assert!(contrast(end, (255, 255, 255)) >= 3.0, "{end:?}");
+            assert!(contrast(end, (0, 0, 0)) >= 2.0, "{end:?}");
+        }
     }
 
     #[test]

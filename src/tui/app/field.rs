@@ -31,6 +31,11 @@ impl App {
         self.ground.iter().chain(&self.optimal_ground).chain(pinned)
     }
 
+    /// The park chosen (`m`/`M`), if any.
+    pub fn chosen_park(&self) -> Option<&park::Park> {
+        self.park.and_then(|k| park::bundled().get(k))
+    }
+
     /// The fence from above: the chosen park's, else the preset's generic
     /// fence, the same in every direction.
     pub fn field_fence(&self) -> Option<park::Fence> {
@@ -89,6 +94,7 @@ impl App {
             (Some(k), false) => k.checked_sub(1),
         };
         self.judge_fences();
+        self.refresh_margin(true);
         self.dirty = true;
         let text = match self.park.and_then(|k| park::bundled().get(k)) {
             Some(p) => format!(

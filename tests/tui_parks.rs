@@ -1,0 +1,151 @@
+//! The explorer at the ballparks: the margin over a park's wall as a map
+//! over the swings (`c`), the field shaded by wall height, the user's own
+//! parks in the picker, and a park's own air.
+
+mod tui_support;
+
+use homerun::analysis::precision::Purpose;
+use homerun::model::clearing::Outcome;
+use homerun::model::park;
+use homerun::tui::app::App;
+use homerun::tui::margin::{MarginCell, margin_at};
+use homerun::tui::theme::{Background, ColorMode, Theme};
+use ratatui::crossterm::event::KeyCode;
+use ratatui::layout::Rect;
+use tui_support::*;
+
+/// The explorer on the fastball with `theme`.
+fn themed(theme: Theme, w: u16, h: u16) -> App {
+    App::new(
+        homerun::preset::load("fastball", None).unwrap(),
+        None,
+        theme,
+        Rect::new(0, 0, w, h),
+    )
+}
+
+/// `m` until the chosen park is `code`.
+fn pick(app: &mut App, code: &str) {
+    for _ in 0..=park::bundled().len() {
+        if app.chosen_park().is_some_and(|p| p.code == code) {
+            return;
+        }
+        key(app, KeyCode::Char('m'));
+    }
+    panic!("no park {code}");
+}
+
+#[test]
+fn c_shows_the_margin_over_the_wall_and_c_again_the_range() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('2'));
+    assert!(!app.shows_margin());
+    // No park: the preset's fence, the same in every direction.
+    key(&mut app, KeyCode::Char('c'));
+    settle(&mut app);
+    assert!(app.shows_margin() && app.margin_fresh());
+    let shown = screen(&app);
+    assert!(
+        shown.contains("Margin at the fence (E, ψ) · ── 0 m"),
+        "{shown}"
+    );
+    assert!(shown.contains("margin ✓ 33×38"), "{shown}");
+    // A park: its wall.
+    pick(&mut app, "BOS");
+    settle(&mut app);
+    assert!(screen(&app).contains("Margin at BOS (E, ψ)"));
+    // New inputs while the margin shows: the range surface is not computed.
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('l'));
+    settle(&mut app);
+    assert!(app.margin_fresh() && !app.surface_fresh());
+    assert!(!app.busy(), "the margin map is what the heatmap waits for");
+    // Back to the range: computed now, for these inputs.
+    key(&mut app, KeyCode::Char('c'));
+    assert!(!app.shows_margin() && app.busy());
+    settle(&mut app);
+    assert!(app.surface_fresh() && !app.busy());
+    assert!(screen(&app).contains("Range over (E, ψ)"));
+}
+
+#[test]
+fn a_batted_ball_has_no_margin_map() {
+    let mut app = app_on("fly-ball", 80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('c'));
+    assert!(!app.shows_margin() && app.take_margin_job().is_none());
+    assert!(
+        app.message
+            .as_ref()
+            .is_some_and(|(m, error)| *error && m.contains("swing scene"))
+    );
+}
+
+/// The map's margin is the clearance of `Clearing`: over the wall (> 0)
+/// where the readout says the ball clears, under it where it does not,
+/// and the map's cell at the swing agrees.
+#[test]
+fn the_margin_is_positive_where_the_ball_clears_and_negative_where_it_does_not() {
+    // The fastball's swing 2 m/s slower: 125 m, out of some parks only.
+    let mut app = app(80, 24, None);
+    set_and_settle(&mut app, "bat.speed", "28");
+    let options = Purpose::Readout.flight_options();
+    let swing = (app.scene.bat.undercut, app.scene.bat.swing_angle);
+    let mut margins = Vec::new();
+    for p in park::bundled() {
+        pick(&mut app, &p.code);
+        let here = app.at_parks.unwrap().here.unwrap();
+        let MarginCell::Margin(m) = margin_at(&app.scene, &p.fence, swing, &options) else {
+            panic!("{}: no margin", p.code);
+        };
+        // The readout's verdict, from the same flight at the same precision.
+        let clearance = here.clearance(&app.flown.flight).unwrap();
+        assert!(
+            (m - clearance).abs() < 1e-9,
+            "{}: {m} vs {clearance}",
+            p.code
+        );
+        assert_eq!(m > 0.0, here.outcome == Outcome::Clears, "{}: {m}", p.code);
+        margins.push((m, p.code.as_str()));
+    }
+    margins.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (lowest, highest) = (margins[0], margins[margins.len() - 1]);
+    assert!(lowest.0 < -2.0 && highest.0 > 2.0, "{margins:?}");
+
+    // On the map: the cell nearest the swing, at the park it clears by
+    // most and at the one it misses by most.
+    for (code, over) in [(highest.1, true), (lowest.1, false)] {
+        pick(&mut app, code);
+        if !app.shows_margin() {
+            key(&mut app, KeyCode::Char('c'));
+        }
+        settle(&mut app);
+        let state = app.margin.state.as_ref().unwrap();
+        let grid = state.surface.grid;
+        let nearest = |from: f64, to: f64, n: usize, v: f64| {
+            (((v - from) / (to - from) * (n - 1) as f64).round() as usize).min(n - 1)
+        };
+        let i = nearest(grid.undercut.0, grid.undercut.1, grid.columns, swing.0);
+        let j = nearest(grid.swing_angle.0, grid.swing_angle.1, grid.rows, swing.1);
+        let cell = state.surface.cell(i, j).margin().unwrap();
+        assert_eq!(cell > 0.0, over, "{code}: the map's {cell} at the swing");
+    }
+}
+
+/// Without colour the map is in glyphs: shades over the wall, lines
+/// under it, its contour dotted.
+#[test]
+fn the_margin_map_without_colour() {
+    let mut app = themed(Theme::new(Background::Dark, ColorMode::NoColor), 80, 24);
+    settle(&mut app);
+    pick(&mut app, "AZ");
+    key(&mut app, KeyCode::Char('2'));
+    key(&mut app, KeyCode::Char('c'));
+    settle(&mut app);
+    let shown = screen(&app);
+    for glyph in ["▓", "░", "·", "-", "=", "•", "✚"] {
+        assert!(shown.contains(glyph), "{glyph}: {shown}");
+    }
+    insta::assert_snapshot!("margin_no_color_80x24", shown);
+}
