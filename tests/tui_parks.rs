@@ -149,3 +149,43 @@ fn the_margin_map_without_colour() {
     }
     insta::assert_snapshot!("margin_no_color_80x24", shown);
 }
+
+/// The field from above draws a park's wall shaded by its height: at
+/// Fenway the 37 ft wall in left field in the tallest band's colour and
+/// full blocks, left of the plate only; a legend names the bands.
+#[test]
+fn the_field_shades_the_wall_by_its_height_and_the_monster_stands_out() {
+    for (w, h) in [(80, 24), (160, 48)] {
+        let mut app = app(w, h, None);
+        settle(&mut app);
+        key(&mut app, KeyCode::Char('5'));
+        pick(&mut app, "BOS");
+        let pane = homerun::tui::layout::layout(app.size, app.tab, true)
+            .field
+            .unwrap();
+        let buffer = buffer(&app);
+        let tallest = app.theme.walls[3].fg;
+        let plate = pane.x + pane.width / 2;
+        let monster: Vec<u16> = (pane.y + 1..pane.bottom() - 1)
+            .flat_map(|y| (pane.x + 1..pane.right() - 1).map(move |x| (x, y)))
+            .filter(|&(x, y)| {
+                buffer[(x, y)].symbol() == "█" && buffer[(x, y)].fg == tallest.unwrap()
+            })
+            .map(|(x, _)| x)
+            .collect();
+        assert!(monster.len() >= 5, "{w}×{h}: {monster:?}");
+        assert!(monster.iter().all(|&x| x < plate), "{w}×{h}: {monster:?}");
+        let shown = screen(&app);
+        assert!(shown.contains("wall ━≤2.4 ━≤3.7 ▀<6.1 █≥6.1 m"), "{shown}");
+        insta::assert_snapshot!(format!("field_bos_{w}x{h}"), shown);
+    }
+    // Without a park, the preset's fence in one colour and no legend.
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('5'));
+    assert!(!screen(&app).contains("wall "));
+    // In feet: the bands' own numbers.
+    pick(&mut app, "BOS");
+    key(&mut app, KeyCode::Char('u'));
+    assert!(screen(&app).contains("wall ━≤8 ━≤12 ▀<20 █≥20 ft"));
+}

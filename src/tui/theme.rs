@@ -151,6 +151,9 @@ pub struct Theme {
     pub apex: Style,
     pub landing: Style,
     pub fence: Style,
+    /// A park's wall from above, by its height: up to 8 ft, 12 ft, under
+    /// 20 ft, and 20 ft or more (see [`Theme::wall_marker`]).
+    pub walls: [Style; 4],
     /// A figure's curves, in turn (the current input's line is `swing`,
     /// the paper's marked points `apex`).
     pub figure_curves: [Style; 3],
@@ -226,6 +229,12 @@ impl Theme {
             apex: fg(Color::Yellow),
             landing: fg(Color::Magenta),
             fence: fg(Color::White),
+            walls: [
+                fg(Color::Indexed(110)),
+                fg(Color::Yellow),
+                fg(Color::Indexed(208)),
+                fg(Color::LightRed).add_modifier(Modifier::BOLD),
+            ],
             figure_curves: [fg(Color::Green), fg(Color::Yellow), fg(Color::Magenta)],
             slip: fg(Color::Cyan),
             slip_along: fg(Color::LightGreen),
@@ -256,6 +265,12 @@ impl Theme {
             pinned: fg(Color::Red),
             apex: fg(AMBER),
             fence: fg(Color::Black),
+            walls: [
+                fg(Color::Indexed(25)),
+                fg(Color::Indexed(136)),
+                fg(Color::Indexed(166)),
+                fg(Color::Indexed(160)).add_modifier(Modifier::BOLD),
+            ],
             figure_curves: [fg(DARK_GREEN), fg(AMBER), fg(Color::Magenta)],
             slip: fg(TEAL),
             slip_along: fg(DARK_GREEN),
@@ -310,6 +325,7 @@ impl Theme {
             *style = bare(*style);
         }
         theme.figure_curves = theme.figure_curves.map(bare);
+        theme.walls = theme.walls.map(bare);
         theme
     }
 
@@ -387,6 +403,18 @@ impl Theme {
             (true, _) | (false, 0) => (Marker::Braille, "━"),
             (false, 1) => (Marker::Dot, "•"),
             (false, _) => (Marker::Quadrant, "▚"),
+        }
+    }
+
+    /// How a wall of height band `k` (0 lowest, 3 the tallest) is drawn
+    /// from above: the taller, the thicker, so that a 37 ft wall stands
+    /// out whatever the colours; without colour each band has its own.
+    pub fn wall_marker(&self, k: usize) -> Marker {
+        match (self.colored(), k) {
+            (_, 0) | (true, 1) => Marker::Braille,
+            (false, 1) => Marker::Bar,
+            (_, 2) => Marker::HalfBlock,
+            _ => Marker::Block,
         }
     }
 
@@ -569,6 +597,7 @@ mod tests {
             theme.cursor,
         ];
         styles.extend(theme.figure_curves);
+        styles.extend(theme.walls);
         for value in [1.0, 0.3, 0.05, -1.0, -0.3, -0.05] {
             styles.push(theme.gain(value, 1.0));
         }
