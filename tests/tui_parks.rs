@@ -189,3 +189,67 @@ fn the_field_shades_the_wall_by_its_height_and_the_monster_stands_out() {
     key(&mut app, KeyCode::Char('u'));
     assert!(screen(&app).contains("wall ━≤8 ━≤12 ▀<20 █≥20 ft"));
 }
+
+/// A park of the user's own (`data/parks.toml`'s format) in the parks
+/// folder is among the parks `m`/`M` go through, after the bundled 30: its
+/// fence is drawn and judged. "N of 30" still counts the bundled parks.
+#[test]
+fn a_users_park_is_in_the_picker_after_the_bundled_ones() {
+    let dir = tempfile::tempdir().unwrap();
+    // A short porch: 80 m to the wall everywhere, 2 m high.
+    let mine = "[[park]]\ncode = \"MYP\"\nname = \"My Porch\"\nelevation = 10\ncenter_field_bearing = 45\nfence = [\n  { direction = -0.7854, distance = 80, height = 2 },\n  { direction = 0.7854, distance = 80, height = 2 },\n]\n";
+    std::fs::write(dir.path().join("porch.toml"), mine).unwrap();
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let counted = app.at_parks.unwrap();
+    app.load_parks(Some(dir.path()));
+    assert_eq!(app.parks.list.parks.len(), 31);
+    // M from none: the last, the user's.
+    key(&mut app, KeyCode::Char('M'));
+    let park = app.chosen_park().unwrap();
+    assert_eq!(
+        (park.code.as_str(), park.name.as_str()),
+        ("MYP", "My Porch")
+    );
+    let (message, error) = app.message.clone().unwrap();
+    assert!(
+        !error && message.contains("park 31/31: MYP (My Porch, yours from porch.toml)"),
+        "{message}"
+    );
+    // Judged at its wall: the fastball (134.7 m) clears an 80 m porch.
+    let here = app.at_parks.unwrap().here.unwrap();
+    assert!(here.clears(), "{here:?}");
+    assert_eq!(here.wall.unwrap().distance, 80.0);
+    assert_eq!(
+        (app.at_parks.unwrap().cleared, app.at_parks.unwrap().of),
+        (counted.cleared, 30)
+    );
+    assert!(screen(&app).contains("MYP clears by"), "{}", screen(&app));
+    // On the field, its fence (80 m) in the lowest band: a legend, no
+    // other park's wall.
+    key(&mut app, KeyCode::Char('5'));
+    assert!(screen(&app).contains("wall ━≤2.4"));
+    // m past it: none again; then the first bundled park.
+    key(&mut app, KeyCode::Char('m'));
+    assert!(app.chosen_park().is_none());
+    key(&mut app, KeyCode::Char('m'));
+    assert_eq!(app.chosen_park().unwrap().code, "AZ");
+}
+
+#[test]
+fn a_broken_park_file_leaves_the_bundled_parks_and_says_why() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("bad.toml"), "[[park]]\ncode = 3\n").unwrap();
+    let mut app = app(80, 24, None);
+    app.load_parks(Some(dir.path()));
+    assert_eq!(app.parks.list.parks.len(), 30);
+    let (message, error) = app.message.clone().unwrap();
+    assert!(error && message.contains("bad.toml"), "{message}");
+    key(&mut app, KeyCode::Char('m'));
+    let (message, error) = app.message.clone().unwrap();
+    assert!(
+        error && message.contains("your parks were not read"),
+        "{message}"
+    );
+    assert_eq!(app.chosen_park().unwrap().code, "AZ");
+}

@@ -10,7 +10,7 @@ use ratatui_textarea::TextArea;
 mod edit;
 mod export;
 mod field;
-pub use field::AtParks;
+pub use field::{AtParks, ParkList};
 mod figures;
 mod impact;
 pub use impact::impact_stops;
@@ -18,6 +18,7 @@ mod margin;
 pub use margin::{MarginMap, MarginState};
 mod mouse;
 mod presets;
+mod reports;
 mod scene;
 
 use super::format::{error_text, read_value, shown_value};
@@ -207,9 +208,10 @@ pub struct App {
     pub flown: Flown,
     /// The ball's height (m) where it passes the fence, if it gets there.
     pub fence_height: Option<f64>,
-    /// The park chosen (`m`/`M`), an index into `park::bundled()`: its
-    /// fence replaces the preset's in the field and the side view.
+    /// The park chosen (`m`/`M`), an index into `parks`: its fence
+    /// replaces the preset's in the field and the side view.
     pub park: Option<usize>,
+    pub parks: ParkList,
     /// The current flight judged at every park, and at the one chosen.
     pub at_parks: Option<AtParks>,
     /// The heatmap's margin over the park's wall (key `c`).
@@ -304,6 +306,7 @@ impl App {
             flown,
             fence_height: None,
             park: None,
+            parks: ParkList::default(),
             at_parks: None,
             margin: MarginMap::default(),
             path: Vec::new(),
@@ -486,83 +489,6 @@ impl App {
             .iter()
             .map(|p| ((p.distance, p.y), (p.x, p.z)))
             .unzip()
-    }
-
-    /// Takes in a background result, unless it is for older inputs.
-    pub fn apply(&mut self, report: Report) {
-        if report.generation() != self.generation {
-            return;
-        }
-        self.dirty = true;
-        match report {
-            Report::Optimum {
-                best,
-                evaluations,
-                done,
-                status,
-                ..
-            } => {
-                let scene = self.scene.with_swing(best.undercut, best.swing_angle);
-                // One flight (~0.1 ms), once: a hovering ball's best can graze
-                // the ground at the optimiser's precision only.
-                let lands_at_readout = !(done && best.range.is_finite())
-                    || crate::model::simulate(&scene, Purpose::Readout)
-                        .flight
-                        .landed;
-                self.optimum = Some(OptimumState {
-                    best,
-                    evaluations,
-                    done,
-                    status,
-                    lands_at_readout,
-                });
-                // A search that found nothing landing has no optimum to
-                // start from or to draw.
-                if done && best.range.is_finite() {
-                    self.warm_start = Some((best.undercut, best.swing_angle));
-                    (self.optimal_path, self.optimal_ground) = self.plot_tracks(&scene);
-                }
-            }
-            Report::Sensitivity {
-                gain,
-                key,
-                value,
-                generation,
-            } => {
-                let cells = match gain {
-                    Gain::Swing => &mut self.swing_gains,
-                    Gain::Optimum => &mut self.optimum_gains,
-                };
-                if let Some(cell) = cells.get_mut(key) {
-                    *cell = Some(GainCell { value, generation });
-                }
-            }
-            Report::Surface {
-                surface,
-                last,
-                generation,
-            } => {
-                // A coarse surface for new inputs does not replace a finer
-                // one for the old: while a key is held the map then updates
-                // in place, without flashing through blocks, and a repaint
-                // costs only the cells that changed.
-                let cells = |s: &Surface| s.grid.columns * s.grid.rows;
-                let replace = match &self.surface {
-                    None => true,
-                    Some(shown) => {
-                        last || shown.generation == generation
-                            || cells(&surface) >= cells(&shown.surface)
-                    }
-                };
-                if replace {
-                    self.surface = Some(SurfaceState {
-                        surface,
-                        last,
-                        generation,
-                    });
-                }
-            }
-        }
     }
 
     pub fn handle(&mut self, event: &Event) {

@@ -102,10 +102,11 @@ impl Drop for Restore {
 /// Runs the explorer on `preset` until the user quits or a signal (TERM,
 /// HUP, INT) asks it to stop; the terminal is restored either way. Its
 /// colours are for `background` (else the one `COLORFGBG` names), none
-/// under `NO_COLOR`.
+/// under `NO_COLOR`. `m`/`M` go through the bundled parks and the user's
+/// from `parks_dir`.
 pub fn run(
     preset: Preset,
-    presets_dir: Option<PathBuf>,
+    (presets_dir, parks_dir): (Option<PathBuf>, Option<PathBuf>),
     units: crate::units::UnitSystem,
     background: Option<Background>,
 ) -> Result<(), TuiError> {
@@ -133,6 +134,7 @@ pub fn run(
         Rect::new(0, 0, size.width, size.height),
     );
     app.set_units(units);
+    app.load_parks(parks_dir.as_deref());
     let worker = Worker::spawn();
     watch_for_hang_up()?;
 

@@ -407,12 +407,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
 /// 26/30 parks" (off the wall by, short by, foul), in the units shown.
 fn parks_text(app: &App, at: &crate::tui::app::AtParks) -> String {
     use crate::model::clearing::Outcome;
-    let (Some(k), Some(here)) = (app.park, at.here) else {
+    let (Some(park), Some(here)) = (app.chosen_park(), at.here) else {
         return format!("clears {} of {} parks", at.cleared, at.of);
     };
-    let code = crate::model::park::bundled()
-        .get(k)
-        .map_or("?", |p| p.code.as_str());
+    let code = crate::preset::escape_cut(&park.code, 8);
     let unit = app.unit(Quantity::Distance);
     let by = |m: f64| format!("{:.1} {}", unit.show_difference(m.abs()), unit.symbol);
     let verdict = match (here.outcome, here.margin) {
