@@ -253,3 +253,78 @@ fn a_broken_park_file_leaves_the_bundled_parks_and_says_why() {
     );
     assert_eq!(app.chosen_park().unwrap().code, "AZ");
 }
+
+/// `a`: the scene in the chosen park's own air, the standard atmosphere at
+/// its elevation (as `fly --own-air` flies each park); the air follows the
+/// park; `a` again brings back the air from before.
+#[test]
+fn a_flies_the_scene_in_the_parks_own_air_and_a_again_brings_back_the_air_before() {
+    use homerun::model::atmosphere::Atmosphere;
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let before = app.scene.environment.air();
+    let at_sea_level = app.flown.flight.range;
+    // No park yet: refused, nothing changes.
+    key(&mut app, KeyCode::Char('a'));
+    assert!(!app.in_park_air() && app.scene.environment.air() == before);
+    assert!(
+        app.message
+            .as_ref()
+            .is_some_and(|(m, error)| *error && m.contains("pick a park"))
+    );
+
+    pick(&mut app, "COL");
+    key(&mut app, KeyCode::Char('a'));
+    settle(&mut app);
+    let coors = park::find(park::bundled(), "COL").unwrap().elevation;
+    let air = app.scene.environment.atmosphere().unwrap();
+    assert_eq!(
+        air,
+        Atmosphere {
+            elevation: coors,
+            ..Atmosphere::STANDARD
+        }
+    );
+    // A mile up the air is about 17 % thinner than the preset's 1.23 kg/m³
+    // (e^(−1.217e−4·1580) = 0.825 of sea level's standard 1.2250), and the
+    // ball flies further.
+    let ratio = app.scene.environment.air_density / Atmosphere::STANDARD.air_density();
+    assert!((ratio - 0.8253).abs() < 0.002, "{ratio}");
+    assert!(
+        app.flown.flight.range > at_sea_level + 1.0,
+        "{} vs {at_sea_level}",
+        app.flown.flight.range
+    );
+    let shown = screen(&app);
+    assert!(shown.contains("COL's standard air at 1579.8 m"), "{shown}");
+    assert!(
+        shown.contains("parks    COL clears by"),
+        "the verdict stays in view: {shown}"
+    );
+    insta::assert_snapshot!("park_air_80x24", shown);
+
+    // The next park brings its own air.
+    key(&mut app, KeyCode::Char('m'));
+    let next = app.chosen_park().unwrap().clone();
+    assert_eq!(
+        app.scene.environment.atmosphere().unwrap().elevation,
+        next.elevation
+    );
+    assert!(app.message.as_ref().unwrap().0.contains("in its air at"));
+    // a: the air from before, exactly (the preset's ρ and ν, given).
+    key(&mut app, KeyCode::Char('a'));
+    settle(&mut app);
+    assert!(!app.in_park_air());
+    assert_eq!(app.scene.environment.air(), before);
+    assert_eq!(app.flown.flight.range, at_sea_level);
+    // In a park's air, no park at all: the air from before too.
+    key(&mut app, KeyCode::Char('a'));
+    for _ in 0..=park::bundled().len() {
+        if app.chosen_park().is_none() {
+            break;
+        }
+        key(&mut app, KeyCode::Char('m'));
+    }
+    assert!(!app.in_park_air());
+    assert_eq!(app.scene.environment.air(), before);
+}

@@ -15,6 +15,7 @@ mod figures;
 mod impact;
 pub use impact::impact_stops;
 mod margin;
+mod park_air;
 pub use margin::{MarginMap, MarginState};
 mod mouse;
 mod presets;
@@ -212,6 +213,8 @@ pub struct App {
     /// replaces the preset's in the field and the side view.
     pub park: Option<usize>,
     pub parks: ParkList,
+    /// The air before `a` put the scene in the park's: `Some` while in it.
+    pub air_before_park: Option<crate::model::atmosphere::Air>,
     /// The current flight judged at every park, and at the one chosen.
     pub at_parks: Option<AtParks>,
     /// The heatmap's margin over the park's wall (key `c`).
@@ -307,6 +310,7 @@ impl App {
             fence_height: None,
             park: None,
             parks: ParkList::default(),
+            air_before_park: None,
             at_parks: None,
             margin: MarginMap::default(),
             path: Vec::new(),
@@ -583,6 +587,7 @@ impl App {
                 self.cycle_park(action == Action::NextPark);
             }
             Action::MarginMap => self.toggle_margin(),
+            Action::ParkAir => self.toggle_park_air(),
             Action::NextTab | Action::PreviousTab => {
                 let n = Tab::ALL.len();
                 let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);

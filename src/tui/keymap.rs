@@ -60,6 +60,8 @@ pub enum Action {
     PreviousPark,
     /// The heatmap: the range, or the margin over the park's wall.
     MarginMap,
+    /// The scene in the park's own air, or back to the air before.
+    ParkAir,
     NextTab,
     PreviousTab,
     ShowTab(Tab),
@@ -237,8 +239,13 @@ pub const KEYMAP: &[Row] = &[
         "pin the scene to compare with / clear the pin",
     ),
     row(
-        &[ch('m', NextPark), ch('M', PreviousPark), ch('c', MarginMap)],
-        "next / previous ballpark / its margin map",
+        &[
+            ch('m', NextPark),
+            ch('M', PreviousPark),
+            ch('c', MarginMap),
+            ch('a', ParkAir),
+        ],
+        "next / previous park / its margin map / its air",
     ),
     row(
         &[
@@ -410,7 +417,7 @@ mod tests {
                 "r",
                 "u",
                 "p P",
-                "m M c",
+                "m M c a",
                 "Tab  1 2 3 4 5",
                 "f F",
                 ", .",

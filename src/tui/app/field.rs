@@ -151,6 +151,9 @@ impl App {
         self.judge_fences();
         self.refresh_margin(true);
         self.dirty = true;
+        // In the park's air, the new park's (or, with none, the air before).
+        let was_in_air = self.in_park_air();
+        let air = self.follow_park_air();
         let mut text = match (self.chosen_park(), self.park) {
             (Some(p), Some(k)) => {
                 let yours = self.parks.list.files[k]
@@ -159,19 +162,28 @@ impl App {
                     .map_or(String::new(), |f| {
                         format!(", yours from {}", f.to_string_lossy())
                     });
+                let what = match &air {
+                    Some(Ok(at)) => format!("in its air at {at}"),
+                    _ => "its fence drawn (m/M: the next)".to_owned(),
+                };
                 format!(
-                    "park {}/{n}: {} ({}{yours}), its fence drawn (m/M: the next)",
+                    "park {}/{n}: {} ({}{yours}), {what}",
                     k + 1,
                     escape_for_terminal(&p.code),
                     escape_cut(&p.name, 40)
                 )
             }
+            _ if was_in_air => "park: none, the preset's fence, the air before".to_owned(),
             _ => "park: none, the preset's fence (m/M: a park)".to_owned(),
         };
+        if let Some(Err(error)) = &air {
+            text = error.clone();
+        }
         if let Some(error) = &self.parks.error {
             text.push_str(&format!("; your parks were not read: {error}"));
         }
-        self.message = Some((text, self.parks.error.is_some()));
+        let error = self.parks.error.is_some() || matches!(air, Some(Err(_)));
+        self.message = Some((text, error));
     }
 
     /// The field view's scale in `pane`: the fence and every track with a
