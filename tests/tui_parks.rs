@@ -328,3 +328,35 @@ fn a_flies_the_scene_in_the_parks_own_air_and_a_again_brings_back_the_air_before
     assert!(!app.in_park_air());
     assert_eq!(app.scene.environment.air(), before);
 }
+
+/// The new panes at odd and tiny sizes: a 3-D swing's impact, the margin
+/// map, a park's wall and its air, on every tab.
+#[test]
+fn the_park_views_never_panic_at_odd_sizes() {
+    for (w, h) in [
+        (1, 1),
+        (20, 5),
+        (61, 16),
+        (80, 24),
+        (116, 34),
+        (139, 40),
+        (190, 54),
+        (300, 100),
+    ] {
+        let mut app = app(w, h, None);
+        set_and_settle(&mut app, "bat.tilt", "0.5");
+        set_and_settle(&mut app, "bat.direction", "-0.3");
+        pick(&mut app, "HOU");
+        for k in ['c', 'a'] {
+            key(&mut app, KeyCode::Char(k));
+        }
+        settle(&mut app);
+        for tab in ['1', '2', '3', '4', '5'] {
+            key(&mut app, KeyCode::Char(tab));
+            for _ in 0..9 {
+                key(&mut app, KeyCode::Char('.'));
+                let _ = screen(&app);
+            }
+        }
+    }
+}

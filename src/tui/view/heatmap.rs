@@ -9,7 +9,7 @@
 use ratatui::Frame;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::Color;
+use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
@@ -126,7 +126,11 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         plot,
         app,
         (&scale, &labels),
-        surface.any_not_landed(),
+        if surface.any_not_landed() {
+            OffScale::NotLanded
+        } else {
+            OffScale::None
+        },
     );
 }
 
@@ -295,15 +299,25 @@ pub(super) fn marks(buf: &mut Buffer, plot: Rect, app: &App) {
     );
 }
 
+/// The cells off a map's scale, for the legend under its colour bar.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum OffScale {
+    None,
+    /// Some balls do not land (hatched).
+    NotLanded,
+    /// Some swings go foul (blank: the margin map's).
+    Foul,
+}
+
 /// The colour bar right of `plot`, top = 1 on the scale, with `labels` at
 /// its top, middle and bottom, and under it the legend of the cells off
-/// the scale if there are any (`not_landed`).
+/// the scale, if any.
 pub(super) fn colour_bar(
     buf: &mut Buffer,
     plot: Rect,
     app: &App,
     (scale, labels): (&Scale, &[String; 3]),
-    not_landed: bool,
+    off: OffScale,
 ) {
     let bar = Rect::new(plot.right() + 1, plot.y, HEATMAP_BAR - 1, plot.height);
     let [_, bar_area] = Layout::horizontal([Constraint::Length(0), Constraint::Fill(1)]).areas(bar);
@@ -325,14 +339,23 @@ pub(super) fn colour_bar(
     for (row, label) in rows.into_iter().zip(labels) {
         buf.set_string(bar_area.x + 2, row, label, app.theme.dim);
     }
-    if not_landed {
-        let legend = if app.theme.colored() {
-            NOT_LANDED_LEGEND
-        } else {
-            NOT_LANDED_PLAIN_LEGEND
-        };
-        let style = app.theme.swatch(app.theme.not_landed);
-        buf.set_string(bar_area.x, bar_area.bottom(), legend, style);
+    let (x, y) = (bar_area.x, bar_area.bottom());
+    match off {
+        OffScale::None => {}
+        OffScale::NotLanded => {
+            let legend = if app.theme.colored() {
+                NOT_LANDED_LEGEND
+            } else {
+                NOT_LANDED_PLAIN_LEGEND
+            };
+            buf.set_string(x, y, legend, app.theme.swatch(app.theme.not_landed));
+        }
+        OffScale::Foul => {
+            // The blank cells' own colour, then the word.
+            let swatch = Style::new().bg(app.theme.no_range);
+            buf.set_string(x, y, "  ", swatch);
+            buf.set_string(x + 2, y, " foul", app.theme.dim);
+        }
     }
 }
 

@@ -12,7 +12,9 @@ use ratatui::layout::Rect;
 use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
-use super::heatmap::{Scale, Value, colour_bar, frame_and_axes, marks, paint, sample_cell};
+use super::heatmap::{
+    OffScale, Scale, Value, colour_bar, frame_and_axes, marks, paint, sample_cell,
+};
 use crate::tui::app::App;
 use crate::tui::margin::{MarginCell, MarginSurface};
 use crate::tui::theme::{diverging, margin_shade};
@@ -142,6 +144,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             }
         ),
     ];
-    let not_landed = cells().any(|c| *c == MarginCell::NotLanded);
-    colour_bar(frame.buffer_mut(), plot, app, (&scale, &labels), not_landed);
+    let off = if cells().any(|c| *c == MarginCell::NotLanded) {
+        OffScale::NotLanded
+    } else if cells().any(|c| *c == MarginCell::Foul) {
+        OffScale::Foul
+    } else {
+        OffScale::None
+    };
+    colour_bar(frame.buffer_mut(), plot, app, (&scale, &labels), off);
 }
