@@ -360,3 +360,55 @@ fn the_park_views_never_panic_at_odd_sizes() {
         }
     }
 }
+
+/// The margin thread: a map for a newer generation cancels the older one
+/// between cells, and the newer one is finished, row blocks and all; a
+/// map no longer shown stops without a new one.
+#[test]
+fn the_margin_thread_cancels_old_maps_and_finishes_the_new() {
+    use homerun::tui::worker::Worker;
+    use std::time::Duration;
+    let mut app = app(200, 60, None);
+    settle(&mut app);
+    pick(&mut app, "BOS");
+    key(&mut app, KeyCode::Char('c'));
+    let worker = Worker::spawn();
+    let first = app.take_margin_job().unwrap();
+    worker.submit_margin(first.clone());
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('l'));
+    let second = app.take_margin_job().unwrap();
+    assert!(second.generation > first.generation);
+    worker.submit_margin(second.clone());
+    while !app.margin_fresh() {
+        let report = worker
+            .margins
+            .recv_timeout(Duration::from_secs(120))
+            .expect("the margin thread answers");
+        app.apply_margin(report);
+    }
+    let map = app.margin.state.as_ref().unwrap().surface.clone();
+    assert_eq!(map.grid.columns * map.grid.rows, map.done());
+    assert!(map.grid.columns > 8, "{:?}", map.grid);
+
+    // c: no map shown; the one under way stops at its next cell.
+    key(&mut app, KeyCode::Char('L'));
+    let third = app.take_margin_job().unwrap();
+    worker.submit_margin(third);
+    key(&mut app, KeyCode::Char('c'));
+    assert!(app.take_margin_job().is_none());
+    worker.cancel_margins_before(app.margin.generation);
+    let blocks = map.grid.rows.div_ceil((256 / map.grid.columns).max(1));
+    let mut sent = 0;
+    while worker
+        .margins
+        .recv_timeout(Duration::from_millis(500))
+        .is_ok()
+    {
+        sent += 1;
+    }
+    assert!(
+        sent < blocks,
+        "{sent} of {blocks} blocks sent after the cancel"
+    );
+}

@@ -148,6 +148,8 @@ pub fn run(
         if let Some(job) = app.take_margin_job() {
             worker.submit_margin(job);
         }
+        // A map no longer shown stops at once (its generation has moved on).
+        worker.cancel_margins_before(app.margin.generation);
         if app.dirty {
             app.dirty = false;
             queue!(terminal.backend_mut(), BeginSynchronizedUpdate)?;

@@ -437,8 +437,15 @@ impl Worker {
 
     /// Starts computing a margin map, cancelling the one before.
     pub fn submit_margin(&self, job: MarginJob) {
-        self.latest_margin.store(job.generation, Ordering::Relaxed);
+        self.cancel_margins_before(job.generation);
         let _ = self.margin_jobs.send(job);
+    }
+
+    /// Cancels any margin map for a generation other than `generation`
+    /// (the map is no longer shown, or is for old inputs), whether or not
+    /// a new one is wanted.
+    pub fn cancel_margins_before(&self, generation: u64) {
+        self.latest_margin.store(generation, Ordering::Relaxed);
     }
 
     /// Starts computing a figure, cancelling the one before.
