@@ -43,14 +43,20 @@ fn refuse(error: &cli::UsageError) -> ExitCode {
 }
 
 /// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s)
-/// folder, in the colours for `background` (`None`: detected).
+/// folder and parks (or `--parks-dir`'s), in the colours for `background` (`None`: detected).
 fn explore(
     cli: &Cli,
     preset: &str,
     background: Option<homerun::tui::theme::Background>,
 ) -> Result<(), cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
-    Ok(homerun::tui::run(preset, dir, cli.units, background)?)
+    let parks = cli::parks_dir(cli);
+    Ok(homerun::tui::run(
+        preset,
+        (dir, parks),
+        cli.units,
+        background,
+    )?)
 }
 
 /// Whether standard output was closed when the process started (`homerun

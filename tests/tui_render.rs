@@ -250,3 +250,26 @@ fn field_from_above() {
         insta::assert_snapshot!(format!("field_{w}x{h}"), screen(&app));
     }
 }
+
+/// A 3-D swing (the barrel 0.5 rad down, swung 0.3 rad toward right
+/// field): v1, v2 and v3 against p, and the slip in its plane turning as
+/// it dies, at the stop 99/100 of the way to the halt.
+#[test]
+fn impact_of_a_3d_swing() {
+    for (w, h) in [(80, 24), (200, 60)] {
+        let mut app = app(w, h, None);
+        set_and_settle(&mut app, "bat.tilt", "0.5");
+        set_and_settle(&mut app, "bat.direction", "0.3");
+        key(&mut app, KeyCode::Char('3'));
+        for _ in 0..3 {
+            key(&mut app, KeyCode::Char('.'));
+        }
+        let screen = screen(&app);
+        assert!(screen.contains("slip turning (4/9)"), "{screen}");
+        assert!(
+            screen.contains("slip 37.1° (26.3° → 74.3°, sticks)"),
+            "{screen}"
+        );
+        insta::assert_snapshot!(format!("impact3d_{w}x{h}"), screen);
+    }
+}

@@ -10,10 +10,16 @@ use ratatui_textarea::TextArea;
 mod edit;
 mod export;
 mod field;
-pub use field::AtParks;
+pub use field::{AtParks, ParkList};
 mod figures;
+mod impact;
+pub use impact::impact_stops;
+mod margin;
+mod park_air;
+pub use margin::{MarginMap, MarginState};
 mod mouse;
 mod presets;
+mod reports;
 mod scene;
 
 use super::format::{error_text, read_value, shown_value};
@@ -203,11 +209,16 @@ pub struct App {
     pub flown: Flown,
     /// The ball's height (m) where it passes the fence, if it gets there.
     pub fence_height: Option<f64>,
-    /// The park chosen (`m`/`M`), an index into `park::bundled()`: its
-    /// fence replaces the preset's in the field and the side view.
+    /// The park chosen (`m`/`M`), an index into `parks`: its fence
+    /// replaces the preset's in the field and the side view.
     pub park: Option<usize>,
+    pub parks: ParkList,
+    /// The air before `a` put the scene in the park's: `Some` while in it.
+    pub air_before_park: Option<crate::model::atmosphere::Air>,
     /// The current flight judged at every park, and at the one chosen.
     pub at_parks: Option<AtParks>,
+    /// The heatmap's margin over the park's wall (key `c`).
+    pub margin: MarginMap,
     /// The current flight's path (distance from the plate, height), sampled
     /// at the plot's resolution.
     pub path: Vec<(f64, f64)>,
@@ -298,7 +309,10 @@ impl App {
             flown,
             fence_height: None,
             park: None,
+            parks: ParkList::default(),
+            air_before_park: None,
             at_parks: None,
+            margin: MarginMap::default(),
             path: Vec::new(),
             ground: Vec::new(),
             optimum: None,
@@ -337,7 +351,7 @@ impl App {
     pub fn busy(&self) -> bool {
         let swing_work = !self.is_swing()
             || (self.optimum.is_some_and(|o| o.done)
-                && self.surface_fresh()
+                && self.heatmap_fresh()
                 && self.optimum_gains_fresh());
         !(swing_work && self.gains_done(Gain::Swing) == self.gain_count() && self.figure_fresh())
     }
@@ -402,7 +416,7 @@ impl App {
             });
         }
         if let Some(impact) = &self.flown.impact {
-            self.impact_stop = self.impact_stop.min(impact.stops().len() - 1);
+            self.impact_stop = self.impact_stop.min(impact_stops(impact).len() - 1);
         }
         self.generation += 1;
         // A stale optimum is never shown; the old surface stays, marked
@@ -411,6 +425,7 @@ impl App {
         self.optimal_path.clear();
         self.optimal_ground.clear();
         self.job = Some(self.job_for(Work::Everything));
+        self.refresh_margin(false);
     }
 
     /// The background work for the current inputs.
@@ -425,6 +440,7 @@ impl App {
             window: Grid::explorer_window(),
             resolution: heatmap_resolution(self.size),
             optimum_gains: self.wants_optimum_gains(),
+            range_surface: !self.shows_margin(),
             units: self.units,
             work,
         }
@@ -477,83 +493,6 @@ impl App {
             .iter()
             .map(|p| ((p.distance, p.y), (p.x, p.z)))
             .unzip()
-    }
-
-    /// Takes in a background result, unless it is for older inputs.
-    pub fn apply(&mut self, report: Report) {
-        if report.generation() != self.generation {
-            return;
-        }
-        self.dirty = true;
-        match report {
-            Report::Optimum {
-                best,
-                evaluations,
-                done,
-                status,
-                ..
-            } => {
-                let scene = self.scene.with_swing(best.undercut, best.swing_angle);
-                // One flight (~0.1 ms), once: a hovering ball's best can graze
-                // the ground at the optimiser's precision only.
-                let lands_at_readout = !(done && best.range.is_finite())
-                    || crate::model::simulate(&scene, Purpose::Readout)
-                        .flight
-                        .landed;
-                self.optimum = Some(OptimumState {
-                    best,
-                    evaluations,
-                    done,
-                    status,
-                    lands_at_readout,
-                });
-                // A search that found nothing landing has no optimum to
-                // start from or to draw.
-                if done && best.range.is_finite() {
-                    self.warm_start = Some((best.undercut, best.swing_angle));
-                    (self.optimal_path, self.optimal_ground) = self.plot_tracks(&scene);
-                }
-            }
-            Report::Sensitivity {
-                gain,
-                key,
-                value,
-                generation,
-            } => {
-                let cells = match gain {
-                    Gain::Swing => &mut self.swing_gains,
-                    Gain::Optimum => &mut self.optimum_gains,
-                };
-                if let Some(cell) = cells.get_mut(key) {
-                    *cell = Some(GainCell { value, generation });
-                }
-            }
-            Report::Surface {
-                surface,
-                last,
-                generation,
-            } => {
-                // A coarse surface for new inputs does not replace a finer
-                // one for the old: while a key is held the map then updates
-                // in place, without flashing through blocks, and a repaint
-                // costs only the cells that changed.
-                let cells = |s: &Surface| s.grid.columns * s.grid.rows;
-                let replace = match &self.surface {
-                    None => true,
-                    Some(shown) => {
-                        last || shown.generation == generation
-                            || cells(&surface) >= cells(&shown.surface)
-                    }
-                };
-                if replace {
-                    self.surface = Some(SurfaceState {
-                        surface,
-                        last,
-                        generation,
-                    });
-                }
-            }
-        }
     }
 
     pub fn handle(&mut self, event: &Event) {
@@ -647,6 +586,8 @@ impl App {
             Action::NextPark | Action::PreviousPark => {
                 self.cycle_park(action == Action::NextPark);
             }
+            Action::MarginMap => self.toggle_margin(),
+            Action::ParkAir => self.toggle_park_air(),
             Action::NextTab | Action::PreviousTab => {
                 let n = Tab::ALL.len();
                 let k = Tab::ALL.iter().position(|t| *t == self.tab).unwrap_or(0);
@@ -660,7 +601,7 @@ impl App {
             Action::ShowTab(tab) => self.tab = tab,
             Action::NextStop => {
                 if let Some(impact) = &self.flown.impact {
-                    let last = impact.stops().len() - 1;
+                    let last = impact_stops(impact).len() - 1;
                     self.impact_stop = (self.impact_stop + 1).min(last);
                 }
             }

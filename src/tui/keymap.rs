@@ -58,6 +58,10 @@ pub enum Action {
     /// its verdict in the readout.
     NextPark,
     PreviousPark,
+    /// The heatmap: the range, or the margin over the park's wall.
+    MarginMap,
+    /// The scene in the park's own air, or back to the air before.
+    ParkAir,
     NextTab,
     PreviousTab,
     ShowTab(Tab),
@@ -235,8 +239,13 @@ pub const KEYMAP: &[Row] = &[
         "pin the scene to compare with / clear the pin",
     ),
     row(
-        &[ch('m', NextPark), ch('M', PreviousPark)],
-        "next / previous ballpark (its fence; none: the preset's)",
+        &[
+            ch('m', NextPark),
+            ch('M', PreviousPark),
+            ch('c', MarginMap),
+            ch('a', ParkAir),
+        ],
+        "next / previous park / its margin map / its air",
     ),
     row(
         &[
@@ -408,7 +417,7 @@ mod tests {
                 "r",
                 "u",
                 "p P",
-                "m M",
+                "m M c a",
                 "Tab  1 2 3 4 5",
                 "f F",
                 ", .",
@@ -436,9 +445,9 @@ mod tests {
         assert_eq!(at(Right, KeyModifiers::CONTROL), Some(Raise(Step::One)));
         assert_eq!(at(KeyCode::Char('l'), ALT), Some(Raise(Step::Tenth)));
         assert_eq!(at(KeyCode::Char('j'), KeyModifiers::CONTROL), Some(Down));
-        // Ctrl-C, not c.
+        // Ctrl-C quits; c alone switches the heatmap.
         let ctrl = KeyModifiers::CONTROL;
         assert_eq!(at(KeyCode::Char('c'), ctrl), Some(Interrupt));
-        assert_eq!(at(KeyCode::Char('c'), none), None);
+        assert_eq!(at(KeyCode::Char('c'), none), Some(MarginMap));
     }
 }

@@ -14,6 +14,7 @@ pub mod format;
 pub mod inputs;
 pub mod keymap;
 pub mod layout;
+pub mod margin;
 pub mod theme;
 pub mod view;
 pub mod worker;
@@ -22,7 +23,7 @@ use std::io::{self, IsTerminal, Write};
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::TryRecvError;
+use std::sync::mpsc::{Receiver, TryRecvError};
 use std::time::Duration;
 
 use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture, Event};
@@ -101,10 +102,11 @@ impl Drop for Restore {
 /// Runs the explorer on `preset` until the user quits or a signal (TERM,
 /// HUP, INT) asks it to stop; the terminal is restored either way. Its
 /// colours are for `background` (else the one `COLORFGBG` names), none
-/// under `NO_COLOR`.
+/// under `NO_COLOR`. `m`/`M` go through the bundled parks and the user's
+/// from `parks_dir`.
 pub fn run(
     preset: Preset,
-    presets_dir: Option<PathBuf>,
+    (presets_dir, parks_dir): (Option<PathBuf>, Option<PathBuf>),
     units: crate::units::UnitSystem,
     background: Option<Background>,
 ) -> Result<(), TuiError> {
@@ -132,6 +134,7 @@ pub fn run(
         Rect::new(0, 0, size.width, size.height),
     );
     app.set_units(units);
+    app.load_parks(parks_dir.as_deref());
     let worker = Worker::spawn();
     watch_for_hang_up()?;
 
@@ -142,6 +145,11 @@ pub fn run(
         if let Some(job) = app.take_figure_job() {
             worker.submit_figure(job);
         }
+        if let Some(job) = app.take_margin_job() {
+            worker.submit_margin(job);
+        }
+        // A map no longer shown stops at once (its generation has moved on).
+        worker.cancel_margins_before(app.margin.generation);
         if app.dirty {
             app.dirty = false;
             queue!(terminal.backend_mut(), BeginSynchronizedUpdate)?;
@@ -164,22 +172,22 @@ pub fn run(
             }
             app.flush();
         }
-        loop {
-            match worker.reports.try_recv() {
-                Ok(report) => app.apply(report),
-                Err(TryRecvError::Empty) => break,
-                // The worker is gone (it panicked): stop rather than show a
-                // screen that will never update.
-                Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
-            }
-        }
-        loop {
-            match worker.figures.try_recv() {
-                Ok(report) => app.apply_figure(report),
-                Err(TryRecvError::Empty) => break,
-                Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
-            }
-        }
+        drain(&worker.reports, |report| app.apply(report))?;
+        drain(&worker.figures, |report| app.apply_figure(report))?;
+        drain(&worker.margins, |report| app.apply_margin(report))?;
     }
     Ok(())
+}
+
+/// Takes in every result waiting on `reports`. A thread that is gone (it
+/// panicked) stops the explorer rather than leave a screen that will never
+/// update.
+fn drain<R>(reports: &Receiver<R>, mut apply: impl FnMut(R)) -> Result<(), TuiError> {
+    loop {
+        match reports.try_recv() {
+            Ok(report) => apply(report),
+            Err(TryRecvError::Empty) => return Ok(()),
+            Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
+        }
+    }
 }

@@ -151,12 +151,17 @@ pub struct Theme {
     pub apex: Style,
     pub landing: Style,
     pub fence: Style,
+    /// A park's wall from above, by its height: up to 8 ft, 12 ft, under
+    /// 20 ft, and 20 ft or more (see [`Theme::wall_marker`]).
+    pub walls: [Style; 4],
     /// A figure's curves, in turn (the current input's line is `swing`,
     /// the paper's marked points `apex`).
     pub figure_curves: [Style; 3],
     // The impact: each curve or mark in the chart and in its legend below.
     /// v1, the tangential slip of the contact points.
     pub slip: Style,
+    /// v2, a 3-D swing's slip along the bat.
+    pub slip_along: Style,
     /// v3, their normal approach.
     pub approach: Style,
     /// p_c, the end of compression.
@@ -168,6 +173,9 @@ pub struct Theme {
     // The heatmap, painted cell by cell (in colour only).
     /// The fence's distance as a contour.
     pub contour: Color,
+    /// The margin map's zero (the wall's top) as a contour: dark, on the
+    /// light tints either side of it.
+    pub zero_contour: Color,
     /// Where the bat misses the ball: no range.
     pub no_range: Color,
     /// Where the ball does not land within its limits: no range, and off
@@ -221,14 +229,22 @@ impl Theme {
             apex: fg(Color::Yellow),
             landing: fg(Color::Magenta),
             fence: fg(Color::White),
+            walls: [
+                fg(Color::Indexed(110)),
+                fg(Color::Yellow),
+                fg(Color::Indexed(208)),
+                fg(Color::LightRed).add_modifier(Modifier::BOLD),
+            ],
             figure_curves: [fg(Color::Green), fg(Color::Yellow), fg(Color::Magenta)],
             slip: fg(Color::Cyan),
+            slip_along: fg(Color::LightGreen),
             approach: fg(Color::Yellow),
             // Light blue: xterm's dark blue hardly shows on black.
             compression: fg(Color::LightBlue),
             stick: fg(Color::Magenta),
             cursor: fg(Color::White),
             contour: Color::White,
+            zero_contour: Color::Black,
             no_range: Color::Black,
             not_landed: Color::Gray,
             optimum_mark: Color::Yellow,
@@ -249,8 +265,15 @@ impl Theme {
             pinned: fg(Color::Red),
             apex: fg(AMBER),
             fence: fg(Color::Black),
+            walls: [
+                fg(Color::Indexed(25)),
+                fg(Color::Indexed(136)),
+                fg(Color::Indexed(166)),
+                fg(Color::Indexed(160)).add_modifier(Modifier::BOLD),
+            ],
             figure_curves: [fg(DARK_GREEN), fg(AMBER), fg(Color::Magenta)],
             slip: fg(TEAL),
+            slip_along: fg(DARK_GREEN),
             approach: fg(AMBER),
             compression: fg(Color::Blue),
             cursor: fg(Color::Black),
@@ -278,6 +301,7 @@ impl Theme {
             key: Style::new().add_modifier(Modifier::BOLD),
             stale_gain: Style::new().add_modifier(Modifier::ITALIC | Modifier::DIM),
             contour: Color::Reset,
+            zero_contour: Color::Reset,
             no_range: Color::Reset,
             not_landed: Color::Reset,
             optimum_mark: Color::Reset,
@@ -292,6 +316,7 @@ impl Theme {
             &mut theme.landing,
             &mut theme.fence,
             &mut theme.slip,
+            &mut theme.slip_along,
             &mut theme.approach,
             &mut theme.compression,
             &mut theme.stick,
@@ -300,6 +325,7 @@ impl Theme {
             *style = bare(*style);
         }
         theme.figure_curves = theme.figure_curves.map(bare);
+        theme.walls = theme.walls.map(bare);
         theme
     }
 
@@ -380,6 +406,18 @@ impl Theme {
         }
     }
 
+    /// How a wall of height band `k` (0 lowest, 3 the tallest) is drawn
+    /// from above: the taller, the thicker, so that a 37 ft wall stands
+    /// out whatever the colours; without colour each band has its own.
+    pub fn wall_marker(&self, k: usize) -> Marker {
+        match (self.colored(), k) {
+            (_, 0) | (true, 1) => Marker::Braille,
+            (false, 1) => Marker::Bar,
+            (_, 2) => Marker::HalfBlock,
+            _ => Marker::Block,
+        }
+    }
+
     /// The heatmap's glyph for a cell at `t` of the colour scale (0 to 1)
     /// where there is no colour: shades, lightest lowest.
     pub fn shade(t: f64) -> &'static str {
@@ -391,6 +429,53 @@ impl Theme {
         };
         SHADES[((t * SHADES.len() as f64) as usize).min(SHADES.len() - 1)]
     }
+}
+
+/// The margin map's glyph for a cell at `t` of its scale (0 to 1, the
+/// wall's top at ½) where there is no colour: lines below the wall,
+/// heavier the further under it; shades above it, darker the higher.
+pub fn margin_shade(t: f64) -> &'static str {
+    const GLYPHS: [&str; 6] = ["=", "-", "·", "░", "▒", "▓"];
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.5
+    };
+    GLYPHS[((t * GLYPHS.len() as f64) as usize).min(GLYPHS.len() - 1)]
+}
+
+/// The margin map's diverging ramp, t in [0, 1] with the wall's top at ½:
+/// magenta under the wall, green over it, through a light grey
+/// (ColorBrewer's PiYG, which colour-blind eyes tell apart). Both ends
+/// are dark, so that they read on a dark and a light terminal alike.
+pub fn diverging(t: f64) -> (u8, u8, u8) {
+    const STOPS: [(f64, f64, f64); 9] = [
+        (142.0, 1.0, 82.0),
+        (197.0, 27.0, 125.0),
+        (222.0, 119.0, 174.0),
+        (241.0, 182.0, 218.0),
+        (247.0, 247.0, 247.0),
+        (184.0, 225.0, 134.0),
+        (127.0, 188.0, 65.0),
+        (77.0, 146.0, 33.0),
+        (39.0, 100.0, 25.0),
+    ];
+    interpolate(&STOPS, t)
+}
+
+/// The colour at `t` in [0, 1] along evenly spaced `stops`.
+fn interpolate(stops: &[(f64, f64, f64)], t: f64) -> (u8, u8, u8) {
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let x = t * (stops.len() - 1) as f64;
+    let k = (x.floor() as usize).min(stops.len() - 2);
+    let f = x - k as f64;
+    let (a, b) = (stops[k], stops[k + 1]);
+    let mix = |p: f64, q: f64| (p + f * (q - p)).round() as u8;
+    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 
 impl From<ColorMode> for Theme {
@@ -410,17 +495,7 @@ pub fn ramp(t: f64) -> (u8, u8, u8) {
         (122.0, 209.0, 81.0),
         (253.0, 231.0, 37.0),
     ];
-    let t = if t.is_finite() {
-        t.clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let x = t * (STOPS.len() - 1) as f64;
-    let k = (x.floor() as usize).min(STOPS.len() - 2);
-    let f = x - k as f64;
-    let (a, b) = (STOPS[k], STOPS[k + 1]);
-    let mix = |p: f64, q: f64| (p + f * (q - p)).round() as u8;
-    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+    interpolate(&STOPS, t)
 }
 
 #[cfg(test)]
@@ -515,12 +590,14 @@ mod tests {
             theme.landing,
             theme.fence,
             theme.slip,
+            theme.slip_along,
             theme.approach,
             theme.compression,
             theme.stick,
             theme.cursor,
         ];
         styles.extend(theme.figure_curves);
+        styles.extend(theme.walls);
         for value in [1.0, 0.3, 0.05, -1.0, -0.3, -0.05] {
             styles.push(theme.gain(value, 1.0));
         }
@@ -564,6 +641,29 @@ mod tests {
         }
         assert_eq!(Theme::shade(0.0), "·");
         assert_eq!(Theme::shade(1.0), "█");
+    }
+
+    #[test]
+    fn the_margin_scale_tells_over_the_wall_from_under_it() {
+        // Magenta under the wall, green over it, grey at its top; both
+        // ends dark enough to read on white, and light enough on black.
+        for k in 0..=20 {
+            let t = f64::from(k) / 20.0;
+            let (r, g, b) = diverging(t);
+            if t < 0.5 {
+                assert!(r > g && b > g, "{t}: {:?}", (r, g, b));
+                assert_eq!(margin_shade(t).chars().count(), 1);
+                assert!(["=", "-", "·"].contains(&margin_shade(t)), "{t}");
+            } else if t > 0.5 {
+                assert!(g > r && g > b, "{t}: {:?}", (r, g, b));
+                assert!(["░", "▒", "▓"].contains(&margin_shade(t)), "{t}");
+            }
+        }
+        assert_eq!(diverging(0.5), (247, 247, 247));
+        for end in [diverging(0.0), diverging(1.0)] {
+            assert!(contrast(end, (255, 255, 255)) >= 3.0, "{end:?}");
+            assert!(contrast(end, (0, 0, 0)) >= 2.0, "{end:?}");
+        }
     }
 
     #[test]

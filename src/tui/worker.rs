@@ -6,9 +6,10 @@
 //! Plain std threads and channels, no async runtime. Every job carries a
 //! generation number; the UI bumps it on each input change, the worker polls
 //! it between steps and cells and abandons stale work, and the UI drops any
-//! report whose generation is not the current one. The paper's figures have
-//! their own thread and generations, so that stepping through them never
-//! cancels the optimiser.
+//! report whose generation is not the current one. The paper's figures and
+//! the margin map ([`super::margin`]) have their own threads and
+//! generations, so that stepping through figures or parks never cancels
+//! the optimiser.
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -24,6 +25,7 @@ use crate::analysis::study::{self, Grid, Surface};
 use crate::model::launch::{SceneKind, fly_scene};
 use crate::model::scene::Scene;
 use crate::tui::inputs::{input_key, scene_inputs};
+use crate::tui::margin::{MarginJob, MarginReport, run_margin_job};
 use crate::units::UnitSystem;
 
 /// What the UI wants computed for one set of inputs.
@@ -40,6 +42,9 @@ pub struct Job {
     pub resolution: (usize, usize),
     /// Whether to compute Δopt: only where the inputs pane shows it.
     pub optimum_gains: bool,
+    /// Whether to compute the range surface: not while the heatmap shows
+    /// the margin at a park instead.
+    pub range_surface: bool,
     /// The units shown: a nudge, and so the Δ columns, moves by the shown
     /// unit's step.
     pub units: UnitSystem,
@@ -55,6 +60,8 @@ pub enum Work {
     /// Only Δ and Δopt, for the optimum found already (the units changed,
     /// the inputs did not).
     Gains { optimum: Option<Point> },
+    /// Only the range surface (the heatmap is back from the margin map).
+    Surface,
 }
 
 /// A result, tagged with the generation it was computed for.
@@ -176,24 +183,14 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
         }
         return;
     }
-    let surface = |columns: usize, rows: usize| {
-        let grid = Grid {
-            columns,
-            rows,
-            ..job.window
-        };
-        study::surface_until(&job.scene, grid, Purpose::Surface, cancelled)
-    };
-    let (columns, rows) = (job.resolution.0.max(2), job.resolution.1.max(2));
-    // A first glance at the surface before the optimiser: 64 cells.
-    let Some(coarse) = surface(8.min(columns), 8.min(rows)) else {
+    if job.work == Work::Surface {
+        report_surfaces(job, cancelled, report);
         return;
-    };
-    report(Report::Surface {
-        generation: job.generation,
-        surface: coarse,
-        last: columns <= 8 && rows <= 8,
-    });
+    }
+    // A first glance at the surface before the optimiser: 64 cells.
+    if job.range_surface && !report_coarse_surface(job, cancelled, report) {
+        return;
+    }
 
     let mut optimizer = Optimizer::new(
         &job.scene,
@@ -228,6 +225,67 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
         return;
     }
 
+    if job.range_surface && !report_finer_surfaces(job, cancelled, report) {
+        return;
+    }
+
+    report_optimum_gains(job, optimum, cancelled, report);
+}
+
+/// The range surface of `job` on a grid of `columns` × `rows`, unless
+/// cancelled.
+fn surface_of(
+    job: &Job,
+    columns: usize,
+    rows: usize,
+    cancelled: &(dyn Fn() -> bool + Sync),
+) -> Option<Surface> {
+    let grid = Grid {
+        columns,
+        rows,
+        ..job.window
+    };
+    study::surface_until(&job.scene, grid, Purpose::Surface, cancelled)
+}
+
+/// The range surface alone, coarse to fine.
+fn report_surfaces(
+    job: &Job,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    report: &mut dyn FnMut(Report),
+) {
+    if report_coarse_surface(job, cancelled, report) {
+        report_finer_surfaces(job, cancelled, report);
+    }
+}
+
+/// The range surface at 8×8 (or the pane's resolution if coarser); false
+/// if cancelled.
+fn report_coarse_surface(
+    job: &Job,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    report: &mut dyn FnMut(Report),
+) -> bool {
+    let (columns, rows) = (job.resolution.0.max(2), job.resolution.1.max(2));
+    let Some(coarse) = surface_of(job, 8.min(columns), 8.min(rows), cancelled) else {
+        return false;
+    };
+    report(Report::Surface {
+        generation: job.generation,
+        surface: coarse,
+        last: columns <= 8 && rows <= 8,
+    });
+    true
+}
+
+/// The range surface at 32×16, then at the pane's full resolution; false
+/// if cancelled.
+fn report_finer_surfaces(
+    job: &Job,
+    cancelled: &(dyn Fn() -> bool + Sync),
+    report: &mut dyn FnMut(Report),
+) -> bool {
+    let (columns, rows) = (job.resolution.0.max(2), job.resolution.1.max(2));
     let mut levels = vec![(32.min(columns), 16.min(rows))];
     if columns > 32 || rows > 16 {
         levels.push((columns, rows));
@@ -237,8 +295,8 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
         if c <= 8 && r <= 8 {
             continue;
         }
-        let Some(surface) = surface(c, r) else {
-            return;
+        let Some(surface) = surface_of(job, c, r, cancelled) else {
+            return false;
         };
         report(Report::Surface {
             generation: job.generation,
@@ -246,8 +304,7 @@ pub fn run_job(job: &Job, cancelled: &(dyn Fn() -> bool + Sync), report: &mut dy
             last: k + 1 == count,
         });
     }
-
-    report_optimum_gains(job, optimum, cancelled, report);
+    true
 }
 
 /// The range gained by one nudge of each input the scene shows, at the
@@ -303,8 +360,8 @@ fn report_optimum_gains(
     }
 }
 
-/// The worker threads (the surface and optimiser; the figures) and their
-/// channels.
+/// The worker threads (the surface and optimiser; the figures; the margin
+/// map) and their channels.
 pub struct Worker {
     jobs: Sender<Job>,
     latest: Arc<AtomicU64>,
@@ -312,6 +369,9 @@ pub struct Worker {
     figure_jobs: Sender<FigureJob>,
     latest_figure: Arc<AtomicU64>,
     pub figures: Receiver<FigureReport>,
+    margin_jobs: Sender<MarginJob>,
+    latest_margin: Arc<AtomicU64>,
+    pub margins: Receiver<MarginReport>,
 }
 
 /// The signature of a job's work: the job, whether it is cancelled, where
@@ -357,6 +417,11 @@ impl Worker {
             |j: &FigureJob| j.generation,
             run_figure_job,
         );
+        let (margin_jobs, latest_margin, margins) = spawn_runner(
+            "homerun-margin",
+            |j: &MarginJob| j.generation,
+            run_margin_job,
+        );
         Worker {
             jobs,
             latest,
@@ -364,7 +429,23 @@ impl Worker {
             figure_jobs,
             latest_figure,
             figures,
+            margin_jobs,
+            latest_margin,
+            margins,
         }
+    }
+
+    /// Starts computing a margin map, cancelling the one before.
+    pub fn submit_margin(&self, job: MarginJob) {
+        self.cancel_margins_before(job.generation);
+        let _ = self.margin_jobs.send(job);
+    }
+
+    /// Cancels any margin map for a generation other than `generation`
+    /// (the map is no longer shown, or is for old inputs), whether or not
+    /// a new one is wanted.
+    pub fn cancel_margins_before(&self, generation: u64) {
+        self.latest_margin.store(generation, Ordering::Relaxed);
     }
 
     /// Starts computing a figure, cancelling the one before.

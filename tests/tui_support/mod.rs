@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use homerun::preset;
 use homerun::tui::app::App;
+use homerun::tui::margin::run_margin_job;
 use homerun::tui::theme::ColorMode;
 use homerun::tui::view;
 use homerun::tui::worker::{run_figure_job, run_job};
@@ -47,6 +48,13 @@ pub fn settle(app: &mut App) {
         run_job(&job, &|| false, &mut |r| reports.push(r));
         for report in reports {
             app.apply(report);
+        }
+    }
+    while let Some(job) = app.take_margin_job() {
+        let mut reports = Vec::new();
+        run_margin_job(&job, &|| false, &mut |r| reports.push(r));
+        for report in reports {
+            app.apply_margin(report);
         }
     }
     while let Some(job) = app.take_figure_job() {

@@ -72,6 +72,9 @@ impl App {
                 "Fig. {} needs a swing: b switches to the swing scene",
                 self.figure_number
             )),
+            Tab::Surface if self.shows_margin() => {
+                Err("the margin map has no SVG; c shows the range surface, which has".into())
+            }
             Tab::Surface => {
                 let state = self
                     .surface

@@ -9,6 +9,8 @@ use ratatui::layout::Rect;
 use super::*;
 use crate::model::frame::direction_of;
 use crate::model::park;
+use crate::preset::parks::Parks;
+use crate::preset::{escape_cut, escape_for_terminal};
 use crate::tui::format::on_step;
 use crate::tui::layout::FieldMap;
 
@@ -24,6 +26,26 @@ pub struct AtParks {
 /// The key a click on the field sets.
 pub const DIRECTION: &str = "launch.direction";
 
+/// The parks `m`/`M` go through: the 30 bundled (less any that a user's
+/// park of the same code hides), then the user's own from the parks
+/// folder, as `fly --park` finds them ([`crate::preset::parks::all`]).
+#[derive(Clone, Debug)]
+pub struct ParkList {
+    pub list: Parks,
+    /// Why the user's parks could not be read: then the bundled alone.
+    pub error: Option<String>,
+}
+
+impl Default for ParkList {
+    /// The bundled parks alone.
+    fn default() -> ParkList {
+        ParkList {
+            list: crate::preset::parks::all(None).unwrap_or_default(),
+            error: None,
+        }
+    }
+}
+
 impl App {
     /// Every ground track shown: now, the pin's, the optimal swing's.
     pub fn ground_tracks(&self) -> impl Iterator<Item = &(f64, f64)> {
@@ -31,11 +53,41 @@ impl App {
         self.ground.iter().chain(&self.optimal_ground).chain(pinned)
     }
 
+    /// The park chosen (`m`/`M`), if any.
+    pub fn chosen_park(&self) -> Option<&park::Park> {
+        self.park.and_then(|k| self.parks.list.parks.get(k))
+    }
+
+    /// Reads the user's parks from `dir` (every `*.toml` in it) beside the
+    /// bundled ones for `m`/`M`. A file that does not read leaves the
+    /// bundled parks alone, and says why (a park silently missing would
+    /// be a wrong answer, not a smaller list).
+    pub fn load_parks(&mut self, dir: Option<&std::path::Path>) {
+        self.parks = match crate::preset::parks::all(dir) {
+            Ok(list) => ParkList { list, error: None },
+            Err(e) => {
+                let error = e.to_string();
+                self.message = Some((
+                    format!("your parks were not read, the 30 bundled only: {error}"),
+                    true,
+                ));
+                ParkList {
+                    error: Some(error),
+                    ..ParkList::default()
+                }
+            }
+        };
+        self.park = None;
+        self.judge_fences();
+        self.refresh_margin(true);
+        self.dirty = true;
+    }
+
     /// The fence from above: the chosen park's, else the preset's generic
     /// fence, the same in every direction.
     pub fn field_fence(&self) -> Option<park::Fence> {
-        if let Some(k) = self.park {
-            return park::bundled().get(k).map(|p| p.fence.clone());
+        if let Some(p) = self.chosen_park() {
+            return Some(p.fence.clone());
         }
         self.fence
             .map(|f| park::Fence::uniform(f.distance, f.height))
@@ -52,20 +104,28 @@ impl App {
         self.fence.map(|f| (f.distance, f.height))
     }
 
-    /// The current flight judged at the preset's fence (`fence_height`) and
-    /// at every bundled park (`at_parks`, in the scene's own air, as `fly`'s
-    /// count): one flight for all of them.
+    /// The current flight judged at the preset's fence (`fence_height`),
+    /// at the 30 bundled parks (the count, in the scene's own air, as
+    /// `fly`'s) and at the park chosen, which may be a user's: one flight
+    /// for all of them.
     pub(super) fn judge_fences(&mut self) {
         let parks = park::bundled();
         let generic = self
             .fence
             .map(|f| park::Fence::uniform(f.distance, f.height));
+        let chosen = self.chosen_park().map(|p| &p.fence);
         let fences: Vec<&park::Fence> = generic
             .iter()
             .chain(parks.iter().map(|p| &p.fence))
+            .chain(chosen)
             .collect();
         let (flight, _, _) = scene_start(&self.scene);
         let (_, mut clearings) = flight.judge(&Purpose::Readout.flight_options(), &fences);
+        let here = if chosen.is_some() {
+            clearings.pop()
+        } else {
+            None
+        };
         self.fence_height = if generic.is_some() {
             clearings.remove(0).height_at_fence
         } else {
@@ -74,30 +134,56 @@ impl App {
         self.at_parks = Some(AtParks {
             cleared: clearings.iter().filter(|c| c.clears()).count(),
             of: parks.len(),
-            here: self.park.and_then(|k| clearings.get(k).copied()),
+            here,
         });
     }
 
-    /// `m`/`M`: the next or previous park, through "none" (the preset's
-    /// fence) at either end.
+    /// `m`/`M`: the next or previous park (the bundled, then the user's),
+    /// through "none" (the preset's fence) at either end.
     pub(super) fn cycle_park(&mut self, forward: bool) {
-        let n = park::bundled().len();
+        let n = self.parks.list.parks.len();
         self.park = match (self.park, forward) {
-            (None, true) => Some(0),
+            (None, true) => n.checked_sub(1).map(|_| 0),
             (None, false) => n.checked_sub(1),
             (Some(k), true) => (k + 1 < n).then_some(k + 1),
             (Some(k), false) => k.checked_sub(1),
         };
         self.judge_fences();
+        self.refresh_margin(true);
         self.dirty = true;
-        let text = match self.park.and_then(|k| park::bundled().get(k)) {
-            Some(p) => format!(
-                "park: {} ({}), its fence drawn (m/M: the next)",
-                p.code, p.name
-            ),
-            None => "park: none, the preset's fence (m/M: a park)".to_owned(),
+        // In the park's air, the new park's (or, with none, the air before).
+        let was_in_air = self.in_park_air();
+        let air = self.follow_park_air();
+        let mut text = match (self.chosen_park(), self.park) {
+            (Some(p), Some(k)) => {
+                let yours = self.parks.list.files[k]
+                    .as_ref()
+                    .and_then(|f| f.file_name())
+                    .map_or(String::new(), |f| {
+                        format!(", yours from {}", f.to_string_lossy())
+                    });
+                let what = match &air {
+                    Some(Ok(at)) => format!("in its air at {at}"),
+                    _ => "its fence drawn (m/M: the next)".to_owned(),
+                };
+                format!(
+                    "park {}/{n}: {} ({}{yours}), {what}",
+                    k + 1,
+                    escape_for_terminal(&p.code),
+                    escape_cut(&p.name, 40)
+                )
+            }
+            _ if was_in_air => "park: none, the preset's fence, the air before".to_owned(),
+            _ => "park: none, the preset's fence (m/M: a park)".to_owned(),
         };
-        self.message = Some((text, false));
+        if let Some(Err(error)) = &air {
+            text = error.clone();
+        }
+        if let Some(error) = &self.parks.error {
+            text.push_str(&format!("; your parks were not read: {error}"));
+        }
+        let error = self.parks.error.is_some() || matches!(air, Some(Err(_)));
+        self.message = Some((text, error));
     }
 
     /// The field view's scale in `pane`: the fence and every track with a

@@ -7,6 +7,8 @@ impl App {
     /// Replaces the inputs with a preset's.
     pub fn load(&mut self, preset: Preset) {
         self.message = Some((format!("loaded {}", preset.name), false));
+        // The preset brings its own air.
+        self.air_before_park = None;
         self.preset_name = preset.name;
         self.description = preset.description;
         self.set_scene(preset.scene);

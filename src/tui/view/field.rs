@@ -41,8 +41,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .filter(|r| *r > 0.0)
         .map(|r| (r, arc(|_| Some(r / k), FRAC_PI_4)))
         .collect();
+    // A park's wall in runs of one height band each; the preset's fence,
+    // the same everywhere, in the fence's colour.
+    let walls = app.chosen_park().map(|p| wall_runs(&p.fence));
     let fence = app
         .field_fence()
+        .filter(|_| walls.is_none())
         .map(|f| arc(|d| f.distance_at(d), FRAC_PI_4));
     let flight = &app.flown.flight;
     let landing = match now.last() {
@@ -61,6 +65,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     }
     if let Some(fence) = &fence {
         datasets.push(chart::line(app.theme.fence, fence));
+    }
+    for (band, run) in walls.iter().flatten() {
+        datasets.push(chart::curve(
+            app.theme.wall_marker(*band),
+            app.theme.walls[*band],
+            run,
+        ));
     }
     if let Some((arrow, _, _)) = &wind {
         datasets.push(chart::line(app.theme.apex, arrow));
@@ -105,6 +116,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let mut block = Block::bordered().title(Span::styled(title.clone(), app.theme.title));
     if title.chars().count() + legend.width() <= room {
         block = block.title_top(legend.right_aligned());
+    }
+    if walls.is_some() {
+        let key = wall_legend(app);
+        if key.width() <= room {
+            block = block.title_bottom(key);
+        }
     }
     frame.render_widget(block, area);
     // No labels on either axis: the chart's graph is the whole plot.
@@ -158,6 +175,84 @@ fn arc(distance: impl Fn(f64) -> Option<f64>, half_angle: f64) -> Vec<(f64, f64)
             distance(direction).map(|d| (d * direction.sin(), d * direction.cos()))
         })
         .collect()
+}
+
+/// The wall heights' bands (ft): up to 8, up to 12, under 20, and 20 or
+/// more (Fenway's 37 ft wall in left field, Houston's 25 ft one, the
+/// 16 ft scoreboards).
+const WALL_BANDS_FT: [f64; 3] = [8.0, 12.0, 20.0];
+
+/// The band of a wall `height` (m) high: 0 to 3.
+fn wall_band(height: f64) -> usize {
+    let feet = height / crate::units::METRES_PER_FOOT;
+    match feet {
+        f if f >= WALL_BANDS_FT[2] => 3,
+        f if f > WALL_BANDS_FT[1] => 2,
+        f if f > WALL_BANDS_FT[0] => 1,
+        _ => 0,
+    }
+}
+
+/// A park's wall from pole to pole as runs of points (z, x) of one height
+/// band each; a run ends where the next begins, so the outline is whole.
+fn wall_runs(fence: &crate::model::park::Fence) -> Vec<(usize, Vec<(f64, f64)>)> {
+    let n = ((2.0 * FRAC_PI_4) * ARC_POINTS as f64).ceil() as usize;
+    let mut runs: Vec<(usize, Vec<(f64, f64)>)> = Vec::new();
+    // The fence's own corners, where its height steps, and an even spread.
+    let mut directions: Vec<f64> = (0..=n)
+        .map(|i| -FRAC_PI_4 + 2.0 * FRAC_PI_4 * i as f64 / n as f64)
+        .chain(fence.points().iter().map(|p| p.direction))
+        .collect();
+    directions.sort_by(f64::total_cmp);
+    for direction in directions {
+        let Some(at) = fence.at(direction) else {
+            continue;
+        };
+        let point = (at.distance * direction.sin(), at.distance * direction.cos());
+        let band = wall_band(at.height);
+        match runs.last_mut() {
+            Some((b, run)) if *b == band => run.push(point),
+            last => {
+                let joint = last.and_then(|(_, run)| run.last().copied());
+                runs.push((band, joint.into_iter().chain([point]).collect()));
+            }
+        }
+    }
+    runs
+}
+
+/// "wall ≤8 ≤12 <20 ≥20 ft", each band in its own colour and glyph, in
+/// the units shown (metres: ≤2.4 ≤3.7 <6.1 ≥6.1 m).
+fn wall_legend(app: &App) -> Line<'static> {
+    let unit = app.unit(Quantity::Distance);
+    let shown = |feet: f64| {
+        let v = unit.show(feet * crate::units::METRES_PER_FOOT);
+        crate::analysis::figures::trimmed((v * 10.0).round() / 10.0)
+    };
+    let [low, mid, high] = WALL_BANDS_FT.map(shown);
+    let glyph = |k: usize| match app.theme.wall_marker(k) {
+        Marker::Block => "█",
+        Marker::HalfBlock => "▀",
+        Marker::Bar => "▄",
+        _ => "━",
+    };
+    let mut spans = vec![Span::styled(" wall ", app.theme.dim)];
+    for (k, text) in [
+        format!("≤{low} "),
+        format!("≤{mid} "),
+        format!("<{high} "),
+        format!("≥{high} {}", unit.symbol),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        spans.push(Span::styled(
+            format!("{}{text}", glyph(k)),
+            app.theme.walls[k],
+        ));
+    }
+    spans.push(Span::raw(" "));
+    Line::from(spans)
 }
 
 /// "7° toward right field", "centre field".

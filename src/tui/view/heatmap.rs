@@ -3,27 +3,28 @@
 //! contour of the fence's distance. A cell whose ball does not land has no
 //! range: it is drawn off the colour scale (hatched where a whole character
 //! is such), with its own legend entry, and never sets the scale, the best
-//! cell or the contour.
+//! cell or the contour. The margin map ([`super::margin_map`]) is painted
+//! by the same pieces on its own scale.
 
 use ratatui::Frame;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::Color;
+use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
-use crate::analysis::study::{CellOutcome, Grid, Surface};
+use crate::analysis::study::{CellOutcome, Grid};
 use crate::tui::app::App;
 use crate::tui::layout::{HEATMAP_BAR, heatmap_plot};
 use crate::tui::theme::{Theme, ramp};
 use crate::units::UnitSystem;
 
-/// The surface's cell at pixel (px, py) of a w×h picture, py from the top.
-fn sample(surface: &Surface, px: usize, py: usize, w: usize, h: usize) -> CellOutcome {
-    let grid = surface.grid;
+/// The grid cell (column, row) at pixel (px, py) of a w×h picture, py from
+/// the top.
+pub(super) fn sample_cell(grid: &Grid, px: usize, py: usize, w: usize, h: usize) -> (usize, usize) {
     let i = (px * grid.columns / w.max(1)).min(grid.columns - 1);
     let j_from_top = (py * grid.rows / h.max(1)).min(grid.rows - 1);
-    surface.outcome(i, grid.rows - 1 - j_from_top)
+    (i, grid.rows - 1 - j_from_top)
 }
 
 /// The glyph of a character whose two pixels both do not land, and its
@@ -36,7 +37,29 @@ pub const NOT_LANDED_PLAIN_GLYPH: &str = "╳";
 pub const NOT_LANDED_PLAIN_LEGEND: &str = "╳╳   up";
 const CONTOUR_GLYPH: &str = "•";
 
+/// What a map holds at a pixel: a value, or why it has none.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Value {
+    Number(f64),
+    /// The ball does not land: drawn off the scale, hatched.
+    NotLanded,
+    /// Nothing to show (the bat misses, not flown yet, foul): blank.
+    Empty,
+}
+
+/// How a map's values look: its colour ramp over [0, 1], the glyph for a
+/// place on the scale without colour, and the colour of its contour.
+pub(super) struct Scale {
+    pub ramp: fn(f64) -> (u8, u8, u8),
+    pub shade: fn(f64) -> &'static str,
+    pub contour: Color,
+}
+
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    if app.shows_margin() {
+        super::margin_map::draw(frame, area, app);
+        return;
+    }
     let level = app.fence.map(|f| f.distance);
     let stale = if app
         .surface
@@ -54,16 +77,80 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
         None => format!(" Range over (E, ψ){stale} "),
     };
+    let Some(plot) = frame_and_axes(frame, area, app, title) else {
+        return;
+    };
+    let Some(state) = &app.surface else {
+        frame.render_widget(
+            Paragraph::new(Line::styled("computing the surface…", app.theme.dim)),
+            plot,
+        );
+        return;
+    };
+    let surface = &state.surface;
+    // The scale spans the landings only.
+    let (min, max) = surface
+        .landed_ranges()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    let value = |px: usize, py: usize, w: usize, h: usize| {
+        let (i, j) = sample_cell(&surface.grid, px, py, w, h);
+        match surface.outcome(i, j) {
+            CellOutcome::Landed(v) => Value::Number(v),
+            CellOutcome::NotLanded => Value::NotLanded,
+            CellOutcome::BatMisses | CellOutcome::NotComputed => Value::Empty,
+        }
+    };
+    let scale = Scale {
+        ramp,
+        shade: Theme::shade,
+        contour: app.theme.contour,
+    };
+    paint(
+        frame.buffer_mut(),
+        plot,
+        app,
+        (&value, &|v| (v - min) / (max - min).max(1e-9), level),
+        &scale,
+    );
+    marks(frame.buffer_mut(), plot, app);
+    let (top, unit) = app.distance(max);
+    let labels = [
+        format!("{top:>5.0}"),
+        format!("{unit:>5}"),
+        format!("{:>5.0}", app.distance(min).0),
+    ];
+    colour_bar(
+        frame.buffer_mut(),
+        plot,
+        app,
+        (&scale, &labels),
+        if surface.any_not_landed() {
+            OffScale::NotLanded
+        } else {
+            OffScale::None
+        },
+    );
+}
+
+/// The pane's border and title, and the axes' labels: ψ on the left (top,
+/// bottom), E along the bottom, in the units shown (rad and mm, or degrees
+/// and inches); the plot inside them, if it is large enough to draw.
+pub(super) fn frame_and_axes(
+    frame: &mut Frame,
+    area: Rect,
+    app: &App,
+    title: String,
+) -> Option<Rect> {
     let block = Block::bordered().title(Span::styled(title, app.theme.title));
     frame.render_widget(block, area);
     let plot = heatmap_plot(area);
     if plot.width < 4 || plot.height < 2 {
-        return;
+        return None;
     }
     let window = Grid::explorer_window();
     let inner = Block::bordered().inner(area);
-    // Axis labels: ψ on the left (top, bottom), E along the bottom, in the
-    // units shown: rad and mm, or degrees and inches.
     let imperial = app.units == UnitSystem::Imperial;
     let psi_text = |psi: f64| {
         if imperial {
@@ -111,33 +198,44 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         app.theme.dim,
     );
 
-    let Some(state) = &app.surface else {
-        frame.render_widget(
-            Paragraph::new(Line::styled("computing the surface…", app.theme.dim)),
-            plot,
-        );
-        return;
-    };
-    let surface = &state.surface;
-    // The scale spans the landings only.
-    let (min, max) = surface
-        .landed_ranges()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v), b.max(v))
-        });
+    Some(plot)
+}
+
+/// What a map's values are for [`paint`]: the value at pixel (px, py) of a
+/// w×h picture, where a value falls on the scale (0 to 1), and the level
+/// whose contour is drawn.
+pub(super) type Values<'a> = (
+    &'a dyn Fn(usize, usize, usize, usize) -> Value,
+    &'a dyn Fn(f64) -> f64,
+    Option<f64>,
+);
+
+/// Paints a map's values over `plot`: in colour, half blocks on `scale`'s
+/// ramp; without, a glyph per character on its shades; the contour where
+/// the level lies between a pixel and its neighbour to the right or below.
+pub(super) fn paint(
+    buf: &mut Buffer,
+    plot: Rect,
+    app: &App,
+    (value, place, level): Values,
+    scale: &Scale,
+) {
     let (w, h) = (plot.width as usize, 2 * plot.height as usize);
-    let pixels: Vec<CellOutcome> = (0..h)
+    let pixels: Vec<Value> = (0..h)
         .flat_map(|py| (0..w).map(move |px| (px, py)))
-        .map(|(px, py)| sample(surface, px, py, w, h))
+        .map(|(px, py)| value(px, py, w, h))
         .collect();
     let at = |px: usize, py: usize| pixels[py * w + px];
+    let number = |v: Value| match v {
+        Value::Number(n) => Some(n),
+        _ => None,
+    };
     let pixel = |px: usize, py: usize| -> Pixel {
         let v = at(px, py);
-        if let (Some(l), Some(here)) = (level, v.range()) {
+        if let (Some(l), Some(here)) = (level, number(v)) {
             // A pixel on the contour: the level lies between it and a
-            // neighbour, both landings.
-            let crosses =
-                |there: CellOutcome| there.range().is_some_and(|t| (t >= l) != (here >= l));
+            // neighbour, both with values.
+            let crosses = |there: Value| number(there).is_some_and(|t| (t >= l) != (here >= l));
             let edge =
                 (px + 1 < w && crosses(at(px + 1, py))) || (py + 1 < h && crosses(at(px, py + 1)));
             if edge {
@@ -145,28 +243,31 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             }
         }
         match v {
-            CellOutcome::Landed(v) => Pixel::Landed((v - min) / (max - min).max(1e-9)),
-            CellOutcome::NotLanded => Pixel::NotLanded,
-            CellOutcome::BatMisses | CellOutcome::NotComputed => Pixel::NoRange,
+            Value::Number(v) => Pixel::Landed(place(v)),
+            Value::NotLanded => Pixel::NotLanded,
+            Value::Empty => Pixel::NoRange,
         }
     };
     let theme = &app.theme;
     if theme.colored() {
         let colour = |px: usize, py: usize| -> Color {
             match pixel(px, py) {
-                Pixel::Contour => theme.contour,
-                Pixel::Landed(t) => theme.rgb(ramp(t)),
+                Pixel::Contour => scale.contour,
+                Pixel::Landed(t) => theme.rgb((scale.ramp)(t)),
                 Pixel::NotLanded => theme.not_landed,
                 Pixel::NoRange => theme.no_range,
             }
         };
-        draw_pixels(frame.buffer_mut(), plot, &colour, theme);
+        draw_pixels(buf, plot, &colour, theme);
     } else {
-        draw_shades(frame.buffer_mut(), plot, &pixel);
+        draw_shades(buf, plot, &pixel, scale.shade);
     }
+}
 
-    // Markers: the current swing and the optimum.
-    // A point outside the window is pinned to its edge.
+/// The current swing ✚ and the optimum ★ over a map; a point outside the
+/// window is pinned to its edge as ◆.
+pub(super) fn marks(buf: &mut Buffer, plot: Rect, app: &App) {
+    let window = Grid::explorer_window();
     let to_cell = |e: f64, psi: f64| -> (u16, u16, bool) {
         let fx = (e - window.undercut.0) / (window.undercut.1 - window.undercut.0);
         let fy = (psi - window.swing_angle.0) / (window.swing_angle.1 - window.swing_angle.0);
@@ -176,7 +277,6 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         let y = plot.y + (((1.0 - fy) * (plot.height - 1) as f64).round() as u16);
         (x, y, inside)
     };
-    let buf = frame.buffer_mut();
     let mark = |buf: &mut Buffer, (x, y, inside): (u16, u16, bool), symbol: &str, colour: Color| {
         let symbol = if inside { symbol } else { "◆" };
         buf[(x, y)]
@@ -197,63 +297,77 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         "✚",
         app.theme.swing_mark,
     );
+}
 
-    // The colour bar, top = max.
+/// The cells off a map's scale, for the legend under its colour bar.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum OffScale {
+    None,
+    /// Some balls do not land (hatched).
+    NotLanded,
+    /// Some swings go foul (blank: the margin map's).
+    Foul,
+}
+
+/// The colour bar right of `plot`, top = 1 on the scale, with `labels` at
+/// its top, middle and bottom, and under it the legend of the cells off
+/// the scale, if any.
+pub(super) fn colour_bar(
+    buf: &mut Buffer,
+    plot: Rect,
+    app: &App,
+    (scale, labels): (&Scale, &[String; 3]),
+    off: OffScale,
+) {
     let bar = Rect::new(plot.right() + 1, plot.y, HEATMAP_BAR - 1, plot.height);
     let [_, bar_area] = Layout::horizontal([Constraint::Length(0), Constraint::Fill(1)]).areas(bar);
     for row in 0..bar_area.height {
         let t = 1.0 - row as f64 / (bar_area.height.max(2) - 1) as f64;
-        let c = app.theme.rgb(ramp(t));
+        let c = app.theme.rgb((scale.ramp)(t));
         let swatch = if app.theme.colored() {
             "██"
         } else {
-            &Theme::shade(t).repeat(2)
+            &(scale.shade)(t).repeat(2)
         };
         buf.set_string(bar_area.x, bar_area.y + row, swatch, app.theme.swatch(c));
     }
-    let (top, unit) = app.distance(max);
-    buf.set_string(
-        bar_area.x + 2,
+    let rows = [
         bar_area.y,
-        format!("{top:>5.0}"),
-        app.theme.dim,
-    );
-    buf.set_string(
-        bar_area.x + 2,
         bar_area.y + bar_area.height / 2,
-        format!("{unit:>5}"),
-        app.theme.dim,
-    );
-    buf.set_string(
-        bar_area.x + 2,
         bar_area.bottom().saturating_sub(1),
-        format!("{:>5.0}", app.distance(min).0),
-        app.theme.dim,
-    );
-    // The legend of the cells off the scale, under the bar.
-    if surface.any_not_landed() {
-        buf.set_string(
-            bar_area.x,
-            bar_area.bottom(),
-            if app.theme.colored() {
+    ];
+    for (row, label) in rows.into_iter().zip(labels) {
+        buf.set_string(bar_area.x + 2, row, label, app.theme.dim);
+    }
+    let (x, y) = (bar_area.x, bar_area.bottom());
+    match off {
+        OffScale::None => {}
+        OffScale::NotLanded => {
+            let legend = if app.theme.colored() {
                 NOT_LANDED_LEGEND
             } else {
                 NOT_LANDED_PLAIN_LEGEND
-            },
-            app.theme.swatch(app.theme.not_landed),
-        );
+            };
+            buf.set_string(x, y, legend, app.theme.swatch(app.theme.not_landed));
+        }
+        OffScale::Foul => {
+            // The blank cells' own colour, then the word.
+            let swatch = Style::new().bg(app.theme.no_range);
+            buf.set_string(x, y, "  ", swatch);
+            buf.set_string(x + 2, y, " foul", app.theme.dim);
+        }
     }
 }
 
 /// What a pixel of the map shows.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Pixel {
-    /// On the fence's contour.
+    /// On the level's contour.
     Contour,
-    /// A landing, at `t` of the colour scale (0 to 1).
+    /// A value, at `t` of the colour scale (0 to 1).
     Landed(f64),
     NotLanded,
-    /// The bat misses the ball.
+    /// No value: the bat misses the ball (or nothing to show).
     NoRange,
 }
 
@@ -283,9 +397,14 @@ fn draw_pixels(
 }
 
 /// Fills `area` without colour, a glyph per character: the contour's dot,
-/// the hatch where neither pixel lands, else the shade of its landings'
-/// mean place on the scale (blank where the bat misses).
-fn draw_shades(buf: &mut Buffer, area: Rect, pixel: &dyn Fn(usize, usize) -> Pixel) {
+/// the hatch where neither pixel lands, else the `shade` of its values'
+/// mean place on the scale (blank where there is none).
+fn draw_shades(
+    buf: &mut Buffer,
+    area: Rect,
+    pixel: &dyn Fn(usize, usize) -> Pixel,
+    shade: fn(f64) -> &'static str,
+) {
     for row in 0..area.height {
         for col in 0..area.width {
             let (c, r) = (col as usize, row as usize);
@@ -304,7 +423,7 @@ fn draw_shades(buf: &mut Buffer, area: Rect, pixel: &dyn Fn(usize, usize) -> Pix
             } else if landed.is_empty() {
                 " "
             } else {
-                Theme::shade(landed.iter().sum::<f64>() / landed.len() as f64)
+                shade(landed.iter().sum::<f64>() / landed.len() as f64)
             };
             buf[(area.x + col, area.y + row)].set_symbol(glyph);
         }

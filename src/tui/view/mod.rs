@@ -7,7 +7,9 @@ pub mod figure;
 mod figure_panels;
 mod heatmap;
 mod impact;
+mod impact3d;
 mod inputs;
+mod margin_map;
 mod overlay;
 mod readout;
 mod trajectory;
@@ -181,6 +183,10 @@ fn swing_status(spans: &mut Vec<Span<'static>>, app: &App) {
         ),
         None => Span::styled("· optimising… ", app.theme.busy),
     });
+    if app.shows_margin() {
+        spans.push(margin_status(app));
+        return;
+    }
     spans.push(match &app.surface {
         Some(s) if s.generation != app.generation => {
             Span::styled("· surface stale, updating… ", app.theme.busy)
@@ -198,6 +204,25 @@ fn swing_status(spans: &mut Vec<Span<'static>>, app: &App) {
         ),
         None => Span::styled("· surface… ", app.theme.busy),
     });
+}
+
+/// The margin map's progress: rows still coming, or done.
+fn margin_status(app: &App) -> Span<'static> {
+    let Some(state) = &app.margin.state else {
+        return Span::styled("· margin… ", app.theme.busy);
+    };
+    if let Some(filling) = state.filling() {
+        let rows = filling.done() / filling.grid.columns.max(1);
+        return Span::styled(
+            format!("· margin {rows}/{} rows… ", filling.grid.rows),
+            app.theme.busy,
+        );
+    }
+    if !app.margin_fresh() {
+        return Span::styled("· margin stale, updating… ", app.theme.busy);
+    }
+    let grid = state.surface.grid;
+    Span::raw(format!("· margin ✓ {}×{} ", grid.columns, grid.rows))
 }
 
 /// `text` in `width` columns: a path too long loses its start, so that the

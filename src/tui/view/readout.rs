@@ -9,6 +9,7 @@ use ratatui::widgets::{Block, Paragraph};
 use crate::analysis::figures::trimmed;
 use crate::analysis::landing::fence_text;
 use crate::analysis::optimum::Status;
+use crate::model::atmosphere::Atmosphere;
 use crate::model::impact::Regime;
 use crate::model::launch::BattedBall;
 use crate::tui::app::App;
@@ -72,6 +73,22 @@ fn air(app: &App) -> (String, String) {
         "ρ {:.3} kg/m³  ν {:.3e} m²/s",
         air.density, air.kinematic_viscosity
     );
+    // In a park's own air (key `a`), whose: "COL's standard air at
+    // 1579.8 m", while it is that (a weather typed since reads as any).
+    let park = app.chosen_park().filter(|_| app.in_park_air());
+    if let (Some(park), Some(a)) = (park, air.atmosphere)
+        && a == (Atmosphere {
+            elevation: park.elevation,
+            ..Atmosphere::STANDARD
+        })
+    {
+        let elevation = match app.units {
+            UnitSystem::Si => format!("{} m", trimmed(a.elevation)),
+            UnitSystem::Imperial => format!("{:.0} ft", app.distance(a.elevation).0),
+        };
+        let code = crate::preset::escape_cut(&park.code, 8);
+        return (values, format!("{code}'s standard air at {elevation}"));
+    }
     let source = match air.atmosphere {
         Some(a) if app.units == UnitSystem::Imperial => {
             let unit = |q: Quantity| app.unit(q);
@@ -339,6 +356,19 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             Span::raw(parks_text(app, at)),
         ]));
     }
+    // With a park chosen its verdict is the point: where the pane is too
+    // short for it in its place (80×24 with derived air), it comes right
+    // after the flight (the impact and the rest are on their tabs).
+    let rows = inner.height as usize;
+    if app.park.is_some()
+        && lines.len() > rows
+        && rows > 3
+        && let Some(k) = labelled(&lines, "parks")
+    {
+        let verdict = lines.remove(k);
+        let after_flight = labelled(&lines, "flight").map_or(0, |f| f + 1);
+        lines.insert(after_flight, verdict);
+    }
     // A batted ball's readout has room for the given air too, and for the
     // models in force (Nathan's unless chosen: not the swing's).
     if batted && !derived {
@@ -403,16 +433,21 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     );
 }
 
+/// Where the line labelled `name` is among `lines`.
+fn labelled(lines: &[Line], name: &str) -> Option<usize> {
+    lines
+        .iter()
+        .position(|l| l.spans.first().is_some_and(|s| s.content.trim() == name))
+}
+
 /// "clears 26 of 30 parks", or with a park chosen "BOS clears by 8.6 m;
 /// 26/30 parks" (off the wall by, short by, foul), in the units shown.
 fn parks_text(app: &App, at: &crate::tui::app::AtParks) -> String {
     use crate::model::clearing::Outcome;
-    let (Some(k), Some(here)) = (app.park, at.here) else {
+    let (Some(park), Some(here)) = (app.chosen_park(), at.here) else {
         return format!("clears {} of {} parks", at.cleared, at.of);
     };
-    let code = crate::model::park::bundled()
-        .get(k)
-        .map_or("?", |p| p.code.as_str());
+    let code = crate::preset::escape_cut(&park.code, 8);
     let unit = app.unit(Quantity::Distance);
     let by = |m: f64| format!("{:.1} {}", unit.show_difference(m.abs()), unit.symbol);
     let verdict = match (here.outcome, here.margin) {
