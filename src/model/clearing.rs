@@ -15,7 +15,7 @@ use super::flight::{self, FlightOptions, FlightSummary};
 use super::frame;
 use super::launch::SceneFlight;
 use super::park::{Fence, FenceAt};
-use crate::numerics::ode::{DenseStep, State};
+use crate::numerics::ode::{State, Step};
 use crate::numerics::roots::find_root_newton_from;
 
 /// Crossing times are located to this (s): a batted ball moves under a
@@ -219,7 +219,7 @@ impl SceneFlight {
 /// field, toward right field, up.
 #[inline]
 fn watch<const N: usize>(
-    step: &DenseStep<N>,
+    step: &Step<N>,
     fences: &[&Fence],
     crossings: &mut [Option<Crossing>],
     ground: impl Fn(&State<N>) -> [f64; 3],

@@ -4,26 +4,23 @@
 //! continuous extension, and a prediction of the next of them so that the
 //! step that meets it wastes little beyond it.
 
-use std::cell::Cell;
-
-use super::{Dynamics, Regime};
-use crate::numerics::ode::{Control, DenseStep, State};
+use super::{Dynamics, FlightSummary, Regime};
+use crate::numerics::ode::{Control, State, Stats, Step};
 use crate::numerics::roots::find_root_newton;
 
 /// Event times are located to this (s): far below anything that shows.
 const ROOT_TOLERANCE: f64 = 1e-13;
 
 /// The events seen so far, and the regime in force.
-pub(super) struct Events<'a, const N: usize, D: Dynamics<N>> {
+pub(crate) struct Events<'a, const N: usize, D: Dynamics<N>> {
     flight: &'a D,
     /// The kinks switched at: none when the flight does not stop at them.
     kinks: &'static [f64],
     /// The height the wind blows above, if the flight switches there.
     wind_height: Option<f64>,
-    /// The drag piece and wind layer the current step uses. Shared with
-    /// the right-hand side, which reads it during a step while this
-    /// observer changes it between steps.
-    regime: &'a Cell<Regime>,
+    /// The drag piece and wind layer the current step uses: the
+    /// right-hand side's, which the integration hands it after each step.
+    regime: Regime,
     /// Where the flight started: distances are measured from it.
     start: State<N>,
     /// The time of the last switch: a second switch at the same instant
@@ -45,10 +42,13 @@ struct Switch {
 }
 
 impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
-    pub fn new(flight: &'a D, start: &State<N>, regime: &'a Cell<Regime>) -> Self {
+    /// The events of a flight from `start`, switching at the drag curve's
+    /// kinks if `stop_at_kinks`.
+    pub fn new(flight: &'a D, start: &State<N>, stop_at_kinks: bool) -> Self {
+        let regime = flight.starting_regime(start, stop_at_kinks);
         Events {
             flight,
-            kinks: if regime.get().piece.is_some() {
+            kinks: if regime.piece.is_some() {
                 flight.drag().kinks()
             } else {
                 &[]
@@ -68,11 +68,38 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
         !self.kinks.is_empty()
     }
 
+    /// The regime the next step is to use.
+    #[inline(always)]
+    pub fn regime(&self) -> Regime {
+        self.regime
+    }
+
+    /// The flight's outcome, once the integration has ended (`landed` if
+    /// the landing stopped it).
+    pub fn summary(&self, landed: bool, stats: Stats) -> FlightSummary {
+        let (time, state) = self.landing.unwrap_or(self.last);
+        let (range, direction) = D::ground(&state, &self.start);
+        let (horizontal, vertical) = D::velocity_parts(&state);
+        FlightSummary {
+            range,
+            direction,
+            flight_time: time,
+            apex: self.apex.0,
+            apex_distance: self.apex.1,
+            // As a norm is computed (not hypot), so the plane's speed is bit
+            // for bit what it was.
+            landing_speed: (horizontal * horizontal + vertical * vertical).sqrt(),
+            landing_angle: (-vertical).atan2(horizontal),
+            landed,
+            stats,
+        }
+    }
+
     /// Where the step leaves its drag piece, and the piece it enters, given
     /// the Reynolds numbers at its ends.
     #[inline(always)]
-    fn kink_crossing(&self, step: &DenseStep<N>, re0: f64, re1: f64) -> Option<Switch> {
-        let regime = self.regime.get();
+    fn kink_crossing(&self, step: &Step<N>, re0: f64, re1: f64) -> Option<Switch> {
+        let regime = self.regime;
         let (kinks, p) = (self.kinks, regime.piece.unwrap_or_default());
         let (kink, next) = if p > 0 && re1 < kinks[p - 1] {
             (kinks[p - 1], p - 1)
@@ -114,9 +141,9 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
 
     /// Where the step enters or leaves the wind's layer, if it does.
     #[inline(always)]
-    fn layer_crossing(&self, step: &DenseStep<N>) -> Option<Switch> {
+    fn layer_crossing(&self, step: &Step<N>) -> Option<Switch> {
         let height = self.wind_height?;
-        let regime = self.regime.get();
+        let regime = self.regime;
         let (y0, y1) = (step.y0[D::HEIGHT] - height, step.y1[D::HEIGHT] - height);
         let leaves = if regime.in_wind { y1 < 0.0 } else { y1 >= 0.0 };
         if !leaves {
@@ -139,7 +166,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
 
     /// Where a component of the state crosses `level` inside the step.
     #[inline]
-    fn zero_of(step: &DenseStep<N>, component: usize, level: f64) -> f64 {
+    fn zero_of(step: &Step<N>, component: usize, level: f64) -> f64 {
         find_root_newton(
             |t| (step.at(t)[component] - level, step.slope_at(t)[component]),
             step.t0,
@@ -154,10 +181,10 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
     #[inline(always)]
     pub fn observe(
         &mut self,
-        step: &DenseStep<N>,
-        watch: &mut impl FnMut(&DenseStep<N>),
+        step: &Step<N>,
+        watch: &mut impl FnMut(&Step<N>),
     ) -> Control {
-        let in_wind = self.regime.get().in_wind;
+        let in_wind = self.regime.in_wind;
         // The Reynolds numbers at the step's ends (each costs a square root:
         // computed once, for the kink check and the kink prediction).
         let (re0, re1) = if self.switching() {
@@ -169,7 +196,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
             (0.0, 0.0)
         };
         // The step as shown: cut at a switch, or the step itself (by
-        // reference: a DenseStep is dozens of numbers, not worth copying on
+        // reference: a step is dozens of numbers, not worth copying on
         // every step).
         let truncated;
         let mut shown = step;
@@ -195,7 +222,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
                 self.last_switch = switch.time;
                 truncated = step.truncated(switch.time);
                 shown = &truncated;
-                self.regime.set(switch.regime);
+                self.regime = switch.regime;
                 control = Control::RestartAt(switch.time);
             }
         }
@@ -224,7 +251,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
     /// end: a little past it rather than wherever the error control would.
     /// `step` was not cut, so re0 and re1 are its ends' Reynolds numbers.
     #[inline(always)]
-    fn next_event_by(&self, step: &DenseStep<N>, re0: f64, re1: f64) -> Option<f64> {
+    fn next_event_by(&self, step: &Step<N>, re0: f64, re1: f64) -> Option<f64> {
         let h = step.t1 - step.t0;
         // The landing, and the wind's layer: y(τ) ≈ y + v_y τ + a_y τ²/2,
         // a_y from the step.
@@ -237,7 +264,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
         // The next kink, from the Reynolds number's rate over the step.
         if self.switching() {
             let rate = (re1 - re0) / h;
-            let (kinks, p) = (self.kinks, self.regime.get().piece.unwrap_or_default());
+            let (kinks, p) = (self.kinks, self.regime.piece.unwrap_or_default());
             let target = if rate < 0.0 && p > 0 {
                 Some(kinks[p - 1])
             } else if rate > 0.0 && p < kinks.len() {
