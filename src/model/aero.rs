@@ -182,10 +182,11 @@ impl Sawicki2003Drag {
         (R::splat(CRISIS_START) - re) * R::splat(1.0 / 8784.46)
     }
 
-    /// C_D on the rising piece, from e^[`Self::rising_exponent`].
+    /// C_D on the rising piece, from e^[`Self::rising_exponent`]:
+    /// 0.15 + 0.0416812·(e^x − 1), one product and one sum after e^x.
     #[inline(always)]
     pub fn rising<R: Real>(exponential: R) -> R {
-        R::splat(DRAG_FLOOR) + R::splat(0.0416812) * (exponential - R::splat(1.0))
+        R::splat(DRAG_FLOOR - RISE) + R::splat(RISE) * exponential
     }
 
     /// The recovery piece's exponent at `re` (continued for
@@ -196,10 +197,11 @@ impl Sawicki2003Drag {
         (R::splat(CRISIS_END) - re) * R::splat(1.0 / 49808.6)
     }
 
-    /// C_D on the recovery piece, from e^[`Self::recovery_exponent`].
+    /// C_D on the recovery piece, from e^[`Self::recovery_exponent`]:
+    /// 0.15 + 0.309620·(1 − e^x).
     #[inline(always)]
     pub fn recovery<R: Real>(exponential: R) -> R {
-        R::splat(DRAG_FLOOR) + R::splat(0.309620) * (R::splat(1.0) - exponential)
+        R::splat(DRAG_FLOOR + RECOVERY) - R::splat(RECOVERY) * exponential
     }
 
     /// C_D on the subcritical piece (0) and on the floor (2).
@@ -261,6 +263,9 @@ const THOUSAND_RPM_PER_RAD_PER_S: f64 = 60.0 / (2.0 * std::f64::consts::PI * 100
 /// of air speed, more than any accurate step overshoots.
 pub const CONTINUATION: f64 = 15_000.0;
 const DRAG_FLOOR: f64 = 0.15;
+/// The sizes of the rising and recovery pieces' exponentials.
+const RISE: f64 = 0.0416812;
+const RECOVERY: f64 = 0.309620;
 const SUBCRITICAL_DRAG: f64 = 0.5;
 const CRISIS_START: f64 = 160_000.0;
 const CRISIS_END: f64 = 175_000.0;

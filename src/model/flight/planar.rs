@@ -24,9 +24,10 @@ pub(super) fn velocity(state: &State<4>) -> Vector2<f64> {
     Vector2::new(state[VELOCITY_X], state[VERTICAL_VELOCITY])
 }
 
-/// C_D times `model.drag_scale`. At 1 the product is C_D bit for bit; an
-/// unconditional multiplication costs fewer instructions than a test for 1
-/// (callgrind, 2000 planar `fly --batch` rows: +0.9 % against +1.7 %).
+/// A factor of the drag times `model.drag_scale`. At 1 the product is the
+/// factor bit for bit; an unconditional multiplication costs fewer
+/// instructions than a test for 1 (callgrind, 2000 planar `fly --batch`
+/// rows: +0.9 % against +1.7 %).
 #[inline(always)]
 pub(super) fn scaled<R: Real>(coefficient: R, scale: R) -> R {
     coefficient * scale
@@ -72,13 +73,17 @@ impl<R: Real> PlanarConstants<R> {
         let air_speed = (rel_x * rel_x + rel_y * rel_y).sqrt();
         // Re = 2|V_r|r_b/ν (Eq. 27).
         let re = air_speed * self.reynolds_per_speed;
-        let drag_coefficient = scaled(drag(re, spin_rate), self.drag_scale);
-        let lift = self.spin_sign * lift.coefficient_times_speed(air_speed, surface_speed);
+        // ρA/(2M_b)·|V_r| (with `model.drag_scale` on C_D), ready while C_D
+        // is computed, so that C_D waits on one product (see `scaled`).
+        let per_coefficient = scaled(air_speed * self.force_per_mass, self.drag_scale);
+        let along = drag(re, spin_rate) * per_coefficient;
+        let lift = self.spin_sign
+            * lift.coefficient_times_speed(air_speed, surface_speed)
+            * self.force_per_mass;
         // Drag along V_r; lift along ẑ × V_b-direction, scaled by |V_r|:
         // (V_r,y, −V_r,x).
-        let along = drag_coefficient * air_speed;
-        let ax = (rel_x * along + rel_y * lift) * self.force_per_mass;
-        let ay = (rel_y * along + -rel_x * lift) * self.force_per_mass;
+        let ax = rel_x * along + rel_y * lift;
+        let ay = rel_y * along + -rel_x * lift;
         (ax, ay - self.gravity)
     }
 }

@@ -100,7 +100,9 @@ impl<R: Real> SpatialConstants<R> {
         let rel = [wx - vx, wy - vy, wz - vz];
         let air_speed = (rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2]).sqrt();
         let re = air_speed * self.reynolds_per_speed;
-        let drag_coefficient = scaled(drag(re, spin_rate), self.drag_scale);
+        // As in the plane: ρA/(2M_b)·|V_r| ready while C_D is computed.
+        let per_coefficient = scaled(air_speed * self.force_per_mass, self.drag_scale);
+        let along = drag(re, spin_rate) * per_coefficient;
         // ω̂ × (V_b − V_w) = ω̂ × (−V_r) = V_r × ω̂, scaled by |V_r|.
         let a = self.spin_axis;
         let lift_direction = [
@@ -108,11 +110,8 @@ impl<R: Real> SpatialConstants<R> {
             rel[2] * a[0] - rel[0] * a[2],
             rel[0] * a[1] - rel[1] * a[0],
         ];
-        let lift = lift.coefficient_times_speed(air_speed, surface_speed);
-        let along = drag_coefficient * air_speed;
-        let aero: [R; 3] = std::array::from_fn(|i| {
-            (rel[i] * along + lift_direction[i] * lift) * self.force_per_mass
-        });
+        let lift = lift.coefficient_times_speed(air_speed, surface_speed) * self.force_per_mass;
+        let aero: [R; 3] = std::array::from_fn(|i| rel[i] * along + lift_direction[i] * lift);
         [aero[0], aero[1] - self.gravity, aero[2]]
     }
 }

@@ -38,9 +38,6 @@ where
         // The next step's first stage, and the Hermite extension's end slope.
         let k_end = f(t + h, &y1);
         stats.evaluations += 4;
-        if stats.accepted == 0 {
-            stats.first_step = h;
-        }
         stats.accepted += 1;
         let dense = Step::of_dense(DenseStep::new(
             t,

@@ -14,6 +14,7 @@ use nalgebra::SVector;
 mod controller;
 mod dense;
 mod fixed;
+pub mod lanes;
 pub mod stages;
 mod tableau;
 
@@ -49,8 +50,10 @@ pub struct Stats {
     pub evaluations: u32,
     pub accepted: u32,
     pub rejected: u32,
-    /// The size of the first accepted step (0 if none was): a good first
-    /// step to try for a neighbouring problem ([`Settings::initial_step`]).
+    /// The step the controller chose after the first accepted one (0 if
+    /// none was): what it found a step near the start may be, so a good
+    /// first step to try for a neighbouring problem
+    /// ([`Settings::initial_step`]).
     pub first_step: f64,
 }
 
@@ -172,7 +175,7 @@ where
                 h_next = h_next.min(h);
             }
             if stats.accepted == 0 {
-                stats.first_step = h;
+                stats.first_step = h_next;
             }
             stats.accepted += 1;
             previous_log2_error = log2_error.max(LOG2_ERROR_FLOOR);

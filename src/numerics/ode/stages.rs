@@ -37,9 +37,10 @@ pub struct Stages<V> {
     pub y1: V,
 }
 
-/// The six evaluations of a step. Each stage's combination is written as
-/// the tableau reads, so that the one-flight path's arithmetic is what it
-/// always was.
+/// The six evaluations of a step. Each stage's input adds its newest
+/// slope last, times its weight already multiplied by h: the evaluations
+/// form one dependent chain, and this way each waits on a single
+/// multiply-add after the one before, the older slopes' sum being ready.
 #[inline(always)]
 pub fn stages<R: Real, V: Vector<R>>(
     f: &mut impl FnMut(R, &V) -> V,
@@ -50,20 +51,25 @@ pub fn stages<R: Real, V: Vector<R>>(
 ) -> Stages<V> {
     let c = R::splat;
     let k2 = f(t + c(C2) * h, &(*y + *k1 * (c(A21) * h)));
-    let k3 = f(t + c(C3) * h, &(*y + (*k1 * c(A31) + k2 * c(A32)) * h));
+    let k3 = f(
+        t + c(C3) * h,
+        &((*y + *k1 * (c(A31) * h)) + k2 * (c(A32) * h)),
+    );
     let k4 = f(
         t + c(C4) * h,
-        &(*y + (*k1 * c(A41) + k2 * c(A42) + k3 * c(A43)) * h),
+        &((*y + (*k1 * c(A41) + k2 * c(A42)) * h) + k3 * (c(A43) * h)),
     );
     let k5 = f(
         t + c(C5) * h,
-        &(*y + (*k1 * c(A51) + k2 * c(A52) + k3 * c(A53) + k4 * c(A54)) * h),
+        &((*y + (*k1 * c(A51) + k2 * c(A52) + k3 * c(A53)) * h) + k4 * (c(A54) * h)),
     );
     let k6 = f(
         t + h,
-        &(*y + (*k1 * c(A61) + k2 * c(A62) + k3 * c(A63) + k4 * c(A64) + k5 * c(A65)) * h),
+        &((*y + (*k1 * c(A61) + k2 * c(A62) + k3 * c(A63) + k4 * c(A64)) * h)
+            + k5 * (c(A65) * h)),
     );
-    let y1 = *y + (*k1 * c(A71) + k3 * c(A73) + k4 * c(A74) + k5 * c(A75) + k6 * c(A76)) * h;
+    let y1 = (*y + (*k1 * c(A71) + k3 * c(A73) + k4 * c(A74) + k5 * c(A75)) * h)
+        + k6 * (c(A76) * h);
     let k7 = f(t + h, &y1);
     Stages {
         k: [k2, k3, k4, k5, k6, k7],
