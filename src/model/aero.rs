@@ -18,7 +18,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::numerics::real::Real;
+use wide::f64x4;
+
+use crate::numerics::real::{Real, exp_lanes};
 
 /// What a drag model gives the flight.
 pub trait DragCurve {
@@ -40,6 +42,18 @@ pub trait DragCurve {
     #[inline(always)]
     fn piece(&self, re: f64) -> usize {
         self.kinks().iter().take_while(|&&kink| re >= kink).count()
+    }
+
+    /// As [`DragCurve::coefficient_on`], for four flights at once, each on
+    /// its own piece (`pieces`, the pieces' numbers as floats).
+    fn coefficient_lanes(&self, pieces: f64x4, reynolds: f64x4, spin_rate: f64x4) -> f64x4;
+
+    /// As [`DragCurve::piece`], for four flights, as floats.
+    #[inline(always)]
+    fn piece_lanes(&self, re: f64x4) -> f64x4 {
+        self.kinks().iter().fold(f64x4::ZERO, |count, &kink| {
+            count + re.simd_ge(f64x4::splat(kink)).select(f64x4::ONE, f64x4::ZERO)
+        })
     }
 }
 
@@ -151,6 +165,14 @@ impl DragCurve for DragModel {
         }
     }
 
+    fn coefficient_lanes(&self, pieces: f64x4, reynolds: f64x4, spin_rate: f64x4) -> f64x4 {
+        match self {
+            DragModel::Sawicki2003 => Sawicki2003Drag.coefficient_lanes(pieces, reynolds, spin_rate),
+            DragModel::Constant => ConstantDrag.coefficient_lanes(pieces, reynolds, spin_rate),
+            DragModel::Nathan => NathanDrag.coefficient_lanes(pieces, reynolds, spin_rate),
+        }
+    }
+
     fn kinks(&self) -> &'static [f64] {
         match self {
             DragModel::Sawicki2003 => Sawicki2003Drag.kinks(),
@@ -220,6 +242,22 @@ impl DragCurve for Sawicki2003Drag {
         }
     }
 
+    /// Each lane by its piece's formula; one exponential for the lanes on
+    /// either exponential piece, none if no lane is on one.
+    #[inline(always)]
+    fn coefficient_lanes(&self, pieces: f64x4, re: f64x4, _spin_rate: f64x4) -> f64x4 {
+        let piece = |p: f64| pieces.simd_eq(f64x4::splat(p));
+        let (rising, recovering) = (piece(1.0), piece(3.0));
+        let mut cd = piece(2.0).select(f64x4::splat(DRAG_FLOOR), f64x4::splat(SUBCRITICAL_DRAG));
+        if (rising | recovering).any() {
+            let exponent = rising.select(Self::rising_exponent(re), Self::recovery_exponent(re));
+            let e = exp_lanes(exponent);
+            cd = rising.select(Self::rising(e), cd);
+            cd = recovering.select(Self::recovery(e), cd);
+        }
+        cd
+    }
+
     fn kinks(&self) -> &'static [f64] {
         &SAWICKI_KINKS
     }
@@ -233,6 +271,11 @@ impl DragCurve for ConstantDrag {
     #[inline(always)]
     fn coefficient_on(&self, _piece: usize, _reynolds: f64, _spin_rate: f64) -> f64 {
         SUBCRITICAL_DRAG
+    }
+
+    #[inline(always)]
+    fn coefficient_lanes(&self, _pieces: f64x4, _reynolds: f64x4, _spin_rate: f64x4) -> f64x4 {
+        f64x4::splat(SUBCRITICAL_DRAG)
     }
 }
 
@@ -252,6 +295,11 @@ impl NathanDrag {
 impl DragCurve for NathanDrag {
     #[inline(always)]
     fn coefficient_on(&self, _piece: usize, _reynolds: f64, spin_rate: f64) -> f64 {
+        Self::coefficient(spin_rate)
+    }
+
+    #[inline(always)]
+    fn coefficient_lanes(&self, _pieces: f64x4, _reynolds: f64x4, spin_rate: f64x4) -> f64x4 {
         Self::coefficient(spin_rate)
     }
 }

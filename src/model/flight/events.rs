@@ -6,14 +6,15 @@
 
 use super::{Dynamics, FlightSummary, Regime};
 use crate::numerics::ode::{Control, State, Stats, Step};
-use crate::numerics::roots::find_root_newton;
+use crate::numerics::roots::find_root_newton_from;
 
 /// Event times are located to this (s): far below anything that shows.
 const ROOT_TOLERANCE: f64 = 1e-13;
 
 /// The events seen so far, and the regime in force.
-pub(crate) struct Events<'a, const N: usize, D: Dynamics<N>> {
-    flight: &'a D,
+pub(crate) struct Events<const N: usize, D: Dynamics<N>> {
+    /// The flight (a copy: a few dozen numbers, and no borrow to keep).
+    flight: D,
     /// The kinks switched at: none when the flight does not stop at them.
     kinks: &'static [f64],
     /// The height the wind blows above, if the flight switches there.
@@ -41,10 +42,10 @@ struct Switch {
     regime: Regime,
 }
 
-impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
+impl<const N: usize, D: Dynamics<N>> Events<N, D> {
     /// The events of a flight from `start`, switching at the drag curve's
     /// kinks if `stop_at_kinks`.
-    pub fn new(flight: &'a D, start: &State<N>, stop_at_kinks: bool) -> Self {
+    pub fn new(flight: D, start: &State<N>, stop_at_kinks: bool) -> Self {
         let regime = flight.starting_regime(start, stop_at_kinks);
         Events {
             flight,
@@ -112,17 +113,17 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
             // Where |V_r|² = (kink/(2r_b/ν))²: the same root as Re = kink,
             // without a square root per iteration.
             let speed = kink / self.flight.reynolds_per_speed();
-            find_root_newton(
-                |t| {
-                    let (squared, rate) = self.flight.air_speed_squared(
-                        &step.at(t),
-                        &step.slope_at(t),
-                        regime.in_wind,
-                    );
-                    (squared - speed * speed, rate)
-                },
-                step.t0,
-                step.t1,
+            let dense = step.dense();
+            let excess = |state: &State<N>, slope: &State<N>| {
+                let (squared, rate) = self.flight.air_speed_squared(state, slope, regime.in_wind);
+                (squared - speed * speed, rate)
+            };
+            // At the ends, from the step's own states (the rates unused).
+            let ends = |y: &State<N>| excess(y, y).0;
+            find_root_newton_from(
+                |t| excess(&dense.at(t), &dense.slope_at(t)),
+                (step.t0, ends(&step.y0)),
+                (step.t1, ends(&step.y1)),
                 ROOT_TOLERANCE,
             )
         } else {
@@ -167,10 +168,14 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
     /// Where a component of the state crosses `level` inside the step.
     #[inline]
     fn zero_of(step: &Step<N>, component: usize, level: f64) -> f64 {
-        find_root_newton(
-            |t| (step.at(t)[component] - level, step.slope_at(t)[component]),
-            step.t0,
-            step.t1,
+        let dense = step.dense();
+        find_root_newton_from(
+            |t| {
+                let (value, slope) = dense.component_at(t, component);
+                (value - level, slope)
+            },
+            (step.t0, step.y0[component] - level),
+            (step.t1, step.y1[component] - level),
             ROOT_TOLERANCE,
         )
     }

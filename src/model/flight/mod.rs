@@ -10,6 +10,7 @@
 //! numbers bit for bit.
 
 mod events;
+pub mod lanes;
 mod planar;
 mod spatial;
 
@@ -79,7 +80,7 @@ pub(crate) fn spin_now<R: Real>((rate, surface_speed): (R, R), decay_rate: R, t:
 
 /// What the integration needs of a flight whose state has `N` components:
 /// positions then velocities, the height at [`Dynamics::HEIGHT`].
-pub trait Dynamics<const N: usize> {
+pub trait Dynamics<const N: usize>: Copy {
     const HEIGHT: usize;
     const VERTICAL_VELOCITY: usize;
 
@@ -291,7 +292,7 @@ impl<const N: usize, D: Dynamics<N>, S: Start<N>, W: FnMut(&Step<N>)> WithModels
             mut watch,
         } = self;
         let start = launch.state();
-        let mut events = Events::new(flight, &start, stop_at_kinks);
+        let mut events = Events::new(*flight, &start, stop_at_kinks);
         // The regime the right-hand side reads during a step, which the
         // observer changes between steps.
         let regime = Cell::new(events.regime());

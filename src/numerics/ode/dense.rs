@@ -72,6 +72,21 @@ impl<const N: usize> DenseStep<N> {
         (p + dp * s) * self.inverse_h
     }
 
+    /// Component `i` of the solution at `t` and its slope there: as
+    /// [`DenseStep::at`] and [`DenseStep::slope_at`], for one component
+    /// (what an event's root finding reads).
+    #[inline]
+    pub fn component_at(&self, t: f64, i: usize) -> (f64, f64) {
+        let s = (t - self.t0) * self.inverse_h;
+        let s1 = 1.0 - s;
+        let [diff, c3, c4, c5] = self.coefficients.map(|c| c[i]);
+        let q = c3 + (c4 + c5 * s1) * s;
+        let dq = c4 + c5 * (s1 - s);
+        let p = diff + q * s1;
+        let dp = dq * s1 - q;
+        (self.y0[i] + p * s, (p + dp * s) * self.inverse_h)
+    }
+
     /// The same step, ending at `t` (t0 < t ≤ t1) instead.
     pub fn truncated(&self, t: f64) -> DenseStep<N> {
         DenseStep {
