@@ -17,13 +17,72 @@ fn main() {
     let what = args.get(1).map_or("paper", String::as_str);
     let count: usize = args.get(2).and_then(|n| n.parse().ok()).unwrap_or(100_000);
     if what == "surface" {
+        // One thread: the cost per cell, start-up and output aside.
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
         let scene = Scene::default();
         let mut total = 0.0;
+        let start = std::time::Instant::now();
         for _ in 0..count {
-            let s = study::surface(&scene, Grid::figure7(64, 64), Purpose::Surface);
+            let s = pool.install(|| study::surface(&scene, Grid::figure7(64, 64), Purpose::Surface));
             total += s.landed_ranges().sum::<f64>();
         }
-        println!("{total}");
+        let per = start.elapsed().as_secs_f64() / count as f64;
+        println!(
+            "surface: 64x64 in {:.3} ms, {:.3} µs a cell ({total:.3})",
+            per * 1e3,
+            per * 1e6 / 4096.0
+        );
+        return;
+    }
+    if what == "cells" {
+        // The surface's flights (impacts done), alone and in lock-step.
+        use homerun::model::impact::Collision;
+        use homerun::model::launch::SceneFlight;
+        let mut scene = Scene::default();
+        if let Ok(drag) = std::env::var("DRAG") {
+            scene.drag = drag.parse().unwrap();
+        }
+        if let Ok(lift) = std::env::var("LIFT") {
+            scene.lift = lift.parse().unwrap();
+        }
+        let grid = Grid::figure7(64, 64);
+        let flights: Vec<SceneFlight> = (0..4096)
+            .map(|k| (grid.undercut_at(k % 64), grid.swing_angle_at(k / 64)))
+            .filter(|(e, _)| e.abs() < scene.reach())
+            .map(|(e, psi)| {
+                let s = scene.with_swing(e, psi);
+                SceneFlight::of_impact(&s, &Collision::new(&s))
+            })
+            .collect();
+        let mut options = Purpose::Surface.flight_options();
+        options.stop_at_kinks = std::env::var_os("NOKINKS").is_none();
+        let mut evaluations = 0u64;
+        let start = std::time::Instant::now();
+        for _ in 0..count {
+            evaluations = 0;
+            homerun::model::many::fly_many(flights.iter().copied(), &options, |_, f| {
+                evaluations += u64::from(f.stats.evaluations)
+            });
+        }
+        let many = start.elapsed().as_secs_f64() / count as f64;
+        let start = std::time::Instant::now();
+        let mut alone = 0u64;
+        for _ in 0..count.min(if std::env::var_os("ALONE").is_some() { count } else { 1 }) {
+            alone = flights.iter().map(|f| u64::from(f.fly(&options).stats.evaluations)).sum();
+        }
+        let single = start.elapsed().as_secs_f64()
+            / count.min(if std::env::var_os("ALONE").is_some() { count } else { 1 }) as f64;
+        let n = flights.len() as f64;
+        println!(
+            "cells: {} flights; lock-step {:.3} µs a flight, {:.1} evaluations, {:.2} ns an evaluation; alone {:.3} µs, {:.1} evaluations, {:.2} ns",
+            flights.len(),
+            many * 1e6 / n,
+            evaluations as f64 / n,
+            many * 1e9 / evaluations as f64,
+            single * 1e6 / n,
+            alone as f64 / n,
+            single * 1e9 / alone as f64,
+        );
         return;
     }
     let mut scene = Scene::default();

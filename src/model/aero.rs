@@ -18,9 +18,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use wide::f64x4;
-
-use crate::numerics::real::{Real, exp_lanes};
+use crate::numerics::real::{Lane, Real, exp_lanes};
 
 /// What a drag model gives the flight.
 pub trait DragCurve {
@@ -46,13 +44,13 @@ pub trait DragCurve {
 
     /// As [`DragCurve::coefficient_on`], for four flights at once, each on
     /// its own piece (`pieces`, the pieces' numbers as floats).
-    fn coefficient_lanes(&self, pieces: f64x4, reynolds: f64x4, spin_rate: f64x4) -> f64x4;
+    fn coefficient_lanes(&self, pieces: Lane, reynolds: Lane, spin_rate: Lane) -> Lane;
 
     /// As [`DragCurve::piece`], for four flights, as floats.
     #[inline(always)]
-    fn piece_lanes(&self, re: f64x4) -> f64x4 {
-        self.kinks().iter().fold(f64x4::ZERO, |count, &kink| {
-            count + re.simd_ge(f64x4::splat(kink)).select(f64x4::ONE, f64x4::ZERO)
+    fn piece_lanes(&self, re: Lane) -> Lane {
+        self.kinks().iter().fold(Lane::ZERO, |count, &kink| {
+            count + re.simd_ge(Lane::splat(kink)).select(Lane::ONE, Lane::ZERO)
         })
     }
 }
@@ -165,7 +163,7 @@ impl DragCurve for DragModel {
         }
     }
 
-    fn coefficient_lanes(&self, pieces: f64x4, reynolds: f64x4, spin_rate: f64x4) -> f64x4 {
+    fn coefficient_lanes(&self, pieces: Lane, reynolds: Lane, spin_rate: Lane) -> Lane {
         match self {
             DragModel::Sawicki2003 => Sawicki2003Drag.coefficient_lanes(pieces, reynolds, spin_rate),
             DragModel::Constant => ConstantDrag.coefficient_lanes(pieces, reynolds, spin_rate),
@@ -245,10 +243,10 @@ impl DragCurve for Sawicki2003Drag {
     /// Each lane by its piece's formula; one exponential for the lanes on
     /// either exponential piece, none if no lane is on one.
     #[inline(always)]
-    fn coefficient_lanes(&self, pieces: f64x4, re: f64x4, _spin_rate: f64x4) -> f64x4 {
-        let piece = |p: f64| pieces.simd_eq(f64x4::splat(p));
+    fn coefficient_lanes(&self, pieces: Lane, re: Lane, _spin_rate: Lane) -> Lane {
+        let piece = |p: f64| pieces.simd_eq(Lane::splat(p));
         let (rising, recovering) = (piece(1.0), piece(3.0));
-        let mut cd = piece(2.0).select(f64x4::splat(DRAG_FLOOR), f64x4::splat(SUBCRITICAL_DRAG));
+        let mut cd = piece(2.0).select(Lane::splat(DRAG_FLOOR), Lane::splat(SUBCRITICAL_DRAG));
         if (rising | recovering).any() {
             let exponent = rising.select(Self::rising_exponent(re), Self::recovery_exponent(re));
             let e = exp_lanes(exponent);
@@ -274,8 +272,8 @@ impl DragCurve for ConstantDrag {
     }
 
     #[inline(always)]
-    fn coefficient_lanes(&self, _pieces: f64x4, _reynolds: f64x4, _spin_rate: f64x4) -> f64x4 {
-        f64x4::splat(SUBCRITICAL_DRAG)
+    fn coefficient_lanes(&self, _pieces: Lane, _reynolds: Lane, _spin_rate: Lane) -> Lane {
+        Lane::splat(SUBCRITICAL_DRAG)
     }
 }
 
@@ -299,7 +297,7 @@ impl DragCurve for NathanDrag {
     }
 
     #[inline(always)]
-    fn coefficient_lanes(&self, _pieces: f64x4, _reynolds: f64x4, spin_rate: f64x4) -> f64x4 {
+    fn coefficient_lanes(&self, _pieces: Lane, _reynolds: Lane, spin_rate: Lane) -> Lane {
         Self::coefficient(spin_rate)
     }
 }

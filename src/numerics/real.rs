@@ -9,7 +9,14 @@
 
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
-use wide::f64x4;
+use wide::{f64x4, f64x8};
+
+/// The lanes of the flights in lock-step: eight flights a vector (on
+/// SSE2, four pairs; eight independent chains keep the cores' pipelines
+/// fuller than four).
+pub type Lane = f64x4;
+/// How many flights a [`Lane`] carries.
+pub const LANES: usize = 4;
 
 /// A floating-point number, or four of them in lock-step.
 pub trait Real:
@@ -105,7 +112,7 @@ pub fn exp_lanes<R: Real>(x: R) -> R {
     let x = x.max(R::splat(-700.0)).min(R::splat(700.0));
     let n = round(x * R::splat(std::f64::consts::LOG2_E));
     let r = (x - n * R::splat(LN2_HIGH)) - n * R::splat(LN2_LOW);
-    R::power_of_two(n) * polynomial(r, &INVERSE_FACTORIALS)
+    R::power_of_two(n) * estrin(r, &INVERSE_FACTORIALS)
 }
 
 /// 1/k! for k = 0 … 13.
@@ -118,6 +125,29 @@ const INVERSE_FACTORIALS: [f64; 14] = {
     }
     c
 };
+
+/// c₀ + c₁u + … by Estrin's scheme: pairs c₂ₖ + c₂ₖ₊₁u, then pairs of
+/// those with u², and so on: the same products as Horner's rule, in a
+/// chain about log₂ K long instead of K (the lanes' exponential waits on
+/// it at every evaluation).
+#[inline(always)]
+fn estrin<R: Real, const K: usize>(u: R, c: &[f64; K]) -> R {
+    let mut terms: [R; K] = std::array::from_fn(|i| R::splat(c[i]));
+    let (mut len, mut power) = (K, u);
+    while len > 1 {
+        let half = len.div_ceil(2);
+        for k in 0..half {
+            terms[k] = if 2 * k + 1 < len {
+                terms[2 * k] + terms[2 * k + 1] * power
+            } else {
+                terms[2 * k]
+            };
+        }
+        len = half;
+        power = power * power;
+    }
+    terms[0]
+}
 
 /// c₀ + c₁u + … by Horner's rule.
 #[inline(always)]
@@ -195,68 +225,76 @@ impl Real for f64 {
     }
 }
 
-impl Real for f64x4 {
-    type Mask = f64x4;
+/// [`Real`] for a vector of lanes (`$bits` its bits' type).
+macro_rules! lanes_real {
+    ($lane:ty, $bits:ty) => {
+        impl Real for $lane {
+            type Mask = $lane;
 
-    #[inline(always)]
-    fn splat(x: f64) -> Self {
-        f64x4::splat(x)
-    }
-    #[inline(always)]
-    fn sqrt(self) -> Self {
-        f64x4::sqrt(self)
-    }
-    #[inline(always)]
-    fn abs(self) -> Self {
-        f64x4::abs(self)
-    }
-    #[inline(always)]
-    fn max(self, other: Self) -> Self {
-        f64x4::fast_max(self, other)
-    }
-    #[inline(always)]
-    fn min(self, other: Self) -> Self {
-        f64x4::fast_min(self, other)
-    }
-    #[inline(always)]
-    fn exp(self) -> Self {
-        exp_lanes(self)
-    }
-    #[inline(always)]
-    fn lt(self, other: Self) -> Self {
-        self.simd_lt(other)
-    }
-    #[inline(always)]
-    fn le(self, other: Self) -> Self {
-        self.simd_le(other)
-    }
-    #[inline(always)]
-    fn eq(self, other: Self) -> Self {
-        self.simd_eq(other)
-    }
-    #[inline(always)]
-    fn select(mask: Self, if_true: Self, if_false: Self) -> Self {
-        mask.select(if_true, if_false)
-    }
-    #[inline(always)]
-    fn any(mask: Self) -> bool {
-        mask.any()
-    }
-    #[inline(always)]
-    fn exponent_and_significand(self) -> (Self, Self) {
-        let bits = self.to_bits();
-        let two_52 = f64x4::splat(TWO_52);
-        let biased = f64x4::from_bits((bits >> EXPONENT_SHIFT) | two_52.to_bits()) - two_52;
-        let significand = f64x4::from_bits(
-            (bits & wide::u64x4::splat(SIGNIFICAND_BITS)) | wide::u64x4::splat(ONE_BITS),
-        );
-        (biased - f64x4::splat(1023.0), significand)
-    }
-    #[inline(always)]
-    fn power_of_two(n: Self) -> Self {
-        f64x4::from_bits((n + f64x4::splat(TWO_52 + 1023.0)).to_bits() << EXPONENT_SHIFT)
-    }
+            #[inline(always)]
+            fn splat(x: f64) -> Self {
+                <$lane>::splat(x)
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                <$lane>::sqrt(self)
+            }
+            #[inline(always)]
+            fn abs(self) -> Self {
+                <$lane>::abs(self)
+            }
+            #[inline(always)]
+            fn max(self, other: Self) -> Self {
+                <$lane>::fast_max(self, other)
+            }
+            #[inline(always)]
+            fn min(self, other: Self) -> Self {
+                <$lane>::fast_min(self, other)
+            }
+            #[inline(always)]
+            fn exp(self) -> Self {
+                exp_lanes(self)
+            }
+            #[inline(always)]
+            fn lt(self, other: Self) -> Self {
+                self.simd_lt(other)
+            }
+            #[inline(always)]
+            fn le(self, other: Self) -> Self {
+                self.simd_le(other)
+            }
+            #[inline(always)]
+            fn eq(self, other: Self) -> Self {
+                self.simd_eq(other)
+            }
+            #[inline(always)]
+            fn select(mask: Self, if_true: Self, if_false: Self) -> Self {
+                mask.select(if_true, if_false)
+            }
+            #[inline(always)]
+            fn any(mask: Self) -> bool {
+                mask.any()
+            }
+            #[inline(always)]
+            fn exponent_and_significand(self) -> (Self, Self) {
+                let bits = self.to_bits();
+                let two_52 = <$lane>::splat(TWO_52);
+                let biased = <$lane>::from_bits((bits >> EXPONENT_SHIFT) | two_52.to_bits()) - two_52;
+                let significand = <$lane>::from_bits(
+                    (bits & <$bits>::splat(SIGNIFICAND_BITS)) | <$bits>::splat(ONE_BITS),
+                );
+                (biased - <$lane>::splat(1023.0), significand)
+            }
+            #[inline(always)]
+            fn power_of_two(n: Self) -> Self {
+                <$lane>::from_bits((n + <$lane>::splat(TWO_52 + 1023.0)).to_bits() << EXPONENT_SHIFT)
+            }
+        }
+    };
 }
+
+lanes_real!(f64x4, wide::u64x4);
+lanes_real!(f64x8, wide::u64x8);
 
 #[cfg(test)]
 mod tests {

@@ -1,11 +1,11 @@
 //! The flight's side of the lock-step integrator
 //! ([`crate::numerics::ode::lanes`]): four flights' forces at once (the
-//! same generic formulas as one flight's, on `f64x4`), and each lane's
+//! same generic formulas as one flight's, on `Lane`), and each lane's
 //! events in scalar code, as a single flight sees them.
 
-use wide::f64x4;
+use crate::numerics::real::Lane;
 
-use super::events::Events;
+use super::events::{Bounds, Events, StepEnds, end_next_by, eventful};
 use super::{Dynamics, Flight, Flight3d, FlightOptions, FlightSummary, Regime};
 use super::{PlanarConstants, SpatialConstants};
 use crate::model::aero::{DragCurve, LiftCurve, WithModels};
@@ -16,7 +16,7 @@ use crate::numerics::ode::{Control, Outcome, Settings, State, Stats, Step};
 pub trait LaneFlight<const N: usize>: Dynamics<N> {
     /// The constants of one flight (`f64`) …
     type Constants: Copy + Default;
-    /// … and of four, one per lane (`f64x4`).
+    /// … and of four, one per lane (`Lane`).
     type LaneConstants: Copy;
 
     fn constants_of(&self) -> Self::Constants;
@@ -28,16 +28,20 @@ pub trait LaneFlight<const N: usize>: Dynamics<N> {
     fn derivative_lanes(
         constants: &Self::LaneConstants,
         models: (&impl DragCurve, &impl LiftCurve),
-        regime: (Option<f64x4>, f64x4),
-        t: f64x4,
+        regime: (Option<Lane>, Lane),
+        t: Lane,
         y: &Lanes<N>,
     ) -> Lanes<N>;
+
+    /// The Reynolds number of four flights at `y`, in the wind where
+    /// `in_wind`.
+    fn reynolds_lanes(constants: &Self::LaneConstants, in_wind: Lane, y: &Lanes<N>) -> Lane;
 }
 
 /// Each lane's value of one constant.
 #[inline]
-fn lanes_of<C>(each: &[C; LANES], field: impl Fn(&C) -> f64) -> f64x4 {
-    f64x4::new(std::array::from_fn(|j| field(&each[j])))
+fn lanes_of<C>(each: &[C; LANES], field: impl Fn(&C) -> f64) -> Lane {
+    Lane::new(std::array::from_fn(|j| field(&each[j])))
 }
 
 impl Default for PlanarConstants<f64> {
@@ -48,7 +52,7 @@ impl Default for PlanarConstants<f64> {
 
 impl LaneFlight<4> for Flight {
     type Constants = PlanarConstants<f64>;
-    type LaneConstants = PlanarConstants<f64x4>;
+    type LaneConstants = PlanarConstants<Lane>;
 
     fn constants_of(&self) -> Self::Constants {
         self.constants()
@@ -72,16 +76,21 @@ impl LaneFlight<4> for Flight {
     fn derivative_lanes(
         c: &Self::LaneConstants,
         (drag, lift): (&impl DragCurve, &impl LiftCurve),
-        (pieces, _): (Option<f64x4>, f64x4),
-        t: f64x4,
+        (pieces, _): (Option<Lane>, Lane),
+        t: Lane,
         y: &Lanes<4>,
     ) -> Lanes<4> {
-        let coefficient = |re: f64x4, spin_rate: f64x4| {
+        let coefficient = |re: Lane, spin_rate: Lane| {
             drag.coefficient_lanes(pieces.unwrap_or_else(|| drag.piece_lanes(re)), re, spin_rate)
         };
         let [_, _, vx, vy] = y.0;
         let (ax, ay) = c.acceleration(coefficient, lift, t, (vx, vy));
         Lanes([vx, vy, ax, ay])
+    }
+
+    #[inline(always)]
+    fn reynolds_lanes(c: &Self::LaneConstants, _: Lane, y: &Lanes<4>) -> Lane {
+        c.air((y.0[2], y.0[3])).2
     }
 }
 
@@ -94,7 +103,7 @@ impl Default for SpatialConstants<f64> {
 
 impl LaneFlight<6> for Flight3d {
     type Constants = SpatialConstants<f64>;
-    type LaneConstants = SpatialConstants<f64x4>;
+    type LaneConstants = SpatialConstants<Lane>;
 
     fn constants_of(&self) -> Self::Constants {
         self.constants()
@@ -118,16 +127,21 @@ impl LaneFlight<6> for Flight3d {
     fn derivative_lanes(
         c: &Self::LaneConstants,
         (drag, lift): (&impl DragCurve, &impl LiftCurve),
-        (pieces, in_wind): (Option<f64x4>, f64x4),
-        t: f64x4,
+        (pieces, in_wind): (Option<Lane>, Lane),
+        t: Lane,
         y: &Lanes<6>,
     ) -> Lanes<6> {
-        let coefficient = |re: f64x4, spin_rate: f64x4| {
+        let coefficient = |re: Lane, spin_rate: Lane| {
             drag.coefficient_lanes(pieces.unwrap_or_else(|| drag.piece_lanes(re)), re, spin_rate)
         };
         let [_, _, _, vx, vy, vz] = y.0;
         let [ax, ay, az] = c.acceleration(coefficient, lift, (t, in_wind), [vx, vy, vz]);
         Lanes([vx, vy, vz, ax, ay, az])
+    }
+
+    #[inline(always)]
+    fn reynolds_lanes(c: &Self::LaneConstants, in_wind: Lane, y: &Lanes<6>) -> Lane {
+        c.air(in_wind, [y.0[3], y.0[4], y.0[5]]).2
     }
 }
 
@@ -157,9 +171,10 @@ struct FlightLanes<'r, const N: usize, D: LaneFlight<N>, Dr, L, J> {
     each: [D::Constants; LANES],
     constants: D::LaneConstants,
     /// Each lane's regime: its drag piece (a float) and whether it is in
-    /// the wind (a lane mask).
-    pieces: f64x4,
-    in_wind: f64x4,
+    /// the wind (a lane mask), and what the regime bounds.
+    pieces: Lane,
+    in_wind: Lane,
+    bounds: Bounds<Lane>,
     events: [Option<Events<N, D>>; LANES],
     index: [usize; LANES],
     jobs: J,
@@ -173,13 +188,18 @@ fn mask(in_wind: bool) -> f64 {
 
 impl<const N: usize, D: LaneFlight<N>, Dr, L, J> FlightLanes<'_, N, D, Dr, L, J> {
     /// Lane `j`'s regime from its events.
-    fn set_regime(&mut self, j: usize, regime: Regime) {
-        let mut pieces = self.pieces.to_array();
-        let mut in_wind = self.in_wind.to_array();
-        pieces[j] = regime.piece.unwrap_or_default() as f64;
-        in_wind[j] = mask(regime.in_wind);
-        self.pieces = f64x4::new(pieces);
-        self.in_wind = f64x4::new(in_wind);
+    fn set_regime(&mut self, j: usize, (regime, bounds): (Regime, Bounds<f64>)) {
+        let set = |v: &mut Lane, x: f64| {
+            let mut values = v.to_array();
+            values[j] = x;
+            *v = Lane::new(values);
+        };
+        set(&mut self.pieces, regime.piece.unwrap_or_default() as f64);
+        set(&mut self.in_wind, mask(regime.in_wind));
+        set(&mut self.bounds.kink_below, bounds.kink_below);
+        set(&mut self.bounds.kink_above, bounds.kink_above);
+        set(&mut self.bounds.wind_height, bounds.wind_height);
+        self.bounds.in_wind = self.in_wind;
     }
 }
 
@@ -191,7 +211,7 @@ where
     J: Iterator<Item = LaneJob<N, D>>,
 {
     #[inline(always)]
-    fn derivative(&self, t: f64x4, y: &Lanes<N>) -> Lanes<N> {
+    fn derivative(&self, t: Lane, y: &Lanes<N>) -> Lanes<N> {
         let pieces = self.switching.then_some(self.pieces);
         D::derivative_lanes(
             &self.constants,
@@ -200,6 +220,17 @@ where
             t,
             y,
         )
+    }
+
+    fn derivative_lane(&self, lane: usize, t: f64, y: &State<N>) -> State<N> {
+        match &self.events[lane] {
+            Some(events) => {
+                let Regime { piece, in_wind } = events.regime();
+                let models = (&self.models.0, &self.models.1);
+                events.flight().derivative_with(models, t, y, piece, in_wind)
+            }
+            None => State::<N>::zeros(),
+        }
     }
 
     fn observe(&mut self, lane: usize, step: &Step<N>) -> Control {
@@ -211,13 +242,40 @@ where
             Some(watch) => events.observe(step, &mut |s: &Step<N>| watch(index, s)),
             None => events.observe(step, &mut |_: &Step<N>| {}),
         };
-        let regime = events.regime();
+        let regime = (events.regime(), events.bounds());
         self.set_regime(lane, regime);
         control
     }
 
-    fn finish(&mut self, lane: usize, outcome: Outcome, stats: Stats) {
-        if let Some(events) = self.events[lane].take() {
+    #[inline(always)]
+    fn quiet(&mut self, accepted: Lane, (t1, h): (Lane, Lane), (y0, y1): (&Lanes<N>, &Lanes<N>)) -> (Lane, Lane) {
+        if self.reports.watch.is_some() {
+            // The watch sees every step.
+            return (Lane::ZERO, Lane::splat(f64::INFINITY));
+        }
+        let reynolds = if self.switching {
+            (
+                D::reynolds_lanes(&self.constants, self.in_wind, y0),
+                D::reynolds_lanes(&self.constants, self.in_wind, y1),
+            )
+        } else {
+            (Lane::ZERO, Lane::ZERO)
+        };
+        let ends = StepEnds {
+            t1,
+            h,
+            heights: (y0.0[D::HEIGHT], y1.0[D::HEIGHT]),
+            vertical_velocities: (y0.0[D::VERTICAL_VELOCITY], y1.0[D::VERTICAL_VELOCITY]),
+            reynolds,
+        };
+        let quiet = accepted & !eventful(&ends, &self.bounds);
+        (quiet, end_next_by(&ends, &self.bounds))
+    }
+
+    fn finish(&mut self, lane: usize, outcome: Outcome, stats: Stats, end: (f64, State<N>)) {
+        if let Some(mut events) = self.events[lane].take() {
+            // Quiet steps were not shown to it: the flight's last point.
+            events.last = end;
             (self.reports.done)(
                 self.index[lane],
                 events.summary(outcome == Outcome::Stopped, stats),
@@ -228,7 +286,7 @@ where
     fn refill(&mut self, lane: usize) -> Option<LaneStart<N>> {
         let job = self.jobs.next()?;
         let events = Events::new(job.flight, &job.start, self.stop_at_kinks);
-        self.set_regime(lane, events.regime());
+        self.set_regime(lane, (events.regime(), events.bounds()));
         self.events[lane] = Some(events);
         self.index[lane] = job.index;
         self.each[lane] = job.flight.constants_of();
@@ -286,8 +344,14 @@ where
             switching: stop_at_kinks && !drag.kinks().is_empty(),
             each: [D::Constants::default(); LANES],
             constants: D::gather(&[D::Constants::default(); LANES]),
-            pieces: f64x4::ZERO,
-            in_wind: f64x4::ZERO,
+            pieces: Lane::ZERO,
+            in_wind: Lane::ZERO,
+            bounds: Bounds {
+                kink_below: Lane::ZERO,
+                kink_above: Lane::ZERO,
+                wind_height: Lane::ZERO,
+                in_wind: Lane::ZERO,
+            },
             events: [const { None }; LANES],
             index: [0; LANES],
             jobs: self.jobs,

@@ -51,6 +51,15 @@ pub struct PlanarConstants<R> {
 }
 
 impl<R: Real> PlanarConstants<R> {
+    /// V_r = V_w − V_b (Eq. 25), the wind being horizontal; |V_r|; and
+    /// Re = 2|V_r|r_b/ν (Eq. 27), at velocity (v_x, v_y).
+    #[inline(always)]
+    pub fn air(&self, (vx, vy): (R, R)) -> ((R, R), R, R) {
+        let (rel_x, rel_y) = (self.wind - vx, -vy);
+        let air_speed = (rel_x * rel_x + rel_y * rel_y).sqrt();
+        ((rel_x, rel_y), air_speed, air_speed * self.reynolds_per_speed)
+    }
+
     /// The ball's acceleration (a_x, a_y) at time `t` and velocity
     /// (v_x, v_y): gravity, drag along V_r (Eq. 25–27) and lift
     /// perpendicular to it (Eq. 28–29), C_D being `drag(Re, |ω|)` and C_L
@@ -68,11 +77,7 @@ impl<R: Real> PlanarConstants<R> {
             self.spin_decay_rate,
             t,
         );
-        // V_r = V_w − V_b (Eq. 25), the wind being horizontal.
-        let (rel_x, rel_y) = (self.wind - vx, -vy);
-        let air_speed = (rel_x * rel_x + rel_y * rel_y).sqrt();
-        // Re = 2|V_r|r_b/ν (Eq. 27).
-        let re = air_speed * self.reynolds_per_speed;
+        let ((rel_x, rel_y), air_speed, re) = self.air((vx, vy));
         // ρA/(2M_b)·|V_r| (with `model.drag_scale` on C_D), ready while C_D
         // is computed, so that C_D waits on one product (see `scaled`).
         let per_coefficient = scaled(air_speed * self.force_per_mass, self.drag_scale);

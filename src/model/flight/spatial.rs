@@ -79,6 +79,17 @@ pub struct SpatialConstants<R> {
 }
 
 impl<R: Real> SpatialConstants<R> {
+    /// V_r = V_w − V_b (Eq. 25), the wind blowing only `in_wind`; |V_r|;
+    /// and Re = 2|V_r|r_b/ν (Eq. 27).
+    #[inline(always)]
+    pub fn air(&self, in_wind: R::Mask, [vx, vy, vz]: [R; 3]) -> ([R; 3], R, R) {
+        let zero = R::splat(0.0);
+        let [wx, wy, wz] = self.wind.map(|w| R::select(in_wind, w, zero));
+        let rel = [wx - vx, wy - vy, wz - vz];
+        let air_speed = (rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2]).sqrt();
+        (rel, air_speed, air_speed * self.reynolds_per_speed)
+    }
+
     /// The ball's acceleration at time `t` and `velocity`, in the wind or
     /// not (`in_wind`): see [`Flight3d::acceleration_at`]; C_D is
     /// `drag(Re, |ω|)`.
@@ -95,11 +106,7 @@ impl<R: Real> SpatialConstants<R> {
             self.spin_decay_rate,
             t,
         );
-        let zero = R::splat(0.0);
-        let [wx, wy, wz] = self.wind.map(|w| R::select(in_wind, w, zero));
-        let rel = [wx - vx, wy - vy, wz - vz];
-        let air_speed = (rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2]).sqrt();
-        let re = air_speed * self.reynolds_per_speed;
+        let (rel, air_speed, re) = self.air(in_wind, [vx, vy, vz]);
         // As in the plane: ρA/(2M_b)·|V_r| ready while C_D is computed.
         let per_coefficient = scaled(air_speed * self.force_per_mass, self.drag_scale);
         let along = drag(re, spin_rate) * per_coefficient;

@@ -1,6 +1,6 @@
-//! Four independent problems integrated in lock-step: one state per lane
-//! of `wide::f64x4` vectors (struct of arrays), each lane with its own time,
-//! step size and controller, so that the stages of four steps run as one
+//! Independent problems integrated in lock-step ([`LANES`] at a time): one state per lane
+//! of `wide` vectors ([`Lane`]) (struct of arrays), each lane with its own time,
+//! step size and controller, so that the stages of their steps run as one
 //! chain of vector operations where a single problem's steps would wait on
 //! each other. A lane whose step is rejected retries while the others go
 //! on; a lane whose problem ends takes the next one ([`LaneSystem::refill`]),
@@ -13,7 +13,6 @@
 
 use std::ops::{Add, Mul, Sub};
 
-use wide::f64x4;
 
 use super::controller::{
     LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth,
@@ -21,16 +20,15 @@ use super::controller::{
 use super::stages::{Stages, Vector, dense_c5, error_squared, inverse_scales, stages};
 use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, too_small};
 
-/// How many problems go in lock-step.
-pub const LANES: usize = 4;
+pub use crate::numerics::real::{LANES, Lane};
 
 /// The states (or slopes) of four problems: component i of lane j is
 /// `self.0[i]`'s lane j.
 #[derive(Clone, Copy, Debug)]
-pub struct Lanes<const N: usize>(pub [f64x4; N]);
+pub struct Lanes<const N: usize>(pub [Lane; N]);
 
 impl<const N: usize> Lanes<N> {
-    pub const ZERO: Self = Lanes([f64x4::ZERO; N]);
+    pub const ZERO: Self = Lanes([Lane::ZERO; N]);
 
     /// Lane `j`'s state.
     #[inline(always)]
@@ -44,13 +42,13 @@ impl<const N: usize> Lanes<N> {
         for (i, component) in self.0.iter_mut().enumerate() {
             let mut values = component.to_array();
             values[j] = state[i];
-            *component = f64x4::new(values);
+            *component = Lane::new(values);
         }
     }
 
     /// `if_true`'s lanes where `mask` holds, `if_false`'s elsewhere.
     #[inline(always)]
-    pub fn select(mask: f64x4, if_true: &Self, if_false: &Self) -> Self {
+    pub fn select(mask: Lane, if_true: &Self, if_false: &Self) -> Self {
         Lanes(std::array::from_fn(|i| {
             mask.select(if_true.0[i], if_false.0[i])
         }))
@@ -73,18 +71,18 @@ impl<const N: usize> Sub for Lanes<N> {
     }
 }
 
-impl<const N: usize> Mul<f64x4> for Lanes<N> {
+impl<const N: usize> Mul<Lane> for Lanes<N> {
     type Output = Self;
     #[inline(always)]
-    fn mul(self, factor: f64x4) -> Self {
+    fn mul(self, factor: Lane) -> Self {
         Lanes(self.0.map(|c| c * factor))
     }
 }
 
-impl<const N: usize> Vector<f64x4> for Lanes<N> {
+impl<const N: usize> Vector<Lane> for Lanes<N> {
     const DIM: usize = N;
     #[inline(always)]
-    fn component(&self, i: usize) -> f64x4 {
+    fn component(&self, i: usize) -> Lane {
         self.0[i]
     }
 }
@@ -100,12 +98,28 @@ pub struct LaneStart<const N: usize> {
 /// What the lock-step integrator needs of the problems it carries.
 pub trait LaneSystem<const N: usize> {
     /// y' for every lane at once, each lane in its own problem.
-    fn derivative(&self, t: f64x4, y: &Lanes<N>) -> Lanes<N>;
+    fn derivative(&self, t: Lane, y: &Lanes<N>) -> Lanes<N>;
+    /// y' of lane `lane`'s problem alone (a restart's, a first step's).
+    fn derivative_lane(&self, lane: usize, t: f64, y: &State<N>) -> State<N>;
     /// Sees lane `lane`'s accepted step, as the single integrator's
     /// observer does (the right-hand side it reads may change here).
     fn observe(&mut self, lane: usize, step: &Step<N>) -> Control;
-    /// Lane `lane`'s problem has ended.
-    fn finish(&mut self, lane: usize, outcome: Outcome, stats: Stats);
+    /// Of the lanes whose steps were accepted (`accepted`), those whose
+    /// steps need no observer one by one (nothing happens inside them),
+    /// and for those the time by which their next steps should end (+∞
+    /// for no limit): as [`Control::EndNextBy`] or [`Control::Continue`]
+    /// would say, for all lanes at once. By default, none.
+    fn quiet(
+        &mut self,
+        accepted: Lane,
+        (t1, h): (Lane, Lane),
+        (y0, y1): (&Lanes<N>, &Lanes<N>),
+    ) -> (Lane, Lane) {
+        let _ = (accepted, t1, h, y0, y1);
+        (Lane::ZERO, Lane::splat(f64::INFINITY))
+    }
+    /// Lane `lane`'s problem has ended, at (t, y) = `end`.
+    fn finish(&mut self, lane: usize, outcome: Outcome, stats: Stats, end: (f64, State<N>));
     /// The next problem for lane `lane` (its right-hand side set up), or
     /// `None` when there is none left.
     fn refill(&mut self, lane: usize) -> Option<LaneStart<N>>;
@@ -113,7 +127,7 @@ pub trait LaneSystem<const N: usize> {
 
 /// One lane's bookkeeping.
 #[derive(Clone, Copy, Debug, Default)]
-struct Lane {
+struct LaneState {
     active: bool,
     stats: Stats,
     last_rejected: bool,
@@ -122,12 +136,12 @@ struct Lane {
 
 /// The lanes' times, states, slopes, step sizes and controllers.
 struct Carried<const N: usize> {
-    t: f64x4,
+    t: Lane,
     y: Lanes<N>,
     k1: Lanes<N>,
-    h: f64x4,
-    previous_log2_error: f64x4,
-    lanes: [Lane; LANES],
+    h: Lane,
+    previous_log2_error: Lane,
+    lanes: [LaneState; LANES],
     /// Lanes whose slope k1 is to be evaluated (a new problem, or a
     /// restart), and among them those that need a first step.
     fresh: [bool; LANES],
@@ -138,24 +152,24 @@ struct Carried<const N: usize> {
 
 /// Sets one lane of a vector.
 #[inline(always)]
-fn set(v: &mut f64x4, j: usize, x: f64) {
+fn set(v: &mut Lane, j: usize, x: f64) {
     let mut values = v.to_array();
     values[j] = x;
-    *v = f64x4::new(values);
+    *v = Lane::new(values);
 }
 
 impl<const N: usize> Carried<N> {
     /// Takes lane `j`'s next problem, or idles it.
     fn refill<S: LaneSystem<N>>(&mut self, system: &mut S, j: usize) {
-        self.lanes[j] = Lane::default();
+        self.lanes[j] = LaneState::default();
         self.fresh[j] = false;
         let Some(start) = system.refill(j) else {
             return;
         };
-        self.lanes[j] = Lane {
+        self.lanes[j] = LaneState {
             active: true,
             t_end: start.t_end,
-            ..Lane::default()
+            ..LaneState::default()
         };
         set(&mut self.t, j, start.t0);
         self.y.set_lane(j, &start.y0);
@@ -169,40 +183,36 @@ impl<const N: usize> Carried<N> {
 
     /// Ends lane `j`'s problem and takes the next.
     fn finish<S: LaneSystem<N>>(&mut self, system: &mut S, j: usize, outcome: Outcome) {
-        system.finish(j, outcome, self.lanes[j].stats);
+        let end = (self.t.as_array()[j], self.y.lane(j));
+        system.finish(j, outcome, self.lanes[j].stats, end);
         self.refill(system, j);
     }
 
     /// Evaluates k1 for the fresh lanes (one evaluation for all), and the
     /// first step of those that have none (Hairer's guess, one more).
     fn start_fresh<S: LaneSystem<N>>(&mut self, system: &S, settings: &Settings) {
-        if !self.fresh.contains(&true) {
+        let count = self.fresh.iter().filter(|&&fresh| fresh).count();
+        if count == 0 {
             return;
         }
-        let k = system.derivative(self.t, &self.y);
+        // One lane (a restart, mostly) by itself; several at once.
+        let all = (count > 1).then(|| system.derivative(self.t, &self.y));
         for j in 0..LANES {
             if self.fresh[j] {
-                self.k1.set_lane(j, &k.lane(j));
+                let k = match &all {
+                    Some(k) => k.lane(j),
+                    None => system.derivative_lane(j, self.t.as_array()[j], &self.y.lane(j)),
+                };
+                self.k1.set_lane(j, &k);
                 self.lanes[j].stats.evaluations += 1;
             }
         }
         self.fresh = [false; LANES];
-        if !self.needs_first_step.contains(&true) {
-            return;
-        }
-        // One evaluation for every lane that needs a guess (lane by lane,
-        // the scalar guess, from the lanes' slopes).
-        let lane_f = |j: usize, probe: &State<N>, at: f64| {
-            let mut y = self.y;
-            y.set_lane(j, probe);
-            let mut t = self.t;
-            set(&mut t, j, at);
-            system.derivative(t, &y).lane(j)
-        };
+        // Hairer's guess for the lanes that have no neighbour's first step.
         for j in 0..LANES {
             if self.needs_first_step[j] {
                 let (t0, y0, k1) = (self.t.as_array()[j], self.y.lane(j), self.k1.lane(j));
-                let mut f = |t: f64, y: &State<N>| lane_f(j, y, t);
+                let mut f = |t: f64, y: &State<N>| system.derivative_lane(j, t, y);
                 let h = initial_step(&mut f, t0, &y0, &k1, settings, &mut self.lanes[j].stats);
                 set(&mut self.h, j, h);
                 self.needs_first_step[j] = false;
@@ -216,14 +226,14 @@ impl<const N: usize> Carried<N> {
 /// `initial_step`, if given, for the first four). Never allocates.
 pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, settings: &Settings) {
     let tol = settings.tolerance;
-    let (relative, absolute) = (f64x4::splat(tol.relative), f64x4::splat(tol.absolute));
+    let (relative, absolute) = (Lane::splat(tol.relative), Lane::splat(tol.absolute));
     let mut c = Carried {
-        t: f64x4::ZERO,
+        t: Lane::ZERO,
         y: Lanes::ZERO,
         k1: Lanes::ZERO,
-        h: f64x4::ZERO,
-        previous_log2_error: f64x4::splat(LOG2_ERROR_FLOOR),
-        lanes: [Lane::default(); LANES],
+        h: Lane::ZERO,
+        previous_log2_error: Lane::splat(LOG2_ERROR_FLOOR),
+        lanes: [LaneState::default(); LANES],
         fresh: [false; LANES],
         needs_first_step: [false; LANES],
         neighbour_step: settings.initial_step.filter(|&h| h > 0.0),
@@ -263,31 +273,35 @@ pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, setting
         if !c.lanes.iter().any(|lane| lane.active) {
             return;
         }
-        let h = f64x4::new(h);
+        let h = Lane::new(h);
         c.h = h;
         let (t0, y0, k1) = (c.t, c.y, c.k1);
         let s = stages(&mut |t, y: &Lanes<N>| system.derivative(t, y), t0, &y0, &k1, h);
-        let inverse = inverse_scales::<f64x4, _, N>(&y0, &s.y1, relative, absolute);
+        let inverse = inverse_scales::<Lane, _, N>(&y0, &s.y1, relative, absolute);
         let error_squared = error_squared(&k1, &s, h, &inverse);
         let log2 = log2_error(error_squared);
-        let accepted = error_squared.simd_le(f64x4::ONE);
+        let accepted = error_squared.simd_le(Lane::ONE);
         let grown = h * accepted_growth(log2, c.previous_log2_error);
-        let h_accepted = f64x4::from_bits(c.last_rejected_bits()).select(grown.min(h), grown);
-        let h_next = accepted.select(h_accepted, h * rejected_growth(log2));
+        let h_accepted = Lane::from_bits(c.last_rejected_bits()).select(grown.min(h), grown);
+        let mut h_next = accepted.select(h_accepted, h * rejected_growth(log2));
+        let t1 = t0 + h;
+        let (quiet, end_by) = system.quiet(accepted, (t1, h), (&y0, &s.y1));
+        let quiet = quiet & accepted;
+        let limited = quiet & t1.simd_lt(end_by);
+        let h_first = h_next.to_array();
+        h_next = limited.select(h_next.min(end_by - t1), h_next);
         c.previous_log2_error = accepted.select(
-            log2.max(f64x4::splat(LOG2_ERROR_FLOOR)),
+            log2.max(Lane::splat(LOG2_ERROR_FLOOR)),
             c.previous_log2_error,
         );
         // Accepted lanes move to the step's end, unless their observer
         // says otherwise below.
-        let t1 = t0 + h;
         c.t = accepted.select(t1, t0);
         c.y = Lanes::select(accepted, &s.y1, &y0);
         c.k1 = Lanes::select(accepted, &s.k[5], &k1);
         c.h = h_next;
-        let accepted = accepted.to_bitmask();
+        let (accepted, quiet) = (accepted.to_bitmask(), quiet.to_bitmask());
         let (h_all, t1_all) = (h.to_array(), t1.to_array());
-        let h_next_all = h_next.to_array();
         for j in 0..LANES {
             if !c.lanes[j].active {
                 continue;
@@ -300,11 +314,14 @@ pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, setting
                 continue;
             }
             if lane.stats.accepted == 0 {
-                lane.stats.first_step = h_next_all[j];
-                c.neighbour_step = Some(h_next_all[j]);
+                lane.stats.first_step = h_first[j];
+                c.neighbour_step = Some(h_first[j]);
             }
             lane.stats.accepted += 1;
             lane.last_rejected = false;
+            if quiet & (1 << j) != 0 {
+                continue;
+            }
             let (t0j, hj) = (t0.as_array()[j], h_all[j]);
             let y0j = y0.lane(j);
             let y1j = s.y1.lane(j);
@@ -326,7 +343,7 @@ pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, setting
                     }
                 }
                 Control::EndNextBy(t_end_next) if t_end_next > t1_all[j] => {
-                    set(&mut c.h, j, h_next_all[j].min(t_end_next - t1_all[j]));
+                    set(&mut c.h, j, h_first[j].min(t_end_next - t1_all[j]));
                 }
                 _ => {}
             }
