@@ -72,6 +72,21 @@ fn main() {
         }
         let single = start.elapsed().as_secs_f64()
             / count.min(if std::env::var_os("ALONE").is_some() { count } else { 1 }) as f64;
+        if std::env::var_os("ERRORS").is_some() {
+            let reference = Purpose::Reference.flight_options();
+            let truth: Vec<f64> = flights.iter().map(|f| f.fly(&reference).range).collect();
+            let alone: Vec<f64> = flights.iter().map(|f| f.fly(&options).range).collect();
+            let mut many = vec![0.0; flights.len()];
+            homerun::model::many::fly_many(flights.iter().copied(), &options, |i, f| many[i] = f.range);
+            let stats = |v: &[f64]| {
+                let e: Vec<f64> = v.iter().zip(&truth).map(|(a, b)| (a - b).abs()).collect();
+                let rms = (e.iter().map(|x| x * x).sum::<f64>() / e.len() as f64).sqrt();
+                let mut sorted = e.clone();
+                sorted.sort_by(f64::total_cmp);
+                (rms, sorted[sorted.len() / 2], sorted[sorted.len() * 99 / 100], sorted[sorted.len() - 1])
+            };
+            println!("errors (rms, median, 99th, max): alone {:?} many {:?}", stats(&alone), stats(&many));
+        }
         let n = flights.len() as f64;
         println!(
             "cells: {} flights; lock-step {:.3} µs a flight, {:.1} evaluations, {:.2} ns an evaluation; alone {:.3} µs, {:.1} evaluations, {:.2} ns",

@@ -528,7 +528,7 @@ pub struct SlicePoint {
 }
 
 /// Launch and range at each undercut in `undercuts`, the swing angle held at
-/// `swing_angle` (Fig. 13), in parallel. Undercuts the bat cannot reach
+/// `swing_angle` (Fig. 13), flown in lock-step. Undercuts the bat cannot reach
 /// (|E| ≥ r_b + r_B) are left out.
 pub fn slice(
     scene: &Scene,
@@ -536,20 +536,45 @@ pub fn slice(
     undercuts: &[f64],
     options: impl Into<FlightOptions>,
 ) -> Vec<SlicePoint> {
-    let options = options.into();
-    undercuts
-        .par_iter()
+    let reachable: Vec<(f64, Collision, SceneFlight)> = undercuts
+        .iter()
         .filter(|e| e.abs() < scene.reach())
         .map(|&undercut| {
-            let swing = model::simulate(&scene.with_swing(undercut, swing_angle), options);
-            SlicePoint {
-                undercut,
-                launch_speed: swing.impact.launch_speed(),
-                launch_spin: swing.impact.launch_spin(),
-                launch_angle: swing.impact.launch_angle(),
-                range: swing.flight.range,
-                landed: swing.flight.landed,
-            }
+            let swing = scene.with_swing(undercut, swing_angle);
+            let impact = Collision::new(&swing);
+            (undercut, impact, SceneFlight::of_impact(&swing, &impact))
+        })
+        .collect();
+    let flights: Vec<SceneFlight> = reachable.iter().map(|(_, _, flight)| *flight).collect();
+    reachable
+        .iter()
+        .zip(fly_all(&flights, &options.into()))
+        .map(|((undercut, impact, _), flight)| SlicePoint {
+            undercut: *undercut,
+            launch_speed: impact.launch_speed(),
+            launch_spin: impact.launch_spin(),
+            launch_angle: impact.launch_angle(),
+            range: flight.range,
+            landed: flight.landed,
+        })
+        .collect()
+}
+
+/// Flies `flights` in lock-step, in parallel chunks (one per core, or
+/// [`CHUNK`] flights if more), giving their summaries in their order.
+pub fn fly_all(flights: &[SceneFlight], options: &FlightOptions) -> Vec<FlightSummary> {
+    let size = flights
+        .len()
+        .div_ceil(rayon::current_num_threads())
+        .clamp(1, CHUNK);
+    flights
+        .par_chunks(size)
+        .flat_map_iter(|chunk| {
+            let mut summaries = vec![None; chunk.len()];
+            fly_many(chunk.iter().copied(), options, |index, summary| {
+                summaries[index] = Some(summary);
+            });
+            summaries.into_iter().flatten()
         })
         .collect()
 }
