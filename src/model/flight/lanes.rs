@@ -189,11 +189,7 @@ fn mask(in_wind: bool) -> f64 {
 impl<const N: usize, D: LaneFlight<N>, Dr, L, J> FlightLanes<'_, N, D, Dr, L, J> {
     /// Lane `j`'s regime from its events.
     fn set_regime(&mut self, j: usize, (regime, bounds): (Regime, Bounds<f64>)) {
-        let set = |v: &mut Lane, x: f64| {
-            let mut values = v.to_array();
-            values[j] = x;
-            *v = Lane::new(values);
-        };
+        let set = |v: &mut Lane, x: f64| v.as_mut_array()[j] = x;
         set(&mut self.pieces, regime.piece.unwrap_or_default() as f64);
         set(&mut self.in_wind, mask(regime.in_wind));
         set(&mut self.bounds.kink_below, bounds.kink_below);

@@ -40,9 +40,7 @@ impl<const N: usize> Lanes<N> {
     #[inline(always)]
     pub fn set_lane(&mut self, j: usize, state: &State<N>) {
         for (i, component) in self.0.iter_mut().enumerate() {
-            let mut values = component.to_array();
-            values[j] = state[i];
-            *component = Lane::new(values);
+            component.as_mut_array()[j] = state[i];
         }
     }
 
@@ -153,9 +151,7 @@ struct Carried<const N: usize> {
 /// Sets one lane of a vector.
 #[inline(always)]
 fn set(v: &mut Lane, j: usize, x: f64) {
-    let mut values = v.to_array();
-    values[j] = x;
-    *v = Lane::new(values);
+    v.as_mut_array()[j] = x;
 }
 
 impl<const N: usize> Carried<N> {
