@@ -18,12 +18,16 @@ fn main() {
     let count: usize = args.get(2).and_then(|n| n.parse().ok()).unwrap_or(100_000);
     if what == "surface" {
         // One thread: the cost per cell, start-up and output aside.
-        let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
         let scene = Scene::default();
         let mut total = 0.0;
         let start = std::time::Instant::now();
         for _ in 0..count {
-            let s = pool.install(|| study::surface(&scene, Grid::figure7(64, 64), Purpose::Surface));
+            let s =
+                pool.install(|| study::surface(&scene, Grid::figure7(64, 64), Purpose::Surface));
             total += s.landed_ranges().sum::<f64>();
         }
         let per = start.elapsed().as_secs_f64() / count as f64;
@@ -67,25 +71,47 @@ fn main() {
         let many = start.elapsed().as_secs_f64() / count as f64;
         let start = std::time::Instant::now();
         let mut alone = 0u64;
-        for _ in 0..count.min(if std::env::var_os("ALONE").is_some() { count } else { 1 }) {
-            alone = flights.iter().map(|f| u64::from(f.fly(&options).stats.evaluations)).sum();
+        for _ in 0..count.min(if std::env::var_os("ALONE").is_some() {
+            count
+        } else {
+            1
+        }) {
+            alone = flights
+                .iter()
+                .map(|f| u64::from(f.fly(&options).stats.evaluations))
+                .sum();
         }
         let single = start.elapsed().as_secs_f64()
-            / count.min(if std::env::var_os("ALONE").is_some() { count } else { 1 }) as f64;
+            / count.min(if std::env::var_os("ALONE").is_some() {
+                count
+            } else {
+                1
+            }) as f64;
         if std::env::var_os("ERRORS").is_some() {
             let reference = Purpose::Reference.flight_options();
             let truth: Vec<f64> = flights.iter().map(|f| f.fly(&reference).range).collect();
             let alone: Vec<f64> = flights.iter().map(|f| f.fly(&options).range).collect();
             let mut many = vec![0.0; flights.len()];
-            homerun::model::many::fly_many(flights.iter().copied(), &options, |i, f| many[i] = f.range);
+            homerun::model::many::fly_many(flights.iter().copied(), &options, |i, f| {
+                many[i] = f.range
+            });
             let stats = |v: &[f64]| {
                 let e: Vec<f64> = v.iter().zip(&truth).map(|(a, b)| (a - b).abs()).collect();
                 let rms = (e.iter().map(|x| x * x).sum::<f64>() / e.len() as f64).sqrt();
                 let mut sorted = e.clone();
                 sorted.sort_by(f64::total_cmp);
-                (rms, sorted[sorted.len() / 2], sorted[sorted.len() * 99 / 100], sorted[sorted.len() - 1])
+                (
+                    rms,
+                    sorted[sorted.len() / 2],
+                    sorted[sorted.len() * 99 / 100],
+                    sorted[sorted.len() - 1],
+                )
             };
-            println!("errors (rms, median, 99th, max): alone {:?} many {:?}", stats(&alone), stats(&many));
+            println!(
+                "errors (rms, median, 99th, max): alone {:?} many {:?}",
+                stats(&alone),
+                stats(&many)
+            );
         }
         let n = flights.len() as f64;
         println!(

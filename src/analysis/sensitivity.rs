@@ -93,11 +93,15 @@ pub fn range_gains_in(
         .filter_map(|(k, key)| Some((k, nudge_in(scene, key, 1.0, system).ok()?)))
         .collect();
     let flights = nudged.iter().map(|(_, s)| scene_start(s).0);
-    fly_many(flights, &Purpose::Readout.flight_options(), |index, flight| {
-        if flight.landed && flight.range.is_finite() {
-            gains[nudged[index].0] = Some(flight.range - range);
-        }
-    });
+    fly_many(
+        flights,
+        &Purpose::Readout.flight_options(),
+        |index, flight| {
+            if flight.landed && flight.range.is_finite() {
+                gains[nudged[index].0] = Some(flight.range - range);
+            }
+        },
+    );
     gains
 }
 
@@ -194,7 +198,11 @@ mod tests {
             }
         }
         assert!(compared >= 20, "{compared} of {}", keys.len());
-        assert!((1.7..2.3).contains(&column[keys.iter().position(|k| k.name == "bat.speed").unwrap()].unwrap()));
+        assert!(
+            (1.7..2.3).contains(
+                &column[keys.iter().position(|k| k.name == "bat.speed").unwrap()].unwrap()
+            )
+        );
     }
 
     #[test]

@@ -165,7 +165,9 @@ impl DragCurve for DragModel {
 
     fn coefficient_lanes(&self, pieces: Lane, reynolds: Lane, spin_rate: Lane) -> Lane {
         match self {
-            DragModel::Sawicki2003 => Sawicki2003Drag.coefficient_lanes(pieces, reynolds, spin_rate),
+            DragModel::Sawicki2003 => {
+                Sawicki2003Drag.coefficient_lanes(pieces, reynolds, spin_rate)
+            }
             DragModel::Constant => ConstantDrag.coefficient_lanes(pieces, reynolds, spin_rate),
             DragModel::Nathan => NathanDrag.coefficient_lanes(pieces, reynolds, spin_rate),
         }

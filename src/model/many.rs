@@ -61,6 +61,9 @@ pub fn judge_many<'f>(
     }
 }
 
+/// Shows a step of either kind (by its flight's index) to the fences.
+type FencesWatch<'w> = &'w mut dyn FnMut(usize, &dyn WatchedStep);
+
 /// A step of either kind of flight, for the fences' watch.
 trait WatchedStep {
     fn watch(&self, flight: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]);
@@ -103,7 +106,7 @@ fn fly_group(
     flights: &[SceneFlight],
     group: &[usize],
     options: &FlightOptions,
-    mut watch: Option<&mut dyn FnMut(usize, &dyn WatchedStep)>,
+    mut watch: Option<FencesWatch<'_>>,
     done: &mut dyn FnMut(usize, FlightSummary),
 ) {
     let planar = group
@@ -119,15 +122,21 @@ fn fly_group(
             }),
             SceneFlight::Spatial { .. } => None,
         });
-        let mut step_watch = watch.as_mut().map(|w| {
-            move |index: usize, step: &crate::numerics::ode::Step<4>| w(index, step)
-        });
+        let mut step_watch = watch
+            .as_mut()
+            .map(|w| move |index: usize, step: &crate::numerics::ode::Step<4>| w(index, step));
         let mut finished = |index: usize, summary: FlightSummary| {
             let direction = match flights[index] {
                 SceneFlight::Planar { plane, .. } => plane,
                 SceneFlight::Spatial { .. } => summary.direction,
             };
-            done(index, FlightSummary { direction, ..summary });
+            done(
+                index,
+                FlightSummary {
+                    direction,
+                    ..summary
+                },
+            );
         };
         let reports = LaneReports {
             watch: step_watch
@@ -146,9 +155,9 @@ fn fly_group(
             }),
             SceneFlight::Planar { .. } => None,
         });
-        let mut step_watch = watch.as_mut().map(|w| {
-            move |index: usize, step: &crate::numerics::ode::Step<6>| w(index, step)
-        });
+        let mut step_watch = watch
+            .as_mut()
+            .map(|w| move |index: usize, step: &crate::numerics::ode::Step<6>| w(index, step));
         let reports = LaneReports {
             watch: step_watch
                 .as_mut()

@@ -29,7 +29,10 @@ pub trait Real:
 {
     /// Per-lane truth: `bool` for one number, an all-ones/all-zeros lane
     /// mask for four.
-    type Mask: Copy + BitAnd<Output = Self::Mask> + BitOr<Output = Self::Mask> + Not<Output = Self::Mask>;
+    type Mask: Copy
+        + BitAnd<Output = Self::Mask>
+        + BitOr<Output = Self::Mask>
+        + Not<Output = Self::Mask>;
 
     fn splat(x: f64) -> Self;
     fn sqrt(self) -> Self;
@@ -279,7 +282,8 @@ macro_rules! lanes_real {
             fn exponent_and_significand(self) -> (Self, Self) {
                 let bits = self.to_bits();
                 let two_52 = <$lane>::splat(TWO_52);
-                let biased = <$lane>::from_bits((bits >> EXPONENT_SHIFT) | two_52.to_bits()) - two_52;
+                let biased =
+                    <$lane>::from_bits((bits >> EXPONENT_SHIFT) | two_52.to_bits()) - two_52;
                 let significand = <$lane>::from_bits(
                     (bits & <$bits>::splat(SIGNIFICAND_BITS)) | <$bits>::splat(ONE_BITS),
                 );
@@ -287,7 +291,9 @@ macro_rules! lanes_real {
             }
             #[inline(always)]
             fn power_of_two(n: Self) -> Self {
-                <$lane>::from_bits((n + <$lane>::splat(TWO_52 + 1023.0)).to_bits() << EXPONENT_SHIFT)
+                <$lane>::from_bits(
+                    (n + <$lane>::splat(TWO_52 + 1023.0)).to_bits() << EXPONENT_SHIFT,
+                )
             }
         }
     };
@@ -334,7 +340,11 @@ mod tests {
             let x = -40.0 + 50.0 * k as f64 / 40_000.0;
             worst = worst.max((exp_lanes(x) / x.exp() - 1.0).abs());
         }
-        assert!(worst < 4.0 * f64::EPSILON, "{:.2} ulp", worst / f64::EPSILON);
+        assert!(
+            worst < 4.0 * f64::EPSILON,
+            "{:.2} ulp",
+            worst / f64::EPSILON
+        );
         assert_eq!(exp_lanes(-800.0), exp_lanes(-700.0));
         let x = [-3.7, 0.0, 1.25, -19.0];
         let four = exp_lanes(f64x4::new(x)).to_array();

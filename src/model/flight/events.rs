@@ -191,11 +191,7 @@ impl<const N: usize, D: Dynamics<N>> Events<N, D> {
     /// layer (cutting the step there), records the apex and the landing, and
     /// says how to go on. `watch` is shown the step as kept.
     #[inline(always)]
-    pub fn observe(
-        &mut self,
-        step: &Step<N>,
-        watch: &mut impl FnMut(&Step<N>),
-    ) -> Control {
+    pub fn observe(&mut self, step: &Step<N>, watch: &mut impl FnMut(&Step<N>)) -> Control {
         let in_wind = self.regime.in_wind;
         // The Reynolds numbers at the step's ends (each costs a square root:
         // computed once, for the kink check and the kink prediction).
@@ -268,10 +264,7 @@ impl<const N: usize, D: Dynamics<N>> Events<N, D> {
             t1: step.t1,
             h: step.t1 - step.t0,
             heights: (step.y0[D::HEIGHT], step.y1[D::HEIGHT]),
-            vertical_velocities: (
-                step.y0[D::VERTICAL_VELOCITY],
-                step.y1[D::VERTICAL_VELOCITY],
-            ),
+            vertical_velocities: (step.y0[D::VERTICAL_VELOCITY], step.y1[D::VERTICAL_VELOCITY]),
             reynolds: (re0, re1),
         };
         let end = end_next_by(&ends, &self.bounds());

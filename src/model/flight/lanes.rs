@@ -81,7 +81,11 @@ impl LaneFlight<4> for Flight {
         y: &Lanes<4>,
     ) -> Lanes<4> {
         let coefficient = |re: Lane, spin_rate: Lane| {
-            drag.coefficient_lanes(pieces.unwrap_or_else(|| drag.piece_lanes(re)), re, spin_rate)
+            drag.coefficient_lanes(
+                pieces.unwrap_or_else(|| drag.piece_lanes(re)),
+                re,
+                spin_rate,
+            )
         };
         let [_, _, vx, vy] = y.0;
         let (ax, ay) = c.acceleration(coefficient, lift, t, (vx, vy));
@@ -132,7 +136,11 @@ impl LaneFlight<6> for Flight3d {
         y: &Lanes<6>,
     ) -> Lanes<6> {
         let coefficient = |re: Lane, spin_rate: Lane| {
-            drag.coefficient_lanes(pieces.unwrap_or_else(|| drag.piece_lanes(re)), re, spin_rate)
+            drag.coefficient_lanes(
+                pieces.unwrap_or_else(|| drag.piece_lanes(re)),
+                re,
+                spin_rate,
+            )
         };
         let [_, _, _, vx, vy, vz] = y.0;
         let [ax, ay, az] = c.acceleration(coefficient, lift, (t, in_wind), [vx, vy, vz]);
@@ -154,10 +162,13 @@ pub struct LaneJob<const N: usize, D> {
     pub time_limit: f64,
 }
 
+/// Shows a flight's step (by the flight's index) to a watcher.
+pub type LaneWatch<'r, const N: usize> = &'r mut dyn FnMut(usize, &Step<N>);
+
 /// What the caller is told: each step of a flight (if it watches), and
 /// each flight's summary, by the flight's index.
 pub struct LaneReports<'r, const N: usize> {
-    pub watch: Option<&'r mut dyn FnMut(usize, &Step<N>)>,
+    pub watch: Option<LaneWatch<'r, N>>,
     pub done: &'r mut dyn FnMut(usize, FlightSummary),
 }
 
@@ -223,7 +234,9 @@ where
             Some(events) => {
                 let Regime { piece, in_wind } = events.regime();
                 let models = (&self.models.0, &self.models.1);
-                events.flight().derivative_with(models, t, y, piece, in_wind)
+                events
+                    .flight()
+                    .derivative_with(models, t, y, piece, in_wind)
             }
             None => State::<N>::zeros(),
         }
@@ -244,7 +257,12 @@ where
     }
 
     #[inline(always)]
-    fn quiet(&mut self, accepted: Lane, (t1, h): (Lane, Lane), (y0, y1): (&Lanes<N>, &Lanes<N>)) -> (Lane, Lane) {
+    fn quiet(
+        &mut self,
+        accepted: Lane,
+        (t1, h): (Lane, Lane),
+        (y0, y1): (&Lanes<N>, &Lanes<N>),
+    ) -> (Lane, Lane) {
         if self.reports.watch.is_some() {
             // The watch sees every step.
             return (Lane::ZERO, Lane::splat(f64::INFINITY));

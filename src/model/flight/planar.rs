@@ -57,7 +57,11 @@ impl<R: Real> PlanarConstants<R> {
     pub fn air(&self, (vx, vy): (R, R)) -> ((R, R), R, R) {
         let (rel_x, rel_y) = (self.wind - vx, -vy);
         let air_speed = (rel_x * rel_x + rel_y * rel_y).sqrt();
-        ((rel_x, rel_y), air_speed, air_speed * self.reynolds_per_speed)
+        (
+            (rel_x, rel_y),
+            air_speed,
+            air_speed * self.reynolds_per_speed,
+        )
     }
 
     /// The ball's acceleration (a_x, a_y) at time `t` and velocity
@@ -185,8 +189,11 @@ impl Flight {
     /// decay (then no exponential is taken).
     #[inline]
     pub fn spin_at(&self, t: f64) -> SpinNow {
-        let (rate, surface_speed) =
-            spin_now((self.spin.abs(), self.surface_speed), self.spin_decay_rate, t);
+        let (rate, surface_speed) = spin_now(
+            (self.spin.abs(), self.surface_speed),
+            self.spin_decay_rate,
+            t,
+        );
         SpinNow {
             rate,
             surface_speed,

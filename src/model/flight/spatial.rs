@@ -167,7 +167,11 @@ impl Flight3d {
     /// |ω(t)| and r_b·|ω(t)|, decayed as ω₀·e^(−t/τ) if a decay is set.
     #[inline]
     fn spin_at(&self, t: f64) -> (f64, f64) {
-        spin_now((self.spin_rate, self.surface_speed), self.spin_decay_rate, t)
+        spin_now(
+            (self.spin_rate, self.surface_speed),
+            self.spin_decay_rate,
+            t,
+        )
     }
 
     /// This flight's constants as the generic forces take them.

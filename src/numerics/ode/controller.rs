@@ -127,7 +127,10 @@ mod tests {
         assert!(worst < 1e-5, "{worst:e}");
         // No error grows the step the most; no finite error shrinks it
         // less than a NaN or an infinite one does.
-        assert_eq!(accepted_growth(log2_error(0.0), LOG2_ERROR_FLOOR), MAX_FACTOR);
+        assert_eq!(
+            accepted_growth(log2_error(0.0), LOG2_ERROR_FLOOR),
+            MAX_FACTOR
+        );
         for bad in [f64::NAN, f64::INFINITY, 1e300] {
             assert_eq!(rejected_growth(log2_error(bad)), MIN_FACTOR, "{bad}");
         }

@@ -13,7 +13,6 @@
 
 use std::ops::{Add, Mul, Sub};
 
-
 use super::controller::{
     LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth,
 };
@@ -272,7 +271,13 @@ pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, setting
         let h = Lane::new(h);
         c.h = h;
         let (t0, y0, k1) = (c.t, c.y, c.k1);
-        let s = stages(&mut |t, y: &Lanes<N>| system.derivative(t, y), t0, &y0, &k1, h);
+        let s = stages(
+            &mut |t, y: &Lanes<N>| system.derivative(t, y),
+            t0,
+            &y0,
+            &k1,
+            h,
+        );
         let inverse = inverse_scales::<Lane, _, N>(&y0, &s.y1, relative, absolute);
         let error_squared = error_squared(&k1, &s, h, &inverse);
         let log2 = log2_error(error_squared);
@@ -326,7 +331,6 @@ pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, setting
             let control = system.observe(j, &step);
             match control {
                 Control::Stop => {
-                    drop(step);
                     c.finish(system, j, Outcome::Stopped);
                     continue;
                 }
@@ -352,7 +356,11 @@ impl<const N: usize> Carried<N> {
     #[inline(always)]
     fn last_rejected_bits(&self) -> wide::u64x4 {
         wide::u64x4::new(std::array::from_fn(|j| {
-            if self.lanes[j].last_rejected { u64::MAX } else { 0 }
+            if self.lanes[j].last_rejected {
+                u64::MAX
+            } else {
+                0
+            }
         }))
     }
 }

@@ -65,11 +65,10 @@ pub fn stages<R: Real, V: Vector<R>>(
     );
     let k6 = f(
         t + h,
-        &((*y + (*k1 * c(A61) + k2 * c(A62) + k3 * c(A63) + k4 * c(A64)) * h)
-            + k5 * (c(A65) * h)),
+        &((*y + (*k1 * c(A61) + k2 * c(A62) + k3 * c(A63) + k4 * c(A64)) * h) + k5 * (c(A65) * h)),
     );
-    let y1 = (*y + (*k1 * c(A71) + k3 * c(A73) + k4 * c(A74) + k5 * c(A75)) * h)
-        + k6 * (c(A76) * h);
+    let y1 =
+        (*y + (*k1 * c(A71) + k3 * c(A73) + k4 * c(A74) + k5 * c(A75)) * h) + k6 * (c(A76) * h);
     let k7 = f(t + h, &y1);
     Stages {
         k: [k2, k3, k4, k5, k6, k7],
