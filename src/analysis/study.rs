@@ -227,19 +227,20 @@ pub fn surface_within(
         steps > max_steps
             || (cells >= 64 && steps as f64 / cells as f64 * total as f64 > 2.0 * max_steps as f64)
     };
-    // Cells in a spread-out order, so that the first ones done are a fair
-    // sample of the grid's work; flown a chunk at a time in lock-step.
-    let count = grid.rows * grid.columns;
-    let stride = spread(count);
-    let cells_done: Option<Vec<Vec<(usize, CellOutcome)>>> = chunks(count)
+    // The chunks (the same as `surface_until`'s, so that a cell's range is
+    // the same in both) in a spread-out order, so that the first ones done
+    // are a fair sample of the grid's work.
+    let chunks = chunks(grid.rows * grid.columns);
+    let stride = spread(chunks.len());
+    let cells_done: Option<Vec<Vec<(usize, CellOutcome)>>> = (0..chunks.len())
         .into_par_iter()
-        .map(|chunk| {
+        .map(|m| {
             if over() {
                 return None;
             }
+            let chunk = chunks[m * stride % chunks.len()].clone();
             let mut done = Vec::with_capacity(chunk.len());
-            let cells = chunk.map(|m| m * stride % count);
-            fly_cells(scene, grid, cells, &options, |k, outcome, taken| {
+            fly_cells(scene, grid, chunk, &options, |k, outcome, taken| {
                 steps.fetch_add(taken, Ordering::Relaxed);
                 cells_flown.fetch_add(usize::from(taken > 0), Ordering::Relaxed);
                 tick();
@@ -267,6 +268,10 @@ pub fn surface_within(
 /// spread over the cores and a cancellation is seen soon (64 cells take
 /// ~50 µs).
 const CHUNK: usize = 64;
+
+/// Flights a chunk of a short list flies in lock-step ([`fly_all`]): a
+/// few chunks for the cores, each a few times the lanes.
+const FEW: usize = 8;
 
 /// 0..count in chunks of [`CHUNK`].
 fn chunks(count: usize) -> Vec<std::ops::Range<usize>> {
@@ -560,15 +565,12 @@ pub fn slice(
         .collect()
 }
 
-/// Flies `flights` in lock-step, in parallel chunks (one per core, or
-/// [`CHUNK`] flights if more), giving their summaries in their order.
+/// Flies `flights` in lock-step, in parallel chunks of [`FEW`] (the same
+/// on any number of cores, so that each flight's steps are too), giving
+/// their summaries in their order.
 pub fn fly_all(flights: &[SceneFlight], options: &FlightOptions) -> Vec<FlightSummary> {
-    let size = flights
-        .len()
-        .div_ceil(rayon::current_num_threads())
-        .clamp(1, CHUNK);
     flights
-        .par_chunks(size)
+        .par_chunks(FEW)
         .flat_map_iter(|chunk| {
             let mut summaries = vec![None; chunk.len()];
             fly_many(chunk.iter().copied(), options, |index, summary| {
