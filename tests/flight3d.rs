@@ -495,8 +495,12 @@ fn the_3d_flight_of_a_planar_scene_is_the_planar_flight() {
         }
     }
     eprintln!("planar vs 3-D, worst relative difference: {worst:.1e}");
-    // Measured: 6.3e-13.
-    assert!(worst < 2e-12, "{worst:e}");
+    // Measured: 4.3e-12, a landing angle (rad; ranges 1.2e-12), with the
+    // controller's rough powers (6.3e-13 with libm's): the two flights'
+    // error norms differ (over 4 components or 6), so they take different
+    // steps, and a landing is read off the 4th-order extension. At 1e-13
+    // that is rounding noise, far below either flight's own error.
+    assert!(worst < 1e-11, "{worst:e}");
 }
 
 #[test]

@@ -40,8 +40,15 @@ fn the_cells_that_do_not_land_are_exactly_those_whose_flight_does_not() {
             }
             let flight = model::simulate(&scene.with_swing(e, psi), Purpose::Surface).flight;
             if flight.landed {
-                assert_eq!(outcome, CellOutcome::Landed(flight.range), "E {e} ψ {psi}");
-                assert_eq!(surface.get(i, j), Some(flight.range));
+                // The surface flies its cells in lock-step, with steps of
+                // its own: the same landing, to the surface's budget.
+                let range = surface.get(i, j).expect("a landing");
+                assert_eq!(outcome, CellOutcome::Landed(range), "E {e} ψ {psi}");
+                assert!(
+                    (range - flight.range).abs() <= Purpose::Surface.range_budget(),
+                    "E {e} ψ {psi}: {range} against {}",
+                    flight.range
+                );
                 counts[0] += 1;
             } else {
                 assert_eq!(outcome, CellOutcome::NotLanded, "E {e} ψ {psi}");

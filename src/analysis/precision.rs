@@ -103,8 +103,9 @@ impl Purpose {
             // (over it). The optima it finds equal those at 1e-10 to 1e-7 m in
             // E and 2e-6 rad in ψ.
             Purpose::Optimizer => Tolerance::uniform(1e-8),
-            // Worst of 64×64 Fig. 7 cells: 0.0054 m, 100× inside a quarter
-            // colour step; 1e-4 leaves under 3× (0.23 m) to save ~10 % of time.
+            // Worst of 64×64 Fig. 7 cells: 0.0072 m flown in lock-step (0.0054
+            // alone), 85× inside a quarter colour step; 1e-4 leaves under 3×
+            // (0.23 m) to save ~10 % of time.
             Purpose::Surface => Tolerance::uniform(1e-5),
             // ≤ 5e-5 m at every one of 300 points read off the dense output
             // (Table II): far inside a braille dot.

@@ -6,7 +6,8 @@
 use super::optimum::{Optimizer, OptimizerSettings, Point};
 use super::precision::Purpose;
 use crate::model::keys::{InputError, Key};
-use crate::model::launch::fly_scene;
+use crate::model::launch::{fly_scene, scene_start};
+use crate::model::many::fly_many;
 use crate::model::scene::Scene;
 use crate::units::UnitSystem;
 
@@ -72,6 +73,36 @@ pub fn range_gain(scene: &Scene, key: &Key, range: f64) -> Option<f64> {
 pub fn range_gain_in(scene: &Scene, key: &Key, range: f64, system: UnitSystem) -> Option<f64> {
     let nudged = nudge_in(scene, key, 1.0, system).ok()?;
     Some(landed_range(&nudged)? - range).filter(|_| range.is_finite())
+}
+
+/// [`range_gain_in`] for each of `keys`: the nudged scenes' flights flown
+/// in lock-step, as a column of the explorer's gains is asked at once.
+pub fn range_gains_in(
+    scene: &Scene,
+    keys: &[&Key],
+    range: f64,
+    system: UnitSystem,
+) -> Vec<Option<f64>> {
+    let mut gains = vec![None; keys.len()];
+    if !range.is_finite() {
+        return gains;
+    }
+    let nudged: Vec<(usize, Scene)> = keys
+        .iter()
+        .enumerate()
+        .filter_map(|(k, key)| Some((k, nudge_in(scene, key, 1.0, system).ok()?)))
+        .collect();
+    let flights = nudged.iter().map(|(_, s)| scene_start(s).0);
+    fly_many(
+        flights,
+        &Purpose::Readout.flight_options(),
+        |index, flight| {
+            if flight.landed && flight.range.is_finite() {
+                gains[nudged[index].0] = Some(flight.range - range);
+            }
+        },
+    );
+    gains
 }
 
 /// Whether the optimal range depends on `key` at all: not on the swing
@@ -148,6 +179,30 @@ mod tests {
         // A tail wind of 1 m/s carries the ball farther, a denser air less far.
         assert!(range_gain(&scene, key("environment.wind"), range).unwrap() > 0.5);
         assert!(range_gain(&scene, key("environment.air_density"), range).unwrap() < 0.0);
+    }
+
+    #[test]
+    fn a_column_of_gains_in_lock_step_is_the_gains_one_by_one() {
+        let scene = Scene::default();
+        let range = landed_range(&scene).unwrap();
+        let keys: Vec<&Key> = crate::model::keys::swing_keys().collect();
+        let column = range_gains_in(&scene, &keys, range, UnitSystem::Si);
+        let mut compared = 0;
+        for (key, gain) in keys.iter().zip(&column) {
+            let alone = range_gain(&scene, key, range);
+            assert_eq!(gain.is_some(), alone.is_some(), "{}", key.name);
+            if let (Some(a), Some(b)) = (gain, alone) {
+                // Each within the readout's budget of the truth.
+                assert!((a - b).abs() < 2e-6, "{}: {a} {b}", key.name);
+                compared += 1;
+            }
+        }
+        assert!(compared >= 20, "{compared} of {}", keys.len());
+        assert!(
+            (1.7..2.3).contains(
+                &column[keys.iter().position(|k| k.name == "bat.speed").unwrap()].unwrap()
+            )
+        );
     }
 
     #[test]

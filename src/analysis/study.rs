@@ -14,6 +14,7 @@ use crate::model::flight::{FlightOptions, FlightSummary, TrajectoryPoint};
 use crate::model::impact::{Collision, Regime};
 use crate::model::keys::{InputError, TEXT_KEYS};
 use crate::model::launch::SceneFlight;
+use crate::model::many::fly_many;
 use crate::model::{self, scene::Scene};
 
 /// A rectangular grid over undercut (columns) and swing angle (rows).
@@ -217,51 +218,101 @@ pub fn surface_within(
         .count()
         * grid.rows;
     let steps = AtomicU64::new(0);
-    let cells = AtomicUsize::new(0);
+    let cells_flown = AtomicUsize::new(0);
     let over = || {
-        let (steps, cells) = (steps.load(Ordering::Relaxed), cells.load(Ordering::Relaxed));
+        let (steps, cells) = (
+            steps.load(Ordering::Relaxed),
+            cells_flown.load(Ordering::Relaxed),
+        );
         steps > max_steps
             || (cells >= 64 && steps as f64 / cells as f64 * total as f64 > 2.0 * max_steps as f64)
     };
-    // Cells in a spread-out order, so that the first ones done are a fair
-    // sample of the grid's work.
-    let count = grid.rows * grid.columns;
-    let stride = spread(count);
-    let cells_done: Option<Vec<(usize, CellOutcome)>> = (0..count)
+    // The chunks (the same as `surface_until`'s, so that a cell's range is
+    // the same in both) in a spread-out order, so that the first ones done
+    // are a fair sample of the grid's work.
+    let chunks = chunks(grid.rows * grid.columns);
+    let stride = spread(chunks.len());
+    let cells_done: Option<Vec<Vec<(usize, CellOutcome)>>> = (0..chunks.len())
         .into_par_iter()
         .map(|m| {
             if over() {
                 return None;
             }
-            let k = m * stride % count;
-            let (i, j) = (k % grid.columns, k / grid.columns);
-            let undercut = grid.undercut_at(i);
-            if undercut.abs() >= reach {
+            let chunk = chunks[m * stride % chunks.len()].clone();
+            let mut done = Vec::with_capacity(chunk.len());
+            fly_cells(scene, grid, chunk, &options, |k, outcome, taken| {
+                steps.fetch_add(taken, Ordering::Relaxed);
+                cells_flown.fetch_add(usize::from(taken > 0), Ordering::Relaxed);
                 tick();
-                return Some((k, CellOutcome::BatMisses));
-            }
-            let flight =
-                model::simulate(&scene.with_swing(undercut, grid.swing_angle_at(j)), options)
-                    .flight;
-            let taken = u64::from(flight.stats.accepted) + u64::from(flight.stats.rejected);
-            steps.fetch_add(taken, Ordering::Relaxed);
-            cells.fetch_add(1, Ordering::Relaxed);
-            tick();
-            Some((k, CellOutcome::of_flight(flight.landed, flight.range)))
+                done.push((k, outcome));
+            });
+            Some(done)
         })
         .collect();
     let Some(cells_done) = cells_done else {
         return Err(TooMuchWork {
-            cells: cells.load(Ordering::Relaxed),
+            cells: cells_flown.load(Ordering::Relaxed),
             steps: steps.load(Ordering::Relaxed),
             total,
         });
     };
     let mut surface = Surface::not_computed(grid);
-    for (k, outcome) in cells_done {
+    for (k, outcome) in cells_done.into_iter().flatten() {
         surface.cells[k] = outcome;
     }
     Ok(surface)
+}
+
+/// Cells a chunk of a surface flies in lock-step: enough that the lanes'
+/// last flights (some lanes idle) cost little, few enough that the chunks
+/// spread over the cores and a cancellation is seen soon (64 cells take
+/// ~50 µs).
+const CHUNK: usize = 64;
+
+/// Flights a chunk of a short list flies in lock-step ([`fly_all`]): a
+/// few chunks for the cores, each a few times the lanes.
+const FEW: usize = 8;
+
+/// 0..count in chunks of [`CHUNK`].
+fn chunks(count: usize) -> Vec<std::ops::Range<usize>> {
+    (0..count)
+        .step_by(CHUNK)
+        .map(|start| start..(start + CHUNK).min(count))
+        .collect()
+}
+
+/// Flies the grid's cells `cells` (row-major indices) in lock-step:
+/// `done(k, outcome, steps)` for each cell k, `steps` the integration
+/// steps its flight took (0 where the bat misses).
+fn fly_cells(
+    scene: &Scene,
+    grid: Grid,
+    cells: impl Iterator<Item = usize>,
+    options: &FlightOptions,
+    mut done: impl FnMut(usize, CellOutcome, u64),
+) {
+    let reach = scene.reach();
+    let mut flown = Vec::new();
+    let mut flights = Vec::new();
+    for k in cells {
+        let (i, j) = (k % grid.columns, k / grid.columns);
+        let undercut = grid.undercut_at(i);
+        if undercut.abs() >= reach {
+            done(k, CellOutcome::BatMisses, 0);
+            continue;
+        }
+        let swing = scene.with_swing(undercut, grid.swing_angle_at(j));
+        flown.push(k);
+        flights.push(SceneFlight::of_impact(&swing, &Collision::new(&swing)));
+    }
+    fly_many(flights, options, |index, flight| {
+        let taken = u64::from(flight.stats.accepted) + u64::from(flight.stats.rejected);
+        done(
+            flown[index],
+            CellOutcome::of_flight(flight.landed, flight.range),
+            taken.max(1),
+        );
+    });
 }
 
 /// A step through 0..n that visits every index once (coprime with n) and
@@ -280,13 +331,14 @@ fn spread(n: usize) -> usize {
     stride
 }
 
-/// The range surface, in parallel over rows.
+/// The range surface, in parallel over chunks of cells, each flown in
+/// lock-step.
 pub fn surface(scene: &Scene, grid: Grid, options: impl Into<FlightOptions>) -> Surface {
     surface_until(scene, grid, options, &|| false).expect("never cancelled")
 }
 
 /// As [`surface`], giving up (`None`) as soon as `cancelled()` turns true:
-/// it is polled before every cell.
+/// it is polled before every chunk of [`CHUNK`] cells.
 pub fn surface_until(
     scene: &Scene,
     grid: Grid,
@@ -294,22 +346,24 @@ pub fn surface_until(
     cancelled: &(dyn Fn() -> bool + Sync),
 ) -> Option<Surface> {
     let options = options.into();
-    let cells: Option<Vec<CellOutcome>> = (0..grid.rows * grid.columns)
+    let chunks: Option<Vec<Vec<(usize, CellOutcome)>>> = chunks(grid.rows * grid.columns)
         .into_par_iter()
-        .map(|k| {
+        .map(|chunk| {
             if cancelled() {
                 return None;
             }
-            let (i, j) = (k % grid.columns, k / grid.columns);
-            Some(outcome_at(
-                scene,
-                grid.undercut_at(i),
-                grid.swing_angle_at(j),
-                options,
-            ))
+            let mut done = Vec::with_capacity(chunk.len());
+            fly_cells(scene, grid, chunk, &options, |k, outcome, _| {
+                done.push((k, outcome));
+            });
+            Some(done)
         })
         .collect();
-    cells.map(|cells| Surface { grid, cells })
+    let mut surface = Surface::not_computed(grid);
+    for (k, outcome) in chunks?.into_iter().flatten() {
+        surface.cells[k] = outcome;
+    }
+    Some(surface)
 }
 
 /// One point of a sweep: the optimal swing with one input set to `value`
@@ -479,7 +533,7 @@ pub struct SlicePoint {
 }
 
 /// Launch and range at each undercut in `undercuts`, the swing angle held at
-/// `swing_angle` (Fig. 13), in parallel. Undercuts the bat cannot reach
+/// `swing_angle` (Fig. 13), flown in lock-step. Undercuts the bat cannot reach
 /// (|E| ≥ r_b + r_B) are left out.
 pub fn slice(
     scene: &Scene,
@@ -487,20 +541,42 @@ pub fn slice(
     undercuts: &[f64],
     options: impl Into<FlightOptions>,
 ) -> Vec<SlicePoint> {
-    let options = options.into();
-    undercuts
-        .par_iter()
+    let reachable: Vec<(f64, Collision, SceneFlight)> = undercuts
+        .iter()
         .filter(|e| e.abs() < scene.reach())
         .map(|&undercut| {
-            let swing = model::simulate(&scene.with_swing(undercut, swing_angle), options);
-            SlicePoint {
-                undercut,
-                launch_speed: swing.impact.launch_speed(),
-                launch_spin: swing.impact.launch_spin(),
-                launch_angle: swing.impact.launch_angle(),
-                range: swing.flight.range,
-                landed: swing.flight.landed,
-            }
+            let swing = scene.with_swing(undercut, swing_angle);
+            let impact = Collision::new(&swing);
+            (undercut, impact, SceneFlight::of_impact(&swing, &impact))
+        })
+        .collect();
+    let flights: Vec<SceneFlight> = reachable.iter().map(|(_, _, flight)| *flight).collect();
+    reachable
+        .iter()
+        .zip(fly_all(&flights, &options.into()))
+        .map(|((undercut, impact, _), flight)| SlicePoint {
+            undercut: *undercut,
+            launch_speed: impact.launch_speed(),
+            launch_spin: impact.launch_spin(),
+            launch_angle: impact.launch_angle(),
+            range: flight.range,
+            landed: flight.landed,
+        })
+        .collect()
+}
+
+/// Flies `flights` in lock-step, in parallel chunks of [`FEW`] (the same
+/// on any number of cores, so that each flight's steps are too), giving
+/// their summaries in their order.
+pub fn fly_all(flights: &[SceneFlight], options: &FlightOptions) -> Vec<FlightSummary> {
+    flights
+        .par_chunks(FEW)
+        .flat_map_iter(|chunk| {
+            let mut summaries = vec![None; chunk.len()];
+            fly_many(chunk.iter().copied(), options, |index, summary| {
+                summaries[index] = Some(summary);
+            });
+            summaries.into_iter().flatten()
         })
         .collect()
 }

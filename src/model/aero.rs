@@ -9,8 +9,16 @@
 //!
 //! Nathan's formulas are those of his trajectory calculator (A. M. Nathan,
 //! "Trajectory calculator", baseball.physics.illinois.edu, 2012 onward).
+//!
+//! A flight asks which models it has once, not at every evaluation:
+//! [`DragModel::with_lift`] runs a [`WithModels`] with the two models as
+//! types of their own, so that the integration is compiled for each pair
+//! with the coefficients inlined. Each formula is written once, generic
+//! over [`Real`]: one flight's numbers or four flights' in lock-step.
 
 use serde::{Deserialize, Serialize};
+
+use crate::numerics::real::{Lane, Real, exp_lanes};
 
 /// What a drag model gives the flight.
 pub trait DragCurve {
@@ -26,6 +34,25 @@ pub trait DragCurve {
     fn kinks(&self) -> &'static [f64] {
         &[]
     }
+
+    /// Which smooth piece of C_D(Re) holds at `re`: the number of kinks at
+    /// or below it.
+    #[inline(always)]
+    fn piece(&self, re: f64) -> usize {
+        self.kinks().iter().take_while(|&&kink| re >= kink).count()
+    }
+
+    /// As [`DragCurve::coefficient_on`], for four flights at once, each on
+    /// its own piece (`pieces`, the pieces' numbers as floats).
+    fn coefficient_lanes(&self, pieces: Lane, reynolds: Lane, spin_rate: Lane) -> Lane;
+
+    /// As [`DragCurve::piece`], for four flights, as floats.
+    #[inline(always)]
+    fn piece_lanes(&self, re: Lane) -> Lane {
+        self.kinks().iter().fold(Lane::ZERO, |count, &kink| {
+            count + re.simd_ge(Lane::splat(kink)).select(Lane::ONE, Lane::ZERO)
+        })
+    }
 }
 
 /// What a lift model gives the flight.
@@ -35,8 +62,15 @@ pub trait LiftCurve {
 
     /// C_L·|V_r| from |V_r| and the surface speed r_b|ω|, written without
     /// dividing by |V_r|, so that a zero relative wind or a zero spin gives
-    /// exactly zero lift, never 0/0.
-    fn coefficient_times_speed(&self, air_speed: f64, surface_speed: f64) -> f64;
+    /// exactly zero lift, never 0/0; for one flight or four at once.
+    fn coefficient_times_speed<R: Real>(&self, air_speed: R, surface_speed: R) -> R;
+}
+
+/// Work to do with a flight's drag and lift models as types of their own:
+/// see [`DragModel::with_lift`].
+pub trait WithModels {
+    type Output;
+    fn run<D: DragCurve + Copy, L: LiftCurve + Copy>(self, drag: D, lift: L) -> Self::Output;
 }
 
 /// Which drag curve the flight uses.
@@ -107,6 +141,16 @@ impl DragModel {
     pub fn kinks(self) -> &'static [f64] {
         DragCurve::kinks(&self)
     }
+
+    /// Runs `work` with this drag model and `lift` as their own types: the
+    /// one place a flight asks which models it has.
+    pub fn with_lift<W: WithModels>(self, lift: LiftModel, work: W) -> W::Output {
+        match self {
+            DragModel::Sawicki2003 => lift.with_drag(Sawicki2003Drag, work),
+            DragModel::Constant => lift.with_drag(ConstantDrag, work),
+            DragModel::Nathan => lift.with_drag(NathanDrag, work),
+        }
+    }
 }
 
 impl DragCurve for DragModel {
@@ -116,6 +160,16 @@ impl DragCurve for DragModel {
             DragModel::Sawicki2003 => Sawicki2003Drag.coefficient_on(piece, reynolds, spin_rate),
             DragModel::Constant => ConstantDrag.coefficient_on(piece, reynolds, spin_rate),
             DragModel::Nathan => NathanDrag.coefficient_on(piece, reynolds, spin_rate),
+        }
+    }
+
+    fn coefficient_lanes(&self, pieces: Lane, reynolds: Lane, spin_rate: Lane) -> Lane {
+        match self {
+            DragModel::Sawicki2003 => {
+                Sawicki2003Drag.coefficient_lanes(pieces, reynolds, spin_rate)
+            }
+            DragModel::Constant => ConstantDrag.coefficient_lanes(pieces, reynolds, spin_rate),
+            DragModel::Nathan => NathanDrag.coefficient_lanes(pieces, reynolds, spin_rate),
         }
     }
 
@@ -141,21 +195,67 @@ impl DragCurve for DragModel {
 #[derive(Clone, Copy, Debug)]
 pub struct Sawicki2003Drag;
 
+impl Sawicki2003Drag {
+    /// The rising piece's exponent at `re` (continued for [`CONTINUATION`]
+    /// below its kink): C_D = [`Self::rising`] of its exponential.
+    #[inline(always)]
+    pub fn rising_exponent<R: Real>(re: R) -> R {
+        let re = re.max(R::splat(SAWICKI_KINKS[0] - CONTINUATION));
+        (R::splat(CRISIS_START) - re) * R::splat(1.0 / 8784.46)
+    }
+
+    /// C_D on the rising piece, from e^[`Self::rising_exponent`]:
+    /// 0.15 + 0.0416812·(e^x − 1), one product and one sum after e^x.
+    #[inline(always)]
+    pub fn rising<R: Real>(exponential: R) -> R {
+        R::splat(DRAG_FLOOR - RISE) + R::splat(RISE) * exponential
+    }
+
+    /// The recovery piece's exponent at `re` (continued for
+    /// [`CONTINUATION`] below its kink).
+    #[inline(always)]
+    pub fn recovery_exponent<R: Real>(re: R) -> R {
+        let re = re.max(R::splat(CRISIS_END - CONTINUATION));
+        (R::splat(CRISIS_END) - re) * R::splat(1.0 / 49808.6)
+    }
+
+    /// C_D on the recovery piece, from e^[`Self::recovery_exponent`]:
+    /// 0.15 + 0.309620·(1 − e^x).
+    #[inline(always)]
+    pub fn recovery<R: Real>(exponential: R) -> R {
+        R::splat(DRAG_FLOOR + RECOVERY) - R::splat(RECOVERY) * exponential
+    }
+
+    /// C_D on the subcritical piece (0) and on the floor (2).
+    pub const SUBCRITICAL: f64 = SUBCRITICAL_DRAG;
+    pub const FLOOR: f64 = DRAG_FLOOR;
+}
+
 impl DragCurve for Sawicki2003Drag {
-    #[inline]
+    #[inline(always)]
     fn coefficient_on(&self, piece: usize, re: f64, _spin_rate: f64) -> f64 {
         match piece {
             0 => SUBCRITICAL_DRAG,
-            1 => {
-                let re = re.max(SAWICKI_KINKS[0] - CONTINUATION);
-                DRAG_FLOOR + 0.0416812 * (((CRISIS_START - re) * (1.0 / 8784.46)).exp() - 1.0)
-            }
+            1 => Self::rising(Self::rising_exponent(re).exp()),
             2 => DRAG_FLOOR,
-            _ => {
-                let re = re.max(CRISIS_END - CONTINUATION);
-                DRAG_FLOOR + 0.309620 * (1.0 - ((CRISIS_END - re) * (1.0 / 49808.6)).exp())
-            }
+            _ => Self::recovery(Self::recovery_exponent(re).exp()),
         }
+    }
+
+    /// Each lane by its piece's formula; one exponential for the lanes on
+    /// either exponential piece, none if no lane is on one.
+    #[inline(always)]
+    fn coefficient_lanes(&self, pieces: Lane, re: Lane, _spin_rate: Lane) -> Lane {
+        let piece = |p: f64| pieces.simd_eq(Lane::splat(p));
+        let (rising, recovering) = (piece(1.0), piece(3.0));
+        let mut cd = piece(2.0).select(Lane::splat(DRAG_FLOOR), Lane::splat(SUBCRITICAL_DRAG));
+        if (rising | recovering).any() {
+            let exponent = rising.select(Self::rising_exponent(re), Self::recovery_exponent(re));
+            let e = exp_lanes(exponent);
+            cd = rising.select(Self::rising(e), cd);
+            cd = recovering.select(Self::recovery(e), cd);
+        }
+        cd
     }
 
     fn kinks(&self) -> &'static [f64] {
@@ -168,9 +268,14 @@ impl DragCurve for Sawicki2003Drag {
 pub struct ConstantDrag;
 
 impl DragCurve for ConstantDrag {
-    #[inline]
+    #[inline(always)]
     fn coefficient_on(&self, _piece: usize, _reynolds: f64, _spin_rate: f64) -> f64 {
         SUBCRITICAL_DRAG
+    }
+
+    #[inline(always)]
+    fn coefficient_lanes(&self, _pieces: Lane, _reynolds: Lane, _spin_rate: Lane) -> Lane {
+        Lane::splat(SUBCRITICAL_DRAG)
     }
 }
 
@@ -179,10 +284,23 @@ impl DragCurve for ConstantDrag {
 #[derive(Clone, Copy, Debug)]
 pub struct NathanDrag;
 
+impl NathanDrag {
+    /// C_D at spin rate |ω| (rad/s), for one flight or four.
+    #[inline(always)]
+    pub fn coefficient<R: Real>(spin_rate: R) -> R {
+        R::splat(0.3008) + R::splat(0.0292) * (spin_rate * R::splat(THOUSAND_RPM_PER_RAD_PER_S))
+    }
+}
+
 impl DragCurve for NathanDrag {
-    #[inline]
+    #[inline(always)]
     fn coefficient_on(&self, _piece: usize, _reynolds: f64, spin_rate: f64) -> f64 {
-        0.3008 + 0.0292 * (spin_rate * THOUSAND_RPM_PER_RAD_PER_S)
+        Self::coefficient(spin_rate)
+    }
+
+    #[inline(always)]
+    fn coefficient_lanes(&self, _pieces: Lane, _reynolds: Lane, spin_rate: Lane) -> Lane {
+        Self::coefficient(spin_rate)
     }
 }
 
@@ -193,6 +311,9 @@ const THOUSAND_RPM_PER_RAD_PER_S: f64 = 60.0 / (2.0 * std::f64::consts::PI * 100
 /// of air speed, more than any accurate step overshoots.
 pub const CONTINUATION: f64 = 15_000.0;
 const DRAG_FLOOR: f64 = 0.15;
+/// The sizes of the rising and recovery pieces' exponentials.
+const RISE: f64 = 0.0416812;
+const RECOVERY: f64 = 0.309620;
 const SUBCRITICAL_DRAG: f64 = 0.5;
 const CRISIS_START: f64 = 160_000.0;
 const CRISIS_END: f64 = 175_000.0;
@@ -214,6 +335,16 @@ pub enum LiftModel {
 }
 
 impl LiftModel {
+    /// Runs `work` with `drag` and this lift model as its own type (see
+    /// [`DragModel::with_lift`]).
+    fn with_drag<D: DragCurve + Copy, W: WithModels>(self, drag: D, work: W) -> W::Output {
+        match self {
+            LiftModel::Sawicki2003 => work.run(drag, Sawicki2003Lift),
+            LiftModel::Nathan => work.run(drag, NathanLift),
+            LiftModel::None => work.run(drag, NoLift),
+        }
+    }
+
     pub const ALL: [LiftModel; 3] = [LiftModel::Sawicki2003, LiftModel::Nathan, LiftModel::None];
 
     pub fn name(self) -> &'static str {
@@ -244,7 +375,7 @@ impl LiftCurve for LiftModel {
     }
 
     #[inline]
-    fn coefficient_times_speed(&self, air_speed: f64, surface_speed: f64) -> f64 {
+    fn coefficient_times_speed<R: Real>(&self, air_speed: R, surface_speed: R) -> R {
         match self {
             LiftModel::Sawicki2003 => {
                 Sawicki2003Lift.coefficient_times_speed(air_speed, surface_speed)
@@ -264,9 +395,14 @@ impl LiftCurve for Sawicki2003Lift {
         lift_coefficient(spin_parameter)
     }
 
-    #[inline]
-    fn coefficient_times_speed(&self, air_speed: f64, surface_speed: f64) -> f64 {
-        lift_coefficient_times_speed(air_speed, surface_speed)
+    #[inline(always)]
+    fn coefficient_times_speed<R: Real>(&self, air_speed: R, surface_speed: R) -> R {
+        // S ≤ 0.1  ⇔  r_b|ω| ≤ 0.1·|V_r|.
+        R::select(
+            R::le(surface_speed, R::splat(0.1) * air_speed),
+            R::splat(1.5) * surface_speed,
+            R::splat(0.09) * air_speed + R::splat(0.6) * surface_speed,
+        )
     }
 }
 
@@ -287,13 +423,17 @@ impl LiftCurve for NathanLift {
     /// With S = w/|V| (w = r_b|ω|), numerator and denominator times |V|:
     /// C_L·|V| = 1.120·w·|V|/(0.583·|V| + 2.333·w), whose denominator is
     /// positive whenever w is; without spin it is exactly zero.
-    #[inline]
-    fn coefficient_times_speed(&self, air_speed: f64, surface_speed: f64) -> f64 {
-        if surface_speed == 0.0 {
-            return 0.0;
-        }
-        NATHAN_LIFT_SCALE * surface_speed * air_speed
-            / (NATHAN_LIFT_OFFSET * air_speed + NATHAN_LIFT_SATURATION * surface_speed)
+    #[inline(always)]
+    fn coefficient_times_speed<R: Real>(&self, air_speed: R, surface_speed: R) -> R {
+        let zero = R::splat(0.0);
+        // Without spin, exactly zero (where the quotient may be 0/0).
+        R::select(
+            R::eq(surface_speed, zero),
+            zero,
+            R::splat(NATHAN_LIFT_SCALE) * surface_speed * air_speed
+                / (R::splat(NATHAN_LIFT_OFFSET) * air_speed
+                    + R::splat(NATHAN_LIFT_SATURATION) * surface_speed),
+        )
     }
 }
 
@@ -306,9 +446,9 @@ impl LiftCurve for NoLift {
         0.0
     }
 
-    #[inline]
-    fn coefficient_times_speed(&self, _air_speed: f64, _surface_speed: f64) -> f64 {
-        0.0
+    #[inline(always)]
+    fn coefficient_times_speed<R: Real>(&self, _air_speed: R, _surface_speed: R) -> R {
+        R::splat(0.0)
     }
 }
 
@@ -384,12 +524,7 @@ pub fn lift_coefficient(spin_parameter: f64) -> f64 {
 /// so that a zero relative wind or a zero spin gives exactly zero lift, never 0/0.
 #[inline]
 pub fn lift_coefficient_times_speed(air_speed: f64, surface_speed: f64) -> f64 {
-    // S ≤ 0.1  ⇔  r_b|ω| ≤ 0.1·|V_r|.
-    if surface_speed <= 0.1 * air_speed {
-        1.5 * surface_speed
-    } else {
-        0.09 * air_speed + 0.6 * surface_speed
-    }
+    Sawicki2003Lift.coefficient_times_speed(air_speed, surface_speed)
 }
 
 #[cfg(test)]

@@ -15,7 +15,7 @@ use super::flight::{self, FlightOptions, FlightSummary};
 use super::frame;
 use super::launch::SceneFlight;
 use super::park::{Fence, FenceAt};
-use crate::numerics::ode::{DenseStep, State};
+use crate::numerics::ode::{State, Step};
 use crate::numerics::roots::find_root_newton_from;
 
 /// Crossing times are located to this (s): a batted ball moves under a
@@ -182,7 +182,7 @@ impl SceneFlight {
             } => {
                 let (sin, cos) = plane.sin_cos();
                 let summary = flight::fly_observed(flight, launch, options, |step| {
-                    watch(step, fences, crossings, |s| [s[0] * cos, s[0] * sin, s[1]]);
+                    watch_fences(step, fences, crossings, |s| [s[0] * cos, s[0] * sin, s[1]]);
                 });
                 FlightSummary {
                     direction: *plane,
@@ -191,7 +191,7 @@ impl SceneFlight {
             }
             SceneFlight::Spatial { flight, launch } => {
                 flight::fly_observed(flight, launch, options, |step| {
-                    watch(step, fences, crossings, |s| [s[0], s[2], s[1]]);
+                    watch_fences(step, fences, crossings, |s| [s[0], s[2], s[1]]);
                 })
             }
         }
@@ -218,8 +218,8 @@ impl SceneFlight {
 /// (or, being linear, its rate of change) to (x, z, height): toward centre
 /// field, toward right field, up.
 #[inline]
-fn watch<const N: usize>(
-    step: &DenseStep<N>,
+pub(crate) fn watch_fences<const N: usize>(
+    step: &Step<N>,
     fences: &[&Fence],
     crossings: &mut [Option<Crossing>],
     ground: impl Fn(&State<N>) -> [f64; 3],

@@ -21,6 +21,7 @@ pub mod frame;
 pub mod impact;
 pub mod keys;
 pub mod launch;
+pub mod many;
 pub mod park;
 pub mod pitch;
 pub mod scene;

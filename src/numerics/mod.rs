@@ -4,4 +4,5 @@
 
 pub mod nelder_mead;
 pub mod ode;
+pub mod real;
 pub mod roots;

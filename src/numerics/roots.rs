@@ -35,6 +35,8 @@ pub fn find_root_newton_from(
     }
     let b_positive = gb > 0.0;
     let mut t = (a * gb - b * ga) / (gb - ga);
+    // The last Newton step's length, while they stay in the bracket.
+    let mut last_step = f64::INFINITY;
     for _ in 0..100 {
         let (gt, slope) = g(t);
         if gt == 0.0 {
@@ -51,9 +53,22 @@ pub fn find_root_newton_from(
         let inside = newton >= low && newton <= high;
         // Converged (the test is on the Newton step, as the new point may
         // be the bracket's end itself).
-        if inside && (newton - t).abs() < tolerance {
+        let step = (newton - t).abs();
+        if inside && step < tolerance {
             return newton;
         }
+        // Converging quadratically (this step under a tenth of the last),
+        // the error left after this step is about K·step², with
+        // K ≈ step/last² from the two steps: once that is below the
+        // tolerance, another evaluation would only confirm it.
+        if inside
+            && last_step.is_finite()
+            && step < 0.1 * last_step
+            && step * step * step < tolerance * last_step * last_step
+        {
+            return newton;
+        }
+        last_step = if inside { step } else { f64::INFINITY };
         let next = if inside { newton } else { 0.5 * (a + b) };
         if (b - a).abs() < tolerance {
             return next;

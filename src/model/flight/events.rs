@@ -4,26 +4,25 @@
 //! continuous extension, and a prediction of the next of them so that the
 //! step that meets it wastes little beyond it.
 
-use std::cell::Cell;
-
-use super::{Dynamics, Regime};
-use crate::numerics::ode::{Control, DenseStep, State};
-use crate::numerics::roots::find_root_newton;
+use super::{Dynamics, FlightSummary, Regime};
+use crate::numerics::ode::{Control, State, Stats, Step};
+use crate::numerics::real::Real;
+use crate::numerics::roots::find_root_newton_from;
 
 /// Event times are located to this (s): far below anything that shows.
 const ROOT_TOLERANCE: f64 = 1e-13;
 
 /// The events seen so far, and the regime in force.
-pub(super) struct Events<'a, const N: usize, D: Dynamics<N>> {
-    flight: &'a D,
+pub(crate) struct Events<const N: usize, D: Dynamics<N>> {
+    /// The flight (a copy: a few dozen numbers, and no borrow to keep).
+    flight: D,
     /// The kinks switched at: none when the flight does not stop at them.
     kinks: &'static [f64],
     /// The height the wind blows above, if the flight switches there.
     wind_height: Option<f64>,
-    /// The drag piece and wind layer the current step uses. Shared with
-    /// the right-hand side, which reads it during a step while this
-    /// observer changes it between steps.
-    regime: &'a Cell<Regime>,
+    /// The drag piece and wind layer the current step uses: the
+    /// right-hand side's, which the integration hands it after each step.
+    regime: Regime,
     /// Where the flight started: distances are measured from it.
     start: State<N>,
     /// The time of the last switch: a second switch at the same instant
@@ -44,11 +43,14 @@ struct Switch {
     regime: Regime,
 }
 
-impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
-    pub fn new(flight: &'a D, start: &State<N>, regime: &'a Cell<Regime>) -> Self {
+impl<const N: usize, D: Dynamics<N>> Events<N, D> {
+    /// The events of a flight from `start`, switching at the drag curve's
+    /// kinks if `stop_at_kinks`.
+    pub fn new(flight: D, start: &State<N>, stop_at_kinks: bool) -> Self {
+        let regime = flight.starting_regime(start, stop_at_kinks);
         Events {
             flight,
-            kinks: if regime.get().piece.is_some() {
+            kinks: if regime.piece.is_some() {
                 flight.drag().kinks()
             } else {
                 &[]
@@ -68,11 +70,44 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
         !self.kinks.is_empty()
     }
 
+    /// The flight whose events these are.
+    #[inline(always)]
+    pub fn flight(&self) -> &D {
+        &self.flight
+    }
+
+    /// The regime the next step is to use.
+    #[inline(always)]
+    pub fn regime(&self) -> Regime {
+        self.regime
+    }
+
+    /// The flight's outcome, once the integration has ended (`landed` if
+    /// the landing stopped it).
+    pub fn summary(&self, landed: bool, stats: Stats) -> FlightSummary {
+        let (time, state) = self.landing.unwrap_or(self.last);
+        let (range, direction) = D::ground(&state, &self.start);
+        let (horizontal, vertical) = D::velocity_parts(&state);
+        FlightSummary {
+            range,
+            direction,
+            flight_time: time,
+            apex: self.apex.0,
+            apex_distance: self.apex.1,
+            // As a norm is computed (not hypot), so the plane's speed is bit
+            // for bit what it was.
+            landing_speed: (horizontal * horizontal + vertical * vertical).sqrt(),
+            landing_angle: (-vertical).atan2(horizontal),
+            landed,
+            stats,
+        }
+    }
+
     /// Where the step leaves its drag piece, and the piece it enters, given
     /// the Reynolds numbers at its ends.
     #[inline(always)]
-    fn kink_crossing(&self, step: &DenseStep<N>, re0: f64, re1: f64) -> Option<Switch> {
-        let regime = self.regime.get();
+    fn kink_crossing(&self, step: &Step<N>, re0: f64, re1: f64) -> Option<Switch> {
+        let regime = self.regime;
         let (kinks, p) = (self.kinks, regime.piece.unwrap_or_default());
         let (kink, next) = if p > 0 && re1 < kinks[p - 1] {
             (kinks[p - 1], p - 1)
@@ -85,17 +120,17 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
             // Where |V_r|² = (kink/(2r_b/ν))²: the same root as Re = kink,
             // without a square root per iteration.
             let speed = kink / self.flight.reynolds_per_speed();
-            find_root_newton(
-                |t| {
-                    let (squared, rate) = self.flight.air_speed_squared(
-                        &step.at(t),
-                        &step.slope_at(t),
-                        regime.in_wind,
-                    );
-                    (squared - speed * speed, rate)
-                },
-                step.t0,
-                step.t1,
+            let dense = step.dense();
+            let excess = |state: &State<N>, slope: &State<N>| {
+                let (squared, rate) = self.flight.air_speed_squared(state, slope, regime.in_wind);
+                (squared - speed * speed, rate)
+            };
+            // At the ends, from the step's own states (the rates unused).
+            let ends = |y: &State<N>| excess(y, y).0;
+            find_root_newton_from(
+                |t| excess(&dense.at(t), &dense.slope_at(t)),
+                (step.t0, ends(&step.y0)),
+                (step.t1, ends(&step.y1)),
                 ROOT_TOLERANCE,
             )
         } else {
@@ -114,9 +149,9 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
 
     /// Where the step enters or leaves the wind's layer, if it does.
     #[inline(always)]
-    fn layer_crossing(&self, step: &DenseStep<N>) -> Option<Switch> {
+    fn layer_crossing(&self, step: &Step<N>) -> Option<Switch> {
         let height = self.wind_height?;
-        let regime = self.regime.get();
+        let regime = self.regime;
         let (y0, y1) = (step.y0[D::HEIGHT] - height, step.y1[D::HEIGHT] - height);
         let leaves = if regime.in_wind { y1 < 0.0 } else { y1 >= 0.0 };
         if !leaves {
@@ -139,11 +174,15 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
 
     /// Where a component of the state crosses `level` inside the step.
     #[inline]
-    fn zero_of(step: &DenseStep<N>, component: usize, level: f64) -> f64 {
-        find_root_newton(
-            |t| (step.at(t)[component] - level, step.slope_at(t)[component]),
-            step.t0,
-            step.t1,
+    fn zero_of(step: &Step<N>, component: usize, level: f64) -> f64 {
+        let dense = step.dense();
+        find_root_newton_from(
+            |t| {
+                let (value, slope) = dense.component_at(t, component);
+                (value - level, slope)
+            },
+            (step.t0, step.y0[component] - level),
+            (step.t1, step.y1[component] - level),
             ROOT_TOLERANCE,
         )
     }
@@ -152,12 +191,8 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
     /// layer (cutting the step there), records the apex and the landing, and
     /// says how to go on. `watch` is shown the step as kept.
     #[inline(always)]
-    pub fn observe(
-        &mut self,
-        step: &DenseStep<N>,
-        watch: &mut impl FnMut(&DenseStep<N>),
-    ) -> Control {
-        let in_wind = self.regime.get().in_wind;
+    pub fn observe(&mut self, step: &Step<N>, watch: &mut impl FnMut(&Step<N>)) -> Control {
+        let in_wind = self.regime.in_wind;
         // The Reynolds numbers at the step's ends (each costs a square root:
         // computed once, for the kink check and the kink prediction).
         let (re0, re1) = if self.switching() {
@@ -169,7 +204,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
             (0.0, 0.0)
         };
         // The step as shown: cut at a switch, or the step itself (by
-        // reference: a DenseStep is dozens of numbers, not worth copying on
+        // reference: a step is dozens of numbers, not worth copying on
         // every step).
         let truncated;
         let mut shown = step;
@@ -195,7 +230,7 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
                 self.last_switch = switch.time;
                 truncated = step.truncated(switch.time);
                 shown = &truncated;
-                self.regime.set(switch.regime);
+                self.regime = switch.regime;
                 control = Control::RestartAt(switch.time);
             }
         }
@@ -221,58 +256,128 @@ impl<'a, const N: usize, D: Dynamics<N>> Events<'a, N, D> {
     }
 
     /// When the next event is near, the time by which the next step should
-    /// end: a little past it rather than wherever the error control would.
-    /// `step` was not cut, so re0 and re1 are its ends' Reynolds numbers.
+    /// end (see [`end_next_by`]). `step` was not cut, so re0 and re1 are its
+    /// ends' Reynolds numbers.
     #[inline(always)]
-    fn next_event_by(&self, step: &DenseStep<N>, re0: f64, re1: f64) -> Option<f64> {
-        let h = step.t1 - step.t0;
-        // The landing, and the wind's layer: y(τ) ≈ y + v_y τ + a_y τ²/2,
-        // a_y from the step.
-        let (y, vy) = (step.y1[D::HEIGHT], step.y1[D::VERTICAL_VELOCITY]);
-        let ay = (step.y1[D::VERTICAL_VELOCITY] - step.y0[D::VERTICAL_VELOCITY]) / h;
-        let mut soonest = time_to_height(y, vy, ay, 0.0);
-        if let Some(height) = self.wind_height {
-            soonest = soonest.min(time_to_height(y, vy, ay, height));
-        }
-        // The next kink, from the Reynolds number's rate over the step.
-        if self.switching() {
-            let rate = (re1 - re0) / h;
-            let (kinks, p) = (self.kinks, self.regime.get().piece.unwrap_or_default());
-            let target = if rate < 0.0 && p > 0 {
-                Some(kinks[p - 1])
-            } else if rate > 0.0 && p < kinks.len() {
-                Some(kinks[p])
-            } else {
-                None
-            };
-            if let Some(kink) = target {
-                soonest = soonest.min((kink - re1) / rate);
-            }
-        }
-        // Past the predicted event by half its distance, so that the event
-        // falls inside the next step despite the prediction's error; and not
-        // for events closer than a tenth of this step, lest a Reynolds number
-        // creeping up on a kink shrink the steps without end. (At 1e-5 the
-        // landing error falls ~4× and a Fig. 7 surface's worst cell 10×, for
-        // the same evaluations: `homerun bench`.)
-        (soonest.is_finite() && soonest > 0.1 * h).then_some(step.t1 + 1.5 * soonest)
+    fn next_event_by(&self, step: &Step<N>, re0: f64, re1: f64) -> Option<f64> {
+        let ends = StepEnds {
+            t1: step.t1,
+            h: step.t1 - step.t0,
+            heights: (step.y0[D::HEIGHT], step.y1[D::HEIGHT]),
+            vertical_velocities: (step.y0[D::VERTICAL_VELOCITY], step.y1[D::VERTICAL_VELOCITY]),
+            reynolds: (re0, re1),
+        };
+        let end = end_next_by(&ends, &self.bounds());
+        end.is_finite().then_some(end)
     }
+
+    /// What the regime in force bounds: the kinks on either side of its
+    /// drag piece (±∞ where there is none, or no switching), and the wind's
+    /// layer (−∞ without one, the ball then always in the wind).
+    pub fn bounds(&self) -> Bounds<f64> {
+        let (kinks, p) = (self.kinks, self.regime.piece.unwrap_or_default());
+        let switching = self.switching();
+        Bounds {
+            kink_below: if switching && p > 0 {
+                kinks[p - 1]
+            } else {
+                f64::NEG_INFINITY
+            },
+            kink_above: if switching && p < kinks.len() {
+                kinks[p]
+            } else {
+                f64::INFINITY
+            },
+            wind_height: self.wind_height.unwrap_or(f64::NEG_INFINITY),
+            in_wind: self.regime.in_wind,
+        }
+    }
+}
+
+/// What a step's ends say of the events ahead, for one flight (`f64`) or
+/// several in lock-step: its end and size, and the height, vertical
+/// velocity and Reynolds number at its start and end.
+pub struct StepEnds<R> {
+    pub t1: R,
+    pub h: R,
+    pub heights: (R, R),
+    pub vertical_velocities: (R, R),
+    pub reynolds: (R, R),
+}
+
+/// The regime's bounds (see [`Events::bounds`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Bounds<R: Real> {
+    pub kink_below: R,
+    pub kink_above: R,
+    pub wind_height: R,
+    pub in_wind: R::Mask,
+}
+
+/// Whether anything happens inside a step: a kink or the wind's layer
+/// crossed, the apex passed, the ground reached. Where it does not, the
+/// step's observer need look no further than [`end_next_by`].
+#[inline(always)]
+pub fn eventful<R: Real>(ends: &StepEnds<R>, bounds: &Bounds<R>) -> R::Mask {
+    let zero = R::splat(0.0);
+    let ((_, y1), (vy0, vy1)) = (ends.heights, ends.vertical_velocities);
+    let re1 = ends.reynolds.1;
+    let kink = re1.lt(bounds.kink_below) | bounds.kink_above.lt(re1);
+    let leaves_layer = y1.lt(bounds.wind_height);
+    let layer = (bounds.in_wind & leaves_layer) | (!bounds.in_wind & !leaves_layer);
+    let apex = zero.lt(vy0) & vy1.le(zero);
+    kink | layer | apex | y1.le(zero)
+}
+
+/// The time by which the step after this one should end, when an event is
+/// near (else +∞): a little past the next predicted event rather than
+/// wherever the error control would end it. The landing and the wind's
+/// layer come from y(τ) ≈ y + v_y τ + a_y τ²/2 (a_y from the step), the
+/// next kink from the Reynolds number's rate over the step.
+#[inline(always)]
+pub fn end_next_by<R: Real>(ends: &StepEnds<R>, bounds: &Bounds<R>) -> R {
+    let infinity = R::splat(f64::INFINITY);
+    let h = ends.h;
+    let (y, (vy0, vy)) = (ends.heights.1, ends.vertical_velocities);
+    let ay = (vy - vy0) / h;
+    let mut soonest = time_to_height(y, vy, ay, R::splat(0.0));
+    soonest = soonest.min(R::select(
+        bounds.wind_height.eq(R::splat(f64::NEG_INFINITY)),
+        infinity,
+        time_to_height(y, vy, ay, bounds.wind_height),
+    ));
+    let (re0, re1) = ends.reynolds;
+    let rate = (re1 - re0) / h;
+    let zero = R::splat(0.0);
+    let kink = R::select(
+        rate.lt(zero),
+        (bounds.kink_below - re1) / rate,
+        R::select(zero.lt(rate), (bounds.kink_above - re1) / rate, infinity),
+    );
+    soonest = soonest.min(kink);
+    // Past the predicted event by half its distance, so that the event
+    // falls inside the next step despite the prediction's error; and not
+    // for events closer than a tenth of this step, lest a Reynolds number
+    // creeping up on a kink shrink the steps without end. (At 1e-5 the
+    // landing error falls ~4× and a Fig. 7 surface's worst cell 10×, for
+    // the same evaluations: `homerun bench`.)
+    let near = soonest.lt(infinity) & (R::splat(0.1) * h).lt(soonest);
+    R::select(near, ends.t1 + R::splat(1.5) * soonest, infinity)
 }
 
 /// The first τ > 0 at which y + v_y τ + a_y τ²/2 = `level`, or infinity.
 #[inline(always)]
-fn time_to_height(y: f64, vy: f64, ay: f64, level: f64) -> f64 {
+fn time_to_height<R: Real>(y: R, vy: R, ay: R, level: R) -> R {
+    let (zero, infinity) = (R::splat(0.0), R::splat(f64::INFINITY));
     let y = y - level;
-    let mut soonest = f64::INFINITY;
-    let disc = vy * vy - 2.0 * ay * y;
-    if disc >= 0.0 && ay != 0.0 {
-        for tau in [(-vy + disc.sqrt()) / ay, (-vy - disc.sqrt()) / ay] {
-            if tau > 0.0 {
-                soonest = soonest.min(tau);
-            }
-        }
-    } else if ay == 0.0 && vy < 0.0 {
-        soonest = -y / vy;
-    }
-    soonest
+    let disc = vy * vy - R::splat(2.0) * ay * y;
+    let root = disc.max(zero).sqrt();
+    let positive = |tau: R| R::select(zero.lt(tau), tau, infinity);
+    let quadratic = positive((-vy + root) / ay).min(positive((-vy - root) / ay));
+    let linear = R::select(vy.lt(zero), -y / vy, infinity);
+    R::select(
+        ay.eq(zero),
+        linear,
+        R::select(zero.le(disc), quadratic, infinity),
+    )
 }

@@ -10,6 +10,7 @@
 //! numbers bit for bit.
 
 mod events;
+pub mod lanes;
 mod planar;
 mod spatial;
 
@@ -17,11 +18,12 @@ use std::cell::Cell;
 
 use serde::Serialize;
 
-use super::aero::DragModel;
-use crate::numerics::ode::{self, DenseStep, Outcome, Settings, State, Stats, Tolerance};
+use super::aero::{DragCurve, DragModel, LiftCurve, LiftModel, WithModels};
+use crate::numerics::ode::{self, Outcome, Settings, State, Step, Tolerance};
+use crate::numerics::real::Real;
 use events::Events;
-pub use planar::{Flight, Launch, SpinNow};
-pub use spatial::{Flight3d, Launch3d};
+pub use planar::{Flight, Launch, PlanarConstants, SpinNow};
+pub use spatial::{Flight3d, Launch3d, SpatialConstants};
 
 /// No flight is followed past this (s): far beyond any hit, but a bound, so
 /// that no input (a ball held up by lift) can run forever.
@@ -64,18 +66,38 @@ pub(crate) fn piece_entered(kinks: &[f64], re: f64, rising: bool) -> usize {
     }
 }
 
+/// The spin at time `t` after launch, (|ω|, r_b|ω|) from their launch
+/// values: ω(t) = ω₀·e^(−t/τ), `decay_rate` being 1/τ; without decay (in
+/// every lane) no exponential is taken.
+#[inline(always)]
+pub(crate) fn spin_now<R: Real>((rate, surface_speed): (R, R), decay_rate: R, t: R) -> (R, R) {
+    if !R::any(!R::eq(decay_rate, R::splat(0.0))) {
+        return (rate, surface_speed);
+    }
+    let remaining = (-t * decay_rate).exp();
+    (rate * remaining, surface_speed * remaining)
+}
+
 /// What the integration needs of a flight whose state has `N` components:
 /// positions then velocities, the height at [`Dynamics::HEIGHT`].
-pub trait Dynamics<const N: usize> {
+pub trait Dynamics<const N: usize>: Copy {
     const HEIGHT: usize;
     const VERTICAL_VELOCITY: usize;
 
     /// d/dt of the state at time `t` in the regime of drag piece `piece`
     /// and wind layer `in_wind` (a [`Regime`]'s fields, passed apart so
-    /// that they travel in registers: the call is the hot path).
-    fn derivative(&self, t: f64, state: &State<N>, piece: Option<usize>, in_wind: bool)
-    -> State<N>;
+    /// that they travel in registers: the call is the hot path), with the
+    /// flight's drag and lift models given as their own types.
+    fn derivative_with(
+        &self,
+        models: (&impl DragCurve, &impl LiftCurve),
+        t: f64,
+        state: &State<N>,
+        piece: Option<usize>,
+        in_wind: bool,
+    ) -> State<N>;
     fn drag(&self) -> DragModel;
+    fn lift(&self) -> LiftModel;
     fn gravity(&self) -> f64;
     /// 2r_b/ν: turns |V_r| into Re.
     fn reynolds_per_speed(&self) -> f64;
@@ -96,6 +118,20 @@ pub trait Dynamics<const N: usize> {
     fn point(state: &State<N>) -> [f64; 3];
     /// C_D at `state` (for drawing Fig. 14).
     fn drag_coefficient(&self, t: f64, state: &State<N>) -> f64;
+
+    /// The regime a flight from `start` begins in: on the drag piece it is
+    /// on (or about to enter) if it switches at the kinks, and in the wind
+    /// if it starts in its layer.
+    fn starting_regime(&self, start: &State<N>, stop_at_kinks: bool) -> Regime {
+        let switching = stop_at_kinks && !self.drag().kinks().is_empty();
+        let in_wind = self
+            .wind_height()
+            .is_none_or(|height| start[Self::HEIGHT] >= height);
+        Regime {
+            piece: switching.then(|| self.drag_piece_at(start, in_wind)),
+            in_wind,
+        }
+    }
 }
 
 /// Where a flight starts: its state and how long it is followed.
@@ -157,7 +193,7 @@ pub struct FlightSummary {
     /// ([`Launch::time_limit`]) or the step limit; the other fields then
     /// describe the last point, and `range` is no range.
     pub landed: bool,
-    pub stats: Stats,
+    pub stats: ode::Stats,
 }
 
 /// Flies the ball to the ground (y = 0), locating the landing inside the step
@@ -170,13 +206,29 @@ pub fn fly<const N: usize, D: Dynamics<N>, S: Start<N>>(
     fly_observed(flight, launch, options, |_| {})
 }
 
+/// As [`fly`], trying `first_step` (s) first: a neighbouring flight's
+/// [`Stats::first_step`](ode::Stats::first_step), which saves the two
+/// evaluations of the first step's guess, and usually a rejection.
+pub fn fly_from<const N: usize, D: Dynamics<N>, S: Start<N>>(
+    flight: &D,
+    launch: &S,
+    options: &FlightOptions,
+    first_step: Option<f64>,
+) -> FlightSummary {
+    let stepper = Stepper::Adaptive(Settings {
+        initial_step: first_step,
+        ..Settings::new(options.tolerance)
+    });
+    fly_with(flight, launch, stepper, options.stop_at_kinks, |_| {})
+}
+
 /// As [`fly`], showing each accepted step (with its dense output) to `watch`,
 /// e.g. to sample the trajectory.
 pub fn fly_observed<const N: usize, D: Dynamics<N>, S: Start<N>>(
     flight: &D,
     launch: &S,
     options: &FlightOptions,
-    watch: impl FnMut(&DenseStep<N>),
+    watch: impl FnMut(&Step<N>),
 ) -> FlightSummary {
     let stepper = Stepper::Adaptive(Settings::new(options.tolerance));
     fly_with(flight, launch, stepper, options.stop_at_kinks, watch)
@@ -199,53 +251,70 @@ enum Stepper {
     Fixed(f64),
 }
 
+/// One flight's integration, before its models are known as types.
+struct Flying<'a, const N: usize, D, S, W> {
+    flight: &'a D,
+    launch: &'a S,
+    stepper: Stepper,
+    stop_at_kinks: bool,
+    watch: W,
+}
+
+/// Asks the flight's models once, and flies with them as types.
 fn fly_with<const N: usize, D: Dynamics<N>, S: Start<N>>(
     flight: &D,
     launch: &S,
     stepper: Stepper,
     stop_at_kinks: bool,
-    mut watch: impl FnMut(&DenseStep<N>),
+    watch: impl FnMut(&Step<N>),
 ) -> FlightSummary {
-    let start = launch.state();
-    let switching = stop_at_kinks && !flight.drag().kinks().is_empty();
-    let in_wind = flight
-        .wind_height()
-        .is_none_or(|height| start[D::HEIGHT] >= height);
-    let regime = Cell::new(Regime {
-        piece: switching.then(|| flight.drag_piece_at(&start, in_wind)),
-        in_wind,
-    });
-    let mut events = Events::new(flight, &start, &regime);
-    let rhs = |t: f64, s: &State<N>| {
-        let Regime { piece, in_wind } = regime.get();
-        flight.derivative(t, s, piece, in_wind)
+    let flying = Flying {
+        flight,
+        launch,
+        stepper,
+        stop_at_kinks,
+        watch,
     };
-    let observe = |step: &DenseStep<N>| events.observe(step, &mut watch);
-    let time_limit = launch.time_limit(flight.gravity());
-    let (outcome, stats) = match stepper {
-        Stepper::Adaptive(settings) => {
-            ode::integrate(rhs, 0.0, start, time_limit, &settings, observe)
-        }
-        Stepper::Fixed(step) => {
-            ode::integrate_fixed(rhs, 0.0, start, time_limit, step, ode::MAX_STEPS, observe)
-        }
-    };
-    let landed = outcome == Outcome::Stopped;
-    let (time, state) = events.landing.unwrap_or(events.last);
-    let (range, direction) = D::ground(&state, &start);
-    let (horizontal, vertical) = D::velocity_parts(&state);
-    FlightSummary {
-        range,
-        direction,
-        flight_time: time,
-        apex: events.apex.0,
-        apex_distance: events.apex.1,
-        // As a norm is computed (not hypot), so the plane's speed is bit
-        // for bit what it was.
-        landing_speed: (horizontal * horizontal + vertical * vertical).sqrt(),
-        landing_angle: (-vertical).atan2(horizontal),
-        landed,
-        stats,
+    flight.drag().with_lift(flight.lift(), flying)
+}
+
+impl<const N: usize, D: Dynamics<N>, S: Start<N>, W: FnMut(&Step<N>)> WithModels
+    for Flying<'_, N, D, S, W>
+{
+    type Output = FlightSummary;
+
+    fn run<Dr: DragCurve + Copy, L: LiftCurve + Copy>(self, drag: Dr, lift: L) -> FlightSummary {
+        let Flying {
+            flight,
+            launch,
+            stepper,
+            stop_at_kinks,
+            mut watch,
+        } = self;
+        let start = launch.state();
+        let mut events = Events::new(*flight, &start, stop_at_kinks);
+        // The regime the right-hand side reads during a step, which the
+        // observer changes between steps.
+        let regime = Cell::new(events.regime());
+        let rhs = |t: f64, s: &State<N>| {
+            let Regime { piece, in_wind } = regime.get();
+            flight.derivative_with((&drag, &lift), t, s, piece, in_wind)
+        };
+        let observe = |step: &Step<N>| {
+            let control = events.observe(step, &mut watch);
+            regime.set(events.regime());
+            control
+        };
+        let time_limit = launch.time_limit(flight.gravity());
+        let (outcome, stats) = match stepper {
+            Stepper::Adaptive(settings) => {
+                ode::integrate(rhs, 0.0, start, time_limit, &settings, observe)
+            }
+            Stepper::Fixed(step) => {
+                ode::integrate_fixed(rhs, 0.0, start, time_limit, step, ode::MAX_STEPS, observe)
+            }
+        };
+        events.summary(outcome == Outcome::Stopped, stats)
     }
 }
 

@@ -6,10 +6,11 @@
 
 use nalgebra::Vector2;
 
-use super::{Dynamics, time_limit};
+use super::{Dynamics, spin_now, time_limit};
 use crate::model::aero::{DragCurve, DragModel, LiftCurve, LiftModel};
 use crate::model::scene::Scene;
 use crate::numerics::ode::State;
+use crate::numerics::real::Real;
 
 /// The flight's state is (x, y, v_x, v_y): these name its components.
 pub(super) const DISTANCE: usize = 0;
@@ -23,12 +24,77 @@ pub(super) fn velocity(state: &State<4>) -> Vector2<f64> {
     Vector2::new(state[VELOCITY_X], state[VERTICAL_VELOCITY])
 }
 
-/// C_D times `model.drag_scale`. At 1 the product is C_D bit for bit; an
-/// unconditional multiplication costs fewer instructions than a test for 1
-/// (callgrind, 2000 planar `fly --batch` rows: +0.9 % against +1.7 %).
+/// A factor of the drag times `model.drag_scale`. At 1 the product is the
+/// factor bit for bit; an unconditional multiplication costs fewer
+/// instructions than a test for 1 (callgrind, 2000 planar `fly --batch`
+/// rows: +0.9 % against +1.7 %).
 #[inline(always)]
-pub(super) fn scaled(coefficient: f64, scale: f64) -> f64 {
+pub(super) fn scaled<R: Real>(coefficient: R, scale: R) -> R {
     coefficient * scale
+}
+
+/// What the planar forces hold fixed over a flight ([`Flight`]'s numbers),
+/// for one flight (`f64`) or four in lock-step (`f64x4`).
+#[derive(Clone, Copy, Debug)]
+pub struct PlanarConstants<R> {
+    pub gravity: R,
+    pub wind: R,
+    pub force_per_mass: R,
+    pub reynolds_per_speed: R,
+    /// r_b·|ω₀|, |ω₀| and 1/τ.
+    pub surface_speed: R,
+    pub spin_rate: R,
+    pub spin_decay_rate: R,
+    /// The spin's sign times `model.lift_scale`.
+    pub spin_sign: R,
+    pub drag_scale: R,
+}
+
+impl<R: Real> PlanarConstants<R> {
+    /// V_r = V_w − V_b (Eq. 25), the wind being horizontal; |V_r|; and
+    /// Re = 2|V_r|r_b/ν (Eq. 27), at velocity (v_x, v_y).
+    #[inline(always)]
+    pub fn air(&self, (vx, vy): (R, R)) -> ((R, R), R, R) {
+        let (rel_x, rel_y) = (self.wind - vx, -vy);
+        let air_speed = (rel_x * rel_x + rel_y * rel_y).sqrt();
+        (
+            (rel_x, rel_y),
+            air_speed,
+            air_speed * self.reynolds_per_speed,
+        )
+    }
+
+    /// The ball's acceleration (a_x, a_y) at time `t` and velocity
+    /// (v_x, v_y): gravity, drag along V_r (Eq. 25–27) and lift
+    /// perpendicular to it (Eq. 28–29), C_D being `drag(Re, |ω|)` and C_L
+    /// `lift`'s. See [`Flight::acceleration`] for the lift's sign.
+    #[inline(always)]
+    pub fn acceleration(
+        &self,
+        drag: impl Fn(R, R) -> R,
+        lift: &impl LiftCurve,
+        t: R,
+        (vx, vy): (R, R),
+    ) -> (R, R) {
+        let (spin_rate, surface_speed) = spin_now(
+            (self.spin_rate, self.surface_speed),
+            self.spin_decay_rate,
+            t,
+        );
+        let ((rel_x, rel_y), air_speed, re) = self.air((vx, vy));
+        // ρA/(2M_b)·|V_r| (with `model.drag_scale` on C_D), ready while C_D
+        // is computed, so that C_D waits on one product (see `scaled`).
+        let per_coefficient = scaled(air_speed * self.force_per_mass, self.drag_scale);
+        let along = drag(re, spin_rate) * per_coefficient;
+        let lift = self.spin_sign
+            * lift.coefficient_times_speed(air_speed, surface_speed)
+            * self.force_per_mass;
+        // Drag along V_r; lift along ẑ × V_b-direction, scaled by |V_r|:
+        // (V_r,y, −V_r,x).
+        let ax = rel_x * along + rel_y * lift;
+        let ay = rel_y * along + -rel_x * lift;
+        (ax, ay - self.gravity)
+    }
 }
 
 /// The forces on the ball in flight, ready to evaluate. Which drag and lift
@@ -123,17 +189,30 @@ impl Flight {
     /// decay (then no exponential is taken).
     #[inline]
     pub fn spin_at(&self, t: f64) -> SpinNow {
-        let launch = SpinNow {
-            rate: self.spin.abs(),
-            surface_speed: self.surface_speed,
-        };
-        if !self.spin_decays() {
-            return launch;
-        }
-        let remaining = (-t * self.spin_decay_rate).exp();
+        let (rate, surface_speed) = spin_now(
+            (self.spin.abs(), self.surface_speed),
+            self.spin_decay_rate,
+            t,
+        );
         SpinNow {
-            rate: launch.rate * remaining,
-            surface_speed: launch.surface_speed * remaining,
+            rate,
+            surface_speed,
+        }
+    }
+
+    /// This flight's constants as the generic forces take them.
+    #[inline(always)]
+    pub fn constants(&self) -> PlanarConstants<f64> {
+        PlanarConstants {
+            gravity: self.gravity,
+            wind: self.wind,
+            force_per_mass: self.force_per_mass,
+            reynolds_per_speed: self.reynolds_per_speed,
+            surface_speed: self.surface_speed,
+            spin_rate: self.spin.abs(),
+            spin_decay_rate: self.spin_decay_rate,
+            spin_sign: self.spin_sign,
+            drag_scale: self.drag_scale,
         }
     }
 
@@ -176,24 +255,26 @@ impl Flight {
         velocity: Vector2<f64>,
         piece: Option<usize>,
     ) -> Vector2<f64> {
-        let spin = self.spin_at(t);
-        let rel = self.relative_wind(velocity);
-        let air_speed = rel.norm();
-        let re = air_speed * self.reynolds_per_speed;
-        let piece = piece.unwrap_or_else(|| self.drag.piece(re));
-        let drag_coefficient = scaled(
-            self.drag.coefficient_on(piece, re, spin.rate),
-            self.drag_scale,
-        );
-        // ẑ × V_b-direction, scaled by |V_r|: (V_r,y, −V_r,x).
-        let lift_direction = Vector2::new(rel.y, -rel.x);
-        let lift = self.spin_sign
-            * self
-                .lift
-                .coefficient_times_speed(air_speed, spin.surface_speed);
-        let aero =
-            (rel * (drag_coefficient * air_speed) + lift_direction * lift) * self.force_per_mass;
-        Vector2::new(aero.x, aero.y - self.gravity)
+        let a = self.acceleration_with((&self.drag, &self.lift), t, velocity, piece);
+        Vector2::new(a.0, a.1)
+    }
+
+    /// As [`Flight::acceleration_at`], with the drag and lift models given
+    /// as their own types (the integration's, compiled for each pair).
+    #[inline(always)]
+    pub fn acceleration_with(
+        &self,
+        (drag, lift): (&impl DragCurve, &impl LiftCurve),
+        t: f64,
+        velocity: Vector2<f64>,
+        piece: Option<usize>,
+    ) -> (f64, f64) {
+        let coefficient = |re: f64, spin_rate: f64| {
+            let piece = piece.unwrap_or_else(|| drag.piece(re));
+            drag.coefficient_on(piece, re, spin_rate)
+        };
+        self.constants()
+            .acceleration(coefficient, lift, t, (velocity.x, velocity.y))
     }
 
     /// d/dt of the state (x, y, v_x, v_y) at the launch spin.
@@ -206,8 +287,7 @@ impl Flight {
     /// (or the one its Reynolds number lies on).
     #[inline(always)]
     pub fn derivative_at(&self, t: f64, state: &State<4>, piece: Option<usize>) -> State<4> {
-        let a = self.acceleration_at(t, velocity(state), piece);
-        State::<4>::new(state[VELOCITY_X], state[VERTICAL_VELOCITY], a.x, a.y)
+        self.derivative_with((&self.drag, &self.lift), t, state, piece, true)
     }
 
     /// The piece of the drag curve the ball is on at launch, or about to
@@ -251,22 +331,28 @@ impl Dynamics<4> for Flight {
     const HEIGHT: usize = HEIGHT;
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
 
-    // Inlined into the integrator's stages, so that only the acceleration
-    // is a call (its velocity and result travel in registers).
+    // Inlined into the integrator's stages, with the models' formulas.
     #[inline(always)]
-    fn derivative(
+    fn derivative_with(
         &self,
+        models: (&impl DragCurve, &impl LiftCurve),
         t: f64,
         state: &State<4>,
         piece: Option<usize>,
         _in_wind: bool,
     ) -> State<4> {
-        self.derivative_at(t, state, piece)
+        let (ax, ay) = self.acceleration_with(models, t, velocity(state), piece);
+        State::<4>::new(state[VELOCITY_X], state[VERTICAL_VELOCITY], ax, ay)
     }
 
     #[inline]
     fn drag(&self) -> DragModel {
         self.drag
+    }
+
+    #[inline]
+    fn lift(&self) -> LiftModel {
+        self.lift
     }
 
     #[inline]

@@ -9,11 +9,12 @@
 use nalgebra::Vector3;
 
 use super::planar::scaled;
-use super::{Dynamics, Regime, time_limit};
+use super::{Dynamics, Regime, spin_now, time_limit};
 use crate::model::aero::{DragCurve, DragModel, LiftCurve, LiftModel};
 use crate::model::frame;
 use crate::model::scene::Scene;
 use crate::numerics::ode::State;
+use crate::numerics::real::Real;
 
 /// The state is (x, y, z, v_x, v_y, v_z): these name its components.
 const X: usize = 0;
@@ -57,6 +58,69 @@ pub struct Flight3d {
     pub surface_speed: f64,
     /// 1/τ (1/s); 0 for constant spin.
     pub spin_decay_rate: f64,
+}
+
+/// What the 3-D forces hold fixed over a flight ([`Flight3d`]'s
+/// numbers), for one flight (`f64`) or four in lock-step (`f64x4`).
+#[derive(Clone, Copy, Debug)]
+pub struct SpatialConstants<R> {
+    pub gravity: R,
+    /// The wind's velocity in its layer.
+    pub wind: [R; 3],
+    pub force_per_mass: R,
+    pub reynolds_per_speed: R,
+    /// ω̂ times `model.lift_scale`.
+    pub spin_axis: [R; 3],
+    pub drag_scale: R,
+    /// |ω₀|, r_b·|ω₀| and 1/τ.
+    pub spin_rate: R,
+    pub surface_speed: R,
+    pub spin_decay_rate: R,
+}
+
+impl<R: Real> SpatialConstants<R> {
+    /// V_r = V_w − V_b (Eq. 25), the wind blowing only `in_wind`; |V_r|;
+    /// and Re = 2|V_r|r_b/ν (Eq. 27).
+    #[inline(always)]
+    pub fn air(&self, in_wind: R::Mask, [vx, vy, vz]: [R; 3]) -> ([R; 3], R, R) {
+        let zero = R::splat(0.0);
+        let [wx, wy, wz] = self.wind.map(|w| R::select(in_wind, w, zero));
+        let rel = [wx - vx, wy - vy, wz - vz];
+        let air_speed = (rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2]).sqrt();
+        (rel, air_speed, air_speed * self.reynolds_per_speed)
+    }
+
+    /// The ball's acceleration at time `t` and `velocity`, in the wind or
+    /// not (`in_wind`): see [`Flight3d::acceleration_at`]; C_D is
+    /// `drag(Re, |ω|)`.
+    #[inline(always)]
+    pub fn acceleration(
+        &self,
+        drag: impl Fn(R, R) -> R,
+        lift: &impl LiftCurve,
+        (t, in_wind): (R, R::Mask),
+        [vx, vy, vz]: [R; 3],
+    ) -> [R; 3] {
+        let (spin_rate, surface_speed) = spin_now(
+            (self.spin_rate, self.surface_speed),
+            self.spin_decay_rate,
+            t,
+        );
+        let (rel, air_speed, re) = self.air(in_wind, [vx, vy, vz]);
+        // As in the plane: ρA/(2M_b)·|V_r| ready while C_D is computed.
+        let per_coefficient = scaled(air_speed * self.force_per_mass, self.drag_scale);
+        let along = drag(re, spin_rate) * per_coefficient;
+        // ω̂ × (V_b − V_w) = ω̂ × (−V_r) = V_r × ω̂, scaled by |V_r|.
+        let a = self.spin_axis;
+        let lift_direction = [
+            rel[1] * a[2] - rel[2] * a[1],
+            rel[2] * a[0] - rel[0] * a[2],
+            rel[0] * a[1] - rel[1] * a[0],
+        ];
+        let lift = lift.coefficient_times_speed(air_speed, surface_speed) * self.force_per_mass;
+        let aero: [R; 3] = std::array::from_fn(|i| rel[i] * along + lift_direction[i] * lift);
+        [aero[0], aero[1] - self.gravity, aero[2]]
+    }
 }
 
 impl Flight3d {
@@ -103,11 +167,27 @@ impl Flight3d {
     /// |ω(t)| and r_b·|ω(t)|, decayed as ω₀·e^(−t/τ) if a decay is set.
     #[inline]
     fn spin_at(&self, t: f64) -> (f64, f64) {
-        if self.spin_decay_rate == 0.0 {
-            return (self.spin_rate, self.surface_speed);
+        spin_now(
+            (self.spin_rate, self.surface_speed),
+            self.spin_decay_rate,
+            t,
+        )
+    }
+
+    /// This flight's constants as the generic forces take them.
+    #[inline(always)]
+    pub fn constants(&self) -> SpatialConstants<f64> {
+        SpatialConstants {
+            gravity: self.gravity,
+            wind: self.wind.into(),
+            force_per_mass: self.force_per_mass,
+            reynolds_per_speed: self.reynolds_per_speed,
+            spin_axis: self.spin_axis.into(),
+            drag_scale: self.drag_scale,
+            spin_rate: self.spin_rate,
+            surface_speed: self.surface_speed,
+            spin_decay_rate: self.spin_decay_rate,
         }
-        let remaining = (-t * self.spin_decay_rate).exp();
-        (self.spin_rate * remaining, self.surface_speed * remaining)
     }
 
     /// The ball's acceleration at time `t` and `velocity`: gravity, drag
@@ -117,21 +197,26 @@ impl Flight3d {
     /// curve's piece, as in the plane.
     #[inline]
     pub fn acceleration_at(&self, t: f64, velocity: Vector3<f64>, regime: Regime) -> Vector3<f64> {
-        let (spin_rate, surface_speed) = self.spin_at(t);
-        let rel = self.wind_in(regime.in_wind) - velocity;
-        let air_speed = rel.norm();
-        let re = air_speed * self.reynolds_per_speed;
-        let piece = regime.piece.unwrap_or_else(|| self.drag.piece(re));
-        let drag_coefficient = scaled(
-            self.drag.coefficient_on(piece, re, spin_rate),
-            self.drag_scale,
-        );
-        // ω̂ × (V_b − V_w) = ω̂ × (−V_r) = V_r × ω̂, scaled by |V_r|.
-        let lift_direction = rel.cross(&self.spin_axis);
-        let lift = self.lift.coefficient_times_speed(air_speed, surface_speed);
-        let aero =
-            (rel * (drag_coefficient * air_speed) + lift_direction * lift) * self.force_per_mass;
-        Vector3::new(aero.x, aero.y - self.gravity, aero.z)
+        self.acceleration_with((&self.drag, &self.lift), t, velocity, regime)
+            .into()
+    }
+
+    /// As [`Flight3d::acceleration_at`], with the drag and lift models
+    /// given as their own types (the integration's, compiled for each pair).
+    #[inline(always)]
+    pub fn acceleration_with(
+        &self,
+        (drag, lift): (&impl DragCurve, &impl LiftCurve),
+        t: f64,
+        velocity: Vector3<f64>,
+        regime: Regime,
+    ) -> [f64; 3] {
+        let coefficient = |re: f64, spin_rate: f64| {
+            let piece = regime.piece.unwrap_or_else(|| drag.piece(re));
+            drag.coefficient_on(piece, re, spin_rate)
+        };
+        self.constants()
+            .acceleration(coefficient, lift, (t, regime.in_wind), velocity.into())
     }
 
     /// C_D at time `t` and `velocity`, in or out of the wind.
@@ -148,30 +233,35 @@ impl Dynamics<6> for Flight3d {
     const HEIGHT: usize = HEIGHT;
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
 
-    // Inlined into the integrator's stages, so that only the acceleration
-    // is a call (its velocity and result travel in registers).
+    // Inlined into the integrator's stages, with the models' formulas.
     #[inline(always)]
-    fn derivative(
+    fn derivative_with(
         &self,
+        models: (&impl DragCurve, &impl LiftCurve),
         t: f64,
         state: &State<6>,
         piece: Option<usize>,
         in_wind: bool,
     ) -> State<6> {
-        let a = self.acceleration_at(t, velocity(state), Regime { piece, in_wind });
+        let a = self.acceleration_with(models, t, velocity(state), Regime { piece, in_wind });
         State::<6>::new(
             state[VELOCITY_X],
             state[VERTICAL_VELOCITY],
             state[VELOCITY_Z],
-            a.x,
-            a.y,
-            a.z,
+            a[0],
+            a[1],
+            a[2],
         )
     }
 
     #[inline]
     fn drag(&self) -> DragModel {
         self.drag
+    }
+
+    #[inline]
+    fn lift(&self) -> LiftModel {
+        self.lift
     }
 
     #[inline]

@@ -1,6 +1,6 @@
 //! Fixed-step RK4: the benchmark's comparison for the adaptive integrator.
 
-use super::{Control, DenseStep, Outcome, State, Stats};
+use super::{Control, DenseStep, Outcome, State, Stats, Step, too_small};
 
 /// The classical fixed-step Runge–Kutta method (4th order, four
 /// evaluations a step), with a cubic Hermite continuous extension: the
@@ -17,7 +17,7 @@ pub fn integrate_fixed<const N: usize, F, O>(
 ) -> (Outcome, Stats)
 where
     F: FnMut(f64, &State<N>) -> State<N>,
-    O: FnMut(&DenseStep<N>) -> Control,
+    O: FnMut(&Step<N>) -> Control,
 {
     let mut stats = Stats::default();
     let (mut t, mut y) = (t0, y0);
@@ -28,7 +28,7 @@ where
             return (Outcome::StepLimit, stats);
         }
         let h = step.min(t_end - t);
-        if h <= 16.0 * f64::EPSILON * t.abs().max(1.0) {
+        if too_small(h, t) {
             return (Outcome::ReachedEnd, stats);
         }
         let k2 = f(t + 0.5 * h, &(y + k1 * (0.5 * h)));
@@ -39,7 +39,13 @@ where
         let k_end = f(t + h, &y1);
         stats.evaluations += 4;
         stats.accepted += 1;
-        let dense = DenseStep::new(t, h, (y, y1), (&k1, &k_end), State::<N>::zeros());
+        let dense = Step::of_dense(DenseStep::new(
+            t,
+            h,
+            (y, y1),
+            (&k1, &k_end),
+            State::<N>::zeros(),
+        ));
         let control = observe(&dense);
         if matches!(control, Control::Stop) {
             return (Outcome::Stopped, stats);

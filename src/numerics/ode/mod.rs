@@ -14,12 +14,14 @@ use nalgebra::SVector;
 mod controller;
 mod dense;
 mod fixed;
+pub mod lanes;
+pub mod stages;
 mod tableau;
 
-use controller::{BETA, MAX_FACTOR, MIN_FACTOR, SAFETY, error_norm, initial_step};
-pub use dense::DenseStep;
+use controller::{LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth};
+pub use dense::{DenseStep, Step};
 pub use fixed::integrate_fixed;
-use tableau::*;
+use stages::{dense_c5, error_squared, inverse_scales, stages};
 
 pub type State<const N: usize> = SVector<f64, N>;
 
@@ -41,13 +43,18 @@ impl Tolerance {
     }
 }
 
-/// Work done by one integration.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+/// Work done by one integration, and the first step it found.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
 pub struct Stats {
     /// Right-hand-side evaluations.
     pub evaluations: u32,
     pub accepted: u32,
     pub rejected: u32,
+    /// The step the controller chose after the first accepted one (0 if
+    /// none was): what it found a step near the start may be, so a good
+    /// first step to try for a neighbouring problem
+    /// ([`Settings::initial_step`]).
+    pub first_step: f64,
 }
 
 /// Why an integration ended.
@@ -73,7 +80,7 @@ pub enum Control {
     /// the right-hand side has changed there (the flight has crossed one of
     /// the drag curve's kinks and switched to the formula on its other side).
     /// The observer should have shown itself the step truncated at that time
-    /// ([`DenseStep::truncated`]).
+    /// ([`Step::truncated`]).
     RestartAt(f64),
     /// Go on, ending the next step no later than the given time: the
     /// observer expects an event (a kink, the landing) a little before it,
@@ -91,7 +98,9 @@ pub struct Settings {
     pub tolerance: Tolerance,
     /// Upper bound on tried steps, so that no input can hang a caller.
     pub max_steps: u32,
-    /// First step to try; `None` picks one (Hairer's `hinit`, two evaluations).
+    /// First step to try; `None` picks one (Hairer's `hinit`, two
+    /// evaluations). A neighbouring problem's [`Stats::first_step`] saves
+    /// them, and usually a rejection too.
     pub initial_step: Option<f64>,
     pub max_step: f64,
 }
@@ -107,6 +116,12 @@ impl Settings {
     }
 }
 
+/// Whether a step of size `h` at time `t` is too small to resolve.
+#[inline(always)]
+pub(crate) fn too_small(h: f64, t: f64) -> bool {
+    h <= 16.0 * f64::EPSILON * t.abs().max(1.0)
+}
+
 /// Integrates y' = f(t, y) from (t0, y0) toward `t_end`, showing each
 /// accepted step to `observe`. Never allocates.
 pub fn integrate<const N: usize, F, O>(
@@ -119,7 +134,7 @@ pub fn integrate<const N: usize, F, O>(
 ) -> (Outcome, Stats)
 where
     F: FnMut(f64, &State<N>) -> State<N>,
-    O: FnMut(&DenseStep<N>) -> Control,
+    O: FnMut(&Step<N>) -> Control,
 {
     let tol = settings.tolerance;
     let mut stats = Stats::default();
@@ -128,12 +143,12 @@ where
     let mut k1 = f(t, &y);
     stats.evaluations += 1;
     let mut h = match settings.initial_step {
-        Some(h) => h,
-        None => initial_step(&mut f, t, &y, &k1, settings, &mut stats),
+        Some(h) if h > 0.0 => h,
+        _ => initial_step(&mut f, t, &y, &k1, settings, &mut stats),
     };
-    // ln of the last accepted step's error (floored at 1e-4), for the PI
-    // controller; logarithms make its two powers one exp (pow costs 2×).
-    let mut previous_ln_error: f64 = 1e-4f64.ln();
+    // log₂ of the last accepted step's error (floored at 1e-4), for the PI
+    // controller.
+    let mut previous_log2_error = LOG2_ERROR_FLOOR;
     let mut last_rejected = false;
 
     loop {
@@ -144,57 +159,49 @@ where
             return (Outcome::ReachedEnd, stats);
         }
         h = h.min(settings.max_step).min(t_end - t);
-        if h <= 16.0 * f64::EPSILON * t.abs().max(1.0) {
+        if too_small(h, t) {
             return (Outcome::StepTooSmall, stats);
         }
 
-        let k2 = f(t + C2 * h, &(y + k1 * (A21 * h)));
-        let k3 = f(t + C3 * h, &(y + (k1 * A31 + k2 * A32) * h));
-        let k4 = f(t + C4 * h, &(y + (k1 * A41 + k2 * A42 + k3 * A43) * h));
-        let k5 = f(
-            t + C5 * h,
-            &(y + (k1 * A51 + k2 * A52 + k3 * A53 + k4 * A54) * h),
-        );
-        let k6 = f(
-            t + h,
-            &(y + (k1 * A61 + k2 * A62 + k3 * A63 + k4 * A64 + k5 * A65) * h),
-        );
-        let y1 = y + (k1 * A71 + k3 * A73 + k4 * A74 + k5 * A75 + k6 * A76) * h;
-        let k7 = f(t + h, &y1);
+        let s = stages(&mut f, t, &y, &k1, h);
         stats.evaluations += 6;
+        let inverse = inverse_scales::<f64, _, N>(&y, &s.y1, tol.relative, tol.absolute);
+        let error_squared = error_squared(&k1, &s, h, &inverse);
 
-        let err_vec = (k1 * E1 + k3 * E3 + k4 * E4 + k5 * E5 + k6 * E6 + k7 * E7) * h;
-        let err = error_norm(&err_vec, &y, &y1, tol);
-
-        if err <= 1.0 {
-            // Accept.
-            // err^(0.2 − 0.75β) / previous^β / SAFETY, with err = 0 → 0.
-            let ln_error = err.ln();
-            let fac = ((0.2 - BETA * 0.75) * ln_error - BETA * previous_ln_error).exp() / SAFETY;
-            let fac = fac.clamp(1.0 / MAX_FACTOR, 1.0 / MIN_FACTOR);
-            let mut h_next = h / fac;
+        if error_squared <= 1.0 {
+            let log2_error = log2_error(error_squared);
+            let mut h_next = h * accepted_growth(log2_error, previous_log2_error);
             if last_rejected {
                 h_next = h_next.min(h);
             }
-            let c5 = (k1 * D1 + k3 * D3 + k4 * D4 + k5 * D5 + k6 * D6 + k7 * D7) * h;
-            let step = DenseStep::new(t, h, (y, y1), (&k1, &k7), c5);
+            if stats.accepted == 0 {
+                stats.first_step = h_next;
+            }
             stats.accepted += 1;
-            previous_ln_error = ln_error.max(1e-4f64.ln());
+            previous_log2_error = log2_error.max(LOG2_ERROR_FLOOR);
             last_rejected = false;
-            h = h_next;
+            let k7 = s.k[5];
+            let build = || DenseStep::new(t, h, (y, s.y1), (&k1, &k7), dense_c5(&k1, &s, h));
+            let t1 = t + h;
+            let step = Step::new((t, t1), (y, s.y1), &build);
             let control = observe(&step);
             if matches!(control, Control::Stop) {
                 return (Outcome::Stopped, stats);
             }
-            if let Some(t_restart) = step.restart_time(control) {
-                // One evaluation, where a redone step would cost six.
+            // Where to go on from: inside the step after a switch (one
+            // evaluation, where a redone step would cost six), else its end.
+            let restart = step
+                .restart_time(control)
+                .map(|t_restart| (t_restart, step.at(t_restart)));
+            h = h_next;
+            if let Some((t_restart, y_restart)) = restart {
                 t = t_restart;
-                y = step.at(t);
+                y = y_restart;
                 k1 = f(t, &y);
                 stats.evaluations += 1;
             } else {
-                t = step.t1;
-                y = y1;
+                t = t1;
+                y = s.y1;
                 k1 = k7;
                 if let Control::EndNextBy(t_end_next) = control
                     && t_end_next > t
@@ -205,12 +212,7 @@ where
         } else {
             // Reject: shrink, never below a fifth.
             stats.rejected += 1;
-            let shrink = if err.is_finite() {
-                (err.powf(0.2 - BETA * 0.75) / SAFETY).min(1.0 / MIN_FACTOR)
-            } else {
-                1.0 / MIN_FACTOR
-            };
-            h /= shrink;
+            h *= rejected_growth(log2_error(error_squared));
             last_rejected = true;
         }
     }

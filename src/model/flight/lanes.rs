@@ -1,0 +1,376 @@
+//! The flight's side of the lock-step integrator
+//! ([`crate::numerics::ode::lanes`]): four flights' forces at once (the
+//! same generic formulas as one flight's, on `Lane`), and each lane's
+//! events in scalar code, as a single flight sees them.
+
+use crate::numerics::real::Lane;
+
+use super::events::{Bounds, Events, StepEnds, end_next_by, eventful};
+use super::{Dynamics, Flight, Flight3d, FlightOptions, FlightSummary, Regime};
+use super::{PlanarConstants, SpatialConstants};
+use crate::model::aero::{DragCurve, LiftCurve, WithModels};
+use crate::numerics::ode::lanes::{LANES, LaneStart, LaneSystem, Lanes, integrate_lanes};
+use crate::numerics::ode::{Control, Outcome, Settings, State, Stats, Step};
+
+/// A flight the lanes can carry.
+pub trait LaneFlight<const N: usize>: Dynamics<N> {
+    /// The constants of one flight (`f64`) …
+    type Constants: Copy + Default;
+    /// … and of four, one per lane (`Lane`).
+    type LaneConstants: Copy;
+
+    fn constants_of(&self) -> Self::Constants;
+    fn gather(each: &[Self::Constants; LANES]) -> Self::LaneConstants;
+
+    /// y' of four flights at once: C_D by `drag` on each lane's piece
+    /// (`pieces`, or the piece its Re is on if `None`), C_L by `lift`, in
+    /// the wind where `in_wind`.
+    fn derivative_lanes(
+        constants: &Self::LaneConstants,
+        models: (&impl DragCurve, &impl LiftCurve),
+        regime: (Option<Lane>, Lane),
+        t: Lane,
+        y: &Lanes<N>,
+    ) -> Lanes<N>;
+
+    /// The Reynolds number of four flights at `y`, in the wind where
+    /// `in_wind`.
+    fn reynolds_lanes(constants: &Self::LaneConstants, in_wind: Lane, y: &Lanes<N>) -> Lane;
+}
+
+/// Each lane's value of one constant.
+#[inline]
+fn lanes_of<C>(each: &[C; LANES], field: impl Fn(&C) -> f64) -> Lane {
+    Lane::new(std::array::from_fn(|j| field(&each[j])))
+}
+
+impl Default for PlanarConstants<f64> {
+    fn default() -> Self {
+        Flight::new(&crate::model::scene::Scene::default(), 0.0).constants()
+    }
+}
+
+impl LaneFlight<4> for Flight {
+    type Constants = PlanarConstants<f64>;
+    type LaneConstants = PlanarConstants<Lane>;
+
+    fn constants_of(&self) -> Self::Constants {
+        self.constants()
+    }
+
+    fn gather(each: &[Self::Constants; LANES]) -> Self::LaneConstants {
+        PlanarConstants {
+            gravity: lanes_of(each, |c| c.gravity),
+            wind: lanes_of(each, |c| c.wind),
+            force_per_mass: lanes_of(each, |c| c.force_per_mass),
+            reynolds_per_speed: lanes_of(each, |c| c.reynolds_per_speed),
+            surface_speed: lanes_of(each, |c| c.surface_speed),
+            spin_rate: lanes_of(each, |c| c.spin_rate),
+            spin_decay_rate: lanes_of(each, |c| c.spin_decay_rate),
+            spin_sign: lanes_of(each, |c| c.spin_sign),
+            drag_scale: lanes_of(each, |c| c.drag_scale),
+        }
+    }
+
+    #[inline(always)]
+    fn derivative_lanes(
+        c: &Self::LaneConstants,
+        (drag, lift): (&impl DragCurve, &impl LiftCurve),
+        (pieces, _): (Option<Lane>, Lane),
+        t: Lane,
+        y: &Lanes<4>,
+    ) -> Lanes<4> {
+        let coefficient = |re: Lane, spin_rate: Lane| {
+            drag.coefficient_lanes(
+                pieces.unwrap_or_else(|| drag.piece_lanes(re)),
+                re,
+                spin_rate,
+            )
+        };
+        let [_, _, vx, vy] = y.0;
+        let (ax, ay) = c.acceleration(coefficient, lift, t, (vx, vy));
+        Lanes([vx, vy, ax, ay])
+    }
+
+    #[inline(always)]
+    fn reynolds_lanes(c: &Self::LaneConstants, _: Lane, y: &Lanes<4>) -> Lane {
+        c.air((y.0[2], y.0[3])).2
+    }
+}
+
+impl Default for SpatialConstants<f64> {
+    fn default() -> Self {
+        let scene = crate::model::scene::Scene::default();
+        Flight3d::new(&scene, nalgebra::Vector3::zeros()).constants()
+    }
+}
+
+impl LaneFlight<6> for Flight3d {
+    type Constants = SpatialConstants<f64>;
+    type LaneConstants = SpatialConstants<Lane>;
+
+    fn constants_of(&self) -> Self::Constants {
+        self.constants()
+    }
+
+    fn gather(each: &[Self::Constants; LANES]) -> Self::LaneConstants {
+        SpatialConstants {
+            gravity: lanes_of(each, |c| c.gravity),
+            wind: std::array::from_fn(|i| lanes_of(each, |c| c.wind[i])),
+            force_per_mass: lanes_of(each, |c| c.force_per_mass),
+            reynolds_per_speed: lanes_of(each, |c| c.reynolds_per_speed),
+            spin_axis: std::array::from_fn(|i| lanes_of(each, |c| c.spin_axis[i])),
+            drag_scale: lanes_of(each, |c| c.drag_scale),
+            spin_rate: lanes_of(each, |c| c.spin_rate),
+            surface_speed: lanes_of(each, |c| c.surface_speed),
+            spin_decay_rate: lanes_of(each, |c| c.spin_decay_rate),
+        }
+    }
+
+    #[inline(always)]
+    fn derivative_lanes(
+        c: &Self::LaneConstants,
+        (drag, lift): (&impl DragCurve, &impl LiftCurve),
+        (pieces, in_wind): (Option<Lane>, Lane),
+        t: Lane,
+        y: &Lanes<6>,
+    ) -> Lanes<6> {
+        let coefficient = |re: Lane, spin_rate: Lane| {
+            drag.coefficient_lanes(
+                pieces.unwrap_or_else(|| drag.piece_lanes(re)),
+                re,
+                spin_rate,
+            )
+        };
+        let [_, _, _, vx, vy, vz] = y.0;
+        let [ax, ay, az] = c.acceleration(coefficient, lift, (t, in_wind), [vx, vy, vz]);
+        Lanes([vx, vy, vz, ax, ay, az])
+    }
+
+    #[inline(always)]
+    fn reynolds_lanes(c: &Self::LaneConstants, in_wind: Lane, y: &Lanes<6>) -> Lane {
+        c.air(in_wind, [y.0[3], y.0[4], y.0[5]]).2
+    }
+}
+
+/// One flight for the lanes: its position in the caller's list, its
+/// forces, and where it starts and how long it is followed.
+pub struct LaneJob<const N: usize, D> {
+    pub index: usize,
+    pub flight: D,
+    pub start: State<N>,
+    pub time_limit: f64,
+}
+
+/// Shows a flight's step (by the flight's index) to a watcher.
+pub type LaneWatch<'r, const N: usize> = &'r mut dyn FnMut(usize, &Step<N>);
+
+/// What the caller is told: each step of a flight (if it watches), and
+/// each flight's summary, by the flight's index.
+pub struct LaneReports<'r, const N: usize> {
+    pub watch: Option<LaneWatch<'r, N>>,
+    pub done: &'r mut dyn FnMut(usize, FlightSummary),
+}
+
+/// Four flights' worth of lanes, with their events, fed from `jobs`.
+struct FlightLanes<'r, const N: usize, D: LaneFlight<N>, Dr, L, J> {
+    models: (Dr, L),
+    stop_at_kinks: bool,
+    /// Whether the lanes switch drag pieces at the kinks (else each
+    /// evaluation takes the piece its Re is on).
+    switching: bool,
+    each: [D::Constants; LANES],
+    constants: D::LaneConstants,
+    /// Each lane's regime: its drag piece (a float) and whether it is in
+    /// the wind (a lane mask), and what the regime bounds.
+    pieces: Lane,
+    in_wind: Lane,
+    bounds: Bounds<Lane>,
+    events: [Option<Events<N, D>>; LANES],
+    index: [usize; LANES],
+    jobs: J,
+    reports: LaneReports<'r, N>,
+}
+
+/// All ones where `in_wind`, the lane mask's truth.
+fn mask(in_wind: bool) -> f64 {
+    f64::from_bits(if in_wind { u64::MAX } else { 0 })
+}
+
+impl<const N: usize, D: LaneFlight<N>, Dr, L, J> FlightLanes<'_, N, D, Dr, L, J> {
+    /// Lane `j`'s regime from its events.
+    fn set_regime(&mut self, j: usize, (regime, bounds): (Regime, Bounds<f64>)) {
+        let set = |v: &mut Lane, x: f64| v.as_mut_array()[j] = x;
+        set(&mut self.pieces, regime.piece.unwrap_or_default() as f64);
+        set(&mut self.in_wind, mask(regime.in_wind));
+        set(&mut self.bounds.kink_below, bounds.kink_below);
+        set(&mut self.bounds.kink_above, bounds.kink_above);
+        set(&mut self.bounds.wind_height, bounds.wind_height);
+        self.bounds.in_wind = self.in_wind;
+    }
+}
+
+impl<const N: usize, D, Dr, L, J> LaneSystem<N> for FlightLanes<'_, N, D, Dr, L, J>
+where
+    D: LaneFlight<N>,
+    Dr: DragCurve,
+    L: LiftCurve,
+    J: Iterator<Item = LaneJob<N, D>>,
+{
+    #[inline(always)]
+    fn derivative(&self, t: Lane, y: &Lanes<N>) -> Lanes<N> {
+        let pieces = self.switching.then_some(self.pieces);
+        D::derivative_lanes(
+            &self.constants,
+            (&self.models.0, &self.models.1),
+            (pieces, self.in_wind),
+            t,
+            y,
+        )
+    }
+
+    fn derivative_lane(&self, lane: usize, t: f64, y: &State<N>) -> State<N> {
+        match &self.events[lane] {
+            Some(events) => {
+                let Regime { piece, in_wind } = events.regime();
+                let models = (&self.models.0, &self.models.1);
+                events
+                    .flight()
+                    .derivative_with(models, t, y, piece, in_wind)
+            }
+            None => State::<N>::zeros(),
+        }
+    }
+
+    fn observe(&mut self, lane: usize, step: &Step<N>) -> Control {
+        let Some(events) = self.events[lane].as_mut() else {
+            return Control::Stop;
+        };
+        let index = self.index[lane];
+        let control = match self.reports.watch.as_mut() {
+            Some(watch) => events.observe(step, &mut |s: &Step<N>| watch(index, s)),
+            None => events.observe(step, &mut |_: &Step<N>| {}),
+        };
+        let regime = (events.regime(), events.bounds());
+        self.set_regime(lane, regime);
+        control
+    }
+
+    #[inline(always)]
+    fn quiet(
+        &mut self,
+        accepted: Lane,
+        (t1, h): (Lane, Lane),
+        (y0, y1): (&Lanes<N>, &Lanes<N>),
+    ) -> (Lane, Lane) {
+        if self.reports.watch.is_some() {
+            // The watch sees every step.
+            return (Lane::ZERO, Lane::splat(f64::INFINITY));
+        }
+        let reynolds = if self.switching {
+            (
+                D::reynolds_lanes(&self.constants, self.in_wind, y0),
+                D::reynolds_lanes(&self.constants, self.in_wind, y1),
+            )
+        } else {
+            (Lane::ZERO, Lane::ZERO)
+        };
+        let ends = StepEnds {
+            t1,
+            h,
+            heights: (y0.0[D::HEIGHT], y1.0[D::HEIGHT]),
+            vertical_velocities: (y0.0[D::VERTICAL_VELOCITY], y1.0[D::VERTICAL_VELOCITY]),
+            reynolds,
+        };
+        let quiet = accepted & !eventful(&ends, &self.bounds);
+        (quiet, end_next_by(&ends, &self.bounds))
+    }
+
+    fn finish(&mut self, lane: usize, outcome: Outcome, stats: Stats, end: (f64, State<N>)) {
+        if let Some(mut events) = self.events[lane].take() {
+            // Quiet steps were not shown to it: the flight's last point.
+            events.last = end;
+            (self.reports.done)(
+                self.index[lane],
+                events.summary(outcome == Outcome::Stopped, stats),
+            );
+        }
+    }
+
+    fn refill(&mut self, lane: usize) -> Option<LaneStart<N>> {
+        let job = self.jobs.next()?;
+        let events = Events::new(job.flight, &job.start, self.stop_at_kinks);
+        self.set_regime(lane, (events.regime(), events.bounds()));
+        self.events[lane] = Some(events);
+        self.index[lane] = job.index;
+        self.each[lane] = job.flight.constants_of();
+        self.constants = D::gather(&self.each);
+        Some(LaneStart {
+            t0: 0.0,
+            y0: job.start,
+            t_end: job.time_limit,
+        })
+    }
+}
+
+/// Flies `jobs` in lock-step, four at a time, every flight with the
+/// models of the first (the caller groups them so), reporting to
+/// `reports`: each as [`super::fly`] would fly it alone, to its tolerance.
+pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
+    jobs: impl Iterator<Item = LaneJob<N, D>>,
+    options: &FlightOptions,
+    reports: LaneReports<'_, N>,
+) {
+    let mut jobs = jobs.peekable();
+    let Some(first) = jobs.peek() else {
+        return;
+    };
+    let (drag, lift) = (first.flight.drag(), first.flight.lift());
+    let run = Run {
+        jobs,
+        options: *options,
+        reports,
+        flight: std::marker::PhantomData,
+    };
+    drag.with_lift(lift, run);
+}
+
+/// [`fly_lanes`] once the models are known.
+struct Run<'r, const N: usize, D, J> {
+    jobs: J,
+    options: FlightOptions,
+    reports: LaneReports<'r, N>,
+    flight: std::marker::PhantomData<D>,
+}
+
+impl<const N: usize, D, J> WithModels for Run<'_, N, D, J>
+where
+    D: LaneFlight<N>,
+    J: Iterator<Item = LaneJob<N, D>>,
+{
+    type Output = ();
+
+    fn run<Dr: DragCurve + Copy, L: LiftCurve + Copy>(self, drag: Dr, lift: L) {
+        let stop_at_kinks = self.options.stop_at_kinks;
+        let mut lanes = FlightLanes {
+            models: (drag, lift),
+            stop_at_kinks,
+            switching: stop_at_kinks && !drag.kinks().is_empty(),
+            each: [D::Constants::default(); LANES],
+            constants: D::gather(&[D::Constants::default(); LANES]),
+            pieces: Lane::ZERO,
+            in_wind: Lane::ZERO,
+            bounds: Bounds {
+                kink_below: Lane::ZERO,
+                kink_above: Lane::ZERO,
+                wind_height: Lane::ZERO,
+                in_wind: Lane::ZERO,
+            },
+            events: [const { None }; LANES],
+            index: [0; LANES],
+            jobs: self.jobs,
+            reports: self.reports,
+        };
+        integrate_lanes(&mut lanes, &Settings::new(self.options.tolerance));
+    }
+}

@@ -1,0 +1,169 @@
+//! Many flights at once: [`fly_many`] flies a list of scene flights in
+//! lock-step, four at a time ([`super::flight::lanes`]), each as
+//! [`SceneFlight::fly`] would alone, to the same tolerance; [`judge_many`]
+//! also finds where each crosses its fences, as
+//! [`SceneFlight::fly_to_fences`] does.
+//!
+//! The flights are grouped by kind (planar or 3-D) and aero models, each
+//! group flown by lanes compiled for its models; within a group they are
+//! flown in the list's order, a lane that finishes taking the next, with
+//! the first step its neighbours found. Results come in the order the
+//! flights finish, each with its index in the list.
+
+use super::clearing::{Crossing, watch_fences};
+use super::flight::lanes::{LaneJob, LaneReports, fly_lanes};
+use super::flight::{FlightOptions, FlightSummary, Start};
+use super::launch::SceneFlight;
+use super::park::Fence;
+
+/// Flies every flight of `flights`, calling `done(index, summary)` for
+/// each as it finishes (`index` its place in `flights`).
+pub fn fly_many(
+    flights: impl IntoIterator<Item = SceneFlight>,
+    options: &FlightOptions,
+    mut done: impl FnMut(usize, FlightSummary),
+) {
+    let flights: Vec<SceneFlight> = flights.into_iter().collect();
+    for group in groups(&flights) {
+        fly_group(&flights, &group, options, None, &mut done);
+    }
+}
+
+/// As [`fly_many`], each flight taken to its fences (`fences[k]` for the
+/// k-th flight): `done(index, summary, crossings)` is told where the ball's
+/// track first crossed each of its fences, as
+/// [`SceneFlight::fly_to_fences`] tells it.
+pub fn judge_many<'f>(
+    flights: impl IntoIterator<Item = (SceneFlight, &'f [&'f Fence])>,
+    options: &FlightOptions,
+    mut done: impl FnMut(usize, FlightSummary, &[Option<Crossing>]),
+) {
+    let (flights, fences): (Vec<SceneFlight>, Vec<&[&Fence]>) = flights.into_iter().unzip();
+    // One slot per fence per flight, each flight's at its offset.
+    let mut offsets = Vec::with_capacity(fences.len() + 1);
+    offsets.push(0);
+    for f in &fences {
+        offsets.push(offsets.last().copied().unwrap_or(0) + f.len());
+    }
+    let mut crossings = vec![None; offsets.last().copied().unwrap_or(0)];
+    for group in groups(&flights) {
+        let crossings = std::cell::RefCell::new(&mut crossings);
+        let mut watch = |index: usize, step: &dyn WatchedStep| {
+            let mut all = crossings.borrow_mut();
+            let mine = &mut all[offsets[index]..offsets[index + 1]];
+            step.watch(&flights[index], fences[index], mine);
+        };
+        let mut finished = |index: usize, summary: FlightSummary| {
+            let all = crossings.borrow();
+            done(index, summary, &all[offsets[index]..offsets[index + 1]]);
+        };
+        fly_group(&flights, &group, options, Some(&mut watch), &mut finished);
+    }
+}
+
+/// Shows a step of either kind (by its flight's index) to the fences.
+type FencesWatch<'w> = &'w mut dyn FnMut(usize, &dyn WatchedStep);
+
+/// A step of either kind of flight, for the fences' watch.
+trait WatchedStep {
+    fn watch(&self, flight: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]);
+}
+
+impl WatchedStep for crate::numerics::ode::Step<'_, 4> {
+    fn watch(&self, flight: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
+        if let SceneFlight::Planar { plane, .. } = flight {
+            let (sin, cos) = plane.sin_cos();
+            watch_fences(self, fences, crossings, |s| [s[0] * cos, s[0] * sin, s[1]]);
+        }
+    }
+}
+
+impl WatchedStep for crate::numerics::ode::Step<'_, 6> {
+    fn watch(&self, _: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
+        watch_fences(self, fences, crossings, |s| [s[0], s[2], s[1]]);
+    }
+}
+
+/// The indices of `flights` of each kind and pair of models, in order.
+fn groups(flights: &[SceneFlight]) -> Vec<Vec<usize>> {
+    let key = |f: &SceneFlight| match f {
+        SceneFlight::Planar { flight, .. } => (true, flight.drag, flight.lift),
+        SceneFlight::Spatial { flight, .. } => (false, flight.drag, flight.lift),
+    };
+    let mut groups: Vec<(_, Vec<usize>)> = Vec::new();
+    for (index, flight) in flights.iter().enumerate() {
+        let k = key(flight);
+        match groups.iter_mut().find(|(g, _)| *g == k) {
+            Some((_, members)) => members.push(index),
+            None => groups.push((k, vec![index])),
+        }
+    }
+    groups.into_iter().map(|(_, members)| members).collect()
+}
+
+/// Flies one group (all planar or all 3-D, with the same models).
+fn fly_group(
+    flights: &[SceneFlight],
+    group: &[usize],
+    options: &FlightOptions,
+    mut watch: Option<FencesWatch<'_>>,
+    done: &mut dyn FnMut(usize, FlightSummary),
+) {
+    let planar = group
+        .first()
+        .is_some_and(|&index| flights[index].is_planar());
+    if planar {
+        let jobs = group.iter().filter_map(|&index| match flights[index] {
+            SceneFlight::Planar { flight, launch, .. } => Some(LaneJob {
+                index,
+                flight,
+                start: launch.state(),
+                time_limit: launch.time_limit(flight.gravity),
+            }),
+            SceneFlight::Spatial { .. } => None,
+        });
+        let mut step_watch = watch
+            .as_mut()
+            .map(|w| move |index: usize, step: &crate::numerics::ode::Step<4>| w(index, step));
+        let mut finished = |index: usize, summary: FlightSummary| {
+            let direction = match flights[index] {
+                SceneFlight::Planar { plane, .. } => plane,
+                SceneFlight::Spatial { .. } => summary.direction,
+            };
+            done(
+                index,
+                FlightSummary {
+                    direction,
+                    ..summary
+                },
+            );
+        };
+        let reports = LaneReports {
+            watch: step_watch
+                .as_mut()
+                .map(|w| w as &mut dyn FnMut(usize, &crate::numerics::ode::Step<4>)),
+            done: &mut finished,
+        };
+        fly_lanes(jobs, options, reports);
+    } else {
+        let jobs = group.iter().filter_map(|&index| match flights[index] {
+            SceneFlight::Spatial { flight, launch } => Some(LaneJob {
+                index,
+                flight,
+                start: launch.state(),
+                time_limit: launch.time_limit(flight.gravity),
+            }),
+            SceneFlight::Planar { .. } => None,
+        });
+        let mut step_watch = watch
+            .as_mut()
+            .map(|w| move |index: usize, step: &crate::numerics::ode::Step<6>| w(index, step));
+        let reports = LaneReports {
+            watch: step_watch
+                .as_mut()
+                .map(|w| w as &mut dyn FnMut(usize, &crate::numerics::ode::Step<6>)),
+            done,
+        };
+        fly_lanes(jobs, options, reports);
+    }
+}

@@ -1,0 +1,384 @@
+//! Independent problems integrated in lock-step ([`LANES`] at a time): one state per lane
+//! of `wide` vectors ([`Lane`]) (struct of arrays), each lane with its own time,
+//! step size and controller, so that the stages of their steps run as one
+//! chain of vector operations where a single problem's steps would wait on
+//! each other. A lane whose step is rejected retries while the others go
+//! on; a lane whose problem ends takes the next one ([`LaneSystem::refill`]),
+//! starting with its neighbour's first step.
+//!
+//! The step's arithmetic is [`super::stages`]'s, the controller's
+//! [`super::controller`]'s, the same as the single integrator's; what
+//! happens between steps (events, the dense output where one falls) is the
+//! system's, lane by lane, in scalar code.
+
+use std::ops::{Add, Mul, Sub};
+
+use super::controller::{
+    LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth,
+};
+use super::stages::{Stages, Vector, dense_c5, error_squared, inverse_scales, stages};
+use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, too_small};
+
+pub use crate::numerics::real::{LANES, Lane};
+
+/// The states (or slopes) of four problems: component i of lane j is
+/// `self.0[i]`'s lane j.
+#[derive(Clone, Copy, Debug)]
+pub struct Lanes<const N: usize>(pub [Lane; N]);
+
+impl<const N: usize> Lanes<N> {
+    pub const ZERO: Self = Lanes([Lane::ZERO; N]);
+
+    /// Lane `j`'s state.
+    #[inline(always)]
+    pub fn lane(&self, j: usize) -> State<N> {
+        State::<N>::from_fn(|i, _| self.0[i].as_array()[j])
+    }
+
+    /// Sets lane `j` to `state`.
+    #[inline(always)]
+    pub fn set_lane(&mut self, j: usize, state: &State<N>) {
+        for (i, component) in self.0.iter_mut().enumerate() {
+            component.as_mut_array()[j] = state[i];
+        }
+    }
+
+    /// `if_true`'s lanes where `mask` holds, `if_false`'s elsewhere.
+    #[inline(always)]
+    pub fn select(mask: Lane, if_true: &Self, if_false: &Self) -> Self {
+        Lanes(std::array::from_fn(|i| {
+            mask.select(if_true.0[i], if_false.0[i])
+        }))
+    }
+}
+
+impl<const N: usize> Add for Lanes<N> {
+    type Output = Self;
+    #[inline(always)]
+    fn add(self, other: Self) -> Self {
+        Lanes(std::array::from_fn(|i| self.0[i] + other.0[i]))
+    }
+}
+
+impl<const N: usize> Sub for Lanes<N> {
+    type Output = Self;
+    #[inline(always)]
+    fn sub(self, other: Self) -> Self {
+        Lanes(std::array::from_fn(|i| self.0[i] - other.0[i]))
+    }
+}
+
+impl<const N: usize> Mul<Lane> for Lanes<N> {
+    type Output = Self;
+    #[inline(always)]
+    fn mul(self, factor: Lane) -> Self {
+        Lanes(self.0.map(|c| c * factor))
+    }
+}
+
+impl<const N: usize> Vector<Lane> for Lanes<N> {
+    const DIM: usize = N;
+    #[inline(always)]
+    fn component(&self, i: usize) -> Lane {
+        self.0[i]
+    }
+}
+
+/// Where a lane's next problem starts.
+#[derive(Clone, Copy, Debug)]
+pub struct LaneStart<const N: usize> {
+    pub t0: f64,
+    pub y0: State<N>,
+    pub t_end: f64,
+}
+
+/// What the lock-step integrator needs of the problems it carries.
+pub trait LaneSystem<const N: usize> {
+    /// y' for every lane at once, each lane in its own problem.
+    fn derivative(&self, t: Lane, y: &Lanes<N>) -> Lanes<N>;
+    /// y' of lane `lane`'s problem alone (a restart's, a first step's).
+    fn derivative_lane(&self, lane: usize, t: f64, y: &State<N>) -> State<N>;
+    /// Sees lane `lane`'s accepted step, as the single integrator's
+    /// observer does (the right-hand side it reads may change here).
+    fn observe(&mut self, lane: usize, step: &Step<N>) -> Control;
+    /// Of the lanes whose steps were accepted (`accepted`), those whose
+    /// steps need no observer one by one (nothing happens inside them),
+    /// and for those the time by which their next steps should end (+∞
+    /// for no limit): as [`Control::EndNextBy`] or [`Control::Continue`]
+    /// would say, for all lanes at once. By default, none.
+    fn quiet(
+        &mut self,
+        accepted: Lane,
+        (t1, h): (Lane, Lane),
+        (y0, y1): (&Lanes<N>, &Lanes<N>),
+    ) -> (Lane, Lane) {
+        let _ = (accepted, t1, h, y0, y1);
+        (Lane::ZERO, Lane::splat(f64::INFINITY))
+    }
+    /// Lane `lane`'s problem has ended, at (t, y) = `end`.
+    fn finish(&mut self, lane: usize, outcome: Outcome, stats: Stats, end: (f64, State<N>));
+    /// The next problem for lane `lane` (its right-hand side set up), or
+    /// `None` when there is none left.
+    fn refill(&mut self, lane: usize) -> Option<LaneStart<N>>;
+}
+
+/// One lane's bookkeeping.
+#[derive(Clone, Copy, Debug, Default)]
+struct LaneState {
+    active: bool,
+    stats: Stats,
+    last_rejected: bool,
+    t_end: f64,
+}
+
+/// The lanes' times, states, slopes, step sizes and controllers.
+struct Carried<const N: usize> {
+    t: Lane,
+    y: Lanes<N>,
+    k1: Lanes<N>,
+    h: Lane,
+    previous_log2_error: Lane,
+    lanes: [LaneState; LANES],
+    /// Lanes whose slope k1 is to be evaluated (a new problem, or a
+    /// restart), and among them those that need a first step.
+    fresh: [bool; LANES],
+    needs_first_step: [bool; LANES],
+    /// The last first step a problem found: its neighbours' to try.
+    neighbour_step: Option<f64>,
+}
+
+/// Sets one lane of a vector.
+#[inline(always)]
+fn set(v: &mut Lane, j: usize, x: f64) {
+    v.as_mut_array()[j] = x;
+}
+
+impl<const N: usize> Carried<N> {
+    /// Takes lane `j`'s next problem, or idles it.
+    fn refill<S: LaneSystem<N>>(&mut self, system: &mut S, j: usize) {
+        self.lanes[j] = LaneState::default();
+        self.fresh[j] = false;
+        let Some(start) = system.refill(j) else {
+            return;
+        };
+        self.lanes[j] = LaneState {
+            active: true,
+            t_end: start.t_end,
+            ..LaneState::default()
+        };
+        set(&mut self.t, j, start.t0);
+        self.y.set_lane(j, &start.y0);
+        set(&mut self.previous_log2_error, j, LOG2_ERROR_FLOOR);
+        self.fresh[j] = true;
+        match self.neighbour_step {
+            Some(h) => set(&mut self.h, j, h),
+            None => self.needs_first_step[j] = true,
+        }
+    }
+
+    /// Ends lane `j`'s problem and takes the next.
+    fn finish<S: LaneSystem<N>>(&mut self, system: &mut S, j: usize, outcome: Outcome) {
+        let end = (self.t.as_array()[j], self.y.lane(j));
+        system.finish(j, outcome, self.lanes[j].stats, end);
+        self.refill(system, j);
+    }
+
+    /// Evaluates k1 for the fresh lanes (one evaluation for all), and the
+    /// first step of those that have none (Hairer's guess, one more).
+    fn start_fresh<S: LaneSystem<N>>(&mut self, system: &S, settings: &Settings) {
+        let count = self.fresh.iter().filter(|&&fresh| fresh).count();
+        if count == 0 {
+            return;
+        }
+        // One lane (a restart, mostly) by itself; several at once.
+        let all = (count > 1).then(|| system.derivative(self.t, &self.y));
+        for j in 0..LANES {
+            if self.fresh[j] {
+                let k = match &all {
+                    Some(k) => k.lane(j),
+                    None => system.derivative_lane(j, self.t.as_array()[j], &self.y.lane(j)),
+                };
+                self.k1.set_lane(j, &k);
+                self.lanes[j].stats.evaluations += 1;
+            }
+        }
+        self.fresh = [false; LANES];
+        // Hairer's guess for the lanes that have no neighbour's first step.
+        for j in 0..LANES {
+            if self.needs_first_step[j] {
+                let (t0, y0, k1) = (self.t.as_array()[j], self.y.lane(j), self.k1.lane(j));
+                let mut f = |t: f64, y: &State<N>| system.derivative_lane(j, t, y);
+                let h = initial_step(&mut f, t0, &y0, &k1, settings, &mut self.lanes[j].stats);
+                set(&mut self.h, j, h);
+                self.needs_first_step[j] = false;
+            }
+        }
+    }
+}
+
+/// Integrates the system's problems, four at a time, until it has no more:
+/// each as [`super::integrate`] would, with `settings` for all (its
+/// `initial_step`, if given, for the first four). Never allocates.
+pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, settings: &Settings) {
+    let tol = settings.tolerance;
+    let (relative, absolute) = (Lane::splat(tol.relative), Lane::splat(tol.absolute));
+    let mut c = Carried {
+        t: Lane::ZERO,
+        y: Lanes::ZERO,
+        k1: Lanes::ZERO,
+        h: Lane::ZERO,
+        previous_log2_error: Lane::splat(LOG2_ERROR_FLOOR),
+        lanes: [LaneState::default(); LANES],
+        fresh: [false; LANES],
+        needs_first_step: [false; LANES],
+        neighbour_step: settings.initial_step.filter(|&h| h > 0.0),
+    };
+    for j in 0..LANES {
+        c.refill(system, j);
+    }
+    loop {
+        c.start_fresh(system, settings);
+        // Each lane's limits, as the single integrator checks them.
+        let mut h = c.h.to_array();
+        let t = c.t.to_array();
+        let mut any_ended = false;
+        for j in 0..LANES {
+            let lane = &c.lanes[j];
+            if !lane.active {
+                h[j] = 0.0;
+                continue;
+            }
+            let ended = if lane.stats.accepted + lane.stats.rejected >= settings.max_steps {
+                Some(Outcome::StepLimit)
+            } else if t[j] >= lane.t_end {
+                Some(Outcome::ReachedEnd)
+            } else {
+                h[j] = h[j].min(settings.max_step).min(lane.t_end - t[j]);
+                too_small(h[j], t[j]).then_some(Outcome::StepTooSmall)
+            };
+            if let Some(outcome) = ended {
+                c.finish(system, j, outcome);
+                any_ended = true;
+            }
+        }
+        if any_ended {
+            // The new problems' slopes first.
+            continue;
+        }
+        if !c.lanes.iter().any(|lane| lane.active) {
+            return;
+        }
+        let h = Lane::new(h);
+        c.h = h;
+        let (t0, y0, k1) = (c.t, c.y, c.k1);
+        let s = stages(
+            &mut |t, y: &Lanes<N>| system.derivative(t, y),
+            t0,
+            &y0,
+            &k1,
+            h,
+        );
+        let inverse = inverse_scales::<Lane, _, N>(&y0, &s.y1, relative, absolute);
+        let error_squared = error_squared(&k1, &s, h, &inverse);
+        let log2 = log2_error(error_squared);
+        let accepted = error_squared.simd_le(Lane::ONE);
+        let grown = h * accepted_growth(log2, c.previous_log2_error);
+        let h_accepted = Lane::from_bits(c.last_rejected_bits()).select(grown.min(h), grown);
+        let mut h_next = accepted.select(h_accepted, h * rejected_growth(log2));
+        let t1 = t0 + h;
+        let (quiet, end_by) = system.quiet(accepted, (t1, h), (&y0, &s.y1));
+        let quiet = quiet & accepted;
+        let limited = quiet & t1.simd_lt(end_by);
+        let h_first = h_next.to_array();
+        h_next = limited.select(h_next.min(end_by - t1), h_next);
+        c.previous_log2_error = accepted.select(
+            log2.max(Lane::splat(LOG2_ERROR_FLOOR)),
+            c.previous_log2_error,
+        );
+        // Accepted lanes move to the step's end, unless their observer
+        // says otherwise below.
+        c.t = accepted.select(t1, t0);
+        c.y = Lanes::select(accepted, &s.y1, &y0);
+        c.k1 = Lanes::select(accepted, &s.k[5], &k1);
+        c.h = h_next;
+        let (accepted, quiet) = (accepted.to_bitmask(), quiet.to_bitmask());
+        let (h_all, t1_all) = (h.to_array(), t1.to_array());
+        for j in 0..LANES {
+            if !c.lanes[j].active {
+                continue;
+            }
+            let lane = &mut c.lanes[j];
+            lane.stats.evaluations += 6;
+            if accepted & (1 << j) == 0 {
+                lane.stats.rejected += 1;
+                lane.last_rejected = true;
+                continue;
+            }
+            if lane.stats.accepted == 0 {
+                lane.stats.first_step = h_first[j];
+                c.neighbour_step = Some(h_first[j]);
+            }
+            lane.stats.accepted += 1;
+            lane.last_rejected = false;
+            if quiet & (1 << j) != 0 {
+                continue;
+            }
+            let (t0j, hj) = (t0.as_array()[j], h_all[j]);
+            let y0j = y0.lane(j);
+            let y1j = s.y1.lane(j);
+            let build = || lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s);
+            let step = Step::new((t0j, t1_all[j]), (y0j, y1j), &build);
+            let control = system.observe(j, &step);
+            match control {
+                Control::Stop => {
+                    c.finish(system, j, Outcome::Stopped);
+                    continue;
+                }
+                Control::RestartAt(_) => {
+                    if let Some(time) = step.restart_time(control) {
+                        let at = step.at(time);
+                        set(&mut c.t, j, time);
+                        c.y.set_lane(j, &at);
+                        c.fresh[j] = true;
+                    }
+                }
+                Control::EndNextBy(t_end_next) if t_end_next > t1_all[j] => {
+                    set(&mut c.h, j, h_first[j].min(t_end_next - t1_all[j]));
+                }
+                _ => {}
+            }
+        }
+    }
+}
+
+impl<const N: usize> Carried<N> {
+    /// All ones in the lanes whose last step was rejected.
+    #[inline(always)]
+    fn last_rejected_bits(&self) -> wide::u64x4 {
+        wide::u64x4::new(std::array::from_fn(|j| {
+            if self.lanes[j].last_rejected {
+                u64::MAX
+            } else {
+                0
+            }
+        }))
+    }
+}
+
+/// Lane `j`'s continuous extension over its step from (t0, y0) to y1.
+fn lane_dense<const N: usize>(
+    j: usize,
+    t0: f64,
+    h: f64,
+    (y0, y1): (&State<N>, &State<N>),
+    k1: &Lanes<N>,
+    s: &Stages<Lanes<N>>,
+) -> DenseStep<N> {
+    let k1 = k1.lane(j);
+    let lane = Stages {
+        k: s.k.map(|k| k.lane(j)),
+        y1: *y1,
+    };
+    let c5 = dense_c5(&k1, &lane, h);
+    DenseStep::new(t0, h, (*y0, *y1), (&k1, &lane.k[5]), c5)
+}
