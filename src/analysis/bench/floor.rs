@@ -15,6 +15,7 @@ use serde::Serialize;
 use super::{Effort, TRAJECTORY_BATCH, fastball_launch, stated_mixed, time_median};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study::{self, Grid};
+use crate::model::aero::{DragCurve, LiftCurve, WithModels};
 use crate::model::flight::{self, Dynamics, Flight3d, FlightOptions};
 use crate::model::launch::{BattedBall, SceneFlight, height_at_distance};
 use crate::model::scene::Scene;
@@ -79,25 +80,52 @@ pub fn floor_us(evaluations: u64, nanoseconds: f64) -> f64 {
 /// Euler along `flight` from `starts` (one lane each, taken in turn), for
 /// `rounds` evaluations per lane; a lane that lands starts again. With one
 /// lane every evaluation waits for the one before; with several, the lanes'
-/// evaluations are independent and interleave.
+/// evaluations are independent and interleave. The right-hand side is the
+/// one a flight integrates: its models asked once, then used as types.
 fn euler_lanes<const N: usize, D: Dynamics<N>>(
     flight: &D,
     starts: &[State<N>],
     rounds: usize,
 ) -> State<N> {
-    let mut lanes: Vec<(f64, State<N>)> = starts.iter().map(|&s| (0.0, s)).collect();
-    for _ in 0..rounds {
-        for (lane, start) in lanes.iter_mut().zip(starts) {
-            let (t, state) = lane;
-            let slope = flight.derivative(*t, state, None, true);
-            *state += slope * CHAIN_STEP;
-            *t += CHAIN_STEP;
-            if state[D::HEIGHT] < 0.0 {
-                *lane = (0.0, *start);
+    flight.drag().with_lift(
+        flight.lift(),
+        Euler {
+            flight,
+            starts,
+            rounds,
+        },
+    )
+}
+
+struct Euler<'a, const N: usize, D> {
+    flight: &'a D,
+    starts: &'a [State<N>],
+    rounds: usize,
+}
+
+impl<const N: usize, D: Dynamics<N>> WithModels for Euler<'_, N, D> {
+    type Output = State<N>;
+
+    fn run<Dr: DragCurve + Copy, L: LiftCurve + Copy>(self, drag: Dr, lift: L) -> State<N> {
+        let Euler {
+            flight,
+            starts,
+            rounds,
+        } = self;
+        let mut lanes: Vec<(f64, State<N>)> = starts.iter().map(|&s| (0.0, s)).collect();
+        for _ in 0..rounds {
+            for (lane, start) in lanes.iter_mut().zip(starts) {
+                let (t, state) = lane;
+                let slope = flight.derivative_with((&drag, &lift), *t, state, None, true);
+                *state += slope * CHAIN_STEP;
+                *t += CHAIN_STEP;
+                if state[D::HEIGHT] < 0.0 {
+                    *lane = (0.0, *start);
+                }
             }
         }
+        lanes.iter().map(|(_, s)| s).sum()
     }
-    lanes.iter().map(|(_, s)| s).sum()
 }
 
 /// The chain's and the interleaved cost of one evaluation (ns).
