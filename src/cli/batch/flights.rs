@@ -18,6 +18,7 @@ use crate::cli::shown::Shown;
 use crate::model::clearing::{Clearing, Crossing};
 use crate::model::flight::{FlightOptions, FlightSummary};
 use crate::model::launch::{self, BattedBall, SceneFlight};
+use crate::model::many;
 use crate::model::park::{self, GivenWeather};
 use crate::units::Quantity;
 
@@ -205,14 +206,30 @@ pub(super) fn fly_all(
     let width = parks.len() + 1;
     crossings.clear();
     crossings.resize(rows.len() * width, None);
-    summaries.clear();
-    let mut fences: Vec<&park::Fence> = Vec::with_capacity(width);
-    for (row, crossings) in rows.iter().zip(crossings.chunks_mut(width)) {
-        fences.clear();
-        fences.push(row.own);
-        fences.extend_from_slice(parks);
-        summaries.push(row.flight.fly_to_fences(options, &fences, crossings));
+    // Each row's fences, its own park's then the 30: one list per own
+    // fence (a chunk's rows share a few parks), not one per row.
+    let mut lists: Vec<Vec<&park::Fence>> = Vec::new();
+    for row in rows {
+        if !lists.iter().any(|l| std::ptr::eq(l[0], row.own)) {
+            lists.push(std::iter::once(row.own).chain(parks.iter().copied()).collect());
+        }
     }
+    let fences_of = |row: &Ready| -> &[&park::Fence] {
+        let list = lists.iter().find(|l| std::ptr::eq(l[0], row.own));
+        list.map_or(&[], |l| l.as_slice())
+    };
+    let mut flown: Vec<Option<FlightSummary>> = vec![None; rows.len()];
+    // In lock-step, four rows at a time; results come as rows finish.
+    many::judge_many(
+        rows.iter().map(|row| (row.flight, fences_of(row))),
+        options,
+        |index, summary, found| {
+            flown[index] = Some(summary);
+            crossings[index * width..(index + 1) * width].copy_from_slice(found);
+        },
+    );
+    summaries.clear();
+    summaries.extend(flown.into_iter().map(|f| f.expect("every row flown")));
 }
 
 /// The row's launch completed and checked.
