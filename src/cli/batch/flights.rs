@@ -211,7 +211,11 @@ pub(super) fn fly_all(
     let mut lists: Vec<Vec<&park::Fence>> = Vec::new();
     for row in rows {
         if !lists.iter().any(|l| std::ptr::eq(l[0], row.own)) {
-            lists.push(std::iter::once(row.own).chain(parks.iter().copied()).collect());
+            lists.push(
+                std::iter::once(row.own)
+                    .chain(parks.iter().copied())
+                    .collect(),
+            );
         }
     }
     let fences_of = |row: &Ready| -> &[&park::Fence] {
