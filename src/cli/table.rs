@@ -194,21 +194,42 @@ impl Table {
                 .map(|&k| self.columns[k].key.clone().unwrap_or_default())
                 .collect(),
         );
-        for row in &self.rows {
-            out.push_str(&line(
-                keyed
-                    .iter()
-                    .map(|&k| match &row[k] {
-                        Cell::Num(x) => x.to_string(),
-                        Cell::Text(t) if t.contains([',', '"']) => {
-                            format!("\"{}\"", t.replace('"', "\"\""))
+        // Rows written straight into one text per piece, the pieces in
+        // parallel and joined in order: a 64×64 surface's 4096 rows of
+        // shortest-form numbers, a field at a time through a String each,
+        // took a quarter of `homerun surface --csv`.
+        let piece = |rows: &[Vec<Cell>]| {
+            use std::fmt::Write;
+            let mut text = String::with_capacity(rows.len() * 16 * keyed.len());
+            for row in rows {
+                for (i, &k) in keyed.iter().enumerate() {
+                    if i > 0 {
+                        text.push(',');
+                    }
+                    match &row[k] {
+                        Cell::Num(x) => {
+                            let _ = write!(text, "{x}");
                         }
-                        Cell::Text(t) => t.clone(),
-                        Cell::Bool(b) => b.to_string(),
-                        Cell::Blank => String::new(),
-                    })
-                    .collect(),
-            ));
+                        Cell::Text(t) if t.contains([',', '"']) => {
+                            text.push('"');
+                            text.push_str(&t.replace('"', "\"\""));
+                            text.push('"');
+                        }
+                        Cell::Text(t) => text.push_str(t),
+                        Cell::Bool(b) => {
+                            let _ = write!(text, "{b}");
+                        }
+                        Cell::Blank => {}
+                    }
+                }
+                text.push('\n');
+            }
+            text
+        };
+        use rayon::prelude::*;
+        let pieces: Vec<String> = self.rows.par_chunks(256).map(piece).collect();
+        for text in pieces {
+            out.push_str(&text);
         }
         out
     }
