@@ -91,7 +91,12 @@ fn columns(inner: usize, value: usize, name: usize) -> Columns {
 /// A gain in the pane's unit, to fit 6 cells: +4.01, -0.10, +12.3, +123.
 fn gain_text(value: f64) -> String {
     let a = value.abs();
-    if a < 9.995 {
+    if a < 0.005 {
+        // A gain that rounds to nothing has no sign worth showing: μ's at
+        // the optimum is a few ulps either side of 0, and "-0.00" flips
+        // with any change of the numerics.
+        "+0.00".to_owned()
+    } else if a < 9.995 {
         format!("{value:+.2}")
     } else if a < 99.95 {
         format!("{value:+.1}")
@@ -443,6 +448,9 @@ mod tests {
             (12.34, "+12.3"),
             (123.4, "+123"),
             (-1234.0, "-1234"),
+            (-1e-15, "+0.00"),
+            (-0.004, "+0.00"),
+            (-0.006, "-0.01"),
         ] {
             assert_eq!(gain_text(v), text);
         }
