@@ -11,7 +11,7 @@
 //! tolerance is as good either way.
 
 use super::{Settings, State, Stats};
-use crate::numerics::real::{Real, exp2_rough, log2_rough};
+use super::super::real::{Real, exp2_rough, log2_rough};
 
 pub(super) const SAFETY: f64 = 0.9;
 /// The least and most a step may shrink or grow by.

@@ -19,7 +19,7 @@ use super::controller::{
 use super::stages::{Stages, Vector, dense_c5, error_squared, inverse_scales, stages};
 use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, too_small};
 
-pub use crate::numerics::real::{LANES, Lane};
+pub use super::super::real::{LANES, Lane};
 
 /// The states (or slopes) of four problems: component i of lane j is
 /// `self.0[i]`'s lane j.

@@ -9,7 +9,7 @@ use std::ops::{Add, Mul, Sub};
 
 use super::State;
 use super::tableau::*;
-use crate::numerics::real::Real;
+use super::super::real::Real;
 
 /// A state the stages can combine: sums, differences and multiples by a
 /// number (one per lane), and its components.
