@@ -10,8 +10,8 @@
 //! that matters: a step accepted or rejected at an error within 2e-5 of the
 //! tolerance is as good either way.
 
-use super::{Settings, State, Stats};
 use super::super::real::{Real, exp2_rough, log2_rough};
+use super::{Settings, State, Stats};
 
 pub(super) const SAFETY: f64 = 0.9;
 /// The least and most a step may shrink or grow by.

@@ -7,9 +7,9 @@
 
 use std::ops::{Add, Mul, Sub};
 
+use super::super::real::Real;
 use super::State;
 use super::tableau::*;
-use super::super::real::Real;
 
 /// A state the stages can combine: sums, differences and multiples by a
 /// number (one per lane), and its components.
