@@ -1,6 +1,8 @@
 //! The eight failures a stress pass found (issue 15, F1–F8), each held by
 //! a test here (F1, a preset saved onto a FIFO, is in `hostile_files.rs`).
 
+mod common;
+use common::homerun;
 use std::path::Path;
 
 use assert_cmd::Command;
@@ -9,15 +11,6 @@ use ratatui::crossterm::event::KeyCode;
 
 mod tui_support;
 use homerun::preset::{Preset, Source};
-
-fn homerun(presets: &Path, args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_homerun"))
-        .arg("--presets-dir")
-        .arg(presets)
-        .args(args)
-        .output()
-        .unwrap()
-}
 
 /// The one line of a refusal (status 2, nothing on stdout).
 fn refusal(presets: &Path, args: &[&str]) -> String {

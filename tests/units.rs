@@ -1,21 +1,11 @@
 //! `--units imperial`: the text and CSV of the real binary in mph, ft, in,
 //! rpm and degrees, the same physics as in SI; JSON unchanged.
 
+mod common;
+use common::homerun;
 use std::path::Path;
 
-use assert_cmd::Command;
 use serde_json::Value;
-
-/// `homerun` with an empty user preset folder, so the machine's own
-/// presets never change a result.
-fn homerun(presets: &Path, args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_homerun"))
-        .arg("--presets-dir")
-        .arg(presets)
-        .args(args)
-        .output()
-        .unwrap()
-}
 
 fn stdout(presets: &Path, args: &[&str]) -> String {
     let output = homerun(presets, args);

@@ -180,9 +180,8 @@ impl SceneFlight {
                 launch,
                 plane,
             } => {
-                let (sin, cos) = plane.sin_cos();
                 let summary = flight::fly_observed(flight, launch, options, |step| {
-                    watch_fences(step, fences, crossings, |s| [s[0] * cos, s[0] * sin, s[1]]);
+                    watch_planar(step, *plane, fences, crossings);
                 });
                 FlightSummary {
                     direction: *plane,
@@ -191,7 +190,7 @@ impl SceneFlight {
             }
             SceneFlight::Spatial { flight, launch } => {
                 flight::fly_observed(flight, launch, options, |step| {
-                    watch_fences(step, fences, crossings, |s| [s[0], s[2], s[1]]);
+                    watch_spatial(step, fences, crossings);
                 })
             }
         }
@@ -214,11 +213,31 @@ impl SceneFlight {
     }
 }
 
+/// [`watch_fences`] for a planar flight in the vertical plane turned
+/// `plane` (rad) from the centre-field line.
+#[inline]
+pub(crate) fn watch_planar(
+    step: &Step<4>,
+    plane: f64,
+    fences: &[&Fence],
+    crossings: &mut [Option<Crossing>],
+) {
+    let (sin, cos) = plane.sin_cos();
+    watch_fences(step, fences, crossings, |s| [s[0] * cos, s[0] * sin, s[1]]);
+}
+
+/// [`watch_fences`] for a 3-D flight (x toward centre field, y up, z
+/// toward right field).
+#[inline]
+pub(crate) fn watch_spatial(step: &Step<6>, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
+    watch_fences(step, fences, crossings, |s| [s[0], s[2], s[1]]);
+}
+
 /// Shows one step to every fence not yet crossed. `ground` maps a state
 /// (or, being linear, its rate of change) to (x, z, height): toward centre
 /// field, toward right field, up.
 #[inline]
-pub(crate) fn watch_fences<const N: usize>(
+fn watch_fences<const N: usize>(
     step: &Step<N>,
     fences: &[&Fence],
     crossings: &mut [Option<Crossing>],

@@ -10,7 +10,7 @@
 //! the first step its neighbours found. Results come in the order the
 //! flights finish, each with its index in the list.
 
-use super::clearing::{Crossing, watch_fences};
+use super::clearing::{Crossing, watch_planar, watch_spatial};
 use super::flight::lanes::{LaneJob, LaneReports, fly_lanes};
 use super::flight::{FlightOptions, FlightSummary, Start};
 use super::launch::SceneFlight;
@@ -72,15 +72,14 @@ trait WatchedStep {
 impl WatchedStep for crate::numerics::ode::Step<'_, 4> {
     fn watch(&self, flight: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
         if let SceneFlight::Planar { plane, .. } = flight {
-            let (sin, cos) = plane.sin_cos();
-            watch_fences(self, fences, crossings, |s| [s[0] * cos, s[0] * sin, s[1]]);
+            watch_planar(self, *plane, fences, crossings);
         }
     }
 }
 
 impl WatchedStep for crate::numerics::ode::Step<'_, 6> {
     fn watch(&self, _: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
-        watch_fences(self, fences, crossings, |s| [s[0], s[2], s[1]]);
+        watch_spatial(self, fences, crossings);
     }
 }
 

@@ -1,8 +1,22 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+use std::path::Path;
+use std::process::{Command, Output};
+
 use homerun::Scene;
 use homerun::preset;
+
+/// `homerun` with `presets` as the user's preset folder (an empty one, so
+/// that the machine's own presets never change a result).
+pub fn homerun(presets: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .arg("--presets-dir")
+        .arg(presets)
+        .args(args)
+        .output()
+        .unwrap()
+}
 
 /// A bundled preset's scene.
 pub fn scene(name: &str) -> Scene {
