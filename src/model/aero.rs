@@ -18,7 +18,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::numerics::real::{Lane, Real, exp_lanes};
+use crate::numerics::real::{Real, exp_lanes};
 
 /// What a drag model gives the flight.
 pub trait DragCurve {
@@ -44,14 +44,16 @@ pub trait DragCurve {
 
     /// As [`DragCurve::coefficient_on`], for four flights at once, each on
     /// its own piece (`pieces`, the pieces' numbers as floats).
-    fn coefficient_lanes(&self, pieces: Lane, reynolds: Lane, spin_rate: Lane) -> Lane;
+    fn coefficient_lanes<R: Real>(&self, pieces: R, reynolds: R, spin_rate: R) -> R;
 
     /// As [`DragCurve::piece`], for four flights, as floats.
     #[inline(always)]
-    fn piece_lanes(&self, re: Lane) -> Lane {
-        self.kinks().iter().fold(Lane::ZERO, |count, &kink| {
-            count + re.simd_ge(Lane::splat(kink)).select(Lane::ONE, Lane::ZERO)
-        })
+    fn piece_lanes<R: Real>(&self, re: R) -> R {
+        let mut count = R::splat(0.0);
+        for &kink in self.kinks() {
+            count = count + R::select(R::splat(kink).le(re), R::splat(1.0), R::splat(0.0));
+        }
+        count
     }
 }
 
@@ -163,7 +165,7 @@ impl DragCurve for DragModel {
         }
     }
 
-    fn coefficient_lanes(&self, pieces: Lane, reynolds: Lane, spin_rate: Lane) -> Lane {
+    fn coefficient_lanes<R: Real>(&self, pieces: R, reynolds: R, spin_rate: R) -> R {
         match self {
             DragModel::Sawicki2003 => {
                 Sawicki2003Drag.coefficient_lanes(pieces, reynolds, spin_rate)
@@ -245,15 +247,19 @@ impl DragCurve for Sawicki2003Drag {
     /// Each lane by its piece's formula; one exponential for the lanes on
     /// either exponential piece, none if no lane is on one.
     #[inline(always)]
-    fn coefficient_lanes(&self, pieces: Lane, re: Lane, _spin_rate: Lane) -> Lane {
-        let piece = |p: f64| pieces.simd_eq(Lane::splat(p));
-        let (rising, recovering) = (piece(1.0), piece(3.0));
-        let mut cd = piece(2.0).select(Lane::splat(DRAG_FLOOR), Lane::splat(SUBCRITICAL_DRAG));
-        if (rising | recovering).any() {
-            let exponent = rising.select(Self::rising_exponent(re), Self::recovery_exponent(re));
+    fn coefficient_lanes<R: Real>(&self, pieces: R, re: R, _spin_rate: R) -> R {
+        let (rising, recovering) = (pieces.eq(R::splat(1.0)), pieces.eq(R::splat(3.0)));
+        let floor = pieces.eq(R::splat(2.0));
+        let mut cd = R::select(floor, R::splat(DRAG_FLOOR), R::splat(SUBCRITICAL_DRAG));
+        if R::any(rising | recovering) {
+            let exponent = R::select(
+                rising,
+                Self::rising_exponent(re),
+                Self::recovery_exponent(re),
+            );
             let e = exp_lanes(exponent);
-            cd = rising.select(Self::rising(e), cd);
-            cd = recovering.select(Self::recovery(e), cd);
+            cd = R::select(rising, Self::rising(e), cd);
+            cd = R::select(recovering, Self::recovery(e), cd);
         }
         cd
     }
@@ -274,8 +280,8 @@ impl DragCurve for ConstantDrag {
     }
 
     #[inline(always)]
-    fn coefficient_lanes(&self, _pieces: Lane, _reynolds: Lane, _spin_rate: Lane) -> Lane {
-        Lane::splat(SUBCRITICAL_DRAG)
+    fn coefficient_lanes<R: Real>(&self, _pieces: R, _reynolds: R, _spin_rate: R) -> R {
+        R::splat(SUBCRITICAL_DRAG)
     }
 }
 
@@ -299,7 +305,7 @@ impl DragCurve for NathanDrag {
     }
 
     #[inline(always)]
-    fn coefficient_lanes(&self, _pieces: Lane, _reynolds: Lane, spin_rate: Lane) -> Lane {
+    fn coefficient_lanes<R: Real>(&self, _pieces: R, _reynolds: R, spin_rate: R) -> R {
         Self::coefficient(spin_rate)
     }
 }

@@ -15,17 +15,29 @@ use super::flight::lanes::{LaneJob, LaneReports, fly_lanes};
 use super::flight::{FlightOptions, FlightSummary, Start};
 use super::launch::SceneFlight;
 use super::park::Fence;
+use crate::numerics::ode::lanes::LaneCode;
 
 /// Flies every flight of `flights`, calling `done(index, summary)` for
 /// each as it finishes (`index` its place in `flights`).
 pub fn fly_many(
     flights: impl IntoIterator<Item = SceneFlight>,
     options: &FlightOptions,
+    done: impl FnMut(usize, FlightSummary),
+) {
+    fly_many_on(LaneCode::detected(), flights, options, done);
+}
+
+/// [`fly_many`] on `code`'s instructions where the CPU has them (else the
+/// baseline's): the same results on any.
+pub fn fly_many_on(
+    code: LaneCode,
+    flights: impl IntoIterator<Item = SceneFlight>,
+    options: &FlightOptions,
     mut done: impl FnMut(usize, FlightSummary),
 ) {
     let flights: Vec<SceneFlight> = flights.into_iter().collect();
     for group in groups(&flights) {
-        fly_group(&flights, &group, options, None, &mut done);
+        fly_group(code, &flights, &group, options, None, &mut done);
     }
 }
 
@@ -57,7 +69,15 @@ pub fn judge_many<'f>(
             let all = crossings.borrow();
             done(index, summary, &all[offsets[index]..offsets[index + 1]]);
         };
-        fly_group(&flights, &group, options, Some(&mut watch), &mut finished);
+        let code = LaneCode::detected();
+        fly_group(
+            code,
+            &flights,
+            &group,
+            options,
+            Some(&mut watch),
+            &mut finished,
+        );
     }
 }
 
@@ -102,6 +122,7 @@ fn groups(flights: &[SceneFlight]) -> Vec<Vec<usize>> {
 
 /// Flies one group (all planar or all 3-D, with the same models).
 fn fly_group(
+    code: LaneCode,
     flights: &[SceneFlight],
     group: &[usize],
     options: &FlightOptions,
@@ -143,7 +164,7 @@ fn fly_group(
                 .map(|w| w as &mut dyn FnMut(usize, &crate::numerics::ode::Step<4>)),
             done: &mut finished,
         };
-        fly_lanes(jobs, options, reports);
+        fly_lanes(code, jobs, options, reports);
     } else {
         let jobs = group.iter().filter_map(|&index| match flights[index] {
             SceneFlight::Spatial { flight, launch } => Some(LaneJob {
@@ -163,6 +184,6 @@ fn fly_group(
                 .map(|w| w as &mut dyn FnMut(usize, &crate::numerics::ode::Step<6>)),
             done,
         };
-        fly_lanes(jobs, options, reports);
+        fly_lanes(code, jobs, options, reports);
     }
 }

@@ -1,47 +1,67 @@
 //! The flight's side of the lock-step integrator
 //! ([`crate::numerics::ode::lanes`]): four flights' forces at once (the
-//! same generic formulas as one flight's, on `Lane`), and each lane's
-//! events in scalar code, as a single flight sees them.
-
-use crate::numerics::real::Lane;
+//! same generic formulas as one flight's, on lanes of four numbers), and
+//! each lane's events in scalar code, as a single flight sees them.
 
 use super::events::{Bounds, Events, StepEnds, end_next_by, eventful};
 use super::{Dynamics, Flight, Flight3d, FlightOptions, FlightSummary, Regime};
 use super::{PlanarConstants, SpatialConstants};
 use crate::model::aero::{DragCurve, LiftCurve, WithModels};
-use crate::numerics::ode::lanes::{LANES, LaneStart, LaneSystem, Lanes, integrate_lanes};
+use crate::numerics::ode::lanes::{
+    LANES, LaneCode, LaneProblems, LaneReal, LaneStart, LaneSystem, Lanes, integrate_lanes,
+};
 use crate::numerics::ode::{Control, Outcome, Settings, State, Stats, Step};
 
 /// A flight the lanes can carry.
 pub trait LaneFlight<const N: usize>: Dynamics<N> {
     /// The constants of one flight (`f64`) …
     type Constants: Copy + Default;
-    /// … and of four, one per lane (`Lane`).
-    type LaneConstants: Copy;
+    /// … and of four, one per lane.
+    type LaneConstants<V: LaneReal>: Copy;
 
     fn constants_of(&self) -> Self::Constants;
-    fn gather(each: &[Self::Constants; LANES]) -> Self::LaneConstants;
+    fn gather<V: LaneReal>(each: &[Self::Constants; LANES]) -> Self::LaneConstants<V>;
 
     /// y' of four flights at once: C_D by `drag` on each lane's piece
     /// (`pieces`, or the piece its Re is on if `None`), C_L by `lift`, in
     /// the wind where `in_wind`.
-    fn derivative_lanes(
-        constants: &Self::LaneConstants,
+    fn derivative_lanes<V: LaneReal>(
+        constants: &Self::LaneConstants<V>,
         models: (&impl DragCurve, &impl LiftCurve),
-        regime: (Option<Lane>, Lane),
-        t: Lane,
-        y: &Lanes<N>,
-    ) -> Lanes<N>;
+        regime: (Option<V>, V::Mask),
+        t: V,
+        y: &Lanes<N, V>,
+    ) -> Lanes<N, V>;
 
     /// The Reynolds number of four flights at `y`, in the wind where
     /// `in_wind`.
-    fn reynolds_lanes(constants: &Self::LaneConstants, in_wind: Lane, y: &Lanes<N>) -> Lane;
+    fn reynolds_lanes<V: LaneReal>(
+        constants: &Self::LaneConstants<V>,
+        in_wind: V::Mask,
+        y: &Lanes<N, V>,
+    ) -> V;
 }
 
 /// Each lane's value of one constant.
 #[inline]
-fn lanes_of<C>(each: &[C; LANES], field: impl Fn(&C) -> f64) -> Lane {
-    Lane::new(std::array::from_fn(|j| field(&each[j])))
+fn lanes_of<C, V: LaneReal>(each: &[C; LANES], field: impl Fn(&C) -> f64) -> V {
+    V::from_array(std::array::from_fn(|j| field(&each[j])))
+}
+
+/// C_D of four flights: by each lane's piece (`pieces`), or by the piece
+/// its Re is on if `None`.
+///
+/// The forces are handed it in a closure marked `#[inline(always)]`: a
+/// closure is compiled with the target features of the function that
+/// defines it, so one left to the inliner's choice could be baseline code
+/// called from the lanes' AVX2 loop, its vector operations each a call.
+#[inline(always)]
+fn drag_lanes<V: LaneReal>(drag: &impl DragCurve, pieces: Option<V>, re: V, spin_rate: V) -> V {
+    let pieces = match pieces {
+        Some(pieces) => pieces,
+        None => drag.piece_lanes(re),
+    };
+    drag.coefficient_lanes(pieces, re, spin_rate)
 }
 
 impl Default for PlanarConstants<f64> {
@@ -52,13 +72,13 @@ impl Default for PlanarConstants<f64> {
 
 impl LaneFlight<4> for Flight {
     type Constants = PlanarConstants<f64>;
-    type LaneConstants = PlanarConstants<Lane>;
+    type LaneConstants<V: LaneReal> = PlanarConstants<V>;
 
     fn constants_of(&self) -> Self::Constants {
         self.constants()
     }
 
-    fn gather(each: &[Self::Constants; LANES]) -> Self::LaneConstants {
+    fn gather<V: LaneReal>(each: &[Self::Constants; LANES]) -> Self::LaneConstants<V> {
         PlanarConstants {
             gravity: lanes_of(each, |c| c.gravity),
             wind: lanes_of(each, |c| c.wind),
@@ -73,27 +93,26 @@ impl LaneFlight<4> for Flight {
     }
 
     #[inline(always)]
-    fn derivative_lanes(
-        c: &Self::LaneConstants,
+    fn derivative_lanes<V: LaneReal>(
+        c: &Self::LaneConstants<V>,
         (drag, lift): (&impl DragCurve, &impl LiftCurve),
-        (pieces, _): (Option<Lane>, Lane),
-        t: Lane,
-        y: &Lanes<4>,
-    ) -> Lanes<4> {
-        let coefficient = |re: Lane, spin_rate: Lane| {
-            drag.coefficient_lanes(
-                pieces.unwrap_or_else(|| drag.piece_lanes(re)),
-                re,
-                spin_rate,
-            )
-        };
+        (pieces, _): (Option<V>, V::Mask),
+        t: V,
+        y: &Lanes<4, V>,
+    ) -> Lanes<4, V> {
         let [_, _, vx, vy] = y.0;
-        let (ax, ay) = c.acceleration(coefficient, lift, t, (vx, vy));
+        let (ax, ay) = c.acceleration(
+            #[inline(always)]
+            |re, spin_rate| drag_lanes(drag, pieces, re, spin_rate),
+            lift,
+            t,
+            (vx, vy),
+        );
         Lanes([vx, vy, ax, ay])
     }
 
     #[inline(always)]
-    fn reynolds_lanes(c: &Self::LaneConstants, _: Lane, y: &Lanes<4>) -> Lane {
+    fn reynolds_lanes<V: LaneReal>(c: &Self::LaneConstants<V>, _: V::Mask, y: &Lanes<4, V>) -> V {
         c.air((y.0[2], y.0[3])).2
     }
 }
@@ -107,13 +126,13 @@ impl Default for SpatialConstants<f64> {
 
 impl LaneFlight<6> for Flight3d {
     type Constants = SpatialConstants<f64>;
-    type LaneConstants = SpatialConstants<Lane>;
+    type LaneConstants<V: LaneReal> = SpatialConstants<V>;
 
     fn constants_of(&self) -> Self::Constants {
         self.constants()
     }
 
-    fn gather(each: &[Self::Constants; LANES]) -> Self::LaneConstants {
+    fn gather<V: LaneReal>(each: &[Self::Constants; LANES]) -> Self::LaneConstants<V> {
         SpatialConstants {
             gravity: lanes_of(each, |c| c.gravity),
             wind: std::array::from_fn(|i| lanes_of(each, |c| c.wind[i])),
@@ -128,27 +147,30 @@ impl LaneFlight<6> for Flight3d {
     }
 
     #[inline(always)]
-    fn derivative_lanes(
-        c: &Self::LaneConstants,
+    fn derivative_lanes<V: LaneReal>(
+        c: &Self::LaneConstants<V>,
         (drag, lift): (&impl DragCurve, &impl LiftCurve),
-        (pieces, in_wind): (Option<Lane>, Lane),
-        t: Lane,
-        y: &Lanes<6>,
-    ) -> Lanes<6> {
-        let coefficient = |re: Lane, spin_rate: Lane| {
-            drag.coefficient_lanes(
-                pieces.unwrap_or_else(|| drag.piece_lanes(re)),
-                re,
-                spin_rate,
-            )
-        };
+        (pieces, in_wind): (Option<V>, V::Mask),
+        t: V,
+        y: &Lanes<6, V>,
+    ) -> Lanes<6, V> {
         let [_, _, _, vx, vy, vz] = y.0;
-        let [ax, ay, az] = c.acceleration(coefficient, lift, (t, in_wind), [vx, vy, vz]);
+        let [ax, ay, az] = c.acceleration(
+            #[inline(always)]
+            |re, spin_rate| drag_lanes(drag, pieces, re, spin_rate),
+            lift,
+            (t, in_wind),
+            [vx, vy, vz],
+        );
         Lanes([vx, vy, vz, ax, ay, az])
     }
 
     #[inline(always)]
-    fn reynolds_lanes(c: &Self::LaneConstants, in_wind: Lane, y: &Lanes<6>) -> Lane {
+    fn reynolds_lanes<V: LaneReal>(
+        c: &Self::LaneConstants<V>,
+        in_wind: V::Mask,
+        y: &Lanes<6, V>,
+    ) -> V {
         c.air(in_wind, [y.0[3], y.0[4], y.0[5]]).2
     }
 }
@@ -172,54 +194,57 @@ pub struct LaneReports<'r, const N: usize> {
     pub done: &'r mut dyn FnMut(usize, FlightSummary),
 }
 
-/// Four flights' worth of lanes, with their events, fed from `jobs`.
-struct FlightLanes<'r, const N: usize, D: LaneFlight<N>, Dr, L, J> {
+/// Four flights' worth of lanes (numbers `V`), with their events, fed
+/// from `jobs`.
+struct FlightLanes<'r, const N: usize, V: LaneReal, D: LaneFlight<N>, Dr, L, J> {
     models: (Dr, L),
     stop_at_kinks: bool,
     /// Whether the lanes switch drag pieces at the kinks (else each
     /// evaluation takes the piece its Re is on).
     switching: bool,
     each: [D::Constants; LANES],
-    constants: D::LaneConstants,
+    constants: D::LaneConstants<V>,
     /// Each lane's regime: its drag piece (a float) and whether it is in
-    /// the wind (a lane mask), and what the regime bounds.
-    pieces: Lane,
-    in_wind: Lane,
-    bounds: Bounds<Lane>,
+    /// the wind (a lane mask, from `in_wind_each`), and what the regime
+    /// bounds.
+    pieces: V,
+    in_wind_each: [bool; LANES],
+    in_wind: V::Mask,
+    bounds: Bounds<V>,
     events: [Option<Events<N, D>>; LANES],
     index: [usize; LANES],
     jobs: J,
     reports: LaneReports<'r, N>,
 }
 
-/// All ones where `in_wind`, the lane mask's truth.
-fn mask(in_wind: bool) -> f64 {
-    f64::from_bits(if in_wind { u64::MAX } else { 0 })
-}
-
-impl<const N: usize, D: LaneFlight<N>, Dr, L, J> FlightLanes<'_, N, D, Dr, L, J> {
+impl<const N: usize, V: LaneReal, D: LaneFlight<N>, Dr, L, J> FlightLanes<'_, N, V, D, Dr, L, J> {
     /// Lane `j`'s regime from its events.
     fn set_regime(&mut self, j: usize, (regime, bounds): (Regime, Bounds<f64>)) {
-        let set = |v: &mut Lane, x: f64| v.as_mut_array()[j] = x;
-        set(&mut self.pieces, regime.piece.unwrap_or_default() as f64);
-        set(&mut self.in_wind, mask(regime.in_wind));
-        set(&mut self.bounds.kink_below, bounds.kink_below);
-        set(&mut self.bounds.kink_above, bounds.kink_above);
-        set(&mut self.bounds.wind_height, bounds.wind_height);
+        self.pieces.set(j, regime.piece.unwrap_or_default() as f64);
+        self.in_wind_each[j] = regime.in_wind;
+        self.in_wind = V::mask_of(self.in_wind_each);
+        self.bounds.kink_below.set(j, bounds.kink_below);
+        self.bounds.kink_above.set(j, bounds.kink_above);
+        self.bounds.wind_height.set(j, bounds.wind_height);
         self.bounds.in_wind = self.in_wind;
     }
 }
 
-impl<const N: usize, D, Dr, L, J> LaneSystem<N> for FlightLanes<'_, N, D, Dr, L, J>
+impl<const N: usize, V, D, Dr, L, J> LaneSystem<N, V> for FlightLanes<'_, N, V, D, Dr, L, J>
 where
+    V: LaneReal,
     D: LaneFlight<N>,
     Dr: DragCurve,
     L: LiftCurve,
     J: Iterator<Item = LaneJob<N, D>>,
 {
     #[inline(always)]
-    fn derivative(&self, t: Lane, y: &Lanes<N>) -> Lanes<N> {
-        let pieces = self.switching.then_some(self.pieces);
+    fn derivative(&self, t: V, y: &Lanes<N, V>) -> Lanes<N, V> {
+        let pieces = if self.switching {
+            Some(self.pieces)
+        } else {
+            None
+        };
         D::derivative_lanes(
             &self.constants,
             (&self.models.0, &self.models.1),
@@ -259,13 +284,13 @@ where
     #[inline(always)]
     fn quiet(
         &mut self,
-        accepted: Lane,
-        (t1, h): (Lane, Lane),
-        (y0, y1): (&Lanes<N>, &Lanes<N>),
-    ) -> (Lane, Lane) {
+        accepted: V::Mask,
+        (t1, h): (V, V),
+        (y0, y1): (&Lanes<N, V>, &Lanes<N, V>),
+    ) -> (V::Mask, V) {
         if self.reports.watch.is_some() {
             // The watch sees every step.
-            return (Lane::ZERO, Lane::splat(f64::INFINITY));
+            return (V::mask_of([false; LANES]), V::splat(f64::INFINITY));
         }
         let reynolds = if self.switching {
             (
@@ -273,7 +298,7 @@ where
                 D::reynolds_lanes(&self.constants, self.in_wind, y1),
             )
         } else {
-            (Lane::ZERO, Lane::ZERO)
+            (V::splat(0.0), V::splat(0.0))
         };
         let ends = StepEnds {
             t1,
@@ -316,7 +341,10 @@ where
 /// Flies `jobs` in lock-step, four at a time, every flight with the
 /// models of the first (the caller groups them so), reporting to
 /// `reports`: each as [`super::fly`] would fly it alone, to its tolerance.
+/// On `code`'s instructions where the CPU has them (the same results on
+/// any).
 pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
+    code: LaneCode,
     jobs: impl Iterator<Item = LaneJob<N, D>>,
     options: &FlightOptions,
     reports: LaneReports<'_, N>,
@@ -327,6 +355,7 @@ pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
     };
     let (drag, lift) = (first.flight.drag(), first.flight.lift());
     let run = Run {
+        code,
         jobs,
         options: *options,
         reports,
@@ -337,6 +366,7 @@ pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
 
 /// [`fly_lanes`] once the models are known.
 struct Run<'r, const N: usize, D, J> {
+    code: LaneCode,
     jobs: J,
     options: FlightOptions,
     reports: LaneReports<'r, N>,
@@ -351,26 +381,60 @@ where
     type Output = ();
 
     fn run<Dr: DragCurve + Copy, L: LiftCurve + Copy>(self, drag: Dr, lift: L) {
-        let stop_at_kinks = self.options.stop_at_kinks;
-        let mut lanes = FlightLanes {
+        let problems = Problems {
             models: (drag, lift),
-            stop_at_kinks,
-            switching: stop_at_kinks && !drag.kinks().is_empty(),
+            stop_at_kinks: self.options.stop_at_kinks,
+            jobs: self.jobs,
+            reports: self.reports,
+            flight: std::marker::PhantomData,
+        };
+        let settings = Settings::new(self.options.tolerance);
+        integrate_lanes(self.code, problems, &settings);
+    }
+}
+
+/// The flights, their models and their reports, before they are put on
+/// lanes of a number type.
+struct Problems<'r, const N: usize, D, Dr, L, J> {
+    models: (Dr, L),
+    stop_at_kinks: bool,
+    jobs: J,
+    reports: LaneReports<'r, N>,
+    flight: std::marker::PhantomData<D>,
+}
+
+impl<'r, const N: usize, D, Dr, L, J> LaneProblems<N> for Problems<'r, N, D, Dr, L, J>
+where
+    D: LaneFlight<N>,
+    Dr: DragCurve,
+    L: LiftCurve,
+    J: Iterator<Item = LaneJob<N, D>>,
+{
+    type System<V: LaneReal> = FlightLanes<'r, N, V, D, Dr, L, J>;
+
+    #[inline(always)]
+    fn system<V: LaneReal>(self) -> Self::System<V> {
+        let (drag, _) = &self.models;
+        let none = [false; LANES];
+        FlightLanes {
+            switching: self.stop_at_kinks && !drag.kinks().is_empty(),
+            models: self.models,
+            stop_at_kinks: self.stop_at_kinks,
             each: [D::Constants::default(); LANES],
             constants: D::gather(&[D::Constants::default(); LANES]),
-            pieces: Lane::ZERO,
-            in_wind: Lane::ZERO,
+            pieces: V::splat(0.0),
+            in_wind_each: none,
+            in_wind: V::mask_of(none),
             bounds: Bounds {
-                kink_below: Lane::ZERO,
-                kink_above: Lane::ZERO,
-                wind_height: Lane::ZERO,
-                in_wind: Lane::ZERO,
+                kink_below: V::splat(0.0),
+                kink_above: V::splat(0.0),
+                wind_height: V::splat(0.0),
+                in_wind: V::mask_of(none),
             },
             events: [const { None }; LANES],
             index: [0; LANES],
             jobs: self.jobs,
             reports: self.reports,
-        };
-        integrate_lanes(&mut lanes, &Settings::new(self.options.tolerance));
+        }
     }
 }

@@ -19,67 +19,85 @@ use super::controller::{
 use super::stages::{Stages, Vector, dense_c5, error_squared, inverse_scales, stages};
 use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, too_small};
 
-pub use super::super::real::{LANES, Lane};
+pub use super::super::real::{LANES, Lane, LaneReal};
 
 /// The states (or slopes) of four problems: component i of lane j is
-/// `self.0[i]`'s lane j.
+/// `self.0[i]`'s lane j. `V` is the lanes' number: [`Lane`] (baseline), or
+/// the AVX2 loop's (see [`integrate_lanes`]).
 #[derive(Clone, Copy, Debug)]
-pub struct Lanes<const N: usize>(pub [Lane; N]);
+pub struct Lanes<const N: usize, V = Lane>(pub [V; N]);
 
-impl<const N: usize> Lanes<N> {
-    pub const ZERO: Self = Lanes([Lane::ZERO; N]);
+impl<const N: usize, V: LaneReal> Lanes<N, V> {
+    #[inline(always)]
+    pub fn zero() -> Self {
+        Lanes([V::splat(0.0); N])
+    }
 
     /// Lane `j`'s state.
     #[inline(always)]
     pub fn lane(&self, j: usize) -> State<N> {
-        State::<N>::from_fn(|i, _| self.0[i].as_array()[j])
+        State::<N>::from_fn(|i, _| self.0[i].to_array()[j])
     }
 
     /// Sets lane `j` to `state`.
     #[inline(always)]
     pub fn set_lane(&mut self, j: usize, state: &State<N>) {
         for (i, component) in self.0.iter_mut().enumerate() {
-            component.as_mut_array()[j] = state[i];
+            component.set(j, state[i]);
         }
     }
 
     /// `if_true`'s lanes where `mask` holds, `if_false`'s elsewhere.
     #[inline(always)]
-    pub fn select(mask: Lane, if_true: &Self, if_false: &Self) -> Self {
-        Lanes(std::array::from_fn(|i| {
-            mask.select(if_true.0[i], if_false.0[i])
-        }))
+    pub fn select(mask: V::Mask, if_true: &Self, if_false: &Self) -> Self {
+        let mut out = *if_false;
+        for i in 0..N {
+            out.0[i] = V::select(mask, if_true.0[i], if_false.0[i]);
+        }
+        out
     }
 }
 
-impl<const N: usize> Add for Lanes<N> {
+// The operators as loops, not closures: a closure is compiled with the
+// target features of the function that defines it, and would leave the
+// AVX2 loop's lanes to baseline code.
+impl<const N: usize, V: LaneReal> Add for Lanes<N, V> {
     type Output = Self;
     #[inline(always)]
-    fn add(self, other: Self) -> Self {
-        Lanes(std::array::from_fn(|i| self.0[i] + other.0[i]))
+    fn add(mut self, other: Self) -> Self {
+        for i in 0..N {
+            self.0[i] = self.0[i] + other.0[i];
+        }
+        self
     }
 }
 
-impl<const N: usize> Sub for Lanes<N> {
+impl<const N: usize, V: LaneReal> Sub for Lanes<N, V> {
     type Output = Self;
     #[inline(always)]
-    fn sub(self, other: Self) -> Self {
-        Lanes(std::array::from_fn(|i| self.0[i] - other.0[i]))
+    fn sub(mut self, other: Self) -> Self {
+        for i in 0..N {
+            self.0[i] = self.0[i] - other.0[i];
+        }
+        self
     }
 }
 
-impl<const N: usize> Mul<Lane> for Lanes<N> {
+impl<const N: usize, V: LaneReal> Mul<V> for Lanes<N, V> {
     type Output = Self;
     #[inline(always)]
-    fn mul(self, factor: Lane) -> Self {
-        Lanes(self.0.map(|c| c * factor))
+    fn mul(mut self, factor: V) -> Self {
+        for i in 0..N {
+            self.0[i] = self.0[i] * factor;
+        }
+        self
     }
 }
 
-impl<const N: usize> Vector<Lane> for Lanes<N> {
+impl<const N: usize, V: LaneReal> Vector<V> for Lanes<N, V> {
     const DIM: usize = N;
     #[inline(always)]
-    fn component(&self, i: usize) -> Lane {
+    fn component(&self, i: usize) -> V {
         self.0[i]
     }
 }
@@ -92,10 +110,11 @@ pub struct LaneStart<const N: usize> {
     pub t_end: f64,
 }
 
-/// What the lock-step integrator needs of the problems it carries.
-pub trait LaneSystem<const N: usize> {
+/// What the lock-step integrator needs of the problems it carries, on
+/// lanes of `V`.
+pub trait LaneSystem<const N: usize, V: LaneReal> {
     /// y' for every lane at once, each lane in its own problem.
-    fn derivative(&self, t: Lane, y: &Lanes<N>) -> Lanes<N>;
+    fn derivative(&self, t: V, y: &Lanes<N, V>) -> Lanes<N, V>;
     /// y' of lane `lane`'s problem alone (a restart's, a first step's).
     fn derivative_lane(&self, lane: usize, t: f64, y: &State<N>) -> State<N>;
     /// Sees lane `lane`'s accepted step, as the single integrator's
@@ -108,12 +127,12 @@ pub trait LaneSystem<const N: usize> {
     /// would say, for all lanes at once. By default, none.
     fn quiet(
         &mut self,
-        accepted: Lane,
-        (t1, h): (Lane, Lane),
-        (y0, y1): (&Lanes<N>, &Lanes<N>),
-    ) -> (Lane, Lane) {
+        accepted: V::Mask,
+        (t1, h): (V, V),
+        (y0, y1): (&Lanes<N, V>, &Lanes<N, V>),
+    ) -> (V::Mask, V) {
         let _ = (accepted, t1, h, y0, y1);
-        (Lane::ZERO, Lane::splat(f64::INFINITY))
+        (V::mask_of([false; LANES]), V::splat(f64::INFINITY))
     }
     /// Lane `lane`'s problem has ended, at (t, y) = `end`.
     fn finish(&mut self, lane: usize, outcome: Outcome, stats: Stats, end: (f64, State<N>));
@@ -132,12 +151,12 @@ struct LaneState {
 }
 
 /// The lanes' times, states, slopes, step sizes and controllers.
-struct Carried<const N: usize> {
-    t: Lane,
-    y: Lanes<N>,
-    k1: Lanes<N>,
-    h: Lane,
-    previous_log2_error: Lane,
+struct Carried<const N: usize, V> {
+    t: V,
+    y: Lanes<N, V>,
+    k1: Lanes<N, V>,
+    h: V,
+    previous_log2_error: V,
     lanes: [LaneState; LANES],
     /// Lanes whose slope k1 is to be evaluated (a new problem, or a
     /// restart), and among them those that need a first step.
@@ -149,13 +168,17 @@ struct Carried<const N: usize> {
 
 /// Sets one lane of a vector.
 #[inline(always)]
-fn set(v: &mut Lane, j: usize, x: f64) {
-    v.as_mut_array()[j] = x;
+fn set<V: LaneReal>(v: &mut V, j: usize, x: f64) {
+    v.set(j, x);
 }
 
-impl<const N: usize> Carried<N> {
+/// The lanes' right-hand side, as [`integrate_lanes_body`] is handed it.
+trait Derivative<const N: usize, V, S>: Fn(&S, V, &Lanes<N, V>) -> Lanes<N, V> {}
+impl<const N: usize, V, S, F: Fn(&S, V, &Lanes<N, V>) -> Lanes<N, V>> Derivative<N, V, S> for F {}
+
+impl<const N: usize, V: LaneReal> Carried<N, V> {
     /// Takes lane `j`'s next problem, or idles it.
-    fn refill<S: LaneSystem<N>>(&mut self, system: &mut S, j: usize) {
+    fn refill<S: LaneSystem<N, V>>(&mut self, system: &mut S, j: usize) {
         self.lanes[j] = LaneState::default();
         self.fresh[j] = false;
         let Some(start) = system.refill(j) else {
@@ -177,26 +200,35 @@ impl<const N: usize> Carried<N> {
     }
 
     /// Ends lane `j`'s problem and takes the next.
-    fn finish<S: LaneSystem<N>>(&mut self, system: &mut S, j: usize, outcome: Outcome) {
-        let end = (self.t.as_array()[j], self.y.lane(j));
+    fn finish<S: LaneSystem<N, V>>(&mut self, system: &mut S, j: usize, outcome: Outcome) {
+        let end = (self.t.to_array()[j], self.y.lane(j));
         system.finish(j, outcome, self.lanes[j].stats, end);
         self.refill(system, j);
     }
 
     /// Evaluates k1 for the fresh lanes (one evaluation for all), and the
     /// first step of those that have none (Hairer's guess, one more).
-    fn start_fresh<S: LaneSystem<N>>(&mut self, system: &S, settings: &Settings) {
+    fn start_fresh<S: LaneSystem<N, V>>(
+        &mut self,
+        system: &S,
+        derivative: &impl Derivative<N, V, S>,
+        settings: &Settings,
+    ) {
         let count = self.fresh.iter().filter(|&&fresh| fresh).count();
         if count == 0 {
             return;
         }
         // One lane (a restart, mostly) by itself; several at once.
-        let all = (count > 1).then(|| system.derivative(self.t, &self.y));
+        let all = if count > 1 {
+            Some(derivative(system, self.t, &self.y))
+        } else {
+            None
+        };
         for j in 0..LANES {
             if self.fresh[j] {
                 let k = match &all {
                     Some(k) => k.lane(j),
-                    None => system.derivative_lane(j, self.t.as_array()[j], &self.y.lane(j)),
+                    None => system.derivative_lane(j, self.t.to_array()[j], &self.y.lane(j)),
                 };
                 self.k1.set_lane(j, &k);
                 self.lanes[j].stats.evaluations += 1;
@@ -206,7 +238,7 @@ impl<const N: usize> Carried<N> {
         // Hairer's guess for the lanes that have no neighbour's first step.
         for j in 0..LANES {
             if self.needs_first_step[j] {
-                let (t0, y0, k1) = (self.t.as_array()[j], self.y.lane(j), self.k1.lane(j));
+                let (t0, y0, k1) = (self.t.to_array()[j], self.y.lane(j), self.k1.lane(j));
                 let mut f = |t: f64, y: &State<N>| system.derivative_lane(j, t, y);
                 let h = initial_step(&mut f, t0, &y0, &k1, settings, &mut self.lanes[j].stats);
                 set(&mut self.h, j, h);
@@ -216,18 +248,98 @@ impl<const N: usize> Carried<N> {
     }
 }
 
-/// Integrates the system's problems, four at a time, until it has no more:
-/// each as [`super::integrate`] would, with `settings` for all (its
-/// `initial_step`, if given, for the first four). Never allocates.
-pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, settings: &Settings) {
+/// Which instructions the lock-step loop runs on: the baseline build's
+/// ([`Lane`]: SSE2 pairs on x86-64), or AVX2's (one register for four
+/// lanes). Both give the same bits: only exactly rounded operations, and
+/// no fused multiply-add.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LaneCode {
+    Baseline,
+    Avx2,
+}
+
+impl LaneCode {
+    /// The fastest this CPU runs (`is_x86_feature_detected!` asks the CPU
+    /// once and caches the answer).
+    pub fn detected() -> Self {
+        if LaneCode::Avx2.runs_here() {
+            LaneCode::Avx2
+        } else {
+            LaneCode::Baseline
+        }
+    }
+
+    /// Whether this CPU runs it.
+    pub fn runs_here(self) -> bool {
+        match self {
+            LaneCode::Baseline => true,
+            #[cfg(target_arch = "x86_64")]
+            LaneCode::Avx2 => std::arch::is_x86_feature_detected!("avx2"),
+            #[cfg(not(target_arch = "x86_64"))]
+            LaneCode::Avx2 => false,
+        }
+    }
+}
+
+/// Problems for the lanes, whichever number type they are flown on: the
+/// caller's side of [`integrate_lanes`].
+pub trait LaneProblems<const N: usize> {
+    type System<V: LaneReal>: LaneSystem<N, V>;
+    /// The system on lanes of `V`, ready to be refilled.
+    fn system<V: LaneReal>(self) -> Self::System<V>;
+}
+
+/// Integrates the problems, four at a time, until there are no more: each
+/// as [`super::integrate`] would, with `settings` for all (its
+/// `initial_step`, if given, for the first four). Never allocates. On
+/// `code`'s instructions, or the baseline's where the CPU lacks them.
+pub fn integrate_lanes<const N: usize, P: LaneProblems<N>>(
+    code: LaneCode,
+    problems: P,
+    settings: &Settings,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if code == LaneCode::Avx2 && code.runs_here() {
+        // SAFETY: the CPU runs AVX2.
+        unsafe { integrate_lanes_avx2(problems, settings) };
+        return;
+    }
+    let _ = code;
+    let mut system = problems.system::<Lane>();
+    integrate_lanes_body(&mut system, settings, |s: &P::System<Lane>, t, y| {
+        s.derivative(t, y)
+    });
+}
+
+/// The loop on [`super::super::real::Avx2Lane`], compiled for AVX2: every
+/// operation on its lanes is inlined here (as is the right-hand side, in
+/// the closure defined here: a closure is compiled with the features of
+/// the function that defines it).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn integrate_lanes_avx2<const N: usize, P: LaneProblems<N>>(problems: P, settings: &Settings) {
+    use super::super::real::Avx2Lane;
+    let mut system = problems.system::<Avx2Lane>();
+    integrate_lanes_body(&mut system, settings, |s: &P::System<Avx2Lane>, t, y| {
+        s.derivative(t, y)
+    });
+}
+
+/// The loop, inlined into each of its entries.
+#[inline(always)]
+fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
+    system: &mut S,
+    settings: &Settings,
+    derivative: impl Derivative<N, V, S>,
+) {
     let tol = settings.tolerance;
-    let (relative, absolute) = (Lane::splat(tol.relative), Lane::splat(tol.absolute));
+    let (relative, absolute) = (V::splat(tol.relative), V::splat(tol.absolute));
     let mut c = Carried {
-        t: Lane::ZERO,
-        y: Lanes::ZERO,
-        k1: Lanes::ZERO,
-        h: Lane::ZERO,
-        previous_log2_error: Lane::splat(LOG2_ERROR_FLOOR),
+        t: V::splat(0.0),
+        y: Lanes::zero(),
+        k1: Lanes::zero(),
+        h: V::splat(0.0),
+        previous_log2_error: V::splat(LOG2_ERROR_FLOOR),
         lanes: [LaneState::default(); LANES],
         fresh: [false; LANES],
         needs_first_step: [false; LANES],
@@ -237,7 +349,7 @@ pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, setting
         c.refill(system, j);
     }
     loop {
-        c.start_fresh(system, settings);
+        c.start_fresh(system, &derivative, settings);
         // Each lane's limits, as the single integrator checks them.
         let mut h = c.h.to_array();
         let t = c.t.to_array();
@@ -268,40 +380,41 @@ pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, setting
         if !c.lanes.iter().any(|lane| lane.active) {
             return;
         }
-        let h = Lane::new(h);
+        let h = V::from_array(h);
         c.h = h;
         let (t0, y0, k1) = (c.t, c.y, c.k1);
         let s = stages(
-            &mut |t, y: &Lanes<N>| system.derivative(t, y),
+            &mut |t, y: &Lanes<N, V>| derivative(system, t, y),
             t0,
             &y0,
             &k1,
             h,
         );
-        let inverse = inverse_scales::<Lane, _, N>(&y0, &s.y1, relative, absolute);
+        let inverse = inverse_scales::<V, _, N>(&y0, &s.y1, relative, absolute);
         let error_squared = error_squared(&k1, &s, h, &inverse);
         let log2 = log2_error(error_squared);
-        let accepted = error_squared.simd_le(Lane::ONE);
+        let accepted = error_squared.le(V::splat(1.0));
         let grown = h * accepted_growth(log2, c.previous_log2_error);
-        let h_accepted = Lane::from_bits(c.last_rejected_bits()).select(grown.min(h), grown);
-        let mut h_next = accepted.select(h_accepted, h * rejected_growth(log2));
+        let h_accepted = V::select(c.last_rejected(), grown.min(h), grown);
+        let mut h_next = V::select(accepted, h_accepted, h * rejected_growth(log2));
         let t1 = t0 + h;
         let (quiet, end_by) = system.quiet(accepted, (t1, h), (&y0, &s.y1));
         let quiet = quiet & accepted;
-        let limited = quiet & t1.simd_lt(end_by);
+        let limited = quiet & t1.lt(end_by);
         let h_first = h_next.to_array();
-        h_next = limited.select(h_next.min(end_by - t1), h_next);
-        c.previous_log2_error = accepted.select(
-            log2.max(Lane::splat(LOG2_ERROR_FLOOR)),
+        h_next = V::select(limited, h_next.min(end_by - t1), h_next);
+        c.previous_log2_error = V::select(
+            accepted,
+            log2.max(V::splat(LOG2_ERROR_FLOOR)),
             c.previous_log2_error,
         );
         // Accepted lanes move to the step's end, unless their observer
         // says otherwise below.
-        c.t = accepted.select(t1, t0);
+        c.t = V::select(accepted, t1, t0);
         c.y = Lanes::select(accepted, &s.y1, &y0);
         c.k1 = Lanes::select(accepted, &s.k[5], &k1);
         c.h = h_next;
-        let (accepted, quiet) = (accepted.to_bitmask(), quiet.to_bitmask());
+        let (accepted, quiet) = (V::bitmask(accepted), V::bitmask(quiet));
         let (h_all, t1_all) = (h.to_array(), t1.to_array());
         for j in 0..LANES {
             if !c.lanes[j].active {
@@ -323,7 +436,7 @@ pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, setting
             if quiet & (1 << j) != 0 {
                 continue;
             }
-            let (t0j, hj) = (t0.as_array()[j], h_all[j]);
+            let (t0j, hj) = (t0.to_array()[j], h_all[j]);
             let y0j = y0.lane(j);
             let y1j = s.y1.lane(j);
             let build = || lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s);
@@ -351,28 +464,22 @@ pub fn integrate_lanes<const N: usize, S: LaneSystem<N>>(system: &mut S, setting
     }
 }
 
-impl<const N: usize> Carried<N> {
-    /// All ones in the lanes whose last step was rejected.
+impl<const N: usize, V: LaneReal> Carried<N, V> {
+    /// The lanes whose last step was rejected.
     #[inline(always)]
-    fn last_rejected_bits(&self) -> wide::u64x4 {
-        wide::u64x4::new(std::array::from_fn(|j| {
-            if self.lanes[j].last_rejected {
-                u64::MAX
-            } else {
-                0
-            }
-        }))
+    fn last_rejected(&self) -> V::Mask {
+        V::mask_of(self.lanes.map(|lane| lane.last_rejected))
     }
 }
 
 /// Lane `j`'s continuous extension over its step from (t0, y0) to y1.
-fn lane_dense<const N: usize>(
+fn lane_dense<const N: usize, V: LaneReal>(
     j: usize,
     t0: f64,
     h: f64,
     (y0, y1): (&State<N>, &State<N>),
-    k1: &Lanes<N>,
-    s: &Stages<Lanes<N>>,
+    k1: &Lanes<N, V>,
+    s: &Stages<Lanes<N, V>>,
 ) -> DenseStep<N> {
     let k1 = k1.lane(j);
     let lane = Stages {
