@@ -15,7 +15,7 @@ use crate::Scene;
 use crate::analysis::precision::{BATCH_GUARD, Guard, Purpose};
 use crate::analysis::savant;
 use crate::cli::shown::Shown;
-use crate::model::clearing::{Clearing, Crossing};
+use crate::model::clearing::{Clearing, Crossing, Landing};
 use crate::model::flight::{FlightOptions, FlightSummary};
 use crate::model::launch::{self, BattedBall, SceneFlight};
 use crate::model::many;
@@ -247,7 +247,8 @@ fn ready<'f>(
     // test is a threshold a looser flight could cross in another iteration.
     let launched =
         savant::launch(&job.scene, &job.launch, setup.spray, options).map_err(|e| e.to_string())?;
-    launched.scene.validate().map_err(|e| {
+    // The row was validated whole when it was read; only its launch moved.
+    launched.scene.validate_changed_launch().map_err(|e| {
         if job.launch.estimates_spin() {
             format!("{e} (the spin estimated from the launch angle)")
         } else {
@@ -277,11 +278,12 @@ fn judge(
     clearings: &mut Vec<Clearing>,
 ) {
     clearings.clear();
+    let landing = Landing::of(summary);
     clearings.extend(
         fences
             .iter()
             .zip(crossings)
-            .map(|(fence, crossing)| Clearing::judge(fence, *crossing, summary)),
+            .map(|(fence, crossing)| Clearing::judge_landed(fence, *crossing, summary, landing)),
     );
     if let Some((setup, given)) = own_air {
         for park in &setup.parks.parks {
