@@ -279,8 +279,15 @@ pub enum InputError {
 impl Scene {
     /// Looks up a numeric key.
     pub fn key(name: &str) -> Result<&'static Key, InputError> {
-        all_keys()
-            .find(|k| k.name == name)
+        // By hash: a batch looks up a column's key on every row, and a
+        // search through the 70-odd names cost more than the rest of
+        // setting it.
+        static BY_NAME: std::sync::OnceLock<std::collections::HashMap<&'static str, &'static Key>> =
+            std::sync::OnceLock::new();
+        let by_name = BY_NAME.get_or_init(|| all_keys().map(|k| (k.name, k)).collect());
+        by_name
+            .get(name)
+            .copied()
             .ok_or_else(|| InputError::UnknownKey {
                 key: name.to_owned(),
                 known: known_keys(),
