@@ -98,10 +98,39 @@ pub struct Clearing {
     pub height_at_fence: Option<f64>,
 }
 
+/// Where a flight came down, as every fence reads it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Landing {
+    /// The landing point's direction from home plate (rad): the flight's
+    /// own, or the opposite one for a planar flight that lands behind the
+    /// plate (its range is signed).
+    pub direction: f64,
+}
+
+impl Landing {
+    pub fn of(flight: &FlightSummary) -> Landing {
+        let (sin, cos) = flight.direction.sin_cos();
+        Landing {
+            direction: frame::direction_of(flight.range * cos, flight.range * sin),
+        }
+    }
+}
+
 impl Clearing {
     /// `flight`, whose track crossed `fence` at `crossing` (or never did),
     /// judged.
     pub fn judge(fence: &Fence, crossing: Option<Crossing>, flight: &FlightSummary) -> Clearing {
+        Clearing::judge_landed(fence, crossing, flight, Landing::of(flight))
+    }
+
+    /// As [`Clearing::judge`], with the flight's [`Landing`] worked out
+    /// once for all the fences it is judged at.
+    pub fn judge_landed(
+        fence: &Fence,
+        crossing: Option<Crossing>,
+        flight: &FlightSummary,
+        landing: Landing,
+    ) -> Clearing {
         if let Some(c) = crossing {
             let wall = fence.at(c.direction);
             let margin = wall.map(|w| c.height - w.height);
@@ -118,9 +147,7 @@ impl Clearing {
                 height_at_fence: Some(c.height),
             };
         }
-        // A planar flight's range is signed: negative lands behind the plate.
-        let (sin, cos) = flight.direction.sin_cos();
-        let landing = frame::direction_of(flight.range * cos, flight.range * sin);
+        let landing = landing.direction;
         let wall = fence.at(landing);
         let (outcome, margin) = match wall {
             None => (Outcome::Foul, None),
@@ -204,10 +231,11 @@ impl SceneFlight {
     ) -> (FlightSummary, Vec<Clearing>) {
         let mut crossings = vec![None; fences.len()];
         let summary = self.fly_to_fences(options, fences, &mut crossings);
+        let landing = Landing::of(&summary);
         let clearings = fences
             .iter()
             .zip(crossings)
-            .map(|(fence, crossing)| Clearing::judge(fence, crossing, &summary))
+            .map(|(fence, crossing)| Clearing::judge_landed(fence, crossing, &summary, landing))
             .collect();
         (summary, clearings)
     }
@@ -222,6 +250,16 @@ pub(crate) fn watch_planar(
     fences: &[&Fence],
     crossings: &mut [Option<Crossing>],
 ) {
+    // The plane's turn keeps lengths: |x| is the reach, to a few ulps, and
+    // the turn (a sine and cosine, more than the rest of a step's watch) is
+    // worked out only once some fence not yet crossed is within it.
+    let reach = step.y1[0].abs() * (1.0 + 1e-12);
+    let near = |(fence, crossing): (&&Fence, &Option<Crossing>)| {
+        crossing.is_none() && reach >= fence.nearest()
+    };
+    if !fences.iter().zip(crossings.iter()).any(near) {
+        return;
+    }
     let (sin, cos) = plane.sin_cos();
     watch_fences(step, fences, crossings, |s| [s[0] * cos, s[0] * sin, s[1]]);
 }

@@ -58,9 +58,22 @@ pub fn judge_many<'f>(
         offsets.push(offsets.last().copied().unwrap_or(0) + f.len());
     }
     let mut crossings = vec![None; offsets.last().copied().unwrap_or(0)];
+    // Each flight's nearest wall: short of it, a step is short of them all
+    // (most steps of most flights), and no fence need see it.
+    let closest: Vec<f64> = fences
+        .iter()
+        .map(|list| {
+            list.iter()
+                .map(|f| f.nearest())
+                .fold(f64::INFINITY, f64::min)
+        })
+        .collect();
     for group in groups(&flights) {
         let crossings = std::cell::RefCell::new(&mut crossings);
         let mut watch = |index: usize, step: &dyn WatchedStep| {
+            if step.reach() < closest[index] {
+                return;
+            }
             let mut all = crossings.borrow_mut();
             let mine = &mut all[offsets[index]..offsets[index + 1]];
             step.watch(&flights[index], fences[index], mine);
@@ -87,9 +100,21 @@ type FencesWatch<'w> = &'w mut dyn FnMut(usize, &dyn WatchedStep);
 /// A step of either kind of flight, for the fences' watch.
 trait WatchedStep {
     fn watch(&self, flight: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]);
+    /// How far from home plate the step ends (m), never short of what the
+    /// watch works out (a few ulps over).
+    fn reach(&self) -> f64;
 }
 
+/// A reach's allowance for rounding: the watch's own figure may come out
+/// a few ulps over a shortcut's.
+const REACH_ROUNDING: f64 = 1.0 + 1e-12;
+
 impl WatchedStep for crate::numerics::ode::Step<'_, 4> {
+    fn reach(&self) -> f64 {
+        // The plane's turn keeps lengths.
+        self.y1[0].abs() * REACH_ROUNDING
+    }
+
     fn watch(&self, flight: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
         if let SceneFlight::Planar { plane, .. } = flight {
             watch_planar(self, *plane, fences, crossings);
@@ -98,6 +123,11 @@ impl WatchedStep for crate::numerics::ode::Step<'_, 4> {
 }
 
 impl WatchedStep for crate::numerics::ode::Step<'_, 6> {
+    fn reach(&self) -> f64 {
+        let (x, z) = (self.y1[0], self.y1[2]);
+        (x * x + z * z).sqrt() * REACH_ROUNDING
+    }
+
     fn watch(&self, _: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
         watch_spatial(self, fences, crossings);
     }

@@ -15,7 +15,7 @@ use crate::Scene;
 use crate::analysis::precision::{BATCH_GUARD, Guard, Purpose};
 use crate::analysis::savant;
 use crate::cli::shown::Shown;
-use crate::model::clearing::{Clearing, Crossing};
+use crate::model::clearing::{Clearing, Crossing, Landing};
 use crate::model::flight::{FlightOptions, FlightSummary};
 use crate::model::launch::{self, BattedBall, SceneFlight};
 use crate::model::many;
@@ -45,11 +45,59 @@ pub(super) struct Scratch {
     /// One row's, flown again.
     again: Vec<Option<Crossing>>,
     summaries: Vec<FlightSummary>,
-    clearings: Vec<Clearing>,
+    /// The row's judging: at its own fence, then at each park.
+    judged: Judged,
     /// For each row flown, a flag per park: cleared.
     pub cleared: Vec<bool>,
     /// Rows flown twice (unsettled at the batch's precision).
     pub refined: usize,
+}
+
+/// A row judged: at its own fence in full (its margin is printed), at each
+/// park as far as the output needs.
+#[derive(Default)]
+struct Judged {
+    own: Option<Clearing>,
+    parks: Vec<Verdict>,
+}
+
+/// A park's judging of a row, as the batch prints it.
+#[derive(Clone, Copy)]
+struct Verdict {
+    clears: bool,
+    /// The outcome stands [`BATCH_GUARD`] from each of its thresholds
+    /// ([`decided`]).
+    decided: bool,
+}
+
+impl Verdict {
+    /// `flight` judged at `fence`. A ball that crossed no fence and came
+    /// down fair or foul by more than the guard, short of the fence's
+    /// nearest point by more than the guard, is short (or foul) and
+    /// decided there without looking the wall up: most rows, at most parks.
+    fn of(
+        fence: &park::Fence,
+        crossing: Option<Crossing>,
+        flight: &FlightSummary,
+        landing: Landing,
+    ) -> Verdict {
+        let guard = BATCH_GUARD;
+        let far_short = crossing.is_none()
+            && flight.landed
+            && flight.range.abs() < fence.nearest() - guard.distance
+            && (landing.direction.abs() - park::FOUL_LINE).abs() > guard.angle;
+        if far_short {
+            return Verdict {
+                clears: false,
+                decided: true,
+            };
+        }
+        let clearing = Clearing::judge_landed(fence, crossing, flight, landing);
+        Verdict {
+            clears: clearing.clears(),
+            decided: decided(&clearing, guard),
+        }
+    }
 }
 
 /// What the output prints of a row, for [`settled`].
@@ -147,13 +195,13 @@ pub(super) fn fly_chunk(
             &summary,
             own_air,
             &purpose.flight_options(),
-            &mut scratch.clearings,
+            &mut scratch.judged,
         );
         if purpose == Purpose::Batch
             && !settled(
                 &summary,
                 ready.flight.is_planar(),
-                &scratch.clearings,
+                &scratch.judged,
                 printed,
                 job,
             )
@@ -172,16 +220,16 @@ pub(super) fn fly_chunk(
                 &summary,
                 own_air,
                 &readout,
-                &mut scratch.clearings,
+                &mut scratch.judged,
             );
         }
         let from = scratch.cleared.len();
-        let cleared = scratch.clearings[1..].iter().map(Clearing::clears);
+        let cleared = scratch.judged.parks.iter().map(|v| v.clears);
         scratch.cleared.extend(cleared);
         out.push(Ok(RowFlight {
             launch: ready.launch,
             flight: summary,
-            clearing: scratch.clearings[0],
+            clearing: scratch.judged.own.expect("judged at its own fence"),
             parks_cleared: scratch.cleared[from..].iter().filter(|&&c| c).count(),
             cleared_from: from,
             flights: ready.flights,
@@ -247,7 +295,8 @@ fn ready<'f>(
     // test is a threshold a looser flight could cross in another iteration.
     let launched =
         savant::launch(&job.scene, &job.launch, setup.spray, options).map_err(|e| e.to_string())?;
-    launched.scene.validate().map_err(|e| {
+    // The row was validated whole when it was read; only its launch moved.
+    launched.scene.validate_changed_launch().map_err(|e| {
         if job.launch.estimates_spin() {
             format!("{e} (the spin estimated from the launch angle)")
         } else {
@@ -266,7 +315,7 @@ fn ready<'f>(
 
 /// A flight judged at `fences` (the row's own, then each park's; with
 /// `own_air`, its own alone, and each park on a flight of its own in its own
-/// air) into `clearings`, in that order.
+/// air) into `judged`.
 fn judge(
     ready: &Ready,
     fences: &[&park::Fence],
@@ -274,14 +323,21 @@ fn judge(
     summary: &FlightSummary,
     own_air: Option<(&Setup, GivenWeather)>,
     options: &FlightOptions,
-    clearings: &mut Vec<Clearing>,
+    judged: &mut Judged,
 ) {
-    clearings.clear();
-    clearings.extend(
-        fences
+    let landing = Landing::of(summary);
+    judged.own = Some(Clearing::judge_landed(
+        fences[0],
+        crossings[0],
+        summary,
+        landing,
+    ));
+    judged.parks.clear();
+    judged.parks.extend(
+        fences[1..]
             .iter()
-            .zip(crossings)
-            .map(|(fence, crossing)| Clearing::judge(fence, *crossing, summary)),
+            .zip(&crossings[1..])
+            .map(|(fence, crossing)| Verdict::of(fence, *crossing, summary, landing)),
     );
     if let Some((setup, given)) = own_air {
         for park in &setup.parks.parks {
@@ -290,7 +346,9 @@ fn judge(
             let (flight, _, _) = launch::scene_start(&there);
             let mut crossing = [None];
             let flown = flight.fly_to_fences(options, &[&park.fence], &mut crossing);
-            clearings.push(Clearing::judge(&park.fence, crossing[0], &flown));
+            let landing = Landing::of(&flown);
+            let verdict = Verdict::of(&park.fence, crossing[0], &flown, landing);
+            judged.parks.push(verdict);
         }
     }
 }
@@ -302,10 +360,11 @@ fn judge(
 fn settled(
     flight: &FlightSummary,
     planar: bool,
-    clearings: &[Clearing],
+    judged: &Judged,
     printed: Printed,
     job: &Job,
 ) -> bool {
+    let own = judged.own.expect("judged at its own fence");
     let guard = BATCH_GUARD;
     let same = |quantity, value: f64, error: f64, decimals| {
         printed_alike(printed.shown, quantity, value, error, decimals)
@@ -317,7 +376,7 @@ fn settled(
         && same(Quantity::Unchanged, flight.flight_time, guard.time, 3)
         && same(Quantity::Distance, flight.apex, guard.distance, 3)
         && same(Quantity::Angle, flight.landing_angle, guard.angle, 4)
-        && clearings[0]
+        && own
             .margin
             .is_none_or(|m| same(Quantity::Distance, m, guard.distance, 3))
         && (!printed.statcast
@@ -329,7 +388,7 @@ fn settled(
                     2,
                 )
             }));
-    numbers && clearings.iter().all(|c| decided(c, guard))
+    numbers && decided(&own, guard) && judged.parks.iter().all(|v| v.decided)
 }
 
 /// Whether `value` and anything within `error` of it print alike (the

@@ -5,7 +5,7 @@
 use crate::Scene;
 use crate::analysis::savant::RowLaunch;
 use crate::model::aero::UnknownModel;
-use crate::model::keys::{DRAG_KEY, InputBatch, InputError, TEXT_KEYS};
+use crate::model::keys::{DRAG_KEY, InputBatch, InputError, Key, TEXT_KEYS};
 use crate::model::park::GivenWeather;
 use crate::model::scene::UnknownHand;
 use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
@@ -119,6 +119,13 @@ pub(in crate::cli) fn columns_help() -> String {
         FIELD_KEYS[0].name
     );
     text
+}
+
+/// The key of [`LAUNCH_COLUMNS`]`[index]`, looked up once.
+fn launch_key(index: usize) -> &'static Key {
+    static KEYS: std::sync::OnceLock<[&'static Key; 3]> = std::sync::OnceLock::new();
+    KEYS.get_or_init(|| LAUNCH_COLUMNS.map(|(name, _)| Scene::key(name).expect("a launch key")))
+        [index]
 }
 
 /// What one input column is.
@@ -413,7 +420,7 @@ pub(super) fn parse_row(
             Column::Launch(index, Unit::Si) => {
                 spin_given |= index == 2;
                 batch
-                    .set_text(&mut scene, LAUNCH_COLUMNS[index].0, value)
+                    .set_key_text(&mut scene, launch_key(index), value)
                     .map_err(|e| e.to_string())
             }
             // Statcast's own columns: a bare number in their unit.
@@ -421,7 +428,7 @@ pub(super) fn parse_row(
                 converted = true;
                 spin_given |= index == 2;
                 batch
-                    .set(&mut scene, LAUNCH_COLUMNS[index].0, unit.to_si(v))
+                    .set_key(&mut scene, launch_key(index), unit.to_si(v))
                     .map_err(|e| e.to_string())
             }),
             // The whole value is parsed; only the error's copy is cut.

@@ -1,7 +1,7 @@
 //! Inputs from one source, set key by key.
 
 use super::table::{AIR_KEYS, ATMOSPHERE_KEYS, TEXT_KEYS};
-use super::{InputError, Scene};
+use super::{InputError, Key, Scene};
 
 /// Sets keys one by one from one source of inputs (one preset file, one
 /// command line's `--set` list), refusing a source that both gives ρ or ν
@@ -44,6 +44,32 @@ impl InputBatch {
         let key = Scene::key(name)?;
         let next = self.with(key.name)?;
         (key.set)(scene, value);
+        *self = next;
+        Ok(())
+    }
+
+    /// [`InputBatch::set`] for a key already looked up (a batch's column,
+    /// set on every row: the lookup by name cost more than the rest).
+    pub fn set_key(
+        &mut self,
+        scene: &mut Scene,
+        key: &'static Key,
+        value: f64,
+    ) -> Result<(), InputError> {
+        *self = self.with(key.name)?;
+        (key.set)(scene, value);
+        Ok(())
+    }
+
+    /// [`InputBatch::set_text`] for a numeric key already looked up.
+    pub fn set_key_text(
+        &mut self,
+        scene: &mut Scene,
+        key: &'static Key,
+        text: &str,
+    ) -> Result<(), InputError> {
+        let next = self.with(key.name)?;
+        (key.set)(scene, key.read(text)?);
         *self = next;
         Ok(())
     }

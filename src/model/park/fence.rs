@@ -38,7 +38,17 @@ pub struct Fence {
     /// not reached it, whatever its direction (one comparison per step
     /// when a flight is tested against many fences).
     nearest: f64,
+    /// For each of [`BUCKETS`] equal slices of fair territory, from the
+    /// left-field line, the first point past the slice's start: where the
+    /// search for a direction's segment begins (a batch looks up 31 fences
+    /// a row; a binary search's unpredictable branches cost several times
+    /// this table's one multiply and a step or two forward).
+    first_past: Vec<u16>,
 }
+
+/// Slices of fair territory in [`Fence::first_past`]: under 1° each, so a
+/// search walks past at most the points of one slice.
+const BUCKETS: usize = 128;
 
 /// Why a list of points is not a fence (the parser names the park and field).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -149,7 +159,22 @@ impl Fence {
             .iter()
             .map(|p| p.distance)
             .fold(f64::INFINITY, f64::min);
-        Fence { points, nearest }
+        let first_past = (0..BUCKETS)
+            .map(|bucket| {
+                let start = Fence::bucket_start(bucket);
+                points.partition_point(|p| p.direction <= start) as u16
+            })
+            .collect();
+        Fence {
+            points,
+            nearest,
+            first_past,
+        }
+    }
+
+    /// The direction where slice `bucket` of [`Fence::first_past`] begins.
+    fn bucket_start(bucket: usize) -> f64 {
+        -FOUL_LINE + bucket as f64 * (2.0 * FOUL_LINE / BUCKETS as f64)
     }
 
     /// The shortest distance from home plate to the wall (m).
@@ -205,10 +230,20 @@ impl Fence {
     /// pair that starts there (the right-hand side).
     fn segment(&self, direction: f64) -> (FencePoint, FencePoint) {
         let points = &self.points;
-        // The first point past `direction`.
-        let after = points
-            .partition_point(|p| p.direction <= direction)
-            .clamp(1, points.len() - 1);
+        // The first point past `direction`: from the first past its
+        // slice's start (NaN and directions outside fair territory fall in
+        // the first or last slice), on while points are not past it.
+        let slice = (direction + FOUL_LINE) * (BUCKETS as f64 / (2.0 * FOUL_LINE));
+        let mut bucket = (slice as usize).min(BUCKETS - 1);
+        // The product rounds, by ulps: at most one slice too far.
+        if bucket > 0 && Fence::bucket_start(bucket) > direction {
+            bucket -= 1;
+        }
+        let mut after = self.first_past[bucket] as usize;
+        while after < points.len() && points[after].direction <= direction {
+            after += 1;
+        }
+        let after = after.clamp(1, points.len() - 1);
         (points[after - 1], points[after])
     }
 
@@ -252,6 +287,50 @@ mod tests {
             direction,
             distance,
             height,
+        }
+    }
+
+    #[test]
+    fn the_slice_table_finds_the_segment_a_binary_search_finds() {
+        // Every bundled park and a fence with points on slice boundaries
+        // and a step: at each point's direction, an ulp either side, each
+        // slice's start and an ulp either side, and a fine sweep.
+        let start = Fence::bucket_start;
+        let mut fences: Vec<Fence> = super::super::bundled()
+            .iter()
+            .map(|p| p.fence.clone())
+            .collect();
+        let mut points = vec![point(-FOUL_LINE, 100.0, 3.0)];
+        for b in [1, 2, 2, 64, 100, 127] {
+            points.push(point(start(b), 110.0, if b == 2 { 5.0 } else { 3.0 }));
+        }
+        points.push(point(FOUL_LINE, 100.0, 3.0));
+        fences.push(Fence::new(points).unwrap());
+        let next = |d: f64, up: bool| {
+            let bits = d.to_bits() as i64;
+            let step = if (d >= 0.0) == up { 1 } else { -1 };
+            if d == 0.0 {
+                if up { 1e-300 } else { -1e-300 }
+            } else {
+                f64::from_bits((bits + step) as u64)
+            }
+        };
+        for fence in &fences {
+            let mut directions: Vec<f64> = fence.points.iter().map(|p| p.direction).collect();
+            directions.extend((0..BUCKETS).map(start));
+            directions.extend((0..=2000).map(|i| -FOUL_LINE + i as f64 * FOUL_LINE / 1000.0));
+            for d in directions.clone() {
+                directions.extend([next(d, true), next(d, false)]);
+            }
+            for d in directions {
+                let d = d.clamp(-FOUL_LINE, FOUL_LINE);
+                let searched = fence
+                    .points
+                    .partition_point(|p| p.direction <= d)
+                    .clamp(1, fence.points.len() - 1);
+                let expected = (fence.points[searched - 1], fence.points[searched]);
+                assert_eq!(fence.segment(d), expected, "at {d:e}");
+            }
         }
     }
 
