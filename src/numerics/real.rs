@@ -314,15 +314,13 @@ lanes_real!(f64x8, wide::u64x8);
 pub trait LaneReal: Real + std::fmt::Debug {
     fn from_array(lanes: [f64; LANES]) -> Self;
     fn to_array(self) -> [f64; LANES];
-    /// Sets lane `j` to `x`.
-    #[inline(always)]
-    fn set(&mut self, j: usize, x: f64) {
-        let mut lanes = self.to_array();
-        lanes[j] = x;
-        *self = Self::from_array(lanes);
-    }
+    /// Sets lane `j` to `x`, in place (a whole vector written back would
+    /// wait for the one lane's store to land).
+    fn set(&mut self, j: usize, x: f64);
     /// The mask that holds in the lanes where `holds` is true.
     fn mask_of(holds: [bool; LANES]) -> Self::Mask;
+    /// Sets lane `j` of `mask` to `holds`, in place.
+    fn set_mask(mask: &mut Self::Mask, j: usize, holds: bool);
     /// Bit j set where lane j of `mask` holds.
     fn bitmask(mask: Self::Mask) -> u32;
 }
@@ -349,6 +347,10 @@ impl LaneReal for f64x4 {
     #[inline(always)]
     fn mask_of(holds: [bool; LANES]) -> Self {
         f64x4::new(holds.map(mask_bits))
+    }
+    #[inline(always)]
+    fn set_mask(mask: &mut Self, j: usize, holds: bool) {
+        mask.set(j, mask_bits(holds));
     }
     #[inline(always)]
     fn bitmask(mask: Self) -> u32 {
@@ -537,8 +539,18 @@ mod avx2 {
             unsafe { std::mem::transmute::<__m256d, [f64; LANES]>(self.0) }
         }
         #[inline(always)]
+        fn set(&mut self, j: usize, x: f64) {
+            // SAFETY: the type is one __m256d, laid out as four f64.
+            let lanes = unsafe { &mut *(self as *mut Self).cast::<[f64; LANES]>() };
+            lanes[j] = x;
+        }
+        #[inline(always)]
         fn mask_of(holds: [bool; LANES]) -> Self {
             Self::from_array(holds.map(super::mask_bits))
+        }
+        #[inline(always)]
+        fn set_mask(mask: &mut Self, j: usize, holds: bool) {
+            mask.set(j, super::mask_bits(holds));
         }
         #[inline(always)]
         fn bitmask(mask: Self) -> u32 {

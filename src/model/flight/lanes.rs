@@ -205,10 +205,8 @@ struct FlightLanes<'r, const N: usize, V: LaneReal, D: LaneFlight<N>, Dr, L, J> 
     each: [D::Constants; LANES],
     constants: D::LaneConstants<V>,
     /// Each lane's regime: its drag piece (a float) and whether it is in
-    /// the wind (a lane mask, from `in_wind_each`), and what the regime
-    /// bounds.
+    /// the wind (a lane mask), and what the regime bounds.
     pieces: V,
-    in_wind_each: [bool; LANES],
     in_wind: V::Mask,
     bounds: Bounds<V>,
     events: [Option<Events<N, D>>; LANES],
@@ -221,12 +219,11 @@ impl<const N: usize, V: LaneReal, D: LaneFlight<N>, Dr, L, J> FlightLanes<'_, N,
     /// Lane `j`'s regime from its events.
     fn set_regime(&mut self, j: usize, (regime, bounds): (Regime, Bounds<f64>)) {
         self.pieces.set(j, regime.piece.unwrap_or_default() as f64);
-        self.in_wind_each[j] = regime.in_wind;
-        self.in_wind = V::mask_of(self.in_wind_each);
+        V::set_mask(&mut self.in_wind, j, regime.in_wind);
         self.bounds.kink_below.set(j, bounds.kink_below);
         self.bounds.kink_above.set(j, bounds.kink_above);
         self.bounds.wind_height.set(j, bounds.wind_height);
-        self.bounds.in_wind = self.in_wind;
+        V::set_mask(&mut self.bounds.in_wind, j, regime.in_wind);
     }
 }
 
@@ -423,7 +420,6 @@ where
             each: [D::Constants::default(); LANES],
             constants: D::gather(&[D::Constants::default(); LANES]),
             pieces: V::splat(0.0),
-            in_wind_each: none,
             in_wind: V::mask_of(none),
             bounds: Bounds {
                 kink_below: V::splat(0.0),
