@@ -1,5 +1,5 @@
 //! Independent problems integrated in lock-step ([`LANES`] at a time): one state per lane
-//! of `wide` vectors ([`Lane`]) (struct of arrays), each lane with its own time,
+//! of vectors (struct of arrays), each lane with its own time,
 //! step size and controller, so that the stages of their steps run as one
 //! chain of vector operations where a single problem's steps would wait on
 //! each other. A lane whose step is rejected retries while the others go
@@ -10,6 +10,11 @@
 //! [`super::controller`]'s, the same as the single integrator's; what
 //! happens between steps (events, the dense output where one falls) is the
 //! system's, lane by lane, in scalar code.
+//!
+//! The vectors' type is a parameter ([`LaneReal`]): `wide`'s [`Lane`]
+//! (SSE2 pairs in the baseline x86-64 build), or, where the CPU has AVX2
+//! ([`LaneCode`]), one AVX register in a clone of the loop compiled for it.
+//! Both give the same bits.
 
 use std::ops::{Add, Mul, Sub};
 
@@ -311,10 +316,11 @@ pub fn integrate_lanes<const N: usize, P: LaneProblems<N>>(
     });
 }
 
-/// The loop on [`super::super::real::Avx2Lane`], compiled for AVX2: every
-/// operation on its lanes is inlined here (as is the right-hand side, in
-/// the closure defined here: a closure is compiled with the features of
-/// the function that defines it).
+/// The loop on `Avx2Lane` (`real/avx2.rs`), compiled for AVX2: every
+/// operation on its lanes is inlined here. The right-hand side is the
+/// closure defined here, so that it is compiled for AVX2 too (a closure
+/// takes the target features of the function that defines it, not of its
+/// caller).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 fn integrate_lanes_avx2<const N: usize, P: LaneProblems<N>>(problems: P, settings: &Settings) {
