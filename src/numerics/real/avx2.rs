@@ -5,7 +5,7 @@
 //! Its operations are AVX instructions, written with `core::arch`: a value
 //! may only be operated on where the CPU has AVX2. The type is private to
 //! the crate, and used by one function, `integrate_lanes_avx2`
-//! ([`crate::numerics::ode::lanes`]), entered only once AVX2 is detected and
+//! ([`super::super::ode::lanes`]), entered only once AVX2 is detected and
 //! compiled with `#[target_feature(enable = "avx2")]`; everything here is
 //! `#[inline(always)]` into it. A closure or function left out of line
 //! would call each instruction as a function (6× slower, measured): `objdump
