@@ -250,10 +250,9 @@ pub(crate) fn watch_planar(
     fences: &[&Fence],
     crossings: &mut [Option<Crossing>],
 ) {
-    // The plane's turn keeps lengths: |x| is the reach, to a few ulps, and
-    // the turn (a sine and cosine, more than the rest of a step's watch) is
-    // worked out only once some fence not yet crossed is within it.
-    let reach = step.y1[0].abs() * (1.0 + 1e-12);
+    // The turn (a sine and cosine, more than the rest of a step's watch) is
+    // worked out only once some fence not yet crossed is within reach.
+    let reach = planar_reach(step);
     let near = |(fence, crossing): (&&Fence, &Option<Crossing>)| {
         crossing.is_none() && reach >= fence.nearest()
     };
@@ -262,6 +261,24 @@ pub(crate) fn watch_planar(
     }
     let (sin, cos) = plane.sin_cos();
     watch_fences(step, fences, crossings, |s| [s[0] * cos, s[0] * sin, s[1]]);
+}
+
+/// A reach's allowance for rounding: the watch's own figure may come out
+/// a few ulps over a shortcut's.
+const REACH_ROUNDING: f64 = 1.0 + 1e-12;
+
+/// How far from home plate a planar step ends (m), never short of what the
+/// watch works out: the plane's turn keeps lengths, so |x|, to a few ulps.
+#[inline]
+pub(crate) fn planar_reach(step: &Step<4>) -> f64 {
+    step.y1[0].abs() * REACH_ROUNDING
+}
+
+/// [`planar_reach`] for a 3-D step.
+#[inline]
+pub(crate) fn spatial_reach(step: &Step<6>) -> f64 {
+    let (x, z) = (step.y1[0], step.y1[2]);
+    (x * x + z * z).sqrt() * REACH_ROUNDING
 }
 
 /// [`watch_fences`] for a 3-D flight (x toward centre field, y up, z

@@ -10,7 +10,7 @@
 //! the first step its neighbours found. Results come in the order the
 //! flights finish, each with its index in the list.
 
-use super::clearing::{Crossing, watch_planar, watch_spatial};
+use super::clearing::{Crossing, planar_reach, spatial_reach, watch_planar, watch_spatial};
 use super::flight::lanes::{LaneJob, LaneReports, fly_lanes};
 use super::flight::{FlightOptions, FlightSummary, Start};
 use super::launch::SceneFlight;
@@ -105,14 +105,9 @@ trait WatchedStep {
     fn reach(&self) -> f64;
 }
 
-/// A reach's allowance for rounding: the watch's own figure may come out
-/// a few ulps over a shortcut's.
-const REACH_ROUNDING: f64 = 1.0 + 1e-12;
-
 impl WatchedStep for crate::numerics::ode::Step<'_, 4> {
     fn reach(&self) -> f64 {
-        // The plane's turn keeps lengths.
-        self.y1[0].abs() * REACH_ROUNDING
+        planar_reach(self)
     }
 
     fn watch(&self, flight: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
@@ -124,8 +119,7 @@ impl WatchedStep for crate::numerics::ode::Step<'_, 4> {
 
 impl WatchedStep for crate::numerics::ode::Step<'_, 6> {
     fn reach(&self) -> f64 {
-        let (x, z) = (self.y1[0], self.y1[2]);
-        (x * x + z * z).sqrt() * REACH_ROUNDING
+        spatial_reach(self)
     }
 
     fn watch(&self, _: &SceneFlight, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
