@@ -270,7 +270,7 @@ fn with_no_swing_of_the_scan_landing_there_is_no_optimum() {
 }
 
 /// A heavy-spun big ball in dense air (the `WORK` scene of
-/// tests/command_line.rs): the search runs into its work limit, and its best
+/// tests/command_line/flights.rs): the search runs into its work limit, and its best
 /// swing lands at the optimiser's precision but not at the readout's.
 fn work() -> Scene {
     let mut scene = Scene::default();

@@ -1,0 +1,441 @@
+//! Keys and inputs (nudges, typed values, presets, colours, units, the pin)
+//! and the worker that answers them (stale results never shown, cancelling).
+
+use std::time::Duration;
+
+use crate::input_index;
+use crate::tui_support::*;
+use homerun::analysis::optimum::{OptimizerSettings, optimize, optimize_from};
+use homerun::tui::app::Mode;
+use homerun::tui::worker::{Report, Worker, run_job};
+use ratatui::crossterm::event::{KeyCode, KeyModifiers};
+
+#[test]
+fn nudging_the_undercut_up_adds_backspin_and_range() {
+    // The fastball's Table II swing has E = 26.5 mm, below the optimum 27.27
+    // mm: more undercut means more backspin (Fig. 6) and, here, more range.
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.undercut");
+    let (spin, range) = (app.flown.launch.spin, app.flown.flight.range);
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.scene.bat.undercut, 0.0265 + 0.0005);
+    assert!(app.flown.launch.spin > spin + 1.0);
+    assert!(app.flown.flight.range > range);
+    // Down again, ten steps with Shift: less spin, less range than at the start.
+    key_with(&mut app, KeyCode::Left, KeyModifiers::SHIFT);
+    assert!((app.scene.bat.undercut - (0.0265 - 0.0045)).abs() < 1e-12);
+    assert!(app.flown.launch.spin < spin - 10.0);
+    assert!(app.flown.flight.range < range);
+    // A finer nudge: a tenth of the step.
+    key(&mut app, KeyCode::Char(']'));
+    assert!((app.scene.bat.undercut - (0.0265 - 0.0045 + 0.00005)).abs() < 1e-12);
+}
+
+#[test]
+fn a_nudge_out_of_range_is_refused_with_the_reason() {
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.friction");
+    for _ in 0..6 {
+        key_with(&mut app, KeyCode::Char('H'), KeyModifiers::SHIFT);
+    }
+    assert!(app.scene.bat.friction >= 0.0);
+    let (message, error) = app.message.clone().unwrap();
+    assert!(error && message.contains("bat.friction"), "{message}");
+}
+
+#[test]
+fn typed_values_are_parsed_validated_and_kept_or_refused() {
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Enter);
+    for _ in 0..4 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "fast");
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Edit {
+            error: Some(error), ..
+        } => assert!(error.contains("not a number"), "{error}"),
+        other => panic!("still editing with an error, not {other:?}"),
+    }
+    assert_eq!(app.scene.bat.speed, 30.0);
+    key(&mut app, KeyCode::Esc);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_eq!(app.scene.bat.speed, 30.0);
+    key(&mut app, KeyCode::Enter);
+    for _ in 0..4 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "35");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_eq!(app.scene.bat.speed, 35.0);
+}
+
+#[test]
+fn settled_background_optimum_equals_optimize() {
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.speed");
+    // Several changes in one batch: only the last inputs are worked on.
+    key(&mut app, KeyCode::Char('l'));
+    key(&mut app, KeyCode::Char('l'));
+    settle(&mut app);
+    let shown = app.optimum.unwrap();
+    assert!(shown.done);
+    // The first search starts from the scene's own swing, as optimize() does.
+    let direct = optimize(&app.scene, OptimizerSettings::default());
+    assert_eq!(shown.best.undercut, direct.undercut);
+    assert_eq!(shown.best.swing_angle, direct.swing_angle);
+    assert_eq!(shown.best.range, direct.range);
+    assert_eq!(shown.evaluations, direct.evaluations);
+
+    // The next search is warm-started from that optimum: the same as
+    // optimize_from() there, and the same optimum as a cold search to within
+    // the optimiser's tolerance on range (1e-4 m).
+    let warm = (shown.best.undercut, shown.best.swing_angle);
+    key(&mut app, KeyCode::Char('l'));
+    settle(&mut app);
+    let shown = app.optimum.unwrap();
+    let direct = optimize_from(&app.scene, warm, OptimizerSettings::default());
+    assert_eq!(shown.best.range, direct.range);
+    assert_eq!(shown.best.undercut, direct.undercut);
+    let cold = optimize(&app.scene, OptimizerSettings::default());
+    assert!(
+        (shown.best.range - cold.range).abs() < 2e-4,
+        "{shown:?} vs {cold:?}"
+    );
+    assert!((shown.best.undercut - cold.undercut).abs() < 2e-4);
+}
+
+#[test]
+fn a_stale_result_is_never_shown_for_new_inputs() {
+    let mut app = app(80, 24, None);
+    let old_job = app.take_job().unwrap();
+    let mut old_reports = Vec::new();
+    run_job(&old_job, &|| false, &mut |r| old_reports.push(r));
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('L'));
+    assert!(app.generation > old_job.generation);
+    for report in old_reports {
+        app.apply(report);
+    }
+    assert_eq!(app.optimum, None);
+    assert_eq!(app.surface, None);
+    assert!(app.optimal_path.is_empty());
+    // The status line says it is still working, not a stale figure.
+    let screen = screen(&app);
+    assert!(screen.contains("optimising…"), "{screen}");
+    assert!(!screen.contains("134.79"), "{screen}");
+}
+
+#[test]
+fn the_worker_thread_cancels_old_work_and_finishes_the_new() {
+    let mut app = app(80, 24, None);
+    let worker = Worker::spawn();
+    let first = app.take_job().unwrap();
+    worker.submit(first);
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('l'));
+    let second = app.take_job().unwrap();
+    worker.submit(second);
+    // Collect reports until the new job's optimiser and finest surface are in.
+    let (mut optimum_done, mut surface_done) = (false, false);
+    while !(optimum_done && surface_done) {
+        let report = worker
+            .reports
+            .recv_timeout(Duration::from_secs(120))
+            .expect("the worker answers");
+        match &report {
+            Report::Optimum {
+                generation, done, ..
+            } if *generation == second.generation => optimum_done |= *done,
+            Report::Surface {
+                generation, last, ..
+            } if *generation == second.generation => surface_done |= *last,
+            _ => {}
+        }
+        app.apply(report);
+    }
+    let shown = app.optimum.unwrap();
+    assert_eq!(
+        shown.best.range,
+        optimize(&second.scene, OptimizerSettings::default()).range
+    );
+    assert!(app.surface.as_ref().unwrap().last);
+}
+
+#[test]
+fn typing_replaces_the_shown_value_and_end_keeps_it() {
+    let mut app = app(80, 24, None);
+    select(&mut app, "bat.speed");
+    // The field opens with "30" selected, as in a form: typing replaces it.
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "31");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.scene.bat.speed, 31.0);
+    // End drops the selection and keeps the text for editing: "31" + ".5".
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::End);
+    typed(&mut app, ".5");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.scene.bat.speed, 31.5);
+}
+
+#[test]
+fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("broken.toml"), "[bat]\nspeed = \"fast\"\n").unwrap();
+    let mut app = app(80, 24, Some(dir.path().to_owned()));
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('L'));
+    key(&mut app, KeyCode::Char('s'));
+    for _ in 0..8 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "quick");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert!(dir.path().join("quick.toml").is_file());
+    assert_eq!(app.preset_name, "quick");
+
+    // Back to the fastball through the picker, then to the saved one.
+    key(&mut app, KeyCode::Char('o'));
+    let Mode::Open { items, .. } = &app.mode else {
+        panic!("the picker is open")
+    };
+    let names: Vec<&str> = items.iter().map(|i| i.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "fastball",
+            "knuckleball",
+            "curveball",
+            "figure5",
+            "mile-high",
+            "fly-ball",
+            "broken",
+            "quick"
+        ]
+    );
+    let broken = &items[6];
+    assert!(
+        broken.preset.is_none() && broken.detail.contains("bat.speed"),
+        "{broken:?}"
+    );
+    // Enter on the broken one: its error, and the picker stays.
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Char('k'));
+    }
+    for _ in 0..6 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Open { error: Some(e), .. } => assert!(e.contains("broken.toml"), "{e}"),
+        other => panic!("picker with the error, not {other:?}"),
+    }
+    assert_eq!(app.scene.bat.speed, 35.0);
+    for _ in 0..6 {
+        key(&mut app, KeyCode::Char('k'));
+    }
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.preset_name, "fastball");
+    assert_eq!(app.scene.bat.speed, 30.0);
+    key(&mut app, KeyCode::Char('o'));
+    key(&mut app, KeyCode::Char('G'));
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.preset_name, "quick");
+    assert_eq!(app.scene.bat.speed, 35.0);
+}
+
+#[test]
+fn colours_fall_back_to_the_256_colour_cube() {
+    use homerun::tui::theme::ColorMode;
+    use ratatui::style::Color;
+    let indexed = ColorMode::Indexed;
+    assert_eq!(indexed.rgb((0, 0, 0)), Color::Indexed(16));
+    assert_eq!(indexed.rgb((255, 255, 255)), Color::Indexed(231));
+    // The cube's levels are 0, 95, 135, 175, 215, 255: each channel goes to
+    // the nearest.
+    assert_eq!(
+        indexed.rgb((95, 135, 175)),
+        Color::Indexed(16 + 36 + 12 + 3)
+    );
+    assert_eq!(
+        indexed.rgb((100, 130, 180)),
+        Color::Indexed(16 + 36 + 12 + 3)
+    );
+    assert_eq!(ColorMode::TrueColor.rgb((1, 2, 3)), Color::Rgb(1, 2, 3));
+}
+
+#[test]
+fn feet_are_a_display_choice() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let range = app.flown.flight.range;
+    key(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.flown.flight.range, range, "nothing is recomputed");
+    let screen = screen(&app);
+    // 134.698780 m is 441.925 ft.
+    assert!(screen.contains("range 441.93 ft"), "{screen}");
+    assert!(screen.contains("x (ft)"), "{screen}");
+}
+
+#[test]
+fn a_save_never_hides_a_bundled_preset_unless_asked_twice() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = app(80, 24, Some(dir.path().to_owned()));
+    // The proposed name hides nothing: the fastball is bundled.
+    key(&mut app, KeyCode::Char('s'));
+    let Mode::Save { text, .. } = &app.mode else {
+        panic!("the save prompt is open")
+    };
+    assert_eq!(text.lines().join(""), "fastball-1");
+    // Typing the bundled name warns, and saves nothing.
+    typed(&mut app, "fastball");
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Save { error: Some(e), .. } => assert!(e.contains("is bundled"), "{e}"),
+        other => panic!("a warning, not {other:?}"),
+    }
+    assert!(!dir.path().join("fastball.toml").exists());
+    // Enter again: saved, and the picker says which fastball is which.
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert!(dir.path().join("fastball.toml").is_file());
+    key(&mut app, KeyCode::Char('o'));
+    let Mode::Open { items, .. } = &app.mode else {
+        panic!("the picker is open")
+    };
+    let details: Vec<&str> = items
+        .iter()
+        .filter(|i| i.name == "fastball")
+        .map(|i| i.detail.as_str())
+        .collect();
+    assert_eq!(details.len(), 2);
+    assert!(details[0].ends_with("(bundled; hidden by yours of that name)"));
+    assert!(details[1].ends_with("(yours; hides the bundled one)"));
+}
+
+#[test]
+fn a_pin_survives_a_nudge_and_a_preset_load_and_p_clears_it() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('p'));
+    let pin = app.pin.clone().expect("pinned");
+    assert_eq!(pin.scene, app.scene);
+    assert_eq!(pin.path, app.path);
+    select(&mut app, "bat.speed");
+    key(&mut app, KeyCode::Char('L'));
+    settle(&mut app);
+    let after = app.pin.clone().expect("still pinned");
+    assert_eq!(after.scene, pin.scene, "the pinned scene is unchanged");
+    assert_eq!(after.flown, pin.flown);
+    assert_ne!(app.scene, pin.scene);
+    // The readout's now − pin is non-zero: 5 m/s more bat speed.
+    let dv = app.flown.launch.speed - pin.flown.launch.speed;
+    assert!(dv > 1.0, "{dv}");
+    let shown = screen(&app);
+    assert!(
+        shown.contains(&format!("{dv:+.2} m/s")),
+        "the readout shows now − pin: {shown}"
+    );
+    assert!(shown.contains("━ pin"), "the legend names the pin: {shown}");
+    // A preset load keeps it too.
+    app.load(homerun::preset::load("fastball", None).unwrap());
+    app.flush();
+    assert_eq!(app.pin.as_ref().map(|p| p.scene), Some(pin.scene));
+    key_with(&mut app, KeyCode::Char('P'), KeyModifiers::SHIFT);
+    assert_eq!(app.pin, None);
+    assert!(!screen(&app).contains("now−pin"));
+}
+
+#[test]
+fn u_shows_and_takes_every_value_in_baseball_units() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('u'));
+    // Typed in mph: 100 mph is 44.704 m/s.
+    select(&mut app, "pitch.speed");
+    key(&mut app, KeyCode::Enter);
+    let Mode::Edit { text, .. } = &app.mode else {
+        panic!("editing")
+    };
+    // The edit starts from the shown text: 42 m/s is 93.951 mph, shown to
+    // the 1 mph step.
+    assert_eq!(text.lines().join(""), "94");
+    typed(&mut app, "100");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert!((app.scene.pitch.speed - 44.704).abs() < 1e-12);
+    // A nudge is 1 mph, exactly.
+    let before = app.scene.pitch.speed;
+    key(&mut app, KeyCode::Char('l'));
+    let step = app.scene.pitch.speed - before;
+    assert!((step - 0.44704).abs() < 1e-12, "{step}");
+    // Enter on the shown text unchanged keeps the value as it was.
+    select(&mut app, "bat.undercut");
+    let undercut = app.scene.bat.undercut;
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.scene.bat.undercut, undercut);
+    // An invalid value is refused with its range in the shown unit.
+    select(&mut app, "pitch.speed");
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "300");
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Edit {
+            error: Some(error), ..
+        } => assert_eq!(
+            error,
+            "pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph"
+        ),
+        other => panic!("an error, not {other:?}"),
+    }
+    key(&mut app, KeyCode::Esc);
+    settle(&mut app);
+    // Δ is in feet for the imperial nudge: what pressing l does.
+    let k = input_index("pitch.speed");
+    let gain = app.swing_gains[k].unwrap().value.unwrap();
+    let range = app.flown.flight.range;
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.flown.flight.range - range, gain);
+    let shown = screen(&app);
+    assert!(shown.contains("Δ ft") && shown.contains("mph"), "{shown}");
+    // Back to SI: 100 mph and two nudges of 1 mph are 45.59808 m/s.
+    key(&mut app, KeyCode::Char('u'));
+    assert!(screen(&app).contains("45.5981 m/s"));
+}
+
+#[test]
+fn a_unit_switch_keeps_the_optimum_and_recomputes_only_the_deltas() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let (optimum, surface) = (app.optimum, app.surface.clone().unwrap());
+    let k = input_index("bat.speed");
+    let si_gain = app.swing_gains[k].unwrap().value.unwrap();
+    key(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.optimum, optimum);
+    assert!(app.surface_fresh());
+    let job = app.take_job().unwrap();
+    let mut reports = Vec::new();
+    run_job(&job, &|| false, &mut |r| reports.push(r));
+    assert!(
+        reports
+            .iter()
+            .all(|r| matches!(r, Report::Sensitivity { .. }))
+    );
+    for report in reports {
+        app.apply(report);
+    }
+    assert!(!app.busy());
+    assert_eq!(app.surface.as_ref().unwrap().surface, surface.surface);
+    // 1 mph of bat speed (0.447 m/s) gains less than 0.5 m/s did.
+    let gain = app.swing_gains[k].unwrap().value.unwrap();
+    assert!(gain > 0.0 && gain < si_gain, "{gain} vs {si_gain}");
+}
