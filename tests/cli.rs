@@ -530,3 +530,49 @@ fn keys_lists_every_input_with_its_range() {
     }
     assert!(why.contains("environment.wind_height") && why.contains("launch.sidespin"));
 }
+
+/// A sweep's ends take a unit as `--set` does; a bare number stays in the
+/// unit shown. 60 mph is 26.8224 m/s to the last bit (60 × 0.44704), so
+/// the two sweeps below are the same sweep, printed alike.
+#[test]
+fn a_sweeps_ends_take_units_and_a_bare_number_is_in_the_unit_shown() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let sweep = |from: &str, to: &str, more: &[&str]| {
+        let mut args = vec!["sweep", "bat.speed", "--from", from, "--to", to];
+        args.extend_from_slice(&["--steps", "3", "--csv"]);
+        args.extend_from_slice(more);
+        let output = homerun(d).args(&args).output().unwrap();
+        assert!(output.status.success(), "{args:?}: {output:?}");
+        String::from_utf8(output.stdout).unwrap()
+    };
+    let with_units = sweep("60mph", "70mph", &[]);
+    assert_eq!(with_units, sweep("26.8224", "31.2928", &[]));
+    assert!(with_units.lines().nth(1).unwrap().starts_with("26.8224,"));
+    // Under --units imperial a bare number is mph, and a unit still reads.
+    let imperial = sweep("60", "70mph", &["--units", "imperial"]);
+    let first: Vec<&str> = imperial.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!(first[0], "60");
+    refuses(
+        d,
+        &["sweep", "bat.speed", "--from", "300mph", "--to", "70mph"],
+        &["--from: bat.speed = 300mph (134.112 m/s): must be a finite number in (0, 100] m/s"],
+    );
+    refuses(
+        d,
+        &[
+            "sweep",
+            "bat.speed",
+            "--from",
+            "60deg",
+            "--to",
+            "70",
+            "--units",
+            "imperial",
+        ],
+        &[
+            "--from: bat.speed = 60deg: deg measures an angle",
+            "(a bare number is mph, as shown)",
+        ],
+    );
+}

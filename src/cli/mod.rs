@@ -211,12 +211,13 @@ pub enum Command {
     Sweep {
         /// The key to sweep, e.g. bat.speed.
         key: String,
-        /// The first value, in the key's unit (the unit printed with --units imperial).
+        /// The first value: a bare number is in the unit shown (SI, or imperial with
+        /// --units imperial); or give a unit of the key's quantity, e.g. 60mph.
         #[arg(long, allow_hyphen_values = true)]
-        from: f64,
-        /// The last value, in the same unit.
+        from: String,
+        /// The last value, read as --from is.
         #[arg(long, allow_hyphen_values = true)]
-        to: f64,
+        to: String,
         /// How many values, both ends included (1 to 200).
         #[arg(long, default_value_t = 11, allow_negative_numbers = true)]
         steps: usize,
@@ -546,7 +547,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         } => optimize::sweep(
             &scene.resolve_swing("sweep", dir)?,
             key,
-            (*from, *to, *steps),
+            (from, to, *steps),
             Format::new(*json, *csv),
             shown,
         ),

@@ -16,7 +16,8 @@ use crate::analysis::paper::{Best, best_swing};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study;
 use crate::model::keys::{AIR_KEYS, ATMOSPHERE_KEYS, LAUNCH_KEYS};
-use crate::units::Quantity;
+use crate::model::keys::{InputError, Key};
+use crate::units::{Quantity, Unit};
 
 /// The most points a sweep takes: its work budget
 /// ([`study::SWEEP_FLIGHT_STEPS`]) shared by 200 points still gives each five
@@ -248,10 +249,47 @@ fn nothing_lands(optimum: &Optimum, shown: Shown) -> String {
     }
 }
 
+/// A sweep's end as typed: a bare number is in the unit shown (so that
+/// `--units imperial` sweeps mph, as it prints them); a number with a unit
+/// of the key's quantity (`60mph`, `28deg`) is read as `--set` reads it,
+/// bounds included. Returns the end in the unit shown, and in SI when a
+/// unit gave it (the end itself is then swept to the last bit).
+fn sweep_end(
+    flag: &'static str,
+    text: &str,
+    (key, unit): (&'static Key, Unit),
+) -> Result<(f64, Option<f64>), UsageError> {
+    if let Ok(value) = text.trim().parse::<f64>() {
+        return Ok((value, None));
+    }
+    match key.read(text) {
+        Ok(si) => Ok((unit.show(si), Some(si))),
+        // A bare number here is in the unit shown, not SI as for --set.
+        Err(InputError::WrongUnit {
+            key: name,
+            text,
+            why,
+            accepted,
+        }) if !unit.is_identity() => Err(UsageError::BadEnd {
+            flag,
+            error: InputError::WrongUnit {
+                key: name,
+                text,
+                why,
+                accepted: accepted.replace(
+                    &format!("(a bare number is {})", key.unit),
+                    &format!("(a bare number is {}, as shown)", unit.symbol),
+                ),
+            },
+        }),
+        Err(error) => Err(UsageError::BadEnd { flag, error }),
+    }
+}
+
 pub(super) fn sweep(
     scene: &Scene,
     key: &str,
-    (from, to, steps): (f64, f64, usize),
+    (from, to, steps): (&str, &str, usize),
     format: Format,
     shown: Shown,
 ) -> Result<String, UsageError> {
@@ -265,31 +303,33 @@ pub(super) fn sweep(
     }
     study::sweep_scenes(scene, key, &[])?;
     // --from and --to are in the units shown, and checked in them.
-    let swept_unit = Scene::key(key).ok().map(|k| (k, k.unit_in(shown.0)));
+    let swept = Scene::key(key)?;
+    let unit = swept.unit_in(shown.0);
+    let (from, from_si) = sweep_end("--from", from, (swept, unit))?;
+    let (to, to_si) = sweep_end("--to", to, (swept, unit))?;
     for (flag, value) in [("--from", from), ("--to", to)] {
-        let Some((key, unit)) = swept_unit else {
-            continue;
-        };
-        let outside = !unit.is_identity() && !key.bounds.contains(unit.read(value));
+        let outside = !unit.is_identity() && !swept.bounds.contains(unit.read(value));
         if !value.is_finite() || outside {
-            let accepted = shown.bounds(key);
             return Err(UsageError::BadBound {
                 flag,
                 value,
-                key,
-                accepted,
+                key: swept,
+                accepted: shown.bounds(swept),
             });
         }
     }
-    let values: Vec<f64> = study::linspace(from, to, steps)
+    let mut values: Vec<f64> = study::linspace(from, to, steps)
         .into_iter()
-        .map(|v| {
-            swept_unit.map_or(
-                v,
-                |(_, unit)| if unit.is_identity() { v } else { unit.read(v) },
-            )
-        })
+        .map(|v| if unit.is_identity() { v } else { unit.read(v) })
         .collect();
+    if let (Some(first), Some(si)) = (values.first_mut(), from_si) {
+        *first = si;
+    }
+    if let (Some(last), Some(si)) = (values.last_mut(), to_si)
+        && steps > 1
+    {
+        *last = si;
+    }
     let work = Work {
         what: "sweep",
         steps: Some((steps, "points")),

@@ -33,6 +33,12 @@ pub enum UsageError {
         /// The key's range in the units the value was given in.
         accepted: String,
     },
+    /// A sweep's end given with a unit (`--from 60mph`) that the key refuses.
+    #[error("{flag}: {error}")]
+    BadEnd {
+        flag: &'static str,
+        error: InputError,
+    },
     /// More work than the command's budget; `detail` says how much and what fits.
     #[error("{flag} {text}: {detail}")]
     TooMuchWork {
