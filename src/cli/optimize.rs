@@ -15,8 +15,8 @@ use crate::analysis::optimum::{OptimizerSettings, Optimum, Scan, Status, lands_a
 use crate::analysis::paper::{Best, best_swing};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study;
+use crate::model::keys::Key;
 use crate::model::keys::{AIR_KEYS, ATMOSPHERE_KEYS, LAUNCH_KEYS};
-use crate::model::keys::{InputError, Key};
 use crate::units::{Quantity, Unit};
 
 /// The most points a sweep takes: its work budget
@@ -262,26 +262,8 @@ fn sweep_end(
     if let Ok(value) = text.trim().parse::<f64>() {
         return Ok((value, None));
     }
-    match key.read(text) {
+    match key.read_with_unit(text, unit) {
         Ok(si) => Ok((unit.show(si), Some(si))),
-        // A bare number here is in the unit shown, not SI as for --set.
-        Err(InputError::WrongUnit {
-            key: name,
-            text,
-            why,
-            accepted,
-        }) if !unit.is_identity() => Err(UsageError::BadEnd {
-            flag,
-            error: InputError::WrongUnit {
-                key: name,
-                text,
-                why,
-                accepted: accepted.replace(
-                    &format!("(a bare number is {})", key.unit),
-                    &format!("(a bare number is {}, as shown)", unit.symbol),
-                ),
-            },
-        }),
         Err(error) => Err(UsageError::BadEnd { flag, error }),
     }
 }

@@ -67,14 +67,14 @@ fn trim(text: String) -> String {
     if text == "-0" { "0".to_owned() } else { text }
 }
 
-/// A typed value of `key` in the unit shown, back in SI, or why it is not
-/// a number.
+/// A typed value of `key` back in SI: a bare number in the unit shown, or
+/// a number with a unit (`103mph`, `28°`) as `--set` takes it; or why not.
 pub fn read_value(key: &Key, text: &str, system: UnitSystem) -> Result<f64, InputError> {
-    let shown: f64 = text.trim().parse().map_err(|_| InputError::NotANumber {
-        key: key.name.to_owned(),
-        text: text.to_owned(),
-    })?;
-    Ok(key.unit_in(system).read(shown))
+    let unit = key.unit_in(system);
+    match text.trim().parse::<f64>() {
+        Ok(shown) => Ok(unit.read(shown)),
+        Err(_) => key.read_with_unit(text, unit),
+    }
 }
 
 /// A key's accepted range in the unit shown, with the unit: "(0, 100] m/s",

@@ -71,6 +71,32 @@ fn typed_values_are_parsed_validated_and_kept_or_refused() {
     key(&mut app, KeyCode::Enter);
     assert!(matches!(app.mode, Mode::Normal));
     assert_eq!(app.scene.bat.speed, 35.0);
+    // A unit may be typed with the number, as --set takes it: 70 mph is
+    // 31.2928 m/s to the last bit; a unit of another quantity is refused,
+    // saying what a bare number is here (mph once the explorer shows mph).
+    let retype = |app: &mut homerun::tui::app::App, text: &str| {
+        key(app, KeyCode::Enter);
+        for _ in 0..12 {
+            key(app, KeyCode::Backspace);
+        }
+        typed(app, text);
+        key(app, KeyCode::Enter);
+    };
+    retype(&mut app, "70mph");
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_eq!(app.scene.bat.speed, 70.0 * 0.44704);
+    key(&mut app, KeyCode::Char('u'));
+    retype(&mut app, "28deg");
+    match &app.mode {
+        Mode::Edit {
+            error: Some(error), ..
+        } => assert!(
+            error.contains("deg measures an angle") && error.contains("a bare number is mph"),
+            "{error}"
+        ),
+        other => panic!("still editing with an error, not {other:?}"),
+    }
+    assert_eq!(app.scene.bat.speed, 70.0 * 0.44704);
 }
 
 #[test]

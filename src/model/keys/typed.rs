@@ -15,6 +15,32 @@ impl Key {
     }
 }
 
+impl Key {
+    /// [`Key::read`] where a bare number means the unit `shown` (the
+    /// explorer's inputs, a sweep's ends), for text that is not a bare
+    /// number: a value with a unit (`103mph`), read and bounded as `--set`
+    /// reads it, its refusal saying what a bare number is here.
+    pub fn read_with_unit(&self, text: &str, shown: Unit) -> Result<f64, InputError> {
+        match self.read(text) {
+            Err(InputError::WrongUnit {
+                key,
+                text,
+                why,
+                accepted,
+            }) if !shown.is_identity() => Err(InputError::WrongUnit {
+                key,
+                text,
+                why,
+                accepted: accepted.replace(
+                    &format!("(a bare number is {})", self.unit),
+                    &format!("(a bare number is {}, as shown)", shown.symbol),
+                ),
+            }),
+            read => read,
+        }
+    }
+}
+
 /// [`Key::read`] for any input named `name`, of `quantity` (its SI unit
 /// `unit`), accepted in `bounds` (the fence's keys too).
 pub fn read_typed(
