@@ -14,6 +14,7 @@ mod parks;
 mod presets;
 mod progress;
 mod scene;
+mod shortest;
 mod shown;
 mod surface;
 mod svg_file;

@@ -4,6 +4,7 @@
 use std::fmt::Write as _;
 
 use super::progress::{self, Work};
+use super::shortest;
 use super::shown::Shown;
 use super::table::{Cell, Column, Digits, Table};
 use super::{Format, UsageError, WindowFault, pretty};
@@ -195,7 +196,7 @@ fn too_much(text: &str, work: TooMuchWork) -> UsageError {
 pub(super) fn render_surface(surface: &Surface, format: Format, shown: Shown) -> String {
     match format {
         Format::Json => pretty(&surface_json(surface)),
-        Format::Csv => surface_cells(surface, shown).csv(),
+        Format::Csv => surface_csv(surface, shown),
         Format::Text => surface_text(surface, shown),
     }
 }
@@ -243,35 +244,51 @@ pub(super) fn surface_json(surface: &Surface) -> serde_json::Value {
 
 /// One row per cell: E, ψ, the range (blank where the ball does not land or
 /// the bat misses) and whether the ball lands (blank where the bat misses).
-fn surface_cells(surface: &Surface, shown: Shown) -> Table {
-    let (undercuts, swing_angles) = axes(surface);
-    let convert = |quantity, si| Cell::Num(shown.convert(quantity, si));
-    let mut rows = Vec::new();
-    for (j, psi) in swing_angles.iter().enumerate() {
-        for (i, e) in undercuts.iter().enumerate() {
-            let outcome = surface.outcome(i, j);
-            rows.push(vec![
-                convert(Quantity::Size, *e),
-                convert(Quantity::Angle, *psi),
-                outcome
-                    .range()
-                    .map_or(Cell::Blank, |r| convert(Quantity::Distance, r)),
-                landed(outcome).map_or(Cell::Blank, Cell::Bool),
-            ]);
-        }
-    }
+/// Written straight into text, the grid's rows in parallel, each column's E
+/// and each row's ψ printed once: a 64×64 grid is 4096 such rows, which
+/// through a [`Table`] took a row of cells each and three numbers printed a row.
+fn surface_csv(surface: &Surface, shown: Shown) -> String {
+    use rayon::prelude::*;
+    let grid = surface.grid;
     let columns = [
         ("undercut", Quantity::Size),
         ("swing_angle", Quantity::Angle),
         ("range", Quantity::Distance),
         ("landed", Quantity::Unchanged),
     ];
-    Table {
-        columns: columns
-            .map(|(key, quantity)| Column::data(&shown.csv_key(key, quantity)))
-            .to_vec(),
-        rows,
+    let header = columns.map(|(key, quantity)| shown.csv_key(key, quantity));
+    let undercuts: Vec<String> = (0..grid.columns)
+        .map(|i| shortest::text(shown.convert(Quantity::Size, grid.undercut_at(i))))
+        .collect();
+    let rows: Vec<String> = (0..grid.rows)
+        .into_par_iter()
+        .map(|j| {
+            let swing_angle =
+                shortest::text(shown.convert(Quantity::Angle, grid.swing_angle_at(j)));
+            let mut text = String::with_capacity(grid.columns * 64);
+            for (i, undercut) in undercuts.iter().enumerate() {
+                let outcome = surface.outcome(i, j);
+                text.push_str(undercut);
+                text.push(',');
+                text.push_str(&swing_angle);
+                text.push(',');
+                if let Some(range) = outcome.range() {
+                    shortest::push(&mut text, shown.convert(Quantity::Distance, range));
+                }
+                text.push(',');
+                text.push_str(landed(outcome).map_or("", |l| if l { "true" } else { "false" }));
+                text.push('\n');
+            }
+            text
+        })
+        .collect();
+    let mut out = String::with_capacity(64 + rows.iter().map(String::len).sum::<usize>());
+    out.push_str(&header.join(","));
+    out.push('\n');
+    for row in rows {
+        out.push_str(&row);
     }
+    out
 }
 
 fn surface_text(surface: &Surface, shown: Shown) -> String {
