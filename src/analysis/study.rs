@@ -249,7 +249,10 @@ pub fn surface_within_then<T: Send>(
     // are a fair sample of the grid's work.
     let chunks = chunks(grid.rows * grid.columns);
     let stride = spread(chunks.len());
-    let done: Option<Vec<(usize, [CellOutcome; CHUNK], T)>> = (0..chunks.len())
+    // Collected as a Vec of Options (each chunk's place known in advance),
+    // not an Option of a Vec, which rayon gathers in lists of Vecs grown by
+    // `realloc` as they fill.
+    let done: Vec<Option<(usize, [CellOutcome; CHUNK], T)>> = (0..chunks.len())
         .into_par_iter()
         .map(|m| {
             if over() {
@@ -274,7 +277,7 @@ pub fn surface_within_then<T: Send>(
             Some((first, outcomes, then))
         })
         .collect();
-    let Some(mut done) = done else {
+    let Some(mut done) = done.into_iter().collect::<Option<Vec<_>>>() else {
         return Err(TooMuchWork {
             cells: cells_flown.load(Ordering::Relaxed),
             steps: steps.load(Ordering::Relaxed),
@@ -322,8 +325,8 @@ fn fly_cells(
     mut done: impl FnMut(usize, CellOutcome, u64),
 ) {
     let reach = scene.reach();
-    let mut flown = Vec::new();
-    let mut flights = Vec::new();
+    let mut flown = Vec::with_capacity(cells.size_hint().0);
+    let mut flights = Vec::with_capacity(cells.size_hint().0);
     for k in cells {
         let (i, j) = (k % grid.columns, k / grid.columns);
         let undercut = grid.undercut_at(i);

@@ -318,7 +318,11 @@ fn csv_lines(
     first: usize,
     outcomes: &[CellOutcome],
 ) -> String {
-    let mut text = String::with_capacity(outcomes.len() * 64);
+    // Room for every line (E and ψ at most as long as the longest E, and
+    // 40 characters for the range, "false" and the separators): no
+    // `realloc` as the lines are written.
+    let longest = undercuts.iter().map(String::len).max().unwrap_or(0);
+    let mut text = String::with_capacity(outcomes.len() * (2 * longest + 40));
     let mut row = (usize::MAX, String::new());
     for (k, &outcome) in (first..).zip(outcomes) {
         let (i, j) = (k % grid.columns, k / grid.columns);
