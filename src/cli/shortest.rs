@@ -172,16 +172,18 @@ mod tests {
     /// Exact ties go to Display, whose digits differ from zmij's there.
     #[test]
     fn ties_round_as_display_rounds() {
-        for x in [1_658_206_780_088_562.25, 201_409_170_638_417.125, 0.5, 2.5] {
+        // Exactly …562.25 and …417.125, midway between two 17-digit texts.
+        let (tie, other_tie) = (
+            1_658_206_780_088_562.0 + 0.25,
+            201_409_170_638_417.0 + 0.125,
+        );
+        for x in [tie, other_tie, 0.5, 2.5] {
             assert!(may_tie(x), "{x}");
             assert_eq!(text(x), display(x));
         }
-        assert_eq!(text(1_658_206_780_088_562.25), "1658206780088562.3");
+        assert_eq!(text(tie), "1658206780088562.3");
         let mut buffer = zmij::Buffer::new();
-        assert_eq!(
-            buffer.format_finite(1_658_206_780_088_562.25),
-            "1658206780088562.2"
-        );
+        assert_eq!(buffer.format_finite(tie), "1658206780088562.2");
     }
 
     /// What a surface's CSV holds: the fast path, in plain notation.
