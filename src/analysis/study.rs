@@ -211,6 +211,23 @@ pub fn surface_within(
     max_steps: u64,
     tick: &(dyn Fn() + Sync),
 ) -> Result<Surface, TooMuchWork> {
+    let each_chunk = |_: usize, _: &[CellOutcome]| ();
+    surface_within_then(scene, grid, options, max_steps, tick, &each_chunk).map(|(s, _)| s)
+}
+
+/// As [`surface_within`], handing each chunk's cells to `each_chunk` on the
+/// chunk's thread as soon as they are flown: `each_chunk(first, outcomes)`,
+/// `outcomes[n]` being cell `first + n`'s (row-major). Its results come
+/// back in the cells' order (a surface's CSV is written so, in parallel
+/// pieces, while the other chunks fly).
+pub fn surface_within_then<T: Send>(
+    scene: &Scene,
+    grid: Grid,
+    options: impl Into<FlightOptions>,
+    max_steps: u64,
+    tick: &(dyn Fn() + Sync),
+    each_chunk: &(dyn Fn(usize, &[CellOutcome]) -> T + Sync),
+) -> Result<(Surface, Vec<T>), TooMuchWork> {
     let options = options.into();
     let reach = scene.reach();
     let total = (0..grid.columns)
@@ -232,35 +249,51 @@ pub fn surface_within(
     // are a fair sample of the grid's work.
     let chunks = chunks(grid.rows * grid.columns);
     let stride = spread(chunks.len());
-    let cells_done: Option<Vec<Vec<(usize, CellOutcome)>>> = (0..chunks.len())
+    // Collected as a Vec of Options (each chunk's place known in advance),
+    // not an Option of a Vec, which rayon gathers in lists of Vecs grown by
+    // `realloc` as they fill.
+    let done: Vec<Option<(usize, [CellOutcome; CHUNK], T)>> = (0..chunks.len())
         .into_par_iter()
         .map(|m| {
             if over() {
                 return None;
             }
             let chunk = chunks[m * stride % chunks.len()].clone();
-            let mut done = Vec::with_capacity(chunk.len());
-            fly_cells(scene, grid, chunk, &options, |k, outcome, taken| {
-                steps.fetch_add(taken, Ordering::Relaxed);
-                cells_flown.fetch_add(usize::from(taken > 0), Ordering::Relaxed);
-                tick();
-                done.push((k, outcome));
+            let (first, count) = (chunk.start, chunk.len());
+            let mut outcomes = [CellOutcome::NotComputed; CHUNK];
+            let (mut taken, mut flown) = (0, 0);
+            fly_cells(scene, grid, chunk, &options, |k, outcome, steps| {
+                taken += steps;
+                flown += usize::from(steps > 0);
+                outcomes[k - first] = outcome;
             });
-            Some(done)
+            // Counted once a chunk, where the budget is checked: the
+            // counters' cache line moves between the cores once a chunk,
+            // not three times a cell.
+            steps.fetch_add(taken, Ordering::Relaxed);
+            cells_flown.fetch_add(flown, Ordering::Relaxed);
+            (0..count).for_each(|_| tick());
+            let then = each_chunk(first, &outcomes[..count]);
+            Some((first, outcomes, then))
         })
         .collect();
-    let Some(cells_done) = cells_done else {
+    let Some(mut done) = done.into_iter().collect::<Option<Vec<_>>>() else {
         return Err(TooMuchWork {
             cells: cells_flown.load(Ordering::Relaxed),
             steps: steps.load(Ordering::Relaxed),
             total,
         });
     };
+    done.sort_unstable_by_key(|(first, _, _)| *first);
     let mut surface = Surface::not_computed(grid);
-    for (k, outcome) in cells_done.into_iter().flatten() {
-        surface.cells[k] = outcome;
+    let count = surface.cells.len();
+    let mut thens = Vec::with_capacity(done.len());
+    for (first, outcomes, then) in done {
+        let last = (first + CHUNK).min(count);
+        surface.cells[first..last].copy_from_slice(&outcomes[..last - first]);
+        thens.push(then);
     }
-    Ok(surface)
+    Ok((surface, thens))
 }
 
 /// Cells a chunk of a surface flies in lock-step: enough that the lanes'
@@ -292,8 +325,8 @@ fn fly_cells(
     mut done: impl FnMut(usize, CellOutcome, u64),
 ) {
     let reach = scene.reach();
-    let mut flown = Vec::new();
-    let mut flights = Vec::new();
+    let mut flown = Vec::with_capacity(cells.size_hint().0);
+    let mut flights = Vec::with_capacity(cells.size_hint().0);
     for k in cells {
         let (i, j) = (k % grid.columns, k / grid.columns);
         let undercut = grid.undercut_at(i);

@@ -14,6 +14,7 @@ mod parks;
 mod presets;
 mod progress;
 mod scene;
+mod shortest;
 mod shown;
 mod surface;
 mod svg_file;
@@ -426,17 +427,14 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
     if let Some(path) = svg {
         svg_file::check(path)?;
     }
-    let text = render(cli, command)?;
+    let pieces = render_pieces(cli, command)?;
     if let Some(path) = svg {
-        svg_file::write(path, &text)?;
+        svg_file::write(path, &pieces.concat())?;
         eprintln!("wrote {}", svg_file::shown(path));
         return Ok(ExitCode::SUCCESS);
     }
     let mut stdout = std::io::stdout().lock();
-    match stdout
-        .write_all(text.as_bytes())
-        .and_then(|()| stdout.flush())
-    {
+    match write_pieces(&mut stdout, &pieces).and_then(|()| stdout.flush()) {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
         _ => Ok(ExitCode::SUCCESS),
     }
@@ -458,6 +456,34 @@ fn svg_target(command: &Command) -> Option<&std::path::Path> {
         | Command::Parks { svg, .. } => svg.as_deref(),
         _ => None,
     }
+}
+
+/// The output of a headless command in pieces, to be written one after
+/// another: one but for `surface`'s CSV, which comes in the pieces its
+/// chunks of cells wrote in parallel (a 64×64 grid's 250 kB, never copied
+/// into one text).
+fn render_pieces(cli: &Cli, command: &Command) -> Result<Vec<String>, UsageError> {
+    let Command::Surface {
+        scene,
+        undercut,
+        swing_angle,
+        grid,
+        json,
+        csv,
+        svg,
+    } = command
+    else {
+        return Ok(vec![render(cli, command)?]);
+    };
+    let dir = checked_presets_dir(cli)?;
+    let shown = Shown(cli.units);
+    let preset = scene.resolve(dir.as_deref())?;
+    scene::swing_only("surface", &preset)?;
+    let cells = surface::parse_grid(undercut.as_deref(), swing_angle.as_deref(), grid, shown)?;
+    if svg.is_some() {
+        return Ok(vec![surface::surface_svg(&preset, cells, grid)?]);
+    }
+    surface::surface(&preset.scene, cells, grid, Format::new(*json, *csv), shown)
 }
 
 /// The output of a headless command, as text (the SVG itself with `--svg`).
@@ -551,24 +577,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             Format::new(*json, *csv),
             shown,
         ),
-        Command::Surface {
-            scene,
-            undercut,
-            swing_angle,
-            grid,
-            json,
-            csv,
-            svg,
-        } => {
-            let preset = scene.resolve(dir)?;
-            scene::swing_only("surface", &preset)?;
-            let cells =
-                surface::parse_grid(undercut.as_deref(), swing_angle.as_deref(), grid, shown)?;
-            if svg.is_some() {
-                return surface::surface_svg(&preset, cells, grid);
-            }
-            surface::surface(&preset.scene, cells, grid, Format::new(*json, *csv), shown)
-        }
+        Command::Surface { .. } => Ok(render_pieces(cli, command)?.concat()),
         Command::Presets => Ok(presets::presets(preset::check_dir(dir)?)),
         Command::Parks { code, json, svg } => {
             let all = preset::parks::all(parks_dir(cli).as_deref())?;
@@ -614,6 +623,24 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         Command::Tui { .. } => Err(UsageError::NotHeadless),
         Command::Calibrate { .. } => unreachable!("run() answers calibrate"),
     }
+}
+
+/// Writes `pieces` one after another, as few calls as the system takes
+/// (`writev`), without joining them first.
+fn write_pieces(out: &mut impl std::io::Write, pieces: &[String]) -> std::io::Result<()> {
+    use std::io::{ErrorKind, IoSlice};
+    let mut slices: Vec<IoSlice> = pieces.iter().map(|p| IoSlice::new(p.as_bytes())).collect();
+    let mut slices = &mut slices[..];
+    IoSlice::advance_slices(&mut slices, 0);
+    while !slices.is_empty() {
+        match out.write_vectored(slices) {
+            Ok(0) => return Err(ErrorKind::WriteZero.into()),
+            Ok(written) => IoSlice::advance_slices(&mut slices, written),
+            Err(e) if e.kind() == ErrorKind::Interrupted => {}
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(())
 }
 
 /// `job`, with a progress line giving the time it has taken once it passes a

@@ -4,6 +4,7 @@
 use std::fmt::Write as _;
 
 use super::progress::{self, Work};
+use super::shortest;
 use super::shown::Shown;
 use super::table::{Cell, Column, Digits, Table};
 use super::{Format, UsageError, WindowFault, pretty};
@@ -122,31 +123,60 @@ pub(super) fn parse_grid(
     })
 }
 
+/// `surface`'s output, in pieces to be written one after another: its CSV
+/// comes in the pieces the chunks of cells wrote as they were flown (in
+/// parallel), never copied into one text.
 pub(super) fn surface(
     scene: &Scene,
     grid: Grid,
     text: &str,
     format: Format,
     shown: Shown,
-) -> Result<String, UsageError> {
+) -> Result<Vec<String>, UsageError> {
+    if format == Format::Csv {
+        let undercuts = undercut_texts(grid, shown);
+        let lines = |first: usize, outcomes: &[CellOutcome]| {
+            csv_lines(grid, shown, &undercuts, first, outcomes)
+        };
+        let (_, lines) = computed_then(scene, grid, text, &lines)?;
+        return Ok([vec![csv_header(shown)], lines].concat());
+    }
     let surface = computed(scene, grid, text)?;
     if format == Format::Json {
         let mut json = surface_json(&surface);
         json["environment"] = super::hit::environment_json(scene);
-        return Ok(pretty(&json));
+        return Ok(vec![pretty(&json)]);
     }
-    Ok(render_surface(&surface, format, shown))
+    Ok(vec![render_surface(&surface, format, shown)])
 }
 
 /// The surface within its work budget, with a progress line.
 fn computed(scene: &Scene, grid: Grid, text: &str) -> Result<Surface, UsageError> {
+    computed_then(scene, grid, text, &|_, _| ()).map(|(surface, _)| surface)
+}
+
+/// As [`computed`], with `each_chunk`'s results (see
+/// [`study::surface_within_then`]).
+fn computed_then<T: Send>(
+    scene: &Scene,
+    grid: Grid,
+    text: &str,
+    each_chunk: &(dyn Fn(usize, &[CellOutcome]) -> T + Sync),
+) -> Result<(Surface, Vec<T>), UsageError> {
     let work = Work {
         what: "surface",
         steps: Some((grid.columns * grid.rows, "cells")),
     };
     progress::run(work, |p| {
         let tick = || p.tick();
-        study::surface_within(scene, grid, Purpose::Surface, SURFACE_FLIGHT_STEPS, &tick)
+        study::surface_within_then(
+            scene,
+            grid,
+            Purpose::Surface,
+            SURFACE_FLIGHT_STEPS,
+            &tick,
+            each_chunk,
+        )
     })
     .map_err(|work| too_much(text, work))
 }
@@ -195,7 +225,7 @@ fn too_much(text: &str, work: TooMuchWork) -> UsageError {
 pub(super) fn render_surface(surface: &Surface, format: Format, shown: Shown) -> String {
     match format {
         Format::Json => pretty(&surface_json(surface)),
-        Format::Csv => surface_cells(surface, shown).csv(),
+        Format::Csv => surface_csv(surface, shown),
         Format::Text => surface_text(surface, shown),
     }
 }
@@ -241,37 +271,80 @@ pub(super) fn surface_json(surface: &Surface) -> serde_json::Value {
     })
 }
 
-/// One row per cell: E, ψ, the range (blank where the ball does not land or
-/// the bat misses) and whether the ball lands (blank where the bat misses).
-fn surface_cells(surface: &Surface, shown: Shown) -> Table {
-    let (undercuts, swing_angles) = axes(surface);
-    let convert = |quantity, si| Cell::Num(shown.convert(quantity, si));
-    let mut rows = Vec::new();
-    for (j, psi) in swing_angles.iter().enumerate() {
-        for (i, e) in undercuts.iter().enumerate() {
-            let outcome = surface.outcome(i, j);
-            rows.push(vec![
-                convert(Quantity::Size, *e),
-                convert(Quantity::Angle, *psi),
-                outcome
-                    .range()
-                    .map_or(Cell::Blank, |r| convert(Quantity::Distance, r)),
-                landed(outcome).map_or(Cell::Blank, Cell::Bool),
-            ]);
-        }
-    }
+/// One line per cell: E, ψ, the range (blank where the ball does not land
+/// or the bat misses) and whether the ball lands (blank where the bat
+/// misses); its header first.
+fn surface_csv(surface: &Surface, shown: Shown) -> String {
+    use rayon::prelude::*;
+    let undercuts = undercut_texts(surface.grid, shown);
+    let pieces: Vec<String> = surface
+        .outcomes()
+        .par_chunks(64)
+        .enumerate()
+        .map(|(n, outcomes)| csv_lines(surface.grid, shown, &undercuts, 64 * n, outcomes))
+        .collect();
+    csv_header(shown) + &pieces.concat()
+}
+
+/// The surface's CSV header: its keys, in the units shown.
+fn csv_header(shown: Shown) -> String {
     let columns = [
         ("undercut", Quantity::Size),
         ("swing_angle", Quantity::Angle),
         ("range", Quantity::Distance),
         ("landed", Quantity::Unchanged),
     ];
-    Table {
-        columns: columns
-            .map(|(key, quantity)| Column::data(&shown.csv_key(key, quantity)))
-            .to_vec(),
-        rows,
+    columns
+        .map(|(key, quantity)| shown.csv_key(key, quantity))
+        .join(",")
+        + "\n"
+}
+
+/// Each column's E as the CSV prints it (printed once, not once a cell).
+fn undercut_texts(grid: Grid, shown: Shown) -> Vec<String> {
+    (0..grid.columns)
+        .map(|i| shortest::text(shown.convert(Quantity::Size, grid.undercut_at(i))))
+        .collect()
+}
+
+/// The CSV lines of cells `first`, `first + 1`, … (row-major), whose
+/// outcomes are `outcomes`: written straight into text, a row's ψ printed
+/// once (a 64×64 grid is 4096 lines; through a [`Table`], each took a row
+/// of cells and three numbers printed).
+fn csv_lines(
+    grid: Grid,
+    shown: Shown,
+    undercuts: &[String],
+    first: usize,
+    outcomes: &[CellOutcome],
+) -> String {
+    // Room for the lines as they usually are (the longest E, and 48
+    // characters for ψ, the range, "false" and the separators): no
+    // `realloc` as they are written, and no more memory touched than they
+    // take (room for 82 characters a line cost 40 more page faults).
+    let longest = undercuts.iter().map(String::len).max().unwrap_or(0);
+    let mut text = String::with_capacity(outcomes.len() * (longest + 48));
+    let mut row = (usize::MAX, String::new());
+    for (k, &outcome) in (first..).zip(outcomes) {
+        let (i, j) = (k % grid.columns, k / grid.columns);
+        if row.0 != j {
+            row = (
+                j,
+                shortest::text(shown.convert(Quantity::Angle, grid.swing_angle_at(j))),
+            );
+        }
+        text.push_str(&undercuts[i]);
+        text.push(',');
+        text.push_str(&row.1);
+        text.push(',');
+        if let Some(range) = outcome.range() {
+            shortest::push(&mut text, shown.convert(Quantity::Distance, range));
+        }
+        text.push(',');
+        text.push_str(landed(outcome).map_or("", |l| if l { "true" } else { "false" }));
+        text.push('\n');
     }
+    text
 }
 
 fn surface_text(surface: &Surface, shown: Shown) -> String {

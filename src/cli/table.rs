@@ -90,7 +90,7 @@ impl Column {
         match cell {
             Cell::Num(x) => match self.digits {
                 Digits::Fixed(decimals) => format!("{x:.decimals$}"),
-                Digits::Shortest => x.to_string(),
+                Digits::Shortest => super::shortest::text(*x),
                 Digits::Trimmed => crate::analysis::figures::trimmed(*x),
             },
             Cell::Text(t) => t.clone(),
@@ -207,9 +207,7 @@ impl Table {
                         text.push(',');
                     }
                     match &row[k] {
-                        Cell::Num(x) => {
-                            let _ = write!(text, "{x}");
-                        }
+                        Cell::Num(x) => super::shortest::push(&mut text, *x),
                         Cell::Text(t) if t.contains([',', '"']) => {
                             text.push('"');
                             text.push_str(&t.replace('"', "\"\""));

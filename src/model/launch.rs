@@ -194,31 +194,48 @@ impl SceneFlight {
     /// the launch's plane, everywhere (a calm, or a wind with no crosswind
     /// part and no height below which it stops).
     pub fn new(scene: &Scene, launch: &BattedBall) -> SceneFlight {
+        if launch.sidespin == 0.0
+            && let Some(wind) = Self::wind_in_plane(scene, launch.direction)
+        {
+            let (sin, cos) = launch.angle.sin_cos();
+            let velocity = Vector2::new(cos, sin) * launch.speed;
+            return Self::planar(scene, (launch.spin, launch.direction), wind, velocity);
+        }
         let env = scene.environment;
-        let height = env.contact_height;
-        let along = frame::wind_along(env.wind, env.wind_direction, launch.direction)
-            .filter(|_| env.wind == 0.0 || env.wind_height <= 0.0);
-        match along {
-            Some(wind) if launch.sidespin == 0.0 => {
-                let mut flight = Flight::new(scene, launch.spin);
-                flight.wind = wind;
-                let (sin, cos) = launch.angle.sin_cos();
-                SceneFlight::Planar {
-                    flight,
-                    launch: Launch {
-                        position: Vector2::new(0.0, height),
-                        velocity: Vector2::new(cos, sin) * launch.speed,
-                    },
-                    plane: launch.direction,
-                }
-            }
-            _ => SceneFlight::Spatial {
-                flight: Flight3d::new(scene, launch.spin_vector()),
-                launch: Launch3d {
-                    position: Vector3::new(0.0, height, 0.0),
-                    velocity: frame::launch_velocity(launch.speed, launch.angle, launch.direction),
-                },
+        SceneFlight::Spatial {
+            flight: Flight3d::new(scene, launch.spin_vector()),
+            launch: Launch3d {
+                position: Vector3::new(0.0, env.contact_height, 0.0),
+                velocity: frame::launch_velocity(launch.speed, launch.angle, launch.direction),
             },
+        }
+    }
+
+    /// The wind along the plane of `direction` if it blows only along it,
+    /// everywhere (see [`SceneFlight::new`]); `None` if the flight leaves it.
+    fn wind_in_plane(scene: &Scene, direction: f64) -> Option<f64> {
+        let env = scene.environment;
+        frame::wind_along(env.wind, env.wind_direction, direction)
+            .filter(|_| env.wind == 0.0 || env.wind_height <= 0.0)
+    }
+
+    /// The planar flight with backspin `spin` in the plane of `direction`,
+    /// launched from the contact height at `velocity` (in the plane).
+    fn planar(
+        scene: &Scene,
+        (spin, direction): (f64, f64),
+        wind: f64,
+        velocity: Vector2<f64>,
+    ) -> SceneFlight {
+        let mut flight = Flight::new(scene, spin);
+        flight.wind = wind;
+        SceneFlight::Planar {
+            flight,
+            launch: Launch {
+                position: Vector2::new(0.0, scene.environment.contact_height),
+                velocity,
+            },
+            plane: direction,
         }
     }
 
@@ -226,6 +243,16 @@ impl SceneFlight {
     /// (not rebuilt from speed, angle and direction), so a planar swing
     /// flies exactly as the paper's [`super::launch`] does.
     pub fn of_impact(scene: &Scene, impact: &Collision) -> SceneFlight {
+        // A planar impact flown in its plane needs no launch angle (an
+        // arctangent, and a sine and cosine to undo it: a sixth of a
+        // surface cell's work outside its flight).
+        if let Collision::Planar(planar) = impact {
+            let direction = planar.launch_direction();
+            if let Some(wind) = Self::wind_in_plane(scene, direction) {
+                let spin = (planar.launch_spin(), direction);
+                return Self::planar(scene, spin, wind, planar.after.ball_velocity);
+            }
+        }
         let mut flight = SceneFlight::new(scene, &BattedBall::of(impact));
         match (&mut flight, impact) {
             (SceneFlight::Planar { launch, .. }, Collision::Planar(impact)) => {

@@ -28,7 +28,12 @@ pub fn descent_angle(speed: f64, gravity: f64) -> f64 {
 /// The pitched ball's velocity in the flight frame: toward the catcher (−x)
 /// and down, V̂_b0·(−cos γ, −sin γ).
 pub fn velocity(speed: f64, gravity: f64) -> Vector2<f64> {
-    let gamma = descent_angle(speed, gravity);
+    velocity_descending(speed, descent_angle(speed, gravity))
+}
+
+/// [`velocity`] for a pitch whose descent angle γ is known already (an
+/// impact needs both: one arcsine, not two).
+pub fn velocity_descending(speed: f64, gamma: f64) -> Vector2<f64> {
     Vector2::new(-speed * gamma.cos(), -speed * gamma.sin())
 }
 

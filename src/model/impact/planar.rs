@@ -88,7 +88,7 @@ impl Impact {
         let normal_angle = (bat.undercut / contact_distance).clamp(-1.0, 1.0).asin();
         let descent_angle = pitch::descent_angle(scene.pitch.speed, scene.environment.gravity);
         let frame = Rotation2::new(normal_angle);
-        let ball_velocity_before = pitch::velocity(scene.pitch.speed, scene.environment.gravity);
+        let ball_velocity_before = pitch::velocity_descending(scene.pitch.speed, descent_angle);
         let bat_velocity_before =
             Vector2::new(bat.swing_angle.cos(), bat.swing_angle.sin()) * bat.speed;
         let ball_spin_before = scene.pitch.spin;

@@ -110,7 +110,7 @@ impl Impact3d {
         let descent_angle = pitch::descent_angle(scene.pitch.speed, gravity);
         let bat_frame = BatFrame::new(bat.tilt, bat.direction, bat.hand);
         let frame = ContactFrame::new(bat_frame, normal_angle, bat.hand);
-        let pitched = pitch::velocity(scene.pitch.speed, gravity);
+        let pitched = pitch::velocity_descending(scene.pitch.speed, descent_angle);
         let ball_velocity_before = Vector3::new(pitched.x, pitched.y, 0.0);
         let ball_spin_before = Vector3::z() * scene.pitch.spin;
         let bat_velocity_before = bat_frame.velocity(bat.speed, bat.swing_angle);

@@ -21,7 +21,7 @@ use std::ops::{Add, Mul, Sub};
 use super::controller::{
     LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth,
 };
-use super::stages::{Stages, Vector, dense_c5, error_squared, inverse_scales, stages};
+use super::stages::{Stages, Vector, dense_c5, error_squared, inverse_scales, stages_into};
 use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, too_small};
 
 pub use super::super::real::{LANES, Lane, LaneReal};
@@ -354,6 +354,11 @@ fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
     for j in 0..LANES {
         c.refill(system, j);
     }
+    // The step's stages, written in place each step.
+    let mut s = Stages {
+        k: [Lanes::zero(); 6],
+        y1: Lanes::zero(),
+    };
     loop {
         c.start_fresh(system, &derivative, settings);
         // Each lane's limits, as the single integrator checks them.
@@ -389,7 +394,8 @@ fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
         let h = V::from_array(h);
         c.h = h;
         let (t0, y0, k1) = (c.t, c.y, c.k1);
-        let s = stages(
+        stages_into(
+            &mut s,
             &mut |t, y: &Lanes<N, V>| derivative(system, t, y),
             t0,
             &y0,
