@@ -16,6 +16,7 @@ use super::frame;
 use super::launch::SceneFlight;
 use super::park::{Fence, FenceAt};
 use crate::numerics::ode::{State, Step};
+use crate::numerics::real::Real;
 use crate::numerics::roots::find_root_newton_from;
 
 /// Crossing times are located to this (s): a batted ball moves under a
@@ -271,14 +272,26 @@ const REACH_ROUNDING: f64 = 1.0 + 1e-12;
 /// watch works out: the plane's turn keeps lengths, so |x|, to a few ulps.
 #[inline]
 pub(crate) fn planar_reach(step: &Step<4>) -> f64 {
-    step.y1[0].abs() * REACH_ROUNDING
+    planar_reach_at(step.y1[0])
 }
 
 /// [`planar_reach`] for a 3-D step.
 #[inline]
 pub(crate) fn spatial_reach(step: &Step<6>) -> f64 {
-    let (x, z) = (step.y1[0], step.y1[2]);
-    (x * x + z * z).sqrt() * REACH_ROUNDING
+    spatial_reach_at(step.y1[0], step.y1[2])
+}
+
+/// [`planar_reach`] of a point `x` along the plane, for one flight or
+/// several in lock-step (the same bits).
+#[inline(always)]
+pub(crate) fn planar_reach_at<R: Real>(x: R) -> R {
+    x.abs() * R::splat(REACH_ROUNDING)
+}
+
+/// [`spatial_reach`] of a point (x, z) on the ground, likewise.
+#[inline(always)]
+pub(crate) fn spatial_reach_at<R: Real>(x: R, z: R) -> R {
+    (x * x + z * z).sqrt() * R::splat(REACH_ROUNDING)
 }
 
 /// [`watch_fences`] for a 3-D flight (x toward centre field, y up, z

@@ -37,7 +37,7 @@ pub fn fly_many_on(
 ) {
     let flights: Vec<SceneFlight> = flights.into_iter().collect();
     for group in groups(&flights) {
-        fly_group(code, &flights, &group, options, None, &mut done);
+        fly_group(code, &flights, &group, options, None, &[], &mut done);
     }
 }
 
@@ -89,6 +89,7 @@ pub fn judge_many<'f>(
             &group,
             options,
             Some(&mut watch),
+            &closest,
             &mut finished,
         );
     }
@@ -144,15 +145,19 @@ fn groups(flights: &[SceneFlight]) -> Vec<Vec<usize>> {
     groups.into_iter().map(|(_, members)| members).collect()
 }
 
-/// Flies one group (all planar or all 3-D, with the same models).
+/// Flies one group (all planar or all 3-D, with the same models). The
+/// watch, if any, looks at flight k's steps from `watched_from[k]` metres
+/// from home plate on (and at any step with an event inside).
 fn fly_group(
     code: LaneCode,
     flights: &[SceneFlight],
     group: &[usize],
     options: &FlightOptions,
     mut watch: Option<FencesWatch<'_>>,
+    watched_from: &[f64],
     done: &mut dyn FnMut(usize, FlightSummary),
 ) {
+    let watched_from = |index: usize| watched_from.get(index).copied().unwrap_or(0.0);
     let planar = group
         .first()
         .is_some_and(|&index| flights[index].is_planar());
@@ -163,6 +168,7 @@ fn fly_group(
                 flight,
                 start: launch.state(),
                 time_limit: launch.time_limit(flight.gravity),
+                watched_from: watched_from(index),
             }),
             SceneFlight::Spatial { .. } => None,
         });
@@ -196,6 +202,7 @@ fn fly_group(
                 flight,
                 start: launch.state(),
                 time_limit: launch.time_limit(flight.gravity),
+                watched_from: watched_from(index),
             }),
             SceneFlight::Planar { .. } => None,
         });
