@@ -17,6 +17,7 @@ pub(super) mod calibrate;
 mod fixed;
 mod flights;
 mod output;
+mod own_launch;
 mod pieces;
 mod records;
 mod rows;

@@ -11,6 +11,7 @@ use crate::model::scene::UnknownHand;
 use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem};
 
+use super::own_launch::SwingLaunches;
 use super::records::*;
 use super::savant_columns::{SavantCells, SavantColumn, Setup};
 
@@ -346,14 +347,15 @@ fn is_missing(value: &str) -> bool {
 }
 
 /// The row on `line`, its `text` split into `fields` (a buffer reused from
-/// row to row) and its `--keep` cells added to `kept`.
+/// row to row) and its `--keep` cells added to `kept`; with `swings`, the
+/// launch values it leaves to its swing filled in where its swing is known
+/// (see [`SwingLaunches`]).
 pub(super) fn parse_row(
     header: &Header,
     setup: &Setup,
-    line: usize,
-    text: &str,
-    fields: &mut Fields,
-    kept: &mut Fields,
+    (line, text): (usize, &str),
+    (fields, kept): (&mut Fields, &mut Fields),
+    swings: Option<&mut SwingLaunches>,
 ) -> Row {
     if text.is_empty() {
         return Row::Blank;
@@ -468,7 +470,11 @@ pub(super) fn parse_row(
     if let Some(index) = park {
         super::super::ground::to_park(&mut scene, &setup.parks.parks[index], given);
     }
-    if let Err(e) = scene.validate() {
+    let valid = match swings {
+        Some(swings) => swings.validate(&mut scene),
+        None => scene.validate(),
+    };
+    if let Err(e) = valid {
         let from = if converted {
             let read: Vec<String> = header
                 .columns
