@@ -148,6 +148,9 @@ pub(super) enum Column {
 pub(super) struct Header {
     pub(super) names: Vec<String>,
     pub(super) columns: Vec<Column>,
+    /// Each [`Column::Input`] of a numeric key, that key (looked up once,
+    /// not on every row; set as `set_text` sets it).
+    numeric: Vec<Option<&'static Key>>,
     /// The columns `--keep` copies, by index (the first of a repeated name).
     pub(super) keep: Vec<usize>,
 }
@@ -184,9 +187,17 @@ impl Header {
             }
             columns.push(column);
         }
+        let numeric = columns
+            .iter()
+            .map(|column| match column {
+                Column::Input(key) if !TEXT_KEYS.contains(key) => Scene::key(key).ok(),
+                _ => None,
+            })
+            .collect();
         Ok(Header {
             names,
             columns,
+            numeric,
             keep: Vec::new(),
         })
     }
@@ -437,23 +448,25 @@ pub(super) fn parse_row(
             Column::Input(key) => {
                 given.note(key);
                 sidespin_given |= key == "launch.sidespin";
-                batch
-                    .set_text(&mut scene, key, value)
-                    .map_err(|e| match e {
-                        InputError::NotANumber { key, text } => InputError::NotANumber {
-                            key,
-                            text: cut(&text, 80),
-                        },
-                        InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
-                            text: cut(&model.text, 80),
-                            ..model
-                        }),
-                        InputError::UnknownHand(hand) => InputError::UnknownHand(UnknownHand {
-                            text: cut(&hand.text, 80),
-                        }),
-                        e => e,
-                    })
-                    .map_err(|e| e.to_string())
+                match header.numeric[i] {
+                    Some(numeric) => batch.set_key_text(&mut scene, numeric, value),
+                    None => batch.set_text(&mut scene, key, value),
+                }
+                .map_err(|e| match e {
+                    InputError::NotANumber { key, text } => InputError::NotANumber {
+                        key,
+                        text: cut(&text, 80),
+                    },
+                    InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
+                        text: cut(&model.text, 80),
+                        ..model
+                    }),
+                    InputError::UnknownHand(hand) => InputError::UnknownHand(UnknownHand {
+                        text: cut(&hand.text, 80),
+                    }),
+                    e => e,
+                })
+                .map_err(|e| e.to_string())
             }
             Column::Field(index) => {
                 let key = &FIELD_KEYS[index];
