@@ -9,6 +9,7 @@
 //! prints, digit for digit. JSON prints every digit, so it flies at the
 //! readout's precision throughout.
 
+use super::fixed;
 use super::rows::Job;
 use super::savant_columns::Setup;
 use crate::Scene;
@@ -468,7 +469,7 @@ fn printed_alike(
     } else {
         (high, low)
     };
-    (low * scale).round() == (high * scale).round()
+    fixed::round(low * scale) == fixed::round(high * scale)
         && low.is_sign_negative() == high.is_sign_negative()
 }
 
