@@ -331,6 +331,11 @@ fn watch_fences<const N: usize>(
                 frame::direction_of(x0, z0),
             )
         });
+        // Short of the wall in its direction, by a table (most fences,
+        // most steps, once the ball is past their nearest points).
+        if reach1 < fence.surely_short(direction1) {
+            continue;
+        }
         let beyond1 = reach1 - fence.reach(direction1).0;
         if beyond1 < 0.0 {
             continue;

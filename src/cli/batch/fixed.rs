@@ -101,8 +101,21 @@ mod tests {
     #[test]
     fn round_is_the_library_s() {
         let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let halves = [0.5, -0.5, 1.5, -2.5, 4503599627370495.5, -4503599627370495.5];
-        let edges = [0.0, -0.0, 0.49999999999999994, -0.49999999999999994, 4503599627370496.0];
+        let halves = [
+            0.5,
+            -0.5,
+            1.5,
+            -2.5,
+            4503599627370495.5,
+            -4503599627370495.5,
+        ];
+        let edges = [
+            0.0,
+            -0.0,
+            0.49999999999999994,
+            -0.49999999999999994,
+            4503599627370496.0,
+        ];
         let specials = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e300, -1e300];
         let random = std::iter::repeat_with(|| {
             state ^= state << 13;
@@ -114,7 +127,10 @@ mod tests {
         let values = halves.into_iter().chain(edges).chain(specials);
         for x in values.chain(random.take(100_000)) {
             let (ours, library) = (round(x), x.round());
-            assert!(ours == library || ours.is_nan() && library.is_nan(), "{x:e}");
+            assert!(
+                ours == library || ours.is_nan() && library.is_nan(),
+                "{x:e}"
+            );
         }
     }
 
