@@ -316,21 +316,15 @@ fn watch_fences<const N: usize>(
     // once some fence is near, and then once for every fence.
     let [x1, z1, _] = ground(&step.y1);
     let reach1 = (x1 * x1 + z1 * z1).sqrt();
-    let mut ends = None;
+    // The step's end's direction, and its start's distance and direction
+    // (wanted only where it ends past a wall: rarely).
+    let (mut end, mut start) = (None, None);
     for (fence, crossing) in fences.iter().zip(crossings.iter_mut()) {
         // Short of the nearest point of the wall, the ball is short of all of it.
         if crossing.is_some() || reach1 < fence.nearest() {
             continue;
         }
-        let (direction1, reach0, direction0) = *ends.get_or_insert_with(|| {
-            let [x0, z0, _] = ground(&step.y0);
-            let reach0 = (x0 * x0 + z0 * z0).sqrt();
-            (
-                frame::direction_of(x1, z1),
-                reach0,
-                frame::direction_of(x0, z0),
-            )
-        });
+        let direction1 = *end.get_or_insert_with(|| frame::direction_of(x1, z1));
         // Short of the wall in its direction, by a table (most fences,
         // most steps, once the ball is past their nearest points).
         if reach1 < fence.surely_short(direction1) {
@@ -340,6 +334,10 @@ fn watch_fences<const N: usize>(
         if beyond1 < 0.0 {
             continue;
         }
+        let (reach0, direction0) = *start.get_or_insert_with(|| {
+            let [x0, z0, _] = ground(&step.y0);
+            ((x0 * x0 + z0 * z0).sqrt(), frame::direction_of(x0, z0))
+        });
         let beyond0 = reach0 - fence.reach(direction0).0;
         let time = if beyond0 >= 0.0 {
             step.t0

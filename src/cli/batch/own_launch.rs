@@ -9,17 +9,20 @@
 //! given, so a row whose scene equals (but for its launch) one already
 //! validated has that scene's swing launch. Such a row is given those
 //! values: its flight, every printed number and every check are what they
-//! were, as they are the same numbers (tested against the rows' own).
+//! were, as they are the same numbers (tested against the rows' own). And
+//! such a row's scene needs no validation past its launch, as
+//! [`Scene::validate_changed_launch`] validates it.
 
 use crate::Scene;
 use crate::model::keys::{InputError, LAUNCH_KEYS};
 use crate::model::scene::{GivenLaunch, SceneKind};
 
-/// Scenes (their launch cleared) known valid, with their swing's launch.
+/// Scenes (their launch cleared) known valid, with their swing's launch
+/// (`None` where some of it is out of its bounds).
 /// A piece's rows share one or a few (one a park, with `home_team`).
 #[derive(Default)]
 pub(super) struct SwingLaunches {
-    known: Vec<(Scene, [f64; 5])>,
+    known: Vec<(Scene, Option<[f64; 5]>)>,
 }
 
 /// More swings than this in a piece: the rows vary their swing (columns of
@@ -31,15 +34,22 @@ impl SwingLaunches {
     /// [`Scene::validate`] validates it, and, where its swing is known,
     /// given the launch values it leaves to the swing.
     pub(super) fn validate(&mut self, scene: &mut Scene) -> Result<(), InputError> {
-        if scene.kind != SceneKind::BattedBall || scene.launch.is_complete() {
+        if scene.kind != SceneKind::BattedBall {
             return scene.validate();
         }
         let swing = Scene {
             launch: GivenLaunch::default(),
             ..*scene
         };
+        let complete = scene.launch.is_complete();
         if let Some((_, own)) = self.known.iter().find(|(known, _)| *known == swing) {
-            fill(&mut scene.launch, own);
+            match own {
+                Some(own) => fill(&mut scene.launch, own),
+                // A launch the swing cannot give, and the row needs some
+                // of it: `validate` names what is out of bounds.
+                None if !complete => return scene.validate(),
+                None => {}
+            }
             // The rest of the scene is that of one validated whole, and the
             // launch filled in lies in its bounds (checked once below):
             // what `validate` checks of a complete launch.
@@ -51,13 +61,16 @@ impl SwingLaunches {
         let own = swing.batted_ball();
         let own = [own.speed, own.angle, own.spin, own.direction, own.sidespin];
         // Out of bounds, the swing's launch is an error where it is used (a
-        // row giving none of it), not one of the launch given: left alone.
+        // row giving none of it), not one of the launch given.
         let in_bounds = LAUNCH_KEYS
             .iter()
             .zip(own)
             .all(|(k, v)| k.bounds.contains(v));
-        if in_bounds && self.known.len() < MAX_SWINGS {
+        let own = in_bounds.then_some(own);
+        if self.known.len() < MAX_SWINGS {
             self.known.push((swing, own));
+        }
+        if let Some(own) = own {
             fill(&mut scene.launch, &own);
         }
         Ok(())
@@ -145,5 +158,23 @@ mod tests {
         let expected = bad.validate();
         assert!(expected.is_err());
         assert_eq!(swings.validate(&mut bad), expected);
+        // A complete launch (a 3-D row): checked as `validate` checks it,
+        // with or without a value out of bounds.
+        let complete = [
+            ("launch.speed", 40.0),
+            ("launch.angle", 0.4),
+            ("launch.spin", 200.0),
+            ("launch.direction", 0.2),
+        ];
+        for sidespin in [50.0, 1e6] {
+            let mut row = row(&complete, false);
+            row.launch.sidespin = Some(sidespin);
+            let expected = row.validate();
+            assert_eq!(expected.is_ok(), sidespin < 1e3);
+            let alone = row;
+            assert_eq!(swings.validate(&mut row), expected);
+            assert_eq!(row, alone);
+        }
+        assert_eq!(swings.known.len(), 2);
     }
 }
