@@ -19,6 +19,7 @@ mod flights;
 mod output;
 mod own_launch;
 mod pieces;
+mod plain;
 mod records;
 mod rows;
 mod savant_columns;

@@ -12,6 +12,7 @@ use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem};
 
 use super::own_launch::SwingLaunches;
+use super::plain::plain_decimal;
 use super::records::*;
 use super::savant_columns::{SavantCells, SavantColumn, Setup};
 
@@ -352,6 +353,20 @@ pub(super) enum Row {
     Blank,
 }
 
+/// [`InputBatch::set_key_text`], a plain decimal in the key's bounds read
+/// without the general reader (units, errors): the same value, set alike.
+fn set_number(
+    batch: &mut InputBatch,
+    scene: &mut Scene,
+    key: &'static Key,
+    text: &str,
+) -> Result<(), InputError> {
+    match plain_decimal(text) {
+        Some(value) if key.bounds.contains(value) => batch.set_key(scene, key, value),
+        _ => batch.set_key_text(scene, key, text),
+    }
+}
+
 /// Savant's missing value in its 2019 layout: the string `null`.
 fn is_missing(value: &str) -> bool {
     value.is_empty() || value.eq_ignore_ascii_case("null")
@@ -412,13 +427,15 @@ pub(super) fn parse_row(
     for (i, (column, name)) in header.columns.iter().zip(&header.names).enumerate() {
         let value = cell(i);
         let number = || {
-            value.parse::<f64>().map_err(|_| {
-                format!(
-                    "{} = {:?}: not a number",
-                    escape_cut(name, 80),
-                    cut(value, 80)
-                )
-            })
+            plain_decimal(value)
+                .map_or_else(|| value.parse::<f64>(), Ok)
+                .map_err(|_| {
+                    format!(
+                        "{} = {:?}: not a number",
+                        escape_cut(name, 80),
+                        cut(value, 80)
+                    )
+                })
         };
         let done = match *column {
             Column::Ignored => Ok(()),
@@ -432,8 +449,7 @@ pub(super) fn parse_row(
             // A launch.* cell as `--set` takes it (`103mph`).
             Column::Launch(index, Unit::Si) => {
                 spin_given |= index == 2;
-                batch
-                    .set_key_text(&mut scene, launch_key(index), value)
+                set_number(&mut batch, &mut scene, launch_key(index), value)
                     .map_err(|e| e.to_string())
             }
             // Statcast's own columns: a bare number in their unit.
@@ -449,7 +465,7 @@ pub(super) fn parse_row(
                 given.note(key);
                 sidespin_given |= key == "launch.sidespin";
                 match header.numeric[i] {
-                    Some(numeric) => batch.set_key_text(&mut scene, numeric, value),
+                    Some(numeric) => set_number(&mut batch, &mut scene, numeric, value),
                     None => batch.set_text(&mut scene, key, value),
                 }
                 .map_err(|e| match e {
