@@ -76,8 +76,10 @@ struct Verdict {
 impl Verdict {
     /// `flight` judged at `fence`. A ball that crossed no fence and came
     /// down fair or foul by more than the guard, short of the fence's
-    /// nearest point by more than the guard, is short (or foul) and
-    /// decided there without looking the wall up: most rows, at most parks.
+    /// nearest point by more than the guard, or of the wall in its landing
+    /// direction by the fence's table ([`park::Fence::surely_short`]), is
+    /// short (or foul) and decided there without looking the wall up: most
+    /// rows, at most parks.
     fn of(
         fence: &park::Fence,
         crossing: Option<Crossing>,
@@ -85,10 +87,11 @@ impl Verdict {
         landing: Landing,
     ) -> Verdict {
         let guard = BATCH_GUARD;
+        let short_of = |wall: f64| flight.range.abs() < wall - guard.distance;
         let far_short = crossing.is_none()
             && flight.landed
-            && flight.range.abs() < fence.nearest() - guard.distance
-            && (landing.direction.abs() - park::FOUL_LINE).abs() > guard.angle;
+            && (landing.direction.abs() - park::FOUL_LINE).abs() > guard.angle
+            && (short_of(fence.nearest()) || short_of(fence.surely_short(landing.direction)));
         if far_short {
             return Verdict {
                 clears: false,

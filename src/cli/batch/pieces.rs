@@ -119,7 +119,12 @@ impl Piece {
         for span in spans {
             let row = match *span {
                 Span::Text { line, start, end } => {
-                    let record = String::from_utf8_lossy(&text[start..end]);
+                    // As `from_utf8_lossy`, by the faster check first.
+                    let bytes = &text[start..end];
+                    let record = match std::str::from_utf8(bytes) {
+                        Ok(text) => std::borrow::Cow::Borrowed(text),
+                        Err(_) => String::from_utf8_lossy(bytes),
+                    };
                     // With --own-air each park's flight takes the launch
                     // its swing gives in that park's air: left to it.
                     let swings = (!setup.own_air).then_some(&mut self.swings);
