@@ -68,6 +68,22 @@ pub fn judge_many<'f>(
                 .fold(f64::INFINITY, f64::min)
         })
         .collect();
+    // Where the lanes start showing a flight's steps to the watch: its
+    // nearest wall, or for a planar flight (its direction its plane's,
+    // ahead of the plate) the nearest wall along its plane, by each fence's
+    // table (what the watch itself checks first).
+    let watched_from: Vec<f64> = flights
+        .iter()
+        .zip(&fences)
+        .zip(&closest)
+        .map(|((flight, list), &closest)| match flight {
+            SceneFlight::Planar { plane, .. } => list
+                .iter()
+                .map(|f| f.nearest().max(f.surely_short(*plane)))
+                .fold(f64::INFINITY, f64::min),
+            SceneFlight::Spatial { .. } => closest,
+        })
+        .collect();
     for group in groups(&flights) {
         let crossings = std::cell::RefCell::new(&mut crossings);
         let mut watch = |index: usize, step: &dyn WatchedStep| {
@@ -89,7 +105,7 @@ pub fn judge_many<'f>(
             &group,
             options,
             Some(&mut watch),
-            &closest,
+            &watched_from,
             &mut finished,
         );
     }

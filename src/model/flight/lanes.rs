@@ -44,7 +44,8 @@ pub trait LaneFlight<const N: usize>: Dynamics<N> {
 
     /// How far from home plate four flights are at `y` (m), bit for bit
     /// as the fences' watch reckons a step's reach
-    /// ([`crate::model::clearing`]).
+    /// ([`crate::model::clearing`]); a planar flight's only ahead of the
+    /// plate, +∞ behind it (where its direction is no longer its plane's).
     fn reach_lanes<V: LaneReal>(y: &Lanes<N, V>) -> V;
 }
 
@@ -124,7 +125,9 @@ impl LaneFlight<4> for Flight {
 
     #[inline(always)]
     fn reach_lanes<V: LaneReal>(y: &Lanes<4, V>) -> V {
-        planar_reach_at(y.0[0])
+        let x = y.0[0];
+        let behind = x.lt(V::splat(0.0));
+        V::select(behind, V::splat(f64::INFINITY), planar_reach_at(x))
     }
 }
 
