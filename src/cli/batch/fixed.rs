@@ -81,7 +81,7 @@ fn write_scaled(out: &mut Vec<u8>, negative: bool, digits: u64, decimals: usize)
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     fn fixed(value: f64, decimals: usize) -> String {
@@ -98,9 +98,19 @@ mod tests {
         );
     }
 
+    /// Reproducible bits, with no dependency (xorshift).
+    pub(in crate::cli::batch) fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        }
+    }
+
     #[test]
     fn round_is_the_library_s() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
         let halves = [
             0.5,
             -0.5,
@@ -118,9 +128,7 @@ mod tests {
         ];
         let specials = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e300, -1e300];
         let random = std::iter::repeat_with(|| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
+            let state = next();
             let unit = (state >> 11) as f64 / (1u64 << 53) as f64;
             (unit - 0.5) * 10f64.powi((state % 20) as i32 - 3)
         });
@@ -176,14 +184,7 @@ mod tests {
 
     #[test]
     fn random_values_and_exact_halves_print_as_format_prints_them() {
-        // xorshift: reproducible, no dependency.
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = xorshift(0x2545_f491_4f6c_dd1d);
         for _ in 0..200_000 {
             let bits = next();
             let decimals = (bits % 10) as usize;
