@@ -400,7 +400,7 @@ pub(super) fn parse_row(
         ));
     }
     let cell = |i: usize| {
-        let value = fields.get(i).trim();
+        let value = fields.trimmed(i);
         if is_missing(value) { "" } else { value }
     };
     let launch_cells = || {

@@ -135,7 +135,10 @@ fn uniform(seed: u64) -> impl FnMut() -> f64 {
 
 #[test]
 fn fields_split_as_the_splitter_before_them() {
-    let alphabet = ['a', ' ', ',', '"', 'é', '\t', '\r', '\n', '1'];
+    // Spaces of Unicode's too (no-break, em): `trimmed` is `trim`.
+    let alphabet = [
+        'a', ' ', ',', '"', 'é', '\t', '\r', '\n', '1', '\u{a0}', '\u{2003}',
+    ];
     let mut next = uniform(0x1234_5678_9abc_def1);
     let mut fields = Fields::default();
     for _ in 0..50_000 {
@@ -149,6 +152,9 @@ fn fields_split_as_the_splitter_before_them() {
                 .collect()
         });
         assert_eq!(now, split_fields_before(&text), "{text:?}");
+        for i in 0..fields.len() {
+            assert_eq!(fields.trimmed(i), fields.get(i).trim(), "{text:?}");
+        }
     }
     // A quote after leading spaces opens a quoted field (csv's reader would
     // take it as text and find three fields here).
