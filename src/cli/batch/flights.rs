@@ -288,8 +288,15 @@ fn ready<'f>(
     // test is a threshold a looser flight could cross in another iteration.
     let launched =
         savant::launch(&job.scene, &job.launch, setup.spray, options).map_err(|e| e.to_string())?;
-    // The row was validated whole when it was read; only its launch moved.
-    launched.scene.validate_changed_launch().map_err(|e| {
+    // The row was validated whole when it was read; only its launch moved,
+    // if it did (a spin estimated, a direction solved).
+    let moved = launched.scene.launch != job.scene.launch;
+    let checked = if moved {
+        launched.scene.validate_changed_launch()
+    } else {
+        Ok(())
+    };
+    checked.map_err(|e| {
         if job.launch.estimates_spin() {
             format!("{e} (the spin estimated from the launch angle)")
         } else {
