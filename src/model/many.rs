@@ -266,13 +266,7 @@ mod tests {
         let fences: Vec<&Fence> = std::iter::once(&generic)
             .chain(parks.iter().map(|p| &p.fence))
             .collect();
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut uniform = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut uniform = crate::numerics::xorshift::uniform(0x9e37_79b9_7f4a_7c15);
         let mut flights = Vec::new();
         for i in 0..160 {
             let mut scene = Scene::default();

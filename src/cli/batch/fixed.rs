@@ -81,7 +81,7 @@ fn write_scaled(out: &mut Vec<u8>, negative: bool, digits: u64, decimals: usize)
 }
 
 #[cfg(test)]
-pub(super) mod tests {
+mod tests {
     use super::*;
 
     fn fixed(value: f64, decimals: usize) -> String {
@@ -98,15 +98,7 @@ pub(super) mod tests {
         );
     }
 
-    /// Reproducible bits, with no dependency (xorshift).
-    pub(in crate::cli::batch) fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        }
-    }
+    use crate::numerics::xorshift::bits as xorshift;
 
     #[test]
     fn round_is_the_library_s() {

@@ -99,7 +99,7 @@ mod tests {
             assert_eq!(plain_decimal(text), None, "{text}");
         }
         // Random decimals of every length and place of the point.
-        let mut next = crate::cli::batch::fixed::tests::xorshift(0x2545_f491_4f6c_dd1d);
+        let mut next = crate::numerics::xorshift::bits(0x2545_f491_4f6c_dd1d);
         for _ in 0..300_000 {
             let bits = next();
             let digits = 1 + (bits % 15) as usize;

@@ -122,16 +122,7 @@ fn split_fields_before(text: &str) -> Result<Vec<String>, &'static str> {
     Ok(fields)
 }
 
-/// A reproducible stream of numbers in [0, 1) (xorshift).
-fn uniform(seed: u64) -> impl FnMut() -> f64 {
-    let mut state = seed;
-    move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+use crate::numerics::xorshift::uniform;
 
 #[test]
 fn fields_split_as_the_splitter_before_them() {
