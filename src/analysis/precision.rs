@@ -217,13 +217,7 @@ mod tests {
     /// rising with the angle; with `spray`, directions to ±44° and
     /// sidespin ~100 rad/s) under Nathan's model and the paper's.
     fn statcast_like(rows: usize, spray: bool) -> Vec<Scene> {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut uniform = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut uniform = crate::numerics::xorshift::uniform(0x9e37_79b9_7f4a_7c15);
         let gauss = |u: &mut dyn FnMut() -> f64| {
             let (a, b) = (u().max(1e-300), u());
             (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()

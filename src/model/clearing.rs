@@ -16,6 +16,7 @@ use super::frame;
 use super::launch::SceneFlight;
 use super::park::{Fence, FenceAt};
 use crate::numerics::ode::{State, Step};
+use crate::numerics::real::Real;
 use crate::numerics::roots::find_root_newton_from;
 
 /// Crossing times are located to this (s): a batted ball moves under a
@@ -271,14 +272,26 @@ const REACH_ROUNDING: f64 = 1.0 + 1e-12;
 /// watch works out: the plane's turn keeps lengths, so |x|, to a few ulps.
 #[inline]
 pub(crate) fn planar_reach(step: &Step<4>) -> f64 {
-    step.y1[0].abs() * REACH_ROUNDING
+    planar_reach_at(step.y1[0])
 }
 
 /// [`planar_reach`] for a 3-D step.
 #[inline]
 pub(crate) fn spatial_reach(step: &Step<6>) -> f64 {
-    let (x, z) = (step.y1[0], step.y1[2]);
-    (x * x + z * z).sqrt() * REACH_ROUNDING
+    spatial_reach_at(step.y1[0], step.y1[2])
+}
+
+/// [`planar_reach`] of a point `x` along the plane, for one flight or
+/// several in lock-step (the same bits).
+#[inline(always)]
+pub(crate) fn planar_reach_at<R: Real>(x: R) -> R {
+    x.abs() * R::splat(REACH_ROUNDING)
+}
+
+/// [`spatial_reach`] of a point (x, z) on the ground, likewise.
+#[inline(always)]
+pub(crate) fn spatial_reach_at<R: Real>(x: R, z: R) -> R {
+    (x * x + z * z).sqrt() * R::splat(REACH_ROUNDING)
 }
 
 /// [`watch_fences`] for a 3-D flight (x toward centre field, y up, z
@@ -303,25 +316,28 @@ fn watch_fences<const N: usize>(
     // once some fence is near, and then once for every fence.
     let [x1, z1, _] = ground(&step.y1);
     let reach1 = (x1 * x1 + z1 * z1).sqrt();
-    let mut ends = None;
+    // The step's end's direction, and its start's distance and direction
+    // (wanted only where it ends past a wall: rarely).
+    let (mut end, mut start) = (None, None);
     for (fence, crossing) in fences.iter().zip(crossings.iter_mut()) {
         // Short of the nearest point of the wall, the ball is short of all of it.
         if crossing.is_some() || reach1 < fence.nearest() {
             continue;
         }
-        let (direction1, reach0, direction0) = *ends.get_or_insert_with(|| {
-            let [x0, z0, _] = ground(&step.y0);
-            let reach0 = (x0 * x0 + z0 * z0).sqrt();
-            (
-                frame::direction_of(x1, z1),
-                reach0,
-                frame::direction_of(x0, z0),
-            )
-        });
+        let direction1 = *end.get_or_insert_with(|| frame::direction_of(x1, z1));
+        // Short of the wall in its direction, by a table (most fences,
+        // most steps, once the ball is past their nearest points).
+        if reach1 < fence.surely_short(direction1) {
+            continue;
+        }
         let beyond1 = reach1 - fence.reach(direction1).0;
         if beyond1 < 0.0 {
             continue;
         }
+        let (reach0, direction0) = *start.get_or_insert_with(|| {
+            let [x0, z0, _] = ground(&step.y0);
+            ((x0 * x0 + z0 * z0).sqrt(), frame::direction_of(x0, z0))
+        });
         let beyond0 = reach0 - fence.reach(direction0).0;
         let time = if beyond0 >= 0.0 {
             step.t0

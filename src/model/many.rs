@@ -37,7 +37,7 @@ pub fn fly_many_on(
 ) {
     let flights: Vec<SceneFlight> = flights.into_iter().collect();
     for group in groups(&flights) {
-        fly_group(code, &flights, &group, options, None, &mut done);
+        fly_group(code, &flights, &group, options, None, &[], &mut done);
     }
 }
 
@@ -48,6 +48,18 @@ pub fn fly_many_on(
 pub fn judge_many<'f>(
     flights: impl IntoIterator<Item = (SceneFlight, &'f [&'f Fence])>,
     options: &FlightOptions,
+    done: impl FnMut(usize, FlightSummary, &[Option<Crossing>]),
+) {
+    judge_many_shown(flights, options, true, done);
+}
+
+/// [`judge_many`], its steps shown to the watch from where some wall may
+/// be near (`shortcut`), or every one of them (as before that shortcut: a
+/// test holds the two to the same bits).
+fn judge_many_shown<'f>(
+    flights: impl IntoIterator<Item = (SceneFlight, &'f [&'f Fence])>,
+    options: &FlightOptions,
+    shortcut: bool,
     mut done: impl FnMut(usize, FlightSummary, &[Option<Crossing>]),
 ) {
     let (flights, fences): (Vec<SceneFlight>, Vec<&[&Fence]>) = flights.into_iter().unzip();
@@ -67,6 +79,23 @@ pub fn judge_many<'f>(
                 .map(|f| f.nearest())
                 .fold(f64::INFINITY, f64::min)
         })
+        .collect();
+    // Where the lanes start showing a flight's steps to the watch: its
+    // nearest wall, or for a planar flight (its direction its plane's,
+    // ahead of the plate) the nearest wall along its plane, by each fence's
+    // table (what the watch itself checks first).
+    let watched_from: Vec<f64> = flights
+        .iter()
+        .zip(&fences)
+        .zip(&closest)
+        .map(|((flight, list), &closest)| match flight {
+            SceneFlight::Planar { plane, .. } => list
+                .iter()
+                .map(|f| f.nearest().max(f.surely_short(*plane)))
+                .fold(f64::INFINITY, f64::min),
+            SceneFlight::Spatial { .. } => closest,
+        })
+        .map(|from| if shortcut { from } else { 0.0 })
         .collect();
     for group in groups(&flights) {
         let crossings = std::cell::RefCell::new(&mut crossings);
@@ -89,6 +118,7 @@ pub fn judge_many<'f>(
             &group,
             options,
             Some(&mut watch),
+            &watched_from,
             &mut finished,
         );
     }
@@ -144,15 +174,19 @@ fn groups(flights: &[SceneFlight]) -> Vec<Vec<usize>> {
     groups.into_iter().map(|(_, members)| members).collect()
 }
 
-/// Flies one group (all planar or all 3-D, with the same models).
+/// Flies one group (all planar or all 3-D, with the same models). The
+/// watch, if any, looks at flight k's steps from `watched_from[k]` metres
+/// from home plate on (and at any step with an event inside).
 fn fly_group(
     code: LaneCode,
     flights: &[SceneFlight],
     group: &[usize],
     options: &FlightOptions,
     mut watch: Option<FencesWatch<'_>>,
+    watched_from: &[f64],
     done: &mut dyn FnMut(usize, FlightSummary),
 ) {
+    let watched_from = |index: usize| watched_from.get(index).copied().unwrap_or(0.0);
     let planar = group
         .first()
         .is_some_and(|&index| flights[index].is_planar());
@@ -163,6 +197,7 @@ fn fly_group(
                 flight,
                 start: launch.state(),
                 time_limit: launch.time_limit(flight.gravity),
+                watched_from: watched_from(index),
             }),
             SceneFlight::Spatial { .. } => None,
         });
@@ -196,6 +231,7 @@ fn fly_group(
                 flight,
                 start: launch.state(),
                 time_limit: launch.time_limit(flight.gravity),
+                watched_from: watched_from(index),
             }),
             SceneFlight::Planar { .. } => None,
         });
@@ -209,5 +245,73 @@ fn fly_group(
             done,
         };
         fly_lanes(code, jobs, options, reports);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::precision::Purpose;
+    use crate::model::launch::BattedBall;
+    use crate::model::scene::Scene;
+
+    /// Fly balls and line drives (planar and with spray and sidespin, at
+    /// the bundled parks' fences and a generic one): shown to the watch
+    /// only from where a wall may be near, every flight, every crossing and
+    /// its summary are those of flights shown every step, to the bit.
+    #[test]
+    fn steps_left_unseen_change_no_bit_of_a_flight_or_a_crossing() {
+        let generic = Fence::uniform(121.92, 3.0);
+        let parks = crate::model::park::bundled();
+        let fences: Vec<&Fence> = std::iter::once(&generic)
+            .chain(parks.iter().map(|p| &p.fence))
+            .collect();
+        let mut uniform = crate::numerics::xorshift::uniform(0x9e37_79b9_7f4a_7c15);
+        let mut flights = Vec::new();
+        for i in 0..160 {
+            let mut scene = Scene::default();
+            if i % 4 != 0 {
+                scene.set_text("model.drag", "nathan").unwrap();
+                scene.set_text("model.lift", "nathan").unwrap();
+            }
+            let spray = i % 2 == 1;
+            let scene = scene.with_launch(BattedBall {
+                speed: 38.0 + 14.0 * uniform(),
+                angle: (5.0 + 45.0 * uniform()).to_radians(),
+                spin: 150.0 + 200.0 * uniform(),
+                direction: if spray { 1.6 * uniform() - 0.8 } else { 0.0 },
+                sidespin: if spray {
+                    200.0 * uniform() - 100.0
+                } else {
+                    0.0
+                },
+            });
+            flights.push(SceneFlight::new(&scene, &scene.batted_ball()));
+        }
+        type Judged = Vec<Option<(FlightSummary, Vec<Option<Crossing>>)>>;
+        let judge = |shortcut: bool, purpose: Purpose| {
+            let mut judged: Judged = vec![None; flights.len()];
+            let rows = flights.iter().map(|f| (*f, &fences[..]));
+            let options = purpose.flight_options();
+            judge_many_shown(rows, &options, shortcut, |index, summary, crossings| {
+                judged[index] = Some((summary, crossings.to_vec()));
+            });
+            judged
+        };
+        for purpose in [Purpose::Batch, Purpose::Readout] {
+            let (shown, every) = (judge(true, purpose), judge(false, purpose));
+            let mut crossed = 0;
+            for (a, b) in shown.iter().zip(&every) {
+                let ((a, a_at), (b, b_at)) = (a.as_ref().unwrap(), b.as_ref().unwrap());
+                assert_eq!(format!("{a:?}"), format!("{b:?}"));
+                assert_eq!(a_at, b_at);
+                crossed += a_at.iter().flatten().count();
+            }
+            // Some balls cross some fences, not all.
+            assert!(
+                crossed > 100 && crossed < 160 * fences.len() / 2,
+                "{crossed}"
+            );
+        }
     }
 }

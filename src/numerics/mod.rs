@@ -6,3 +6,5 @@ pub mod nelder_mead;
 pub mod ode;
 pub mod real;
 pub mod roots;
+#[cfg(test)]
+pub(crate) mod xorshift;

@@ -124,7 +124,13 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
         match records.next() {
             Ok(Record::End) => break,
             Ok(Record::Text { line, text }) => {
-                match parse_row(&header, setup, line, &text, &mut fields, &mut kept) {
+                match parse_row(
+                    &header,
+                    setup,
+                    (line, &text),
+                    (&mut fields, &mut kept),
+                    None,
+                ) {
                     Row::Job(job) => {
                         rows += 1;
                         jobs.push(job);

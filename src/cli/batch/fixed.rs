@@ -23,7 +23,7 @@ const LARGEST_SCALED: f64 = (1u64 << 50) as f64;
 pub(super) fn write(out: &mut Vec<u8>, value: f64, decimals: usize) {
     if let Some(&scale) = SCALE.get(decimals) {
         let scaled = value.abs() * scale;
-        let whole = scaled.round();
+        let whole = round(scaled);
         // The product's error is at most half an ulp of `scaled`; a value
         // farther than that from a half rounds the same either way.
         let clear = (scaled - whole).abs() < 0.5 - scaled * f64::EPSILON;
@@ -33,6 +33,26 @@ pub(super) fn write(out: &mut Vec<u8>, value: f64, decimals: usize) {
         }
     }
     let _ = write!(out, "{value:.decimals$}");
+}
+
+/// `x.round()` (half away from zero; ±0 alike), without its library call
+/// (the baseline x86-64 has no rounding instruction): below 2^52 from the
+/// truncation, the fraction left being exact.
+#[inline]
+pub(super) fn round(x: f64) -> f64 {
+    if x.abs() < (1u64 << 52) as f64 {
+        let truncated = x as i64 as f64;
+        let fraction = x - truncated;
+        if fraction >= 0.5 {
+            truncated + 1.0
+        } else if fraction <= -0.5 {
+            truncated - 1.0
+        } else {
+            truncated
+        }
+    } else {
+        x.round()
+    }
 }
 
 /// `digits` / 10^decimals, signed as `negative` says (`format!` keeps the
@@ -78,6 +98,42 @@ mod tests {
         );
     }
 
+    use crate::numerics::xorshift::bits as xorshift;
+
+    #[test]
+    fn round_is_the_library_s() {
+        let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
+        let halves = [
+            0.5,
+            -0.5,
+            1.5,
+            -2.5,
+            4503599627370495.5,
+            -4503599627370495.5,
+        ];
+        let edges = [
+            0.0,
+            -0.0,
+            0.49999999999999994,
+            -0.49999999999999994,
+            4503599627370496.0,
+        ];
+        let specials = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e300, -1e300];
+        let random = std::iter::repeat_with(|| {
+            let state = next();
+            let unit = (state >> 11) as f64 / (1u64 << 53) as f64;
+            (unit - 0.5) * 10f64.powi((state % 20) as i32 - 3)
+        });
+        let values = halves.into_iter().chain(edges).chain(specials);
+        for x in values.chain(random.take(100_000)) {
+            let (ours, library) = (round(x), x.round());
+            assert!(
+                ours == library || ours.is_nan() && library.is_nan(),
+                "{x:e}"
+            );
+        }
+    }
+
     #[test]
     fn edges_print_as_format_prints_them() {
         let edges = [
@@ -120,14 +176,7 @@ mod tests {
 
     #[test]
     fn random_values_and_exact_halves_print_as_format_prints_them() {
-        // xorshift: reproducible, no dependency.
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = xorshift(0x2545_f491_4f6c_dd1d);
         for _ in 0..200_000 {
             let bits = next();
             let decimals = (bits % 10) as usize;

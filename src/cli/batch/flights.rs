@@ -9,6 +9,7 @@
 //! prints, digit for digit. JSON prints every digit, so it flies at the
 //! readout's precision throughout.
 
+use super::fixed;
 use super::rows::Job;
 use super::savant_columns::Setup;
 use crate::Scene;
@@ -42,8 +43,10 @@ pub(super) struct RowFlight {
 pub(super) struct Scratch {
     /// Each row's crossings of its fences: its own, then each park's.
     crossings: Vec<Option<Crossing>>,
-    /// One row's, flown again.
-    again: Vec<Option<Crossing>>,
+    /// A row flown again: the places among its fences of those it is
+    /// judged at again, and its crossings of them.
+    watched: Vec<usize>,
+    crossings_again: Vec<Option<Crossing>>,
     summaries: Vec<FlightSummary>,
     /// The row's judging: at its own fence, then at each park.
     judged: Judged,
@@ -73,8 +76,10 @@ struct Verdict {
 impl Verdict {
     /// `flight` judged at `fence`. A ball that crossed no fence and came
     /// down fair or foul by more than the guard, short of the fence's
-    /// nearest point by more than the guard, is short (or foul) and
-    /// decided there without looking the wall up: most rows, at most parks.
+    /// nearest point by more than the guard, or of the wall in its landing
+    /// direction by the fence's table ([`park::Fence::surely_short`]), is
+    /// short (or foul) and decided there without looking the wall up: most
+    /// rows, at most parks.
     fn of(
         fence: &park::Fence,
         crossing: Option<Crossing>,
@@ -82,10 +87,11 @@ impl Verdict {
         landing: Landing,
     ) -> Verdict {
         let guard = BATCH_GUARD;
+        let short_of = |wall: f64| flight.range.abs() < wall - guard.distance;
         let far_short = crossing.is_none()
             && flight.landed
-            && flight.range.abs() < fence.nearest() - guard.distance
-            && (landing.direction.abs() - park::FOUL_LINE).abs() > guard.angle;
+            && (landing.direction.abs() - park::FOUL_LINE).abs() > guard.angle
+            && (short_of(fence.nearest()) || short_of(fence.surely_short(landing.direction)));
         if far_short {
             return Verdict {
                 clears: false,
@@ -173,6 +179,7 @@ pub(super) fn fly_chunk(
     let width = parks.len() + 1;
     let mut flown = 0;
     let mut fences: Vec<&park::Fence> = Vec::with_capacity(width);
+    let mut fences_again: Vec<&park::Fence> = Vec::with_capacity(width);
     for (job, ready) in jobs.iter().zip(&ready) {
         let ready = match ready {
             Ok(ready) => ready,
@@ -197,31 +204,17 @@ pub(super) fn fly_chunk(
             &purpose.flight_options(),
             &mut scratch.judged,
         );
-        if purpose == Purpose::Batch
-            && !settled(
-                &summary,
-                ready.flight.is_planar(),
-                &scratch.judged,
-                printed,
-                job,
-            )
-        {
+        let settled = settled(
+            &summary,
+            ready.flight.is_planar(),
+            &scratch.judged,
+            printed,
+            job,
+        );
+        if purpose == Purpose::Batch && !settled.all {
             scratch.refined += 1;
-            scratch.again.clear();
-            scratch.again.resize(width, None);
-            summary = ready
-                .flight
-                .fly_to_fences(&readout, &fences, &mut scratch.again);
-            let again = &scratch.again;
-            judge(
-                ready,
-                &fences,
-                again,
-                &summary,
-                own_air,
-                &readout,
-                &mut scratch.judged,
-            );
+            let again = (&fences[..], &mut fences_again);
+            summary = judge_again(ready, again, settled.own, own_air, scratch);
         }
         let from = scratch.cleared.len();
         let cleared = scratch.judged.parks.iter().map(|v| v.clears);
@@ -295,8 +288,15 @@ fn ready<'f>(
     // test is a threshold a looser flight could cross in another iteration.
     let launched =
         savant::launch(&job.scene, &job.launch, setup.spray, options).map_err(|e| e.to_string())?;
-    // The row was validated whole when it was read; only its launch moved.
-    launched.scene.validate_changed_launch().map_err(|e| {
+    // The row was validated whole when it was read; only its launch moved,
+    // if it did (a spin estimated, a direction solved).
+    let moved = launched.scene.launch != job.scene.launch;
+    let checked = if moved {
+        launched.scene.validate_changed_launch()
+    } else {
+        Ok(())
+    };
+    checked.map_err(|e| {
         if job.launch.estimates_spin() {
             format!("{e} (the spin estimated from the launch angle)")
         } else {
@@ -341,34 +341,104 @@ fn judge(
     );
     if let Some((setup, given)) = own_air {
         for park in &setup.parks.parks {
-            let mut there = ready.scene;
-            given.park_air(&mut there.environment, park.elevation);
-            let (flight, _, _) = launch::scene_start(&there);
-            let mut crossing = [None];
-            let flown = flight.fly_to_fences(options, &[&park.fence], &mut crossing);
-            let landing = Landing::of(&flown);
-            let verdict = Verdict::of(&park.fence, crossing[0], &flown, landing);
-            judged.parks.push(verdict);
+            judged
+                .parks
+                .push(own_air_verdict(ready, park, given, options));
         }
     }
+}
+
+/// The row judged at `park` on a flight of its own in that park's air.
+fn own_air_verdict(
+    ready: &Ready,
+    park: &park::Park,
+    given: GivenWeather,
+    options: &FlightOptions,
+) -> Verdict {
+    let mut there = ready.scene;
+    given.park_air(&mut there.environment, park.elevation);
+    let (flight, _, _) = launch::scene_start(&there);
+    let mut crossing = [None];
+    let flown = flight.fly_to_fences(options, &[&park.fence], &mut crossing);
+    let landing = Landing::of(&flown);
+    Verdict::of(&park.fence, crossing[0], &flown, landing)
+}
+
+/// A row flown again at the readout's precision, as `fly` flies it, and
+/// judged again where the first flight left something unsettled: at its
+/// own fence unless `own_settled`, at each park whose verdict was not
+/// decided. What the first flight settled stands (the readout's flight
+/// prints and judges it alike), so only those fences watch the flight
+/// again: the watch never changes the flight itself. The flight's summary.
+fn judge_again<'f>(
+    ready: &Ready,
+    (fences, again): (&[&'f park::Fence], &mut Vec<&'f park::Fence>),
+    own_settled: bool,
+    own_air: Option<(&Setup, GivenWeather)>,
+    scratch: &mut Scratch,
+) -> FlightSummary {
+    let readout = Purpose::Readout.flight_options();
+    let judged = &mut scratch.judged;
+    // Which of `fences` are watched: their places in it.
+    let watched = &mut scratch.watched;
+    watched.clear();
+    watched.extend((!own_settled).then_some(0));
+    let undecided = |k: &usize| !judged.parks[*k].decided;
+    watched.extend((0..fences.len() - 1).filter(undecided).map(|k| k + 1));
+    again.clear();
+    again.extend(watched.iter().map(|&k| fences[k]));
+    scratch.crossings_again.clear();
+    scratch.crossings_again.resize(again.len(), None);
+    let summary = ready
+        .flight
+        .fly_to_fences(&readout, again, &mut scratch.crossings_again);
+    let landing = Landing::of(&summary);
+    for (&k, crossing) in watched.iter().zip(&scratch.crossings_again) {
+        if k == 0 {
+            judged.own = Some(Clearing::judge_landed(
+                fences[0], *crossing, &summary, landing,
+            ));
+        } else {
+            judged.parks[k - 1] = Verdict::of(fences[k], *crossing, &summary, landing);
+        }
+    }
+    if let Some((setup, given)) = own_air {
+        let first = fences.len() - 1;
+        for (k, park) in setup.parks.parks.iter().enumerate() {
+            if !judged.parks[first + k].decided {
+                judged.parks[first + k] = own_air_verdict(ready, park, given, &readout);
+            }
+        }
+    }
+    summary
 }
 
 /// Whether the row prints, and judges, exactly what the readout's flight
 /// would: every printed number [`BATCH_GUARD`] away from a change of its
 /// last digit or its sign, every outcome as far from its threshold (a
 /// margin's zero, a foul line), and the ball landed.
+struct Settled {
+    all: bool,
+    /// The own fence's outcome and margin, as printed.
+    own: bool,
+}
+
 fn settled(
     flight: &FlightSummary,
     planar: bool,
     judged: &Judged,
     printed: Printed,
     job: &Job,
-) -> bool {
+) -> Settled {
     let own = judged.own.expect("judged at its own fence");
     let guard = BATCH_GUARD;
     let same = |quantity, value: f64, error: f64, decimals| {
         printed_alike(printed.shown, quantity, value, error, decimals)
     };
+    let own_settled = own
+        .margin
+        .is_none_or(|m| same(Quantity::Distance, m, guard.distance, 3))
+        && decided(&own, guard);
     let numbers = flight.landed
         && same(Quantity::Distance, flight.range, guard.distance, 3)
         // A planar flight's direction is its plane's, exactly.
@@ -376,9 +446,6 @@ fn settled(
         && same(Quantity::Unchanged, flight.flight_time, guard.time, 3)
         && same(Quantity::Distance, flight.apex, guard.distance, 3)
         && same(Quantity::Angle, flight.landing_angle, guard.angle, 4)
-        && own
-            .margin
-            .is_none_or(|m| same(Quantity::Distance, m, guard.distance, 3))
         && (!printed.statcast
             || job.statcast.is_none_or(|measured| {
                 same(
@@ -388,7 +455,10 @@ fn settled(
                     2,
                 )
             }));
-    numbers && decided(&own, guard) && judged.parks.iter().all(|v| v.decided)
+    Settled {
+        all: numbers && own_settled && judged.parks.iter().all(|v| v.decided),
+        own: own_settled,
+    }
 }
 
 /// Whether `value` and anything within `error` of it print alike (the
@@ -409,7 +479,7 @@ fn printed_alike(
     } else {
         (high, low)
     };
-    (low * scale).round() == (high * scale).round()
+    fixed::round(low * scale) == fixed::round(high * scale)
         && low.is_sign_negative() == high.is_sign_negative()
 }
 

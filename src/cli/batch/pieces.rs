@@ -12,6 +12,7 @@ use rayon::prelude::*;
 
 use super::flights::{Printed, RowFlight, Scratch, fly_chunk};
 use super::output::{CsvLine, json_line};
+use super::own_launch::SwingLaunches;
 use super::records::{Fields, MAX_RECORD_BYTES, Records, Span, Stop};
 use super::rows::{Header, Job, Row, parse_row};
 use super::savant_columns::{Setup, Summary};
@@ -76,6 +77,7 @@ pub(super) struct Piece {
     fields: Fields,
     kept: Fields,
     jobs: Vec<Job>,
+    swings: SwingLaunches,
     flown: Vec<Result<RowFlight, String>>,
     scratch: Scratch,
     /// The rows' output, in order.
@@ -117,14 +119,21 @@ impl Piece {
         for span in spans {
             let row = match *span {
                 Span::Text { line, start, end } => {
-                    let record = String::from_utf8_lossy(&text[start..end]);
+                    // As `from_utf8_lossy`, by the faster check first.
+                    let bytes = &text[start..end];
+                    let record = match std::str::from_utf8(bytes) {
+                        Ok(text) => std::borrow::Cow::Borrowed(text),
+                        Err(_) => String::from_utf8_lossy(bytes),
+                    };
+                    // With --own-air each park's flight takes the launch
+                    // its swing gives in that park's air: left to it.
+                    let swings = (!setup.own_air).then_some(&mut self.swings);
                     parse_row(
                         header,
                         setup,
-                        line,
-                        &record,
-                        &mut self.fields,
-                        &mut self.kept,
+                        (line, &record),
+                        (&mut self.fields, &mut self.kept),
+                        swings,
                     )
                 }
                 Span::TooLong { line } => Row::Bad {

@@ -38,7 +38,7 @@ impl Fields {
         let mut quoted = false;
         let mut rest = record;
         // Quotes and commas are ASCII: the text between them is copied whole.
-        while let Some(i) = rest.find(['"', ',']) {
+        while let Some(i) = memchr::memchr2(b'"', b',', rest.as_bytes()) {
             self.text.push_str(&rest[..i]);
             let special = rest.as_bytes()[i];
             rest = &rest[i + 1..];
@@ -81,6 +81,18 @@ impl Fields {
     pub(super) fn clear(&mut self) {
         self.text.clear();
         self.ends.clear();
+    }
+
+    /// Field `index`, as `str::trim` leaves it: at once where it starts
+    /// and ends with a visible ASCII character (a number, mostly).
+    pub(super) fn trimmed(&self, index: usize) -> &str {
+        let field = self.get(index);
+        match (field.as_bytes().first(), field.as_bytes().last()) {
+            (Some(first), Some(last)) if first.is_ascii_graphic() && last.is_ascii_graphic() => {
+                field
+            }
+            _ => field.trim(),
+        }
     }
 
     pub(super) fn get(&self, index: usize) -> &str {

@@ -11,6 +11,8 @@ use crate::model::scene::UnknownHand;
 use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem};
 
+use super::own_launch::SwingLaunches;
+use super::plain::plain_decimal;
 use super::records::*;
 use super::savant_columns::{SavantCells, SavantColumn, Setup};
 
@@ -147,6 +149,9 @@ pub(super) enum Column {
 pub(super) struct Header {
     pub(super) names: Vec<String>,
     pub(super) columns: Vec<Column>,
+    /// Each [`Column::Input`] of a numeric key, that key (looked up once,
+    /// not on every row; set as `set_text` sets it).
+    numeric: Vec<Option<&'static Key>>,
     /// The columns `--keep` copies, by index (the first of a repeated name).
     pub(super) keep: Vec<usize>,
 }
@@ -183,9 +188,17 @@ impl Header {
             }
             columns.push(column);
         }
+        let numeric = columns
+            .iter()
+            .map(|column| match column {
+                Column::Input(key) if !TEXT_KEYS.contains(key) => Scene::key(key).ok(),
+                _ => None,
+            })
+            .collect();
         Ok(Header {
             names,
             columns,
+            numeric,
             keep: Vec::new(),
         })
     }
@@ -340,20 +353,35 @@ pub(super) enum Row {
     Blank,
 }
 
+/// [`InputBatch::set_key_text`], a plain decimal in the key's bounds read
+/// without the general reader (units, errors): the same value, set alike.
+fn set_number(
+    batch: &mut InputBatch,
+    scene: &mut Scene,
+    key: &'static Key,
+    text: &str,
+) -> Result<(), InputError> {
+    match plain_decimal(text) {
+        Some(value) if key.bounds.contains(value) => batch.set_key(scene, key, value),
+        _ => batch.set_key_text(scene, key, text),
+    }
+}
+
 /// Savant's missing value in its 2019 layout: the string `null`.
 fn is_missing(value: &str) -> bool {
     value.is_empty() || value.eq_ignore_ascii_case("null")
 }
 
 /// The row on `line`, its `text` split into `fields` (a buffer reused from
-/// row to row) and its `--keep` cells added to `kept`.
+/// row to row) and its `--keep` cells added to `kept`; with `swings`, the
+/// launch values it leaves to its swing filled in where its swing is known
+/// (see [`SwingLaunches`]).
 pub(super) fn parse_row(
     header: &Header,
     setup: &Setup,
-    line: usize,
-    text: &str,
-    fields: &mut Fields,
-    kept: &mut Fields,
+    (line, text): (usize, &str),
+    (fields, kept): (&mut Fields, &mut Fields),
+    swings: Option<&mut SwingLaunches>,
 ) -> Row {
     if text.is_empty() {
         return Row::Blank;
@@ -372,7 +400,7 @@ pub(super) fn parse_row(
         ));
     }
     let cell = |i: usize| {
-        let value = fields.get(i).trim();
+        let value = fields.trimmed(i);
         if is_missing(value) { "" } else { value }
     };
     let launch_cells = || {
@@ -399,13 +427,15 @@ pub(super) fn parse_row(
     for (i, (column, name)) in header.columns.iter().zip(&header.names).enumerate() {
         let value = cell(i);
         let number = || {
-            value.parse::<f64>().map_err(|_| {
-                format!(
-                    "{} = {:?}: not a number",
-                    escape_cut(name, 80),
-                    cut(value, 80)
-                )
-            })
+            plain_decimal(value)
+                .map_or_else(|| value.parse::<f64>(), Ok)
+                .map_err(|_| {
+                    format!(
+                        "{} = {:?}: not a number",
+                        escape_cut(name, 80),
+                        cut(value, 80)
+                    )
+                })
         };
         let done = match *column {
             Column::Ignored => Ok(()),
@@ -419,8 +449,7 @@ pub(super) fn parse_row(
             // A launch.* cell as `--set` takes it (`103mph`).
             Column::Launch(index, Unit::Si) => {
                 spin_given |= index == 2;
-                batch
-                    .set_key_text(&mut scene, launch_key(index), value)
+                set_number(&mut batch, &mut scene, launch_key(index), value)
                     .map_err(|e| e.to_string())
             }
             // Statcast's own columns: a bare number in their unit.
@@ -435,23 +464,25 @@ pub(super) fn parse_row(
             Column::Input(key) => {
                 given.note(key);
                 sidespin_given |= key == "launch.sidespin";
-                batch
-                    .set_text(&mut scene, key, value)
-                    .map_err(|e| match e {
-                        InputError::NotANumber { key, text } => InputError::NotANumber {
-                            key,
-                            text: cut(&text, 80),
-                        },
-                        InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
-                            text: cut(&model.text, 80),
-                            ..model
-                        }),
-                        InputError::UnknownHand(hand) => InputError::UnknownHand(UnknownHand {
-                            text: cut(&hand.text, 80),
-                        }),
-                        e => e,
-                    })
-                    .map_err(|e| e.to_string())
+                match header.numeric[i] {
+                    Some(numeric) => set_number(&mut batch, &mut scene, numeric, value),
+                    None => batch.set_text(&mut scene, key, value),
+                }
+                .map_err(|e| match e {
+                    InputError::NotANumber { key, text } => InputError::NotANumber {
+                        key,
+                        text: cut(&text, 80),
+                    },
+                    InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
+                        text: cut(&model.text, 80),
+                        ..model
+                    }),
+                    InputError::UnknownHand(hand) => InputError::UnknownHand(UnknownHand {
+                        text: cut(&hand.text, 80),
+                    }),
+                    e => e,
+                })
+                .map_err(|e| e.to_string())
             }
             Column::Field(index) => {
                 let key = &FIELD_KEYS[index];
@@ -468,7 +499,11 @@ pub(super) fn parse_row(
     if let Some(index) = park {
         super::super::ground::to_park(&mut scene, &setup.parks.parks[index], given);
     }
-    if let Err(e) = scene.validate() {
+    let valid = match swings {
+        Some(swings) => swings.validate(&mut scene),
+        None => scene.validate(),
+    };
+    if let Err(e) = valid {
         let from = if converted {
             let read: Vec<String> = header
                 .columns

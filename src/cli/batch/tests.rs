@@ -122,20 +122,14 @@ fn split_fields_before(text: &str) -> Result<Vec<String>, &'static str> {
     Ok(fields)
 }
 
-/// A reproducible stream of numbers in [0, 1) (xorshift).
-fn uniform(seed: u64) -> impl FnMut() -> f64 {
-    let mut state = seed;
-    move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+use crate::numerics::xorshift::uniform;
 
 #[test]
 fn fields_split_as_the_splitter_before_them() {
-    let alphabet = ['a', ' ', ',', '"', 'é', '\t', '\r', '\n', '1'];
+    // Spaces of Unicode's too (no-break, em): `trimmed` is `trim`.
+    let alphabet = [
+        'a', ' ', ',', '"', 'é', '\t', '\r', '\n', '1', '\u{a0}', '\u{2003}',
+    ];
     let mut next = uniform(0x1234_5678_9abc_def1);
     let mut fields = Fields::default();
     for _ in 0..50_000 {
@@ -149,6 +143,9 @@ fn fields_split_as_the_splitter_before_them() {
                 .collect()
         });
         assert_eq!(now, split_fields_before(&text), "{text:?}");
+        for i in 0..fields.len() {
+            assert_eq!(fields.trimmed(i), fields.get(i).trim(), "{text:?}");
+        }
     }
     // A quote after leading spaces opens a quoted field (csv's reader would
     // take it as text and find three fields here).

@@ -7,6 +7,7 @@ use super::events::{Bounds, Events, StepEnds, end_next_by, eventful};
 use super::{Dynamics, Flight, Flight3d, FlightOptions, FlightSummary, Regime};
 use super::{PlanarConstants, SpatialConstants};
 use crate::model::aero::{DragCurve, LiftCurve, WithModels};
+use crate::model::clearing::{planar_reach_at, spatial_reach_at};
 use crate::numerics::ode::lanes::{
     LANES, LaneCode, LaneProblems, LaneReal, LaneStart, LaneSystem, Lanes, integrate_lanes,
 };
@@ -40,6 +41,12 @@ pub trait LaneFlight<const N: usize>: Dynamics<N> {
         in_wind: V::Mask,
         y: &Lanes<N, V>,
     ) -> V;
+
+    /// How far from home plate four flights are at `y` (m), bit for bit
+    /// as the fences' watch reckons a step's reach
+    /// ([`crate::model::clearing`]); a planar flight's only ahead of the
+    /// plate, +∞ behind it (where its direction is no longer its plane's).
+    fn reach_lanes<V: LaneReal>(y: &Lanes<N, V>) -> V;
 }
 
 /// Each lane's value of one constant.
@@ -115,6 +122,13 @@ impl LaneFlight<4> for Flight {
     fn reynolds_lanes<V: LaneReal>(c: &Self::LaneConstants<V>, _: V::Mask, y: &Lanes<4, V>) -> V {
         c.air((y.0[2], y.0[3])).2
     }
+
+    #[inline(always)]
+    fn reach_lanes<V: LaneReal>(y: &Lanes<4, V>) -> V {
+        let x = y.0[0];
+        let behind = x.lt(V::splat(0.0));
+        V::select(behind, V::splat(f64::INFINITY), planar_reach_at(x))
+    }
 }
 
 impl Default for SpatialConstants<f64> {
@@ -173,6 +187,11 @@ impl LaneFlight<6> for Flight3d {
     ) -> V {
         c.air(in_wind, [y.0[3], y.0[4], y.0[5]]).2
     }
+
+    #[inline(always)]
+    fn reach_lanes<V: LaneReal>(y: &Lanes<6, V>) -> V {
+        spatial_reach_at(y.0[0], y.0[2])
+    }
 }
 
 /// One flight for the lanes: its position in the caller's list, its
@@ -182,6 +201,9 @@ pub struct LaneJob<const N: usize, D> {
     pub flight: D,
     pub start: State<N>,
     pub time_limit: f64,
+    /// How far from home plate (m) the watch starts looking (0: at once):
+    /// steps that end short of it, with nothing inside them, pass unseen.
+    pub watched_from: f64,
 }
 
 /// Shows a flight's step (by the flight's index) to a watcher.
@@ -209,6 +231,8 @@ struct FlightLanes<'r, const N: usize, V: LaneReal, D: LaneFlight<N>, Dr, L, J> 
     pieces: V,
     in_wind: V::Mask,
     bounds: Bounds<V>,
+    /// Each lane's [`LaneJob::watched_from`].
+    watched_from: V,
     events: [Option<Events<N, D>>; LANES],
     index: [usize; LANES],
     jobs: J,
@@ -282,13 +306,20 @@ where
     fn quiet(
         &mut self,
         accepted: V::Mask,
-        (t1, h): (V, V),
+        (t0, t1, h): (V, V, V),
         (y0, y1): (&Lanes<N, V>, &Lanes<N, V>),
     ) -> (V::Mask, V) {
-        if self.reports.watch.is_some() {
-            // The watch sees every step.
-            return (V::mask_of([false; LANES]), V::splat(f64::INFINITY));
-        }
+        // A watched step short of where its watch starts looking is left
+        // unseen like any other, its next step's end reckoned as the
+        // observer would, from the step's ends (t1 − t0, which may differ
+        // from h in the last bit), so that the flight is the same to the
+        // bit. Unwatched lanes keep h.
+        let (unwatched, h) = if self.reports.watch.is_some() {
+            let short = D::reach_lanes(y1).lt(self.watched_from);
+            (short, t1 - t0)
+        } else {
+            (accepted, h)
+        };
         let reynolds = if self.switching {
             (
                 D::reynolds_lanes(&self.constants, self.in_wind, y0),
@@ -304,7 +335,7 @@ where
             vertical_velocities: (y0.0[D::VERTICAL_VELOCITY], y1.0[D::VERTICAL_VELOCITY]),
             reynolds,
         };
-        let quiet = accepted & !eventful(&ends, &self.bounds);
+        let quiet = accepted & unwatched & !eventful(&ends, &self.bounds);
         (quiet, end_next_by(&ends, &self.bounds))
     }
 
@@ -325,6 +356,7 @@ where
         self.set_regime(lane, (events.regime(), events.bounds()));
         self.events[lane] = Some(events);
         self.index[lane] = job.index;
+        self.watched_from.set(lane, job.watched_from);
         self.each[lane] = job.flight.constants_of();
         self.constants = D::gather(&self.each);
         Some(LaneStart {
@@ -427,6 +459,7 @@ where
                 wind_height: V::splat(0.0),
                 in_wind: V::mask_of(none),
             },
+            watched_from: V::splat(0.0),
             events: [const { None }; LANES],
             index: [0; LANES],
             jobs: self.jobs,

@@ -44,11 +44,18 @@ pub struct Fence {
     /// a row; a binary search's unpredictable branches cost several times
     /// this table's one multiply and a step or two forward).
     first_past: Vec<u16>,
+    /// For each slice, a distance short of the wall anywhere in it and in
+    /// the slices either side ([`Fence::surely_short`]).
+    short_in: Vec<f64>,
 }
 
 /// Slices of fair territory in [`Fence::first_past`]: under 1° each, so a
 /// search walks past at most the points of one slice.
 const BUCKETS: usize = 128;
+
+/// [`Fence::surely_short`]'s margin, relative: far above the interpolation's
+/// rounding (ulps), far below anything that shows (0.1 µm at 100 m).
+const SHORT_MARGIN: f64 = 1e-9;
 
 /// Why a list of points is not a fence (the parser names the park and field).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -165,11 +172,30 @@ impl Fence {
                 points.partition_point(|p| p.direction <= start) as u16
             })
             .collect();
-        Fence {
+        let mut fence = Fence {
             points,
             nearest,
             first_past,
-        }
+            short_in: Vec::new(),
+        };
+        fence.short_in = (0..BUCKETS)
+            .map(|bucket| {
+                // The wall is linear between points: its least distance over
+                // the slices is at their ends or at a point between.
+                let from = Fence::bucket_start(bucket.saturating_sub(1));
+                let to = Fence::bucket_start((bucket + 2).min(BUCKETS));
+                let inside = fence
+                    .points
+                    .iter()
+                    .filter(|p| (from..=to).contains(&p.direction));
+                let least = inside
+                    .map(|p| p.distance)
+                    .chain([fence.reach(from).0, fence.reach(to).0])
+                    .fold(f64::INFINITY, f64::min);
+                least * (1.0 - SHORT_MARGIN)
+            })
+            .collect();
+        fence
     }
 
     /// The direction where slice `bucket` of [`Fence::first_past`] begins.
@@ -180,6 +206,22 @@ impl Fence {
     /// The shortest distance from home plate to the wall (m).
     pub fn nearest(&self) -> f64 {
         self.nearest
+    }
+
+    /// A distance (m) short of the wall in `direction`: under what
+    /// [`Fence::reach`] gives there, whatever its rounding, looked up
+    /// without a search (the fences' watch asks it of every fence once the
+    /// ball is past their nearest points). −∞ for NaN.
+    #[inline]
+    pub fn surely_short(&self, direction: f64) -> f64 {
+        if direction.is_nan() {
+            return f64::NEG_INFINITY;
+        }
+        let fair = direction.clamp(-FOUL_LINE, FOUL_LINE);
+        // The slice as [`Fence::segment`] finds it, or the one before (the
+        // product rounds): each slice's figure covers its neighbours too.
+        let slice = (fair + FOUL_LINE) * (BUCKETS as f64 / (2.0 * FOUL_LINE));
+        self.short_in[(slice as usize).min(BUCKETS - 1)]
     }
 
     /// The wall's distance (m) in `direction` and its rate of change with
@@ -332,6 +374,56 @@ mod tests {
                 assert_eq!(fence.segment(d), expected, "at {d:e}");
             }
         }
+    }
+
+    #[test]
+    fn surely_short_is_short_of_the_wall_in_every_direction() {
+        let mut fences: Vec<Fence> = super::super::bundled()
+            .iter()
+            .map(|p| p.fence.clone())
+            .collect();
+        // Points on slice boundaries, a deep notch and a step.
+        let start = Fence::bucket_start;
+        let points = vec![
+            point(-FOUL_LINE, 100.0, 3.0),
+            point(start(3), 90.0, 3.0),
+            point(start(3), 120.0, 5.0),
+            point(start(64) + 1e-4, 80.0, 3.0),
+            point(start(65), 130.0, 3.0),
+            point(FOUL_LINE, 100.0, 3.0),
+        ];
+        fences.push(Fence::new(points).unwrap());
+        fences.push(Fence::uniform(121.92, 3.0));
+        for fence in &fences {
+            let mut directions: Vec<f64> = fence.points.iter().map(|p| p.direction).collect();
+            directions.extend((0..BUCKETS).map(start));
+            directions.extend((0..=20_000).map(|i| -1.0 + i as f64 * 1e-4));
+            for d in directions.clone() {
+                directions.extend([d.next_up(), d.next_down()]);
+            }
+            for d in directions {
+                let (short, wall) = (fence.surely_short(d), fence.reach(d).0);
+                assert!(short < wall, "{short} against {wall} at {d:e}");
+                // And no shorter than the wall anywhere within two slices
+                // (its slice and either neighbour lie inside them).
+                let width = 2.0 * FOUL_LINE / BUCKETS as f64;
+                let fair = |d: f64| d.clamp(-FOUL_LINE, FOUL_LINE);
+                let (from, to) = (fair(d) - 2.0 * width, fair(d) + 2.0 * width);
+                let inside = fence
+                    .points
+                    .iter()
+                    .filter(|p| (fair(from)..=fair(to)).contains(&p.direction));
+                let least = inside
+                    .map(|p| p.distance)
+                    .chain([fence.reach(from).0, fence.reach(to).0])
+                    .fold(f64::INFINITY, f64::min);
+                assert!(
+                    short >= least * (1.0 - 2.0 * SHORT_MARGIN),
+                    "{short} {least} at {d:e}"
+                );
+            }
+        }
+        assert_eq!(fences[0].surely_short(f64::NAN), f64::NEG_INFINITY);
     }
 
     #[test]

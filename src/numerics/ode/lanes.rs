@@ -129,14 +129,15 @@ pub trait LaneSystem<const N: usize, V: LaneReal> {
     /// steps need no observer one by one (nothing happens inside them),
     /// and for those the time by which their next steps should end (+∞
     /// for no limit): as [`Control::EndNextBy`] or [`Control::Continue`]
-    /// would say, for all lanes at once. By default, none.
+    /// would say, for all lanes at once. The steps run from `t0` to `t1`
+    /// (`h` long). By default, none.
     fn quiet(
         &mut self,
         accepted: V::Mask,
-        (t1, h): (V, V),
+        (t0, t1, h): (V, V, V),
         (y0, y1): (&Lanes<N, V>, &Lanes<N, V>),
     ) -> (V::Mask, V) {
-        let _ = (accepted, t1, h, y0, y1);
+        let _ = (accepted, t0, t1, h, y0, y1);
         (V::mask_of([false; LANES]), V::splat(f64::INFINITY))
     }
     /// Lane `lane`'s problem has ended, at (t, y) = `end`.
@@ -410,7 +411,7 @@ fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
         let h_accepted = V::select(c.last_rejected(), grown.min(h), grown);
         let mut h_next = V::select(accepted, h_accepted, h * rejected_growth(log2));
         let t1 = t0 + h;
-        let (quiet, end_by) = system.quiet(accepted, (t1, h), (&y0, &s.y1));
+        let (quiet, end_by) = system.quiet(accepted, (t0, t1, h), (&y0, &s.y1));
         let quiet = quiet & accepted;
         let limited = quiet & t1.lt(end_by);
         let h_first = h_next.to_array();
