@@ -31,7 +31,7 @@ pub struct FenceAt {
 /// first at −π/4 and the last at +π/4, distance and height linear between
 /// them. A change of height is a step: two points at the same direction,
 /// the left one's height before it, the right one's from it on.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Fence {
     points: Vec<FencePoint>,
     /// The shortest distance to the wall (m): a ball nearer the plate has
@@ -45,8 +45,18 @@ pub struct Fence {
     /// this table's one multiply and a step or two forward).
     first_past: Vec<u16>,
     /// For each slice, a distance short of the wall anywhere in it and in
-    /// the slices either side ([`Fence::surely_short`]).
-    short_in: Vec<f64>,
+    /// the slices either side ([`Fence::surely_short`]): built the first
+    /// time a flight comes that far, since every command loads the 30
+    /// parks and most flights never reach a wall (building all 30 tables
+    /// cost each `fly` ~0.1 ms).
+    short_in: std::sync::OnceLock<Vec<f64>>,
+}
+
+/// Fences are equal when their walls are: the tables follow from them.
+impl PartialEq for Fence {
+    fn eq(&self, other: &Fence) -> bool {
+        self.points == other.points
+    }
 }
 
 /// Slices of fair territory in [`Fence::first_past`]: under 1° each, so a
@@ -166,36 +176,85 @@ impl Fence {
             .iter()
             .map(|p| p.distance)
             .fold(f64::INFINITY, f64::min);
-        let first_past = (0..BUCKETS)
-            .map(|bucket| {
-                let start = Fence::bucket_start(bucket);
-                points.partition_point(|p| p.direction <= start) as u16
-            })
+        let first_past = Fence::before_edges(&points, true)[..BUCKETS]
+            .iter()
+            .map(|&n| n as u16)
             .collect();
-        let mut fence = Fence {
+        Fence {
             points,
             nearest,
             first_past,
-            short_in: Vec::new(),
-        };
-        fence.short_in = (0..BUCKETS)
-            .map(|bucket| {
-                // The wall is linear between points: its least distance over
-                // the slices is at their ends or at a point between.
-                let from = Fence::bucket_start(bucket.saturating_sub(1));
-                let to = Fence::bucket_start((bucket + 2).min(BUCKETS));
-                let inside = fence
-                    .points
+            short_in: std::sync::OnceLock::new(),
+        }
+    }
+
+    /// How many points lie before each slice edge (or at or before it,
+    /// `at_edge_too`): `partition_point` at every edge, by one walk.
+    fn before_edges(points: &[FencePoint], at_edge_too: bool) -> Vec<usize> {
+        let mut count = 0;
+        (0..=BUCKETS)
+            .map(|edge| {
+                let start = Fence::bucket_start(edge);
+                while count < points.len()
+                    && (points[count].direction < start
+                        || at_edge_too && points[count].direction == start)
+                {
+                    count += 1;
+                }
+                count
+            })
+            .collect()
+    }
+
+    /// [`Fence::short_in`]'s table.
+    fn short_table(&self) -> Vec<f64> {
+        let points = &self.points;
+        let (before, up_to) = (
+            Fence::before_edges(points, false),
+            Fence::before_edges(points, true),
+        );
+        // The wall at each slice's edge, between the points either side of
+        // it (as `reach` finds it, but for its rounding, which
+        // SHORT_MARGIN covers; at a jog on the edge both of its points are
+        // in the slices' nearest points below).
+        let edges: Vec<f64> = before
+            .iter()
+            .enumerate()
+            .map(|(edge, &count)| match count {
+                0 => points[0].distance,
+                n if n == points.len() => points[n - 1].distance,
+                n => {
+                    let (a, b) = (points[n - 1], points[n]);
+                    let slope = (b.distance - a.distance) / (b.direction - a.direction);
+                    a.distance + slope * (Fence::bucket_start(edge) - a.direction)
+                }
+            })
+            .collect();
+        // The wall is linear between points: its least distance over a
+        // stretch is at the stretch's ends or at a point inside. Each
+        // slice's nearest point, edges included (the points sorted by
+        // direction, those in a slice are a run):
+        let nearest_in: Vec<f64> = (0..BUCKETS)
+            .map(|slice| {
+                let (first, end) = (before[slice], up_to[slice + 1]);
+                points[first..end.max(first)]
                     .iter()
-                    .filter(|p| (from..=to).contains(&p.direction));
-                let least = inside
                     .map(|p| p.distance)
-                    .chain([fence.reach(from).0, fence.reach(to).0])
+                    .fold(f64::INFINITY, f64::min)
+            })
+            .collect();
+        (0..BUCKETS)
+            .map(|bucket| {
+                // This slice and those either side.
+                let (from_edge, to_edge) = (bucket.saturating_sub(1), (bucket + 2).min(BUCKETS));
+                let least = nearest_in[from_edge..to_edge]
+                    .iter()
+                    .copied()
+                    .chain([edges[from_edge], edges[to_edge]])
                     .fold(f64::INFINITY, f64::min);
                 least * (1.0 - SHORT_MARGIN)
             })
-            .collect();
-        fence
+            .collect()
     }
 
     /// The direction where slice `bucket` of [`Fence::first_past`] begins.
@@ -221,7 +280,8 @@ impl Fence {
         // The slice as [`Fence::segment`] finds it, or the one before (the
         // product rounds): each slice's figure covers its neighbours too.
         let slice = (fair + FOUL_LINE) * (BUCKETS as f64 / (2.0 * FOUL_LINE));
-        self.short_in[(slice as usize).min(BUCKETS - 1)]
+        let short_in = self.short_in.get_or_init(|| self.short_table());
+        short_in[(slice as usize).min(BUCKETS - 1)]
     }
 
     /// The wall's distance (m) in `direction` and its rate of change with
