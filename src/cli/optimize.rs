@@ -15,8 +15,8 @@ use crate::analysis::optimum::{OptimizerSettings, Optimum, Scan, Status, lands_a
 use crate::analysis::paper::{Best, best_swing};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study;
-use crate::model::keys::Key;
 use crate::model::keys::{AIR_KEYS, ATMOSPHERE_KEYS, LAUNCH_KEYS};
+use crate::model::keys::{InputError, Key};
 use crate::units::{Quantity, Unit};
 
 /// The most points a sweep takes: its work budget
@@ -258,12 +258,19 @@ fn sweep_end(
     flag: &'static str,
     text: &str,
     (key, unit): (&'static Key, Unit),
+    shown: Shown,
 ) -> Result<(f64, Option<f64>), UsageError> {
     if let Ok(value) = text.trim().parse::<f64>() {
         return Ok((value, None));
     }
     match key.read_with_unit(text, unit) {
         Ok(si) => Ok((unit.show(si), Some(si))),
+        Err(InputError::NotANumber { .. }) => Err(UsageError::SweepEndNotANumber {
+            flag,
+            text: super::usage::shown(text),
+            range: shown.bounds(key),
+            units: crate::units::accepted(key.quantity(), key.unit),
+        }),
         Err(error) => Err(UsageError::BadEnd { flag, error }),
     }
 }
@@ -287,8 +294,8 @@ pub(super) fn sweep(
     // --from and --to are in the units shown, and checked in them.
     let swept = Scene::key(key)?;
     let unit = swept.unit_in(shown.0);
-    let (from, from_si) = sweep_end("--from", from, (swept, unit))?;
-    let (to, to_si) = sweep_end("--to", to, (swept, unit))?;
+    let (from, from_si) = sweep_end("--from", from, (swept, unit), shown)?;
+    let (to, to_si) = sweep_end("--to", to, (swept, unit), shown)?;
     for (flag, value) in [("--from", from), ("--to", to)] {
         let outside = !unit.is_identity() && !swept.bounds.contains(unit.read(value));
         if !value.is_finite() || outside {

@@ -138,7 +138,7 @@ fn refusal(error: &clap::Error) -> String {
 }
 
 /// A value as given, escaped and cut; quoted unless it reads as a number.
-fn shown(value: &str) -> String {
+pub(super) fn shown(value: &str) -> String {
     let escaped = escape_for_terminal(value);
     if value.trim().parse::<f64>().is_ok() {
         escaped

@@ -33,6 +33,17 @@ pub enum UsageError {
         /// The key's range in the units the value was given in.
         accepted: String,
     },
+    /// A sweep's end that is no number, with or without a unit.
+    #[error(
+        "{flag} {text}: must be a number, in the swept key's range {range}, or one with a unit: {units}"
+    )]
+    SweepEndNotANumber {
+        flag: &'static str,
+        /// As typed, escaped, cut and quoted.
+        text: String,
+        range: String,
+        units: String,
+    },
     /// A sweep's end given with a unit (`--from 60mph`) that the key refuses.
     #[error("{flag}: {error}")]
     BadEnd {
