@@ -251,9 +251,10 @@ fn fly_group(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::analysis::precision::Purpose;
+    use crate::model::flight::FlightOptions;
     use crate::model::launch::BattedBall;
     use crate::model::scene::Scene;
+    use crate::numerics::ode::Tolerance;
 
     /// Fly balls and line drives (planar and with spray and sidespin, at
     /// the bundled parks' fences and a generic one): shown to the watch
@@ -289,17 +290,22 @@ mod tests {
             flights.push(SceneFlight::new(&scene, &scene.batted_ball()));
         }
         type Judged = Vec<Option<(FlightSummary, Vec<Option<Crossing>>)>>;
-        let judge = |shortcut: bool, purpose: Purpose| {
+        let judge = |shortcut: bool, tolerance: f64| {
             let mut judged: Judged = vec![None; flights.len()];
             let rows = flights.iter().map(|f| (*f, &fences[..]));
-            let options = purpose.flight_options();
+            let options = FlightOptions {
+                tolerance: Tolerance::uniform(tolerance),
+                stop_at_kinks: true,
+            };
             judge_many_shown(rows, &options, shortcut, |index, summary, crossings| {
                 judged[index] = Some((summary, crossings.to_vec()));
             });
             judged
         };
-        for purpose in [Purpose::Batch, Purpose::Readout] {
-            let (shown, every) = (judge(true, purpose), judge(false, purpose));
+        // The batch's tolerance and the readout's (analysis::precision's
+        // Purpose::Batch and Purpose::Readout, which model may not import).
+        for tolerance in [3e-9, 1e-10] {
+            let (shown, every) = (judge(true, tolerance), judge(false, tolerance));
             let mut crossed = 0;
             for (a, b) in shown.iter().zip(&every) {
                 let ((a, a_at), (b, b_at)) = (a.as_ref().unwrap(), b.as_ref().unwrap());
