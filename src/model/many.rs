@@ -10,12 +10,13 @@
 //! the first step its neighbours found. Results come in the order the
 //! flights finish, each with its index in the list.
 
+use super::aero::DragModel;
 use super::clearing::{Crossing, planar_reach, spatial_reach, watch_planar, watch_spatial};
 use super::flight::lanes::{LaneJob, LaneReports, fly_lanes};
 use super::flight::{FlightOptions, FlightSummary, Start};
 use super::launch::SceneFlight;
 use super::park::Fence;
-use crate::numerics::ode::lanes::LaneCode;
+use crate::numerics::ode::lanes::{FirstSteps, LaneCode};
 
 /// Flies every flight of `flights`, calling `done(index, summary)` for
 /// each as it finishes (`index` its place in `flights`).
@@ -36,6 +37,7 @@ pub fn fly_many_on(
     mut done: impl FnMut(usize, FlightSummary),
 ) {
     let flights: Vec<SceneFlight> = flights.into_iter().collect();
+    let code = (code, FirstSteps::FromNeighbours);
     for group in groups(&flights) {
         fly_group(code, &flights, &group, options, None, &[], &mut done);
     }
@@ -50,7 +52,32 @@ pub fn judge_many<'f>(
     options: &FlightOptions,
     done: impl FnMut(usize, FlightSummary, &[Option<Crossing>]),
 ) {
-    judge_many_shown(flights, options, true, done);
+    judge_many_shown(flights, options, (true, FirstSteps::FromNeighbours), done);
+}
+
+/// As [`judge_many`], each flight from its own first step (Hairer's guess,
+/// as a flight alone starts): where [`flies_alone_alike`] says so, each
+/// summary and crossing is bit for bit [`SceneFlight::fly_to_fences`]'s.
+pub fn judge_many_alone<'f>(
+    flights: impl IntoIterator<Item = (SceneFlight, &'f [&'f Fence])>,
+    options: &FlightOptions,
+    done: impl FnMut(usize, FlightSummary, &[Option<Crossing>]),
+) {
+    judge_many_shown(flights, options, (true, FirstSteps::Guessed), done);
+}
+
+/// Whether the lanes, from the flight's own first step
+/// ([`judge_many_alone`]), fly `flight` bit for bit as it flies alone: its
+/// forces take no exponential (the lanes' is `real::exp_lanes`, within a
+/// few ulp of libm's but not equal), so every operation of theirs is
+/// exactly rounded, and alike in both: not on the paper's drag crisis,
+/// nor with the spin decaying.
+pub fn flies_alone_alike(flight: &SceneFlight) -> bool {
+    let (drag, decays) = match flight {
+        SceneFlight::Planar { flight, .. } => (flight.drag, flight.spin_decay_rate != 0.0),
+        SceneFlight::Spatial { flight, .. } => (flight.drag, flight.spin_decay_rate != 0.0),
+    };
+    drag != DragModel::Sawicki2003 && !decays
 }
 
 /// [`judge_many`], its steps shown to the watch from where some wall may
@@ -59,7 +86,7 @@ pub fn judge_many<'f>(
 fn judge_many_shown<'f>(
     flights: impl IntoIterator<Item = (SceneFlight, &'f [&'f Fence])>,
     options: &FlightOptions,
-    shortcut: bool,
+    (shortcut, first_steps): (bool, FirstSteps),
     mut done: impl FnMut(usize, FlightSummary, &[Option<Crossing>]),
 ) {
     let (flights, fences): (Vec<SceneFlight>, Vec<&[&Fence]>) = flights.into_iter().unzip();
@@ -111,7 +138,7 @@ fn judge_many_shown<'f>(
             let all = crossings.borrow();
             done(index, summary, &all[offsets[index]..offsets[index + 1]]);
         };
-        let code = LaneCode::detected();
+        let code = (LaneCode::detected(), first_steps);
         fly_group(
             code,
             &flights,
@@ -178,7 +205,7 @@ fn groups(flights: &[SceneFlight]) -> Vec<Vec<usize>> {
 /// watch, if any, looks at flight k's steps from `watched_from[k]` metres
 /// from home plate on (and at any step with an event inside).
 fn fly_group(
-    code: LaneCode,
+    code: (LaneCode, FirstSteps),
     flights: &[SceneFlight],
     group: &[usize],
     options: &FlightOptions,
@@ -256,14 +283,33 @@ mod tests {
     use crate::model::scene::Scene;
     use crate::numerics::ode::Tolerance;
 
+    /// A batted ball of `scene`, its speed (m/s), angle (°) and backspin
+    /// (rad/s) drawn from the ranges given; with `spray`, its direction
+    /// and sidespin too.
+    fn batted(
+        scene: Scene,
+        spray: bool,
+        (speed, angle, spin): ((f64, f64), (f64, f64), (f64, f64)),
+        uniform: &mut impl FnMut() -> f64,
+    ) -> SceneFlight {
+        let mut between = |(low, high): (f64, f64)| low + (high - low) * uniform();
+        let scene = scene.with_launch(BattedBall {
+            speed: between(speed),
+            angle: between(angle).to_radians(),
+            spin: between(spin),
+            direction: if spray { between((-0.8, 0.8)) } else { 0.0 },
+            sidespin: if spray { between((-100.0, 100.0)) } else { 0.0 },
+        });
+        SceneFlight::new(&scene, &scene.batted_ball())
+    }
+
     /// Fly balls and line drives (planar and with spray and sidespin, at
     /// the bundled parks' fences and a generic one): shown to the watch
     /// only from where a wall may be near, every flight, every crossing and
     /// its summary are those of flights shown every step, to the bit.
     #[test]
     fn steps_left_unseen_change_no_bit_of_a_flight_or_a_crossing() {
-        let generic = Fence::uniform(121.92, 3.0);
-        let parks = crate::model::park::bundled();
+        let (generic, parks) = (Fence::uniform(121.92, 3.0), crate::model::park::bundled());
         let fences: Vec<&Fence> = std::iter::once(&generic)
             .chain(parks.iter().map(|p| &p.fence))
             .collect();
@@ -275,19 +321,8 @@ mod tests {
                 scene.set_text("model.drag", "nathan").unwrap();
                 scene.set_text("model.lift", "nathan").unwrap();
             }
-            let spray = i % 2 == 1;
-            let scene = scene.with_launch(BattedBall {
-                speed: 38.0 + 14.0 * uniform(),
-                angle: (5.0 + 45.0 * uniform()).to_radians(),
-                spin: 150.0 + 200.0 * uniform(),
-                direction: if spray { 1.6 * uniform() - 0.8 } else { 0.0 },
-                sidespin: if spray {
-                    200.0 * uniform() - 100.0
-                } else {
-                    0.0
-                },
-            });
-            flights.push(SceneFlight::new(&scene, &scene.batted_ball()));
+            let ranges = ((38.0, 52.0), (5.0, 50.0), (150.0, 350.0));
+            flights.push(batted(scene, i % 2 == 1, ranges, &mut uniform));
         }
         type Judged = Vec<Option<(FlightSummary, Vec<Option<Crossing>>)>>;
         let judge = |shortcut: bool, tolerance: f64| {
@@ -297,7 +332,8 @@ mod tests {
                 tolerance: Tolerance::uniform(tolerance),
                 stop_at_kinks: true,
             };
-            judge_many_shown(rows, &options, shortcut, |index, summary, crossings| {
+            let how = (shortcut, FirstSteps::FromNeighbours);
+            judge_many_shown(rows, &options, how, |index, summary, crossings| {
                 judged[index] = Some((summary, crossings.to_vec()));
             });
             judged
@@ -319,5 +355,62 @@ mod tests {
                 "{crossed}"
             );
         }
+    }
+
+    /// Batch-like rows (Nathan's drag and lift, planar and with spray and
+    /// sidespin, the spin decaying or not) at the readout's tolerance, at
+    /// the generic fence and the bundled parks' (31): in lock-step from
+    /// each flight's own first step, every summary and crossing of a flight
+    /// [`flies_alone_alike`] says so of is bit for bit that of the flight
+    /// alone; the spin's exponential (the lanes' own) moves the others.
+    #[test]
+    fn lanes_from_their_own_first_steps_fly_as_each_flight_alone() {
+        let (generic, parks) = (Fence::uniform(121.92, 3.0), crate::model::park::bundled());
+        let fences: Vec<&Fence> = std::iter::once(&generic)
+            .chain(parks.iter().map(|p| &p.fence))
+            .collect();
+        assert_eq!(fences.len(), 31);
+        let mut uniform = crate::numerics::xorshift::uniform(0x2545_f491_4f6c_dd1d);
+        let mut flights = Vec::new();
+        for i in 0..240 {
+            let mut scene = Scene::default();
+            scene.set_text("model.drag", "nathan").unwrap();
+            scene.set_text("model.lift", "nathan").unwrap();
+            if i % 3 == 2 {
+                scene.set_text("model.spin_decay", "30").unwrap();
+            }
+            let ranges = ((30.0, 54.0), (-5.0, 50.0), (20.0, 470.0));
+            flights.push(batted(scene, i % 2 == 1, ranges, &mut uniform));
+        }
+        // The readout's tolerance (Purpose::Readout, which model may not
+        // import).
+        let options = FlightOptions {
+            tolerance: Tolerance::uniform(1e-10),
+            stop_at_kinks: true,
+        };
+        let mut lanes: Vec<Option<(FlightSummary, Vec<Option<Crossing>>)>> =
+            vec![None; flights.len()];
+        let rows = flights.iter().map(|f| (*f, &fences[..]));
+        judge_many_alone(rows, &options, |index, summary, crossings| {
+            lanes[index] = Some((summary, crossings.to_vec()));
+        });
+        let (mut alike, mut crossed, mut moved) = (0, 0, 0);
+        for (flight, lanes) in flights.iter().zip(&lanes) {
+            let (in_lanes, lanes_at) = lanes.as_ref().unwrap();
+            let mut at = vec![None; fences.len()];
+            let alone = flight.fly_to_fences(&options, &fences, &mut at);
+            let same = format!("{alone:?}") == format!("{in_lanes:?}") && at == *lanes_at;
+            if flies_alone_alike(flight) {
+                assert!(same, "{alone:?}\n{in_lanes:?}");
+                alike += 1;
+                crossed += at.iter().flatten().count();
+            } else {
+                moved += usize::from(!same);
+            }
+        }
+        assert_eq!(alike, 160);
+        // Some balls cross some fences, not all.
+        assert!(crossed > 200 && crossed < 160 * 31 / 2, "{crossed}");
+        assert!(moved > 40, "{moved}");
     }
 }

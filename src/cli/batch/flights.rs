@@ -43,9 +43,11 @@ pub(super) struct RowFlight {
 pub(super) struct Scratch {
     /// Each row's crossings of its fences: its own, then each park's.
     crossings: Vec<Option<Crossing>>,
-    /// A row flown again: the places among its fences of those it is
-    /// judged at again, and its crossings of them.
-    watched: Vec<usize>,
+    /// The rows to fly again, the places among their verdicts of those
+    /// left undecided (each row's [`Again::undecided`]), and their
+    /// crossings of the fences they are judged at again.
+    again: Vec<Again>,
+    undecided: Vec<usize>,
     crossings_again: Vec<Option<Crossing>>,
     summaries: Vec<FlightSummary>,
     /// The row's judging: at its own fence, then at each park.
@@ -126,9 +128,9 @@ pub(super) struct Ready<'f> {
 }
 
 /// Flies `jobs` into `out`, in order (a reason where a row cannot fly), in
-/// three steps: each row made ready; every row flown once ([`fly_all`],
-/// where the lock-step engine for many flights plugs in); each judged,
-/// checked, and flown again at the readout's precision where unsettled.
+/// four steps: each row made ready; every row flown once ([`fly_all`],
+/// in lock-step); each judged and checked; the unsettled ones flown again
+/// together at the readout's precision ([`judge_again`]).
 pub(super) fn fly_chunk(
     jobs: &[Job],
     setup: &Setup,
@@ -179,8 +181,9 @@ pub(super) fn fly_chunk(
     let width = parks.len() + 1;
     let mut flown = 0;
     let mut fences: Vec<&park::Fence> = Vec::with_capacity(width);
-    let mut fences_again: Vec<&park::Fence> = Vec::with_capacity(width);
-    for (job, ready) in jobs.iter().zip(&ready) {
+    scratch.again.clear();
+    scratch.undecided.clear();
+    for (row, (job, ready)) in jobs.iter().zip(&ready).enumerate() {
         let ready = match ready {
             Ok(ready) => ready,
             Err(reason) => {
@@ -193,7 +196,7 @@ pub(super) fn fly_chunk(
         fences.extend_from_slice(parks);
         let own_air = setup.own_air.then_some((setup, job.given));
         let crossings = &scratch.crossings[flown * width..][..width];
-        let mut summary = scratch.summaries[flown];
+        let summary = scratch.summaries[flown];
         flown += 1;
         judge(
             ready,
@@ -211,12 +214,20 @@ pub(super) fn fly_chunk(
             printed,
             job,
         );
-        if purpose == Purpose::Batch && !settled.all {
-            scratch.refined += 1;
-            let again = (&fences[..], &mut fences_again);
-            summary = judge_again(ready, again, settled.own, own_air, scratch);
-        }
         let from = scratch.cleared.len();
+        if purpose == Purpose::Batch && !settled.all {
+            // Flown again below, with the piece's other such rows.
+            scratch.refined += 1;
+            let first = scratch.undecided.len();
+            let parks = scratch.judged.parks.iter().enumerate();
+            let undecided = parks.filter(|(_, v)| !v.decided).map(|(k, _)| k);
+            scratch.undecided.extend(undecided);
+            scratch.again.push(Again {
+                row,
+                own_settled: settled.own,
+                undecided: first..scratch.undecided.len(),
+            });
+        }
         let cleared = scratch.judged.parks.iter().map(|v| v.clears);
         scratch.cleared.extend(cleared);
         out.push(Ok(RowFlight {
@@ -228,6 +239,8 @@ pub(super) fn fly_chunk(
             flights: ready.flights,
         }));
     }
+    let own_air = setup.own_air.then_some(setup);
+    judge_again(jobs, &ready, (parks, own_air), scratch, out);
 }
 
 /// Flies each row once to the ground, noting where it crosses its own fence
@@ -364,53 +377,102 @@ fn own_air_verdict(
     Verdict::of(&park.fence, crossing[0], &flown, landing)
 }
 
-/// A row flown again at the readout's precision, as `fly` flies it, and
-/// judged again where the first flight left something unsettled: at its
-/// own fence unless `own_settled`, at each park whose verdict was not
-/// decided. What the first flight settled stands (the readout's flight
-/// prints and judges it alike), so only those fences watch the flight
-/// again: the watch never changes the flight itself. The flight's summary.
-fn judge_again<'f>(
-    ready: &Ready,
-    (fences, again): (&[&'f park::Fence], &mut Vec<&'f park::Fence>),
+/// A row to fly again at the readout's precision: its place in the piece,
+/// whether its own fence's outcome and margin were settled, and where in
+/// [`Scratch::undecided`] the places of its verdicts left undecided are.
+struct Again {
+    row: usize,
     own_settled: bool,
-    own_air: Option<(&Setup, GivenWeather)>,
+    undecided: std::ops::Range<usize>,
+}
+
+/// The rows the first flight left unsettled ([`Scratch::again`]) flown
+/// again at the readout's precision, as `fly` flies them, and judged again
+/// where the first flight left something unsettled: at its own fence unless
+/// it was settled, at each park whose verdict was not decided. What the
+/// first flight settled stands (the readout's flight prints and judges it
+/// alike), so only those fences watch the flight again: the watch never
+/// changes the flight itself. Rows whose lanes fly as they fly alone
+/// ([`many::flies_alone_alike`]) are flown in lock-step from their own
+/// first steps, the others alone: the same bits.
+fn judge_again(
+    jobs: &[Job],
+    ready: &[Result<Ready, String>],
+    (parks, own_air): (&[&park::Fence], Option<&Setup>),
     scratch: &mut Scratch,
-) -> FlightSummary {
+    out: &mut [Result<RowFlight, String>],
+) {
+    if scratch.again.is_empty() {
+        return;
+    }
     let readout = Purpose::Readout.flight_options();
-    let judged = &mut scratch.judged;
-    // Which of `fences` are watched: their places in it.
-    let watched = &mut scratch.watched;
-    watched.clear();
-    watched.extend((!own_settled).then_some(0));
-    let undecided = |k: &usize| !judged.parks[*k].decided;
-    watched.extend((0..fences.len() - 1).filter(undecided).map(|k| k + 1));
-    again.clear();
-    again.extend(watched.iter().map(|&k| fences[k]));
-    scratch.crossings_again.clear();
-    scratch.crossings_again.resize(again.len(), None);
-    let summary = ready
-        .flight
-        .fly_to_fences(&readout, again, &mut scratch.crossings_again);
-    let landing = Landing::of(&summary);
-    for (&k, crossing) in watched.iter().zip(&scratch.crossings_again) {
-        if k == 0 {
-            judged.own = Some(Clearing::judge_landed(
-                fences[0], *crossing, &summary, landing,
-            ));
-        } else {
-            judged.parks[k - 1] = Verdict::of(fences[k], *crossing, &summary, landing);
-        }
+    let ready_at = |row: usize| ready[row].as_ref().expect("a row flown is ready");
+    // Each row's fences to watch again, one after another.
+    let mut fences: Vec<&park::Fence> = Vec::new();
+    let mut offsets = Vec::with_capacity(scratch.again.len() + 1);
+    offsets.push(0);
+    for again in &scratch.again {
+        let own = ready_at(again.row).own;
+        fences.extend((!again.own_settled).then_some(own));
+        let undecided = &scratch.undecided[again.undecided.clone()];
+        fences.extend(undecided.iter().filter_map(|&k| parks.get(k).copied()));
+        offsets.push(fences.len());
     }
-    if let Some((setup, given)) = own_air {
-        let first = fences.len() - 1;
-        for (k, park) in setup.parks.parks.iter().enumerate() {
-            if !judged.parks[first + k].decided {
-                judged.parks[first + k] = own_air_verdict(ready, park, given, &readout);
-            }
-        }
+    let crossings = &mut scratch.crossings_again;
+    crossings.clear();
+    crossings.resize(fences.len(), None);
+    let mut summaries: Vec<Option<FlightSummary>> = vec![None; scratch.again.len()];
+    let (alike, alone): (Vec<usize>, Vec<usize>) = (0..scratch.again.len())
+        .partition(|&m| many::flies_alone_alike(&ready_at(scratch.again[m].row).flight));
+    let watched = |m: usize| &fences[offsets[m]..offsets[m + 1]];
+    many::judge_many_alone(
+        alike
+            .iter()
+            .map(|&m| (ready_at(scratch.again[m].row).flight, watched(m))),
+        &readout,
+        |index, summary, found| {
+            let m = alike[index];
+            summaries[m] = Some(summary);
+            crossings[offsets[m]..offsets[m + 1]].copy_from_slice(found);
+        },
+    );
+    for m in alone {
+        let flight = ready_at(scratch.again[m].row).flight;
+        let found = &mut crossings[offsets[m]..offsets[m + 1]];
+        summaries[m] = Some(flight.fly_to_fences(&readout, watched(m), found));
     }
-    summary
+    for (m, again) in scratch.again.iter().enumerate() {
+        let ready = ready_at(again.row);
+        let summary = summaries[m].expect("every row flown again");
+        let Ok(flown) = &mut out[again.row] else {
+            continue;
+        };
+        let landing = Landing::of(&summary);
+        let mut found = crossings[offsets[m]..offsets[m + 1]].iter().copied();
+        if !again.own_settled {
+            let crossing = found.next().expect("watched");
+            flown.clearing = Clearing::judge_landed(ready.own, crossing, &summary, landing);
+        }
+        let verdicts = parks.len() + own_air.map_or(0, |setup| setup.parks.parks.len());
+        let cleared = &mut scratch.cleared[flown.cleared_from..][..verdicts];
+        for &k in &scratch.undecided[again.undecided.clone()] {
+            let verdict = match parks.get(k) {
+                Some(fence) => {
+                    Verdict::of(fence, found.next().expect("watched"), &summary, landing)
+                }
+                // With --own-air, in that park's air (the piece's parks
+                // are then none).
+                None => {
+                    let Some(setup) = own_air else { continue };
+                    let park = &setup.parks.parks[k - parks.len()];
+                    own_air_verdict(ready, park, jobs[again.row].given, &readout)
+                }
+            };
+            cleared[k] = verdict.clears;
+        }
+        flown.parks_cleared = cleared.iter().filter(|&&c| c).count();
+        flown.flight = summary;
+    }
 }
 
 /// Whether the row prints, and judges, exactly what the readout's flight

@@ -9,7 +9,8 @@ use super::{PlanarConstants, SpatialConstants};
 use crate::model::aero::{DragCurve, LiftCurve, WithModels};
 use crate::model::clearing::{planar_reach_at, spatial_reach_at};
 use crate::numerics::ode::lanes::{
-    LANES, LaneCode, LaneProblems, LaneReal, LaneStart, LaneSystem, Lanes, integrate_lanes,
+    FirstSteps, LANES, LaneCode, LaneProblems, LaneReal, LaneStart, LaneSystem, Lanes,
+    integrate_lanes,
 };
 use crate::numerics::ode::{Control, Outcome, Settings, State, Stats, Step};
 
@@ -371,9 +372,10 @@ where
 /// models of the first (the caller groups them so), reporting to
 /// `reports`: each as [`super::fly`] would fly it alone, to its tolerance.
 /// On `code`'s instructions where the CPU has them (the same results on
-/// any).
+/// any). Each flight starts from its neighbour's first step, or with
+/// [`FirstSteps::Guessed`] from its own, as a flight alone does.
 pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
-    code: LaneCode,
+    (code, first_steps): (LaneCode, FirstSteps),
     jobs: impl Iterator<Item = LaneJob<N, D>>,
     options: &FlightOptions,
     reports: LaneReports<'_, N>,
@@ -385,6 +387,7 @@ pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
     let (drag, lift) = (first.flight.drag(), first.flight.lift());
     let run = Run {
         code,
+        first_steps,
         jobs,
         options: *options,
         reports,
@@ -396,6 +399,7 @@ pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
 /// [`fly_lanes`] once the models are known.
 struct Run<'r, const N: usize, D, J> {
     code: LaneCode,
+    first_steps: FirstSteps,
     jobs: J,
     options: FlightOptions,
     reports: LaneReports<'r, N>,
@@ -418,7 +422,7 @@ where
             flight: std::marker::PhantomData,
         };
         let settings = Settings::new(self.options.tolerance);
-        integrate_lanes(self.code, problems, &settings);
+        integrate_lanes(self.code, problems, &settings, self.first_steps);
     }
 }
 

@@ -170,6 +170,21 @@ struct Carried<const N: usize, V> {
     needs_first_step: [bool; LANES],
     /// The last first step a problem found: its neighbours' to try.
     neighbour_step: Option<f64>,
+    first_steps: FirstSteps,
+}
+
+/// How a lane's problem picks its first step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FirstSteps {
+    /// The step its neighbour's controller chose after its first (saves
+    /// Hairer's guess, and usually a rejection); Hairer's guess until a
+    /// neighbour has one.
+    FromNeighbours,
+    /// Hairer's guess for each problem alone, with the single integrator's
+    /// scalar code: its first step, so its whole step sequence, is
+    /// [`super::integrate`]'s without [`Settings::initial_step`], bit for
+    /// bit where the right-hand sides agree bit for bit.
+    Guessed,
 }
 
 /// Sets one lane of a vector.
@@ -200,8 +215,8 @@ impl<const N: usize, V: LaneReal> Carried<N, V> {
         set(&mut self.previous_log2_error, j, LOG2_ERROR_FLOOR);
         self.fresh[j] = true;
         match self.neighbour_step {
-            Some(h) => set(&mut self.h, j, h),
-            None => self.needs_first_step[j] = true,
+            Some(h) if self.first_steps == FirstSteps::FromNeighbours => set(&mut self.h, j, h),
+            _ => self.needs_first_step[j] = true,
         }
     }
 
@@ -297,24 +312,29 @@ pub trait LaneProblems<const N: usize> {
 
 /// Integrates the problems, four at a time, until there are no more: each
 /// as [`super::integrate`] would, with `settings` for all (its
-/// `initial_step`, if given, for the first four). Never allocates. On
-/// `code`'s instructions, or the baseline's where the CPU lacks them.
+/// `initial_step`, if given, for the first four, unless `first_steps` is
+/// [`FirstSteps::Guessed`]). Never allocates. On `code`'s instructions, or
+/// the baseline's where the CPU lacks them.
 pub fn integrate_lanes<const N: usize, P: LaneProblems<N>>(
     code: LaneCode,
     problems: P,
     settings: &Settings,
+    first_steps: FirstSteps,
 ) {
     #[cfg(target_arch = "x86_64")]
     if code == LaneCode::Avx2 && code.runs_here() {
         // SAFETY: the CPU runs AVX2.
-        unsafe { integrate_lanes_avx2(problems, settings) };
+        unsafe { integrate_lanes_avx2(problems, settings, first_steps) };
         return;
     }
     let _ = code;
     let mut system = problems.system::<Lane>();
-    integrate_lanes_body(&mut system, settings, |s: &P::System<Lane>, t, y| {
-        s.derivative(t, y)
-    });
+    integrate_lanes_body(
+        &mut system,
+        settings,
+        first_steps,
+        |s: &P::System<Lane>, t, y| s.derivative(t, y),
+    );
 }
 
 /// The loop on `Avx2Lane` (`real/avx2.rs`), compiled for AVX2: every
@@ -324,12 +344,19 @@ pub fn integrate_lanes<const N: usize, P: LaneProblems<N>>(
 /// caller).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn integrate_lanes_avx2<const N: usize, P: LaneProblems<N>>(problems: P, settings: &Settings) {
+fn integrate_lanes_avx2<const N: usize, P: LaneProblems<N>>(
+    problems: P,
+    settings: &Settings,
+    first_steps: FirstSteps,
+) {
     use super::super::real::Avx2Lane;
     let mut system = problems.system::<Avx2Lane>();
-    integrate_lanes_body(&mut system, settings, |s: &P::System<Avx2Lane>, t, y| {
-        s.derivative(t, y)
-    });
+    integrate_lanes_body(
+        &mut system,
+        settings,
+        first_steps,
+        |s: &P::System<Avx2Lane>, t, y| s.derivative(t, y),
+    );
 }
 
 /// The loop, inlined into each of its entries.
@@ -337,6 +364,7 @@ fn integrate_lanes_avx2<const N: usize, P: LaneProblems<N>>(problems: P, setting
 fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
     system: &mut S,
     settings: &Settings,
+    first_steps: FirstSteps,
     derivative: impl Derivative<N, V, S>,
 ) {
     let tol = settings.tolerance;
@@ -351,6 +379,7 @@ fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
         fresh: [false; LANES],
         needs_first_step: [false; LANES],
         neighbour_step: settings.initial_step.filter(|&h| h > 0.0),
+        first_steps,
     };
     for j in 0..LANES {
         c.refill(system, j);
