@@ -303,16 +303,21 @@ mod tests {
         SceneFlight::new(&scene, &scene.batted_ball())
     }
 
+    /// A generic fence and the 30 bundled parks': the 31 a batch row meets.
+    fn with_parks(generic: &Fence) -> Vec<&Fence> {
+        std::iter::once(generic)
+            .chain(crate::model::park::bundled().iter().map(|p| &p.fence))
+            .collect()
+    }
+
     /// Fly balls and line drives (planar and with spray and sidespin, at
     /// the bundled parks' fences and a generic one): shown to the watch
     /// only from where a wall may be near, every flight, every crossing and
     /// its summary are those of flights shown every step, to the bit.
     #[test]
     fn steps_left_unseen_change_no_bit_of_a_flight_or_a_crossing() {
-        let (generic, parks) = (Fence::uniform(121.92, 3.0), crate::model::park::bundled());
-        let fences: Vec<&Fence> = std::iter::once(&generic)
-            .chain(parks.iter().map(|p| &p.fence))
-            .collect();
+        let generic = Fence::uniform(121.92, 3.0);
+        let fences = with_parks(&generic);
         let mut uniform = crate::numerics::xorshift::uniform(0x9e37_79b9_7f4a_7c15);
         let mut flights = Vec::new();
         for i in 0..160 {
@@ -365,10 +370,8 @@ mod tests {
     /// alone; the spin's exponential (the lanes' own) moves the others.
     #[test]
     fn lanes_from_their_own_first_steps_fly_as_each_flight_alone() {
-        let (generic, parks) = (Fence::uniform(121.92, 3.0), crate::model::park::bundled());
-        let fences: Vec<&Fence> = std::iter::once(&generic)
-            .chain(parks.iter().map(|p| &p.fence))
-            .collect();
+        let generic = Fence::uniform(121.92, 3.0);
+        let fences = with_parks(&generic);
         assert_eq!(fences.len(), 31);
         let mut uniform = crate::numerics::xorshift::uniform(0x2545_f491_4f6c_dd1d);
         let mut flights = Vec::new();

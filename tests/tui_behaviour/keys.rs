@@ -43,59 +43,53 @@ fn a_nudge_out_of_range_is_refused_with_the_reason() {
     assert!(error && message.contains("bat.friction"), "{message}");
 }
 
+/// Enter, the shown value erased, `text` typed, Enter.
+fn retype(app: &mut homerun::tui::app::App, text: &str) {
+    key(app, KeyCode::Enter);
+    for _ in 0..12 {
+        key(app, KeyCode::Backspace);
+    }
+    typed(app, text);
+    key(app, KeyCode::Enter);
+}
+
+/// The reason a typed value was refused, the editor still open.
+fn edit_error(app: &homerun::tui::app::App) -> &str {
+    match &app.mode {
+        Mode::Edit {
+            error: Some(error), ..
+        } => error,
+        other => panic!("still editing with an error, not {other:?}"),
+    }
+}
+
 #[test]
 fn typed_values_are_parsed_validated_and_kept_or_refused() {
     let mut app = app(80, 24, None);
     select(&mut app, "bat.speed");
-    key(&mut app, KeyCode::Enter);
-    for _ in 0..4 {
-        key(&mut app, KeyCode::Backspace);
-    }
-    typed(&mut app, "fast");
-    key(&mut app, KeyCode::Enter);
-    match &app.mode {
-        Mode::Edit {
-            error: Some(error), ..
-        } => assert!(error.contains("not a number"), "{error}"),
-        other => panic!("still editing with an error, not {other:?}"),
-    }
+    retype(&mut app, "fast");
+    let error = edit_error(&app);
+    assert!(error.contains("not a number"), "{error}");
     assert_eq!(app.scene.bat.speed, 30.0);
     key(&mut app, KeyCode::Esc);
     assert!(matches!(app.mode, Mode::Normal));
     assert_eq!(app.scene.bat.speed, 30.0);
-    key(&mut app, KeyCode::Enter);
-    for _ in 0..4 {
-        key(&mut app, KeyCode::Backspace);
-    }
-    typed(&mut app, "35");
-    key(&mut app, KeyCode::Enter);
+    retype(&mut app, "35");
     assert!(matches!(app.mode, Mode::Normal));
     assert_eq!(app.scene.bat.speed, 35.0);
     // A unit may be typed with the number, as --set takes it: 70 mph is
     // 31.2928 m/s to the last bit; a unit of another quantity is refused,
     // saying what a bare number is here (mph once the explorer shows mph).
-    let retype = |app: &mut homerun::tui::app::App, text: &str| {
-        key(app, KeyCode::Enter);
-        for _ in 0..12 {
-            key(app, KeyCode::Backspace);
-        }
-        typed(app, text);
-        key(app, KeyCode::Enter);
-    };
     retype(&mut app, "70mph");
     assert!(matches!(app.mode, Mode::Normal));
     assert_eq!(app.scene.bat.speed, 70.0 * 0.44704);
     key(&mut app, KeyCode::Char('u'));
     retype(&mut app, "28deg");
-    match &app.mode {
-        Mode::Edit {
-            error: Some(error), ..
-        } => assert!(
-            error.contains("deg measures an angle") && error.contains("a bare number is mph"),
-            "{error}"
-        ),
-        other => panic!("still editing with an error, not {other:?}"),
-    }
+    let error = edit_error(&app);
+    assert!(
+        error.contains("deg measures an angle") && error.contains("a bare number is mph"),
+        "{error}"
+    );
     assert_eq!(app.scene.bat.speed, 70.0 * 0.44704);
 }
 

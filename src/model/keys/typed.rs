@@ -13,39 +13,34 @@ impl Key {
     pub fn read(&self, text: &str) -> Result<f64, InputError> {
         read_typed((self.name, self.quantity(), self.unit, self.bounds), text)
     }
-}
 
-impl Key {
     /// [`Key::read`] where a bare number means the unit `shown` (the
     /// explorer's inputs, a sweep's ends), for text that is not a bare
     /// number: a value with a unit (`103mph`), read and bounded as `--set`
     /// reads it, its refusal saying what a bare number is here.
     pub fn read_with_unit(&self, text: &str, shown: Unit) -> Result<f64, InputError> {
-        match self.read(text) {
-            Err(InputError::WrongUnit {
-                key,
-                text,
-                why,
-                accepted,
-            }) if !shown.is_identity() => Err(InputError::WrongUnit {
-                key,
-                text,
-                why,
-                accepted: accepted.replace(
-                    &format!("(a bare number is {})", self.unit),
-                    &format!("(a bare number is {}, as shown)", shown.symbol),
-                ),
-            }),
-            read => read,
+        let spec = (self.name, self.quantity(), self.unit, self.bounds);
+        if shown.is_identity() {
+            return read_typed(spec, text);
         }
+        read_typed_where(spec, text, &format!("{}, as shown", shown.symbol))
     }
 }
 
 /// [`Key::read`] for any input named `name`, of `quantity` (its SI unit
 /// `unit`), accepted in `bounds` (the fence's keys too).
 pub fn read_typed(
+    spec: (&'static str, Quantity, &'static str, Bounds),
+    text: &str,
+) -> Result<f64, InputError> {
+    read_typed_where(spec, text, spec.2)
+}
+
+/// [`read_typed`] where a bare number is in `bare` (its refusals say so).
+fn read_typed_where(
     (name, quantity, unit, bounds): (&'static str, Quantity, &'static str, Bounds),
     text: &str,
+    bare: &str,
 ) -> Result<f64, InputError> {
     // Made only for an error: an input read well costs no allocation.
     let shown = || typed_text(text);
@@ -70,13 +65,13 @@ pub fn read_typed(
                     quantity.noun()
                 ),
             },
-            accepted: accepted_units(quantity, unit),
+            accepted: accepted_units(quantity, unit, bare),
         },
         TypedError::UnknownUnit { unit: typed } => InputError::WrongUnit {
             key: name,
             text: shown(),
             why: format!("unknown unit `{}`", typed_text(&typed)),
-            accepted: accepted_units(quantity, unit),
+            accepted: accepted_units(quantity, unit, bare),
         },
     })?;
     if bounds.contains(reading.si) {
@@ -114,11 +109,12 @@ pub fn read_typed(
 }
 
 /// The units an input is typed in, for an error: "m/s, km/h, mph, ft/s
-/// (a bare number is m/s)", or that it takes a plain number.
-fn accepted_units(quantity: Quantity, unit: &str) -> String {
+/// (a bare number is m/s)" (`bare`, the unit a bare number is in there),
+/// or that it takes a plain number.
+fn accepted_units(quantity: Quantity, unit: &str, bare: &str) -> String {
     match units::accepted(quantity, unit).as_str() {
         "" => "a plain number".to_owned(),
-        listed => format!("{listed} (a bare number is {unit})"),
+        listed => format!("{listed} (a bare number is {bare})"),
     }
 }
 
