@@ -255,3 +255,27 @@ fn a_bad_park_or_key_to_hold_is_one_line_naming_it_and_what_is_accepted() {
         }
     }
 }
+
+#[test]
+fn a_swing_that_cannot_clear_says_how_far_below_the_wall_and_outside_the_line() {
+    // A 5 m/s bat cannot send the fastball out: the best swing found has a
+    // negative margin, and the text names each side by its sign rather
+    // than printing "-14.68 m inside the foul line".
+    let v = json(&["optimize", "--json", "--park", "BOS", "--set", "bat.speed=5"]);
+    let (over, inside) = (number(&v, "over_wall"), number(&v, "inside_line"));
+    assert!(number(&v, "margin") < 0.0, "{v}");
+    let out = homerun(&["optimize", "--park", "BOS", "--set", "bat.speed=5"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let wall = if over < 0.0 {
+        format!("{:.2} m below the wall's top", -over)
+    } else {
+        format!("{over:.2} m over the wall")
+    };
+    let line = if inside < 0.0 {
+        format!("{:.2} m outside the foul line", -inside)
+    } else {
+        format!("{inside:.2} m inside the foul line")
+    };
+    let margin = text.lines().find(|l| l.starts_with("margin")).unwrap();
+    assert_eq!(margin, format!("margin   {:.2} m: {wall}, {line}", number(&v, "margin")));
+}

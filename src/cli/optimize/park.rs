@@ -127,11 +127,23 @@ pub(in crate::cli) fn park_optimum(
             } else {
                 ""
             };
+            // Each side in words that keep its sign readable: a swing that
+            // cannot clear says "below the wall's top", "outside the line".
+            let wall = if m.over_wall >= 0.0 {
+                "over the wall"
+            } else {
+                "below the wall's top"
+            };
+            let line = if m.inside_line >= 0.0 {
+                "inside the foul line"
+            } else {
+                "outside the foul line"
+            };
             format!(
-                "{}: {} over the wall{short}, {} inside the foul line",
+                "{}: {} {wall}{short}, {} {line}",
                 d(m.value()),
-                d(m.over_wall),
-                d(m.inside_line)
+                d(m.over_wall.abs()),
+                d(m.inside_line.abs())
             )
         }
         None => "none: it neither lands nor reaches the fence".to_owned(),
