@@ -261,7 +261,14 @@ fn a_swing_that_cannot_clear_says_how_far_below_the_wall_and_outside_the_line() 
     // A 5 m/s bat cannot send the fastball out: the best swing found has a
     // negative margin, and the text names each side by its sign rather
     // than printing "-14.68 m inside the foul line".
-    let v = json(&["optimize", "--json", "--park", "BOS", "--set", "bat.speed=5"]);
+    let v = json(&[
+        "optimize",
+        "--json",
+        "--park",
+        "BOS",
+        "--set",
+        "bat.speed=5",
+    ]);
     let (over, inside) = (number(&v, "over_wall"), number(&v, "inside_line"));
     assert!(number(&v, "margin") < 0.0, "{v}");
     let out = homerun(&["optimize", "--park", "BOS", "--set", "bat.speed=5"]);
@@ -277,5 +284,8 @@ fn a_swing_that_cannot_clear_says_how_far_below_the_wall_and_outside_the_line() 
         format!("{inside:.2} m inside the foul line")
     };
     let margin = text.lines().find(|l| l.starts_with("margin")).unwrap();
-    assert_eq!(margin, format!("margin   {:.2} m: {wall}, {line}", number(&v, "margin")));
+    assert_eq!(
+        margin,
+        format!("margin   {:.2} m: {wall}, {line}", number(&v, "margin"))
+    );
 }

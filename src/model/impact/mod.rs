@@ -14,7 +14,7 @@ mod slip;
 mod spatial;
 
 pub use geometry::{BatFrame, ContactFrame};
-pub use planar::{ContactState, Impact};
+pub use planar::{ContactState, Impact, ImpactAngles, NormalAngles, PitchAngles};
 pub use spatial::{Contact3d, Impact3d, SlipPoint};
 
 use crate::model::scene::Scene;

@@ -78,19 +78,91 @@ pub struct Impact {
     pub after: ContactState,
 }
 
+/// The parts of an impact that take trigonometry, each from fewer inputs
+/// than the whole: the pitch's (Eq. 3–4), the undercut's (Eq. 1) and the
+/// swing's direction. A surface holds the pitch over every cell, the
+/// undercut down a column and the swing angle along a row, so it works each
+/// out once there ([`Impact::with_angles`]), not once a cell (a sixth of a
+/// cell's work outside its flight).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ImpactAngles {
+    pub pitch: PitchAngles,
+    pub normal: NormalAngles,
+    /// The bat's velocity before contact (flight frame, m/s).
+    pub bat_velocity_before: Vector2<f64>,
+}
+
+/// γ and the pitched ball's velocity at the plate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PitchAngles {
+    pub descent_angle: f64,
+    pub ball_velocity_before: Vector2<f64>,
+}
+
+/// θ and the rotation from the impact frame to the flight frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NormalAngles {
+    pub normal_angle: f64,
+    pub frame: Rotation2<f64>,
+}
+
+impl ImpactAngles {
+    pub fn of(scene: &Scene) -> ImpactAngles {
+        ImpactAngles {
+            pitch: PitchAngles::of(scene),
+            normal: NormalAngles::of(scene),
+            bat_velocity_before: ImpactAngles::bat_velocity(scene),
+        }
+    }
+
+    /// The bat's velocity before contact: its speed along ψ.
+    pub fn bat_velocity(scene: &Scene) -> Vector2<f64> {
+        let bat = scene.bat;
+        Vector2::new(bat.swing_angle.cos(), bat.swing_angle.sin()) * bat.speed
+    }
+}
+
+impl PitchAngles {
+    pub fn of(scene: &Scene) -> PitchAngles {
+        let descent_angle = pitch::descent_angle(scene.pitch.speed, scene.environment.gravity);
+        PitchAngles {
+            descent_angle,
+            ball_velocity_before: pitch::velocity_descending(scene.pitch.speed, descent_angle),
+        }
+    }
+}
+
+impl NormalAngles {
+    pub fn of(scene: &Scene) -> NormalAngles {
+        // Eq. (1); the clamp only guards rounding at a validated |E| < r_b + r_B.
+        let normal_angle = (scene.bat.undercut / scene.reach()).clamp(-1.0, 1.0).asin();
+        NormalAngles {
+            normal_angle,
+            frame: Rotation2::new(normal_angle),
+        }
+    }
+}
+
 impl Impact {
     /// Solves the collision for a scene (assumed validated).
     pub fn new(scene: &Scene) -> Impact {
+        Impact::with_angles(scene, ImpactAngles::of(scene))
+    }
+
+    /// [`Impact::new`], given the scene's angles (`ImpactAngles::of(scene)`,
+    /// perhaps worked out in parts for many scenes): the same bits.
+    pub fn with_angles(scene: &Scene, angles: ImpactAngles) -> Impact {
         let ball = scene.ball;
         let bat = scene.bat;
-        let contact_distance = scene.reach();
-        // Eq. (1); the clamp only guards rounding at a validated |E| < r_b + r_B.
-        let normal_angle = (bat.undercut / contact_distance).clamp(-1.0, 1.0).asin();
-        let descent_angle = pitch::descent_angle(scene.pitch.speed, scene.environment.gravity);
-        let frame = Rotation2::new(normal_angle);
-        let ball_velocity_before = pitch::velocity_descending(scene.pitch.speed, descent_angle);
-        let bat_velocity_before =
-            Vector2::new(bat.swing_angle.cos(), bat.swing_angle.sin()) * bat.speed;
+        let PitchAngles {
+            descent_angle,
+            ball_velocity_before,
+        } = angles.pitch;
+        let NormalAngles {
+            normal_angle,
+            frame,
+        } = angles.normal;
+        let bat_velocity_before = angles.bat_velocity_before;
         let ball_spin_before = scene.pitch.spin;
         // Fig. 9's positive roll is −ẑ (see Scene::bat.spin).
         let bat_spin_before = -bat.spin;
