@@ -4,6 +4,9 @@
 //! still checks every bundled park as it checks a user's park file
 //! (`model::park::parse`), and a test holds the statics equal to a parse of
 //! the file itself, so the file stays the one source.
+//!
+//! Where the binary is linked statically, it is also linked at a fixed
+//! address ([`link_at_a_fixed_address`]).
 
 use std::fmt::Write as _;
 
