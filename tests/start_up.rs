@@ -2,8 +2,8 @@
 //! (`.cargo/config.toml` turns on `crt-static` for Linux), the binary is
 //! also linked at a fixed address (build.rs), so that no start runs the
 //! dynamic loader or relocates the binary (0.4 ms of the 0.9 that
-//! `homerun --version` took). A change of build flags that loses either fails here, not only in
-//! the timings.
+//! `homerun --version` took). A change of build flags that loses either
+//! fails here, not only in the timings.
 
 /// Read from the ELF file's header and program headers (64-bit and little
 /// endian, as every target this runs on is).
