@@ -14,7 +14,10 @@ import os
 import subprocess
 import tempfile
 
-BINARY = "target/release/homerun"
+# The release binary, under the host's target (.cargo/config.toml names it).
+HOST = subprocess.run(["rustc", "--print", "host-tuple"], capture_output=True, text=True,
+                      check=True).stdout.strip()
+BINARY = f"target/{HOST}/release/homerun"
 
 
 def runnable(command):

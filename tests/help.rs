@@ -4,7 +4,7 @@
 //! never run together.
 
 use assert_cmd::Command;
-use clap::CommandFactory as _;
+use clap::{CommandFactory as _, FromArgMatches as _, Parser as _};
 use homerun::cli::{Cli, Parsed, UNITS_HELP, parse};
 use unicode_width::UnicodeWidthStr as _;
 
@@ -209,5 +209,77 @@ fn the_keys_columns_never_run_together() {
                 .collect();
             assert_eq!(fields.len(), 2, "{units}: {fields:?} in\n{line}");
         }
+    }
+}
+
+/// A command's texts that its variant sets (none of them may come from a
+/// struct it flattens).
+fn command_texts(command: &clap::Command) -> [Option<String>; 6] {
+    [
+        command.get_about(),
+        command.get_long_about(),
+        command.get_before_help(),
+        command.get_before_long_help(),
+        command.get_after_help(),
+        command.get_after_long_help(),
+    ]
+    .map(|text| text.map(ToString::to_string))
+}
+
+/// The commands are built lazily (`Command`'s `#[command(defer = true)]`):
+/// `homerun hit --help` builds `hit` alone, after the global arguments are
+/// added. Each command must read as it does in the whole tree built at once,
+/// with the texts its variant gives (building may not replace its about, as
+/// a flattened struct's doc comment would), and refuse as the whole does.
+#[test]
+fn a_command_built_alone_is_the_command_built_whole() {
+    let unbuilt = Cli::command();
+    let mut whole = Cli::command();
+    whole.build();
+    let mut asked: Vec<Vec<&str>> = vec![
+        vec!["--help"],
+        vec!["-h"],
+        vec!["--nope"],
+        vec!["flyy"],
+        vec!["help", "nosuch"],
+        vec!["keys", "--units", "furlongs"],
+        vec!["fly", "--keep", "a"],
+        vec!["fly", "--spray", "sideways", "--batch", "x.csv"],
+        vec!["fly", "--all-parks", "--batch", "x.csv"],
+        vec!["surface", "--json", "--csv"],
+        vec!["surface", "--grid"],
+        vec!["trajectory", "--samples", "x"],
+        vec!["figure", "x"],
+        vec!["sweep", "bat.speed"],
+        vec!["parks", "--svg", "f.svg"],
+        vec!["tui", "--theme", "purple"],
+        vec!["keys", "extra"],
+    ];
+    let names: Vec<&str> = unbuilt.get_subcommands().map(|c| c.get_name()).collect();
+    assert_eq!(names.len(), 14, "{names:?}");
+    for command in unbuilt.get_subcommands() {
+        let name = command.get_name();
+        let built = whole.find_subcommand(name).unwrap();
+        assert_eq!(command_texts(command), command_texts(built), "{name}");
+        // Its help opens with its about, as `homerun --help` lists it.
+        let about = command.get_about().map(ToString::to_string);
+        let short = help(&[name, "-h"]);
+        assert_eq!(short.lines().next(), about.as_deref(), "{name}");
+        for flag in ["--help", "-h", "--nope", "--units"] {
+            asked.push(vec![name, flag]);
+        }
+        asked.push(vec!["help", name]);
+    }
+    // Clap's own answer (help, or the error our one line is made of).
+    for args in asked {
+        let args: Vec<&str> = std::iter::once("homerun").chain(args).collect();
+        let lazily = Cli::try_parse_from(&args).unwrap_err();
+        let wholly = whole
+            .clone()
+            .try_get_matches_from(&args)
+            .and_then(|matches| Cli::from_arg_matches(&matches))
+            .unwrap_err();
+        assert_eq!(lazily.kind(), wholly.kind(), "{args:?}");
+        assert_eq!(lazily.to_string(), wholly.to_string(), "{args:?}");
     }
 }

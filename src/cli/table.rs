@@ -106,6 +106,10 @@ fn shown_width(text: &str) -> usize {
     unicode_width::UnicodeWidthStr::width(text)
 }
 
+/// Rows of CSV written as one piece (in parallel, piece by piece, when
+/// there are more).
+const CSV_PIECE: usize = 256;
+
 /// Rows of cells under columns: one cell per column, in order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Table {
@@ -224,8 +228,13 @@ impl Table {
             }
             text
         };
+        // One piece is written here: the first parallel call starts
+        // rayon's threads, which cost a short table more than its rows.
+        if self.rows.len() <= CSV_PIECE {
+            return out + &piece(&self.rows);
+        }
         use rayon::prelude::*;
-        let pieces: Vec<String> = self.rows.par_chunks(256).map(piece).collect();
+        let pieces: Vec<String> = self.rows.par_chunks(CSV_PIECE).map(piece).collect();
         for text in pieces {
             out.push_str(&text);
         }

@@ -186,11 +186,14 @@ fn accepted(flag: &str) -> Option<String> {
 /// a usage line ("homerun hit [OPTIONS]").
 fn arguments_of(usage: &str) -> Option<String> {
     let name = usage.split_whitespace().nth(1)?;
-    let cli = Cli::command();
+    // Built whole: a command's own arguments are added when it is built.
+    let mut cli = Cli::command();
+    cli.build();
     let command = cli.find_subcommand(name)?;
+    // Its own, in their order; the global ones and help are named below.
     let mut names: Vec<String> = command
         .get_arguments()
-        .filter(|a| !a.is_hide_set())
+        .filter(|a| !a.is_hide_set() && !a.is_global_set() && a.get_id() != "help")
         .map(|a| match a.get_long() {
             Some(long) => format!("--{long}"),
             None => format!("<{}>", a.get_id().as_str().to_uppercase()),
