@@ -57,9 +57,12 @@ pub struct Regime {
 }
 
 /// The piece of a drag curve with `kinks` that a ball at Reynolds number
-/// `re` is on, or about to enter: at a kink, the one Re is moving into.
-pub(crate) fn piece_entered(kinks: &[f64], re: f64, rising: bool) -> usize {
-    if rising {
+/// `re` is on, or about to enter: at a kink, the one Re is moving into
+/// (`rising` says whether it moves up; asked only there).
+pub(crate) fn piece_entered(kinks: &[f64], re: f64, rising: impl FnOnce() -> bool) -> usize {
+    // Which way Re moves (an acceleration, so an exponential on the drag
+    // crisis) matters only on a kink itself.
+    if kinks.contains(&re) && rising() {
         kinks.iter().filter(|&&k| re >= k).count()
     } else {
         kinks.iter().filter(|&&k| re > k).count()

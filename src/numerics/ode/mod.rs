@@ -19,7 +19,7 @@ pub mod stages;
 mod tableau;
 
 use controller::{LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth};
-pub use dense::{DenseStep, Step};
+pub use dense::{BuildDense, DenseStep, Step, dense_builder};
 pub use fixed::integrate_fixed;
 use stages::{dense_c5, error_squared, inverse_scales, stages};
 
@@ -181,7 +181,9 @@ where
             previous_log2_error = log2_error.max(LOG2_ERROR_FLOOR);
             last_rejected = false;
             let k7 = s.k[5];
-            let build = || DenseStep::new(t, h, (y, s.y1), (&k1, &k7), dense_c5(&k1, &s, h));
+            let build = dense_builder(|out| {
+                &*out.write(DenseStep::new(t, h, (y, s.y1), (&k1, &k7), dense_c5(&k1, &s, h)))
+            });
             let t1 = t + h;
             let step = Step::new((t, t1), (y, s.y1), &build);
             let control = observe(&step);
