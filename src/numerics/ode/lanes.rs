@@ -41,7 +41,7 @@ impl<const N: usize, V: LaneReal> Lanes<N, V> {
     /// Lane `j`'s state.
     #[inline(always)]
     pub fn lane(&self, j: usize) -> State<N> {
-        State::<N>::from_fn(|i, _| self.0[i].to_array()[j])
+        State::<N>::from_fn(|i, _| self.0[i].get(j))
     }
 
     /// Sets lane `j` to `state`.
@@ -528,7 +528,7 @@ fn lane_dense<const N: usize, V: LaneReal>(
 ) -> DenseStep<N> {
     let k1 = k1.lane(j);
     let lane = Stages {
-        k: s.k.map(|k| k.lane(j)),
+        k: std::array::from_fn(|m| s.k[m].lane(j)),
         y1: *y1,
     };
     let c5 = dense_c5(&k1, &lane, h);
