@@ -77,7 +77,8 @@ impl<const N: usize> DenseStep<N> {
     pub fn component_at(&self, t: f64, i: usize) -> (f64, f64) {
         let s = (t - self.t0) * self.inverse_h;
         let s1 = 1.0 - s;
-        let [diff, c3, c4, c5] = self.coefficients.map(|c| c[i]);
+        // Read in place (a map copied each coefficient's state out first).
+        let [diff, c3, c4, c5]: [f64; 4] = std::array::from_fn(|k| self.coefficients[k][i]);
         let q = c3 + (c4 + c5 * s1) * s;
         let dq = c4 + c5 * (s1 - s);
         let p = diff + q * s1;
