@@ -393,6 +393,19 @@ mod tests {
     use nalgebra::Vector2;
 
     #[test]
+    fn the_piece_entered_at_a_kink_is_the_one_re_moves_into() {
+        let kinks = [1.0e5, 1.5e5, 2.0e5];
+        // Off a kink the direction is not asked (it costs an acceleration).
+        let unasked = || -> bool { panic!("asked which way Re moves off a kink") };
+        assert_eq!(piece_entered(&kinks, 0.5e5, unasked), 0);
+        assert_eq!(piece_entered(&kinks, 1.2e5, unasked), 1);
+        assert_eq!(piece_entered(&kinks, 2.5e5, unasked), 3);
+        // On one, the piece above if Re rises, below if it falls.
+        assert_eq!(piece_entered(&kinks, 1.5e5, || true), 2);
+        assert_eq!(piece_entered(&kinks, 1.5e5, || false), 1);
+    }
+
+    #[test]
     fn the_time_limit_is_ten_vacuum_flights_straight_up() {
         // 45 m/s from 1 m at g = 9.81: (45 + √(45² + 2·9.81·1))/9.81 = 9.196 s.
         let launch = Launch {

@@ -481,9 +481,8 @@ fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
             let (t0j, hj) = (t0.to_array()[j], h_all[j]);
             let y0j = y0.lane(j);
             let y1j = s.y1.lane(j);
-            let build = dense_builder(|out| {
-                &*out.write(lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s))
-            });
+            let build =
+                dense_builder(|out| &*out.write(lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s)));
             let step = Step::new((t0j, t1_all[j]), (y0j, y1j), &build);
             let control = system.observe(j, &step);
             match control {
