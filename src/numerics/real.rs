@@ -315,6 +315,9 @@ lanes_real!(f64x8, wide::u64x8);
 pub trait LaneReal: Real + std::fmt::Debug {
     fn from_array(lanes: [f64; LANES]) -> Self;
     fn to_array(self) -> [f64; LANES];
+    /// Lane `j`, read in place (one load; a whole vector copied out to be
+    /// indexed took four instructions).
+    fn get(&self, j: usize) -> f64;
     /// Sets lane `j` to `x`, in place (a whole vector written back would
     /// wait for the one lane's store to land).
     fn set(&mut self, j: usize, x: f64);
@@ -340,6 +343,10 @@ impl LaneReal for f64x4 {
     #[inline(always)]
     fn to_array(self) -> [f64; LANES] {
         f64x4::to_array(self)
+    }
+    #[inline(always)]
+    fn get(&self, j: usize) -> f64 {
+        self.as_array()[j]
     }
     #[inline(always)]
     fn set(&mut self, j: usize, x: f64) {

@@ -23,6 +23,9 @@ pub trait LaneFlight<const N: usize>: Dynamics<N> {
 
     fn constants_of(&self) -> Self::Constants;
     fn gather<V: LaneReal>(each: &[Self::Constants; LANES]) -> Self::LaneConstants<V>;
+    /// Sets lane `j` of `lanes` to `one` (a refill's: the other lanes
+    /// left as they are, not gathered again).
+    fn set_lane<V: LaneReal>(lanes: &mut Self::LaneConstants<V>, j: usize, one: &Self::Constants);
 
     /// y' of four flights at once: C_D by `drag` on each lane's piece
     /// (`pieces`, or the piece its Re is on if `None`), C_L by `lift`, in
@@ -100,6 +103,18 @@ impl LaneFlight<4> for Flight {
         }
     }
 
+    fn set_lane<V: LaneReal>(lanes: &mut Self::LaneConstants<V>, j: usize, one: &Self::Constants) {
+        lanes.gravity.set(j, one.gravity);
+        lanes.wind.set(j, one.wind);
+        lanes.force_per_mass.set(j, one.force_per_mass);
+        lanes.reynolds_per_speed.set(j, one.reynolds_per_speed);
+        lanes.surface_speed.set(j, one.surface_speed);
+        lanes.spin_rate.set(j, one.spin_rate);
+        lanes.spin_decay_rate.set(j, one.spin_decay_rate);
+        lanes.spin_sign.set(j, one.spin_sign);
+        lanes.drag_scale.set(j, one.drag_scale);
+    }
+
     #[inline(always)]
     fn derivative_lanes<V: LaneReal>(
         c: &Self::LaneConstants<V>,
@@ -159,6 +174,20 @@ impl LaneFlight<6> for Flight3d {
             surface_speed: lanes_of(each, |c| c.surface_speed),
             spin_decay_rate: lanes_of(each, |c| c.spin_decay_rate),
         }
+    }
+
+    fn set_lane<V: LaneReal>(lanes: &mut Self::LaneConstants<V>, j: usize, one: &Self::Constants) {
+        lanes.gravity.set(j, one.gravity);
+        for i in 0..3 {
+            lanes.wind[i].set(j, one.wind[i]);
+            lanes.spin_axis[i].set(j, one.spin_axis[i]);
+        }
+        lanes.force_per_mass.set(j, one.force_per_mass);
+        lanes.reynolds_per_speed.set(j, one.reynolds_per_speed);
+        lanes.drag_scale.set(j, one.drag_scale);
+        lanes.spin_rate.set(j, one.spin_rate);
+        lanes.surface_speed.set(j, one.surface_speed);
+        lanes.spin_decay_rate.set(j, one.spin_decay_rate);
     }
 
     #[inline(always)]
@@ -225,7 +254,6 @@ struct FlightLanes<'r, const N: usize, V: LaneReal, D: LaneFlight<N>, Dr, L, J> 
     /// Whether the lanes switch drag pieces at the kinks (else each
     /// evaluation takes the piece its Re is on).
     switching: bool,
-    each: [D::Constants; LANES],
     constants: D::LaneConstants<V>,
     /// Each lane's regime: its drag piece (a float) and whether it is in
     /// the wind (a lane mask), and what the regime bounds.
@@ -358,8 +386,7 @@ where
         self.events[lane] = Some(events);
         self.index[lane] = job.index;
         self.watched_from.set(lane, job.watched_from);
-        self.each[lane] = job.flight.constants_of();
-        self.constants = D::gather(&self.each);
+        D::set_lane(&mut self.constants, lane, &job.flight.constants_of());
         Some(LaneStart {
             t0: 0.0,
             y0: job.start,
@@ -453,7 +480,6 @@ where
             switching: self.stop_at_kinks && !drag.kinks().is_empty(),
             models: self.models,
             stop_at_kinks: self.stop_at_kinks,
-            each: [D::Constants::default(); LANES],
             constants: D::gather(&[D::Constants::default(); LANES]),
             pieces: V::splat(0.0),
             in_wind: V::mask_of(none),

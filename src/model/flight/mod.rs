@@ -57,9 +57,12 @@ pub struct Regime {
 }
 
 /// The piece of a drag curve with `kinks` that a ball at Reynolds number
-/// `re` is on, or about to enter: at a kink, the one Re is moving into.
-pub(crate) fn piece_entered(kinks: &[f64], re: f64, rising: bool) -> usize {
-    if rising {
+/// `re` is on, or about to enter: at a kink, the one Re is moving into
+/// (`rising` says whether it moves up; asked only there).
+pub(crate) fn piece_entered(kinks: &[f64], re: f64, rising: impl FnOnce() -> bool) -> usize {
+    // Which way Re moves (an acceleration, so an exponential on the drag
+    // crisis) matters only on a kink itself.
+    if kinks.contains(&re) && rising() {
         kinks.iter().filter(|&&k| re >= k).count()
     } else {
         kinks.iter().filter(|&&k| re > k).count()
@@ -388,6 +391,19 @@ mod tests {
     use super::*;
     use crate::model::scene::Scene;
     use nalgebra::Vector2;
+
+    #[test]
+    fn the_piece_entered_at_a_kink_is_the_one_re_moves_into() {
+        let kinks = [1.0e5, 1.5e5, 2.0e5];
+        // Off a kink the direction is not asked (it costs an acceleration).
+        let unasked = || -> bool { panic!("asked which way Re moves off a kink") };
+        assert_eq!(piece_entered(&kinks, 0.5e5, unasked), 0);
+        assert_eq!(piece_entered(&kinks, 1.2e5, unasked), 1);
+        assert_eq!(piece_entered(&kinks, 2.5e5, unasked), 3);
+        // On one, the piece above if Re rises, below if it falls.
+        assert_eq!(piece_entered(&kinks, 1.5e5, || true), 2);
+        assert_eq!(piece_entered(&kinks, 1.5e5, || false), 1);
+    }
 
     #[test]
     fn the_time_limit_is_ten_vacuum_flights_straight_up() {

@@ -297,7 +297,7 @@ impl Flight {
         let rel = self.relative_wind(velocity);
         let re = rel.norm() * self.reynolds_per_speed;
         // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters.
-        let rising = -rel.dot(&self.acceleration(velocity)) >= 0.0;
+        let rising = || -rel.dot(&self.acceleration(velocity)) >= 0.0;
         super::piece_entered(self.drag.kinks(), re, rising)
     }
 }

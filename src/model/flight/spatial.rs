@@ -298,7 +298,7 @@ impl Dynamics<6> for Flight3d {
             in_wind,
         };
         // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters (as the plane's).
-        let rising = -rel.dot(&self.acceleration_at(0.0, velocity(state), regime)) >= 0.0;
+        let rising = || -rel.dot(&self.acceleration_at(0.0, velocity(state), regime)) >= 0.0;
         super::piece_entered(self.drag.kinks(), re, rising)
     }
 

@@ -4,21 +4,21 @@
 //! them), and the extension's coefficients are six combinations of the
 //! stages that those steps need not pay for.
 
-use std::cell::OnceCell;
+use std::cell::{Cell, UnsafeCell};
+use std::mem::MaybeUninit;
 
 use super::State;
 
-/// One accepted step and its continuous extension (4th order, Shampine's).
+/// One accepted step's continuous extension (4th order, Shampine's): the
+/// polynomial alone, its step's ends being the [`Step`]'s.
 #[derive(Clone, Copy, Debug)]
 pub struct DenseStep<const N: usize> {
-    pub t0: f64,
-    pub t1: f64,
-    pub y0: State<N>,
-    pub y1: State<N>,
+    t0: f64,
+    y0: State<N>,
     /// 1/h, h being the step size the extension was built on (t1 − t0
-    /// unless truncated): `at` and `slope_at` multiply by it, as the event
-    /// roots call them in a dependent chain where a division would be the
-    /// slowest link.
+    /// unless its step was cut short): `at` and `slope_at` multiply by it,
+    /// as the event roots call them in a dependent chain where a division
+    /// would be the slowest link.
     inverse_h: f64,
     coefficients: [State<N>; 4],
 }
@@ -27,7 +27,7 @@ impl<const N: usize> DenseStep<N> {
     /// The step from (t0, y0) over `h` to y1, with slopes `k_start` and
     /// `k_end` at its ends: a cubic Hermite extension, raised to Shampine's
     /// quartic by `c5` (zero for the plain cubic).
-    #[inline]
+    #[inline(always)]
     pub(super) fn new(
         t0: f64,
         h: f64,
@@ -40,9 +40,7 @@ impl<const N: usize> DenseStep<N> {
         let c4 = diff - k_end * h - c3;
         DenseStep {
             t0,
-            t1: t0 + h,
             y0,
-            y1,
             inverse_h: 1.0 / h,
             coefficients: [diff, c3, c4, c5],
         }
@@ -79,21 +77,13 @@ impl<const N: usize> DenseStep<N> {
     pub fn component_at(&self, t: f64, i: usize) -> (f64, f64) {
         let s = (t - self.t0) * self.inverse_h;
         let s1 = 1.0 - s;
-        let [diff, c3, c4, c5] = self.coefficients.map(|c| c[i]);
+        // Read in place (a map copied each coefficient's state out first).
+        let [diff, c3, c4, c5]: [f64; 4] = std::array::from_fn(|k| self.coefficients[k][i]);
         let q = c3 + (c4 + c5 * s1) * s;
         let dq = c4 + c5 * (s1 - s);
         let p = diff + q * s1;
         let dp = dq * s1 - q;
         (self.y0[i] + p * s, (p + dp * s) * self.inverse_h)
-    }
-
-    /// The same step, ending at `t` (t0 < t ≤ t1) instead.
-    pub fn truncated(&self, t: f64) -> DenseStep<N> {
-        DenseStep {
-            t1: t,
-            y1: self.at(t),
-            ..*self
-        }
     }
 }
 
@@ -105,10 +95,36 @@ pub struct Step<'a, const N: usize> {
     pub t1: f64,
     pub y0: State<N>,
     pub y1: State<N>,
-    dense: OnceCell<DenseStep<N>>,
-    /// Builds the extension from the integrator's stages (`None` when it
-    /// is built already).
-    build: Option<&'a dyn Fn() -> DenseStep<N>>,
+    /// Where the extension comes from.
+    source: Source<'a, N>,
+    /// The extension [`Source::Build`] made, once `is_built`: written in
+    /// place (a `OnceCell` moved its 200 bytes twice on the way in).
+    built: UnsafeCell<MaybeUninit<DenseStep<N>>>,
+    is_built: Cell<bool>,
+}
+
+/// Writes a step's extension into the place given, and lends it back (the
+/// builder writes it in place: returned by value, it was copied on its way).
+pub type BuildDense<'a, const N: usize> =
+    dyn Fn(&mut MaybeUninit<DenseStep<N>>) -> &DenseStep<N> + 'a;
+
+/// `build`, as a [`BuildDense`] (a closure's signature is inferred with the
+/// lent extension's lifetime unrelated to its place's).
+#[inline(always)]
+pub fn dense_builder<const N: usize, F>(build: F) -> F
+where
+    F: Fn(&mut MaybeUninit<DenseStep<N>>) -> &DenseStep<N>,
+{
+    build
+}
+
+/// Where a [`Step`]'s extension comes from.
+#[derive(Clone, Copy)]
+enum Source<'a, const N: usize> {
+    /// Built from the integrator's stages on first use.
+    Build(&'a BuildDense<'a, N>),
+    /// Another's: the step this one was cut from, or one given.
+    Borrowed(&'a DenseStep<N>),
 }
 
 impl<'a, const N: usize> Step<'a, N> {
@@ -117,37 +133,55 @@ impl<'a, const N: usize> Step<'a, N> {
     pub fn new(
         (t0, t1): (f64, f64),
         (y0, y1): (State<N>, State<N>),
-        build: &'a dyn Fn() -> DenseStep<N>,
+        build: &'a BuildDense<'a, N>,
     ) -> Self {
         Step {
             t0,
             t1,
             y0,
             y1,
-            dense: OnceCell::new(),
-            build: Some(build),
+            source: Source::Build(build),
+            built: UnsafeCell::new(MaybeUninit::uninit()),
+            is_built: Cell::new(false),
         }
     }
 
-    /// The step whose extension is `dense`.
-    pub fn of_dense(dense: DenseStep<N>) -> Step<'static, N> {
+    /// The step from `t0` to `t1` whose extension is `dense`.
+    pub fn of_dense(
+        (t0, t1): (f64, f64),
+        (y0, y1): (State<N>, State<N>),
+        dense: &'a DenseStep<N>,
+    ) -> Self {
         Step {
-            t0: dense.t0,
-            t1: dense.t1,
-            y0: dense.y0,
-            y1: dense.y1,
-            dense: OnceCell::from(dense),
-            build: None,
+            t0,
+            t1,
+            y0,
+            y1,
+            source: Source::Borrowed(dense),
+            built: UnsafeCell::new(MaybeUninit::uninit()),
+            is_built: Cell::new(false),
         }
     }
 
     /// The continuous extension, built now if not yet.
     #[inline]
     pub fn dense(&self) -> &DenseStep<N> {
-        self.dense.get_or_init(|| match self.build {
-            Some(build) => build(),
-            None => unreachable!("a step without its builder is built"),
-        })
+        match self.source {
+            Source::Borrowed(dense) => dense,
+            // SAFETY: `is_built` is set only once `built` is written, and
+            // `built` is not written again.
+            Source::Build(_) if self.is_built.get() => unsafe {
+                (*self.built.get()).assume_init_ref()
+            },
+            Source::Build(build) => {
+                // SAFETY: nothing borrows `built` before it is written (it is
+                // lent out only once `is_built`), and a `Step` is not `Sync`
+                // (its `Cell`), so no other thread writes it meanwhile.
+                let dense = build(unsafe { &mut *self.built.get() });
+                self.is_built.set(true);
+                dense
+            }
+        }
     }
 
     /// The solution at `t` in [t0, t1].
@@ -162,9 +196,12 @@ impl<'a, const N: usize> Step<'a, N> {
         self.dense().slope_at(t)
     }
 
-    /// The same step, ending at `t` (t0 < t ≤ t1) instead.
-    pub fn truncated(&self, t: f64) -> Step<'static, N> {
-        Step::of_dense(self.dense().truncated(t))
+    /// The same step, ending at `t` (t0 < t ≤ t1) instead: its extension
+    /// is this step's, borrowed, not copied.
+    #[inline]
+    pub fn truncated(&self, t: f64) -> Step<'_, N> {
+        let dense = self.dense();
+        Step::of_dense((self.t0, t), (self.y0, dense.at(t)), dense)
     }
 
     /// Where to go on from, if the observer's `control` asks for a restart

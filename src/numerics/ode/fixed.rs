@@ -39,13 +39,8 @@ where
         let k_end = f(t + h, &y1);
         stats.evaluations += 4;
         stats.accepted += 1;
-        let dense = Step::of_dense(DenseStep::new(
-            t,
-            h,
-            (y, y1),
-            (&k1, &k_end),
-            State::<N>::zeros(),
-        ));
+        let extension = DenseStep::new(t, h, (y, y1), (&k1, &k_end), State::<N>::zeros());
+        let dense = Step::of_dense((t, t + h), (y, y1), &extension);
         let control = observe(&dense);
         if matches!(control, Control::Stop) {
             return (Outcome::Stopped, stats);

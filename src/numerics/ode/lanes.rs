@@ -22,7 +22,7 @@ use super::controller::{
     LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth,
 };
 use super::stages::{Stages, Vector, dense_c5, error_squared, inverse_scales, stages_into};
-use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, too_small};
+use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, dense_builder, too_small};
 
 pub use super::super::real::{LANES, Lane, LaneReal};
 
@@ -41,7 +41,7 @@ impl<const N: usize, V: LaneReal> Lanes<N, V> {
     /// Lane `j`'s state.
     #[inline(always)]
     pub fn lane(&self, j: usize) -> State<N> {
-        State::<N>::from_fn(|i, _| self.0[i].to_array()[j])
+        State::<N>::from_fn(|i, _| self.0[i].get(j))
     }
 
     /// Sets lane `j` to `state`.
@@ -481,7 +481,8 @@ fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
             let (t0j, hj) = (t0.to_array()[j], h_all[j]);
             let y0j = y0.lane(j);
             let y1j = s.y1.lane(j);
-            let build = || lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s);
+            let build =
+                dense_builder(|out| &*out.write(lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s)));
             let step = Step::new((t0j, t1_all[j]), (y0j, y1j), &build);
             let control = system.observe(j, &step);
             match control {
@@ -515,6 +516,7 @@ impl<const N: usize, V: LaneReal> Carried<N, V> {
 }
 
 /// Lane `j`'s continuous extension over its step from (t0, y0) to y1.
+#[inline(always)]
 fn lane_dense<const N: usize, V: LaneReal>(
     j: usize,
     t0: f64,
@@ -525,7 +527,7 @@ fn lane_dense<const N: usize, V: LaneReal>(
 ) -> DenseStep<N> {
     let k1 = k1.lane(j);
     let lane = Stages {
-        k: s.k.map(|k| k.lane(j)),
+        k: std::array::from_fn(|m| s.k[m].lane(j)),
         y1: *y1,
     };
     let c5 = dense_c5(&k1, &lane, h);

@@ -19,7 +19,7 @@ pub mod stages;
 mod tableau;
 
 use controller::{LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth};
-pub use dense::{DenseStep, Step};
+pub use dense::{BuildDense, DenseStep, Step, dense_builder};
 pub use fixed::integrate_fixed;
 use stages::{dense_c5, error_squared, inverse_scales, stages};
 
@@ -181,7 +181,15 @@ where
             previous_log2_error = log2_error.max(LOG2_ERROR_FLOOR);
             last_rejected = false;
             let k7 = s.k[5];
-            let build = || DenseStep::new(t, h, (y, s.y1), (&k1, &k7), dense_c5(&k1, &s, h));
+            let build = dense_builder(|out| {
+                &*out.write(DenseStep::new(
+                    t,
+                    h,
+                    (y, s.y1),
+                    (&k1, &k7),
+                    dense_c5(&k1, &s, h),
+                ))
+            });
             let t1 = t + h;
             let step = Step::new((t, t1), (y, s.y1), &build);
             let control = observe(&step);
@@ -262,6 +270,36 @@ mod tests {
         };
         let ratio = error(0.02) / error(0.01);
         assert!((ratio - 16.0).abs() < 1.0, "{ratio}");
+    }
+
+    #[test]
+    fn a_step_builds_its_extension_once_and_a_cut_step_borrows_it() {
+        let builds = std::cell::Cell::new(0);
+        let (y0, y1) = (State::<2>::new(1.0, 0.0), State::<2>::new(0.995, -0.0998));
+        let (k0, k1) = (State::<2>::new(0.0, -1.0), State::<2>::new(-0.0998, -0.995));
+        let build = dense_builder(|out| {
+            builds.set(builds.get() + 1);
+            &*out.write(DenseStep::new(
+                0.0,
+                0.1,
+                (y0, y1),
+                (&k0, &k1),
+                State::zeros(),
+            ))
+        });
+        let step = Step::new((0.0, 0.1), (y0, y1), &build);
+        // Its ends need no extension.
+        assert_eq!((step.y0, step.y1, builds.get()), (y0, y1, 0));
+        let middle = step.at(0.05);
+        let cut = step.truncated(0.05);
+        assert_eq!((cut.t0, cut.t1, cut.y0, cut.y1), (0.0, 0.05, y0, middle));
+        // The cut step reads the same polynomial, to the bit.
+        assert_eq!(cut.at(0.02), step.at(0.02));
+        assert_eq!(cut.slope_at(0.03), step.slope_at(0.03));
+        assert_eq!(builds.get(), 1);
+        // A cubic Hermite through the ends with their slopes.
+        assert!((step.slope_at(0.0) - k0).norm() < 1e-14);
+        assert!((step.slope_at(0.1) - k1).norm() < 1e-12);
     }
 
     #[test]

@@ -180,6 +180,12 @@ impl LaneReal for Avx2Lane {
         unsafe { std::mem::transmute::<__m256d, [f64; LANES]>(self.0) }
     }
     #[inline(always)]
+    fn get(&self, j: usize) -> f64 {
+        // SAFETY: the type is one __m256d, laid out as four f64.
+        let lanes = unsafe { &*(self as *const Self).cast::<[f64; LANES]>() };
+        lanes[j]
+    }
+    #[inline(always)]
     fn set(&mut self, j: usize, x: f64) {
         // SAFETY: the type is one __m256d, laid out as four f64.
         let lanes = unsafe { &mut *(self as *mut Self).cast::<[f64; LANES]>() };
