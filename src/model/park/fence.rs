@@ -2,6 +2,7 @@
 //! from home plate and its height, by direction (DESIGN.md, "Parks").
 
 use std::f64::consts::FRAC_PI_4;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The foul lines' directions: ±π/4 from the centre-field line.
 pub const FOUL_LINE: f64 = FRAC_PI_4;
@@ -45,12 +46,29 @@ pub struct Fence {
     /// this table's one multiply and a step or two forward).
     first_past: Vec<u16>,
     /// For each slice, a distance short of the wall anywhere in it and in
-    /// the slices either side ([`Fence::surely_short`]): built the first
-    /// time a flight comes that far, since every command loads the 30
-    /// parks and most flights never reach a wall (building all 30 tables
-    /// cost each `fly` ~0.1 ms).
-    short_in: std::sync::OnceLock<Vec<f64>>,
+    /// the slices either side ([`Fence::surely_short`]), as f64 bits: each
+    /// slice worked out the first time a flight asks for it ([`UNKNOWN`]
+    /// till then), since every command loads the 30 parks and one flight
+    /// asks for a slice or two of each (building whole tables cost each
+    /// `fly` ~0.16 ms of its ~1 ms).
+    short_in: ShortSlices,
 }
+
+/// [`Fence::short_in`]: one figure a slice, each set once.
+#[derive(Debug)]
+struct ShortSlices(Box<[AtomicU64]>);
+
+/// A clone keeps the slices worked out so far.
+impl Clone for ShortSlices {
+    fn clone(&self) -> ShortSlices {
+        let bits = |slice: &AtomicU64| AtomicU64::new(slice.load(Ordering::Relaxed));
+        ShortSlices(self.0.iter().map(bits).collect())
+    }
+}
+
+/// A slice of [`Fence::short_in`] not worked out yet: NaN's bits, which no
+/// distance has.
+const UNKNOWN: u64 = u64::MAX;
 
 /// Fences are equal when their walls are: the tables follow from them.
 impl PartialEq for Fence {
@@ -184,7 +202,7 @@ impl Fence {
             points,
             nearest,
             first_past,
-            short_in: std::sync::OnceLock::new(),
+            short_in: ShortSlices((0..BUCKETS).map(|_| AtomicU64::new(UNKNOWN)).collect()),
         }
     }
 
@@ -206,55 +224,43 @@ impl Fence {
             .collect()
     }
 
-    /// [`Fence::short_in`]'s table.
-    fn short_table(&self) -> Vec<f64> {
+    /// [`Fence::short_in`]'s figure for slice `bucket`: the wall's least
+    /// distance over it and the slices either side, a margin short.
+    fn short_of_slice(&self, bucket: usize) -> f64 {
         let points = &self.points;
-        let (before, up_to) = (
-            Fence::before_edges(points, false),
-            Fence::before_edges(points, true),
-        );
-        // The wall at each slice's edge, between the points either side of
-        // it (as `reach` finds it, but for its rounding, which
-        // SHORT_MARGIN covers; at a jog on the edge both of its points are
-        // in the slices' nearest points below).
-        let edges: Vec<f64> = before
+        // The points before an edge, or at or before it.
+        let before = |edge: usize| {
+            let start = Fence::bucket_start(edge);
+            points.partition_point(|p| p.direction < start)
+        };
+        let up_to = |edge: usize| {
+            let start = Fence::bucket_start(edge);
+            points.partition_point(|p| p.direction <= start)
+        };
+        // The wall at an edge, between the points either side of it (as
+        // `reach` finds it, but for its rounding, which SHORT_MARGIN
+        // covers; at a jog on the edge both of its points are among the
+        // slices' points below).
+        let edge_wall = |edge: usize| match before(edge) {
+            0 => points[0].distance,
+            n if n == points.len() => points[n - 1].distance,
+            n => {
+                let (a, b) = (points[n - 1], points[n]);
+                let slope = (b.distance - a.distance) / (b.direction - a.direction);
+                a.distance + slope * (Fence::bucket_start(edge) - a.direction)
+            }
+        };
+        // This slice and those either side, edges included: the wall is
+        // linear between points, so its least distance over the stretch is
+        // at its ends or at a point inside (sorted by direction, a run).
+        let (from_edge, to_edge) = (bucket.saturating_sub(1), (bucket + 2).min(BUCKETS));
+        let (first, end) = (before(from_edge), up_to(to_edge));
+        let least = points[first..end.max(first)]
             .iter()
-            .enumerate()
-            .map(|(edge, &count)| match count {
-                0 => points[0].distance,
-                n if n == points.len() => points[n - 1].distance,
-                n => {
-                    let (a, b) = (points[n - 1], points[n]);
-                    let slope = (b.distance - a.distance) / (b.direction - a.direction);
-                    a.distance + slope * (Fence::bucket_start(edge) - a.direction)
-                }
-            })
-            .collect();
-        // The wall is linear between points: its least distance over a
-        // stretch is at the stretch's ends or at a point inside. Each
-        // slice's nearest point, edges included (the points sorted by
-        // direction, those in a slice are a run):
-        let nearest_in: Vec<f64> = (0..BUCKETS)
-            .map(|slice| {
-                let (first, end) = (before[slice], up_to[slice + 1]);
-                points[first..end.max(first)]
-                    .iter()
-                    .map(|p| p.distance)
-                    .fold(f64::INFINITY, f64::min)
-            })
-            .collect();
-        (0..BUCKETS)
-            .map(|bucket| {
-                // This slice and those either side.
-                let (from_edge, to_edge) = (bucket.saturating_sub(1), (bucket + 2).min(BUCKETS));
-                let least = nearest_in[from_edge..to_edge]
-                    .iter()
-                    .copied()
-                    .chain([edges[from_edge], edges[to_edge]])
-                    .fold(f64::INFINITY, f64::min);
-                least * (1.0 - SHORT_MARGIN)
-            })
-            .collect()
+            .map(|p| p.distance)
+            .chain([edge_wall(from_edge), edge_wall(to_edge)])
+            .fold(f64::INFINITY, f64::min);
+        least * (1.0 - SHORT_MARGIN)
     }
 
     /// The direction where slice `bucket` of [`Fence::first_past`] begins.
@@ -280,8 +286,17 @@ impl Fence {
         // The slice as [`Fence::segment`] finds it, or the one before (the
         // product rounds): each slice's figure covers its neighbours too.
         let slice = (fair + FOUL_LINE) * (BUCKETS as f64 / (2.0 * FOUL_LINE));
-        let short_in = self.short_in.get_or_init(|| self.short_table());
-        short_in[(slice as usize).min(BUCKETS - 1)]
+        let bucket = (slice as usize).min(BUCKETS - 1);
+        // Two threads may both work a slice out: they store the same bits.
+        let slot = &self.short_in.0[bucket];
+        match slot.load(Ordering::Relaxed) {
+            UNKNOWN => {
+                let short = self.short_of_slice(bucket);
+                slot.store(short.to_bits(), Ordering::Relaxed);
+                short
+            }
+            bits => f64::from_bits(bits),
+        }
     }
 
     /// The wall's distance (m) in `direction` and its rate of change with
