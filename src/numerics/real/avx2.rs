@@ -9,7 +9,7 @@
 //! compiled with `#[target_feature(enable = "avx2")]`; everything here is
 //! `#[inline(always)]` into it. A closure or function left out of line
 //! would call each instruction as a function (6× slower, measured): `objdump
-//! -d target/release/homerun | grep -c 'call.*core_arch::x86::avx'` must
+//! -d target/*/release/homerun | grep -c 'call.*core_arch::x86::avx'` must
 //! print 0.
 
 use std::arch::x86_64::*;
