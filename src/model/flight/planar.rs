@@ -296,9 +296,12 @@ impl Flight {
         let velocity = velocity(state);
         let rel = self.relative_wind(velocity);
         let re = rel.norm() * self.reynolds_per_speed;
-        // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters.
-        let rising = -rel.dot(&self.acceleration(velocity)) >= 0.0;
-        super::piece_entered(self.drag.kinks(), re, rising)
+        let kinks = self.drag.kinks();
+        // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters, and only on a
+        // kink itself (elsewhere the forces, an exponential on the crisis'
+        // pieces, are not worth their cost).
+        let rising = kinks.contains(&re) && -rel.dot(&self.acceleration(velocity)) >= 0.0;
+        super::piece_entered(kinks, re, rising)
     }
 }
 

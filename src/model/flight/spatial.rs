@@ -297,9 +297,12 @@ impl Dynamics<6> for Flight3d {
             piece: None,
             in_wind,
         };
-        // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters (as the plane's).
-        let rising = -rel.dot(&self.acceleration_at(0.0, velocity(state), regime)) >= 0.0;
-        super::piece_entered(self.drag.kinks(), re, rising)
+        let kinks = self.drag.kinks();
+        // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters, and only on a
+        // kink itself (as the plane's).
+        let rising = kinks.contains(&re)
+            && -rel.dot(&self.acceleration_at(0.0, velocity(state), regime)) >= 0.0;
+        super::piece_entered(kinks, re, rising)
     }
 
     fn wind_height(&self) -> Option<f64> {
