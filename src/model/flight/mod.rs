@@ -299,15 +299,24 @@ impl<const N: usize, D: Dynamics<N>, S: Start<N>, W: FnMut(&Step<N>)> WithModels
         // The regime the right-hand side reads during a step, which the
         // observer changes between steps.
         let regime = Cell::new(events.regime());
-        let rhs = |t: f64, s: &State<N>| {
-            let Regime { piece, in_wind } = regime.get();
-            flight.derivative_with((&drag, &lift), t, s, piece, in_wind)
-        };
-        let observe = |step: &Step<N>| {
-            let control = events.observe(step, &mut watch);
-            regime.set(events.regime());
-            control
-        };
+        // Inlined into the integrator's loop (and so compiled for AVX2 in
+        // its clone for it: see `ode::integrate`), whatever the inliner's
+        // estimate of the models' formulas.
+        let rhs = inlined(
+            #[inline(always)]
+            |t: f64, s: &State<N>| {
+                let Regime { piece, in_wind } = regime.get();
+                flight.derivative_with((&drag, &lift), t, s, piece, in_wind)
+            },
+        );
+        let observe = inlined(
+            #[inline(always)]
+            |step: &Step<N>| {
+                let control = events.observe(step, &mut watch);
+                regime.set(events.regime());
+                control
+            },
+        );
         let time_limit = launch.time_limit(flight.gravity());
         let (outcome, stats) = match stepper {
             Stepper::Adaptive(settings) => {
@@ -319,6 +328,14 @@ impl<const N: usize, D: Dynamics<N>, S: Start<N>, W: FnMut(&Step<N>)> WithModels
         };
         events.summary(outcome == Outcome::Stopped, stats)
     }
+}
+
+/// `f` itself: a place where a closure may carry an attribute (stable Rust
+/// takes `#[inline(always)]` on a closure given as an argument, not on one
+/// bound by `let`).
+#[inline(always)]
+fn inlined<F>(f: F) -> F {
+    f
 }
 
 /// A point on a drawn trajectory.

@@ -269,12 +269,19 @@ impl Flight {
         velocity: Vector2<f64>,
         piece: Option<usize>,
     ) -> (f64, f64) {
-        let coefficient = |re: f64, spin_rate: f64| {
-            let piece = piece.unwrap_or_else(|| drag.piece(re));
-            drag.coefficient_on(piece, re, spin_rate)
-        };
-        self.constants()
-            .acceleration(coefficient, lift, t, (velocity.x, velocity.y))
+        self.constants().acceleration(
+            // Inlined, whatever the inliner's estimate: a C_D left out of
+            // line (as it was once the exponential was written inline) costs
+            // a call per evaluation, its result through memory.
+            #[inline(always)]
+            |re: f64, spin_rate: f64| {
+                let piece = piece.unwrap_or_else(|| drag.piece(re));
+                drag.coefficient_on(piece, re, spin_rate)
+            },
+            lift,
+            t,
+            (velocity.x, velocity.y),
+        )
     }
 
     /// d/dt of the state (x, y, v_x, v_y) at the launch spin.

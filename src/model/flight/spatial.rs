@@ -211,12 +211,17 @@ impl Flight3d {
         velocity: Vector3<f64>,
         regime: Regime,
     ) -> [f64; 3] {
-        let coefficient = |re: f64, spin_rate: f64| {
-            let piece = regime.piece.unwrap_or_else(|| drag.piece(re));
-            drag.coefficient_on(piece, re, spin_rate)
-        };
-        self.constants()
-            .acceleration(coefficient, lift, (t, regime.in_wind), velocity.into())
+        self.constants().acceleration(
+            // Inlined into the forces (see `planar::Flight::acceleration_with`).
+            #[inline(always)]
+            |re: f64, spin_rate: f64| {
+                let piece = regime.piece.unwrap_or_else(|| drag.piece(re));
+                drag.coefficient_on(piece, re, spin_rate)
+            },
+            lift,
+            (t, regime.in_wind),
+            velocity.into(),
+        )
     }
 
     /// C_D at time `t` and `velocity`, in or out of the wind.
