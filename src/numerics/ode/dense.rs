@@ -168,8 +168,8 @@ impl<'a, const N: usize> Step<'a, N> {
     pub fn dense(&self) -> &DenseStep<N> {
         match self.source {
             Source::Borrowed(dense) => dense,
-            // SAFETY: `is_built` is set only once `built` is written, and
-            // `built` is not written again.
+            // SAFETY: `is_built` is set only once `built` is written (the
+            // builder lent it back), and `built` is not written again.
             Source::Build(_) if self.is_built.get() => unsafe {
                 (*self.built.get()).assume_init_ref()
             },
@@ -177,8 +177,16 @@ impl<'a, const N: usize> Step<'a, N> {
                 // SAFETY: nothing borrows `built` before it is written (it is
                 // lent out only once `is_built`), and a `Step` is not `Sync`
                 // (its `Cell`), so no other thread writes it meanwhile.
-                let dense = build(unsafe { &mut *self.built.get() });
-                self.is_built.set(true);
+                let place = self.built.get();
+                let dense = build(unsafe { &mut *place });
+                // Safe code lends the place's contents only through
+                // `MaybeUninit::write`, which fills it: a builder that lent
+                // some other extension leaves this one unbuilt (and asked
+                // again), so that `assume_init_ref` above never reads an
+                // unwritten place.
+                if std::ptr::eq(dense, place.cast::<DenseStep<N>>()) {
+                    self.is_built.set(true);
+                }
                 dense
             }
         }

@@ -393,6 +393,32 @@ mod tests {
     }
 
     #[test]
+    fn a_builder_that_lends_another_extension_leaves_the_step_unbuilt() {
+        // Safe code may lend back an extension other than the place it was
+        // given (leaving the place unwritten): the step must then never
+        // read its place, and asks again.
+        let builds = std::cell::Cell::new(0);
+        let (y0, y1) = (State::<1>::new(1.0), State::<1>::new(2.0));
+        let (k0, k1) = (State::<1>::new(1.0), State::<1>::new(1.0));
+        // (Lent for any place's lifetime: one that lives for ever.)
+        let elsewhere: &'static DenseStep<1> = Box::leak(Box::new(DenseStep::new(
+            0.0,
+            1.0,
+            (y0, y1),
+            (&k0, &k1),
+            State::zeros(),
+        )));
+        let build = dense_builder(|_out| {
+            builds.set(builds.get() + 1);
+            elsewhere
+        });
+        let step = Step::new((0.0, 1.0), (y0, y1), &build);
+        assert_eq!(step.at(0.5), elsewhere.at(0.5));
+        assert_eq!(step.at(0.25), elsewhere.at(0.25));
+        assert_eq!(builds.get(), 2);
+    }
+
+    #[test]
     fn slope_is_the_derivative_of_the_extension() {
         let f = |_t: f64, y: &State<2>| State::<2>::new(y[1], -y[0]);
         let settings = Settings::new(Tolerance::uniform(1e-6));
