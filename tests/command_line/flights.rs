@@ -27,6 +27,19 @@ const FLOAT: &[&str] = &[
     "pitch.spin=520",
 ];
 
+/// A short sweep of the bat's speed, three optimisations, for the scenes
+/// above.
+const SWEEP_BAT_SPEED: &[&str] = &[
+    "sweep",
+    "bat.speed",
+    "--from",
+    "40",
+    "--to",
+    "50",
+    "--steps",
+    "3",
+];
+
 fn with<'a>(args: &[&'a str], scene: &[&'a str]) -> Vec<&'a str> {
     [args, scene].concat()
 }
@@ -99,17 +112,7 @@ fn a_flight_that_does_not_land_is_never_a_range() {
     assert_eq!(v["landed"], true, "{v}");
     assert!(v["range"].as_f64().unwrap() > 134.8, "{v}");
 
-    let sweep = [
-        "sweep",
-        "bat.speed",
-        "--from",
-        "40",
-        "--to",
-        "50",
-        "--steps",
-        "3",
-    ];
-    let sweep = with(&sweep, FLOAT);
+    let sweep = with(SWEEP_BAT_SPEED, FLOAT);
     let table = text(d, &sweep);
     let first = table.lines().nth(1).unwrap();
     assert!(first.ends_with("(no swing lands: no optimum)"), "{table}");
@@ -296,22 +299,7 @@ fn work_is_bounded_on_the_slowest_scene() {
     let v = json(d, &with(&["optimize", "--json"], WORK));
     assert_eq!(v["status"], "work_limit", "{v}");
     assert_eq!(v["converged"], false, "{v}");
-    let sweep = text(
-        d,
-        &with(
-            &[
-                "sweep",
-                "bat.speed",
-                "--from",
-                "40",
-                "--to",
-                "50",
-                "--steps",
-                "3",
-            ],
-            SLOW,
-        ),
-    );
+    let sweep = text(d, &with(SWEEP_BAT_SPEED, SLOW));
     assert_eq!(sweep.lines().count(), 4, "{sweep}");
     // A big surface is refused as soon as its first cells show how much
     // work it would be, naming what fits.
