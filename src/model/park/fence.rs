@@ -194,10 +194,7 @@ impl Fence {
             .iter()
             .map(|p| p.distance)
             .fold(f64::INFINITY, f64::min);
-        let first_past = Fence::before_edges(&points, true)[..BUCKETS]
-            .iter()
-            .map(|&n| n as u16)
-            .collect();
+        let first_past = Fence::first_past(&points);
         Fence {
             points,
             nearest,
@@ -206,20 +203,17 @@ impl Fence {
         }
     }
 
-    /// How many points lie before each slice edge (or at or before it,
-    /// `at_edge_too`): `partition_point` at every edge, by one walk.
-    fn before_edges(points: &[FencePoint], at_edge_too: bool) -> Vec<usize> {
+    /// [`Fence::first_past`]: how many points lie at or before each
+    /// slice's start, by one walk.
+    fn first_past(points: &[FencePoint]) -> Vec<u16> {
         let mut count = 0;
-        (0..=BUCKETS)
+        (0..BUCKETS)
             .map(|edge| {
                 let start = Fence::bucket_start(edge);
-                while count < points.len()
-                    && (points[count].direction < start
-                        || at_edge_too && points[count].direction == start)
-                {
+                while count < points.len() && points[count].direction <= start {
                     count += 1;
                 }
-                count
+                count as u16
             })
             .collect()
     }
