@@ -243,7 +243,10 @@ impl SceneFlight {
 }
 
 /// [`watch_fences`] for a planar flight in the vertical plane turned
-/// `plane` (rad) from the centre-field line.
+/// `plane` (rad) from the centre-field line. Its ground track is a ray, so
+/// each fence lies at one distance along it (the wall's reach in the
+/// plane's direction) and a crossing is where x, one component, reaches
+/// that distance: no direction or wall lookup inside the root's iterations.
 #[inline]
 pub(crate) fn watch_planar(
     step: &Step<4>,
@@ -251,8 +254,6 @@ pub(crate) fn watch_planar(
     fences: &[&Fence],
     crossings: &mut [Option<Crossing>],
 ) {
-    // The turn (a sine and cosine, more than the rest of a step's watch) is
-    // worked out only once some fence not yet crossed is within reach.
     let reach = planar_reach(step);
     let near = |(fence, crossing): (&&Fence, &Option<Crossing>)| {
         crossing.is_none() && reach >= fence.nearest()
@@ -260,8 +261,51 @@ pub(crate) fn watch_planar(
     if !fences.iter().zip(crossings.iter()).any(near) {
         return;
     }
-    let (sin, cos) = plane.sin_cos();
-    watch_fences(step, fences, crossings, |s| [s[0] * cos, s[0] * sin, s[1]]);
+    // The ray's direction: the plane's, or its opposite for a ball flying
+    // backward (x < 0), which no fence ever meets in practice.
+    let (sign, direction) = if step.y1[0] < 0.0 {
+        let (sin, cos) = plane.sin_cos();
+        (-1.0, frame::direction_of(-cos, -sin))
+    } else {
+        (1.0, plane)
+    };
+    let along = |x: f64| sign * x;
+    let (reach1, reach0) = (along(step.y1[0]), along(step.y0[0]));
+    for (fence, crossing) in fences.iter().zip(crossings.iter_mut()) {
+        if crossing.is_some() || reach1 < fence.nearest() || reach1 < fence.surely_short(direction)
+        {
+            continue;
+        }
+        let wall = fence.reach(direction).0;
+        if reach1 < wall {
+            continue;
+        }
+        let time = if reach0 >= wall {
+            step.t0
+        } else {
+            let dense = step.dense();
+            find_root_newton_from(
+                |t| {
+                    let (x, vx) = dense.component_at(t, 0);
+                    (along(x) - wall, along(vx))
+                },
+                (step.t0, reach0 - wall),
+                (step.t1, reach1 - wall),
+                ROOT_TOLERANCE,
+            )
+        };
+        // The landing step's extension runs on below the field: a crossing
+        // there comes after the landing.
+        let height = step.dense().component_at(time, 1).0;
+        if height >= 0.0 {
+            *crossing = Some(Crossing {
+                time,
+                direction,
+                distance: wall,
+                height,
+            });
+        }
+    }
 }
 
 /// A reach's allowance for rounding: the watch's own figure may come out
