@@ -15,7 +15,7 @@ use super::flight::{self, FlightOptions, FlightSummary};
 use super::frame;
 use super::launch::SceneFlight;
 use super::park::{Fence, FenceAt};
-use crate::numerics::ode::{State, Step};
+use crate::numerics::ode::Step;
 use crate::numerics::real::Real;
 use crate::numerics::roots::find_root_newton_from;
 
@@ -242,7 +242,7 @@ impl SceneFlight {
     }
 }
 
-/// [`watch_fences`] for a planar flight in the vertical plane turned
+/// [`watch_spatial`], for a planar flight in the vertical plane turned
 /// `plane` (rad) from the centre-field line. Its ground track is a ray, so
 /// each fence lies at one distance along it (the wall's reach in the
 /// plane's direction) and a crossing is where x, one component, reaches
@@ -338,27 +338,17 @@ pub(crate) fn spatial_reach_at<R: Real>(x: R, z: R) -> R {
     (x * x + z * z).sqrt() * R::splat(REACH_ROUNDING)
 }
 
-/// [`watch_fences`] for a 3-D flight (x toward centre field, y up, z
-/// toward right field).
+/// Shows one step of a 3-D flight (x toward centre field, y up, z toward
+/// right field) to every fence not yet crossed.
 #[inline]
 pub(crate) fn watch_spatial(step: &Step<6>, fences: &[&Fence], crossings: &mut [Option<Crossing>]) {
-    watch_fences(step, fences, crossings, |s| [s[0], s[2], s[1]]);
-}
-
-/// Shows one step to every fence not yet crossed. `ground` maps a state
-/// (or, being linear, its rate of change) to (x, z, height): toward centre
-/// field, toward right field, up.
-#[inline]
-fn watch_fences<const N: usize>(
-    step: &Step<N>,
-    fences: &[&Fence],
-    crossings: &mut [Option<Crossing>],
-    ground: impl Fn(&State<N>) -> [f64; 3],
-) {
+    const X: usize = 0;
+    const HEIGHT: usize = 1;
+    const Z: usize = 2;
     // Where the step ends (a square root, not hypot: no overflow to guard
     // against, and hypot costs several times as much); its directions only
     // once some fence is near, and then once for every fence.
-    let [x1, z1, _] = ground(&step.y1);
+    let (x1, z1) = (step.y1[X], step.y1[Z]);
     let reach1 = (x1 * x1 + z1 * z1).sqrt();
     // The step's end's direction, and its start's distance and direction
     // (wanted only where it ends past a wall: rarely).
@@ -379,17 +369,18 @@ fn watch_fences<const N: usize>(
             continue;
         }
         let (reach0, direction0) = *start.get_or_insert_with(|| {
-            let [x0, z0, _] = ground(&step.y0);
+            let (x0, z0) = (step.y0[X], step.y0[Z]);
             ((x0 * x0 + z0 * z0).sqrt(), frame::direction_of(x0, z0))
         });
         let beyond0 = reach0 - fence.reach(direction0).0;
+        let dense = step.dense();
         let time = if beyond0 >= 0.0 {
             step.t0
         } else {
-            // How far beyond the fence's line, and its rate.
+            // How far beyond the fence's line, and its rate, from the two
+            // components on the ground alone.
             let beyond = |t: f64| {
-                let [x, z, _] = ground(&step.at(t));
-                let [vx, vz, _] = ground(&step.slope_at(t));
+                let [(x, vx), (z, vz)] = [X, Z].map(|i| dense.component_at(t, i));
                 let r = (x * x + z * z).sqrt();
                 let (wall, slope) = fence.reach(frame::direction_of(x, z));
                 let rate = (x * vx + z * vz) / r - slope * (x * vz - z * vx) / (r * r);
@@ -402,7 +393,7 @@ fn watch_fences<const N: usize>(
                 ROOT_TOLERANCE,
             )
         };
-        let [x, z, height] = ground(&step.at(time));
+        let [x, height, z] = [X, HEIGHT, Z].map(|i| dense.component_at(time, i).0);
         // The landing step's extension runs on below the field: a crossing
         // there comes after the landing.
         if height >= 0.0 {
