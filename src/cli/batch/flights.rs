@@ -606,7 +606,7 @@ mod tests {
         let (mut taken, mut rows) = (0, 0);
         for speed in [25.0, 35.0, 40.0, 45.0, 50.0] {
             for degrees in [-10.0, 10.0, 20.0, 30.0, 40.0, 60.0] {
-                for direction in [-0.8, -0.7854, -0.5, 0.0, 0.3, 0.785] {
+                for direction in [-0.8, -0.7, -0.5, 0.0, 0.3, 0.78] {
                     let scene = preset.scene.with_launch(BattedBall {
                         speed,
                         angle: f64::to_radians(degrees),
