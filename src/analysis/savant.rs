@@ -12,9 +12,10 @@
 //! spray as the launch direction instead ([`Spray::Launch`]) is the recipe
 //! of pybaseball's calculator, and lands shorter (docs/accuracy.md).
 
-use crate::model::flight::FlightOptions;
+use crate::model::flight::{FlightOptions, FlightSummary};
 use crate::model::frame;
 use crate::model::launch::SceneFlight;
+use crate::model::many;
 use crate::model::scene::Scene;
 use crate::model::spin_estimate::{SIDESPIN_PER_DIRECTION, Side, nathan_spin};
 
@@ -147,49 +148,149 @@ fn solve_direction(
     bearing: f64,
     options: &FlightOptions,
 ) -> Result<usize, SolveError> {
-    let miss = |scene: &mut Scene, direction: f64| {
-        launch_toward(scene, row, direction);
-        let summary = SceneFlight::new(scene, &scene.batted_ball()).fly(options);
+    let mut solve = DirectionSolve::new(*scene, row, bearing);
+    loop {
+        let summary = solve.flight().fly(options);
+        if let Some(solved) = solve.flown(&summary) {
+            *scene = solve.scene;
+            return solved;
+        }
+    }
+}
+
+/// A launch direction's solve under way ([`solve_direction`]), one flight
+/// at a time: [`DirectionSolve::flight`] is the flight it wants flown
+/// next, [`DirectionSolve::flown`] takes its outcome. So many rows' solves
+/// can go on together, each round's flights flown at once
+/// ([`launch_many`]).
+struct DirectionSolve {
+    /// The row's scene, launched toward `direction`.
+    scene: Scene,
+    row: RowLaunch,
+    bearing: f64,
+    direction: f64,
+    /// The last direction flown and its miss (none before the first).
+    previous: Option<(f64, f64)>,
+    flights: usize,
+}
+
+impl DirectionSolve {
+    fn new(mut scene: Scene, row: &RowLaunch, bearing: f64) -> Self {
+        launch_toward(&mut scene, row, bearing);
+        DirectionSolve {
+            scene,
+            row: *row,
+            bearing,
+            direction: bearing,
+            previous: None,
+            flights: 0,
+        }
+    }
+
+    /// The flight toward the direction being tried.
+    fn flight(&self) -> SceneFlight {
+        SceneFlight::new(&self.scene, &self.scene.batted_ball())
+    }
+
+    /// Takes the outcome of [`Self::flight`]: the flights taken once the
+    /// solve has ended (or why it failed), else `None` and the next
+    /// direction to try.
+    fn flown(&mut self, summary: &FlightSummary) -> Option<Result<usize, SolveError>> {
+        self.flights += 1;
+        let bearing = self.bearing;
+        if !summary.landed {
+            return Some(Err(SolveError::NotLanded { spray: bearing }));
+        }
         let (sin, cos) = summary.direction.sin_cos();
         let landing = frame::direction_of(summary.range * cos, summary.range * sin);
-        summary
-            .landed
-            .then_some(landing - bearing)
-            .ok_or(SolveError::NotLanded { spray: bearing })
-    };
-    let clamp = |d: f64| d.clamp(-MAX_DIRECTION, MAX_DIRECTION);
-    let (mut previous, mut previous_miss) = (bearing, miss(scene, bearing)?);
-    if previous_miss.abs() < DIRECTION_TOLERANCE {
-        return Ok(1);
-    }
-    // The first step's slope: the landing moves with the launch, and with
-    // an estimated sidespin its curve grows too (the estimate's sidespin
-    // rises with the direction), about in proportion to the sidespin.
-    let sidespin = scene.batted_ball().sidespin;
-    let slope = if row.estimate_sidespin && sidespin.abs() > 1.0 {
-        1.0 + previous_miss * SIDESPIN_PER_DIRECTION / sidespin
-    } else {
-        1.0
-    };
-    let mut direction = clamp(bearing - previous_miss / slope.max(0.5));
-    let mut flights = 1;
-    loop {
-        let now = miss(scene, direction)?;
-        flights += 1;
-        if now.abs() < DIRECTION_TOLERANCE {
-            break;
+        let miss = landing - bearing;
+        if miss.abs() < DIRECTION_TOLERANCE {
+            return Some(Ok(self.flights));
         }
-        if flights >= MAX_FLIGHTS || now == previous_miss {
-            return Err(SolveError::NotConverged {
-                spray: bearing,
-                miss: now,
-            });
-        }
-        let next = direction - now * (direction - previous) / (now - previous_miss);
-        (previous, previous_miss) = (direction, now);
-        direction = clamp(next);
+        let next = match self.previous {
+            None => {
+                // The first step's slope: the landing moves with the
+                // launch, and with an estimated sidespin its curve grows
+                // too (the estimate's sidespin rises with the direction),
+                // about in proportion to the sidespin.
+                let sidespin = self.scene.batted_ball().sidespin;
+                let slope = if self.row.estimate_sidespin && sidespin.abs() > 1.0 {
+                    1.0 + miss * SIDESPIN_PER_DIRECTION / sidespin
+                } else {
+                    1.0
+                };
+                bearing - miss / slope.max(0.5)
+            }
+            Some((previous, previous_miss)) => {
+                if self.flights >= MAX_FLIGHTS || miss == previous_miss {
+                    return Some(Err(SolveError::NotConverged {
+                        spray: bearing,
+                        miss,
+                    }));
+                }
+                self.direction - miss * (self.direction - previous) / (miss - previous_miss)
+            }
+        };
+        self.previous = Some((self.direction, miss));
+        self.direction = next.clamp(-MAX_DIRECTION, MAX_DIRECTION);
+        launch_toward(&mut self.scene, &self.row, self.direction);
+        None
     }
-    Ok(flights)
+}
+
+/// [`launch`] for many rows (each its scene and row), in their order: the
+/// direction solves go on together, a round of flights at a time, flown in
+/// lock-step where the lanes fly a flight bit for bit as it flies alone
+/// ([`many::flies_alone_alike`]), else one by one. So each row's launch is
+/// [`launch`]'s, to the bit.
+pub fn launch_many<'s>(
+    rows: impl IntoIterator<Item = (&'s Scene, &'s RowLaunch)>,
+    spray: Spray,
+    options: &FlightOptions,
+) -> Vec<Result<Launched, SolveError>> {
+    let mut launched = Vec::new();
+    let mut solving: Vec<(usize, DirectionSolve)> = Vec::new();
+    for (index, (scene, row)) in rows.into_iter().enumerate() {
+        match (row.spray, spray) {
+            (Some(bearing), Spray::Landing) => {
+                solving.push((index, DirectionSolve::new(*scene, row, bearing)));
+                // Its place, filled once solved.
+                launched.push(Err(SolveError::NotLanded { spray: bearing }));
+            }
+            _ => launched.push(launch(scene, row, spray, options)),
+        }
+    }
+    let mut summaries: Vec<Option<FlightSummary>> = Vec::new();
+    while !solving.is_empty() {
+        let flights: Vec<SceneFlight> = solving.iter().map(|(_, s)| s.flight()).collect();
+        summaries.clear();
+        summaries.resize(flights.len(), None);
+        let (alike, alone): (Vec<usize>, Vec<usize>) =
+            (0..flights.len()).partition(|&k| many::flies_alone_alike(&flights[k]));
+        many::judge_many_alone(
+            alike.iter().map(|&k| (flights[k], &[][..])),
+            options,
+            |index, summary, _| summaries[alike[index]] = Some(summary),
+        );
+        for k in alone {
+            summaries[k] = Some(flights[k].fly(options));
+        }
+        let mut flown = summaries.iter();
+        solving.retain_mut(|(index, solve)| {
+            let summary = flown.next().copied().flatten().expect("every flight flown");
+            match solve.flown(&summary) {
+                Some(solved) => {
+                    launched[*index] = solved.map(|flights| Launched {
+                        scene: solve.scene,
+                        flights,
+                    });
+                    false
+                }
+                None => true,
+            }
+        });
+    }
+    launched
 }
 
 #[cfg(test)]
@@ -247,6 +348,55 @@ mod tests {
             // Taken as the launch direction, the spray is where it leaves.
             let taken = launch(&base, &row, Spray::Launch, &options).unwrap();
             assert_eq!(taken.scene.batted_ball().direction, bearing);
+        }
+    }
+
+    /// Many rows' solves together (in lock-step where the lanes fly as one
+    /// flight alone does, one by one under the paper's drag crisis) give
+    /// each row's [`launch`], to the bit: its scene, flights and failures.
+    #[test]
+    fn launches_together_are_each_rows_launch() {
+        use std::f64::consts::FRAC_PI_2;
+        let options = FlightOptions {
+            tolerance: Tolerance::uniform(1e-10),
+            stop_at_kinks: true,
+        };
+        let mut nathan = crate::Scene::default();
+        nathan.set_text("model.drag", "nathan").unwrap();
+        nathan.set_text("model.lift", "nathan").unwrap();
+        let mut next = crate::numerics::xorshift::uniform(7);
+        let mut rows = Vec::new();
+        for i in 0..40 {
+            let base = if i % 5 == 0 { crate::Scene::default() } else { nathan };
+            let scene = base.with_launch(BattedBall {
+                speed: 30.0 + 20.0 * next(),
+                // Some straight up: they never land on their bearing's side.
+                angle: if i % 13 == 6 { FRAC_PI_2 - 1e-4 } else { 0.1 + 0.6 * next() },
+                spin: 200.0,
+                direction: 0.0,
+                sidespin: 0.0,
+            });
+            let row = RowLaunch {
+                spray: (i % 7 != 3).then(|| 1.4 * next() - 0.7),
+                side: Some(if i % 2 == 0 { Side::Right } else { Side::Left }),
+                estimate_backspin: i % 3 != 0,
+                estimate_sidespin: i % 4 != 0,
+            };
+            rows.push((scene, row));
+        }
+        for spray in [Spray::Landing, Spray::Launch] {
+            let together = launch_many(rows.iter().map(|(s, r)| (s, r)), spray, &options);
+            let mut solved = 0;
+            for ((scene, row), together) in rows.iter().zip(&together) {
+                let alone = launch(scene, row, spray, &options);
+                assert_eq!(&alone, together);
+                solved += alone.as_ref().map_or(0, |l| usize::from(l.flights > 1));
+            }
+            // The test bites: most rows solved over several flights.
+            if spray == Spray::Landing {
+                assert!(solved > 20, "{solved}");
+                assert!(together.iter().any(|l| l.is_err()));
+            }
         }
     }
 }

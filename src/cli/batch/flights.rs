@@ -190,9 +190,12 @@ pub(super) fn fly_chunk(
                 .1
         }
     };
-    let ready: Vec<Result<Ready, String>> = jobs
-        .iter()
-        .map(|job| ready(job, setup, &readout, own(job)))
+    // The direction's solve stays at the readout's precision: its stopping
+    // test is a threshold a looser flight could cross in another iteration.
+    let rows = jobs.iter().map(|job| (&job.scene, &job.launch));
+    let launched = savant::launch_many(rows, setup.spray, &readout);
+    let ready: Vec<Result<Ready, String>> = (jobs.iter().zip(launched))
+        .map(|(job, launched)| ready(job, launched, own(job)))
         .collect();
     // With --own-air each park is judged on a flight in its own air.
     let parks: &[&park::Fence] = if setup.own_air { &[] } else { &setup.fences };
@@ -317,17 +320,13 @@ pub(super) fn fly_all(
     summaries.extend(flown.into_iter().map(|f| f.expect("every row flown")));
 }
 
-/// The row's launch completed and checked.
+/// The row's launch, completed ([`savant::launch_many`]), checked.
 fn ready<'f>(
     job: &Job,
-    setup: &Setup,
-    options: &FlightOptions,
+    launched: Result<savant::Launched, savant::SolveError>,
     own: &'f park::Fence,
 ) -> Result<Ready<'f>, String> {
-    // The direction's solve stays at the readout's precision: its stopping
-    // test is a threshold a looser flight could cross in another iteration.
-    let launched =
-        savant::launch(&job.scene, &job.launch, setup.spray, options).map_err(|e| e.to_string())?;
+    let launched = launched.map_err(|e| e.to_string())?;
     // The row was validated whole when it was read; only its launch moved,
     // if it did (a spin estimated, a direction solved).
     let moved = launched.scene.launch != job.scene.launch;
