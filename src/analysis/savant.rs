@@ -399,4 +399,39 @@ mod tests {
             }
         }
     }
+
+    /// A solve's flights land where the reference's do to well inside the
+    /// budget Purpose::Solve states (1e-6 rad, a hundredth of the solve's
+    /// own tolerance), over 3-D flights with spray and sidespin.
+    #[test]
+    fn a_solves_flight_lands_well_inside_its_budget() {
+        use crate::analysis::precision::Purpose;
+        let mut nathan = crate::Scene::default();
+        nathan.set_text("model.drag", "nathan").unwrap();
+        nathan.set_text("model.lift", "nathan").unwrap();
+        let mut next = crate::numerics::xorshift::uniform(11);
+        let landing = |summary: &FlightSummary| {
+            let (sin, cos) = summary.direction.sin_cos();
+            frame::direction_of(summary.range * cos, summary.range * sin)
+        };
+        let mut worst: f64 = 0.0;
+        for i in 0..300 {
+            let base = if i % 3 == 0 { crate::Scene::default() } else { nathan };
+            let scene = base.with_launch(BattedBall {
+                speed: 30.0 + 22.0 * next(),
+                angle: -0.1 + 0.9 * next(),
+                spin: 150.0 + 200.0 * next(),
+                direction: 1.4 * next() - 0.7,
+                sidespin: 200.0 * next() - 100.0,
+            });
+            let flight = SceneFlight::new(&scene, &scene.batted_ball());
+            let solve = flight.fly(&Purpose::Solve.flight_options());
+            let reference = flight.fly(&Purpose::Reference.flight_options());
+            worst = worst.max((landing(&solve) - landing(&reference)).abs());
+        }
+        let budget = Purpose::Solve.range_budget() / 150.0;
+        assert!(worst < budget / 10.0, "{worst:e} rad");
+        // And no tighter than it needs: within ~1000× of the budget.
+        assert!(worst > budget / 1000.0, "{worst:e} rad");
+    }
 }

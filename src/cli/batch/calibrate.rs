@@ -10,7 +10,8 @@ use std::path::Path;
 use rayon::prelude::*;
 
 use super::records::{Fields, MAX_RECORD_BYTES, Record, Records, Stop, split_fields};
-use super::rows::{Header, Row, parse_row};
+use super::pieces::PIECE_ROWS;
+use super::rows::{Header, Job, Row, parse_row};
 use super::savant_columns::{SavantColumn, Setup};
 use crate::analysis::calibrate::{self, Errors, Fit, Measured};
 use crate::analysis::precision::Purpose;
@@ -151,24 +152,31 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
             Err(Stop::Io(e)) => return Err(e.to_string()),
         }
     }
-    let options = Purpose::Readout.flight_options();
+    let options = Purpose::Solve.flight_options();
     let sprayed = header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY);
     let without_spray = jobs
         .iter()
         .filter(|j| sprayed && j.statcast.is_some() && j.launch.spray.is_none())
         .count();
-    let launched: Vec<Option<Measured>> = jobs
-        .par_iter()
-        .filter(|job| !sprayed || job.launch.spray.is_some())
-        .map(|job| {
-            let distance = job.statcast?;
-            let launched = savant::launch(&job.scene, &job.launch, setup.spray, &options).ok()?;
-            launched.scene.validate().ok()?;
-            Some(Measured {
-                scene: launched.scene,
-                distance,
-                hang_time: job.hang_time,
-                apex: job.apex,
+    // Launched as `fly --batch` launches them: a piece's solves together.
+    let wanted: Vec<&Job> = jobs
+        .iter()
+        .filter(|job| (!sprayed || job.launch.spray.is_some()) && job.statcast.is_some())
+        .collect();
+    let launched: Vec<Option<Measured>> = wanted
+        .par_chunks(PIECE_ROWS)
+        .flat_map_iter(|piece| {
+            let rows = piece.iter().map(|job| (&job.scene, &job.launch));
+            let launched = savant::launch_many(rows, setup.spray, &options);
+            piece.iter().zip(launched).map(|(job, launched)| {
+                let launched = launched.ok()?;
+                launched.scene.validate().ok()?;
+                Some(Measured {
+                    scene: launched.scene,
+                    distance: job.statcast?,
+                    hang_time: job.hang_time,
+                    apex: job.apex,
+                })
             })
         })
         .collect();

@@ -172,7 +172,6 @@ pub(super) fn fly_chunk(
     } else {
         Purpose::Batch
     };
-    let readout = Purpose::Readout.flight_options();
     // The generic fences of the piece (one, unless rows give field.*).
     let mut generic: Vec<(crate::preset::Fence, park::Fence)> = Vec::new();
     for job in jobs.iter().filter(|j| j.park.is_none()) {
@@ -190,10 +189,9 @@ pub(super) fn fly_chunk(
                 .1
         }
     };
-    // The direction's solve stays at the readout's precision: its stopping
-    // test is a threshold a looser flight could cross in another iteration.
     let rows = jobs.iter().map(|job| (&job.scene, &job.launch));
-    let launched = savant::launch_many(rows, setup.spray, &readout);
+    let solve = Purpose::Solve.flight_options();
+    let launched = savant::launch_many(rows, setup.spray, &solve);
     let ready: Vec<Result<Ready, String>> = (jobs.iter().zip(launched))
         .map(|(job, launched)| ready(job, launched, own(job)))
         .collect();

@@ -21,7 +21,7 @@ use crate::cli::progress::Progress;
 /// Records a piece holds: small enough that a round's last pieces leave
 /// no thread idle for long (a few ms of flights), large enough that
 /// handing one out costs nothing.
-const PIECE_ROWS: usize = 256;
+pub(super) const PIECE_ROWS: usize = 256;
 /// Records read a round, at most...
 const ROUND_ROWS: usize = 8192;
 /// ...and bytes (one record more at most): memory stays flat however long
