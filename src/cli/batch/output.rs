@@ -1,13 +1,15 @@
 //! A batch's output: its columns, and each row written as a CSV line (into
 //! a piece's byte buffer, numbers by [`fixed`]) or a JSON line.
 
+use std::sync::OnceLock;
+
 use super::fixed;
 use super::flights::RowFlight;
 use super::rows::Job;
 use super::savant_columns::{Setup, quoted, write_quoted};
 use crate::cli::ground::clearing_json;
 use crate::cli::shown::Shown;
-use crate::units::Quantity;
+use crate::units::{Quantity, Unit, UnitSystem};
 
 /// The output's columns, in order: then [`STATCAST_COLUMNS`] when the input
 /// has Statcast's distance, then `--keep`'s.
@@ -95,61 +97,142 @@ pub(super) struct CsvLine<'a> {
     pub statcast: bool,
 }
 
+/// A printed number's column: its quantity and decimals in SI.
+#[derive(Clone, Copy)]
+enum Number {
+    Speed = 0,
+    Angle6,
+    Spin3,
+    Distance3,
+    Time3,
+    Angle4,
+    Distance2,
+}
+
+const NUMBERS: [(Quantity, usize); 7] = [
+    (Quantity::Speed, 4),
+    (Quantity::Angle, 6),
+    (Quantity::Spin, 3),
+    (Quantity::Distance, 3),
+    (Quantity::Unchanged, 3),
+    (Quantity::Angle, 4),
+    (Quantity::Distance, 2),
+];
+
+/// How each [`Number`] prints in a unit system: its unit (`None` where it
+/// is SI's, printed as is) and decimals, worked out once, not per number.
+type Printing = [(Option<Unit>, usize); NUMBERS.len()];
+
+fn printing(shown: Shown) -> &'static Printing {
+    static SYSTEMS: OnceLock<[Printing; 2]> = OnceLock::new();
+    let systems = SYSTEMS.get_or_init(|| {
+        [UnitSystem::Si, UnitSystem::Imperial].map(|system| {
+            NUMBERS.map(|(quantity, si_decimals)| {
+                let unit = Shown(system).unit(quantity);
+                let decimals = unit.decimals(si_decimals);
+                (Some(unit).filter(|u| !u.is_identity()), decimals)
+            })
+        })
+    });
+    &systems[usize::from(shown.0 != UnitSystem::Si)]
+}
+
+/// Room for a row's line but its kept cells: its numbers (at most 19
+/// bytes each, with their commas, as [`fixed`] writes them), words and park
+/// code, reserved at once so that no append of the line grows the buffer.
+const LINE_ROOM: usize = 512;
+
+/// Writes the number `si` of `column` in the units `printing` gives, then
+/// `then`. Inlined: SI's decimals are then constants.
+#[inline(always)]
+fn number<const SI: bool>(
+    out: &mut Vec<u8>,
+    printing: &Printing,
+    column: Number,
+    si: f64,
+    then: Option<u8>,
+) {
+    if SI {
+        match NUMBERS[column as usize].1 {
+            2 => fixed::write_with::<2>(out, si, then),
+            3 => fixed::write_with::<3>(out, si, then),
+            4 => fixed::write_with::<4>(out, si, then),
+            6 => fixed::write_with::<6>(out, si, then),
+            decimals => fixed::write_maybe_then(out, si, decimals, then),
+        }
+    } else {
+        // As `Shown::convert` converts: exactly `si` where the unit is SI's.
+        let (unit, decimals) = printing[column as usize];
+        let shown = unit.map_or(si, |unit| unit.show(si));
+        fixed::write_maybe_then(out, shown, decimals, then);
+    }
+}
+
 impl CsvLine<'_> {
     pub(super) fn write(&self, out: &mut Vec<u8>, job: &Job, flown: &RowFlight, kept: &[&str]) {
+        out.reserve(LINE_ROOM);
+        // SI's decimals are constants, each number's writer inlined for its
+        // own; other units' are looked up (`printing`).
+        if self.shown.is_si() {
+            self.write_line::<true>(out, job, flown, kept);
+        } else {
+            self.write_line::<false>(out, job, flown, kept);
+        }
+    }
+
+    fn write_line<const SI: bool>(
+        &self,
+        out: &mut Vec<u8>,
+        job: &Job,
+        flown: &RowFlight,
+        kept: &[&str],
+    ) {
         let (launch, flight) = (&flown.launch, &flown.flight);
-        let number = |out: &mut Vec<u8>, quantity, si, si_decimals| {
-            let decimals = self.shown.unit(quantity).decimals(si_decimals);
-            fixed::write(out, self.shown.convert(quantity, si), decimals);
-            out.push(b',');
+        let printing = printing(self.shown);
+        let number = |out: &mut Vec<u8>, column: Number, si: f64, then: Option<u8>| {
+            number::<SI>(out, printing, column, si, then);
         };
-        let word = |out: &mut Vec<u8>, text: &str| {
-            out.extend_from_slice(text.as_bytes());
-            out.push(b',');
-        };
-        word(out, itoa::Buffer::new().format(job.line));
-        number(out, Quantity::Speed, launch.speed, 4);
-        number(out, Quantity::Angle, launch.angle, 6);
-        number(out, Quantity::Spin, launch.spin, 3);
-        number(out, Quantity::Angle, launch.direction, 6);
-        number(out, Quantity::Spin, launch.sidespin, 3);
+        let comma = Some(b',');
+        let mut line = itoa::Buffer::new();
+        out.extend_from_slice(line.format(job.line).as_bytes());
+        out.push(b',');
+        number(out, Number::Speed, launch.speed, comma);
+        number(out, Number::Angle6, launch.angle, comma);
+        number(out, Number::Spin3, launch.spin, comma);
+        number(out, Number::Angle6, launch.direction, comma);
+        number(out, Number::Spin3, launch.sidespin, comma);
         match flight.landed {
-            true => number(out, Quantity::Distance, flight.range, 3),
+            true => number(out, Number::Distance3, flight.range, comma),
             false => out.push(b','),
         }
-        number(out, Quantity::Angle, flight.direction, 6);
-        fixed::write(out, flight.flight_time, 3);
-        out.push(b',');
-        number(out, Quantity::Distance, flight.apex, 3);
-        number(out, Quantity::Angle, flight.landing_angle, 4);
-        word(out, if flight.landed { "true" } else { "false" });
-        word(
-            out,
-            if flown.clearing.clears() {
-                "true"
-            } else {
-                "false"
-            },
-        );
+        number(out, Number::Angle6, flight.direction, comma);
+        number(out, Number::Time3, flight.flight_time, comma);
+        number(out, Number::Distance3, flight.apex, comma);
+        number(out, Number::Angle4, flight.landing_angle, comma);
+        for yes in [flight.landed, flown.clearing.clears()] {
+            match yes {
+                true => out.extend_from_slice(b"true,"),
+                false => out.extend_from_slice(b"false,"),
+            }
+        }
         write_quoted(out, park_code(job, self.setup));
         out.push(b',');
-        word(out, flown.clearing.outcome.name());
+        out.extend_from_slice(flown.clearing.outcome.name().as_bytes());
+        out.push(b',');
         match flown.clearing.margin {
-            Some(margin) => number(out, Quantity::Distance, margin, 3),
+            Some(margin) => number(out, Number::Distance3, margin, comma),
             None => out.push(b','),
         }
-        word(out, itoa::Buffer::new().format(flown.parks_cleared));
-        out.extend_from_slice(if job.launch.estimates_spin() {
-            b"true"
-        } else {
-            b"false"
-        });
+        out.extend_from_slice(line.format(flown.parks_cleared).as_bytes());
+        match job.launch.estimates_spin() {
+            true => out.extend_from_slice(b",true"),
+            false => out.extend_from_slice(b",false"),
+        }
         if self.statcast {
             for value in [job.statcast, difference(job, flown)] {
                 out.push(b',');
                 if let Some(m) = value {
-                    let decimals = self.shown.unit(Quantity::Distance).decimals(2);
-                    fixed::write(out, self.shown.convert(Quantity::Distance, m), decimals);
+                    number(out, Number::Distance2, m, None);
                 }
             }
         }

@@ -201,8 +201,11 @@ pub(super) fn quoted(field: &str) -> String {
 
 /// [`quoted`], appended to a byte buffer.
 pub(super) fn write_quoted(out: &mut Vec<u8>, field: &str) {
+    // The specials are ASCII, so a byte test finds them (a multi-byte
+    // character holds no ASCII byte).
+    let special = |b: &u8| matches!(b, b',' | b'"' | b'\n' | b'\r');
     let needs =
-        field.contains([',', '"', '\n', '\r']) || field.starts_with(' ') || field.ends_with(' ');
+        field.as_bytes().iter().any(special) || field.starts_with(' ') || field.ends_with(' ');
     if !needs {
         out.extend_from_slice(field.as_bytes());
         return;
