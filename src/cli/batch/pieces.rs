@@ -134,6 +134,7 @@ impl Piece {
                         (line, &record),
                         (&mut self.fields, &mut self.kept),
                         swings,
+                        &mut self.jobs,
                     )
                 }
                 Span::TooLong { line } => Row::Bad {
@@ -143,7 +144,7 @@ impl Piece {
                 Span::End => continue,
             };
             match row {
-                Row::Job(job) => self.jobs.push(job),
+                Row::Job => {}
                 Row::Bad { line, reason } => self.failed.push((line, reason)),
                 Row::NoLaunch => self.without_launch += 1,
                 Row::Blank => self.empty += 1,

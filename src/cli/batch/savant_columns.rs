@@ -265,7 +265,7 @@ impl Summary {
         if job.launch.spray.is_some() {
             self.sprayed += 1;
             self.solve_flights += flights;
-        } else if header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY) {
+        } else if header.hit_coordinates {
             self.without_spray += 1;
         }
         match job.park {
