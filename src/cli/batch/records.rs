@@ -24,66 +24,118 @@ pub(super) fn split_fields(text: &str) -> Result<Vec<String>, &'static str> {
 /// mean it), where csv reads the quote as text and finds three.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Fields {
-    /// The fields, one separator byte (a comma) between each two.
+    /// The record as read; after it, the fields that had to be rebuilt (a
+    /// doubled quote, text after a closing quote).
     text: String,
-    /// Where each field ends in `text`.
-    ends: Vec<usize>,
+    /// Where each field lies in `text`: most are a piece of the record as
+    /// it is (a quoted one without its quotes), copied no further.
+    spans: Vec<(usize, usize)>,
 }
 
 impl Fields {
     /// Splits `record`, replacing the fields held.
     pub(super) fn split(&mut self, record: &str) -> Result<(), &'static str> {
         self.text.clear();
-        self.ends.clear();
+        self.spans.clear();
+        self.text.push_str(record);
         if self.commas_unquoted(record.as_bytes()) {
-            // No quotes (a batch's plain rows): the fields are the record's
-            // text as it is, cut at its commas.
-            self.text.push_str(record);
-            self.ends.push(record.len());
+            // No quotes (a batch's plain rows): the record cut at its commas.
             return Ok(());
         }
-        self.ends.clear();
-        let mut start = 0;
+        self.spans.clear();
+        let mut next = Some(0);
+        while let Some(at) = next {
+            next = self.field(record, at)?;
+        }
+        Ok(())
+    }
+
+    /// The field of `record` that starts at byte `at`, noted; where the
+    /// next one starts (`None`: this was the last).
+    fn field(&mut self, record: &str, at: usize) -> Result<Option<usize>, &'static str> {
+        let bytes = record.as_bytes();
+        // At once: a field with no quote before its comma, or one quoted
+        // whole (after any spaces) with no quote doubled inside.
+        let special = match bytes.get(at) {
+            Some(b'"') => Some(at),
+            _ => memchr::memchr2(b'"', b',', &bytes[at..]).map(|i| at + i),
+        };
+        match special {
+            None => {
+                self.spans.push((at, bytes.len()));
+                return Ok(None);
+            }
+            Some(comma) if bytes[comma] == b',' => {
+                self.spans.push((at, comma));
+                return Ok(Some(comma + 1));
+            }
+            Some(quote) if record[at..quote].trim().is_empty() => {
+                let open = quote + 1;
+                let Some(close) = memchr::memchr(b'"', &bytes[open..]).map(|i| open + i) else {
+                    return Err(UNTERMINATED);
+                };
+                match bytes.get(close + 1) {
+                    None => {
+                        self.spans.push((open, close));
+                        return Ok(None);
+                    }
+                    Some(b',') => {
+                        self.spans.push((open, close));
+                        return Ok(Some(close + 2));
+                    }
+                    // A doubled quote, or text after the closing one.
+                    Some(_) => {}
+                }
+            }
+            // A quote inside the text.
+            Some(_) => {}
+        }
+        // Rebuilt after the record, a piece at a time: quotes and commas
+        // are ASCII, so the text between them is copied whole.
+        let start = self.text.len();
         let mut quoted = false;
-        let mut rest = record;
-        // Quotes and commas are ASCII: the text between them is copied whole.
-        while let Some(i) = memchr::memchr2(b'"', b',', rest.as_bytes()) {
+        let mut rest = &record[at..];
+        loop {
+            let found = if quoted {
+                memchr::memchr(b'"', rest.as_bytes())
+            } else {
+                memchr::memchr2(b'"', b',', rest.as_bytes())
+            };
+            let Some(i) = found else { break };
             self.text.push_str(&rest[..i]);
             let special = rest.as_bytes()[i];
             rest = &rest[i + 1..];
             match (quoted, special) {
-                (true, b'"') if rest.starts_with('"') => {
+                (true, _) if rest.starts_with('"') => {
                     self.text.push('"');
                     rest = &rest[1..];
                 }
-                (true, b'"') => quoted = false,
-                (true, _) => self.text.push(','),
+                (true, _) => quoted = false,
                 (false, b'"') if self.text[start..].trim().is_empty() => {
                     self.text.truncate(start);
                     quoted = true;
                 }
                 (false, b'"') => self.text.push('"'),
                 (false, _) => {
-                    self.ends.push(self.text.len());
-                    self.text.push(',');
-                    start = self.text.len();
+                    self.spans.push((start, self.text.len()));
+                    return Ok(Some(record.len() - rest.len()));
                 }
             }
         }
         if quoted {
-            return Err("an unterminated quote");
+            return Err(UNTERMINATED);
         }
         self.text.push_str(rest);
-        self.ends.push(self.text.len());
-        Ok(())
+        self.spans.push((start, self.text.len()));
+        Ok(None)
     }
 
-    /// Notes where `record`'s commas are, as its fields' ends, if it has no
-    /// quote (else `false`, the ends half noted). Eight bytes at a time: a
-    /// row of numbers is mostly digits.
+    /// Notes where `record`'s fields lie, cut at its commas, if it has no
+    /// quote (else `false`, some noted). Eight bytes at a time: a row of
+    /// numbers is mostly digits.
     fn commas_unquoted(&mut self, record: &[u8]) -> bool {
         let mut words = record.chunks_exact(8);
-        let mut at = 0;
+        let (mut at, mut start) = (0, 0);
         for word in &mut words {
             let word = u64::from_le_bytes(word.try_into().expect("eight bytes"));
             if bytes_equal(word, b'"') != 0 {
@@ -91,7 +143,9 @@ impl Fields {
             }
             let mut commas = bytes_equal(word, b',');
             while commas != 0 {
-                self.ends.push(at + commas.trailing_zeros() as usize / 8);
+                let comma = at + commas.trailing_zeros() as usize / 8;
+                self.spans.push((start, comma));
+                start = comma + 1;
                 commas &= commas - 1;
             }
             at += 8;
@@ -99,29 +153,31 @@ impl Fields {
         for (i, &byte) in words.remainder().iter().enumerate() {
             match byte {
                 b'"' => return false,
-                b',' => self.ends.push(at + i),
+                b',' => {
+                    self.spans.push((start, at + i));
+                    start = at + i + 1;
+                }
                 _ => {}
             }
         }
+        self.spans.push((start, record.len()));
         true
     }
 
     pub(super) fn len(&self) -> usize {
-        self.ends.len()
+        self.spans.len()
     }
 
     /// Adds a field at the end (to keep cells of many rows in one buffer).
     pub(super) fn push(&mut self, field: &str) {
-        if !self.ends.is_empty() {
-            self.text.push(',');
-        }
+        let start = self.text.len();
         self.text.push_str(field);
-        self.ends.push(self.text.len());
+        self.spans.push((start, self.text.len()));
     }
 
     pub(super) fn clear(&mut self) {
         self.text.clear();
-        self.ends.clear();
+        self.spans.clear();
     }
 
     /// Field `index`, as `str::trim` leaves it: at once where it starts
@@ -139,14 +195,12 @@ impl Fields {
 
     #[inline(always)]
     pub(super) fn get(&self, index: usize) -> &str {
-        let start = if index == 0 {
-            0
-        } else {
-            self.ends[index - 1] + 1
-        };
-        &self.text[start..self.ends[index]]
+        let (start, end) = self.spans[index];
+        &self.text[start..end]
     }
 }
+
+const UNTERMINATED: &str = "an unterminated quote";
 
 /// The high bit of each byte of `word` (little-endian) that is `byte`, the
 /// others clear: exact, as no sum carries from one byte into the next.

@@ -531,7 +531,7 @@ fn read_cells(
                 Err(format!("{} is empty", LAUNCH_COLUMNS[index].0))
             }
             _ if value.is_empty() => Ok(()), // the preset's value
-            Column::Savant(column) => savant.read(column, value, setup.parks),
+            Column::Savant(column) => savant.read(column, value, setup),
             // A launch.* cell as `--set` takes it (`103mph`).
             Column::Launch(index, Unit::Si) => {
                 spin_given |= index == 2;
