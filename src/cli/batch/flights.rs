@@ -299,8 +299,14 @@ fn ready<'f>(
 ) -> Result<Ready<'f>, String> {
     // The direction's solve stays at the readout's precision: its stopping
     // test is a threshold a looser flight could cross in another iteration.
-    let launched =
-        savant::launch(&job.scene, &job.launch, setup.spray, options).map_err(|e| e.to_string())?;
+    let launched = if savant::launches_as_given(&job.scene, &job.launch) {
+        savant::Launched {
+            scene: job.scene,
+            flights: 0,
+        }
+    } else {
+        savant::launch(&job.scene, &job.launch, setup.spray, options).map_err(|e| e.to_string())?
+    };
     // The row was validated whole when it was read; only its launch moved,
     // if it did (a spin estimated, a direction solved).
     let moved = launched.scene.launch != job.scene.launch;
