@@ -13,7 +13,7 @@ use rayon::prelude::*;
 use super::flights::{Printed, RowFlight, Scratch, fly_chunk};
 use super::output::{CsvLine, json_line};
 use super::own_launch::SwingLaunches;
-use super::records::{Fields, MAX_RECORD_BYTES, Records, Span, Stop};
+use super::records::{Fields, MAX_RECORD_BYTES, RecordTexts, Records, Span, Stop};
 use super::rows::{Header, Job, Row, parse_row};
 use super::savant_columns::{Setup, Summary};
 use crate::cli::progress::Progress;
@@ -116,15 +116,11 @@ impl Piece {
         self.kept.clear();
         (self.flown_rows, self.without_launch, self.empty) = (0, 0, 0);
         self.summary = Summary::new(setup.parks.parks.len());
+        let texts = RecordTexts::new(text, spans);
         for span in spans {
             let row = match *span {
                 Span::Text { line, start, end } => {
-                    // As `from_utf8_lossy`, by the faster check first.
-                    let bytes = &text[start..end];
-                    let record = match std::str::from_utf8(bytes) {
-                        Ok(text) => std::borrow::Cow::Borrowed(text),
-                        Err(_) => String::from_utf8_lossy(bytes),
-                    };
+                    let record = texts.get(start, end);
                     // With --own-air each park's flight takes the launch
                     // its swing gives in that park's air: left to it.
                     let swings = (!setup.own_air).then_some(&mut self.swings);

@@ -2,6 +2,7 @@
 //! one bounded record: a line end inside quotes continues the record, and a
 //! record over [`MAX_RECORD_BYTES`] is dropped.
 
+use std::borrow::Cow;
 use std::io::{self, BufRead};
 
 /// The longest record (line) read, in bytes: a 90-column Statcast row is
@@ -210,6 +211,46 @@ fn bytes_equal(word: u64, byte: u8) -> u64 {
     // A byte's high bit: set where the byte's low bits, or its high bit, are.
     let nonzero = ((zero_where_equal & LOW) + LOW) | zero_where_equal;
     !(nonzero | LOW)
+}
+
+/// The records of a piece as text, each as `String::from_utf8_lossy` makes
+/// it: their bytes checked once for all (a valid record then being a slice
+/// of them, cut where its neighbours end), not one record at a time.
+pub(super) struct RecordTexts<'a> {
+    bytes: &'a [u8],
+    /// The piece's bytes from its first record's start, if valid UTF-8.
+    valid: Option<(usize, &'a str)>,
+}
+
+impl<'a> RecordTexts<'a> {
+    /// The texts of the records `spans` places in `bytes`.
+    pub(super) fn new(bytes: &'a [u8], spans: &[Span]) -> Self {
+        let places = spans.iter().filter_map(|span| match *span {
+            Span::Text { start, end, .. } => Some((start, end)),
+            _ => None,
+        });
+        let from = places.clone().map(|(start, _)| start).min();
+        let to = places.map(|(_, end)| end).max();
+        let valid = from.zip(to).and_then(|(from, to)| {
+            let text = std::str::from_utf8(&bytes[from..to]).ok()?;
+            Some((from, text))
+        });
+        RecordTexts { bytes, valid }
+    }
+
+    /// The record at `start..end` of the bytes.
+    pub(super) fn get(&self, start: usize, end: usize) -> Cow<'a, str> {
+        // A slice of valid text cut at character boundaries is valid text.
+        let slice = self
+            .valid
+            .and_then(|(from, text)| text.get(start - from..end - from));
+        match slice {
+            Some(text) => Cow::Borrowed(text),
+            // A record whose bytes are not UTF-8, or that ends inside a
+            // character the next one completes.
+            None => String::from_utf8_lossy(&self.bytes[start..end]),
+        }
+    }
 }
 
 /// Why reading stopped before the end.
