@@ -7,7 +7,6 @@ use super::fixed;
 use super::flights::RowFlight;
 use super::rows::Job;
 use super::savant_columns::{Setup, quoted, write_quoted};
-use crate::cli::ground::clearing_json;
 use crate::cli::shown::Shown;
 use crate::units::{Quantity, Unit, UnitSystem};
 
@@ -244,57 +243,327 @@ impl CsvLine<'_> {
     }
 }
 
-/// A row's JSON line (SI, every digit).
+/// Appends a row's JSON line (SI, every digit): the object `fly --json`'s
+/// pieces make (`clearing_json` for the fence), keys in order as
+/// `serde_json`'s map keeps them, each value written by `serde_json` itself
+/// (numbers, text), straight into the piece's buffer: a tree of values cost
+/// 20 times the flight's own work.
 pub(super) fn json_line(
+    out: &mut Vec<u8>,
     job: &Job,
     flown: &RowFlight,
     cleared: &[bool],
     kept: &[&str],
     setup: &Setup,
-) -> String {
-    let (launch, flight) = (&flown.launch, &flown.flight);
-    let codes: Vec<&str> = setup
-        .parks
-        .parks
-        .iter()
-        .zip(cleared)
-        .filter(|(_, c)| **c)
-        .map(|(p, _)| p.code.as_str())
-        .collect();
-    let mut json = serde_json::json!({
-        "line": job.line,
-        // {speed, angle, spin, direction, sidespin}, as `fly --json`.
-        "launch": launch,
-        "flight": {
-            "range": flight.landed.then_some(flight.range),
-            "direction": flight.direction,
-            "flight_time": flight.flight_time,
-            "apex": flight.apex,
-            "landing_angle": flight.landing_angle,
-            "landed": flight.landed,
-        },
-        "clears_fence": flown.clearing.clears(),
-        "fence": clearing_json(park_code(job, setup), &flown.clearing),
-        "parks": {
-            "cleared": flown.parks_cleared,
-            "codes": codes,
-        },
-        "spin_estimated": job.launch.estimates_spin(),
+) {
+    use Member::*;
+    let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.clearing);
+    let fence = [
+        ("direction", Number(fence.direction)),
+        ("distance", Maybe(fence.wall.map(|w| w.distance))),
+        ("height", Maybe(fence.wall.map(|w| w.height))),
+        ("height_at_fence", Maybe(fence.height_at_fence)),
+        ("margin", Maybe(fence.margin)),
+        ("outcome", Text(fence.outcome.name())),
+        ("park", Text(park_code(job, setup))),
+    ];
+    let flight = [
+        ("apex", Number(flight.apex)),
+        ("direction", Number(flight.direction)),
+        ("flight_time", Number(flight.flight_time)),
+        ("landed", Flag(flight.landed)),
+        ("landing_angle", Number(flight.landing_angle)),
+        ("range", Maybe(flight.landed.then_some(flight.range))),
+    ];
+    let launch = [
+        ("angle", Number(launch.angle)),
+        ("direction", Number(launch.direction)),
+        ("sidespin", Number(launch.sidespin)),
+        ("speed", Number(launch.speed)),
+        ("spin", Number(launch.spin)),
+    ];
+    let codes = |out: &mut Vec<u8>| {
+        let parks = setup.parks.parks.iter().zip(cleared);
+        let mut open = b'[';
+        for (park, _) in parks.filter(|(_, c)| **c) {
+            out.push(open);
+            open = b',';
+            let _ = serde_json::to_writer(&mut *out, &park.code);
+        }
+        if open == b'[' {
+            out.push(open);
+        }
+        out.push(b']');
+    };
+    let parks = [
+        ("cleared", Count(flown.parks_cleared)),
+        ("codes", With(&codes)),
+    ];
+    let statcast = job.statcast.map(|measured| {
+        [
+            ("difference", Maybe(difference(job, flown))),
+            ("distance", Number(measured)),
+        ]
     });
-    if let Some(measured) = job.statcast {
-        json["statcast"] = serde_json::json!({
-            "distance": measured,
-            "difference": difference(job, flown),
-        });
+    let kept = |out: &mut Vec<u8>| kept_object(out, &setup.keep, kept);
+    let members = [
+        Some(("clears_fence", Flag(flown.clearing.clears()))),
+        Some(("fence", Object(&fence))),
+        Some(("flight", Object(&flight))),
+        (!setup.keep.is_empty()).then_some(("kept", With(&kept))),
+        Some(("launch", Object(&launch))),
+        Some(("line", Count(job.line))),
+        Some(("parks", Object(&parks))),
+        Some(("spin_estimated", Flag(job.launch.estimates_spin()))),
+        statcast.as_ref().map(|s| ("statcast", Object(s))),
+    ];
+    write_object(out, members.iter().flatten());
+    out.push(b'\n');
+}
+
+/// A value of the batch's JSON line, written as `serde_json` writes it.
+enum Member<'a> {
+    /// A number (`null` if not finite, as a `serde_json::Value` holds it).
+    Number(f64),
+    Maybe(Option<f64>),
+    Flag(bool),
+    Count(usize),
+    Text(&'a str),
+    /// Members, their keys in order (plain words).
+    Object(&'a [(&'a str, Member<'a>)]),
+    /// Written by the function.
+    With(&'a dyn Fn(&mut Vec<u8>)),
+}
+
+fn write_object<'a>(out: &mut Vec<u8>, members: impl Iterator<Item = &'a (&'a str, Member<'a>)>) {
+    let mut open = b'{';
+    for (key, member) in members {
+        out.push(open);
+        open = b',';
+        out.push(b'"');
+        out.extend_from_slice(key.as_bytes());
+        out.extend_from_slice(b"\":");
+        // Into a Vec, serde_json cannot fail.
+        let _ = match member {
+            Member::Number(x) => serde_json::to_writer(&mut *out, x),
+            Member::Maybe(x) => serde_json::to_writer(&mut *out, x),
+            Member::Flag(x) => serde_json::to_writer(&mut *out, x),
+            Member::Count(x) => serde_json::to_writer(&mut *out, x),
+            Member::Text(x) => serde_json::to_writer(&mut *out, x),
+            Member::Object(members) => {
+                write_object(out, members.iter());
+                Ok(())
+            }
+            Member::With(write) => {
+                write(out);
+                Ok(())
+            }
+        };
     }
-    if !kept.is_empty() {
-        json["kept"] = setup
-            .keep
+    out.push(b'}');
+}
+
+/// The kept cells as a map by column name: in name order, a repeated
+/// name's last cell.
+fn kept_object(out: &mut Vec<u8>, names: &[String], kept: &[&str]) {
+    let mut last: Option<&str> = None;
+    let mut open = b'{';
+    loop {
+        let mut next: Option<(&str, &str)> = None;
+        for (name, cell) in names.iter().zip(kept) {
+            let name = name.as_str();
+            if last.is_some_and(|last| name <= last) {
+                continue;
+            }
+            match next {
+                Some((least, _)) if name > least => {}
+                _ => next = Some((name, cell)),
+            }
+        }
+        let Some((name, cell)) = next else { break };
+        out.push(open);
+        open = b',';
+        let _ = serde_json::to_writer(&mut *out, name);
+        out.push(b':');
+        let _ = serde_json::to_writer(&mut *out, cell);
+        last = Some(name);
+    }
+    if open == b'{' {
+        out.push(open);
+    }
+    out.push(b'}');
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::savant::RowLaunch;
+    use crate::cli::ground::clearing_json;
+    use crate::model::clearing::{Clearing, Outcome};
+    use crate::model::flight::FlightSummary;
+    use crate::model::launch::BattedBall;
+    use crate::model::park::FenceAt;
+    use crate::preset::Fence;
+
+    /// The line as a tree of values made it (the batch's JSON before it was
+    /// written in place).
+    fn json_value_line(
+        job: &Job,
+        flown: &RowFlight,
+        cleared: &[bool],
+        kept: &[&str],
+        setup: &Setup,
+    ) -> String {
+        let (launch, flight) = (&flown.launch, &flown.flight);
+        let codes: Vec<&str> = setup
+            .parks
+            .parks
             .iter()
-            .zip(kept)
-            .map(|(name, value)| (name.clone(), serde_json::Value::from(*value)))
-            .collect::<serde_json::Map<_, _>>()
-            .into();
+            .zip(cleared)
+            .filter(|(_, c)| **c)
+            .map(|(p, _)| p.code.as_str())
+            .collect();
+        let mut json = serde_json::json!({
+            "line": job.line,
+            "launch": launch,
+            "flight": {
+                "range": flight.landed.then_some(flight.range),
+                "direction": flight.direction,
+                "flight_time": flight.flight_time,
+                "apex": flight.apex,
+                "landing_angle": flight.landing_angle,
+                "landed": flight.landed,
+            },
+            "clears_fence": flown.clearing.clears(),
+            "fence": clearing_json(park_code(job, setup), &flown.clearing),
+            "parks": {
+                "cleared": flown.parks_cleared,
+                "codes": codes,
+            },
+            "spin_estimated": job.launch.estimates_spin(),
+        });
+        if let Some(measured) = job.statcast {
+            json["statcast"] = serde_json::json!({
+                "distance": measured,
+                "difference": difference(job, flown),
+            });
+        }
+        if !kept.is_empty() {
+            json["kept"] = setup
+                .keep
+                .iter()
+                .zip(kept)
+                .map(|(name, value)| (name.clone(), serde_json::Value::from(*value)))
+                .collect::<serde_json::Map<_, _>>()
+                .into();
+        }
+        json.to_string() + "\n"
     }
-    json.to_string() + "\n"
+
+    #[test]
+    fn json_lines_are_what_a_tree_of_values_wrote() {
+        let parks = crate::preset::parks::all(None).unwrap();
+        let preset = crate::preset::load("fly-ball", None).unwrap();
+        let mut setup = Setup::new(&preset, &parks);
+        let odd = [
+            0.0,
+            -0.0,
+            1e-300,
+            127.42651234,
+            -3.5e12,
+            f64::NAN,
+            f64::INFINITY,
+        ];
+        let mut next = crate::numerics::xorshift::uniform(0x5eed_1234_abcd_0042);
+        let mut lines = 0;
+        for k in 0..400 {
+            let mut pick = || {
+                let u = next();
+                if u < 0.3 {
+                    odd[(u * 100.0) as usize % odd.len()]
+                } else {
+                    (u - 0.6) * 10f64.powi((u * 1e4) as i32 % 9 - 3)
+                }
+            };
+            let job = Job {
+                line: k * 7 + 2,
+                scene: preset.scene,
+                launch: RowLaunch {
+                    estimate_backspin: k % 3 == 0,
+                    ..RowLaunch::default()
+                },
+                fence: Fence::generic(),
+                park: (k % 4 != 0).then_some(k % parks.parks.len()),
+                statcast: (k % 5 != 0).then(&mut pick),
+                hang_time: None,
+                apex: None,
+                kept: 0..0,
+                given: setup.given,
+            };
+            let flown = RowFlight {
+                launch: BattedBall {
+                    speed: pick(),
+                    angle: pick(),
+                    spin: pick(),
+                    direction: pick(),
+                    sidespin: pick(),
+                },
+                flight: FlightSummary {
+                    range: pick(),
+                    direction: pick(),
+                    flight_time: pick(),
+                    apex: pick(),
+                    apex_distance: pick(),
+                    landing_speed: pick(),
+                    landing_angle: pick(),
+                    landed: k % 7 != 3,
+                    stats: Default::default(),
+                },
+                clearing: Clearing {
+                    outcome: [
+                        Outcome::Clears,
+                        Outcome::OffTheWall,
+                        Outcome::Short,
+                        Outcome::Foul,
+                    ][k % 4],
+                    margin: (k % 6 != 1).then(&mut pick),
+                    direction: pick(),
+                    wall: (k % 4 != 3).then(|| FenceAt {
+                        distance: pick(),
+                        height: pick(),
+                    }),
+                    height_at_fence: (k % 3 == 1).then(&mut pick),
+                },
+                parks_cleared: k % 31,
+                cleared_from: 0,
+                flights: 0,
+            };
+            let cleared: Vec<bool> = (0..parks.parks.len()).map(|p| (p * k) % 3 == 1).collect();
+            // Kept cells: none, one, repeated names (the last cell wins),
+            // names out of order, text to escape.
+            let keeps: [&[(&str, &str)]; 4] = [
+                &[],
+                &[("des", "homers, to \"left\"\n")],
+                &[
+                    ("zeta", "1"),
+                    ("alpha", "é\u{1}"),
+                    ("zeta", "2"),
+                    ("mid", ""),
+                ],
+                &[("b\"q", "\\"), ("a", "x"), ("a", "y"), ("a", "z")],
+            ];
+            let pairs = keeps[k % keeps.len()];
+            setup.keep = pairs.iter().map(|(name, _)| name.to_string()).collect();
+            let kept: Vec<&str> = pairs.iter().map(|(_, cell)| *cell).collect();
+            let mut out = b"before\n".to_vec();
+            json_line(&mut out, &job, &flown, &cleared, &kept, &setup);
+            let expected = json_value_line(&job, &flown, &cleared, &kept, &setup);
+            assert_eq!(
+                String::from_utf8(out).unwrap(),
+                format!("before\n{expected}")
+            );
+            lines += 1;
+        }
+        assert_eq!(lines, 400);
+    }
 }

@@ -173,8 +173,7 @@ impl Piece {
             if context.printed.json {
                 let parks = setup.parks.parks.len();
                 let cleared = &self.scratch.cleared[flown.cleared_from..][..parks];
-                let line = json_line(job, flown, cleared, &kept, setup);
-                self.out.extend_from_slice(line.as_bytes());
+                json_line(&mut self.out, job, flown, cleared, &kept, setup);
             } else {
                 csv.write(&mut self.out, job, flown, &kept);
             }
