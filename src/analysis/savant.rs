@@ -16,7 +16,7 @@ use crate::model::flight::{FlightOptions, FlightSummary};
 use crate::model::frame;
 use crate::model::launch::SceneFlight;
 use crate::model::many;
-use crate::model::scene::Scene;
+use crate::model::scene::{Scene, SceneKind};
 use crate::model::spin_estimate::{SIDESPIN_PER_DIRECTION, Side, nathan_spin};
 
 /// Savant's hit coordinates (hc_x, hc_y) of home plate: the constants of
@@ -120,6 +120,16 @@ pub fn launch(
             Ok(Launched { scene, flights: 0 })
         }
     }
+}
+
+/// Whether [`launch`] leaves `scene` as it is: a batted ball whose launch
+/// is complete, with no spray to take and no spin to estimate (a batch row
+/// that gives its whole launch), so that a caller may skip it.
+pub fn launches_as_given(scene: &Scene, row: &RowLaunch) -> bool {
+    row.spray.is_none()
+        && !row.estimates_spin()
+        && scene.kind == SceneKind::BattedBall
+        && scene.launch.is_complete()
 }
 
 /// Launches toward `direction`, with the spin the estimate gives there
@@ -257,6 +267,10 @@ pub fn launch_many<'s>(
                 // Its place, filled once solved.
                 launched.push(Err(SolveError::NotLanded { spray: bearing }));
             }
+            _ if launches_as_given(scene, row) => launched.push(Ok(Launched {
+                scene: *scene,
+                flights: 0,
+            })),
             _ => launched.push(launch(scene, row, spray, options)),
         }
     }
@@ -296,7 +310,9 @@ pub fn launch_many<'s>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::analysis::precision::Purpose;
     use crate::model::launch::BattedBall;
+    use crate::model::scene::GivenLaunch;
     use crate::model::spin_estimate::Side;
     use crate::numerics::ode::Tolerance;
 
@@ -310,6 +326,60 @@ mod tests {
         // The committed sample's first row (Encarnación, to left-centre).
         let left = spray_angle(64.80, 47.78).to_degrees();
         assert!((left + 21.94).abs() < 0.01, "{left}");
+    }
+
+    #[test]
+    fn a_launch_taken_as_given_is_what_launch_leaves() {
+        let options = Purpose::Readout.flight_options();
+        let mut complete = Scene::default();
+        complete.set_kind(SceneKind::BattedBall);
+        complete.launch = GivenLaunch {
+            speed: Some(44.0),
+            angle: Some(0.45),
+            spin: Some(-0.0),
+            direction: Some(-0.2),
+            sidespin: Some(35.0),
+        };
+        let mut partial = complete;
+        partial.launch.sidespin = None;
+        let plain = RowLaunch::default();
+        let rows = [
+            plain,
+            RowLaunch {
+                spray: Some(0.1),
+                ..plain
+            },
+            RowLaunch {
+                estimate_sidespin: true,
+                ..plain
+            },
+            RowLaunch {
+                side: Some(Side::Left),
+                ..plain
+            },
+        ];
+        let mut given = 0;
+        for scene in [complete, partial, Scene::default()] {
+            for (row, spray) in rows
+                .iter()
+                .flat_map(|r| [(r, Spray::Launch), (r, Spray::Landing)])
+            {
+                if row.spray.is_some() && spray == Spray::Landing {
+                    continue; // solved: never taken as given
+                }
+                let launched = launch(&scene, row, spray, &options).unwrap();
+                if launches_as_given(&scene, row) {
+                    given += 1;
+                    // To the bit: the scene, and no flight spent.
+                    let bits = |s: &Scene| s.launch.values().map(|v| v.map(f64::to_bits));
+                    assert_eq!(bits(&launched.scene), bits(&scene));
+                    assert_eq!((launched.scene, launched.flights), (scene, 0));
+                } else {
+                    assert!(row.spray.is_some() || row.estimates_spin() || scene != complete);
+                }
+            }
+        }
+        assert_eq!(given, 4);
     }
 
     #[test]

@@ -131,11 +131,9 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
                     (line, &text),
                     (&mut fields, &mut kept),
                     None,
+                    &mut jobs,
                 ) {
-                    Row::Job(job) => {
-                        rows += 1;
-                        jobs.push(job);
-                    }
+                    Row::Job => rows += 1,
                     Row::Blank => {}
                     Row::Bad { .. } | Row::NoLaunch => {
                         rows += 1;

@@ -19,20 +19,162 @@ const SCALE: [f64; 10] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
 /// product's rounding error (under 2^-3 here) stays far from the half.
 const LARGEST_SCALED: f64 = (1u64 << 50) as f64;
 
+/// 2^52, where a double's units are its last bit.
+const TWO_52: f64 = (1u64 << 52) as f64;
+
 /// Appends `value` with `decimals` decimals, as `format!("{value:.decimals$}")`.
 pub(super) fn write(out: &mut Vec<u8>, value: f64, decimals: usize) {
-    if let Some(&scale) = SCALE.get(decimals) {
-        let scaled = value.abs() * scale;
-        let whole = round(scaled);
-        // The product's error is at most half an ulp of `scaled`; a value
-        // farther than that from a half rounds the same either way.
-        let clear = (scaled - whole).abs() < 0.5 - scaled * f64::EPSILON;
-        if scaled < LARGEST_SCALED && clear {
-            write_scaled(out, value.is_sign_negative(), whole as u64, decimals);
-            return;
-        }
+    dispatch(out, value, decimals, None);
+}
+
+/// [`write`], then the byte `then` (a row's comma): one append for both.
+pub(super) fn write_then(out: &mut Vec<u8>, value: f64, decimals: usize, then: u8) {
+    dispatch(out, value, decimals, Some(then));
+}
+
+/// [`write_then`] if `then` is given, else [`write`].
+pub(super) fn write_maybe_then(out: &mut Vec<u8>, value: f64, decimals: usize, then: Option<u8>) {
+    match then {
+        Some(then) => write_then(out, value, decimals, then),
+        None => write(out, value, decimals),
     }
+}
+
+#[inline(always)]
+fn dispatch(out: &mut Vec<u8>, value: f64, decimals: usize, then: Option<u8>) {
+    // Each count of decimals compiled apart: its power of ten and digit
+    // loop are constants.
+    match decimals {
+        0 => write_with::<0>(out, value, then),
+        1 => write_with::<1>(out, value, then),
+        2 => write_with::<2>(out, value, then),
+        3 => write_with::<3>(out, value, then),
+        4 => write_with::<4>(out, value, then),
+        5 => write_with::<5>(out, value, then),
+        6 => write_with::<6>(out, value, then),
+        7 => write_with::<7>(out, value, then),
+        8 => write_with::<8>(out, value, then),
+        9 => write_with::<9>(out, value, then),
+        _ => by_format(out, value, decimals, then),
+    }
+}
+
+/// [`write`] with `D` decimals (at most 9), then `then` if given: inlined
+/// where `D` is known (a column's decimals in SI), with no call but the
+/// rare fallback's.
+#[inline(always)]
+pub(super) fn write_with<const D: usize>(out: &mut Vec<u8>, value: f64, then: Option<u8>) {
+    match text::<D>(value) {
+        Some(Text { mut room, mut len }) => {
+            if let Some(then) = then {
+                room[len] = then;
+                len += 1;
+            }
+            // The whole room copied (a fixed size: a few moves, no call),
+            // then cut to the text: cheaper than a copy of its length.
+            let at = out.len();
+            out.extend_from_slice(&room);
+            out.truncate(at + len);
+        }
+        None => by_format(out, value, D, then),
+    }
+}
+
+/// The standard library's text, out of the common path.
+#[cold]
+#[inline(never)]
+fn by_format(out: &mut Vec<u8>, value: f64, decimals: usize, then: Option<u8>) {
     let _ = write!(out, "{value:.decimals$}");
+    out.extend(then);
+}
+
+/// Bytes a number's text may take here, and the byte after it: a sign, 16
+/// digits before the point (the scaled value stays below 2^50 < 10^16), the
+/// point and 9 decimals.
+const ROOM: usize = 32;
+
+/// A number's text at the start of a fixed room.
+struct Text {
+    room: [u8; ROOM],
+    len: usize,
+}
+
+/// Powers of ten as integers, for splitting the scaled value at its point.
+const POWERS: [u64; 17] = {
+    let mut powers = [1u64; 17];
+    let mut i = 1;
+    while i < powers.len() {
+        powers[i] = powers[i - 1] * 10;
+        i += 1;
+    }
+    powers
+};
+
+/// "00", "01", … "99": two digits a lookup.
+const DIGIT_PAIRS: [u8; 200] = {
+    let mut pairs = [0u8; 200];
+    let mut i = 0;
+    while i < 100 {
+        pairs[2 * i] = b'0' + (i / 10) as u8;
+        pairs[2 * i + 1] = b'0' + (i % 10) as u8;
+        i += 1;
+    }
+    pairs
+};
+
+/// `value` with `D` decimals, if the scaled value's rounding is clear (see
+/// the module's note); `None` for the standard library to write.
+#[inline(always)]
+fn text<const D: usize>(value: f64) -> Option<Text> {
+    let scaled = value.abs() * SCALE[D];
+    // Below 2^52, adding 2^52 leaves no bits for a fraction: the sum is the
+    // scaled value rounded to an integer (to even at a half, which the
+    // test below rules out), and its last bits are that integer.
+    let shifted = scaled + TWO_52;
+    let whole = shifted - TWO_52;
+    // The product's error is at most half an ulp of `scaled`; a value
+    // farther than that from a half rounds the same either way.
+    let clear = (scaled - whole).abs() < 0.5 - scaled * f64::EPSILON;
+    if !(scaled < LARGEST_SCALED && clear) {
+        return None;
+    }
+    let whole = shifted.to_bits() - TWO_52.to_bits();
+    let (mut integer, mut fraction) = (whole / POWERS[D], whole % POWERS[D]);
+    let mut room = [0u8; ROOM];
+    // `format!` keeps the sign of a negative value that rounds to zero,
+    // and of −0.0. Without one, the first digit overwrites it.
+    room[0] = b'-';
+    let sign = usize::from(value.is_sign_negative());
+    let mut digits = 1;
+    while digits < POWERS.len() && integer >= POWERS[digits] {
+        digits += 1;
+    }
+    let point = sign + digits;
+    let len = if D == 0 { point } else { point + 1 + D };
+    let mut at = len;
+    for _ in 0..D / 2 {
+        at -= 2;
+        let pair = 2 * (fraction % 100) as usize;
+        fraction /= 100;
+        room[at..at + 2].copy_from_slice(&DIGIT_PAIRS[pair..pair + 2]);
+    }
+    if D % 2 == 1 {
+        room[point + 1] = b'0' + fraction as u8;
+    }
+    if D > 0 {
+        room[point] = b'.';
+    }
+    at = point;
+    while integer >= 10 {
+        at -= 2;
+        let pair = 2 * (integer % 100) as usize;
+        integer /= 100;
+        room[at..at + 2].copy_from_slice(&DIGIT_PAIRS[pair..pair + 2]);
+    }
+    if at > sign {
+        room[sign] = b'0' + integer as u8;
+    }
+    Some(Text { room, len })
 }
 
 /// `x.round()` (half away from zero; ±0 alike), without its library call
@@ -52,31 +194,6 @@ pub(super) fn round(x: f64) -> f64 {
         }
     } else {
         x.round()
-    }
-}
-
-/// `digits` / 10^decimals, signed as `negative` says (`format!` keeps the
-/// sign of a negative value that rounds to zero, and of −0.0).
-fn write_scaled(out: &mut Vec<u8>, negative: bool, digits: u64, decimals: usize) {
-    if negative {
-        out.push(b'-');
-    }
-    let mut text = itoa::Buffer::new();
-    let text = text.format(digits).as_bytes();
-    if decimals == 0 {
-        out.extend_from_slice(text);
-        return;
-    }
-    if text.len() > decimals {
-        let (whole, fraction) = text.split_at(text.len() - decimals);
-        out.extend_from_slice(whole);
-        out.push(b'.');
-        out.extend_from_slice(fraction);
-    } else {
-        // 5 at 3 decimals is 0.005.
-        out.extend_from_slice(b"0.");
-        out.extend(std::iter::repeat_n(b'0', decimals - text.len()));
-        out.extend_from_slice(text);
     }
 }
 
@@ -172,6 +289,47 @@ mod tests {
                 agrees(value, decimals);
             }
         }
+    }
+
+    #[test]
+    fn every_count_of_digits_prints_as_format_prints_it() {
+        // Each length of the integer part (1 to 16 digits, the last below
+        // 2^50 scaled), at and next to the powers of ten where it grows,
+        // and values that round up into one more digit (9.9995 → 10.000).
+        for decimals in 0..=10 {
+            for digits in 0..17 {
+                let power = 10f64.powi(digits);
+                for value in [
+                    power,
+                    power - 1.0,
+                    power * 1.234_567_89,
+                    power - 0.5 / SCALE[decimals.min(9)],
+                    power - 0.4 / SCALE[decimals.min(9)],
+                    power - 0.6 / SCALE[decimals.min(9)],
+                ] {
+                    agrees(value, decimals);
+                    agrees(-value, decimals);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn what_follows_a_number_is_appended_whole() {
+        let mut out = b"x,".to_vec();
+        write_then(&mut out, 127.42651, 3, b',');
+        write_then(&mut out, -0.0, 6, b',');
+        write_then(&mut out, 1e300, 2, b',');
+        write_then(&mut out, 2.5, 12, b';');
+        // The longest text written here: a sign, 16 digits and 9 decimals.
+        write_then(&mut out, -(LARGEST_SCALED - 1.0) / 1e9, 9, b'z');
+        write(&mut out, f64::NAN, 4);
+        let expected = format!(
+            "x,127.427,-0.000000,{:.2},2.500000000000;{:.9}zNaN",
+            1e300,
+            -(LARGEST_SCALED - 1.0) / 1e9
+        );
+        assert_eq!(String::from_utf8(out).unwrap(), expected);
     }
 
     #[test]

@@ -23,6 +23,9 @@ use crate::model::scene::{GivenLaunch, SceneKind};
 #[derive(Default)]
 pub(super) struct SwingLaunches {
     known: Vec<(Scene, Option<[f64; 5]>)>,
+    /// The same, for rows whose scene but its launch is their park's (or
+    /// the preset's, at no park): known by the park, not compared whole.
+    by_park: Vec<(Option<usize>, Option<[f64; 5]>)>,
 }
 
 /// More swings than this in a piece: the rows vary their swing (columns of
@@ -32,19 +35,32 @@ const MAX_SWINGS: usize = 32;
 impl SwingLaunches {
     /// `scene` (a batch row's, its launch columns set) validated as
     /// [`Scene::validate`] validates it, and, where its swing is known,
-    /// given the launch values it leaves to the swing.
-    pub(super) fn validate(&mut self, scene: &mut Scene) -> Result<(), InputError> {
+    /// given the launch values it leaves to the swing. With `by_park`, the
+    /// scene but its launch is known to be the one every row at that park
+    /// has (the header's columns give nothing else: [`super::rows::Header`]).
+    pub(super) fn validate(
+        &mut self,
+        scene: &mut Scene,
+        by_park: Option<Option<usize>>,
+    ) -> Result<(), InputError> {
         if scene.kind != SceneKind::BattedBall {
             return scene.validate();
         }
-        let swing = Scene {
+        let swing = || Scene {
             launch: GivenLaunch::default(),
             ..*scene
         };
+        let known = match by_park {
+            Some(park) => self.by_park.iter().find(|(p, _)| *p == park).map(|k| k.1),
+            None => {
+                let swing = swing();
+                self.known.iter().find(|(s, _)| *s == swing).map(|k| k.1)
+            }
+        };
         let complete = scene.launch.is_complete();
-        if let Some((_, own)) = self.known.iter().find(|(known, _)| *known == swing) {
+        if let Some(own) = known {
             match own {
-                Some(own) => fill(&mut scene.launch, own),
+                Some(own) => fill(&mut scene.launch, &own),
                 // A launch the swing cannot give, and the row needs some
                 // of it: `validate` names what is out of bounds.
                 None if !complete => return scene.validate(),
@@ -58,6 +74,7 @@ impl SwingLaunches {
         scene.validate()?;
         // The swing's own launch, every value of it (the row's scene would
         // mix in the values it gives).
+        let swing = swing();
         let own = swing.batted_ball();
         let own = [own.speed, own.angle, own.spin, own.direction, own.sidespin];
         // Out of bounds, the swing's launch is an error where it is used (a
@@ -67,8 +84,10 @@ impl SwingLaunches {
             .zip(own)
             .all(|(k, v)| k.bounds.contains(v));
         let own = in_bounds.then_some(own);
-        if self.known.len() < MAX_SWINGS {
-            self.known.push((swing, own));
+        match by_park {
+            Some(park) if self.by_park.len() < MAX_SWINGS => self.by_park.push((park, own)),
+            None if self.known.len() < MAX_SWINGS => self.known.push((swing, own)),
+            _ => {}
         }
         if let Some(own) = own {
             fill(&mut scene.launch, &own);
@@ -124,7 +143,7 @@ mod tests {
             for (k, given) in rows.iter().enumerate() {
                 let alone = row(given, tilted);
                 let mut filled = alone;
-                assert_eq!(swings.validate(&mut filled), alone.validate());
+                assert_eq!(swings.validate(&mut filled, None), alone.validate());
                 // Filled (the first row's from its own swing, solved once;
                 // the others' from it), to the bit what its own swing gives.
                 assert!(filled.launch.is_complete(), "{k}");
@@ -142,14 +161,52 @@ mod tests {
     }
 
     #[test]
+    fn swings_known_by_park_are_the_swings_compared_whole() {
+        // Rows whose scene but the launch is their park's (in its air):
+        // known by the park, each row is validated and filled as when its
+        // swing is compared whole, and as alone, error for error.
+        let parks = crate::preset::parks::all(None).unwrap();
+        let given = crate::model::park::GivenWeather::default();
+        let (mut by_park, mut whole) = (SwingLaunches::default(), SwingLaunches::default());
+        let launches = [
+            vec![("launch.speed", 40.0), ("launch.angle", 0.4)],
+            vec![("launch.speed", 44.0)],
+            vec![("launch.speed", 0.0), ("launch.angle", 0.2)],
+            vec![("launch.angle", 0.6), ("launch.spin", 150.0)],
+        ];
+        for (k, park) in [None, Some(3), Some(17), Some(3), None, Some(17)]
+            .into_iter()
+            .cycle()
+            .take(24)
+            .enumerate()
+        {
+            let mut alone = row(&launches[k % launches.len()], false);
+            if let Some(index) = park {
+                given.park_air(&mut alone.environment, parks.parks[index].elevation);
+            }
+            let (mut a, mut b) = (alone, alone);
+            let expected = alone.validate();
+            assert_eq!(by_park.validate(&mut a, Some(park)), expected, "{k}");
+            assert_eq!(whole.validate(&mut b, None), expected, "{k}");
+            // A row refused is dropped, whatever was filled in.
+            if expected.is_ok() {
+                assert_eq!(a, b, "{k}");
+            }
+        }
+        assert_eq!(by_park.known.len(), 0);
+        assert!(by_park.by_park.len() >= 3);
+        assert_eq!(whole.by_park.len(), 0);
+    }
+
+    #[test]
     fn another_swing_or_a_bad_launch_is_judged_as_alone() {
         let mut swings = SwingLaunches::default();
         let mut first = row(&[("launch.speed", 40.0)], false);
-        swings.validate(&mut first).unwrap();
+        swings.validate(&mut first, None).unwrap();
         // Another swing: solved for itself, and known from then on.
         let mut other = row(&[("launch.speed", 40.0), ("bat.speed", 33.0)], false);
         let alone = other;
-        assert_eq!(swings.validate(&mut other), Ok(()));
+        assert_eq!(swings.validate(&mut other, None), Ok(()));
         assert_eq!(other.batted_ball(), alone.batted_ball());
         assert_eq!(swings.known.len(), 2, "{:?}", other.batted_ball());
         // A launch value out of its bounds is named as `validate` names it.
@@ -157,7 +214,7 @@ mod tests {
         bad.launch.angle = Some(3.0);
         let expected = bad.validate();
         assert!(expected.is_err());
-        assert_eq!(swings.validate(&mut bad), expected);
+        assert_eq!(swings.validate(&mut bad, None), expected);
         // A complete launch (a 3-D row): checked as `validate` checks it,
         // with or without a value out of bounds.
         let complete = [
@@ -172,7 +229,7 @@ mod tests {
             let expected = row.validate();
             assert_eq!(expected.is_ok(), sidespin < 1e3);
             let alone = row;
-            assert_eq!(swings.validate(&mut row), expected);
+            assert_eq!(swings.validate(&mut row, None), expected);
             assert_eq!(row, alone);
         }
         assert_eq!(swings.known.len(), 2);

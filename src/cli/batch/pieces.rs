@@ -13,7 +13,7 @@ use rayon::prelude::*;
 use super::flights::{Printed, RowFlight, Scratch, fly_chunk};
 use super::output::{CsvLine, json_line};
 use super::own_launch::SwingLaunches;
-use super::records::{Fields, MAX_RECORD_BYTES, Records, Span, Stop};
+use super::records::{Fields, MAX_RECORD_BYTES, RecordTexts, Records, Span, Stop};
 use super::rows::{Header, Job, Row, parse_row};
 use super::savant_columns::{Setup, Summary};
 use crate::cli::progress::Progress;
@@ -116,15 +116,11 @@ impl Piece {
         self.kept.clear();
         (self.flown_rows, self.without_launch, self.empty) = (0, 0, 0);
         self.summary = Summary::new(setup.parks.parks.len());
+        let texts = RecordTexts::new(text, spans);
         for span in spans {
             let row = match *span {
                 Span::Text { line, start, end } => {
-                    // As `from_utf8_lossy`, by the faster check first.
-                    let bytes = &text[start..end];
-                    let record = match std::str::from_utf8(bytes) {
-                        Ok(text) => std::borrow::Cow::Borrowed(text),
-                        Err(_) => String::from_utf8_lossy(bytes),
-                    };
+                    let record = texts.get(start, end);
                     // With --own-air each park's flight takes the launch
                     // its swing gives in that park's air: left to it.
                     let swings = (!setup.own_air).then_some(&mut self.swings);
@@ -134,6 +130,7 @@ impl Piece {
                         (line, &record),
                         (&mut self.fields, &mut self.kept),
                         swings,
+                        &mut self.jobs,
                     )
                 }
                 Span::TooLong { line } => Row::Bad {
@@ -143,7 +140,7 @@ impl Piece {
                 Span::End => continue,
             };
             match row {
-                Row::Job(job) => self.jobs.push(job),
+                Row::Job => {}
                 Row::Bad { line, reason } => self.failed.push((line, reason)),
                 Row::NoLaunch => self.without_launch += 1,
                 Row::Blank => self.empty += 1,
@@ -176,8 +173,7 @@ impl Piece {
             if context.printed.json {
                 let parks = setup.parks.parks.len();
                 let cleared = &self.scratch.cleared[flown.cleared_from..][..parks];
-                let line = json_line(job, flown, cleared, &kept, setup);
-                self.out.extend_from_slice(line.as_bytes());
+                json_line(&mut self.out, job, flown, cleared, &kept, setup);
             } else {
                 csv.write(&mut self.out, job, flown, &kept);
             }

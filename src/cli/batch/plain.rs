@@ -22,25 +22,36 @@ pub(super) fn plain_decimal(text: &str) -> Option<f64> {
         b'+' => (false, &bytes[1..]),
         _ => (false, bytes),
     };
-    let (mut integer, mut digits, mut point) = (0u64, 0usize, None);
-    for (i, &byte) in rest.iter().enumerate() {
-        match byte {
-            b'0'..=b'9' => {
-                integer = integer * 10 + u64::from(byte - b'0');
-                digits += 1;
-                if digits > MAX_DIGITS {
-                    return None;
-                }
-            }
-            // A point between digits.
-            b'.' if point.is_none() && i > 0 && i + 1 < rest.len() => point = Some(digits),
-            _ => return None,
-        }
-    }
-    if digits == 0 {
+    // 15 digits and a point at most: the integer cannot overflow below.
+    if rest.len() > MAX_DIGITS + 1 {
         return None;
     }
-    let decimals = point.map_or(0, |whole| digits - whole);
+    let mut integer = 0u64;
+    let mut digits = |part: &[u8]| {
+        for &byte in part {
+            let digit = byte.wrapping_sub(b'0');
+            if digit >= 10 {
+                return false;
+            }
+            integer = integer * 10 + u64::from(digit);
+        }
+        true
+    };
+    // Digits, or digits, a point and digits.
+    let decimals = match rest.iter().position(|&b| b == b'.') {
+        None if !rest.is_empty() && digits(rest) => 0,
+        Some(point) if point > 0 && point + 1 < rest.len() => {
+            let (whole, fraction) = (&rest[..point], &rest[point + 1..]);
+            if !(digits(whole) && digits(fraction)) {
+                return None;
+            }
+            fraction.len()
+        }
+        _ => return None,
+    };
+    if rest.len() - usize::from(decimals > 0) > MAX_DIGITS {
+        return None;
+    }
     let magnitude = integer as f64 / POWERS[decimals];
     Some(if negative { -magnitude } else { magnitude })
 }
@@ -95,6 +106,15 @@ mod tests {
             "0x10",
             "1,5",
             "--1",
+            "1..2",
+            "12.",
+            "1 2",
+            "1\u{e9}",
+            "\u{e9}1",
+            "1:5",
+            "1/5",
+            "0.000000000000000",
+            "123456789012345.6",
         ] {
             assert_eq!(plain_decimal(text), None, "{text}");
         }

@@ -2,6 +2,7 @@
 //! one bounded record: a line end inside quotes continues the record, and a
 //! record over [`MAX_RECORD_BYTES`] is dropped.
 
+use std::borrow::Cow;
 use std::io::{self, BufRead};
 
 /// The longest record (line) read, in bytes: a 90-column Statcast row is
@@ -24,67 +25,165 @@ pub(super) fn split_fields(text: &str) -> Result<Vec<String>, &'static str> {
 /// mean it), where csv reads the quote as text and finds three.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Fields {
+    /// The record as read; after it, the fields that had to be rebuilt (a
+    /// doubled quote, text after a closing quote).
     text: String,
-    /// Where each field ends in `text`.
-    ends: Vec<usize>,
+    /// Where each field lies in `text`: most are a piece of the record as
+    /// it is (a quoted one without its quotes), copied no further.
+    spans: Vec<(usize, usize)>,
 }
 
 impl Fields {
     /// Splits `record`, replacing the fields held.
     pub(super) fn split(&mut self, record: &str) -> Result<(), &'static str> {
         self.text.clear();
-        self.ends.clear();
-        let mut start = 0;
+        self.spans.clear();
+        self.text.push_str(record);
+        if self.commas_unquoted(record.as_bytes()) {
+            // No quotes (a batch's plain rows): the record cut at its commas.
+            return Ok(());
+        }
+        self.spans.clear();
+        let mut next = Some(0);
+        while let Some(at) = next {
+            next = self.field(record, at)?;
+        }
+        Ok(())
+    }
+
+    /// The field of `record` that starts at byte `at`, noted; where the
+    /// next one starts (`None`: this was the last).
+    fn field(&mut self, record: &str, at: usize) -> Result<Option<usize>, &'static str> {
+        let bytes = record.as_bytes();
+        // At once: a field with no quote before its comma, or one quoted
+        // whole (after any spaces) with no quote doubled inside.
+        let special = match bytes.get(at) {
+            Some(b'"') => Some(at),
+            _ => memchr::memchr2(b'"', b',', &bytes[at..]).map(|i| at + i),
+        };
+        match special {
+            None => {
+                self.spans.push((at, bytes.len()));
+                return Ok(None);
+            }
+            Some(comma) if bytes[comma] == b',' => {
+                self.spans.push((at, comma));
+                return Ok(Some(comma + 1));
+            }
+            Some(quote) if record[at..quote].trim().is_empty() => {
+                let open = quote + 1;
+                let Some(close) = memchr::memchr(b'"', &bytes[open..]).map(|i| open + i) else {
+                    return Err(UNTERMINATED);
+                };
+                match bytes.get(close + 1) {
+                    None => {
+                        self.spans.push((open, close));
+                        return Ok(None);
+                    }
+                    Some(b',') => {
+                        self.spans.push((open, close));
+                        return Ok(Some(close + 2));
+                    }
+                    // A doubled quote, or text after the closing one.
+                    Some(_) => {}
+                }
+            }
+            // A quote inside the text.
+            Some(_) => {}
+        }
+        // Rebuilt after the record, a piece at a time: quotes and commas
+        // are ASCII, so the text between them is copied whole.
+        let start = self.text.len();
         let mut quoted = false;
-        let mut rest = record;
-        // Quotes and commas are ASCII: the text between them is copied whole.
-        while let Some(i) = memchr::memchr2(b'"', b',', rest.as_bytes()) {
+        let mut rest = &record[at..];
+        loop {
+            let found = if quoted {
+                memchr::memchr(b'"', rest.as_bytes())
+            } else {
+                memchr::memchr2(b'"', b',', rest.as_bytes())
+            };
+            let Some(i) = found else { break };
             self.text.push_str(&rest[..i]);
             let special = rest.as_bytes()[i];
             rest = &rest[i + 1..];
             match (quoted, special) {
-                (true, b'"') if rest.starts_with('"') => {
+                (true, _) if rest.starts_with('"') => {
                     self.text.push('"');
                     rest = &rest[1..];
                 }
-                (true, b'"') => quoted = false,
-                (true, _) => self.text.push(','),
+                (true, _) => quoted = false,
                 (false, b'"') if self.text[start..].trim().is_empty() => {
                     self.text.truncate(start);
                     quoted = true;
                 }
                 (false, b'"') => self.text.push('"'),
                 (false, _) => {
-                    self.ends.push(self.text.len());
-                    start = self.text.len();
+                    self.spans.push((start, self.text.len()));
+                    return Ok(Some(record.len() - rest.len()));
                 }
             }
         }
         if quoted {
-            return Err("an unterminated quote");
+            return Err(UNTERMINATED);
         }
         self.text.push_str(rest);
-        self.ends.push(self.text.len());
-        Ok(())
+        self.spans.push((start, self.text.len()));
+        Ok(None)
+    }
+
+    /// Notes where `record`'s fields lie, cut at its commas, if it has no
+    /// quote (else `false`, some noted). Eight bytes at a time: a row of
+    /// numbers is mostly digits.
+    fn commas_unquoted(&mut self, record: &[u8]) -> bool {
+        let mut words = record.chunks_exact(8);
+        let (mut at, mut start) = (0, 0);
+        for word in &mut words {
+            let word = u64::from_le_bytes(word.try_into().expect("eight bytes"));
+            if bytes_equal(word, b'"') != 0 {
+                return false;
+            }
+            let mut commas = bytes_equal(word, b',');
+            while commas != 0 {
+                let comma = at + commas.trailing_zeros() as usize / 8;
+                self.spans.push((start, comma));
+                start = comma + 1;
+                commas &= commas - 1;
+            }
+            at += 8;
+        }
+        for (i, &byte) in words.remainder().iter().enumerate() {
+            match byte {
+                b'"' => return false,
+                b',' => {
+                    self.spans.push((start, at + i));
+                    start = at + i + 1;
+                }
+                _ => {}
+            }
+        }
+        self.spans.push((start, record.len()));
+        true
     }
 
     pub(super) fn len(&self) -> usize {
-        self.ends.len()
+        self.spans.len()
     }
 
     /// Adds a field at the end (to keep cells of many rows in one buffer).
     pub(super) fn push(&mut self, field: &str) {
+        let start = self.text.len();
         self.text.push_str(field);
-        self.ends.push(self.text.len());
+        self.spans.push((start, self.text.len()));
     }
 
     pub(super) fn clear(&mut self) {
         self.text.clear();
-        self.ends.clear();
+        self.spans.clear();
     }
 
     /// Field `index`, as `str::trim` leaves it: at once where it starts
     /// and ends with a visible ASCII character (a number, mostly).
+    #[inline(always)]
     pub(super) fn trimmed(&self, index: usize) -> &str {
         let field = self.get(index);
         match (field.as_bytes().first(), field.as_bytes().last()) {
@@ -95,9 +194,62 @@ impl Fields {
         }
     }
 
+    #[inline(always)]
     pub(super) fn get(&self, index: usize) -> &str {
-        let start = if index == 0 { 0 } else { self.ends[index - 1] };
-        &self.text[start..self.ends[index]]
+        let (start, end) = self.spans[index];
+        &self.text[start..end]
+    }
+}
+
+const UNTERMINATED: &str = "an unterminated quote";
+
+/// The high bit of each byte of `word` (little-endian) that is `byte`, the
+/// others clear: exact, as no sum carries from one byte into the next.
+fn bytes_equal(word: u64, byte: u8) -> u64 {
+    const LOW: u64 = 0x7f7f_7f7f_7f7f_7f7f;
+    let zero_where_equal = word ^ (u64::from(byte) * 0x0101_0101_0101_0101);
+    // A byte's high bit: set where the byte's low bits, or its high bit, are.
+    let nonzero = ((zero_where_equal & LOW) + LOW) | zero_where_equal;
+    !(nonzero | LOW)
+}
+
+/// The records of a piece as text, each as `String::from_utf8_lossy` makes
+/// it: their bytes checked once for all (a valid record then being a slice
+/// of them, cut where its neighbours end), not one record at a time.
+pub(super) struct RecordTexts<'a> {
+    bytes: &'a [u8],
+    /// The piece's bytes from its first record's start, if valid UTF-8.
+    valid: Option<(usize, &'a str)>,
+}
+
+impl<'a> RecordTexts<'a> {
+    /// The texts of the records `spans` places in `bytes`.
+    pub(super) fn new(bytes: &'a [u8], spans: &[Span]) -> Self {
+        let places = spans.iter().filter_map(|span| match *span {
+            Span::Text { start, end, .. } => Some((start, end)),
+            _ => None,
+        });
+        let from = places.clone().map(|(start, _)| start).min();
+        let to = places.map(|(_, end)| end).max();
+        let valid = from.zip(to).and_then(|(from, to)| {
+            let text = std::str::from_utf8(&bytes[from..to]).ok()?;
+            Some((from, text))
+        });
+        RecordTexts { bytes, valid }
+    }
+
+    /// The record at `start..end` of the bytes.
+    pub(super) fn get(&self, start: usize, end: usize) -> Cow<'a, str> {
+        // A slice of valid text cut at character boundaries is valid text.
+        let slice = self
+            .valid
+            .and_then(|(from, text)| text.get(start - from..end - from));
+        match slice {
+            Some(text) => Cow::Borrowed(text),
+            // A record whose bytes are not UTF-8, or that ends inside a
+            // character the next one completes.
+            None => String::from_utf8_lossy(&self.bytes[start..end]),
+        }
     }
 }
 

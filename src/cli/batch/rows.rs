@@ -5,7 +5,9 @@
 use crate::Scene;
 use crate::analysis::savant::RowLaunch;
 use crate::model::aero::UnknownModel;
-use crate::model::keys::{DRAG_KEY, InputBatch, InputError, Key, TEXT_KEYS};
+use crate::model::keys::{
+    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, InputBatch, InputError, Key, LAUNCH_KEYS, TEXT_KEYS,
+};
 use crate::model::park::GivenWeather;
 use crate::model::scene::UnknownHand;
 use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
@@ -131,7 +133,7 @@ fn launch_key(index: usize) -> &'static Key {
 }
 
 /// What one input column is.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Column {
     /// A launch value (index into [`LAUNCH_COLUMNS`]), in `Unit`.
     Launch(usize, Unit),
@@ -149,11 +151,36 @@ pub(super) enum Column {
 pub(super) struct Header {
     pub(super) names: Vec<String>,
     pub(super) columns: Vec<Column>,
-    /// Each [`Column::Input`] of a numeric key, that key (looked up once,
-    /// not on every row; set as `set_text` sets it).
-    numeric: Vec<Option<&'static Key>>,
+    /// Each [`Column::Input`], what a row needs of its key (worked out
+    /// once, not on every row).
+    inputs: Vec<Option<InputKey>>,
     /// The columns `--keep` copies, by index (the first of a repeated name).
     pub(super) keep: Vec<usize>,
+    /// The columns a row reads (all but the ignored), by index.
+    read: Vec<usize>,
+    /// The launch columns, by index, and the launch speed's.
+    launch: Vec<usize>,
+    speed: Option<usize>,
+    /// No column gives a row's scene anything but its launch (and its
+    /// park): every row at a park then has the same swing ([`SwingLaunches`]
+    /// knows it by the park).
+    launch_only: bool,
+    /// A column gives `launch.direction` (the hit coordinates then do not).
+    direction_given: bool,
+    /// A column gives a hit coordinate.
+    pub(super) hit_coordinates: bool,
+}
+
+/// An input column's key as a row sets it.
+#[derive(Clone, Copy, Debug)]
+struct InputKey {
+    name: &'static str,
+    /// The key, if it is a number's (looked up once; set as `set_text`
+    /// sets it), not a model's or the hand's.
+    numeric: Option<&'static Key>,
+    /// An air or weather key, which the row's batch and given air note; a
+    /// row sets any other key at once.
+    air: bool,
 }
 
 impl Header {
@@ -188,18 +215,44 @@ impl Header {
             }
             columns.push(column);
         }
-        let numeric = columns
+        let inputs = columns
             .iter()
-            .map(|column| match column {
-                Column::Input(key) if !TEXT_KEYS.contains(key) => Scene::key(key).ok(),
+            .map(|column| match *column {
+                Column::Input(name) => Some(InputKey {
+                    name,
+                    numeric: Some(name)
+                        .filter(|name| !TEXT_KEYS.contains(name))
+                        .and_then(|name| Scene::key(name).ok()),
+                    air: AIR_KEYS.contains(&name) || ATMOSPHERE_KEYS.contains(&name),
+                }),
                 _ => None,
             })
             .collect();
+        let indices = |keep: fn(&Column) -> bool| -> Vec<usize> {
+            (0..columns.len()).filter(|&i| keep(&columns[i])).collect()
+        };
+        let read = indices(|c| !matches!(c, Column::Ignored));
+        let launch = indices(|c| matches!(c, Column::Launch(..)));
+        let speed = indices(|c| matches!(c, Column::Launch(0, _)))
+            .first()
+            .copied();
+        let launch_only = columns.iter().all(|c| match c {
+            Column::Input(key) => LAUNCH_KEYS.iter().any(|k| k.name == *key),
+            _ => true,
+        });
+        let is = |column: SavantColumn| columns.contains(&Column::Savant(column));
+        let hit_coordinates = is(SavantColumn::HcX) || is(SavantColumn::HcY);
         Ok(Header {
+            direction_given: columns.contains(&Column::Input("launch.direction")),
             names,
             columns,
-            numeric,
+            inputs,
             keep: Vec::new(),
+            read,
+            launch,
+            speed,
+            launch_only,
+            hit_coordinates,
         })
     }
 
@@ -226,15 +279,6 @@ impl Header {
         self.columns
             .iter()
             .any(|c| matches!(c, Column::Savant(s) if *s == column))
-    }
-
-    /// Whether a column is the key `key`.
-    pub(super) fn has_key(&self, key: &str) -> bool {
-        self.columns.iter().any(|c| match c {
-            Column::Launch(i, _) => LAUNCH_COLUMNS[*i].0 == key,
-            Column::Input(k) => *k == key,
-            _ => false,
-        })
     }
 
     /// The names of the columns read that are not keys of `homerun keys`:
@@ -336,11 +380,10 @@ pub(super) struct Job {
     pub(super) given: GivenWeather,
 }
 
-/// What a row turned out to be. Unboxed: each is moved once, into the
-/// piece's jobs, and a box would allocate per row.
-#[allow(clippy::large_enum_variant)]
+/// What a row turned out to be.
 pub(super) enum Row {
-    Job(Job),
+    /// Ready to fly: pushed onto the jobs [`parse_row`] was given.
+    Job,
     Bad {
         line: usize,
         reason: String,
@@ -355,13 +398,19 @@ pub(super) enum Row {
 
 /// [`InputBatch::set_key_text`], a plain decimal in the key's bounds read
 /// without the general reader (units, errors): the same value, set alike.
+/// A key neither of the air nor of the weather (`air` false) changes
+/// nothing of the batch, and is set at once.
 fn set_number(
     batch: &mut InputBatch,
     scene: &mut Scene,
-    key: &'static Key,
+    (key, air): (&'static Key, bool),
     text: &str,
 ) -> Result<(), InputError> {
     match plain_decimal(text) {
+        Some(value) if key.bounds.contains(value) && !air => {
+            (key.set)(scene, value);
+            Ok(())
+        }
         Some(value) if key.bounds.contains(value) => batch.set_key(scene, key, value),
         _ => batch.set_key_text(scene, key, text),
     }
@@ -375,13 +424,15 @@ fn is_missing(value: &str) -> bool {
 /// The row on `line`, its `text` split into `fields` (a buffer reused from
 /// row to row) and its `--keep` cells added to `kept`; with `swings`, the
 /// launch values it leaves to its swing filled in where its swing is known
-/// (see [`SwingLaunches`]).
+/// (see [`SwingLaunches`]). A row that flies is pushed onto `jobs`, built
+/// there (a job holds a scene: moving it cost more than reading its cells).
 pub(super) fn parse_row(
     header: &Header,
     setup: &Setup,
     (line, text): (usize, &str),
     (fields, kept): (&mut Fields, &mut Fields),
     swings: Option<&mut SwingLaunches>,
+    jobs: &mut Vec<Job>,
 ) -> Row {
     if text.is_empty() {
         return Row::Blank;
@@ -399,32 +450,67 @@ pub(super) fn parse_row(
             header.columns.len()
         ));
     }
-    let cell = |i: usize| {
-        let value = fields.trimmed(i);
-        if is_missing(value) { "" } else { value }
-    };
-    let launch_cells = || {
-        header
-            .columns
-            .iter()
-            .enumerate()
-            .filter_map(|(i, c)| matches!(c, Column::Launch(..)).then_some((*c, cell(i))))
-    };
-    let no_speed = launch_cells().any(|(c, v)| matches!(c, Column::Launch(0, _)) && v.is_empty());
-    let any_launch = launch_cells().next().is_some();
-    if no_speed || (any_launch && launch_cells().all(|(_, v)| v.is_empty())) {
+    let no_speed = header.speed.is_some_and(|i| cell(fields, i).is_empty());
+    let launch = &header.launch;
+    if no_speed || (!launch.is_empty() && launch.iter().all(|&i| cell(fields, i).is_empty())) {
         return Row::NoLaunch;
     }
-    let mut scene = setup.base.scene;
-    let mut fence = setup.base.fence.unwrap_or(Fence::generic());
+    jobs.push(Job {
+        line,
+        scene: setup.base.scene,
+        launch: RowLaunch::default(),
+        fence: setup.base.fence.unwrap_or(Fence::generic()),
+        park: None,
+        statcast: None,
+        hang_time: None,
+        apex: None,
+        kept: 0..0,
+        given: setup.given,
+    });
+    let job = jobs.last_mut().expect("a job just pushed");
+    if let Err(reason) = read_cells(header, setup, fields, swings, job) {
+        jobs.pop();
+        return bad(reason);
+    }
+    let first = kept.len();
+    for &i in &header.keep {
+        kept.push(fields.get(i));
+    }
+    job.kept = first..kept.len();
+    Row::Job
+}
+
+/// Cell `i` of a row, trimmed, "" where missing.
+#[inline(always)]
+fn cell(fields: &Fields, i: usize) -> &str {
+    let value = fields.trimmed(i);
+    if is_missing(value) { "" } else { value }
+}
+
+/// Sets `job` (the preset's scene and fence) as the row's cells say, and
+/// validates its scene; or the reason the row cannot fly.
+fn read_cells(
+    header: &Header,
+    setup: &Setup,
+    fields: &Fields,
+    swings: Option<&mut SwingLaunches>,
+    job: &mut Job,
+) -> Result<(), String> {
+    let cell = |i: usize| cell(fields, i);
+    let Job {
+        scene,
+        fence,
+        given,
+        ..
+    } = job;
     let mut savant = SavantCells::default();
-    let mut given = setup.given;
     let (mut spin_given, mut sidespin_given) = (setup.spin_given, setup.sidespin_given);
     // One row is one source: ρ beside the weather is refused.
     let mut batch = InputBatch::new();
     // Statcast's columns read in their units, named only if the row fails.
     let mut converted = false;
-    for (i, (column, name)) in header.columns.iter().zip(&header.names).enumerate() {
+    for &i in &header.read {
+        let (column, name) = (&header.columns[i], &header.names[i]);
         let value = cell(i);
         let number = || {
             plain_decimal(value)
@@ -445,28 +531,31 @@ pub(super) fn parse_row(
                 Err(format!("{} is empty", LAUNCH_COLUMNS[index].0))
             }
             _ if value.is_empty() => Ok(()), // the preset's value
-            Column::Savant(column) => savant.read(column, value, setup.parks),
+            Column::Savant(column) => savant.read(column, value, setup),
             // A launch.* cell as `--set` takes it (`103mph`).
             Column::Launch(index, Unit::Si) => {
                 spin_given |= index == 2;
-                set_number(&mut batch, &mut scene, launch_key(index), value)
+                set_number(&mut batch, scene, (launch_key(index), false), value)
                     .map_err(|e| e.to_string())
             }
-            // Statcast's own columns: a bare number in their unit.
-            Column::Launch(index, unit) => number().and_then(|v| {
+            // Statcast's own columns: a bare number in their unit (a launch
+            // key: nothing of the batch's, set at once; checked with the
+            // scene).
+            Column::Launch(index, unit) => number().map(|v| {
                 converted = true;
                 spin_given |= index == 2;
-                batch
-                    .set_key(&mut scene, launch_key(index), unit.to_si(v))
-                    .map_err(|e| e.to_string())
+                (launch_key(index).set)(scene, unit.to_si(v));
             }),
             // The whole value is parsed; only the error's copy is cut.
-            Column::Input(key) => {
-                given.note(key);
-                sidespin_given |= key == "launch.sidespin";
-                match header.numeric[i] {
-                    Some(numeric) => set_number(&mut batch, &mut scene, numeric, value),
-                    None => batch.set_text(&mut scene, key, value),
+            Column::Input(_) => {
+                let input = header.inputs[i].expect("an input column's key");
+                if input.air {
+                    given.note(input.name);
+                }
+                sidespin_given |= input.name == "launch.sidespin";
+                match input.numeric {
+                    Some(key) => set_number(&mut batch, scene, (key, input.air), value),
+                    None => batch.set_text(scene, input.name, value),
                 }
                 .map_err(|e| match e {
                     InputError::NotANumber { key, text } => InputError::NotANumber {
@@ -487,20 +576,18 @@ pub(super) fn parse_row(
             Column::Field(index) => {
                 let key = &FIELD_KEYS[index];
                 key.read(value)
-                    .map(|v| (key.set)(&mut fence, v))
+                    .map(|v| (key.set)(fence, v))
                     .map_err(|e| e.to_string())
             }
         };
-        if let Err(reason) = done {
-            return bad(reason);
-        }
+        done?;
     }
     let park = setup.park.or(savant.park);
     if let Some(index) = park {
-        super::super::ground::to_park(&mut scene, &setup.parks.parks[index], given);
+        super::super::ground::to_park(scene, &setup.parks.parks[index], *given);
     }
     let valid = match swings {
-        Some(swings) => swings.validate(&mut scene),
+        Some(swings) => swings.validate(scene, header.launch_only.then_some(park)),
         None => scene.validate(),
     };
     if let Err(e) = valid {
@@ -521,34 +608,17 @@ pub(super) fn parse_row(
         } else {
             String::new()
         };
-        return bad(format!("{e}{from}"));
+        return Err(format!("{e}{from}"));
     }
-    let launch = RowLaunch {
-        spray: savant
-            .spray()
-            .filter(|_| !header.has_key("launch.direction")),
+    job.launch = RowLaunch {
+        spray: savant.spray().filter(|_| !header.direction_given),
         side: savant.side,
         // A row that gives its backspin has its spin: only a row without
         // one is filled, both parts (a sidespin given is kept).
         estimate_backspin: !spin_given,
         estimate_sidespin: !spin_given && !sidespin_given,
     };
-    Row::Job(Job {
-        line,
-        scene,
-        launch,
-        fence,
-        park,
-        statcast: savant.distance,
-        hang_time: savant.hang_time,
-        apex: savant.apex,
-        kept: {
-            let first = kept.len();
-            for &i in &header.keep {
-                kept.push(fields.get(i));
-            }
-            first..kept.len()
-        },
-        given,
-    })
+    job.park = park;
+    (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);
+    Ok(())
 }

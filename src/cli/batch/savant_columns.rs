@@ -10,6 +10,7 @@ use crate::model::spin_estimate::Side;
 use crate::preset::parks::Parks;
 use crate::preset::{Preset, cut, escape_cut};
 
+use super::plain::plain_decimal;
 use super::rows::{Header, Job};
 
 /// Exactly 0.3048 m to the foot (Statcast's distances are in feet).
@@ -77,6 +78,11 @@ pub(in crate::cli) struct Setup<'a> {
     pub own_air: bool,
     /// `--keep`'s column names.
     pub keep: Vec<String>,
+    /// Every park's codes and aliases in ASCII lower case, sorted, each with
+    /// the first park that answers to it: a row's `home_team` found by a
+    /// binary search, not by asking 30 parks (`None` if a code is too long
+    /// for [`Setup::park_of`]'s room: then each park is asked).
+    codes: Option<Vec<(String, usize)>>,
 }
 
 impl<'a> Setup<'a> {
@@ -119,8 +125,46 @@ impl<'a> Setup<'a> {
             spray: Spray::Landing,
             own_air: false,
             keep: Vec::new(),
+            codes: park_codes(parks),
         }
     }
+
+    /// The index of the first park that answers to `code` (any case), as
+    /// [`park::Park::answers_to`] says.
+    pub(super) fn park_of(&self, code: &str) -> Option<usize> {
+        let mut room = [0u8; LONGEST_CODE];
+        match (&self.codes, room.get_mut(..code.len())) {
+            (Some(codes), Some(lower)) => {
+                lower.copy_from_slice(code.as_bytes());
+                lower.make_ascii_lowercase();
+                let found = codes.binary_search_by(|(c, _)| c.as_bytes().cmp(lower));
+                found.ok().map(|i| codes[i].1)
+            }
+            _ => self.parks.parks.iter().position(|p| p.answers_to(code)),
+        }
+    }
+}
+
+/// Room for a park's code or alias in [`Setup::park_of`]; a park whose
+/// code is longer is found by asking each park.
+const LONGEST_CODE: usize = 32;
+
+/// [`Setup`]'s sorted codes: the first park's, where two answer to one.
+fn park_codes(parks: &Parks) -> Option<Vec<(String, usize)>> {
+    let mut codes: Vec<(String, usize)> = Vec::new();
+    for (index, park) in parks.parks.iter().enumerate() {
+        for code in park.codes() {
+            if code.len() > LONGEST_CODE {
+                return None;
+            }
+            let code = code.to_ascii_lowercase();
+            if !codes.iter().any(|(c, _)| *c == code) {
+                codes.push((code, index));
+            }
+        }
+    }
+    codes.sort();
+    Some(codes)
 }
 
 /// What a row's Savant cells say.
@@ -144,12 +188,11 @@ impl SavantCells {
         &mut self,
         column: SavantColumn,
         value: &str,
-        parks: &Parks,
+        setup: &Setup,
     ) -> Result<(), String> {
         let number = || {
-            value
-                .parse::<f64>()
-                .ok()
+            plain_decimal(value)
+                .or_else(|| value.parse::<f64>().ok())
                 .filter(|v| v.is_finite())
                 .ok_or_else(|| format!("{} = {:?}: not a number", column.name(), cut(value, 80)))
         };
@@ -172,7 +215,7 @@ impl SavantCells {
                 });
             }
             SavantColumn::HomeTeam => {
-                let park = parks.parks.iter().position(|p| p.answers_to(value));
+                let park = setup.park_of(value);
                 self.park = Some(park.ok_or_else(|| {
                     format!(
                         "home_team = {:?}: no park has that code (`homerun parks` lists them)",
@@ -201,8 +244,11 @@ pub(super) fn quoted(field: &str) -> String {
 
 /// [`quoted`], appended to a byte buffer.
 pub(super) fn write_quoted(out: &mut Vec<u8>, field: &str) {
+    // The specials are ASCII, so a byte test finds them (a multi-byte
+    // character holds no ASCII byte).
+    let special = |b: &u8| matches!(b, b',' | b'"' | b'\n' | b'\r');
     let needs =
-        field.contains([',', '"', '\n', '\r']) || field.starts_with(' ') || field.ends_with(' ');
+        field.as_bytes().iter().any(special) || field.starts_with(' ') || field.ends_with(' ');
     if !needs {
         out.extend_from_slice(field.as_bytes());
         return;
@@ -262,7 +308,7 @@ impl Summary {
         if job.launch.spray.is_some() {
             self.sprayed += 1;
             self.solve_flights += flights;
-        } else if header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY) {
+        } else if header.hit_coordinates {
             self.without_spray += 1;
         }
         match job.park {
@@ -336,6 +382,38 @@ impl Summary {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_park_is_found_by_its_codes_as_the_parks_answer() {
+        let parks = crate::preset::parks::all(None).unwrap();
+        let preset = crate::preset::load("fly-ball", None).unwrap();
+        let setup = Setup::new(&preset, &parks);
+        let mut asked = vec![
+            String::new(),
+            "generic".to_owned(),
+            "x".repeat(LONGEST_CODE + 1),
+            "NYYY".to_owned(),
+            "ny".to_owned(),
+            "BOS ".to_owned(),
+            "bös".to_owned(),
+        ];
+        for park in &parks.parks {
+            for code in park.codes() {
+                asked.push(code.to_owned());
+                asked.push(code.to_ascii_lowercase());
+                asked.push(code.to_ascii_uppercase());
+                asked.push(format!("{code}x"));
+                asked.push(code[..code.len() - 1].to_owned());
+            }
+        }
+        let mut found = 0;
+        for code in &asked {
+            let each = parks.parks.iter().position(|p| p.answers_to(code));
+            assert_eq!(setup.park_of(code), each, "{code:?}");
+            found += usize::from(each.is_some());
+        }
+        assert!(found >= 3 * 30, "{found}");
+    }
 
     #[test]
     fn kept_fields_are_quoted_as_rfc_4180_asks() {

@@ -154,6 +154,37 @@ fn fields_split_as_the_splitter_before_them() {
 }
 
 #[test]
+fn record_texts_are_each_records_own() {
+    // Valid text; a byte that is no UTF-8; a character cut between two
+    // records (valid together, not apart); a long record between.
+    let pieces: [&[u8]; 6] = [b"a,1", "é,ü".as_bytes(), b"x\xff", b"y\xc3", b"\xa9z", b""];
+    for skip in 0..pieces.len() {
+        let records: Vec<&[u8]> = (0..pieces.len())
+            .filter(|&k| k != skip)
+            .map(|k| pieces[k])
+            .collect();
+        let mut bytes = b"ignored".to_vec();
+        let mut spans = vec![Span::TooLong { line: 1 }];
+        for (k, record) in records.iter().enumerate() {
+            let start = bytes.len();
+            bytes.extend_from_slice(record);
+            spans.push(Span::Text {
+                line: k + 2,
+                start,
+                end: bytes.len(),
+            });
+        }
+        let texts = RecordTexts::new(&bytes, &spans);
+        for span in &spans {
+            if let Span::Text { start, end, .. } = *span {
+                let own = String::from_utf8_lossy(&bytes[start..end]);
+                assert_eq!(texts.get(start, end), own, "{skip}: {own:?}");
+            }
+        }
+    }
+}
+
+#[test]
 fn records_gathered_into_one_buffer_keep_their_lines() {
     let long = "x".repeat(MAX_RECORD_BYTES + 1);
     let text = format!("h\n\"a\nb\",1\r\n{long}\n\nlast\r\n");

@@ -386,6 +386,16 @@ impl Scene {
     /// estimated): nothing else it checks depends on them, so this finds
     /// what `validate` would, at a fraction of its cost.
     pub fn validate_changed_launch(&self) -> Result<(), InputError> {
+        // A batch row's common case, checked at once: every value given in
+        // its bounds, and none left to the swing.
+        let values = self.launch.values();
+        let in_bounds = LAUNCH_KEYS
+            .iter()
+            .zip(values)
+            .all(|(key, value)| value.is_none_or(|v| key.bounds.contains(v)));
+        if in_bounds && self.launch.is_complete() {
+            return Ok(());
+        }
         for (key, value) in self.given_launch() {
             key.bounds.check(key.name, value, key.unit)?;
         }
@@ -543,6 +553,11 @@ mod tests {
         let mut batted = Scene::default();
         batted.launch.speed = Some(45.0);
         batted.launch.angle = Some(0.5);
+        // Every value given (a batch row's usual launch): the quick check.
+        let mut complete = batted;
+        complete.launch.spin = Some(200.0);
+        complete.launch.direction = Some(-0.2);
+        complete.launch.sidespin = Some(30.0);
         let values = [
             None,
             Some(0.3),
@@ -553,7 +568,7 @@ mod tests {
         ];
         let mut compared = 0;
         let mut refused = 0;
-        for base in [Scene::default(), weather, batted] {
+        for base in [Scene::default(), weather, batted, complete] {
             base.validate().unwrap();
             for slot in 0..5 {
                 for value in values {
@@ -573,7 +588,7 @@ mod tests {
                 }
             }
         }
-        assert_eq!(compared, 90);
+        assert_eq!(compared, 120);
         // Out of range, NaN, and a swing's own launch a given value
         // leaves outside its bounds: both kinds of refusal are compared.
         assert!(refused >= 30, "{refused}");
