@@ -9,7 +9,7 @@ use serde::Serialize;
 use crate::model::flight::FlightOptions;
 use crate::model::impact::{Collision, Impact, ImpactAngles, NormalAngles, PitchAngles};
 use crate::model::launch::SceneFlight;
-use crate::model::many::fly_many;
+use crate::model::many::land_many;
 use crate::model::{self, scene::Scene};
 
 /// A rectangular grid over undercut (columns) and swing angle (rows).
@@ -341,7 +341,7 @@ fn fly_cells(
         flown.push(k);
         flights.push(SceneFlight::of_impact(&swing, &impact));
     }
-    fly_many(flights, options, |index, flight| {
+    land_many(flights, options, |index, flight| {
         let taken = u64::from(flight.stats.accepted) + u64::from(flight.stats.rejected);
         done(
             flown[index],

@@ -394,8 +394,13 @@ impl Dynamics<4> for Flight {
     }
 
     #[inline]
-    fn ground(state: &State<4>, origin: &State<4>) -> (f64, f64) {
-        (state[DISTANCE] - origin[DISTANCE], 0.0)
+    fn distance(state: &State<4>, origin: &State<4>) -> f64 {
+        state[DISTANCE] - origin[DISTANCE]
+    }
+
+    #[inline]
+    fn direction(_: &State<4>, _: &State<4>) -> f64 {
+        0.0
     }
 
     #[inline]
