@@ -143,8 +143,21 @@ impl<const N: usize, D: Dynamics<N>> Events<N, D> {
             };
             // At the ends, from the step's own states (the rates unused).
             let ends = |y: &State<N>| excess(y, y).0;
+            // Inside, the velocity and its slope alone (all that |V_r|²
+            // reads), component by component: the same numbers as the
+            // whole state's, without the positions'.
+            let velocity_at = |t: f64| {
+                let (mut state, mut slope) = (State::<N>::zeros(), State::<N>::zeros());
+                for i in D::VELOCITY_X..N {
+                    (state[i], slope[i]) = dense.component_at(t, i);
+                }
+                (state, slope)
+            };
             find_root_newton_from(
-                |t| excess(&dense.at(t), &dense.slope_at(t)),
+                |t| {
+                    let (state, slope) = velocity_at(t);
+                    excess(&state, &slope)
+                },
                 (step.t0, ends(&step.y0)),
                 (step.t1, ends(&step.y1)),
                 ROOT_TOLERANCE,

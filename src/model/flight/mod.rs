@@ -86,6 +86,9 @@ pub(crate) fn spin_now<R: Real>((rate, surface_speed): (R, R), decay_rate: R, t:
 pub trait Dynamics<const N: usize>: Copy {
     const HEIGHT: usize;
     const VERTICAL_VELOCITY: usize;
+    /// The velocity's first component: the velocity's run from it to the
+    /// state's end.
+    const VELOCITY_X: usize;
 
     /// d/dt of the state at time `t` in the regime of drag piece `piece`
     /// and wind layer `in_wind` (a [`Regime`]'s fields, passed apart so

@@ -337,6 +337,7 @@ impl Launch {
 impl Dynamics<4> for Flight {
     const HEIGHT: usize = HEIGHT;
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
+    const VELOCITY_X: usize = VELOCITY_X;
 
     // Inlined into the integrator's stages, with the models' formulas.
     #[inline(always)]

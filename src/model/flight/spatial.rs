@@ -237,6 +237,7 @@ impl Flight3d {
 impl Dynamics<6> for Flight3d {
     const HEIGHT: usize = HEIGHT;
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
+    const VELOCITY_X: usize = VELOCITY_X;
 
     // Inlined into the integrator's stages, with the models' formulas.
     #[inline(always)]
