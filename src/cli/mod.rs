@@ -20,6 +20,7 @@ mod surface;
 mod svg_file;
 mod table;
 mod table2;
+mod threads;
 mod usage;
 mod usage_error;
 pub use usage_error::{UsageError, WindowFault};

@@ -167,6 +167,7 @@ fn computed_then<T: Send>(
         what: "surface",
         steps: Some((grid.columns * grid.rows, "cells")),
     };
+    super::threads::start_pool();
     progress::run(work, |p| {
         let tick = || p.tick();
         study::surface_within_then(
