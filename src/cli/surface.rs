@@ -316,10 +316,11 @@ fn csv_header(shown: Shown) -> String {
         + "\n"
 }
 
-/// Each column's E as the CSV prints it (printed once, not once a cell).
+/// Each column's E as the CSV prints it, with the comma after it (printed
+/// once, not once a cell).
 fn undercut_texts(grid: Grid, shown: Shown) -> Vec<String> {
     (0..grid.columns)
-        .map(|i| shortest::text(shown.convert(Quantity::Size, grid.undercut_at(i))))
+        .map(|i| shortest::text(shown.convert(Quantity::Size, grid.undercut_at(i))) + ",")
         .collect()
 }
 
@@ -340,25 +341,27 @@ fn csv_lines(
     // take (room for 82 characters a line cost 40 more page faults).
     let longest = undercuts.iter().map(String::len).max().unwrap_or(0);
     let mut text = String::with_capacity(outcomes.len() * (longest + 48));
+    // Each piece with its separators: "E," (the column's), "ψ," (the
+    // row's), the range, ",true\n".
     let mut row = (usize::MAX, String::new());
     for (k, &outcome) in (first..).zip(outcomes) {
         let (i, j) = (k % grid.columns, k / grid.columns);
         if row.0 != j {
-            row = (
-                j,
-                shortest::text(shown.convert(Quantity::Angle, grid.swing_angle_at(j))),
-            );
+            let mut swing_angle =
+                shortest::text(shown.convert(Quantity::Angle, grid.swing_angle_at(j)));
+            swing_angle.push(',');
+            row = (j, swing_angle);
         }
         text.push_str(&undercuts[i]);
-        text.push(',');
         text.push_str(&row.1);
-        text.push(',');
         if let Some(range) = outcome.range() {
             shortest::push(&mut text, shown.convert(Quantity::Distance, range));
         }
-        text.push(',');
-        text.push_str(landed(outcome).map_or("", |l| if l { "true" } else { "false" }));
-        text.push('\n');
+        text.push_str(match landed(outcome) {
+            Some(true) => ",true\n",
+            Some(false) => ",false\n",
+            None => ",\n",
+        });
     }
     text
 }
