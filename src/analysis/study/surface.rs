@@ -377,13 +377,20 @@ fn fly_cells(
             done(k, CellOutcome::BatMisses, 0);
             continue;
         }
-        let swing = scene.with_swing(undercut, grid.swing_angle_at(j));
-        let impact = match angles {
-            Some(angles) => Collision::Planar(Impact::with_angles(&swing, angles.at(i, j))),
-            None => Collision::new(&swing),
+        let flight = match angles {
+            // The cell's swing is all in its angles: the rest of its scene
+            // is the grid's (not copied for each cell).
+            Some(angles) => {
+                let impact = Collision::Planar(Impact::with_angles(scene, angles.at(i, j)));
+                SceneFlight::of_impact(scene, &impact)
+            }
+            None => {
+                let swing = scene.with_swing(undercut, grid.swing_angle_at(j));
+                SceneFlight::of_impact(&swing, &Collision::new(&swing))
+            }
         };
         flown.push(k);
-        flights.push(SceneFlight::of_impact(&swing, &impact));
+        flights.push(flight);
     }
     land_many(flights, options, |index, flight| {
         let taken = u64::from(flight.stats.accepted) + u64::from(flight.stats.rejected);
@@ -562,6 +569,14 @@ mod tests {
             assert_eq!(
                 Impact::with_angles(&cell, angles.at(i, j)),
                 Impact::new(&cell)
+            );
+            // Nor does the rest of the cell's scene differ from the grid's
+            // for its impact and flight (what `fly_cells` relies on).
+            let impact = Collision::Planar(Impact::with_angles(&scene, angles.at(i, j)));
+            assert_eq!(impact, Collision::new(&cell), "({i}, {j})");
+            assert_eq!(
+                SceneFlight::of_impact(&scene, &impact),
+                SceneFlight::of_impact(&cell, &Collision::new(&cell))
             );
         }
         // A tilted bat's impact is the 3-D one: no planar angles.
