@@ -60,12 +60,19 @@ pub struct Regime {
 /// `re` is on, or about to enter: at a kink, the one Re is moving into
 /// (`rising` says whether it moves up; asked only there).
 pub(crate) fn piece_entered(kinks: &[f64], re: f64, rising: impl FnOnce() -> bool) -> usize {
+    // The kinks below Re, and whether it sits on one, in one pass.
+    let (mut below, mut on_kink) = (0, false);
+    for &kink in kinks {
+        below += usize::from(re > kink);
+        on_kink |= re == kink;
+    }
     // Which way Re moves (an acceleration, so an exponential on the drag
-    // crisis) matters only on a kink itself.
-    if kinks.contains(&re) && rising() {
-        kinks.iter().filter(|&&k| re >= k).count()
+    // crisis) matters only on a kink itself: moving up, it enters the piece
+    // above.
+    if on_kink && rising() {
+        below + 1
     } else {
-        kinks.iter().filter(|&&k| re > k).count()
+        below
     }
 }
 
