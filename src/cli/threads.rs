@@ -13,16 +13,19 @@
 /// share the time it allows, the results the same (no result depends on
 /// the number of threads).
 pub fn start_pool() {
-    if std::env::var_os("RAYON_NUM_THREADS").is_some() {
-        return;
-    }
-    if let Some(count) = cpus_allowed() {
-        // An error only says the pool runs already.
-        let _ = rayon::ThreadPoolBuilder::new()
-            .num_threads(count)
-            .use_current_thread()
-            .build_global();
-    }
+    static STARTED: std::sync::Once = std::sync::Once::new();
+    STARTED.call_once(|| {
+        if std::env::var_os("RAYON_NUM_THREADS").is_some() {
+            return;
+        }
+        if let Some(count) = cpus_allowed() {
+            // An error only says the pool runs already.
+            let _ = rayon::ThreadPoolBuilder::new()
+                .num_threads(count)
+                .use_current_thread()
+                .build_global();
+        }
+    });
 }
 
 /// The CPUs in this process's affinity mask (`None` where it cannot be
