@@ -6,7 +6,7 @@
 use homerun::Purpose;
 use homerun::model::flight::{FlightOptions, FlightSummary};
 use homerun::model::launch::{BattedBall, SceneFlight};
-use homerun::model::many::{fly_many, fly_many_on, judge_many};
+use homerun::model::many::{fly_many, fly_many_on, judge_many, land_many_on};
 use homerun::model::park::{Fence, bundled};
 use homerun::model::scene::Scene;
 use homerun::numerics::ode::lanes::LaneCode;
@@ -256,6 +256,46 @@ fn the_avx2_lanes_give_the_baseline_lanes_bits() {
                     bits(b),
                     bits(w),
                     "flight {k}: baseline lanes against AVX2's"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn flights_asked_for_their_range_alone_are_the_same_flights() {
+    // Without their apexes located (a step that only passes one is left
+    // unseen), each flight's range, time, work and landing are its whole
+    // summary's, bit for bit: on both lanes, at a surface's tolerance, the
+    // readout's and without the kinks.
+    let flights = random_flights(240, 41);
+    let no_kinks = FlightOptions {
+        stop_at_kinks: false,
+        ..Purpose::Readout.flight_options()
+    };
+    let option_sets = [
+        Purpose::Surface.flight_options(),
+        Purpose::Readout.flight_options(),
+        no_kinks,
+    ];
+    for code in [LaneCode::Baseline, LaneCode::detected()] {
+        for options in &option_sets {
+            let mut whole = vec![None; flights.len()];
+            fly_many_on(code, flights.iter().copied(), options, |index, summary| {
+                whole[index] = Some(summary.range_summary());
+            });
+            let mut ranges = vec![None; flights.len()];
+            land_many_on(code, flights.iter().copied(), options, |index, range| {
+                assert!(ranges[index].is_none(), "flight {index} reported twice");
+                ranges[index] = Some(range);
+            });
+            for (k, (whole, range)) in whole.iter().zip(&ranges).enumerate() {
+                // Debug prints each number's shortest exact form.
+                let whole = whole.expect("every flight reported");
+                assert_eq!(
+                    format!("{whole:?}"),
+                    format!("{:?}", range.expect("every flight reported")),
+                    "{code:?}, flight {k}"
                 );
             }
         }

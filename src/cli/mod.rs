@@ -20,6 +20,7 @@ mod surface;
 mod svg_file;
 mod table;
 mod table2;
+mod threads;
 mod usage;
 mod usage_error;
 pub use usage_error::{UsageError, WindowFault};
@@ -484,6 +485,8 @@ fn render_pieces(cli: &Cli, command: &Command) -> Result<Vec<String>, UsageError
     else {
         return Ok(vec![render(cli, command)?]);
     };
+    // The pool's thread starts while the scene is read.
+    threads::start_pool();
     let dir = checked_presets_dir(cli)?;
     let shown = Shown(cli.units);
     let preset = scene.resolve(dir.as_deref())?;

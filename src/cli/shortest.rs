@@ -21,6 +21,13 @@ pub fn push(text: &mut String, x: f64) {
     }
     let mut buffer = zmij::Buffer::new();
     let digits = buffer.format_finite(x);
+    // zmij writes plain decimals for a first digit from 10⁻⁵ to 10¹⁵:
+    // well inside, no exponent to look for (a search of the text, a
+    // quarter of a number's cost).
+    if (1e-4..1e15).contains(&x.abs()) {
+        text.push_str(digits.strip_suffix(".0").unwrap_or(digits));
+        return;
+    }
     match digits.split_once('e') {
         // "123.0" or "0.00123": Display's own layout, but for the ".0".
         None => text.push_str(digits.strip_suffix(".0").unwrap_or(digits)),
@@ -144,6 +151,13 @@ mod tests {
             1.25e-7,
             1e15,
             1e16,
+            // Where the plain decimals' shortcut ends.
+            1e-4,
+            9.999_999_999_999_999e-5,
+            -1.000_000_000_000_001e-4,
+            999_999_999_999_999.9,
+            -999_999_999_999_999.9,
+            1.000_000_000_000_000_2e15,
             1.5e300,
             f64::MAX,
             f64::MIN_POSITIVE,

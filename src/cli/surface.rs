@@ -138,8 +138,13 @@ pub(super) fn surface(
         let lines = |first: usize, outcomes: &[CellOutcome]| {
             csv_lines(grid, shown, &undercuts, first, outcomes)
         };
-        let (_, lines) = computed_then(scene, grid, text, &lines)?;
-        return Ok([vec![csv_header(shown)], lines].concat());
+        let lines = computed_chunks(scene, grid, text, &lines)?;
+        // The pieces moved, not copied (a slice's `concat` clones them: the
+        // whole CSV once more, on one thread, after the flights).
+        let mut pieces = Vec::with_capacity(1 + lines.len());
+        pieces.push(csv_header(shown));
+        pieces.extend(lines);
+        return Ok(pieces);
     }
     let surface = computed(scene, grid, text)?;
     if format == Format::Json {
@@ -152,33 +157,44 @@ pub(super) fn surface(
 
 /// The surface within its work budget, with a progress line.
 fn computed(scene: &Scene, grid: Grid, text: &str) -> Result<Surface, UsageError> {
-    computed_then(scene, grid, text, &|_, _| ()).map(|(surface, _)| surface)
+    within_budget(grid, text, |tick| {
+        study::surface_within(scene, grid, Purpose::Surface, SURFACE_FLIGHT_STEPS, tick)
+    })
 }
 
-/// As [`computed`], with `each_chunk`'s results (see
-/// [`study::surface_within_then`]).
-fn computed_then<T: Send>(
+/// As [`computed`], giving only `each_chunk`'s results, in the cells' order
+/// (see [`study::surface_chunks_within`]).
+fn computed_chunks<T: Send>(
     scene: &Scene,
     grid: Grid,
     text: &str,
     each_chunk: &(dyn Fn(usize, &[CellOutcome]) -> T + Sync),
-) -> Result<(Surface, Vec<T>), UsageError> {
-    let work = Work {
-        what: "surface",
-        steps: Some((grid.columns * grid.rows, "cells")),
-    };
-    progress::run(work, |p| {
-        let tick = || p.tick();
-        study::surface_within_then(
+) -> Result<Vec<T>, UsageError> {
+    within_budget(grid, text, |tick| {
+        study::surface_chunks_within(
             scene,
             grid,
             Purpose::Surface,
             SURFACE_FLIGHT_STEPS,
-            &tick,
+            tick,
             each_chunk,
         )
     })
-    .map_err(|work| too_much(text, work))
+}
+
+/// `fly(tick)` with a progress line of the grid's cells, on the pool's
+/// threads; its giving up as the budget's refusal.
+fn within_budget<T>(
+    grid: Grid,
+    text: &str,
+    fly: impl FnOnce(&(dyn Fn() + Sync)) -> Result<T, TooMuchWork>,
+) -> Result<T, UsageError> {
+    let work = Work {
+        what: "surface",
+        steps: Some((grid.columns * grid.rows, "cells")),
+    };
+    super::threads::start_pool();
+    progress::run(work, |p| fly(&|| p.tick())).map_err(|work| too_much(text, work))
 }
 
 /// `surface --svg`: the heatmap with the optimum, the current swing and, if
@@ -300,10 +316,11 @@ fn csv_header(shown: Shown) -> String {
         + "\n"
 }
 
-/// Each column's E as the CSV prints it (printed once, not once a cell).
+/// Each column's E as the CSV prints it, with the comma after it (printed
+/// once, not once a cell).
 fn undercut_texts(grid: Grid, shown: Shown) -> Vec<String> {
     (0..grid.columns)
-        .map(|i| shortest::text(shown.convert(Quantity::Size, grid.undercut_at(i))))
+        .map(|i| shortest::text(shown.convert(Quantity::Size, grid.undercut_at(i))) + ",")
         .collect()
 }
 
@@ -324,25 +341,27 @@ fn csv_lines(
     // take (room for 82 characters a line cost 40 more page faults).
     let longest = undercuts.iter().map(String::len).max().unwrap_or(0);
     let mut text = String::with_capacity(outcomes.len() * (longest + 48));
+    // Each piece with its separators: "E," (the column's), "ψ," (the
+    // row's), the range, ",true\n".
     let mut row = (usize::MAX, String::new());
     for (k, &outcome) in (first..).zip(outcomes) {
         let (i, j) = (k % grid.columns, k / grid.columns);
         if row.0 != j {
-            row = (
-                j,
-                shortest::text(shown.convert(Quantity::Angle, grid.swing_angle_at(j))),
-            );
+            let mut swing_angle =
+                shortest::text(shown.convert(Quantity::Angle, grid.swing_angle_at(j)));
+            swing_angle.push(',');
+            row = (j, swing_angle);
         }
         text.push_str(&undercuts[i]);
-        text.push(',');
         text.push_str(&row.1);
-        text.push(',');
         if let Some(range) = outcome.range() {
             shortest::push(&mut text, shown.convert(Quantity::Distance, range));
         }
-        text.push(',');
-        text.push_str(landed(outcome).map_or("", |l| if l { "true" } else { "false" }));
-        text.push('\n');
+        text.push_str(match landed(outcome) {
+            Some(true) => ",true\n",
+            Some(false) => ",false\n",
+            None => ",\n",
+        });
     }
     text
 }

@@ -12,8 +12,8 @@
 
 use super::aero::DragModel;
 use super::clearing::{Crossing, planar_reach, spatial_reach, watch_planar, watch_spatial};
-use super::flight::lanes::{LaneJob, LaneReports, fly_lanes};
-use super::flight::{FlightOptions, FlightSummary, Start};
+use super::flight::lanes::{LaneDone, LaneJob, LaneReports, fly_lanes};
+use super::flight::{FlightOptions, FlightSummary, RangeSummary, Start};
 use super::launch::SceneFlight;
 use super::park::Fence;
 use crate::numerics::ode::lanes::{FirstSteps, LaneCode};
@@ -39,7 +39,34 @@ pub fn fly_many_on(
     let flights: Vec<SceneFlight> = flights.into_iter().collect();
     let code = (code, FirstSteps::FromNeighbours);
     for group in groups(&flights) {
-        fly_group(code, &flights, &group, options, None, &[], &mut done);
+        let done = LaneDone::Summary(&mut done);
+        fly_group(code, &flights, &group, options, None, &[], done);
+    }
+}
+
+/// As [`fly_many`], telling `done(index, range)` only what each flight's
+/// range needs: the same flights, bit for bit, without locating their
+/// apexes or working out how they come down.
+pub fn land_many(
+    flights: impl IntoIterator<Item = SceneFlight>,
+    options: &FlightOptions,
+    done: impl FnMut(usize, RangeSummary),
+) {
+    land_many_on(LaneCode::detected(), flights, options, done);
+}
+
+/// [`land_many`] on `code`'s instructions where the CPU has them.
+pub fn land_many_on(
+    code: LaneCode,
+    flights: impl IntoIterator<Item = SceneFlight>,
+    options: &FlightOptions,
+    mut done: impl FnMut(usize, RangeSummary),
+) {
+    let flights: Vec<SceneFlight> = flights.into_iter().collect();
+    let code = (code, FirstSteps::FromNeighbours);
+    for group in groups(&flights) {
+        let done = LaneDone::Range(&mut done);
+        fly_group(code, &flights, &group, options, None, &[], done);
     }
 }
 
@@ -146,7 +173,7 @@ fn judge_many_shown<'f>(
             options,
             Some(&mut watch),
             &watched_from,
-            &mut finished,
+            LaneDone::Summary(&mut finished),
         );
     }
 }
@@ -211,7 +238,7 @@ fn fly_group(
     options: &FlightOptions,
     mut watch: Option<FencesWatch<'_>>,
     watched_from: &[f64],
-    done: &mut dyn FnMut(usize, FlightSummary),
+    mut done: LaneDone<'_>,
 ) {
     let watched_from = |index: usize| watched_from.get(index).copied().unwrap_or(0.0);
     let planar = group
@@ -231,24 +258,32 @@ fn fly_group(
         let mut step_watch = watch
             .as_mut()
             .map(|w| move |index: usize, step: &crate::numerics::ode::Step<4>| w(index, step));
-        let mut finished = |index: usize, summary: FlightSummary| {
-            let direction = match flights[index] {
-                SceneFlight::Planar { plane, .. } => plane,
-                SceneFlight::Spatial { .. } => summary.direction,
-            };
-            done(
-                index,
-                FlightSummary {
-                    direction,
-                    ..summary
-                },
-            );
+        // A planar summary's direction is its plane's (a range has none).
+        let mut with_plane = match done {
+            LaneDone::Summary(done) => Ok(move |index: usize, summary: FlightSummary| {
+                let direction = match flights[index] {
+                    SceneFlight::Planar { plane, .. } => plane,
+                    SceneFlight::Spatial { .. } => summary.direction,
+                };
+                done(
+                    index,
+                    FlightSummary {
+                        direction,
+                        ..summary
+                    },
+                );
+            }),
+            LaneDone::Range(done) => Err(done),
+        };
+        let done = match &mut with_plane {
+            Ok(finished) => LaneDone::Summary(finished),
+            Err(done) => LaneDone::Range(*done),
         };
         let reports = LaneReports {
             watch: step_watch
                 .as_mut()
                 .map(|w| w as &mut dyn FnMut(usize, &crate::numerics::ode::Step<4>)),
-            done: &mut finished,
+            done,
         };
         fly_lanes(code, jobs, options, reports);
     } else {
@@ -269,7 +304,7 @@ fn fly_group(
             watch: step_watch
                 .as_mut()
                 .map(|w| w as &mut dyn FnMut(usize, &crate::numerics::ode::Step<6>)),
-            done,
+            done: done.reborrow(),
         };
         fly_lanes(code, jobs, options, reports);
     }

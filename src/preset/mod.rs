@@ -9,10 +9,13 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
+mod bundled;
 mod escape;
 mod field;
 mod file;
 pub mod parks;
+
+use bundled::{PresetValue, Scalar};
 
 pub use escape::{cut, escape_cut, escape_for_terminal};
 pub use field::{FIELD_KEYS, FieldKey};
@@ -145,14 +148,27 @@ impl Preset {
                     path: origin.to_owned(),
                     message: syntax_message(&e),
                 })?;
+        let sections = table.iter().map(|(name, value)| (name.as_str(), value));
+        Preset::of_sections(sections, name, origin, source)
+    }
+
+    /// A preset from its top-level entries (its sections and its
+    /// description), in the file's order: read from TOML, or compiled in
+    /// ([`bundled::Value`]).
+    fn of_sections<'v, V: PresetValue + 'v>(
+        sections: impl Iterator<Item = (&'v str, &'v V)>,
+        name: &str,
+        origin: &str,
+        source: Source,
+    ) -> Result<Preset, PresetError> {
         let input = |source| PresetError::Input {
             path: origin.to_owned(),
             source,
         };
-        let wrong = |key: &str, value: &toml::Value, expected| PresetError::WrongType {
+        let wrong = |key: &str, value: &V, expected| PresetError::WrongType {
             path: origin.to_owned(),
             key: escape_for_terminal(key),
-            value: escape_for_terminal(&value.to_string()),
+            value: escape_for_terminal(&value.shown()),
             expected,
         };
         let mut scene = Scene::default();
@@ -161,7 +177,7 @@ impl Preset {
         let mut description = String::new();
         let mut fence_distance = None;
         let mut fence_height = None;
-        for (section, value) in &table {
+        for (section, value) in sections {
             if section == "description" {
                 description = value
                     .as_str()
@@ -169,7 +185,7 @@ impl Preset {
                     .to_owned();
                 continue;
             }
-            let Some(entries) = value.as_table() else {
+            let Some(entries) = value.entries() else {
                 // `pitch = 5`: a section written as a value.
                 let is_section = all_keys()
                     .map(|k| k.name)
@@ -211,18 +227,17 @@ impl Preset {
                     input(if shown == key { e } else { unknown(&shown) })
                 };
                 let field = FIELD_KEYS.iter().find(|f| f.name == key);
-                let number = match value {
-                    toml::Value::Float(f) => *f,
-                    toml::Value::Integer(i) => *i as f64,
+                let number = match value.scalar() {
+                    Some(Scalar::Number(number)) => number,
                     // A number with its unit, "103mph", as `--set` takes it.
-                    toml::Value::String(text) => match field {
+                    Some(Scalar::Text(text)) => match field {
                         Some(field) => field.read(text).map_err(input)?,
                         None => {
                             batch.set_text(&mut scene, &key, text).map_err(named)?;
                             continue;
                         }
                     },
-                    _ => {
+                    None => {
                         return Err(wrong(
                             &key,
                             value,
@@ -452,11 +467,26 @@ pub fn user_dir() -> Option<PathBuf> {
 pub fn bundled() -> Vec<Preset> {
     BUNDLED
         .iter()
-        .map(|(name, text)| {
-            Preset::parse(text, name, &format!("presets/{name}.toml"), Source::Bundled)
-                .expect("bundled presets are valid (tested)")
+        .map(|(name, _)| match bundled_preset(name) {
+            Some(Ok(preset)) => preset,
+            _ => panic!("bundled preset {name} is compiled in and valid (tested)"),
         })
         .collect()
+}
+
+/// The bundled preset `name`, from its entries compiled in (build.rs: no
+/// TOML read at run time, a third of a command's start-up work before its
+/// own), checked as a file's are; `None` if there is none of that name.
+fn bundled_preset(name: &str) -> Option<Result<Preset, PresetError>> {
+    let (name, sections) = bundled::PRESETS.iter().find(|(n, _)| *n == name)?;
+    let sections = sections.iter().map(|(section, value)| (*section, value));
+    let origin = format!("presets/{name}.toml");
+    Some(Preset::of_sections(
+        sections,
+        name,
+        &origin,
+        Source::Bundled,
+    ))
 }
 
 /// Every preset available: bundled first, then each `*.toml` in `dir`, each
@@ -522,8 +552,8 @@ pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
     if let Some(file) = user_file(spec, check_dir(dir)?) {
         return Preset::read(&file);
     }
-    if let Some((name, text)) = BUNDLED.iter().find(|(name, _)| *name == spec) {
-        return Preset::parse(text, name, &format!("presets/{name}.toml"), Source::Bundled);
+    if let Some(preset) = bundled_preset(spec) {
+        return preset;
     }
     Err(PresetError::NotFound {
         name: escape_for_terminal(spec),

@@ -8,11 +8,11 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::optimum::{OptimizerSettings, Status, optimize_from};
-use crate::model::flight::{FlightOptions, FlightSummary, TrajectoryPoint};
+use crate::model::flight::{FlightOptions, FlightSummary, RangeSummary, TrajectoryPoint};
 use crate::model::impact::{Collision, Regime};
 use crate::model::keys::{InputError, TEXT_KEYS};
 use crate::model::launch::SceneFlight;
-use crate::model::many::fly_many;
+use crate::model::many::land_many;
 use crate::model::{self, scene::Scene};
 
 mod surface;
@@ -205,7 +205,7 @@ pub fn slice(
     let flights: Vec<SceneFlight> = reachable.iter().map(|(_, _, flight)| *flight).collect();
     reachable
         .iter()
-        .zip(fly_all(&flights, &options.into()))
+        .zip(land_all(&flights, &options.into()))
         .map(|((undercut, impact, _), flight)| SlicePoint {
             undercut: *undercut,
             launch_speed: impact.launch_speed(),
@@ -217,19 +217,19 @@ pub fn slice(
         .collect()
 }
 
-/// Flights a chunk of a short list flies in lock-step ([`fly_all`]): a
+/// Flights a chunk of a short list flies in lock-step ([`land_all`]): a
 /// few chunks for the cores, each a few times the lanes.
 const FEW: usize = 8;
 
 /// Flies `flights` in lock-step, in parallel chunks of [`FEW`] (the same
 /// on any number of cores, so that each flight's steps are too), giving
-/// their summaries in their order.
-pub fn fly_all(flights: &[SceneFlight], options: &FlightOptions) -> Vec<FlightSummary> {
+/// what their ranges need ([`land_many`]), in their order.
+pub fn land_all(flights: &[SceneFlight], options: &FlightOptions) -> Vec<RangeSummary> {
     flights
         .par_chunks(FEW)
         .flat_map_iter(|chunk| {
             let mut summaries = vec![None; chunk.len()];
-            fly_many(chunk.iter().copied(), options, |index, summary| {
+            land_many(chunk.iter().copied(), options, |index, summary| {
                 summaries[index] = Some(summary);
             });
             summaries.into_iter().flatten()

@@ -9,7 +9,7 @@ use serde::Serialize;
 use crate::model::flight::FlightOptions;
 use crate::model::impact::{Collision, Impact, ImpactAngles, NormalAngles, PitchAngles};
 use crate::model::launch::SceneFlight;
-use crate::model::many::fly_many;
+use crate::model::many::land_many;
 use crate::model::{self, scene::Scene};
 
 /// A rectangular grid over undercut (columns) and swing angle (rows).
@@ -223,6 +223,47 @@ pub fn surface_within_then<T: Send>(
     tick: &(dyn Fn() + Sync),
     each_chunk: &(dyn Fn(usize, &[CellOutcome]) -> T + Sync),
 ) -> Result<(Surface, Vec<T>), TooMuchWork> {
+    let keep = |first: usize, outcomes: &[CellOutcome]| {
+        let mut kept = [CellOutcome::NotComputed; CHUNK];
+        kept[..outcomes.len()].copy_from_slice(outcomes);
+        (first, kept, each_chunk(first, outcomes))
+    };
+    let done = chunks_within(scene, grid, options, max_steps, tick, &keep)?;
+    let mut surface = Surface::not_computed(grid);
+    let count = surface.cells.len();
+    let mut thens = Vec::with_capacity(done.len());
+    for (first, outcomes, then) in done {
+        let last = (first + CHUNK).min(count);
+        surface.cells[first..last].copy_from_slice(&outcomes[..last - first]);
+        thens.push(then);
+    }
+    Ok((surface, thens))
+}
+
+/// As [`surface_within_then`], giving back `each_chunk`'s results alone,
+/// in the cells' order: no [`Surface`] is kept (a surface's CSV needs its
+/// lines, written as the chunks are flown, and nothing else).
+pub fn surface_chunks_within<T: Send>(
+    scene: &Scene,
+    grid: Grid,
+    options: impl Into<FlightOptions>,
+    max_steps: u64,
+    tick: &(dyn Fn() + Sync),
+    each_chunk: &(dyn Fn(usize, &[CellOutcome]) -> T + Sync),
+) -> Result<Vec<T>, TooMuchWork> {
+    chunks_within(scene, grid, options, max_steps, tick, each_chunk)
+}
+
+/// Flies the grid in chunks within the budget (see [`surface_within`]),
+/// giving `each_chunk`'s result of every chunk, in the cells' order.
+fn chunks_within<T: Send>(
+    scene: &Scene,
+    grid: Grid,
+    options: impl Into<FlightOptions>,
+    max_steps: u64,
+    tick: &(dyn Fn() + Sync),
+    each_chunk: &(dyn Fn(usize, &[CellOutcome]) -> T + Sync),
+) -> Result<Vec<T>, TooMuchWork> {
     let options = options.into();
     let angles = GridAngles::of(scene, grid);
     let angles = angles.as_ref();
@@ -243,21 +284,23 @@ pub fn surface_within_then<T: Send>(
     };
     // The chunks (the same as `surface_until`'s, so that a cell's range is
     // the same in both) in a spread-out order, so that the first ones done
-    // are a fair sample of the grid's work.
+    // are a fair sample of the grid's work: the m-th flown is chunk
+    // m·stride mod n.
     let chunks = chunks(grid.rows * grid.columns);
     let stride = spread(chunks.len());
     // Collected as a Vec of Options (each chunk's place known in advance),
     // not an Option of a Vec, which rayon gathers in lists of Vecs grown by
     // `realloc` as they fill.
-    let done: Vec<Option<(usize, [CellOutcome; CHUNK], T)>> = (0..chunks.len())
+    let done: Vec<Option<T>> = (0..chunks.len())
         .into_par_iter()
         .map(|m| {
             if over() {
                 return None;
             }
             let chunk = chunks[m * stride % chunks.len()].clone();
-            let (first, count) = (chunk.start, chunk.len());
+            let first = chunk.start;
             let mut outcomes = [CellOutcome::NotComputed; CHUNK];
+            let count = chunk.len();
             let (mut taken, mut flown) = (0, 0);
             fly_cells(
                 scene,
@@ -276,27 +319,28 @@ pub fn surface_within_then<T: Send>(
             steps.fetch_add(taken, Ordering::Relaxed);
             cells_flown.fetch_add(flown, Ordering::Relaxed);
             (0..count).for_each(|_| tick());
-            let then = each_chunk(first, &outcomes[..count]);
-            Some((first, outcomes, then))
+            Some(each_chunk(first, &outcomes[..count]))
         })
         .collect();
-    let Some(mut done) = done.into_iter().collect::<Option<Vec<_>>>() else {
-        return Err(TooMuchWork {
-            cells: cells_flown.load(Ordering::Relaxed),
-            steps: steps.load(Ordering::Relaxed),
-            total,
-        });
+    let too_much = || TooMuchWork {
+        cells: cells_flown.load(Ordering::Relaxed),
+        steps: steps.load(Ordering::Relaxed),
+        total,
     };
-    done.sort_unstable_by_key(|(first, _, _)| *first);
-    let mut surface = Surface::not_computed(grid);
-    let count = surface.cells.len();
-    let mut thens = Vec::with_capacity(done.len());
-    for (first, outcomes, then) in done {
-        let last = (first + CHUNK).min(count);
-        surface.cells[first..last].copy_from_slice(&outcomes[..last - first]);
-        thens.push(then);
+    if done.iter().any(Option::is_none) {
+        return Err(too_much());
     }
-    Ok((surface, thens))
+    // In the cells' order: chunk c was the m-th flown, c = m·stride mod n.
+    let n = chunks.len();
+    let mut flown_as = vec![0; n];
+    for m in 0..n {
+        flown_as[m * stride % n] = m;
+    }
+    let mut done: Vec<Option<T>> = done;
+    flown_as
+        .into_iter()
+        .map(|m| done[m].take().ok_or_else(too_much))
+        .collect()
 }
 
 /// Cells a chunk of a surface flies in lock-step: enough that the lanes'
@@ -333,15 +377,22 @@ fn fly_cells(
             done(k, CellOutcome::BatMisses, 0);
             continue;
         }
-        let swing = scene.with_swing(undercut, grid.swing_angle_at(j));
-        let impact = match angles {
-            Some(angles) => Collision::Planar(Impact::with_angles(&swing, angles.at(i, j))),
-            None => Collision::new(&swing),
+        let flight = match angles {
+            // The cell's swing is all in its angles: the rest of its scene
+            // is the grid's (not copied for each cell).
+            Some(angles) => {
+                let impact = Collision::Planar(Impact::with_angles(scene, angles.at(i, j)));
+                SceneFlight::of_impact(scene, &impact)
+            }
+            None => {
+                let swing = scene.with_swing(undercut, grid.swing_angle_at(j));
+                SceneFlight::of_impact(&swing, &Collision::new(&swing))
+            }
         };
         flown.push(k);
-        flights.push(SceneFlight::of_impact(&swing, &impact));
+        flights.push(flight);
     }
-    fly_many(flights, options, |index, flight| {
+    land_many(flights, options, |index, flight| {
         let taken = u64::from(flight.stats.accepted) + u64::from(flight.stats.rejected);
         done(
             flown[index],
@@ -451,6 +502,59 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_surface_s_chunks_come_back_in_the_cells_order() {
+        // 9 chunks (the last short), flown in a spread-out order: each
+        // chunk's results in the cells' order, the surface's cells.
+        let scene = Scene::default();
+        let grid = Grid::figure7(31, 18);
+        let tick = || {};
+        let chunks = surface_chunks_within(
+            &scene,
+            grid,
+            crate::analysis::precision::Purpose::Surface,
+            u64::MAX,
+            &tick,
+            &|first, outcomes| (first, outcomes.to_vec()),
+        )
+        .expect("within the budget");
+        assert_eq!(chunks.len(), 9);
+        let firsts: Vec<usize> = chunks.iter().map(|(first, _)| *first).collect();
+        assert_eq!(firsts, (0..9).map(|c| c * CHUNK).collect::<Vec<_>>());
+        let cells: Vec<CellOutcome> = chunks.into_iter().flat_map(|(_, o)| o).collect();
+        let whole = surface_within(
+            &scene,
+            grid,
+            crate::analysis::precision::Purpose::Surface,
+            u64::MAX,
+            &tick,
+        )
+        .expect("within the budget");
+        assert_eq!(cells, whole.outcomes());
+        // Over the budget, both give up alike.
+        let refused = |steps| {
+            let chunks = surface_chunks_within(
+                &scene,
+                grid,
+                crate::analysis::precision::Purpose::Surface,
+                steps,
+                &tick,
+                &|_, _| (),
+            );
+            let whole = surface_within(
+                &scene,
+                grid,
+                crate::analysis::precision::Purpose::Surface,
+                steps,
+                &tick,
+            );
+            (chunks.err(), whole.err())
+        };
+        let (chunks, whole) = refused(100);
+        assert!(chunks.is_some() && whole.is_some());
+        assert_eq!(chunks.map(|w| w.total), Some(grid.columns * grid.rows));
+    }
+
+    #[test]
     fn a_grid_s_impact_angles_are_each_cell_s_own() {
         // Each cell's angles from its column's, its row's and the pitch's
         // parts: exactly those of its own scene, for a grid that is not
@@ -465,6 +569,14 @@ mod tests {
             assert_eq!(
                 Impact::with_angles(&cell, angles.at(i, j)),
                 Impact::new(&cell)
+            );
+            // Nor does the rest of the cell's scene differ from the grid's
+            // for its impact and flight (what `fly_cells` relies on).
+            let impact = Collision::Planar(Impact::with_angles(&scene, angles.at(i, j)));
+            assert_eq!(impact, Collision::new(&cell), "({i}, {j})");
+            assert_eq!(
+                SceneFlight::of_impact(&scene, &impact),
+                SceneFlight::of_impact(&cell, &Collision::new(&cell))
             );
         }
         // A tilted bat's impact is the 3-D one: no planar angles.

@@ -4,7 +4,7 @@
 //! continuous extension, and a prediction of the next of them so that the
 //! step that meets it wastes little beyond it.
 
-use super::{Dynamics, FlightSummary, Regime};
+use super::{Dynamics, FlightSummary, RangeSummary, Regime};
 use crate::numerics::ode::{Control, State, Stats, Step};
 use crate::numerics::real::Real;
 use crate::numerics::roots::find_root_newton_from;
@@ -28,6 +28,9 @@ pub(crate) struct Events<const N: usize, D: Dynamics<N>> {
     /// The time of the last switch: a second switch at the same instant
     /// would undo the first.
     last_switch: f64,
+    /// Whether the apex is located (a flight asked for its range alone
+    /// needs none).
+    locates_apex: bool,
     /// The highest point: height and horizontal distance.
     pub apex: (f64, f64),
     /// The landing: time and state.
@@ -45,8 +48,8 @@ struct Switch {
 
 impl<const N: usize, D: Dynamics<N>> Events<N, D> {
     /// The events of a flight from `start`, switching at the drag curve's
-    /// kinks if `stop_at_kinks`.
-    pub fn new(flight: D, start: &State<N>, stop_at_kinks: bool) -> Self {
+    /// kinks if `stop_at_kinks`, locating the apex if `locates_apex`.
+    pub fn new(flight: D, start: &State<N>, (stop_at_kinks, locates_apex): (bool, bool)) -> Self {
         let regime = flight.starting_regime(start, stop_at_kinks);
         Events {
             flight,
@@ -59,6 +62,7 @@ impl<const N: usize, D: Dynamics<N>> Events<N, D> {
             regime,
             start: *start,
             last_switch: f64::NEG_INFINITY,
+            locates_apex,
             apex: (start[D::HEIGHT], 0.0),
             landing: None,
             last: (0.0, *start),
@@ -83,8 +87,9 @@ impl<const N: usize, D: Dynamics<N>> Events<N, D> {
     }
 
     /// The flight's outcome, once the integration has ended (`landed` if
-    /// the landing stopped it).
+    /// the landing stopped it). Only for events that located the apex.
     pub fn summary(&self, landed: bool, stats: Stats) -> FlightSummary {
+        debug_assert!(self.locates_apex, "a summary without its apex");
         let (time, state) = self.landing.unwrap_or(self.last);
         let (range, direction) = D::ground(&state, &self.start);
         let (horizontal, vertical) = D::velocity_parts(&state);
@@ -98,6 +103,17 @@ impl<const N: usize, D: Dynamics<N>> Events<N, D> {
             // for bit what it was.
             landing_speed: (horizontal * horizontal + vertical * vertical).sqrt(),
             landing_angle: (-vertical).atan2(horizontal),
+            landed,
+            stats,
+        }
+    }
+
+    /// What of [`Events::summary`] a range needs, bit for bit.
+    pub fn range_summary(&self, landed: bool, stats: Stats) -> RangeSummary {
+        let (time, state) = self.landing.unwrap_or(self.last);
+        RangeSummary {
+            range: D::distance(&state, &self.start),
+            flight_time: time,
             landed,
             stats,
         }
@@ -127,8 +143,21 @@ impl<const N: usize, D: Dynamics<N>> Events<N, D> {
             };
             // At the ends, from the step's own states (the rates unused).
             let ends = |y: &State<N>| excess(y, y).0;
+            // Inside, the velocity and its slope alone (all that |V_r|²
+            // reads), component by component: the same numbers as the
+            // whole state's, without the positions'.
+            let velocity_at = |t: f64| {
+                let (mut state, mut slope) = (State::<N>::zeros(), State::<N>::zeros());
+                for i in D::VELOCITY_X..N {
+                    (state[i], slope[i]) = dense.component_at(t, i);
+                }
+                (state, slope)
+            };
             find_root_newton_from(
-                |t| excess(&dense.at(t), &dense.slope_at(t)),
+                |t| {
+                    let (state, slope) = velocity_at(t);
+                    excess(&state, &slope)
+                },
                 (step.t0, ends(&step.y0)),
                 (step.t1, ends(&step.y1)),
                 ROOT_TOLERANCE,
@@ -235,7 +264,11 @@ impl<const N: usize, D: Dynamics<N>> Events<N, D> {
             }
         }
         watch(shown);
-        if shown.y0[D::VERTICAL_VELOCITY] > 0.0 && shown.y1[D::VERTICAL_VELOCITY] <= 0.0 {
+        let vertical = (
+            shown.y0[D::VERTICAL_VELOCITY],
+            shown.y1[D::VERTICAL_VELOCITY],
+        );
+        if self.locates_apex && passes_apex(vertical) {
             let s = shown.at(Self::zero_of(shown, D::VERTICAL_VELOCITY, 0.0));
             if s[D::HEIGHT] > self.apex.0 {
                 self.apex = (s[D::HEIGHT], D::ground(&s, &self.start).0);
@@ -314,19 +347,26 @@ pub struct Bounds<R: Real> {
     pub in_wind: R::Mask,
 }
 
-/// Whether anything happens inside a step: a kink or the wind's layer
-/// crossed, the apex passed, the ground reached. Where it does not, the
-/// step's observer need look no further than [`end_next_by`].
+/// Whether anything but the apex happens inside a step: a kink or the
+/// wind's layer crossed, the ground reached. Where nothing does (nor the
+/// apex passed, [`passes_apex`], if it is located), the step's observer
+/// need look no further than [`end_next_by`].
 #[inline(always)]
-pub fn eventful<R: Real>(ends: &StepEnds<R>, bounds: &Bounds<R>) -> R::Mask {
-    let zero = R::splat(0.0);
-    let ((_, y1), (vy0, vy1)) = (ends.heights, ends.vertical_velocities);
+pub fn switches_or_lands<R: Real>(ends: &StepEnds<R>, bounds: &Bounds<R>) -> R::Mask {
+    let y1 = ends.heights.1;
     let re1 = ends.reynolds.1;
     let kink = re1.lt(bounds.kink_below) | bounds.kink_above.lt(re1);
     let leaves_layer = y1.lt(bounds.wind_height);
     let layer = (bounds.in_wind & leaves_layer) | (!bounds.in_wind & !leaves_layer);
-    let apex = zero.lt(vy0) & vy1.le(zero);
-    kink | layer | apex | y1.le(zero)
+    kink | layer | y1.le(R::splat(0.0))
+}
+
+/// Whether a step passes the apex: its vertical velocity, `(v_y0, v_y1)`
+/// at its ends, turns from up to down.
+#[inline(always)]
+pub fn passes_apex<R: Real>((vy0, vy1): (R, R)) -> R::Mask {
+    let zero = R::splat(0.0);
+    zero.lt(vy0) & vy1.le(zero)
 }
 
 /// The time by which the step after this one should end, when an event is

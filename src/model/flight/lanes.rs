@@ -3,8 +3,8 @@
 //! same generic formulas as one flight's, on lanes of four numbers), and
 //! each lane's events in scalar code, as a single flight sees them.
 
-use super::events::{Bounds, Events, StepEnds, end_next_by, eventful};
-use super::{Dynamics, Flight, Flight3d, FlightOptions, FlightSummary, Regime};
+use super::events::{Bounds, Events, StepEnds, end_next_by, passes_apex, switches_or_lands};
+use super::{Dynamics, Flight, Flight3d, FlightOptions, FlightSummary, RangeSummary, Regime};
 use super::{PlanarConstants, SpatialConstants};
 use crate::model::aero::{DragCurve, LiftCurve, WithModels};
 use crate::model::clearing::{planar_reach_at, spatial_reach_at};
@@ -243,7 +243,32 @@ pub type LaneWatch<'r, const N: usize> = &'r mut dyn FnMut(usize, &Step<N>);
 /// each flight's summary, by the flight's index.
 pub struct LaneReports<'r, const N: usize> {
     pub watch: Option<LaneWatch<'r, N>>,
-    pub done: &'r mut dyn FnMut(usize, FlightSummary),
+    pub done: LaneDone<'r>,
+}
+
+/// How a flight's end is told, by the flight's index.
+pub enum LaneDone<'r> {
+    /// Its whole summary.
+    Summary(&'r mut dyn FnMut(usize, FlightSummary)),
+    /// What its range needs alone: no apex is located (a step that only
+    /// passes it is left unseen), and no landing speed, angle or direction
+    /// worked out. The same flight, to the bit, as with its whole summary.
+    Range(&'r mut dyn FnMut(usize, RangeSummary)),
+}
+
+impl LaneDone<'_> {
+    /// Whether the flights' apexes are wanted.
+    fn locates_apex(&self) -> bool {
+        matches!(self, LaneDone::Summary(_))
+    }
+
+    /// The same, borrowed for a shorter while.
+    pub fn reborrow(&mut self) -> LaneDone<'_> {
+        match self {
+            LaneDone::Summary(done) => LaneDone::Summary(*done),
+            LaneDone::Range(done) => LaneDone::Range(*done),
+        }
+    }
 }
 
 /// Four flights' worth of lanes (numbers `V`), with their events, fed
@@ -251,6 +276,8 @@ pub struct LaneReports<'r, const N: usize> {
 struct FlightLanes<'r, const N: usize, V: LaneReal, D: LaneFlight<N>, Dr, L, J> {
     models: (Dr, L),
     stop_at_kinks: bool,
+    /// Whether the events locate the apex ([`LaneDone::locates_apex`]).
+    locates_apex: bool,
     /// Whether the lanes switch drag pieces at the kinks (else each
     /// evaluation takes the piece its Re is on).
     switching: bool,
@@ -349,6 +376,16 @@ where
         } else {
             (accepted, h)
         };
+        let vertical_velocities = (y0.0[D::VERTICAL_VELOCITY], y1.0[D::VERTICAL_VELOCITY]);
+        let apex = passes_apex(vertical_velocities);
+        // Where no apex is located, a step that only passes it is unseen
+        // too, its next end reckoned as its observer reckons it (from
+        // t1 − t0), so that the flight is the one located apexes give.
+        let (apex, h) = if self.locates_apex {
+            (apex, h)
+        } else {
+            (V::mask_of([false; LANES]), V::select(apex, t1 - t0, h))
+        };
         let reynolds = if self.switching {
             (
                 D::reynolds_lanes(&self.constants, self.in_wind, y0),
@@ -361,10 +398,11 @@ where
             t1,
             h,
             heights: (y0.0[D::HEIGHT], y1.0[D::HEIGHT]),
-            vertical_velocities: (y0.0[D::VERTICAL_VELOCITY], y1.0[D::VERTICAL_VELOCITY]),
+            vertical_velocities,
             reynolds,
         };
-        let quiet = accepted & unwatched & !eventful(&ends, &self.bounds);
+        let eventful = switches_or_lands(&ends, &self.bounds) | apex;
+        let quiet = accepted & unwatched & !eventful;
         (quiet, end_next_by(&ends, &self.bounds))
     }
 
@@ -372,16 +410,21 @@ where
         if let Some(mut events) = self.events[lane].take() {
             // Quiet steps were not shown to it: the flight's last point.
             events.last = end;
-            (self.reports.done)(
-                self.index[lane],
-                events.summary(outcome == Outcome::Stopped, stats),
-            );
+            let (index, landed) = (self.index[lane], outcome == Outcome::Stopped);
+            match &mut self.reports.done {
+                LaneDone::Summary(done) => done(index, events.summary(landed, stats)),
+                LaneDone::Range(done) => done(index, events.range_summary(landed, stats)),
+            }
         }
     }
 
     fn refill(&mut self, lane: usize) -> Option<LaneStart<N>> {
         let job = self.jobs.next()?;
-        let events = Events::new(job.flight, &job.start, self.stop_at_kinks);
+        let events = Events::new(
+            job.flight,
+            &job.start,
+            (self.stop_at_kinks, self.locates_apex),
+        );
         self.set_regime(lane, (events.regime(), events.bounds()));
         self.events[lane] = Some(events);
         self.index[lane] = job.index;
@@ -480,6 +523,7 @@ where
             switching: self.stop_at_kinks && !drag.kinks().is_empty(),
             models: self.models,
             stop_at_kinks: self.stop_at_kinks,
+            locates_apex: self.reports.done.locates_apex(),
             constants: D::gather(&[D::Constants::default(); LANES]),
             pieces: V::splat(0.0),
             in_wind: V::mask_of(none),

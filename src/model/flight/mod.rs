@@ -60,12 +60,19 @@ pub struct Regime {
 /// `re` is on, or about to enter: at a kink, the one Re is moving into
 /// (`rising` says whether it moves up; asked only there).
 pub(crate) fn piece_entered(kinks: &[f64], re: f64, rising: impl FnOnce() -> bool) -> usize {
+    // The kinks below Re, and whether it sits on one, in one pass.
+    let (mut below, mut on_kink) = (0, false);
+    for &kink in kinks {
+        below += usize::from(re > kink);
+        on_kink |= re == kink;
+    }
     // Which way Re moves (an acceleration, so an exponential on the drag
-    // crisis) matters only on a kink itself.
-    if kinks.contains(&re) && rising() {
-        kinks.iter().filter(|&&k| re >= k).count()
+    // crisis) matters only on a kink itself: moving up, it enters the piece
+    // above.
+    if on_kink && rising() {
+        below + 1
     } else {
-        kinks.iter().filter(|&&k| re > k).count()
+        below
     }
 }
 
@@ -86,6 +93,9 @@ pub(crate) fn spin_now<R: Real>((rate, surface_speed): (R, R), decay_rate: R, t:
 pub trait Dynamics<const N: usize>: Copy {
     const HEIGHT: usize;
     const VERTICAL_VELOCITY: usize;
+    /// The velocity's first component: the velocity's run from it to the
+    /// state's end.
+    const VELOCITY_X: usize;
 
     /// d/dt of the state at time `t` in the regime of drag piece `piece`
     /// and wind layer `in_wind` (a [`Regime`]'s fields, passed apart so
@@ -114,7 +124,16 @@ pub trait Dynamics<const N: usize>: Copy {
     /// The horizontal distance and direction (rad) of `state` from `origin`.
     /// The plane's distance is signed (negative behind the plate) and its
     /// direction that of its plane, 0 here.
-    fn ground(state: &State<N>, origin: &State<N>) -> (f64, f64);
+    fn ground(state: &State<N>, origin: &State<N>) -> (f64, f64) {
+        (
+            Self::distance(state, origin),
+            Self::direction(state, origin),
+        )
+    }
+    /// [`Dynamics::ground`]'s distance alone.
+    fn distance(state: &State<N>, origin: &State<N>) -> f64;
+    /// [`Dynamics::ground`]'s direction alone.
+    fn direction(state: &State<N>, origin: &State<N>) -> f64;
     /// The horizontal (signed in the plane) and vertical velocity.
     fn velocity_parts(state: &State<N>) -> (f64, f64);
     /// (x, y, z) of `state`.
@@ -195,6 +214,32 @@ pub struct FlightSummary {
     /// False when the ball was still in the air at its time limit
     /// ([`Launch::time_limit`]) or the step limit; the other fields then
     /// describe the last point, and `range` is no range.
+    pub landed: bool,
+    pub stats: ode::Stats,
+}
+
+impl FlightSummary {
+    /// What of it a range needs.
+    pub fn range_summary(&self) -> RangeSummary {
+        RangeSummary {
+            range: self.range,
+            flight_time: self.flight_time,
+            landed: self.landed,
+            stats: self.stats,
+        }
+    }
+}
+
+/// The part of a flight's outcome that a range needs (a surface's cell, a
+/// sensitivity): flights asked for it alone locate no apex, and work out
+/// no landing speed, angle or direction. Each field is bit for bit the
+/// [`FlightSummary`]'s of the same flight.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct RangeSummary {
+    /// As [`FlightSummary::range`].
+    pub range: f64,
+    pub flight_time: f64,
+    /// As [`FlightSummary::landed`]: when false, `range` is no range.
     pub landed: bool,
     pub stats: ode::Stats,
 }
@@ -295,7 +340,7 @@ impl<const N: usize, D: Dynamics<N>, S: Start<N>, W: FnMut(&Step<N>)> WithModels
             mut watch,
         } = self;
         let start = launch.state();
-        let mut events = Events::new(*flight, &start, stop_at_kinks);
+        let mut events = Events::new(*flight, &start, (stop_at_kinks, true));
         // The regime the right-hand side reads during a step, which the
         // observer changes between steps.
         let regime = Cell::new(events.regime());

@@ -337,6 +337,7 @@ impl Launch {
 impl Dynamics<4> for Flight {
     const HEIGHT: usize = HEIGHT;
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
+    const VELOCITY_X: usize = VELOCITY_X;
 
     // Inlined into the integrator's stages, with the models' formulas.
     #[inline(always)]
@@ -394,8 +395,13 @@ impl Dynamics<4> for Flight {
     }
 
     #[inline]
-    fn ground(state: &State<4>, origin: &State<4>) -> (f64, f64) {
-        (state[DISTANCE] - origin[DISTANCE], 0.0)
+    fn distance(state: &State<4>, origin: &State<4>) -> f64 {
+        state[DISTANCE] - origin[DISTANCE]
+    }
+
+    #[inline]
+    fn direction(_: &State<4>, _: &State<4>) -> f64 {
+        0.0
     }
 
     #[inline]

@@ -237,6 +237,7 @@ impl Flight3d {
 impl Dynamics<6> for Flight3d {
     const HEIGHT: usize = HEIGHT;
     const VERTICAL_VELOCITY: usize = VERTICAL_VELOCITY;
+    const VELOCITY_X: usize = VELOCITY_X;
 
     // Inlined into the integrator's stages, with the models' formulas.
     #[inline(always)]
@@ -312,9 +313,15 @@ impl Dynamics<6> for Flight3d {
     }
 
     #[inline]
-    fn ground(state: &State<6>, origin: &State<6>) -> (f64, f64) {
+    fn distance(state: &State<6>, origin: &State<6>) -> f64 {
         let (x, z) = (state[X] - origin[X], state[Z] - origin[Z]);
-        (x.hypot(z), frame::direction_of(x, z))
+        x.hypot(z)
+    }
+
+    #[inline]
+    fn direction(state: &State<6>, origin: &State<6>) -> f64 {
+        let (x, z) = (state[X] - origin[X], state[Z] - origin[Z]);
+        frame::direction_of(x, z)
     }
 
     #[inline]

@@ -280,7 +280,7 @@ pub enum LaneCode {
 }
 
 impl LaneCode {
-    /// The fastest this CPU runs (`is_x86_feature_detected!` asks the CPU
+    /// The fastest this CPU runs ([`super::super::cpu::has_avx2`] asks the CPU
     /// once and caches the answer).
     pub fn detected() -> Self {
         if LaneCode::Avx2.runs_here() {
@@ -295,7 +295,7 @@ impl LaneCode {
         match self {
             LaneCode::Baseline => true,
             #[cfg(target_arch = "x86_64")]
-            LaneCode::Avx2 => std::arch::is_x86_feature_detected!("avx2"),
+            LaneCode::Avx2 => super::super::cpu::has_avx2(),
             #[cfg(not(target_arch = "x86_64"))]
             LaneCode::Avx2 => false,
         }

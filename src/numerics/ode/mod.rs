@@ -143,7 +143,7 @@ where
     O: FnMut(&Step<N>) -> Control,
 {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
+    if super::cpu::has_avx2() {
         // SAFETY: the CPU has AVX2.
         return unsafe { integrate_avx2(f, t0, y0, t_end, settings, observe) };
     }
