@@ -437,11 +437,19 @@ mod tests {
         let mut next = crate::numerics::xorshift::uniform(7);
         let mut rows = Vec::new();
         for i in 0..40 {
-            let base = if i % 5 == 0 { crate::Scene::default() } else { nathan };
+            let base = if i % 5 == 0 {
+                crate::Scene::default()
+            } else {
+                nathan
+            };
             let scene = base.with_launch(BattedBall {
                 speed: 30.0 + 20.0 * next(),
                 // Some straight up: they never land on their bearing's side.
-                angle: if i % 13 == 6 { FRAC_PI_2 - 1e-4 } else { 0.1 + 0.6 * next() },
+                angle: if i % 13 == 6 {
+                    FRAC_PI_2 - 1e-4
+                } else {
+                    0.1 + 0.6 * next()
+                },
                 spin: 200.0,
                 direction: 0.0,
                 sidespin: 0.0,
@@ -486,7 +494,11 @@ mod tests {
         };
         let mut worst: f64 = 0.0;
         for i in 0..300 {
-            let base = if i % 3 == 0 { crate::Scene::default() } else { nathan };
+            let base = if i % 3 == 0 {
+                crate::Scene::default()
+            } else {
+                nathan
+            };
             let scene = base.with_launch(BattedBall {
                 speed: 30.0 + 22.0 * next(),
                 angle: -0.1 + 0.9 * next(),

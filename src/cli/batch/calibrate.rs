@@ -9,8 +9,8 @@ use std::path::Path;
 
 use rayon::prelude::*;
 
-use super::records::{Fields, MAX_RECORD_BYTES, Record, Records, Stop, split_fields};
 use super::pieces::PIECE_ROWS;
+use super::records::{Fields, MAX_RECORD_BYTES, Record, Records, Stop, split_fields};
 use super::rows::{Header, Job, Row, parse_row};
 use super::savant_columns::{SavantColumn, Setup};
 use crate::analysis::calibrate::{self, Errors, Fit, Measured};

@@ -131,7 +131,10 @@ impl Verdict {
 
 /// The nearest of the walls of `parks` (m): +∞ for none.
 pub(super) fn nearest_wall(parks: &[&park::Fence]) -> f64 {
-    parks.iter().map(|f| f.nearest()).fold(f64::INFINITY, f64::min)
+    parks
+        .iter()
+        .map(|f| f.nearest())
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// What the output prints of a row, for [`settled`].
@@ -628,6 +631,9 @@ mod tests {
                 }
             }
         }
-        assert!(taken > rows / 4 && taken < rows * 3 / 4, "{taken} of {rows}");
+        assert!(
+            taken > rows / 4 && taken < rows * 3 / 4,
+            "{taken} of {rows}"
+        );
     }
 }
