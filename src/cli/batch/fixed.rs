@@ -65,19 +65,30 @@ fn dispatch(out: &mut Vec<u8>, value: f64, decimals: usize, then: Option<u8>) {
 #[inline(always)]
 pub(super) fn write_with<const D: usize>(out: &mut Vec<u8>, value: f64, then: Option<u8>) {
     match text::<D>(value) {
-        Some(Text { mut room, mut len }) => {
-            if let Some(then) = then {
-                room[len] = then;
-                len += 1;
-            }
-            // The whole room copied (a fixed size: a few moves, no call),
-            // then cut to the text: cheaper than a copy of its length.
-            let at = out.len();
-            out.extend_from_slice(&room);
-            out.truncate(at + len);
-        }
+        Some(text) => append(out, text, then),
         None => by_format(out, value, D, then),
     }
+}
+
+/// A count (a line number), then `then`: as `format!("{count}")`.
+pub(super) fn write_count(out: &mut Vec<u8>, count: usize, then: u8) {
+    let mut room = [0u8; ROOM];
+    let len = put_integer(&mut room, 0, count as u64);
+    append(out, Text { room, len }, Some(then));
+}
+
+/// `text`, then `then`, appended at once.
+#[inline(always)]
+fn append(out: &mut Vec<u8>, Text { mut room, mut len }: Text, then: Option<u8>) {
+    if let Some(then) = then {
+        room[len] = then;
+        len += 1;
+    }
+    // The whole room copied (a fixed size: a few moves, no call), then cut
+    // to the text: cheaper than a copy of its length.
+    let at = out.len();
+    out.extend_from_slice(&room);
+    out.truncate(at + len);
 }
 
 /// The standard library's text, out of the common path.
@@ -90,7 +101,7 @@ fn by_format(out: &mut Vec<u8>, value: f64, decimals: usize, then: Option<u8>) {
 
 /// Bytes a number's text may take here, and the byte after it: a sign, 16
 /// digits before the point (the scaled value stays below 2^50 < 10^16), the
-/// point and 9 decimals.
+/// point and 9 decimals; or a count's 20 digits.
 const ROOM: usize = 32;
 
 /// A number's text at the start of a fixed room.
@@ -99,9 +110,10 @@ struct Text {
     len: usize,
 }
 
-/// Powers of ten as integers, for splitting the scaled value at its point.
-const POWERS: [u64; 17] = {
-    let mut powers = [1u64; 17];
+/// Powers of ten as integers, for splitting the scaled value at its point
+/// and counting digits: all that a `u64` holds.
+const POWERS: [u64; 20] = {
+    let mut powers = [1u64; 20];
     let mut i = 1;
     while i < powers.len() {
         powers[i] = powers[i - 1] * 10;
@@ -139,17 +151,13 @@ fn text<const D: usize>(value: f64) -> Option<Text> {
         return None;
     }
     let whole = shifted.to_bits() - TWO_52.to_bits();
-    let (mut integer, mut fraction) = (whole / POWERS[D], whole % POWERS[D]);
+    let (integer, mut fraction) = (whole / POWERS[D], whole % POWERS[D]);
     let mut room = [0u8; ROOM];
     // `format!` keeps the sign of a negative value that rounds to zero,
-    // and of −0.0. Without one, the first digit overwrites it.
-    room[0] = b'-';
+    // and of −0.0.
     let sign = usize::from(value.is_sign_negative());
-    let mut digits = 1;
-    while digits < POWERS.len() && integer >= POWERS[digits] {
-        digits += 1;
-    }
-    let point = sign + digits;
+    room[0] = b'-';
+    let point = put_integer(&mut room, sign, integer);
     let len = if D == 0 { point } else { point + 1 + D };
     let mut at = len;
     for _ in 0..D / 2 {
@@ -164,17 +172,28 @@ fn text<const D: usize>(value: f64) -> Option<Text> {
     if D > 0 {
         room[point] = b'.';
     }
-    at = point;
+    Some(Text { room, len })
+}
+
+/// Writes `integer`'s digits into `room` from `from`; where they end.
+#[inline(always)]
+fn put_integer(room: &mut [u8; ROOM], from: usize, mut integer: u64) -> usize {
+    let mut digits = 1;
+    while digits < POWERS.len() && integer >= POWERS[digits] {
+        digits += 1;
+    }
+    let end = from + digits;
+    let mut at = end;
     while integer >= 10 {
         at -= 2;
         let pair = 2 * (integer % 100) as usize;
         integer /= 100;
         room[at..at + 2].copy_from_slice(&DIGIT_PAIRS[pair..pair + 2]);
     }
-    if at > sign {
-        room[sign] = b'0' + integer as u8;
+    if at > from {
+        room[from] = b'0' + integer as u8;
     }
-    Some(Text { room, len })
+    end
 }
 
 /// `x.round()` (half away from zero; ±0 alike), without its library call
@@ -311,6 +330,19 @@ mod tests {
                     agrees(-value, decimals);
                 }
             }
+        }
+    }
+
+    #[test]
+    fn counts_print_as_format_prints_them() {
+        let mut next = xorshift(0x0123_4567_89ab_cdef);
+        let edges = [0, 1, 9, 10, 99, 100, 12345, usize::MAX / 10, usize::MAX];
+        let powers = (0..20).flat_map(|k| [10usize.pow(k), 10usize.pow(k) - 1]);
+        let random = (0..10_000).map(|_| (next() >> (next() % 64)) as usize);
+        for count in edges.into_iter().chain(powers).chain(random) {
+            let mut out = b"x".to_vec();
+            write_count(&mut out, count, b',');
+            assert_eq!(String::from_utf8(out).unwrap(), format!("x{count},"));
         }
     }
 

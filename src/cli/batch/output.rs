@@ -74,10 +74,13 @@ pub(super) fn csv_header(statcast: bool, setup: &Setup, shown: Shown) -> String 
     names.join(",") + "\n"
 }
 
+/// The `park` of a row at no park.
+const GENERIC: &str = "generic";
+
 /// The row's park code, or "generic".
 fn park_code<'a>(job: &Job, setup: &Setup<'a>) -> &'a str {
     job.park
-        .map_or("generic", |i| setup.parks.parks[i].code.as_str())
+        .map_or(GENERIC, |i| setup.parks.parks[i].code.as_str())
 }
 
 /// The model's range less Statcast's distance (m), if both are known.
@@ -192,9 +195,7 @@ impl CsvLine<'_> {
             number::<SI>(out, printing, column, si, then);
         };
         let comma = Some(b',');
-        let mut line = itoa::Buffer::new();
-        out.extend_from_slice(line.format(job.line).as_bytes());
-        out.push(b',');
+        fixed::write_count(out, job.line, b',');
         number(out, Number::Speed, launch.speed, comma);
         number(out, Number::Angle6, launch.angle, comma);
         number(out, Number::Spin3, launch.spin, comma);
@@ -214,7 +215,10 @@ impl CsvLine<'_> {
                 false => out.extend_from_slice(b"false,"),
             }
         }
-        write_quoted(out, park_code(job, self.setup));
+        // The park's code as its field, worked out once (GENERIC needs no
+        // quotes).
+        let park = job.park.map(|i| self.setup.code_fields[i].as_str());
+        out.extend_from_slice(park.unwrap_or(GENERIC).as_bytes());
         out.push(b',');
         out.extend_from_slice(flown.clearing.outcome.name().as_bytes());
         out.push(b',');
@@ -222,10 +226,10 @@ impl CsvLine<'_> {
             Some(margin) => number(out, Number::Distance3, margin, comma),
             None => out.push(b','),
         }
-        out.extend_from_slice(line.format(flown.parks_cleared).as_bytes());
+        fixed::write_count(out, flown.parks_cleared, b',');
         match job.launch.estimates_spin() {
-            true => out.extend_from_slice(b",true"),
-            false => out.extend_from_slice(b",false"),
+            true => out.extend_from_slice(b"true"),
+            false => out.extend_from_slice(b"false"),
         }
         if self.statcast {
             for value in [job.statcast, difference(job, flown)] {

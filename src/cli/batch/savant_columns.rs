@@ -83,6 +83,9 @@ pub(in crate::cli) struct Setup<'a> {
     /// binary search, not by asking 30 parks (`None` if a code is too long
     /// for [`Setup::park_of`]'s room: then each park is asked).
     codes: Option<Vec<(String, usize)>>,
+    /// Each park's code as a CSV field (quoted if it must be), for every
+    /// row's `park` column.
+    pub(super) code_fields: Vec<String>,
 }
 
 impl<'a> Setup<'a> {
@@ -126,6 +129,7 @@ impl<'a> Setup<'a> {
             own_air: false,
             keep: Vec::new(),
             codes: park_codes(parks),
+            code_fields: parks.parks.iter().map(|p| quoted(&p.code)).collect(),
         }
     }
 
