@@ -70,13 +70,6 @@ pub(super) fn write_with<const D: usize>(out: &mut Vec<u8>, value: f64, then: Op
     }
 }
 
-/// A count (a line number), then `then`: as `format!("{count}")`.
-pub(super) fn write_count(out: &mut Vec<u8>, count: usize, then: u8) {
-    let mut room = [0u8; ROOM];
-    let len = put_integer(&mut room, 0, count as u64);
-    append(out, Text { room, len }, Some(then));
-}
-
 /// `text`, then `then`, appended at once.
 #[inline(always)]
 fn append(out: &mut Vec<u8>, Text { mut room, mut len }: Text, then: Option<u8>) {
@@ -101,7 +94,7 @@ fn by_format(out: &mut Vec<u8>, value: f64, decimals: usize, then: Option<u8>) {
 
 /// Bytes a number's text may take here, and the byte after it: a sign, 16
 /// digits before the point (the scaled value stays below 2^50 < 10^16), the
-/// point and 9 decimals; or a count's 20 digits.
+/// point and 9 decimals.
 const ROOM: usize = 32;
 
 /// A number's text at the start of a fixed room.
@@ -111,9 +104,9 @@ struct Text {
 }
 
 /// Powers of ten as integers, for splitting the scaled value at its point
-/// and counting digits: all that a `u64` holds.
-const POWERS: [u64; 20] = {
-    let mut powers = [1u64; 20];
+/// and counting its digits.
+const POWERS: [u64; 17] = {
+    let mut powers = [1u64; 17];
     let mut i = 1;
     while i < powers.len() {
         powers[i] = powers[i - 1] * 10;
@@ -330,19 +323,6 @@ mod tests {
                     agrees(-value, decimals);
                 }
             }
-        }
-    }
-
-    #[test]
-    fn counts_print_as_format_prints_them() {
-        let mut next = xorshift(0x0123_4567_89ab_cdef);
-        let edges = [0, 1, 9, 10, 99, 100, 12345, usize::MAX / 10, usize::MAX];
-        let powers = (0..20).flat_map(|k| [10usize.pow(k), 10usize.pow(k) - 1]);
-        let random = (0..10_000).map(|_| (next() >> (next() % 64)) as usize);
-        for count in edges.into_iter().chain(powers).chain(random) {
-            let mut out = b"x".to_vec();
-            write_count(&mut out, count, b',');
-            assert_eq!(String::from_utf8(out).unwrap(), format!("x{count},"));
         }
     }
 

@@ -195,7 +195,9 @@ impl CsvLine<'_> {
             number::<SI>(out, printing, column, si, then);
         };
         let comma = Some(b',');
-        fixed::write_count(out, job.line, b',');
+        let mut count = itoa::Buffer::new();
+        out.extend_from_slice(count.format(job.line).as_bytes());
+        out.push(b',');
         number(out, Number::Speed, launch.speed, comma);
         number(out, Number::Angle6, launch.angle, comma);
         number(out, Number::Spin3, launch.spin, comma);
@@ -226,7 +228,8 @@ impl CsvLine<'_> {
             Some(margin) => number(out, Number::Distance3, margin, comma),
             None => out.push(b','),
         }
-        fixed::write_count(out, flown.parks_cleared, b',');
+        out.extend_from_slice(count.format(flown.parks_cleared).as_bytes());
+        out.push(b',');
         match job.launch.estimates_spin() {
             true => out.extend_from_slice(b"true"),
             false => out.extend_from_slice(b"false"),
