@@ -211,9 +211,7 @@ impl DirectionSolve {
         if !summary.landed {
             return Some(Err(SolveError::NotLanded { spray: bearing }));
         }
-        let (sin, cos) = summary.direction.sin_cos();
-        let landing = frame::direction_of(summary.range * cos, summary.range * sin);
-        let miss = landing - bearing;
+        let miss = landing_direction(summary) - bearing;
         if miss.abs() < DIRECTION_TOLERANCE {
             return Some(Ok(self.flights));
         }
@@ -246,6 +244,13 @@ impl DirectionSolve {
         launch_toward(&mut self.scene, &self.row, self.direction);
         None
     }
+}
+
+/// Where a flight came down: the direction of its landing point (a planar
+/// flight's range may be negative, behind the plate).
+fn landing_direction(summary: &FlightSummary) -> f64 {
+    let (sin, cos) = summary.direction.sin_cos();
+    frame::direction_of(summary.range * cos, summary.range * sin)
 }
 
 /// [`launch`] for many rows (each its scene and row), in their order: the
@@ -421,6 +426,15 @@ mod tests {
         }
     }
 
+    /// The default scene under Nathan's drag and lift, which the lanes fly
+    /// bit for bit as a flight alone.
+    fn nathan_scene() -> crate::Scene {
+        let mut nathan = crate::Scene::default();
+        nathan.set_text("model.drag", "nathan").unwrap();
+        nathan.set_text("model.lift", "nathan").unwrap();
+        nathan
+    }
+
     /// Many rows' solves together (in lock-step where the lanes fly as one
     /// flight alone does, one by one under the paper's drag crisis) give
     /// each row's [`launch`], to the bit: its scene, flights and failures.
@@ -431,9 +445,7 @@ mod tests {
             tolerance: Tolerance::uniform(1e-10),
             stop_at_kinks: true,
         };
-        let mut nathan = crate::Scene::default();
-        nathan.set_text("model.drag", "nathan").unwrap();
-        nathan.set_text("model.lift", "nathan").unwrap();
+        let nathan = nathan_scene();
         let mut next = crate::numerics::xorshift::uniform(7);
         let mut rows = Vec::new();
         for i in 0..40 {
@@ -484,14 +496,9 @@ mod tests {
     #[test]
     fn a_solves_flight_lands_well_inside_its_budget() {
         use crate::analysis::precision::Purpose;
-        let mut nathan = crate::Scene::default();
-        nathan.set_text("model.drag", "nathan").unwrap();
-        nathan.set_text("model.lift", "nathan").unwrap();
+        let nathan = nathan_scene();
         let mut next = crate::numerics::xorshift::uniform(11);
-        let landing = |summary: &FlightSummary| {
-            let (sin, cos) = summary.direction.sin_cos();
-            frame::direction_of(summary.range * cos, summary.range * sin)
-        };
+        let landing = landing_direction;
         let mut worst: f64 = 0.0;
         for i in 0..300 {
             let base = if i % 3 == 0 {
