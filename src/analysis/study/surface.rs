@@ -206,57 +206,28 @@ pub fn surface_within(
     max_steps: u64,
     tick: &(dyn Fn() + Sync),
 ) -> Result<Surface, TooMuchWork> {
-    let each_chunk = |_: usize, _: &[CellOutcome]| ();
-    surface_within_then(scene, grid, options, max_steps, tick, &each_chunk).map(|(s, _)| s)
-}
-
-/// As [`surface_within`], handing each chunk's cells to `each_chunk` on the
-/// chunk's thread as soon as they are flown: `each_chunk(first, outcomes)`,
-/// `outcomes[n]` being cell `first + n`'s (row-major). Its results come
-/// back in the cells' order (a surface's CSV is written so, in parallel
-/// pieces, while the other chunks fly).
-pub fn surface_within_then<T: Send>(
-    scene: &Scene,
-    grid: Grid,
-    options: impl Into<FlightOptions>,
-    max_steps: u64,
-    tick: &(dyn Fn() + Sync),
-    each_chunk: &(dyn Fn(usize, &[CellOutcome]) -> T + Sync),
-) -> Result<(Surface, Vec<T>), TooMuchWork> {
     let keep = |first: usize, outcomes: &[CellOutcome]| {
         let mut kept = [CellOutcome::NotComputed; CHUNK];
         kept[..outcomes.len()].copy_from_slice(outcomes);
-        (first, kept, each_chunk(first, outcomes))
+        (first, kept)
     };
-    let done = chunks_within(scene, grid, options, max_steps, tick, &keep)?;
+    let done = surface_chunks_within(scene, grid, options, max_steps, tick, &keep)?;
     let mut surface = Surface::not_computed(grid);
     let count = surface.cells.len();
-    let mut thens = Vec::with_capacity(done.len());
-    for (first, outcomes, then) in done {
+    for (first, outcomes) in done {
         let last = (first + CHUNK).min(count);
         surface.cells[first..last].copy_from_slice(&outcomes[..last - first]);
-        thens.push(then);
     }
-    Ok((surface, thens))
+    Ok(surface)
 }
 
-/// As [`surface_within_then`], giving back `each_chunk`'s results alone,
-/// in the cells' order: no [`Surface`] is kept (a surface's CSV needs its
-/// lines, written as the chunks are flown, and nothing else).
+/// As [`surface_within`], handing each chunk's cells to `each_chunk` on
+/// the chunk's thread as soon as they are flown (`each_chunk(first,
+/// outcomes)`, `outcomes[n]` being cell `first + n`'s, row-major), and
+/// giving back its results alone, in the cells' order: no [`Surface`] is
+/// kept (a surface's CSV needs its lines, written as the chunks are flown,
+/// and nothing else).
 pub fn surface_chunks_within<T: Send>(
-    scene: &Scene,
-    grid: Grid,
-    options: impl Into<FlightOptions>,
-    max_steps: u64,
-    tick: &(dyn Fn() + Sync),
-    each_chunk: &(dyn Fn(usize, &[CellOutcome]) -> T + Sync),
-) -> Result<Vec<T>, TooMuchWork> {
-    chunks_within(scene, grid, options, max_steps, tick, each_chunk)
-}
-
-/// Flies the grid in chunks within the budget (see [`surface_within`]),
-/// giving `each_chunk`'s result of every chunk, in the cells' order.
-fn chunks_within<T: Send>(
     scene: &Scene,
     grid: Grid,
     options: impl Into<FlightOptions>,
