@@ -263,20 +263,21 @@ pub fn launch_many<'s>(
     spray: Spray,
     options: &FlightOptions,
 ) -> Vec<Result<Launched, SolveError>> {
-    let mut launched = Vec::new();
+    // Each row's launch; a row being solved has none until its solve ends.
+    let mut launched: Vec<Option<Result<Launched, SolveError>>> = Vec::new();
     let mut solving: Vec<(usize, DirectionSolve)> = Vec::new();
     for (index, (scene, row)) in rows.into_iter().enumerate() {
         match (row.spray, spray) {
             (Some(bearing), Spray::Landing) => {
                 solving.push((index, DirectionSolve::new(*scene, row, bearing)));
-                // Its place, filled once solved.
-                launched.push(Err(SolveError::NotLanded { spray: bearing }));
+                launched.push(None);
             }
-            _ if launches_as_given(scene, row) => launched.push(Ok(Launched {
+            // As `launch` would give it, without its copies.
+            _ if launches_as_given(scene, row) => launched.push(Some(Ok(Launched {
                 scene: *scene,
                 flights: 0,
-            })),
-            _ => launched.push(launch(scene, row, spray, options)),
+            }))),
+            _ => launched.push(Some(launch(scene, row, spray, options))),
         }
     }
     let mut summaries: Vec<Option<FlightSummary>> = Vec::new();
@@ -299,17 +300,20 @@ pub fn launch_many<'s>(
             let summary = flown.next().copied().flatten().expect("every flight flown");
             match solve.flown(&summary) {
                 Some(solved) => {
-                    launched[*index] = solved.map(|flights| Launched {
+                    launched[*index] = Some(solved.map(|flights| Launched {
                         scene: solve.scene,
                         flights,
-                    });
+                    }));
                     false
                 }
                 None => true,
             }
         });
     }
-    launched
+    // Every solve ends within MAX_FLIGHTS rounds.
+    (launched.into_iter())
+        .map(|l| l.expect("every solve ended"))
+        .collect()
 }
 
 #[cfg(test)]
