@@ -91,7 +91,7 @@ fn f2_a_swings_launch_out_of_bounds_is_not_frozen_nor_saved() {
     let dir = tempfile::tempdir().unwrap();
     let mut frozen = swing;
     frozen.scene = frozen.scene.with_launch(frozen.scene.batted_ball());
-    let error = frozen.save(dir.path()).unwrap_err().to_string();
+    let error = frozen.save(dir.path(), true).unwrap_err().to_string();
     assert!(
         error.starts_with("fierce.toml: launch.spin = ") && error.contains("[-1000, 1000] rad/s"),
         "{error}"
@@ -129,12 +129,12 @@ fn f2_every_batted_ball_flown_loads_back_from_its_saved_preset() {
                             match batted.validate() {
                                 Ok(()) => {
                                     accepted += 1;
-                                    let path = preset.save(dir.path()).unwrap();
+                                    let path = preset.save(dir.path(), true).unwrap();
                                     assert_eq!(Preset::read(&path).unwrap().scene, batted);
                                 }
                                 Err(_) => {
                                     refused += 1;
-                                    assert!(preset.save(dir.path()).is_err());
+                                    assert!(preset.save(dir.path(), true).is_err());
                                 }
                             }
                         }

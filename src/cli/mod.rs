@@ -188,6 +188,10 @@ pub enum Command {
         /// Save the preset with the factors found as NAME in the presets folder.
         #[arg(long, value_name = "NAME")]
         save: Option<String>,
+        /// With --save: overwrite a preset of that name, hide a bundled one,
+        /// or save a factor that ended at its bound.
+        #[arg(long, requires = "save")]
+        force: bool,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
@@ -384,7 +388,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
     {
         let preset = scene.resolve(checked_presets_dir(cli)?.as_deref())?;
         scene::check_path("--batch", source)?;
-        let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+        let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
         setup.own_air = *own_air;
@@ -418,16 +422,21 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         park,
         spray,
         save,
+        force,
         json,
     } = command
     {
         let dir = checked_presets_dir(cli)?;
         let preset = scene.resolve(dir.as_deref())?;
         scene::check_path("calibrate", file)?;
-        let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+        let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
-        let save = save.as_deref().map(|name| (name, dir.as_deref()));
+        let save = save.as_deref().map(|name| batch::calibrate::Save {
+            name,
+            dir: dir.as_deref(),
+            force: *force,
+        });
         let text = batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?;
         print!("{text}");
         return Ok(ExitCode::SUCCESS);
@@ -526,7 +535,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             let held = optimize::held(fix)?;
             let mut preset = scene.resolve(dir)?;
             scene::swing_only("optimize", &preset)?;
-            let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+            let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let park = parks
                 .find(code)
                 .ok_or_else(|| parks::unknown(code, &parks))?;
@@ -548,7 +557,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             ..
         } => {
             let mut preset = scene.resolve(dir)?;
-            let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+            let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let generic = ground::generic_fence(&preset);
             let ground = match park {
                 Some(code) => {
@@ -592,7 +601,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         Command::Surface { .. } => Ok(render_pieces(cli, command)?.concat()),
         Command::Presets => Ok(presets::presets(preset::check_dir(dir)?)),
         Command::Parks { code, json, svg } => {
-            let all = preset::parks::all(parks_dir(cli).as_deref())?;
+            let all = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let Some(code) = code else {
                 return Ok(parks::list(&all, *json, shown));
             };

@@ -107,6 +107,8 @@ pub enum UsageError {
     LaunchSwept(&'static str),
     #[error("--batch {input}: {message}")]
     Batch { input: String, message: String },
+    #[error("calibrate --save {name}: {message}")]
+    CalibrateSave { name: String, message: String },
     #[error("no park with code {code:?}; the parks: {accepted}")]
     UnknownPark { code: String, accepted: String },
     #[error("standard output is closed: nothing could be written (give it a file or a pipe)")]

@@ -17,7 +17,7 @@ pub mod parks;
 
 use bundled::{PresetValue, Scalar};
 
-pub use escape::{cut, escape_cut, escape_for_terminal};
+pub use escape::{cut, escape_cut, escape_for_terminal, escape_text, needs_escape};
 pub use field::{FIELD_KEYS, FieldKey};
 pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
@@ -114,6 +114,14 @@ pub enum PresetError {
     /// A park file that is not a list of parks (the message is one line).
     #[error("{path}: {message}")]
     Park { path: String, message: String },
+    /// A save over a preset of the user's, without `--force`.
+    #[error("preset `{name}` exists ({path}): --force to overwrite it")]
+    Exists { name: String, path: String },
+    /// A save under a bundled preset's name, without `--force`.
+    #[error(
+        "`{name}` is a bundled preset: yours would hide it (--preset {name} would load yours); --force to save it anyway"
+    )]
+    HidesBundled { name: String },
     /// The presets folder exists but is not a folder.
     #[error("{path}: not a folder ({kind}), so it cannot hold presets")]
     NotAFolder { path: String, kind: FileKind },
@@ -397,8 +405,11 @@ impl Preset {
     /// same folder, flushed to disk, then renamed over the target, so that a
     /// crash or a full disk never leaves a half-written preset. A target that
     /// exists and is not a regular file (a FIFO, a device, a folder) is
-    /// refused, as reading refuses it; so is a scene that reading refuses.
-    pub fn save(&self, dir: &Path) -> Result<PathBuf, PresetError> {
+    /// refused, as reading refuses it; so is a scene that reading refuses,
+    /// and a link that leads out of `dir` ([`crate::atomic_file::resolved`]).
+    /// Without `force`, a name the user's presets already hold, or a bundled
+    /// preset's (which the file would hide), is refused.
+    pub fn save(&self, dir: &Path, force: bool) -> Result<PathBuf, PresetError> {
         check_name(&self.name)?;
         // Never write what `load` would refuse.
         self.scene.validate().map_err(|source| PresetError::Input {
@@ -410,11 +421,38 @@ impl Preset {
             move |source| PresetError::Io { path, source }
         };
         fs::create_dir_all(dir).map_err(io(dir))?;
-        let target = dir.join(format!("{}.toml", self.name));
-        check_save_target(&target)?;
+        let target = check_save(&self.name, dir, force)?;
         crate::atomic_file::replace(&target, self.to_toml().as_bytes()).map_err(io(&target))?;
         Ok(target)
     }
+}
+
+/// Whether a preset can be saved as `name` in `dir`, before any work is
+/// done for it: the name is usable, the target is a regular file or a new
+/// name, not a link out of `dir`, and, without `force`, neither one of the
+/// user's presets nor a bundled one's name. The target's path.
+pub fn check_save(name: &str, dir: &Path, force: bool) -> Result<PathBuf, PresetError> {
+    check_name(name)?;
+    let target = dir.join(format!("{name}.toml"));
+    check_save_target(&target)?;
+    if !force {
+        if let Some(path) = user_file(name, Some(dir)) {
+            return Err(PresetError::Exists {
+                name: name.to_owned(),
+                path: shown(&path),
+            });
+        }
+        if is_bundled(name) {
+            return Err(PresetError::HidesBundled {
+                name: name.to_owned(),
+            });
+        }
+    }
+    crate::atomic_file::resolved(&target).map_err(|source| PresetError::Io {
+        path: shown(&target),
+        source,
+    })?;
+    Ok(target)
 }
 
 /// A TOML error on one line, as the toml crate words it, with the quoted
