@@ -152,6 +152,27 @@ pub fn replace(target: &Path, bytes: &[u8]) -> io::Result<()> {
     written
 }
 
+/// Writes `bytes` as a new file at `target`, whole or not at all, and
+/// never over anything already there, even a file made meanwhile: the
+/// temporary is linked to `target` (which fails if the name is taken)
+/// rather than renamed over it. `AlreadyExists` if it is taken. On a file
+/// system without hard links, renamed if the name is still free.
+pub fn write_new(target: &Path, bytes: &[u8]) -> io::Result<()> {
+    let (temporary, mut file) = create_temporary(target)?;
+    let written = (|| {
+        file.write_all(bytes)?;
+        file.sync_all()?;
+        match fs::hard_link(&temporary, target) {
+            Ok(()) => Ok(()),
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists => Err(e),
+            Err(_) if fs::symlink_metadata(target).is_err() => fs::rename(&temporary, target),
+            Err(e) => Err(e),
+        }
+    })();
+    let _ = fs::remove_file(&temporary);
+    written
+}
+
 #[cfg(all(test, unix))]
 mod tests {
     use super::*;
@@ -214,6 +235,19 @@ mod tests {
             name.starts_with(".p.toml.") && name.ends_with(".tmp"),
             "{name}"
         );
+    }
+
+    #[test]
+    fn a_new_file_never_replaces_one_already_there() {
+        let dir = tempfile::tempdir().unwrap();
+        let (taken, free) = (dir.path().join("taken.svg"), dir.path().join("free.svg"));
+        fs::write(&taken, "old").unwrap();
+        let e = write_new(&taken, b"new").unwrap_err();
+        assert_eq!(e.kind(), io::ErrorKind::AlreadyExists);
+        assert_eq!(fs::read_to_string(&taken).unwrap(), "old");
+        write_new(&free, b"new").unwrap();
+        assert_eq!(fs::read_to_string(&free).unwrap(), "new");
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2, "no temporary");
     }
 
     #[test]
