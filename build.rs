@@ -11,7 +11,6 @@
 use std::fmt::Write as _;
 
 fn main() {
-    link_at_a_fixed_address();
     bundled_presets();
     let source = "data/parks.toml";
     println!("cargo::rerun-if-changed={source}");
@@ -123,22 +122,5 @@ fn preset_value(value: &toml::Value) -> String {
             format!("Value::Table(&[{}])", entries.join(", "))
         }
         other => panic!("a bundled preset holds only numbers, texts and tables, not {other}"),
-    }
-}
-
-/// A binary linked statically (glibc too: `.cargo/config.toml` turns on
-/// `crt-static`) is also linked at a fixed address, not as rustc links it
-/// (position-independent, `-static-pie`): its ~5400 relocations are then
-/// done by the linker, not at each start (0.1 ms of `homerun --version`).
-/// The code stays position-independent, for the tests and doctests linked
-/// against the library; only the binary is linked so.
-fn link_at_a_fixed_address() {
-    let var = |name| std::env::var(name).unwrap_or_default();
-    let crt_static = var("CARGO_CFG_TARGET_FEATURE")
-        .split(',')
-        .any(|feature| feature == "crt-static");
-    if crt_static && var("CARGO_CFG_TARGET_OS") == "linux" && var("CARGO_CFG_TARGET_ENV") == "gnu" {
-        println!("cargo::rustc-link-arg-bins=-static");
-        println!("cargo::rustc-link-arg-bins=-no-pie");
     }
 }
