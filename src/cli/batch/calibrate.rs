@@ -56,7 +56,7 @@ pub(in crate::cli) fn run(
     let fit = calibrate::fit(&read.measured, &options).map_err(|e| failed(e.to_string()))?;
     let saved = match save {
         Some((name, dir)) => {
-            let dir = dir.ok_or_else(|| failed("--save: no presets folder".to_owned()))?;
+            let dir = dir.ok_or_else(|| failed(format!("--save: {}", crate::preset::NO_FOLDER)))?;
             let mut preset = Preset {
                 name: name.to_owned(),
                 description: format!(
