@@ -360,7 +360,7 @@ fn a_thread_count_out_of_bounds_is_refused_at_once_in_one_line() {
     // --help says so.
     let help = text(d, &["--help"]);
     assert!(
-        help.contains(&format!("RAYON_NUM_THREADS sets how many threads")),
+        help.contains("RAYON_NUM_THREADS sets how many threads"),
         "{help}"
     );
     assert!(
