@@ -21,7 +21,11 @@ const LIMIT: Duration = Duration::from_secs(10);
 /// count), at most [`LIMIT`] of time and 1 GiB of address space.
 fn run(dir: &Path, args: &[&str]) -> Output {
     let mut std = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"));
-    std.arg("--presets-dir").arg(dir).args(args);
+    std.env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
+        .arg("--presets-dir")
+        .arg(dir)
+        .args(args);
     // SAFETY: `setrlimit` is async-signal-safe and touches no memory of ours.
     unsafe {
         std.pre_exec(|| {

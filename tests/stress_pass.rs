@@ -401,6 +401,8 @@ fn f6_errors_show_extreme_values_short_and_without_inf() {
 /// `fly --batch -` on `input`: (status, stdout, stderr).
 fn batch(presets: &Path, input: &str) -> (Option<i32>, String, String) {
     let output = Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--presets-dir")
         .arg(presets)
         .args(["fly", "--batch", "-"])
@@ -453,6 +455,8 @@ fn with_stdout_closed(presets: &Path, args: &[&str], input: &str) -> (Option<i32
     use std::os::unix::process::CommandExt as _;
     let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"));
     command
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--presets-dir")
         .arg(presets)
         .args(args)

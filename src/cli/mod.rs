@@ -39,6 +39,7 @@ use shown::Shown;
 pub use crate::preset::FIELD_KEYS;
 pub use optimize::MAX_STEPS;
 pub use surface::{MAX_GRID, SURFACE_FLIGHT_STEPS};
+pub use threads::{MAX_THREADS, check_thread_count};
 pub use usage::{Parsed, error_line, parse};
 
 #[derive(Parser, Debug)]
@@ -48,7 +49,9 @@ pub use usage::{Parsed, error_line, parse};
     about = "The physics of hitting a baseball as far as possible (Sawicki, Hubbard & Stronge 2003).",
     long_about = "The physics of hitting a baseball as far as possible, after Sawicki, Hubbard & Stronge, \
                   \"How to hit home runs\", Am. J. Phys. 71 (2003).\n\n\
-                  With no command, opens the explorer (a terminal app); the commands below print numbers.",
+                  With no command, opens the explorer (a terminal app); the commands below print numbers.\n\n\
+                  RAYON_NUM_THREADS sets how many threads share the work: a whole number from 0 (one per CPU, \
+                  as when it is unset) to 256; any other value is refused.",
     after_long_help = UNITS_HELP
 )]
 pub struct Cli {
@@ -494,8 +497,6 @@ fn render_pieces(cli: &Cli, command: &Command) -> Result<Vec<String>, UsageError
     else {
         return Ok(vec![render(cli, command)?]);
     };
-    // The pool's thread starts while the scene is read.
-    threads::start_pool();
     let dir = checked_presets_dir(cli)?;
     let shown = Shown(cli.units);
     let preset = scene.resolve(dir.as_deref())?;

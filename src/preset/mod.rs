@@ -1,21 +1,19 @@
 //! Presets: TOML files ↔ [`Scene`], with errors that name the key, and a save
 //! that never leaves a broken file (temporary file, then rename).
 //!
-//! The bundled presets (`presets/*.toml`) are compiled into the binary, so
-//! `homerun` works from any directory; a user's own presets live in their
-//! config folder (`$XDG_CONFIG_HOME/homerun/presets`) or a folder given with
-//! `--presets-dir`.
+//! The bundled presets (`presets/*.toml`) are compiled into the binary as
+//! their TOML text, parsed when asked for as a user's file is, so `homerun`
+//! works from any directory; a user's own presets live in their config
+//! folder ([`config_dir`]: `$XDG_CONFIG_HOME/homerun/presets`, else
+//! `$HOME/.config/homerun/presets`) or a folder given with `--presets-dir`.
 
 use std::fs;
 use std::path::{Path, PathBuf};
 
-mod bundled;
 mod escape;
 mod field;
 mod file;
 pub mod parks;
-
-use bundled::{PresetValue, Scalar};
 
 pub use escape::{cut, escape_cut, escape_for_terminal, escape_text, needs_escape};
 pub use field::{FIELD_KEYS, FieldKey};
@@ -156,27 +154,14 @@ impl Preset {
                     path: origin.to_owned(),
                     message: syntax_message(&e),
                 })?;
-        let sections = table.iter().map(|(name, value)| (name.as_str(), value));
-        Preset::of_sections(sections, name, origin, source)
-    }
-
-    /// A preset from its top-level entries (its sections and its
-    /// description), in the file's order: read from TOML, or compiled in
-    /// ([`bundled::Value`]).
-    fn of_sections<'v, V: PresetValue + 'v>(
-        sections: impl Iterator<Item = (&'v str, &'v V)>,
-        name: &str,
-        origin: &str,
-        source: Source,
-    ) -> Result<Preset, PresetError> {
         let input = |source| PresetError::Input {
             path: origin.to_owned(),
             source,
         };
-        let wrong = |key: &str, value: &V, expected| PresetError::WrongType {
+        let wrong = |key: &str, value: &toml::Value, expected| PresetError::WrongType {
             path: origin.to_owned(),
             key: escape_for_terminal(key),
-            value: escape_for_terminal(&value.shown()),
+            value: escape_for_terminal(&value.to_string()),
             expected,
         };
         let mut scene = Scene::default();
@@ -185,7 +170,8 @@ impl Preset {
         let mut description = String::new();
         let mut fence_distance = None;
         let mut fence_height = None;
-        for (section, value) in sections {
+        for (section, value) in &table {
+            let section = section.as_str();
             if section == "description" {
                 description = value
                     .as_str()
@@ -193,7 +179,7 @@ impl Preset {
                     .to_owned();
                 continue;
             }
-            let Some(entries) = value.entries() else {
+            let Some(entries) = value.as_table() else {
                 // `pitch = 5`: a section written as a value.
                 let is_section = all_keys()
                     .map(|k| k.name)
@@ -235,17 +221,18 @@ impl Preset {
                     input(if shown == key { e } else { unknown(&shown) })
                 };
                 let field = FIELD_KEYS.iter().find(|f| f.name == key);
-                let number = match value.scalar() {
-                    Some(Scalar::Number(number)) => number,
+                let number = match value {
+                    toml::Value::Float(number) => *number,
+                    toml::Value::Integer(number) => *number as f64,
                     // A number with its unit, "103mph", as `--set` takes it.
-                    Some(Scalar::Text(text)) => match field {
+                    toml::Value::String(text) => match field {
                         Some(field) => field.read(text).map_err(input)?,
                         None => {
                             batch.set_text(&mut scene, &key, text).map_err(named)?;
                             continue;
                         }
                     },
-                    None => {
+                    _ => {
                         return Err(wrong(
                             &key,
                             value,
@@ -495,11 +482,29 @@ fn check_name(name: &str) -> Result<(), PresetError> {
     }
 }
 
-/// The user's preset folder: `$XDG_CONFIG_HOME/homerun/presets` (or the
-/// platform's config folder).
+/// The user's preset folder: `presets` in [`config_dir`].
 pub fn user_dir() -> Option<PathBuf> {
-    dirs::config_dir().map(|d| d.join("homerun").join("presets"))
+    config_dir().map(|d| d.join("presets"))
 }
+
+/// homerun's config folder, from the environment alone (no lookup of the
+/// user in the system's databases, which a process of an unknown user or
+/// without NSS could not do): `$XDG_CONFIG_HOME/homerun` if that is an
+/// absolute path (as the XDG spec asks), else `$HOME/.config/homerun`;
+/// `None` when neither is set: then there is no user folder, and every
+/// command works on the bundled presets and parks.
+pub fn config_dir() -> Option<PathBuf> {
+    let absolute = |name| {
+        let path = PathBuf::from(std::env::var_os(name)?);
+        path.is_absolute().then_some(path)
+    };
+    let base = absolute("XDG_CONFIG_HOME").or_else(|| Some(absolute("HOME")?.join(".config")))?;
+    Some(base.join("homerun"))
+}
+
+/// Why a preset cannot be saved without `--presets-dir`: one line.
+pub const NO_FOLDER: &str =
+    "no presets folder: neither XDG_CONFIG_HOME nor HOME is set; pass --presets-dir DIR";
 
 /// The bundled presets, parsed.
 pub fn bundled() -> Vec<Preset> {
@@ -507,24 +512,17 @@ pub fn bundled() -> Vec<Preset> {
         .iter()
         .map(|(name, _)| match bundled_preset(name) {
             Some(Ok(preset)) => preset,
-            _ => panic!("bundled preset {name} is compiled in and valid (tested)"),
+            _ => panic!("bundled preset {name} is valid (tested)"),
         })
         .collect()
 }
 
-/// The bundled preset `name`, from its entries compiled in (build.rs: no
-/// TOML read at run time, a third of a command's start-up work before its
-/// own), checked as a file's are; `None` if there is none of that name.
+/// The bundled preset `name`, its text parsed and checked as a file's is;
+/// `None` if there is none of that name.
 fn bundled_preset(name: &str) -> Option<Result<Preset, PresetError>> {
-    let (name, sections) = bundled::PRESETS.iter().find(|(n, _)| *n == name)?;
-    let sections = sections.iter().map(|(section, value)| (*section, value));
+    let (name, text) = BUNDLED.iter().find(|(n, _)| *n == name)?;
     let origin = format!("presets/{name}.toml");
-    Some(Preset::of_sections(
-        sections,
-        name,
-        &origin,
-        Source::Bundled,
-    ))
+    Some(Preset::parse(text, name, &origin, Source::Bundled))
 }
 
 /// Every preset available: bundled first, then each `*.toml` in `dir`, each

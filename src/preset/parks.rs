@@ -1,6 +1,6 @@
 //! Users' own parks: files of `data/parks.toml`'s format (one or more
-//! `[[park]]` tables) in the parks folder, `$XDG_CONFIG_HOME/homerun/parks`
-//! beside the presets, or `--parks-dir`. Each is read safely
+//! `[[park]]` tables) in the parks folder, `parks` in
+//! [`super::config_dir`] beside the presets, or `--parks-dir`. Each is read safely
 //! ([`read_text`]); a user's park whose code or alias names a bundled park
 //! hides that park, as a user's preset hides a bundled one.
 
@@ -10,10 +10,9 @@ use super::file::preset_files;
 use super::{PresetError, escape_cut, read_text, shown};
 use crate::model::park::{self, Park};
 
-/// The user's parks folder: `$XDG_CONFIG_HOME/homerun/parks` (or the
-/// platform's config folder).
+/// The user's parks folder: `parks` in [`super::config_dir`].
 pub fn user_dir() -> Option<PathBuf> {
-    dirs::config_dir().map(|d| d.join("homerun").join("parks"))
+    super::config_dir().map(|d| d.join("parks"))
 }
 
 /// Every park available, bundled first (less those a user's park hides),

@@ -216,20 +216,3 @@ fn a_quoted_top_level_key_naming_an_input_is_an_error_not_a_panic() {
     let e = Preset::parse("\"bat.speed\" = 3", "x", "x.toml", Source::Bundled).unwrap_err();
     assert!(e.to_string().contains("unknown key `\"bat.speed\"`"), "{e}");
 }
-
-#[test]
-fn the_compiled_in_presets_are_their_files_parsed() {
-    // One of each bundled file, and no other, each the preset its TOML
-    // text gives (scene, fence, description, name, source).
-    let compiled: Vec<&str> = bundled::PRESETS.iter().map(|(name, _)| *name).collect();
-    let mut listed: Vec<&str> = BUNDLED.iter().map(|(name, _)| *name).collect();
-    listed.sort_unstable();
-    assert_eq!(compiled, listed);
-    for (name, text) in BUNDLED {
-        let parsed = Preset::parse(text, name, &format!("presets/{name}.toml"), Source::Bundled)
-            .expect("a bundled preset is valid");
-        let compiled = bundled_preset(name).expect("compiled in").expect("valid");
-        assert_eq!(compiled, parsed, "{name}");
-    }
-    assert!(bundled_preset("no-such-preset").is_none());
-}

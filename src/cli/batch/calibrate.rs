@@ -86,7 +86,7 @@ pub(in crate::cli) fn run(
         .collect();
     let saved = match save {
         Some(Save { name, dir, force }) => {
-            let dir = dir.ok_or_else(|| failed("--save: no presets folder".to_owned()))?;
+            let dir = dir.ok_or_else(|| failed(format!("--save: {}", crate::preset::NO_FOLDER)))?;
             if !at_bounds.is_empty() && !force {
                 return Err(UsageError::CalibrateSave {
                     name: escape_cut(name, 64),

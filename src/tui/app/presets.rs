@@ -72,9 +72,7 @@ impl App {
     }
 
     fn save(&self, name: &str) -> Result<PathBuf, String> {
-        let dir = self.presets_dir.as_deref().ok_or_else(|| {
-            "no folder for presets (no config directory); pass --presets-dir DIR".to_owned()
-        })?;
+        let dir = self.presets_dir.as_deref().ok_or(preset::NO_FOLDER)?;
         let preset = Preset {
             name: name.to_owned(),
             description: format!("saved from the explorer (from {})", self.preset_name),
