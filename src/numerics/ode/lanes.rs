@@ -20,7 +20,7 @@ use super::controller::{
     LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth,
 };
 use super::stages::{Stages, Vector, dense_c5, error_squared, inverse_scales, stages_into};
-use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, dense_builder, too_small};
+use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, too_small};
 
 pub use super::super::real::{LANES, Lane, LaneReal};
 
@@ -377,8 +377,7 @@ pub fn integrate_lanes<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
             let (t0j, hj) = (t0.to_array()[j], h_all[j]);
             let y0j = y0.lane(j);
             let y1j = s.y1.lane(j);
-            let build =
-                dense_builder(|out| &*out.write(lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s)));
+            let build = || lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s);
             let step = Step::new((t0j, t1_all[j]), (y0j, y1j), &build);
             let control = system.observe(j, &step);
             match control {
