@@ -14,7 +14,6 @@ mod parks;
 mod presets;
 mod progress;
 mod scene;
-mod shortest;
 mod shown;
 mod surface;
 mod svg_file;
@@ -396,6 +395,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
                 .collect();
         }
         let stdout = std::io::stdout().lock();
+        setup.escape_kept = stdout.is_terminal();
         let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
         let mut err = std::io::stderr().lock();
         let erase = err.is_terminal();

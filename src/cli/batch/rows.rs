@@ -14,8 +14,7 @@ use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem};
 
 use super::own_launch::SwingLaunches;
-use super::plain::plain_decimal;
-use super::records::*;
+use super::read::Fields;
 use super::savant_columns::{SavantCells, SavantColumn, Setup};
 
 /// How a column's values become a launch value in SI.
@@ -373,9 +372,10 @@ pub(super) struct Job {
     /// Measured hang time (s) and apex (m), for `calibrate`.
     pub(super) hang_time: Option<f64>,
     pub(super) apex: Option<f64>,
-    /// The `--keep` cells, as read: their indices in the store
-    /// [`parse_row`] was given.
-    pub(super) kept: std::ops::Range<usize>,
+    /// The `--keep` cells, as read.
+    pub(super) kept: Vec<String>,
+    /// Its hit coordinates are the plate's: it has no spray.
+    pub(super) spray_at_plate: bool,
     /// The air keys given, by `--set` and by the row: a park keeps them.
     pub(super) given: GivenWeather,
 }
@@ -391,9 +391,6 @@ pub(super) enum Row {
     /// Every launch column empty, or no launch speed (in a Statcast export:
     /// a pitch not put in play): skipped and counted, not a failure.
     NoLaunch,
-    /// An empty line (not even a space): skipped and counted. A line of
-    /// spaces or tabs is a record of one field, and fails or flies as one.
-    Blank,
 }
 
 /// [`InputBatch::set_key_text`], a plain decimal in the key's bounds read
@@ -406,7 +403,7 @@ fn set_number(
     (key, air): (&'static Key, bool),
     text: &str,
 ) -> Result<(), InputError> {
-    match plain_decimal(text) {
+    match text.parse::<f64>().ok() {
         Some(value) if key.bounds.contains(value) && !air => {
             (key.set)(scene, value);
             Ok(())
@@ -421,27 +418,18 @@ fn is_missing(value: &str) -> bool {
     value.is_empty() || value.eq_ignore_ascii_case("null")
 }
 
-/// The row on `line`, its `text` split into `fields` (a buffer reused from
-/// row to row) and its `--keep` cells added to `kept`; with `swings`, the
-/// launch values it leaves to its swing filled in where its swing is known
-/// (see [`SwingLaunches`]). A row that flies is pushed onto `jobs`, built
-/// there (a job holds a scene: moving it cost more than reading its cells).
+/// The row on `line`, its `fields` as read; with `swings`, the launch
+/// values it leaves to its swing filled in where its swing is known (see
+/// [`SwingLaunches`]). A row that flies is pushed onto `jobs`, built there
+/// (a job holds a scene: moving it cost more than reading its cells).
 pub(super) fn parse_row(
     header: &Header,
     setup: &Setup,
-    (line, text): (usize, &str),
-    (fields, kept): (&mut Fields, &mut Fields),
+    (line, fields): (usize, Fields),
     swings: Option<&mut SwingLaunches>,
     jobs: &mut Vec<Job>,
 ) -> Row {
-    if text.is_empty() {
-        return Row::Blank;
-    }
     let bad = |reason: String| Row::Bad { line, reason };
-    if let Err(reason) = fields.split(text) {
-        return bad(reason.to_owned());
-    }
-    let fields = &*fields;
     if fields.len() != header.columns.len() {
         return bad(format!(
             "{} field{} where the header has {}",
@@ -450,9 +438,9 @@ pub(super) fn parse_row(
             header.columns.len()
         ));
     }
-    let no_speed = header.speed.is_some_and(|i| cell(fields, i).is_empty());
+    let no_speed = header.speed.is_some_and(|i| cell(&fields, i).is_empty());
     let launch = &header.launch;
-    if no_speed || (!launch.is_empty() && launch.iter().all(|&i| cell(fields, i).is_empty())) {
+    if no_speed || (!launch.is_empty() && launch.iter().all(|&i| cell(&fields, i).is_empty())) {
         return Row::NoLaunch;
     }
     jobs.push(Job {
@@ -464,26 +452,26 @@ pub(super) fn parse_row(
         statcast: None,
         hang_time: None,
         apex: None,
-        kept: 0..0,
+        kept: Vec::new(),
+        spray_at_plate: false,
         given: setup.given,
     });
     let job = jobs.last_mut().expect("a job just pushed");
-    if let Err(reason) = read_cells(header, setup, fields, swings, job) {
+    if let Err(reason) = read_cells(header, setup, &fields, swings, job) {
         jobs.pop();
         return bad(reason);
     }
-    let first = kept.len();
-    for &i in &header.keep {
-        kept.push(fields.get(i));
-    }
-    job.kept = first..kept.len();
+    job.kept = header
+        .keep
+        .iter()
+        .map(|&i| fields.get(i).to_owned())
+        .collect();
     Row::Job
 }
 
 /// Cell `i` of a row, trimmed, "" where missing.
-#[inline(always)]
-fn cell(fields: &Fields, i: usize) -> &str {
-    let value = fields.trimmed(i);
+fn cell<'a>(fields: &Fields<'a>, i: usize) -> &'a str {
+    let value = fields.get(i).trim();
     if is_missing(value) { "" } else { value }
 }
 
@@ -513,15 +501,13 @@ fn read_cells(
         let (column, name) = (&header.columns[i], &header.names[i]);
         let value = cell(i);
         let number = || {
-            plain_decimal(value)
-                .map_or_else(|| value.parse::<f64>(), Ok)
-                .map_err(|_| {
-                    format!(
-                        "{} = {:?}: not a number",
-                        escape_cut(name, 80),
-                        cut(value, 80)
-                    )
-                })
+            value.parse::<f64>().map_err(|_| {
+                format!(
+                    "{} = {:?}: not a number",
+                    escape_cut(name, 80),
+                    cut(value, 80)
+                )
+            })
         };
         let done = match *column {
             Column::Ignored => Ok(()),
@@ -619,6 +605,7 @@ fn read_cells(
         estimate_sidespin: !spin_given && !sidespin_given,
     };
     job.park = park;
+    job.spray_at_plate = savant.at_plate() && !header.direction_given;
     (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);
     Ok(())
 }

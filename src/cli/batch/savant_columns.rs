@@ -10,7 +10,6 @@ use crate::model::spin_estimate::Side;
 use crate::preset::parks::Parks;
 use crate::preset::{Preset, cut, escape_cut};
 
-use super::plain::plain_decimal;
 use super::rows::{Header, Job};
 
 /// Exactly 0.3048 m to the foot (Statcast's distances are in feet).
@@ -78,6 +77,9 @@ pub(in crate::cli) struct Setup<'a> {
     pub own_air: bool,
     /// `--keep`'s column names.
     pub keep: Vec<String>,
+    /// Whether the kept cells go to a terminal: their control characters
+    /// are then escaped (a file or pipe gets them as read).
+    pub escape_kept: bool,
     /// Every park's codes and aliases in ASCII lower case, sorted, each with
     /// the first park that answers to it: a row's `home_team` found by a
     /// binary search, not by asking 30 parks (`None` if a code is too long
@@ -128,6 +130,7 @@ impl<'a> Setup<'a> {
             spray: Spray::Landing,
             own_air: false,
             keep: Vec::new(),
+            escape_kept: false,
             codes: park_codes(parks),
             code_fields: parks.parks.iter().map(|p| quoted(&p.code)).collect(),
         }
@@ -195,8 +198,7 @@ impl SavantCells {
         setup: &Setup,
     ) -> Result<(), String> {
         let number = || {
-            plain_decimal(value)
-                .or_else(|| value.parse::<f64>().ok())
+            (value.parse::<f64>().ok())
                 .filter(|v| v.is_finite())
                 .ok_or_else(|| format!("{} = {:?}: not a number", column.name(), cut(value, 80)))
         };
@@ -231,9 +233,17 @@ impl SavantCells {
         Ok(())
     }
 
-    /// The spray angle (rad), if the row has both hit coordinates.
+    /// The spray angle (rad), if the row has both hit coordinates and they
+    /// are not the plate's own (which gives no direction).
     pub(super) fn spray(&self) -> Option<f64> {
-        Some(spray_angle(self.hc_x?, self.hc_y?))
+        Some(spray_angle(self.hc_x?, self.hc_y?)).filter(|angle| !angle.is_nan())
+    }
+
+    /// Whether the hit coordinates are exactly the plate's.
+    pub(super) fn at_plate(&self) -> bool {
+        self.hc_x
+            .zip(self.hc_y)
+            .is_some_and(|(x, y)| spray_angle(x, y).is_nan())
     }
 }
 
@@ -241,30 +251,12 @@ impl SavantCells {
 /// quote or a line break (and when it starts or ends with a space, which
 /// some readers would trim).
 pub(super) fn quoted(field: &str) -> String {
-    let mut out = Vec::with_capacity(field.len());
-    write_quoted(&mut out, field);
-    String::from_utf8(out).expect("text in, text out")
-}
-
-/// [`quoted`], appended to a byte buffer.
-pub(super) fn write_quoted(out: &mut Vec<u8>, field: &str) {
-    // The specials are ASCII, so a byte test finds them (a multi-byte
-    // character holds no ASCII byte).
-    let special = |b: &u8| matches!(b, b',' | b'"' | b'\n' | b'\r');
-    let needs =
-        field.as_bytes().iter().any(special) || field.starts_with(' ') || field.ends_with(' ');
-    if !needs {
-        out.extend_from_slice(field.as_bytes());
-        return;
+    let special = field.contains([',', '"', '\n', '\r']);
+    if special || field.starts_with(' ') || field.ends_with(' ') {
+        format!("\"{}\"", field.replace('"', "\"\""))
+    } else {
+        field.to_owned()
     }
-    out.push(b'"');
-    for piece in field.split_inclusive('"') {
-        out.extend_from_slice(piece.as_bytes());
-        if piece.ends_with('"') {
-            out.push(b'"');
-        }
-    }
-    out.push(b'"');
 }
 
 /// What the batch used and skipped, said in one line at the end.
@@ -276,6 +268,8 @@ pub(super) struct Summary {
     pub sprayed: usize,
     /// Rows flown without hit coordinates (though the header has them).
     pub without_spray: usize,
+    /// Rows whose hit coordinates are the plate's: no spray.
+    pub at_plate: usize,
     /// Flights spent solving launch directions.
     pub solve_flights: usize,
     /// Rows flown at each park (by index), and at the generic fence.
@@ -298,6 +292,7 @@ impl Summary {
         self.estimated += other.estimated;
         self.sprayed += other.sprayed;
         self.without_spray += other.without_spray;
+        self.at_plate += other.at_plate;
         self.solve_flights += other.solve_flights;
         for (mine, theirs) in self.at_park.iter_mut().zip(&other.at_park) {
             *mine += theirs;
@@ -312,6 +307,8 @@ impl Summary {
         if job.launch.spray.is_some() {
             self.sprayed += 1;
             self.solve_flights += flights;
+        } else if job.spray_at_plate {
+            self.at_plate += 1;
         } else if header.hit_coordinates {
             self.without_spray += 1;
         }
@@ -350,6 +347,14 @@ impl Summary {
             parts.push(format!(
                 "{} rows without hit coordinates flown toward the preset's direction",
                 self.without_spray
+            ));
+        }
+        if self.at_plate > 0 {
+            parts.push(format!(
+                "{} row{} with a spray at the plate (hit coordinates 125.42, 198.27: no \
+                 direction) flown toward the preset's direction",
+                self.at_plate,
+                if self.at_plate == 1 { "" } else { "s" }
             ));
         }
         let parks = self.at_park.iter().filter(|&&n| n > 0).count();
