@@ -48,6 +48,10 @@ pub(super) struct Records<R> {
     after_cr: bool,
     /// Line ends with no record between them: empty lines.
     pub empty: usize,
+    /// Whether the input's first bytes were looked at (for a byte-order
+    /// mark: dropped here, as the parser would drop one read whole but
+    /// take one read alone for the input's end).
+    started: bool,
     /// Room for the parser's output, reused (a record's fields are copied
     /// out of it as they come).
     out: Vec<u8>,
@@ -62,6 +66,7 @@ impl<R: BufRead> Records<R> {
             lines: 0,
             after_cr: false,
             empty: 0,
+            started: false,
             out: vec![0; MAX_RECORD_BYTES + 1],
             ends: vec![0; MAX_RECORD_BYTES + 2],
         }
@@ -78,6 +83,12 @@ impl<R: BufRead> Records<R> {
         read_past_long: bool,
     ) -> Result<Option<Read>, Stop> {
         let (start, first_end) = (bytes.len(), ends.len());
+        if !self.started {
+            self.started = true;
+            if fill(&mut self.input)?.starts_with(b"\xef\xbb\xbf") {
+                self.input.consume(3);
+            }
+        }
         // The line ends before the record (the parser would skip them):
         // each an empty line, but the one after a `\r` it ended on.
         loop {
@@ -129,7 +140,6 @@ impl<R: BufRead> Records<R> {
             }
             match result {
                 csv_core::ReadRecordResult::Record => return Ok(Some(Read { line, too_long })),
-                // Nothing but a byte-order mark.
                 csv_core::ReadRecordResult::End => return Ok(None),
                 _ => {}
             }
