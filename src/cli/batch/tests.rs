@@ -7,9 +7,11 @@ use crate::Scene;
 use crate::numerics::xorshift::uniform;
 use crate::units::Quantity;
 
-/// Every record of `text`: its line and fields (`None` if too long), and
-/// the empty lines.
-fn records(text: &[u8], capacity: usize) -> (Vec<(usize, Option<Vec<String>>)>, usize) {
+/// A record's line and fields (`None` if too long).
+type Got = (usize, Option<Vec<String>>);
+
+/// Every record of `text`, and the empty lines.
+fn records(text: &[u8], capacity: usize) -> (Vec<Got>, usize) {
     let mut records = Records::new(io::BufReader::with_capacity(capacity, text));
     let (mut bytes, mut ends, mut lossy) = (Vec::new(), Vec::new(), Lossy::default());
     let mut got = Vec::new();
@@ -28,7 +30,7 @@ fn records(text: &[u8], capacity: usize) -> (Vec<(usize, Option<Vec<String>>)>, 
     }
 }
 
-fn row(line: usize, fields: &[&str]) -> (usize, Option<Vec<String>>) {
+fn row(line: usize, fields: &[&str]) -> Got {
     (line, Some(fields.iter().map(|f| f.to_string()).collect()))
 }
 
@@ -548,4 +550,35 @@ fn a_spray_at_the_plate_is_named_and_the_row_flies() {
     assert_eq!((outcome.flown, outcome.failed), (2, 0), "{err}");
     assert!(!err.contains("NaN") && !out.contains("NaN"), "{err}");
     assert!(err.contains("1 row with a spray at the plate"), "{err}");
+}
+
+/// Row 12: a `--keep` cell's control characters reach a terminal escaped,
+/// a file or pipe as read.
+#[test]
+fn kept_cells_are_escaped_for_a_terminal_only() {
+    let preset = crate::preset::load("fly-ball", None).unwrap();
+    let parks = crate::preset::parks::all(None).unwrap();
+    let mut setup = Setup::new(&preset, &parks);
+    setup.keep = vec!["des".to_owned()];
+    let input = "launch.speed,launch.angle,des\n45,0.5,\"a\x1b[2Jb\"\n";
+    let (out, _, _) = run(&setup, input, false, Shown::default());
+    assert!(out.contains("a\x1b[2Jb"), "{out}");
+    setup.escape_kept = true;
+    let (out, _, _) = run(&setup, input, false, Shown::default());
+    assert!(
+        !out.contains('\x1b') && out.contains("a\\u{1b}[2Jb"),
+        "{out}"
+    );
+}
+
+/// Row 11: a round's crossings (rows × fences) stay bounded however many
+/// parks there are.
+#[test]
+fn rounds_are_sized_by_rows_and_parks() {
+    assert_eq!(pieces::sizes(30), (8192, 256));
+    for parks in [0, 30, 100, 6600, 100_000] {
+        let (round, piece) = pieces::sizes(parks);
+        assert!(round * (parks + 1) <= 8192 * 31 || round == 1, "{parks}");
+        assert!(piece >= 1 && piece <= round.max(1), "{parks}");
+    }
 }
