@@ -33,13 +33,19 @@ impl Unit {
     /// The explorer's and `--units`' conversion, so that 103 mph is the
     /// same launch to the last bit wherever it is typed.
     pub(super) fn to_si(self, value: f64) -> f64 {
-        let quantity = match self {
-            Unit::Si => return value,
-            Unit::Mph => Quantity::Speed,
-            Unit::Degrees => Quantity::Angle,
-            Unit::Rpm => Quantity::Spin,
-        };
-        quantity.unit(UnitSystem::Imperial, "").read(value)
+        match self.quantity() {
+            None => value,
+            Some(quantity) => quantity.unit(UnitSystem::Imperial, "").read(value),
+        }
+    }
+
+    fn quantity(self) -> Option<Quantity> {
+        match self {
+            Unit::Si => None,
+            Unit::Mph => Some(Quantity::Speed),
+            Unit::Degrees => Some(Quantity::Angle),
+            Unit::Rpm => Some(Quantity::Spin),
+        }
     }
 
     pub(super) fn name(self) -> &'static str {
@@ -115,7 +121,10 @@ pub(in crate::cli) fn columns_help() -> String {
          Statcast's launch_speed and launch_angle columns are read as they are; its \
          release_spin_rate is the pitch's spin, not the batted ball's, and is not read: a row \
          without spin gets Nathan's estimate from its angle, direction and side. \
-         `null` is a missing value; a row without a launch speed is skipped. \
+         `null`, `NA`, `NaN` and the empty cell are missing values; a row without a launch speed \
+         is skipped. Statcast's columns take a unit as --set does (`103mph`, `460ft`); a \
+         distance, hang time or apex that cannot be read is missing, never a reason to skip \
+         the row. \
          Other columns are ignored (named once on stderr). A launch column not given takes \
          the preset's value for every row; an empty cell of another column, the preset's \
          value; a row whose launch cells are all empty is skipped.",
@@ -413,9 +422,24 @@ fn set_number(
     }
 }
 
-/// Savant's missing value in its 2019 layout: the string `null`.
+/// A missing value: the empty cell, Savant's `null` (its 2019 layout), R's
+/// `NA`, pandas' `NaN`.
 fn is_missing(value: &str) -> bool {
-    value.is_empty() || value.eq_ignore_ascii_case("null")
+    ["", "null", "na", "nan"]
+        .iter()
+        .any(|missing| value.eq_ignore_ascii_case(missing))
+}
+
+/// A measured cell of `quantity`: a bare number in the column's own unit
+/// (`bare` makes it SI), or a number with a unit as `--set` takes it
+/// (`103mph`, `460ft`, `140m`); `None` if it is neither, or not finite.
+pub(super) fn measure(text: &str, quantity: Quantity, bare: impl Fn(f64) -> f64) -> Option<f64> {
+    let reading = crate::units::read_typed(text, quantity, quantity.si_symbol()).ok()?;
+    let si = match reading.unit {
+        Some(_) => reading.si,
+        None => bare(reading.number),
+    };
+    si.is_finite().then_some(si)
 }
 
 /// The row on `line`, its `fields` as read; with `swings`, the launch
@@ -524,14 +548,21 @@ fn read_cells(
                 set_number(&mut batch, scene, (launch_key(index), false), value)
                     .map_err(|e| e.to_string())
             }
-            // Statcast's own columns: a bare number in their unit (a launch
-            // key: nothing of the batch's, set at once; checked with the
-            // scene).
-            Column::Launch(index, unit) => number().map(|v| {
-                converted = true;
-                spin_given |= index == 2;
-                (launch_key(index).set)(scene, unit.to_si(v));
-            }),
+            // Statcast's own columns: a bare number in their unit, or one
+            // with its unit (a launch key: nothing of the batch's, set at
+            // once; checked with the scene).
+            Column::Launch(index, unit) => {
+                let quantity = unit.quantity().expect("Statcast's columns have units");
+                let si = match measure(value, quantity, |v| unit.to_si(v)) {
+                    Some(si) => Ok(si),
+                    None => number().map(|v| unit.to_si(v)),
+                };
+                si.map(|si| {
+                    converted = true;
+                    spin_given |= index == 2;
+                    (launch_key(index).set)(scene, si);
+                })
+            }
             // The whole value is parsed; only the error's copy is cut.
             Column::Input(_) => {
                 let input = header.inputs[i].expect("an input column's key");

@@ -10,7 +10,8 @@ use crate::model::spin_estimate::Side;
 use crate::preset::parks::Parks;
 use crate::preset::{Preset, cut, escape_cut};
 
-use super::rows::{Header, Job};
+use super::rows::{Header, Job, measure};
+use crate::units::Quantity;
 
 /// Exactly 0.3048 m to the foot (Statcast's distances are in feet).
 const METRES_PER_FOOT: f64 = 0.3048;
@@ -202,12 +203,14 @@ impl SavantCells {
                 .filter(|v| v.is_finite())
                 .ok_or_else(|| format!("{} = {:?}: not a number", column.name(), cut(value, 80)))
         };
+        // Measurements, only compared: one that cannot be read is missing.
+        let feet = || measure(value, Quantity::Distance, |ft| ft * METRES_PER_FOOT);
         match column {
             SavantColumn::HcX => self.hc_x = Some(number()?),
             SavantColumn::HcY => self.hc_y = Some(number()?),
-            SavantColumn::Distance => self.distance = Some(number()? * METRES_PER_FOOT),
-            SavantColumn::HangTime => self.hang_time = Some(number()?),
-            SavantColumn::Apex => self.apex = Some(number()? * METRES_PER_FOOT),
+            SavantColumn::Distance => self.distance = feet(),
+            SavantColumn::HangTime => self.hang_time = measure(value, Quantity::Unchanged, |s| s),
+            SavantColumn::Apex => self.apex = feet(),
             SavantColumn::Stand => {
                 self.side = Some(match value {
                     "R" | "r" => Side::Right,
