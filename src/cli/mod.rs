@@ -443,8 +443,9 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         eprintln!("wrote {}", svg_file::shown(path));
         return Ok(ExitCode::SUCCESS);
     }
-    let mut stdout = std::io::stdout().lock();
-    match write_pieces(&mut stdout, &pieces).and_then(|()| stdout.flush()) {
+    let mut stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
+    let written = (pieces.iter()).try_for_each(|piece| stdout.write_all(piece.as_bytes()));
+    match written.and_then(|()| stdout.flush()) {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
         _ => Ok(ExitCode::SUCCESS),
     }
@@ -635,24 +636,6 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         Command::Tui { .. } => Err(UsageError::NotHeadless),
         Command::Calibrate { .. } => unreachable!("run() answers calibrate"),
     }
-}
-
-/// Writes `pieces` one after another, as few calls as the system takes
-/// (`writev`), without joining them first.
-fn write_pieces(out: &mut impl std::io::Write, pieces: &[String]) -> std::io::Result<()> {
-    use std::io::{ErrorKind, IoSlice};
-    let mut slices: Vec<IoSlice> = pieces.iter().map(|p| IoSlice::new(p.as_bytes())).collect();
-    let mut slices = &mut slices[..];
-    IoSlice::advance_slices(&mut slices, 0);
-    while !slices.is_empty() {
-        match out.write_vectored(slices) {
-            Ok(0) => return Err(ErrorKind::WriteZero.into()),
-            Ok(written) => IoSlice::advance_slices(&mut slices, written),
-            Err(e) if e.kind() == ErrorKind::Interrupted => {}
-            Err(e) => return Err(e),
-        }
-    }
-    Ok(())
 }
 
 /// `job`, with a progress line giving the time it has taken once it passes a

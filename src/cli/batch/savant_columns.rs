@@ -81,11 +81,6 @@ pub(in crate::cli) struct Setup<'a> {
     /// Whether the kept cells go to a terminal: their control characters
     /// are then escaped (a file or pipe gets them as read).
     pub escape_kept: bool,
-    /// Every park's codes and aliases in ASCII lower case, sorted, each with
-    /// the first park that answers to it: a row's `home_team` found by a
-    /// binary search, not by asking 30 parks (`None` if a code is too long
-    /// for [`Setup::park_of`]'s room: then each park is asked).
-    codes: Option<Vec<(String, usize)>>,
     /// Each park's code as a CSV field (quoted if it must be), for every
     /// row's `park` column.
     pub(super) code_fields: Vec<String>,
@@ -132,7 +127,6 @@ impl<'a> Setup<'a> {
             own_air: false,
             keep: Vec::new(),
             escape_kept: false,
-            codes: park_codes(parks),
             code_fields: parks.parks.iter().map(|p| quoted(&p.code)).collect(),
         }
     }
@@ -140,39 +134,8 @@ impl<'a> Setup<'a> {
     /// The index of the first park that answers to `code` (any case), as
     /// [`park::Park::answers_to`] says.
     pub(super) fn park_of(&self, code: &str) -> Option<usize> {
-        let mut room = [0u8; LONGEST_CODE];
-        match (&self.codes, room.get_mut(..code.len())) {
-            (Some(codes), Some(lower)) => {
-                lower.copy_from_slice(code.as_bytes());
-                lower.make_ascii_lowercase();
-                let found = codes.binary_search_by(|(c, _)| c.as_bytes().cmp(lower));
-                found.ok().map(|i| codes[i].1)
-            }
-            _ => self.parks.parks.iter().position(|p| p.answers_to(code)),
-        }
+        self.parks.parks.iter().position(|p| p.answers_to(code))
     }
-}
-
-/// Room for a park's code or alias in [`Setup::park_of`]; a park whose
-/// code is longer is found by asking each park.
-const LONGEST_CODE: usize = 32;
-
-/// [`Setup`]'s sorted codes: the first park's, where two answer to one.
-fn park_codes(parks: &Parks) -> Option<Vec<(String, usize)>> {
-    let mut codes: Vec<(String, usize)> = Vec::new();
-    for (index, park) in parks.parks.iter().enumerate() {
-        for code in park.codes() {
-            if code.len() > LONGEST_CODE {
-                return None;
-            }
-            let code = code.to_ascii_lowercase();
-            if !codes.iter().any(|(c, _)| *c == code) {
-                codes.push((code, index));
-            }
-        }
-    }
-    codes.sort();
-    Some(codes)
 }
 
 /// What a row's Savant cells say.
@@ -394,38 +357,6 @@ impl Summary {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_park_is_found_by_its_codes_as_the_parks_answer() {
-        let parks = crate::preset::parks::all(None).unwrap();
-        let preset = crate::preset::load("fly-ball", None).unwrap();
-        let setup = Setup::new(&preset, &parks);
-        let mut asked = vec![
-            String::new(),
-            "generic".to_owned(),
-            "x".repeat(LONGEST_CODE + 1),
-            "NYYY".to_owned(),
-            "ny".to_owned(),
-            "BOS ".to_owned(),
-            "bös".to_owned(),
-        ];
-        for park in &parks.parks {
-            for code in park.codes() {
-                asked.push(code.to_owned());
-                asked.push(code.to_ascii_lowercase());
-                asked.push(code.to_ascii_uppercase());
-                asked.push(format!("{code}x"));
-                asked.push(code[..code.len() - 1].to_owned());
-            }
-        }
-        let mut found = 0;
-        for code in &asked {
-            let each = parks.parks.iter().position(|p| p.answers_to(code));
-            assert_eq!(setup.park_of(code), each, "{code:?}");
-            found += usize::from(each.is_some());
-        }
-        assert!(found >= 3 * 30, "{found}");
-    }
 
     #[test]
     fn kept_fields_are_quoted_as_rfc_4180_asks() {
