@@ -161,6 +161,8 @@ fn preset_strings_take_units_as_set_does() {
 
 fn homerun(presets: &Path, args: &[&str], stdin: &str) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--presets-dir")
         .arg(presets)
         .args(args)

@@ -38,6 +38,7 @@ use shown::Shown;
 pub use crate::preset::FIELD_KEYS;
 pub use optimize::MAX_STEPS;
 pub use surface::{MAX_GRID, SURFACE_FLIGHT_STEPS};
+pub use threads::{MAX_THREADS, check_thread_count};
 pub use usage::{Parsed, error_line, parse};
 
 #[derive(Parser, Debug)]
@@ -47,7 +48,9 @@ pub use usage::{Parsed, error_line, parse};
     about = "The physics of hitting a baseball as far as possible (Sawicki, Hubbard & Stronge 2003).",
     long_about = "The physics of hitting a baseball as far as possible, after Sawicki, Hubbard & Stronge, \
                   \"How to hit home runs\", Am. J. Phys. 71 (2003).\n\n\
-                  With no command, opens the explorer (a terminal app); the commands below print numbers.",
+                  With no command, opens the explorer (a terminal app); the commands below print numbers.\n\n\
+                  RAYON_NUM_THREADS sets how many threads share the work: a whole number from 0 (one per CPU, \
+                  as when it is unset) to 256; any other value is refused.",
     after_long_help = UNITS_HELP
 )]
 pub struct Cli {
@@ -187,6 +190,10 @@ pub enum Command {
         /// Save the preset with the factors found as NAME in the presets folder.
         #[arg(long, value_name = "NAME")]
         save: Option<String>,
+        /// With --save: overwrite a preset of that name, hide a bundled one,
+        /// or save a factor that ended at its bound.
+        #[arg(long, requires = "save")]
+        force: bool,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
@@ -383,7 +390,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
     {
         let preset = scene.resolve(checked_presets_dir(cli)?.as_deref())?;
         scene::check_path("--batch", source)?;
-        let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+        let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
         setup.own_air = *own_air;
@@ -418,16 +425,21 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         park,
         spray,
         save,
+        force,
         json,
     } = command
     {
         let dir = checked_presets_dir(cli)?;
         let preset = scene.resolve(dir.as_deref())?;
         scene::check_path("calibrate", file)?;
-        let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+        let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
-        let save = save.as_deref().map(|name| (name, dir.as_deref()));
+        let save = save.as_deref().map(|name| batch::calibrate::Save {
+            name,
+            dir: dir.as_deref(),
+            force: *force,
+        });
         let text = batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?;
         print!("{text}");
         return Ok(ExitCode::SUCCESS);
@@ -486,8 +498,6 @@ fn render_pieces(cli: &Cli, command: &Command) -> Result<Vec<String>, UsageError
     else {
         return Ok(vec![render(cli, command)?]);
     };
-    // The pool's thread starts while the scene is read.
-    threads::start_pool();
     let dir = checked_presets_dir(cli)?;
     let shown = Shown(cli.units);
     let preset = scene.resolve(dir.as_deref())?;
@@ -527,7 +537,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             let held = optimize::held(fix)?;
             let mut preset = scene.resolve(dir)?;
             scene::swing_only("optimize", &preset)?;
-            let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+            let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let park = parks
                 .find(code)
                 .ok_or_else(|| parks::unknown(code, &parks))?;
@@ -549,7 +559,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             ..
         } => {
             let mut preset = scene.resolve(dir)?;
-            let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+            let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let generic = ground::generic_fence(&preset);
             let ground = match park {
                 Some(code) => {
@@ -593,7 +603,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         Command::Surface { .. } => Ok(render_pieces(cli, command)?.concat()),
         Command::Presets => Ok(presets::presets(preset::check_dir(dir)?)),
         Command::Parks { code, json, svg } => {
-            let all = preset::parks::all(parks_dir(cli).as_deref())?;
+            let all = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let Some(code) = code else {
                 return Ok(parks::list(&all, *json, shown));
             };

@@ -192,7 +192,6 @@ fn within_budget<T>(
         what: "surface",
         steps: Some((grid.columns * grid.rows, "cells")),
     };
-    super::threads::start_pool();
     progress::run(work, |p| fly(&|| p.tick())).map_err(|work| too_much(text, work))
 }
 

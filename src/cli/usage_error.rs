@@ -64,6 +64,16 @@ pub enum UsageError {
         length: usize,
         max: usize,
     },
+    /// A thread count (`RAYON_NUM_THREADS`) out of bounds, or no number.
+    #[error(
+        "{variable}={value:?}: must be a whole number from 0 (one thread per CPU, as when unset) to {max}",
+        max = super::threads::MAX_THREADS
+    )]
+    BadThreadCount {
+        variable: &'static str,
+        /// As set, its first 40 characters.
+        value: String,
+    },
     /// A command line clap refused, in one line.
     #[error("{0}")]
     CommandLine(String),
@@ -107,6 +117,8 @@ pub enum UsageError {
     LaunchSwept(&'static str),
     #[error("--batch {input}: {message}")]
     Batch { input: String, message: String },
+    #[error("calibrate --save {name}: {message}")]
+    CalibrateSave { name: String, message: String },
     #[error("no park with code {code:?}; the parks: {accepted}")]
     UnknownPark { code: String, accepted: String },
     #[error("standard output is closed: nothing could be written (give it a file or a pipe)")]

@@ -17,31 +17,27 @@ use super::flight::lanes::{LaneDone, LaneJob, LaneReports, fly_lanes};
 use super::flight::{FlightOptions, FlightSummary, RangeSummary, Start};
 use super::launch::SceneFlight;
 use super::park::Fence;
-use crate::numerics::ode::lanes::{FirstSteps, LaneCode};
+use crate::numerics::ode::lanes::FirstSteps;
 
 /// Flies every flight of `flights`, calling `done(index, summary)` for
 /// each as it finishes (`index` its place in `flights`).
 pub fn fly_many(
     flights: impl IntoIterator<Item = SceneFlight>,
     options: &FlightOptions,
-    done: impl FnMut(usize, FlightSummary),
-) {
-    fly_many_on(LaneCode::detected(), flights, options, done);
-}
-
-/// [`fly_many`] on `code`'s instructions where the CPU has them (else the
-/// baseline's): the same results on any.
-pub fn fly_many_on(
-    code: LaneCode,
-    flights: impl IntoIterator<Item = SceneFlight>,
-    options: &FlightOptions,
     mut done: impl FnMut(usize, FlightSummary),
 ) {
     let flights: Vec<SceneFlight> = flights.into_iter().collect();
-    let code = (code, FirstSteps::FromNeighbours);
     for group in groups(&flights) {
         let done = LaneDone::Summary(&mut done);
-        fly_group(code, &flights, &group, options, None, &[], done);
+        fly_group(
+            FirstSteps::FromNeighbours,
+            &flights,
+            &group,
+            options,
+            None,
+            &[],
+            done,
+        );
     }
 }
 
@@ -51,23 +47,20 @@ pub fn fly_many_on(
 pub fn land_many(
     flights: impl IntoIterator<Item = SceneFlight>,
     options: &FlightOptions,
-    done: impl FnMut(usize, RangeSummary),
-) {
-    land_many_on(LaneCode::detected(), flights, options, done);
-}
-
-/// [`land_many`] on `code`'s instructions where the CPU has them.
-pub fn land_many_on(
-    code: LaneCode,
-    flights: impl IntoIterator<Item = SceneFlight>,
-    options: &FlightOptions,
     mut done: impl FnMut(usize, RangeSummary),
 ) {
     let flights: Vec<SceneFlight> = flights.into_iter().collect();
-    let code = (code, FirstSteps::FromNeighbours);
     for group in groups(&flights) {
         let done = LaneDone::Range(&mut done);
-        fly_group(code, &flights, &group, options, None, &[], done);
+        fly_group(
+            FirstSteps::FromNeighbours,
+            &flights,
+            &group,
+            options,
+            None,
+            &[],
+            done,
+        );
     }
 }
 
@@ -176,9 +169,8 @@ fn judge_many_shown<'f>(
             let all = crossings.borrow();
             done(index, summary, &all[offsets[index]..offsets[index + 1]]);
         };
-        let code = (LaneCode::detected(), first_steps);
         fly_group(
-            code,
+            first_steps,
             &flights,
             &group,
             options,
@@ -243,7 +235,7 @@ fn groups(flights: &[SceneFlight]) -> Vec<Vec<usize>> {
 /// watch, if any, looks at flight k's steps from `watched_from[k]` metres
 /// from home plate on (and at any step with an event inside).
 fn fly_group(
-    code: (LaneCode, FirstSteps),
+    first_steps: FirstSteps,
     flights: &[SceneFlight],
     group: &[usize],
     options: &FlightOptions,
@@ -296,7 +288,7 @@ fn fly_group(
                 .map(|w| w as &mut dyn FnMut(usize, &crate::numerics::ode::Step<4>)),
             done,
         };
-        fly_lanes(code, jobs, options, reports);
+        fly_lanes(first_steps, jobs, options, reports);
     } else {
         let jobs = group.iter().filter_map(|&index| match flights[index] {
             SceneFlight::Spatial { flight, launch } => Some(LaneJob {
@@ -317,7 +309,7 @@ fn fly_group(
                 .map(|w| w as &mut dyn FnMut(usize, &crate::numerics::ode::Step<6>)),
             done: done.reborrow(),
         };
-        fly_lanes(code, jobs, options, reports);
+        fly_lanes(first_steps, jobs, options, reports);
     }
 }
 
