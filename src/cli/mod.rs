@@ -14,7 +14,6 @@ mod parks;
 mod presets;
 mod progress;
 mod scene;
-mod shortest;
 mod shown;
 mod surface;
 mod svg_file;
@@ -403,6 +402,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
                 .collect();
         }
         let stdout = std::io::stdout().lock();
+        setup.escape_kept = stdout.is_terminal();
         let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
         let mut err = std::io::stderr().lock();
         let erase = err.is_terminal();
@@ -455,8 +455,9 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         eprintln!("wrote {}", svg_file::shown(path));
         return Ok(ExitCode::SUCCESS);
     }
-    let mut stdout = std::io::stdout().lock();
-    match write_pieces(&mut stdout, &pieces).and_then(|()| stdout.flush()) {
+    let mut stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
+    let written = (pieces.iter()).try_for_each(|piece| stdout.write_all(piece.as_bytes()));
+    match written.and_then(|()| stdout.flush()) {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
         _ => Ok(ExitCode::SUCCESS),
     }
@@ -645,24 +646,6 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         Command::Tui { .. } => Err(UsageError::NotHeadless),
         Command::Calibrate { .. } => unreachable!("run() answers calibrate"),
     }
-}
-
-/// Writes `pieces` one after another, as few calls as the system takes
-/// (`writev`), without joining them first.
-fn write_pieces(out: &mut impl std::io::Write, pieces: &[String]) -> std::io::Result<()> {
-    use std::io::{ErrorKind, IoSlice};
-    let mut slices: Vec<IoSlice> = pieces.iter().map(|p| IoSlice::new(p.as_bytes())).collect();
-    let mut slices = &mut slices[..];
-    IoSlice::advance_slices(&mut slices, 0);
-    while !slices.is_empty() {
-        match out.write_vectored(slices) {
-            Ok(0) => return Err(ErrorKind::WriteZero.into()),
-            Ok(written) => IoSlice::advance_slices(&mut slices, written),
-            Err(e) if e.kind() == ErrorKind::Interrupted => {}
-            Err(e) => return Err(e),
-        }
-    }
-    Ok(())
 }
 
 /// `job`, with a progress line giving the time it has taken once it passes a

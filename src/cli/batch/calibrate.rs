@@ -10,7 +10,7 @@ use std::path::Path;
 use rayon::prelude::*;
 
 use super::pieces::PIECE_ROWS;
-use super::records::{Fields, MAX_RECORD_BYTES, Record, Records, Stop, split_fields};
+use super::read::{Fields, Lossy, MAX_RECORD_BYTES, Records};
 use super::rows::{Header, Job, Row, parse_row};
 use super::savant_columns::{SavantColumn, Setup};
 use crate::analysis::calibrate::{self, Errors, Fit, Measured};
@@ -147,49 +147,31 @@ pub(in crate::cli) fn run(
 /// parallel.
 fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
     let mut records = Records::new(input);
-    let header = match records.next() {
-        Ok(Record::Text { text, .. }) => {
-            let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
-            let names = split_fields(text).map_err(|e| format!("line 1 (the header): {e}"))?;
-            Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?
-        }
-        Ok(Record::End) => return Err("the input is empty".to_owned()),
-        Ok(Record::TooLong) => return Err("line 1 (the header) is too long".to_owned()),
-        Err(Stop::Binary { .. }) => return Err("binary data, not CSV text".to_owned()),
-        Err(Stop::Io(e)) => return Err(e.to_string()),
+    let header = match super::read_header(&mut records)? {
+        Some(names) => Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?,
+        None => return Err("the input is empty".to_owned()),
     };
-    records.read_past_long = true;
     let mut jobs = Vec::new();
     let mut skipped = 0;
     let mut rows = 0;
-    let (mut fields, mut kept) = (Fields::default(), Fields::default());
+    let (mut bytes, mut ends, mut lossy) = (Vec::new(), Vec::new(), Lossy::default());
     loop {
-        match records.next() {
-            Ok(Record::End) => break,
-            Ok(Record::Text { line, text }) => {
-                match parse_row(
-                    &header,
-                    setup,
-                    (line, &text),
-                    (&mut fields, &mut kept),
-                    None,
-                    &mut jobs,
-                ) {
+        bytes.clear();
+        ends.clear();
+        match records.next(&mut bytes, &mut ends, true) {
+            Ok(None) => break,
+            Ok(Some(read)) if read.too_long => skipped += 1,
+            Ok(Some(read)) => {
+                let fields = Fields::of(&bytes, &ends, &mut lossy);
+                match parse_row(&header, setup, (read.line, fields), None, &mut jobs) {
                     Row::Job => rows += 1,
-                    Row::Blank => {}
                     Row::Bad { .. } | Row::NoLaunch => {
                         rows += 1;
                         skipped += 1;
                     }
                 }
             }
-            Ok(Record::TooLong) => skipped += 1,
-            Err(Stop::Binary { line }) => {
-                return Err(format!(
-                    "line {line}: a NUL byte: binary data, not CSV text"
-                ));
-            }
-            Err(Stop::Io(e)) => return Err(e.to_string()),
+            Err(stop) => return Err(stop.to_string()),
         }
     }
     let options = Purpose::Solve.flight_options();
