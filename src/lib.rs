@@ -13,15 +13,16 @@
 //! - [`units`]: SI or baseball units for text shown and typed; imports nothing.
 //! - [`cli`] and [`tui`]: the frontends; nothing below imports them.
 
-pub mod analysis;
-pub mod atomic_file;
 pub mod cli;
-pub mod model;
-pub mod numerics;
-pub mod picture;
-pub mod preset;
-pub mod tui;
-pub mod units;
+
+pub use analysis;
+pub use model;
+pub use numerics;
+pub use picture;
+pub use preset;
+pub use preset::atomic_file;
+pub use tui;
+pub use units;
 
 pub use analysis::precision::Purpose;
 pub use model::scene::Scene;

@@ -68,6 +68,7 @@ fn explore(
 /// all went well; so fd 1 is looked at before it, by the C runtime's
 /// initialisers (`.init_array`), as the `ctor` crate does.
 #[cfg(target_os = "linux")]
+#[allow(unsafe_code)] // Before main: no safe way to run there.
 mod stdout_at_start {
     use std::sync::atomic::{AtomicBool, Ordering};
 

@@ -2,18 +2,31 @@
 #![allow(dead_code)]
 
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 use homerun::Scene;
 use homerun::preset;
+
+/// The binary as every test starts it: with neither `HOME` nor
+/// `XDG_CONFIG_HOME`, so that it has no user folder and the developer's own
+/// presets and parks never reach a test (a test that wants a folder of
+/// presets or parks passes its own, with `--presets-dir` or `--parks-dir`).
+pub fn command() -> std::process::Command {
+    let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"));
+    command.env_remove("HOME").env_remove("XDG_CONFIG_HOME");
+    command
+}
+
+/// [`command`], for assert_cmd's checks.
+pub fn assert_command() -> assert_cmd::Command {
+    assert_cmd::Command::from_std(command())
+}
 
 /// `homerun` with `presets` as the user's preset folder (an empty one, so
 /// that the machine's own presets never change a result), and neither HOME
 /// nor XDG_CONFIG_HOME (so that its parks never do either).
 pub fn homerun(presets: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_homerun"))
-        .env_remove("HOME")
-        .env_remove("XDG_CONFIG_HOME")
+    command()
         .arg("--presets-dir")
         .arg(presets)
         .args(args)
@@ -89,11 +102,8 @@ impl Row<'_> {
 /// Runs the binary with `args` (and `input` on stdin): exit status, stdout
 /// and stderr.
 pub fn run_homerun(args: &[&str], input: Option<&str>) -> (Option<i32>, String, String) {
-    let mut command = assert_cmd::Command::new(env!("CARGO_BIN_EXE_homerun"));
-    command
-        .env_remove("HOME")
-        .env_remove("XDG_CONFIG_HOME")
-        .args(args);
+    let mut command = assert_command();
+    command.args(args);
     if let Some(input) = input {
         command.write_stdin(input);
     }

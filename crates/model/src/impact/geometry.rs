@@ -1,0 +1,148 @@
+//! Where the bat meets the ball in three dimensions (docs/swing-3d.md):
+//! the bat's axis from its tilt, its direction and the batter's hand; the
+//! undercut E measured square to that axis; and the paper's impact frame
+//! (n1, n2, n3) carried along with the bat.
+//!
+//! With b̂ = (−sin φ, 0, cos φ), the horizontal square to the bat's
+//! direction φ ([`frame::backspin_axis`]), and h = ±1 the batter's hand:
+//! - the bat's velocity points along ŵ = (cos φ, 0, sin φ) tipped up by ψ;
+//! - its axis, from the hands to the barrel, is â = h·cos τ·b̂ − sin τ·ŷ
+//!   (τ > 0: the barrel below the hands);
+//! - "up, square to the bat" is û = h·sin τ·b̂ + cos τ·ŷ, the unit vector
+//!   square to â in the vertical plane that holds â;
+//! - the ball's centre sits at (r_b + r_B)(cos θ·ŵ + sin θ·û) from the
+//!   axis, so E = (r_b + r_B)·sin θ is its offset along û, as Eq. (1) has
+//!   it; at τ = φ = 0, ŵ = x̂ and û = ŷ: the paper's geometry exactly.
+
+use nalgebra::Vector3;
+
+use crate::frame;
+use crate::scene::Hand;
+
+/// The bat at contact: three orthonormal directions in the flight frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BatFrame {
+    /// â, along the bat from the hands to the barrel.
+    pub axis: Vector3<f64>,
+    /// û, square to the axis in its vertical plane, upward.
+    pub up: Vector3<f64>,
+    /// ŵ, the horizontal direction of the bat's velocity.
+    pub forward: Vector3<f64>,
+}
+
+impl BatFrame {
+    /// The bat tilted `tilt` (barrel below the hands), swung toward
+    /// `direction`, held by a batter of `hand`.
+    pub fn new(tilt: f64, direction: f64, hand: Hand) -> BatFrame {
+        let (sin_tilt, cos_tilt) = tilt.sin_cos();
+        let square = frame::backspin_axis(direction);
+        let h = hand.sign();
+        BatFrame {
+            axis: square * (h * cos_tilt) - Vector3::y() * sin_tilt,
+            up: square * (h * sin_tilt) + Vector3::y() * cos_tilt,
+            forward: frame::horizontal(direction),
+        }
+    }
+
+    /// The bat's velocity (m/s): `speed` along ŵ tipped up by the swing
+    /// angle ψ above the horizontal. Its part along a tilted bat's axis,
+    /// −speed·sin ψ·sin τ, slides toward the hands.
+    pub fn velocity(&self, speed: f64, swing_angle: f64) -> Vector3<f64> {
+        let (sin, cos) = swing_angle.sin_cos();
+        (self.forward * cos + Vector3::y() * sin) * speed
+    }
+}
+
+/// The impact frame of the paper's Fig. 1, in the flight frame: n3 from the
+/// bat's axis to the ball's centre, n2 along the bat (+z for either hand at
+/// a level square contact, as the paper's), n1 = n2 × n3.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactFrame {
+    pub bat: BatFrame,
+    pub n1: Vector3<f64>,
+    pub n2: Vector3<f64>,
+    pub n3: Vector3<f64>,
+}
+
+impl ContactFrame {
+    /// The frame for a normal at `normal_angle` θ (Eq. 1) from ŵ toward û.
+    pub fn new(bat: BatFrame, normal_angle: f64, hand: Hand) -> ContactFrame {
+        let (sin, cos) = normal_angle.sin_cos();
+        let n3 = bat.forward * cos + bat.up * sin;
+        // The paper's n2 is +z for a right-handed batter, whose barrel
+        // points that way; a left-handed batter's points the other way, and
+        // n2 along −â keeps n1 = n2 × n3 the paper's n1 at a square contact.
+        let n2 = bat.axis * hand.sign();
+        ContactFrame {
+            bat,
+            n1: n2.cross(&n3),
+            n2,
+            n3,
+        }
+    }
+
+    /// The flight-frame vector of impact-frame components (c1, c2, c3).
+    pub fn to_flight(&self, c1: f64, c2: f64, c3: f64) -> Vector3<f64> {
+        self.n1 * c1 + self.n2 * c2 + self.n3 * c3
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn orthonormal(vectors: [Vector3<f64>; 3]) -> bool {
+        let [a, b, c] = vectors;
+        let unit = |v: Vector3<f64>| (v.norm() - 1.0).abs() < 1e-15;
+        unit(a) && unit(b) && unit(c) && a.dot(&b).abs() < 1e-15 && a.dot(&c).abs() < 1e-15
+    }
+
+    #[test]
+    fn a_level_square_bat_is_the_papers() {
+        for hand in Hand::ALL {
+            let bat = BatFrame::new(0.0, 0.0, hand);
+            assert_eq!(bat.forward, Vector3::x());
+            assert_eq!(bat.up, Vector3::y());
+            assert_eq!(bat.axis, Vector3::z() * hand.sign());
+            let theta: f64 = 0.3791;
+            let f = ContactFrame::new(bat, theta, hand);
+            assert_eq!(f.n3, Vector3::new(theta.cos(), theta.sin(), 0.0));
+            assert_eq!(f.n2, Vector3::z());
+            assert_eq!(f.n1, Vector3::new(-theta.sin(), theta.cos(), 0.0));
+        }
+    }
+
+    #[test]
+    fn the_frames_are_orthonormal_and_right_handed() {
+        for (tilt, direction) in [(0.5, 0.3), (-0.4, -0.9), (1.0, 0.0), (0.2, 1.0)] {
+            for hand in Hand::ALL {
+                let bat = BatFrame::new(tilt, direction, hand);
+                assert!(orthonormal([bat.axis, bat.up, bat.forward]));
+                // The barrel is below the hands for a positive tilt, up is up.
+                assert!((bat.axis.y + tilt.sin()).abs() < 1e-15 && bat.up.y > 0.0);
+                let f = ContactFrame::new(bat, 0.4, hand);
+                assert!(orthonormal([f.n1, f.n2, f.n3]));
+                assert!((f.n2.cross(&f.n3) - f.n1).norm() < 1e-15);
+                assert!((f.n3.cross(&f.n1) - f.n2).norm() < 1e-15);
+                // E is n3's offset along û: (r_b + r_B)·sin θ.
+                assert!((f.n3.dot(&bat.up) - 0.4f64.sin()).abs() < 1e-15);
+                assert!(f.n3.dot(&bat.axis).abs() < 1e-15);
+            }
+        }
+    }
+
+    #[test]
+    fn a_right_handed_barrel_points_to_first_base_and_down() {
+        let bat = BatFrame::new(0.5, 0.0, Hand::Right);
+        assert!(bat.axis.z > 0.0 && bat.axis.y < 0.0 && bat.axis.x == 0.0);
+        // Pulled (toward left field), the barrel is out in front of the hands.
+        let pulled = BatFrame::new(0.5, -0.4, Hand::Right);
+        assert!(pulled.axis.x > 0.0);
+        // A left-handed batter is the mirror image in z.
+        let left = BatFrame::new(0.5, 0.4, Hand::Left);
+        let mirror = |v: Vector3<f64>| Vector3::new(v.x, v.y, -v.z);
+        assert_eq!(left.axis, mirror(pulled.axis));
+        assert_eq!(left.up, mirror(pulled.up));
+        assert_eq!(left.forward, mirror(pulled.forward));
+    }
+}

@@ -1,0 +1,276 @@
+//! The tangential slip of a 3-D impact against the normal impulse p.
+//!
+//! The slip s = (v1, v2) lives in the tangent plane, across the bat (n1) and
+//! along it (n2). While it slides, Coulomb friction μ·dp opposes it (Eq. 14
+//! in the plane), and Eq. (12)'s inverse inertia is diagonal here (β1 across
+//! the bat, where the bat's roll adds to the ball's; β_a along it, where
+//! only the ball rolls):
+//!
+//! ```text
+//! ds/dp = −(μ/m)·diag(β1, β_a)·s/|s|
+//! ```
+//!
+//! With β1 > β_a the part across the bat dies faster, so the slip turns
+//! toward the bat's axis as it slows. In p the turn rate grows as 1/|s| near
+//! the halt, where an integrator in p would crawl; in σ = ∫dp/|s| the slip
+//! is exact, v1 = v1(0)·e^(−k1·σ), v2 = v2(0)·e^(−k2·σ) with k = μβ/m, and
+//! only p(σ) = ∫|s|dσ is left, a smooth integral of decaying exponentials.
+//! Scaled (T = k2·σ, P = k2·p/|s(0)|, r = β1/β_a ≥ 1, â and b̂ the initial
+//! slip's direction cosines squared):
+//!
+//! ```text
+//! dP/dT = √(â·e^(−2rT) + b̂·e^(−2T))
+//! ```
+//!
+//! which is integrated with the crate's Dormand–Prince pair, the event
+//! P = P_f found on its continuous extension. The slip halts at
+//! P_s = P(∞); the contact then sticks, since the normal and tangential
+//! directions do not couple (the stick coefficient μ̄ = 0, as in the plane).
+
+use nalgebra::Vector2;
+
+use numerics::ode::{self, Control, Settings, State, Tolerance};
+use numerics::roots::find_root_newton;
+
+/// T at which the slip counts as halted: e^(−40) ≈ 4e-18, so the rest of
+/// the integral is below any double's resolution of P_s ≥ 1/r.
+const T_HALT: f64 = 40.0;
+
+/// The integrator's tolerance on P (which runs from 0 to at most 1).
+const TOLERANCE: f64 = 1e-14;
+
+/// The slip phase of one impact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slip {
+    /// s(0) = (v1(0), v2(0)) (m/s).
+    pub initial: Vector2<f64>,
+    /// k2 = μ·β_a/m (1/kg), the slower decay rate in σ (kg); 0 without
+    /// friction.
+    rate: f64,
+    /// r = β1/β_a.
+    ratio: f64,
+    /// â, b̂: the squared direction cosines of s(0).
+    across: f64,
+    along: f64,
+}
+
+impl Slip {
+    pub fn new(
+        initial: Vector2<f64>,
+        (beta1, beta_axial): (f64, f64),
+        friction: f64,
+        pair_mass: f64,
+    ) -> Slip {
+        let speed = initial.norm();
+        let (across, along) = if speed > 0.0 {
+            ((initial.x / speed).powi(2), (initial.y / speed).powi(2))
+        } else {
+            (0.0, 0.0)
+        };
+        Slip {
+            initial,
+            rate: friction * beta_axial / pair_mass,
+            ratio: beta1 / beta_axial,
+            across,
+            along,
+        }
+    }
+
+    /// Whether friction can act at all: some friction and some slip.
+    fn slides(&self) -> bool {
+        self.rate > 0.0 && self.initial != Vector2::zeros()
+    }
+
+    /// p per unit of P.
+    fn scale(&self) -> f64 {
+        self.initial.norm() / self.rate
+    }
+
+    /// dP/dT.
+    fn slope(&self, t: f64) -> f64 {
+        (self.across * (-2.0 * self.ratio * t).exp() + self.along * (-2.0 * t).exp()).sqrt()
+    }
+
+    /// The slip at scaled time T.
+    fn at_time(&self, t: f64) -> Vector2<f64> {
+        Vector2::new(
+            self.initial.x * (-self.ratio * t).exp(),
+            self.initial.y * (-t).exp(),
+        )
+    }
+
+    /// The bounds of P_s from max(a, b) ≤ √(a² + b²) ≤ a + b; equal when
+    /// the slip starts along n1 or along n2 (then P_s is exact).
+    fn halt_bounds(&self) -> (f64, f64) {
+        let (a, b) = (self.across.sqrt() / self.ratio, self.along.sqrt());
+        (a.max(b), a + b)
+    }
+
+    /// p_s, the normal impulse at which the slip halts: 0 without slip,
+    /// infinite without friction (Eq. 17 in the plane).
+    pub fn halt_impulse(&self) -> f64 {
+        if self.initial == Vector2::zeros() {
+            return 0.0;
+        }
+        if !self.slides() {
+            return f64::INFINITY;
+        }
+        let (low, high) = self.halt_bounds();
+        let halt = if low == high {
+            low
+        } else {
+            self.integrate_to(f64::INFINITY).1
+        };
+        halt * self.scale()
+    }
+
+    /// Whether the slip halts at or before normal impulse `impulse`, deciding
+    /// from the bounds of p_s when they suffice (a batted ball's slip halts
+    /// well before separation, and then no integration is needed).
+    pub fn halts_by(&self, impulse: f64) -> bool {
+        if self.initial == Vector2::zeros() {
+            return true;
+        }
+        if !self.slides() {
+            return false;
+        }
+        let target = impulse / self.scale();
+        let (low, high) = self.halt_bounds();
+        if target >= high {
+            true
+        } else if target < low {
+            false
+        } else {
+            self.time_at(target).is_none()
+        }
+    }
+
+    /// The slip s(p) at normal impulse `impulse` ≥ 0: zero once it has
+    /// halted.
+    pub fn at(&self, impulse: f64) -> Vector2<f64> {
+        if !self.slides() {
+            return self.initial;
+        }
+        match self.time_at(impulse / self.scale()) {
+            Some(t) => self.at_time(t),
+            None => Vector2::zeros(),
+        }
+    }
+
+    /// T at which P reaches `target`, or `None` if the slip halts first.
+    /// Closed form when the slip starts along n1 or along n2.
+    fn time_at(&self, target: f64) -> Option<f64> {
+        if target <= 0.0 {
+            return Some(0.0);
+        }
+        let (low, high) = self.halt_bounds();
+        if target >= high || (low == high && target >= low) {
+            return None;
+        }
+        // P < P_s from here on.
+        if self.along == 0.0 {
+            // P = √â·(1 − e^(−rT))/r.
+            return Some(-(-self.ratio * target / self.across.sqrt()).ln_1p() / self.ratio);
+        }
+        if self.across == 0.0 {
+            // P = √b̂·(1 − e^(−T)).
+            return Some(-(-target / self.along.sqrt()).ln_1p());
+        }
+        self.integrate_to(target).0
+    }
+
+    /// Integrates dP/dT from 0 until P reaches `target` (then T there) or
+    /// until T_HALT (then P there, which is P_s).
+    fn integrate_to(&self, target: f64) -> (Option<f64>, f64) {
+        let f = |t: f64, _: &State<1>| State::<1>::new(self.slope(t));
+        let settings = Settings::new(Tolerance::uniform(TOLERANCE));
+        let mut found = None;
+        let mut reached = 0.0;
+        ode::integrate(f, 0.0, State::<1>::zeros(), T_HALT, &settings, |step| {
+            reached = step.y1[0];
+            if step.y1[0] < target {
+                return Control::Continue;
+            }
+            let g = |t: f64| (step.at(t)[0] - target, self.slope(t));
+            found = Some(find_root_newton(g, step.t0, step.t1, 1e-15));
+            Control::Stop
+        });
+        (found, reached)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const BETAS: (f64, f64) = (3.433, 3.125);
+
+    #[test]
+    fn a_slip_across_the_bat_halts_as_eq_17_says() {
+        let (m, mu, v1) = (0.12275, 0.5, -1.3);
+        let slip = Slip::new(Vector2::new(v1, 0.0), BETAS, mu, m);
+        let expected = m * v1.abs() / (mu * BETAS.0);
+        assert!((slip.halt_impulse() - expected).abs() < 1e-16);
+        // Halfway, the slip has lost half of itself: v1 is linear in p.
+        let half = slip.at(0.5 * expected);
+        assert!((half.x - 0.5 * v1).abs() < 1e-15 && half.y == 0.0);
+        assert_eq!(slip.at(expected * 1.000001), Vector2::zeros());
+    }
+
+    #[test]
+    fn an_oblique_slip_turns_toward_the_bat_and_halts_between_its_bounds() {
+        let (m, mu) = (0.12275, 0.5);
+        let s0 = Vector2::new(1.0, 1.0);
+        let slip = Slip::new(s0, BETAS, mu, m);
+        let halt = slip.halt_impulse();
+        let (low, high) = slip.halt_bounds();
+        let scale = slip.scale();
+        assert!(low * scale < halt && halt < high * scale, "{halt}");
+        // The angle from n1 grows from 45° toward 90° as the slip slows.
+        let angle = |p: f64| {
+            let s = slip.at(p);
+            s.y.atan2(s.x)
+        };
+        let mut last = angle(0.0);
+        assert!((last - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+        for k in 1..10 {
+            let now = angle(halt * k as f64 / 10.0);
+            assert!(now > last, "{k}: {now} ≤ {last}");
+            last = now;
+        }
+        // `halts_by` decides at p_s itself, to the integral's precision.
+        assert!(slip.halts_by(halt * (1.0 + 1e-12)));
+        assert!(!slip.halts_by(halt * (1.0 - 1e-12)));
+        // P(T) against a quadrature of its own: Simpson on a fine grid.
+        let t_end = std::f64::consts::LN_2;
+        let n = 2000;
+        let h = t_end / n as f64;
+        let simpson: f64 = (0..=n)
+            .map(|k| {
+                let w = if k == 0 || k == n {
+                    1.0
+                } else if k % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
+                w * slip.slope(k as f64 * h)
+            })
+            .sum::<f64>()
+            * h
+            / 3.0;
+        let t = slip.time_at(simpson).unwrap();
+        assert!((t - t_end).abs() < 1e-12, "{t} vs {t_end}");
+    }
+
+    #[test]
+    fn without_friction_or_slip_nothing_slides() {
+        let slip = Slip::new(Vector2::new(2.0, -1.0), BETAS, 0.0, 0.1);
+        assert_eq!(slip.halt_impulse(), f64::INFINITY);
+        assert_eq!(slip.at(5.0), Vector2::new(2.0, -1.0));
+        assert!(!slip.halts_by(5.0));
+        let none = Slip::new(Vector2::zeros(), BETAS, 0.5, 0.1);
+        assert_eq!(none.halt_impulse(), 0.0);
+        assert!(none.halts_by(0.0));
+    }
+}

@@ -1,0 +1,493 @@
+//! The key table: every numeric input's name, symbol, unit, bounds and the
+//! reason for them (`homerun keys` prints it), nudge step and accessors.
+
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
+
+use super::{Bounds, Key};
+use crate::atmosphere::Atmosphere;
+use crate::scene::SceneKind;
+
+macro_rules! key {
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $why:literal, $step:expr, $($field:ident).+) => {
+        Key {
+            name: $name,
+            symbol: $symbol,
+            unit: $unit,
+            description: $desc,
+            bounds: $bounds,
+            bounds_reason: $why,
+            step: $step,
+            get: |s| s.$($field).+,
+            set: |s, v| s.$($field).+ = v,
+        }
+    };
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $why:literal, $step:expr, get: $get:expr, set: $set:expr) => {
+        Key {
+            name: $name,
+            symbol: $symbol,
+            unit: $unit,
+            description: $desc,
+            bounds: $bounds,
+            bounds_reason: $why,
+            step: $step,
+            get: $get,
+            set: $set,
+        }
+    };
+}
+
+/// A key of the weather: reads the atmosphere in force (the standard one
+/// while ρ and ν are given), and writing it derives ρ and ν.
+macro_rules! atmosphere_key {
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $why:literal, $step:expr, $field:ident) => {
+        key!(
+            $name,
+            $symbol,
+            $unit,
+            $desc,
+            $bounds,
+            $why,
+            $step,
+            get: |s| s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD).$field,
+            set: |s, v| {
+                let mut atmosphere = s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD);
+                atmosphere.$field = v;
+                s.environment.set_atmosphere(atmosphere)
+            }
+        )
+    };
+}
+
+/// A key of the launch: reads the launch in force (the swing's impact's,
+/// on a swing scene), and writing it makes the scene a batted ball.
+macro_rules! launch_key {
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $why:literal, $step:expr, $field:ident) => {
+        key!(
+            $name,
+            $symbol,
+            $unit,
+            $desc,
+            $bounds,
+            $why,
+            $step,
+            get: |s| s.batted_ball().$field,
+            set: |s, v| {
+                s.launch.$field = Some(v);
+                s.set_kind(SceneKind::BattedBall);
+            }
+        )
+    };
+}
+
+/// Every numeric input. Bounds are what the model can meaningfully take:
+/// Eq. (19) keeps e* in (0, 1) for approach speeds below about 240 m/s, so
+/// speeds stop at 100 m/s each.
+pub const KEYS: &[Key] = &[
+    key!(
+        "pitch.speed",
+        "V̂_b0",
+        "m/s",
+        "pitch speed at the plate",
+        Bounds::positive(100.0),
+        "Above 0, a pitch that reaches the plate; up to 100 m/s, where Eq. (19) still keeps e* in (0, 1) for any approach (it does below ~240 m/s) and the air is still incompressible (Mach 0.3).",
+        0.5,
+        pitch.speed
+    ),
+    key!(
+        "pitch.spin",
+        "ω_b0",
+        "rad/s",
+        "pitch spin (topspin positive, fastball backspin negative)",
+        Bounds::closed(-1000.0, 1000.0),
+        "±1000 rad/s (9550 rpm), four times any pitch's (a fastball's ~2300 rpm is 240 rad/s); beyond it the spin parameter leaves the lift data behind.",
+        10.0,
+        pitch.spin
+    ),
+    key!(
+        "bat.speed",
+        "V̂_B0",
+        "m/s",
+        "bat speed at the contact point",
+        Bounds::positive(100.0),
+        "Above 0, a bat that meets the ball; up to 100 m/s, as the pitch: Eq. (19)'s e* stays in (0, 1) and the air incompressible.",
+        0.5,
+        bat.speed
+    ),
+    key!(
+        "bat.spin",
+        "ω_B0",
+        "rad/s",
+        "bat roll about its axis (positive adds backspin, Fig. 9)",
+        Bounds::closed(-200.0, 200.0),
+        "±200 rad/s of roll, far past what a swing rolls a bat (a few tens of rad/s), to explore Fig. 9's trend.",
+        5.0,
+        bat.spin
+    ),
+    key!(
+        "bat.undercut",
+        "E",
+        "m",
+        "undercut: ball centre above bat axis (square to a tilted bat)",
+        Bounds::closed(-0.4, 0.4),
+        "±0.4 m, twice the largest r_b + r_B the radii allow; validation refuses a miss, |E| ≥ r_b + r_B, for the radii given.",
+        0.0005,
+        bat.undercut
+    ),
+    key!(
+        "bat.swing_angle",
+        "ψ",
+        "rad",
+        "swing angle above horizontal",
+        Bounds::closed(-FRAC_PI_2, FRAC_PI_2),
+        "From straight down to straight up.",
+        0.01,
+        bat.swing_angle
+    ),
+    key!(
+        "bat.friction",
+        "μ",
+        "",
+        "bat–ball coefficient of friction",
+        Bounds::closed(0.0, 2.0),
+        "0 (frictionless) to 2, past any leather on wood or aluminium (the paper measures 0.50 and 0.35, §III).",
+        0.01,
+        bat.friction
+    ),
+    key!(
+        "bat.effective_mass",
+        "M_B",
+        "kg",
+        "bat mass equivalent at the centre of percussion",
+        Bounds::closed(0.05, 10.0),
+        "From well below any bat (a 0.9 kg bat weighs ~0.6–0.8 kg at its sweet spot) to a sledgehammer; away from 0, where Eq. (12)'s inverse inertia overflows.",
+        0.05,
+        bat.effective_mass
+    ),
+    key!(
+        "bat.radius",
+        "r_B",
+        "m",
+        "bat barrel radius",
+        Bounds::closed(0.01, 0.2),
+        "A broomstick (1 cm) to a log; away from 0, where the bat's moment of inertia underflows.",
+        0.001,
+        bat.radius
+    ),
+    key!(
+        "bat.gyration_radius",
+        "k_B2",
+        "m",
+        "bat radius of gyration about its axis",
+        Bounds::closed(0.001, 0.2),
+        "Also tied to r_B when the scene is checked: between 0.2·r_B (all mass at the core) and r_B (a thin tube), as for any body of revolution of that radius.",
+        0.001,
+        bat.gyration_radius
+    ),
+    key!(
+        "ball.mass",
+        "M_b",
+        "kg",
+        "ball mass",
+        Bounds::closed(0.001, 10.0),
+        "Also tied to r_b when the scene is checked: the model ignores buoyancy and the air a ball drags along, fair only for a ball far denser than air.",
+        0.005,
+        ball.mass
+    ),
+    key!(
+        "ball.radius",
+        "r_b",
+        "m",
+        "ball radius",
+        Bounds::closed(0.01, 0.2),
+        "A marble (1 cm) to a volleyball-and-more (20 cm); away from 0, where the ball's moment of inertia underflows.",
+        0.001,
+        ball.radius
+    ),
+    key!(
+        "ball.gyration_radius",
+        "k_b",
+        "m",
+        "ball radius of gyration",
+        Bounds::closed(0.001, 0.2),
+        "Also tied to r_b when the scene is checked: between 0.2·r_b (a heavy core) and √(2/3)·r_b (a thin shell, the most a sphere's mass can spread).",
+        0.001,
+        ball.gyration_radius
+    ),
+    key!(
+        "environment.wind",
+        "V_w",
+        "m/s",
+        "horizontal wind toward environment.wind_direction (direction 0: positive is a tailwind)",
+        Bounds::closed(-50.0, 50.0),
+        "±50 m/s (112 mph) is a hurricane's wind: no game is played in it.",
+        1.0,
+        environment.wind
+    ),
+    key!(
+        "environment.wind_direction",
+        "φ_w",
+        "rad",
+        "where the wind blows toward: 0 centre field, positive toward right field",
+        Bounds::closed(-PI, PI),
+        "A full turn: the wind may blow toward any point of the compass.",
+        0.1,
+        environment.wind_direction
+    ),
+    key!(
+        "environment.wind_height",
+        "h_w",
+        "m",
+        "height above which the wind blows (0: everywhere), as in Nathan's calculator",
+        Bounds::closed(0.0, 100.0),
+        "From the ground to 100 m, above any batted ball's apex (~50 m): a layer any higher is the same as no wind.",
+        1.0,
+        environment.wind_height
+    ),
+    key!(
+        "environment.air_density",
+        "ρ",
+        "kg/m³",
+        "air density",
+        Bounds::closed(0.0, 5.0),
+        "Given, ρ and ν replace any atmosphere's (see `environment.temperature`).",
+        0.01,
+        get: |s| s.environment.air_density,
+        set: |s, v| s.environment.set_air_density(v)
+    ),
+    key!(
+        "environment.kinematic_viscosity",
+        "ν",
+        "m²/s",
+        "kinematic viscosity of air",
+        Bounds::positive(1e-3),
+        "Above 0, or Re is infinite; up to 1e-3 m²/s, 70 times air's, where Re falls far below any drag data.",
+        1e-7,
+        get: |s| s.environment.kinematic_viscosity,
+        set: |s, v| s.environment.set_kinematic_viscosity(v)
+    ),
+    key!(
+        "environment.gravity",
+        "g",
+        "m/s²",
+        "gravitational acceleration",
+        Bounds::positive(30.0),
+        "Above 0, or no ball lands; up to 30 m/s², three times Earth's (Jupiter's is ~25).",
+        0.1,
+        environment.gravity
+    ),
+    key!(
+        "environment.contact_height",
+        "y(0)",
+        "m",
+        "height of the ball at contact",
+        Bounds::closed(0.0, 10.0),
+        "From the ground to 10 m, higher than any batter reaches.",
+        0.1,
+        environment.contact_height
+    ),
+];
+
+/// The inputs beyond the paper: from Alan Nathan's trajectory calculator,
+/// the spin's decay and the weather; and the swing in three dimensions, the
+/// bat's tilt and direction (with `bat.hand`, [`SWING_3D_KEYS`];
+/// docs/swing-3d.md). Kept apart from [`KEYS`] while the
+/// explorer's rows, a saved preset's lines and `homerun keys` are built from
+/// that table alone; `Scene::key`, `Scene::set` and `Scene::validate` take
+/// both (see [`all_keys`]).
+///
+/// Setting any weather key derives ρ and ν from the four (the others at
+/// their standard values, [`Atmosphere::STANDARD`]); giving ρ or ν
+/// afterwards replaces the derived value. One source of inputs may not give
+/// both: see [`super::InputBatch`].
+pub const EXTENDED_KEYS: &[Key] = &[
+    key!(
+        "model.spin_decay",
+        "τ",
+        "s",
+        "spin decay time, ω(t) = ω₀·e^(−t/τ); 0 = no decay (the paper's constant spin)",
+        Bounds::closed(0.0, 1000.0),
+        "§II.D: ~30–50 s for a baseball, ~16 s measured on golf balls. Up to 1000 s, where a 6 s flight loses 0.6 % of its spin.",
+        1.0,
+        spin_decay
+    ),
+    atmosphere_key!(
+        "environment.temperature",
+        "T",
+        "°C",
+        "air temperature (setting it derives ρ and ν)",
+        Bounds::closed(-50.0, 60.0),
+        "From colder than any game (−50 °C) to above the hottest air recorded (56.7 °C); Sutherland's law and the vapour-pressure fit hold there.",
+        1.0,
+        temperature
+    ),
+    atmosphere_key!(
+        "environment.elevation",
+        "h",
+        "m",
+        "field elevation above sea level (setting it derives ρ and ν)",
+        Bounds::closed(-500.0, 5000.0),
+        "From the Dead Sea shore (−430 m) to above the highest cities (El Alto, 4150 m); the e^(−βh) pressure law stays within a few per cent of the standard atmosphere's there.",
+        10.0,
+        elevation
+    ),
+    atmosphere_key!(
+        "environment.pressure",
+        "p",
+        "hPa",
+        "barometric pressure corrected to sea level (setting it derives ρ and ν)",
+        Bounds::closed(870.0, 1085.0),
+        "Sea-level-corrected, as weather reports give it: from the lowest ever recorded (870 hPa, typhoon Tip) to the highest (1084.8 hPa, Siberia).",
+        1.0,
+        pressure
+    ),
+    atmosphere_key!(
+        "environment.humidity",
+        "RH",
+        "%",
+        "relative humidity (setting it derives ρ and ν)",
+        Bounds::closed(0.0, 100.0),
+        "A relative humidity, by definition.",
+        5.0,
+        humidity
+    ),
+    key!(
+        "bat.tilt",
+        "τ_B",
+        "rad",
+        "barrel below the hands at contact (0: the paper's level bat)",
+        Bounds::closed(-FRAC_PI_3, FRAC_PI_3),
+        "Measured barrels sit 25–35° below the hands in big-league swings and −29.6 ± 8.7° in elite softball (docs/swing-3d.md), and low and high pitches take them further; toward ±90° the bat stands upright, where \"above the axis\" (E) loses its meaning.",
+        0.02,
+        bat.tilt
+    ),
+    key!(
+        "bat.direction",
+        "φ_B",
+        "rad",
+        "bat velocity's horizontal direction: 0 centre field, positive toward right field",
+        Bounds::closed(-FRAC_PI_3, FRAC_PI_3),
+        "Beyond the foul lines (±45°) with room for a pulled or late swing; a bat moving more sideways meets the pitch nearly edge-on.",
+        0.02,
+        bat.direction
+    ),
+];
+
+/// The launch of a batted-ball scene (see [`crate::launch`]).
+/// Setting one makes the scene a batted ball; each one not set is read
+/// from the scene's own swing (the impact's launch), and reading one on a
+/// swing scene gives the impact's. Kept apart from [`KEYS`], which are the
+/// swing scene's rows in the explorer.
+pub const LAUNCH_KEYS: &[Key] = &[
+    launch_key!(
+        "launch.speed",
+        "V̂_bf",
+        "m/s",
+        "launch speed of a batted ball (no pitch, no impact)",
+        Bounds::positive(100.0),
+        "Above 0: a ball at rest does not fly. Up to 100 m/s, about Mach 0.3, where air stops behaving as incompressible (no drag model here knows compressibility) and nearly twice the fastest batted ball measured (122 mph, 54.6 m/s).",
+        0.5,
+        speed
+    ),
+    launch_key!(
+        "launch.angle",
+        "ζ",
+        "rad",
+        "launch angle above the horizontal",
+        Bounds::open(-FRAC_PI_2, FRAC_PI_2),
+        "Open at ±π/2: straight up or down is no batted ball to carry, and past it the ball leaves backwards.",
+        0.01,
+        angle
+    ),
+    launch_key!(
+        "launch.spin",
+        "ω_bf",
+        "rad/s",
+        "launch spin, backspin positive",
+        Bounds::closed(-1000.0, 1000.0),
+        "As the pitch's spin: the impact's spins reach ~1000 rad/s at the cusps of Fig. 5, and at 1000 rad/s (9550 rpm) the spin parameter passes 1 at 37 m/s, beyond the data both lift fits rest on.",
+        10.0,
+        spin
+    ),
+    launch_key!(
+        "launch.direction",
+        "φ",
+        "rad",
+        "launch direction: 0 centre field, positive toward right field (fair within ±π/4)",
+        Bounds::open(-FRAC_PI_2, FRAC_PI_2),
+        "Open at ±π/2, as the angle: a ball leaving square to the centre-field line or behind it is a foul tip, not a batted ball to carry; fair territory is ±π/4.",
+        0.01,
+        direction
+    ),
+    launch_key!(
+        "launch.sidespin",
+        "ω_s",
+        "rad/s",
+        "sidespin, positive curving the ball toward right field",
+        Bounds::closed(-1000.0, 1000.0),
+        "As the backspin: the two together make the spin vector, and ~3000 rpm is as much as batted balls are estimated to carry.",
+        10.0,
+        sidespin
+    ),
+];
+
+/// Factors on the drag and lift coefficients, for fitting a model to
+/// measured flights (`homerun calibrate`); 1 is the model as published.
+/// Kept apart from [`EXTENDED_KEYS`] so that the explorer's rows stay as
+/// they are; `homerun keys`, `--set`, presets and batch columns take them.
+pub const CALIBRATION_KEYS: &[Key] = &[
+    key!(
+        "model.drag_scale",
+        "k_D",
+        "",
+        "factor on C_D (1: the model as published; homerun calibrate fits it)",
+        Bounds::closed(0.3, 3.0),
+        "From a third to three times the model's: a season's ball differs from another's by a few per cent in drag (the 2019 \"juiced\" ball was put at 3–5 % less), a wrong model by tens of per cent; outside these a fit is telling of bad data, not of a ball. Above 0, since no drag is another model (a vacuum), not a scale of this one.",
+        0.01,
+        drag_scale
+    ),
+    key!(
+        "model.lift_scale",
+        "k_L",
+        "",
+        "factor on C_L (1: the model as published; homerun calibrate fits it where apex or hang time is measured)",
+        Bounds::closed(0.0, 3.0),
+        "As the drag's, from 0: lift can be switched off (model.lift = none says so more plainly).",
+        0.01,
+        lift_scale
+    ),
+];
+
+/// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`], then
+/// [`LAUNCH_KEYS`], then [`CALIBRATION_KEYS`] (last, so that the explorer's
+/// indices into the others stay).
+pub fn all_keys() -> impl Iterator<Item = &'static Key> {
+    swing_keys().chain(LAUNCH_KEYS).chain(CALIBRATION_KEYS)
+}
+
+/// The numeric inputs of a swing scene: all but the launch, which a swing
+/// computes (setting a launch key makes a batted ball).
+pub fn swing_keys() -> impl Iterator<Item = &'static Key> {
+    KEYS.iter().chain(EXTENDED_KEYS)
+}
+
+/// The given air: ρ and ν.
+pub const AIR_KEYS: [&str; 2] = ["environment.air_density", "environment.kinematic_viscosity"];
+
+/// The weather keys, which derive ρ and ν.
+pub const ATMOSPHERE_KEYS: [&str; 4] = [
+    "environment.temperature",
+    "environment.elevation",
+    "environment.pressure",
+    "environment.humidity",
+];
+
+/// The non-numeric inputs: the drag and lift models, the batter's hand.
+pub use crate::aero::{DRAG_KEY, LIFT_KEY};
+pub use crate::scene::HAND_KEY;
+
+/// Every key that takes a name rather than a number.
+pub const TEXT_KEYS: [&str; 3] = [DRAG_KEY, LIFT_KEY, HAND_KEY];
+
+/// The keys that take the swing out of the paper's plane: with the first
+/// two at 0 the swing is the paper's, whatever the hand.
+pub const SWING_3D_KEYS: [&str; 3] = ["bat.tilt", "bat.direction", HAND_KEY];

@@ -1,0 +1,170 @@
+//! Ballparks: where a park is (its elevation, which way it faces) and its
+//! fence. The 30 MLB parks are bundled from `data/parks.toml` (built by
+//! `scripts/parks/regenerate.py`; sources, vintage and format in
+//! docs/parks.md), parsed once on first use. Users' own park files are read
+//! by `preset::parks` (a frontend: the model reads no files).
+
+mod air;
+mod fence;
+mod parse;
+
+use std::sync::LazyLock;
+
+use parse::BundledEntry;
+
+pub use air::GivenWeather;
+pub use fence::{FOUL_LINE, Fence, FenceAt, FenceError, FencePoint};
+pub use parse::{ParkError, parse};
+
+/// A ballpark.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Park {
+    /// Baseball Savant's `home_team` code, in capitals ("BOS").
+    pub code: String,
+    /// Other codes that name it ("ARI" for "AZ").
+    pub aliases: Vec<String>,
+    pub name: String,
+    /// Elevation of the field above sea level (m).
+    pub elevation: f64,
+    /// Compass bearing from home plate to centre field, degrees clockwise
+    /// from true north, in [0, 360).
+    pub center_field_bearing: f64,
+    /// The published foul-line and centre-field distances, if known.
+    pub published: Option<ParkDimensions>,
+    pub fence: Fence,
+}
+
+/// A park's published distances (m): to the foul poles and to straightaway
+/// centre field, as painted on its walls.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct ParkDimensions {
+    pub left_line: f64,
+    pub center: f64,
+    pub right_line: f64,
+}
+
+/// A wind's compass direction, degrees clockwise from true north, as a
+/// weather report gives it (where it blows from) or as an arrow (where to).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CompassWind {
+    From(f64),
+    Toward(f64),
+}
+
+/// The bundled parks' file, compiled in.
+pub const BUNDLED_TOML: &str = include_str!("../../../../data/parks.toml");
+
+/// The bundled parks' fields, written by build.rs from data/parks.toml
+/// (whose directions are rounded to 1e-5 rad: -0.7854 is the file's, not an
+/// approximation of π/4 to mend).
+#[allow(clippy::approx_constant)]
+static BUNDLED_ENTRIES: &[BundledEntry] = include!(concat!(env!("OUT_DIR"), "/bundled_parks.rs"));
+
+static BUNDLED: LazyLock<Vec<Park>> = LazyLock::new(|| {
+    BUNDLED_ENTRIES
+        .iter()
+        .map(|entry| entry.checked().expect("data/parks.toml is valid (tested)"))
+        .collect()
+});
+
+/// The bundled parks, in the file's order (checked on first use; equal to
+/// `parse(BUNDLED_TOML)`, tested).
+pub fn bundled() -> &'static [Park] {
+    &BUNDLED
+}
+
+/// The park `code` names among `parks`, by its code first, then by an
+/// alias; without regard to case.
+pub fn find<'a>(parks: &'a [Park], code: &str) -> Option<&'a Park> {
+    let code = code.trim();
+    parks
+        .iter()
+        .find(|p| p.code.eq_ignore_ascii_case(code))
+        .or_else(|| parks.iter().find(|p| p.answers_to(code)))
+}
+
+impl Park {
+    /// Its code and aliases.
+    pub fn codes(&self) -> impl Iterator<Item = &str> {
+        std::iter::once(self.code.as_str()).chain(self.aliases.iter().map(String::as_str))
+    }
+
+    /// Whether `code` is its code or one of its aliases (any case).
+    pub fn answers_to(&self, code: &str) -> bool {
+        self.codes().any(|c| c.eq_ignore_ascii_case(code))
+    }
+
+    /// A wind's direction in the flight frame: radians from the
+    /// centre-field line, positive toward right field (which is clockwise
+    /// from centre field seen from above), in (−π, π]. A wind from due
+    /// south at a park facing due north blows straight out: 0.
+    pub fn wind_direction(&self, wind: CompassWind) -> f64 {
+        let toward = match wind {
+            CompassWind::From(bearing) => bearing + 180.0,
+            CompassWind::Toward(bearing) => bearing,
+        };
+        let relative = (toward - self.center_field_bearing).rem_euclid(360.0);
+        let relative = if relative > 180.0 {
+            relative - 360.0
+        } else {
+            relative
+        };
+        relative.to_radians()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::{FRAC_PI_2, PI};
+
+    #[test]
+    fn the_compiled_in_parks_are_the_files_to_the_last_bit() {
+        let parsed = parse(BUNDLED_TOML).unwrap();
+        assert_eq!(parsed.len(), 30);
+        assert_eq!(bundled(), parsed.as_slice());
+        let fenway = find(bundled(), "BOS").unwrap();
+        assert_eq!(fenway.name, "Fenway Park");
+    }
+
+    fn facing(bearing: f64) -> Park {
+        Park {
+            code: "T".into(),
+            aliases: vec![],
+            name: "T".into(),
+            elevation: 0.0,
+            center_field_bearing: bearing,
+            published: None,
+            fence: Fence::uniform(120.0, 3.0),
+        }
+    }
+
+    #[test]
+    fn real_winds_turn_into_the_flight_frame() {
+        let north = facing(0.0);
+        // From the south: straight out to centre field.
+        assert!(north.wind_direction(CompassWind::From(180.0)).abs() < 1e-12);
+        // Toward the east: toward right field (clockwise of north).
+        let east = north.wind_direction(CompassWind::Toward(90.0));
+        assert!((east - FRAC_PI_2).abs() < 1e-12);
+        // From centre field back in: ±π, given as +π.
+        assert!((north.wind_direction(CompassWind::From(0.0)) - PI).abs() < 1e-12);
+        // Fenway faces 45°: a wind from the south-west (225°) blows out.
+        let fenway = facing(45.0);
+        assert!(fenway.wind_direction(CompassWind::From(225.0)).abs() < 1e-12);
+        // A wind toward north at a park facing 350° drifts 10° toward right field.
+        let coors = facing(350.0);
+        let drift = coors.wind_direction(CompassWind::Toward(0.0));
+        assert!((drift - 10f64.to_radians()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn codes_and_aliases_find_parks_in_any_case() {
+        let parks = bundled();
+        assert_eq!(find(parks, "az").unwrap().code, "AZ");
+        assert_eq!(find(parks, "ARI").unwrap().code, "AZ");
+        assert_eq!(find(parks, "OAK").unwrap().code, "ATH");
+        assert_eq!(find(parks, " bos ").unwrap().name, "Fenway Park");
+        assert!(find(parks, "XXX").is_none());
+    }
+}

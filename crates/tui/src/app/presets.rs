@@ -1,0 +1,170 @@
+//! Saving the inputs as a preset and choosing one to load: the save prompt
+//! and the picker's keys.
+
+use std::path::PathBuf;
+
+use ratatui::crossterm::event::KeyEvent;
+use ratatui_textarea::TextArea;
+
+use super::{App, Mode, PickItem};
+use crate::keymap::Action;
+use preset::{self, Preset, PresetError, Source};
+
+impl App {
+    pub(super) fn save_key(
+        &mut self,
+        key: KeyEvent,
+        action: Option<Action>,
+        mut text: TextArea<'static>,
+        error: Option<String>,
+        overwrite: Option<String>,
+    ) {
+        match action {
+            Some(Action::Close) => {}
+            Some(Action::Confirm) => {
+                let name = text.lines().join("").trim().to_owned();
+                // Taking a bundled name hides the bundled preset from
+                // `--preset NAME` and from `o`: only when asked twice.
+                // Overwriting one of the user's own: only when asked twice too.
+                let asked = overwrite.as_deref() == Some(name.as_str());
+                let question = if preset::user_file(&name, self.presets_dir.as_deref()).is_some() {
+                    Some(format!(
+                        "`{name}` is one of your presets: Enter again to overwrite it"
+                    ))
+                } else if preset::is_bundled(&name) {
+                    Some(format!(
+                        "`{name}` is bundled: your file would hide it (--preset {name} and o load yours); Enter again to save anyway"
+                    ))
+                } else {
+                    None
+                };
+                if let Some(question) = question.filter(|_| !asked) {
+                    self.mode = Mode::Save {
+                        text,
+                        error: Some(question),
+                        overwrite: Some(name),
+                    };
+                    return;
+                }
+                match self.save(&name) {
+                    Ok(path) => {
+                        self.preset_name = name;
+                        self.message = Some((format!("saved {}", path.display()), false));
+                    }
+                    Err(e) => {
+                        self.mode = Mode::Save {
+                            text,
+                            error: Some(e),
+                            overwrite,
+                        }
+                    }
+                }
+            }
+            _ => {
+                text.input(key);
+                self.mode = Mode::Save {
+                    text,
+                    error,
+                    overwrite,
+                };
+            }
+        }
+    }
+
+    fn save(&self, name: &str) -> Result<PathBuf, String> {
+        let dir = self.presets_dir.as_deref().ok_or(preset::NO_FOLDER)?;
+        let preset = Preset {
+            name: name.to_owned(),
+            description: format!("saved from the explorer (from {})", self.preset_name),
+            scene: self.scene,
+            fence: self.fence,
+            source: Source::Bundled,
+        };
+        preset
+            .save(dir, true)
+            .map_err(|e| format!("not saved: {e}"))
+    }
+
+    pub(super) fn open_picker(&mut self) {
+        let items: Vec<PickItem> = preset::list(self.presets_dir.as_deref())
+            .into_iter()
+            .map(|entry| match entry {
+                Ok(p) => PickItem {
+                    name: p.name.clone(),
+                    detail: match &p.source {
+                        Source::Bundled
+                            if preset::user_file(&p.name, self.presets_dir.as_deref())
+                                .is_some() =>
+                        {
+                            format!("{} (bundled; hidden by yours of that name)", p.description)
+                        }
+                        Source::Bundled => format!("{} (bundled)", p.description),
+                        Source::File(_) if preset::is_bundled(&p.name) => {
+                            format!("{} (yours; hides the bundled one)", p.description)
+                        }
+                        Source::File(_) => p.description.clone(),
+                    },
+                    preset: Some(p),
+                },
+                Err(e) => PickItem {
+                    name: broken_name(&e),
+                    detail: format!("broken: {e}"),
+                    preset: None,
+                },
+            })
+            .collect();
+        let selected = items
+            .iter()
+            .position(|i| i.name == self.preset_name)
+            .unwrap_or(0);
+        self.mode = Mode::Open {
+            items,
+            selected,
+            error: None,
+        };
+    }
+
+    pub(super) fn open_key(
+        &mut self,
+        action: Option<Action>,
+        items: Vec<PickItem>,
+        selected: usize,
+        error: Option<String>,
+    ) {
+        let last = items.len().saturating_sub(1);
+        let (selected, error) = match action {
+            Some(Action::Close | Action::Quit) => return,
+            Some(Action::Down) => ((selected + 1).min(last), None),
+            Some(Action::Up) => (selected.saturating_sub(1), None),
+            Some(Action::Confirm) => match items.get(selected).and_then(|i| i.preset.clone()) {
+                Some(preset) => {
+                    self.load(preset);
+                    return;
+                }
+                None => (
+                    selected,
+                    Some(
+                        items
+                            .get(selected)
+                            .map_or(String::new(), |i| i.detail.clone()),
+                    ),
+                ),
+            },
+            _ => (selected, error),
+        };
+        self.mode = Mode::Open {
+            items,
+            selected,
+            error,
+        };
+    }
+}
+
+/// A short name for a broken preset: its file's stem, if the error has one.
+fn broken_name(error: &PresetError) -> String {
+    let text = error.to_string();
+    let path = text.split(':').next().unwrap_or("?");
+    std::path::Path::new(path)
+        .file_stem()
+        .map_or_else(|| path.to_owned(), |s| s.to_string_lossy().into_owned())
+}

@@ -1,0 +1,206 @@
+//! Numbers as the explorer writes them: the inputs pane shows a value this
+//! way, in the units chosen (`u`), and an edit starts from the same text and
+//! is read back in the same unit. Values stay SI inside; only text passes
+//! through here.
+
+use model::keys::{InputError, Key, number_text};
+use units::{Quantity, UnitSystem};
+
+/// A value as the inputs pane shows it in SI: enough digits for a thousandth
+/// of the key's step, trailing zeros trimmed.
+pub fn format_value(key: &Key, value: f64) -> String {
+    shown_value(key, value, UnitSystem::Si)
+}
+
+/// The key's nudge step in the unit shown: its own in SI, else rounded to
+/// 1, 2 or 5 in the shown unit (1 mph, 100 rpm, 0.5°), as
+/// `sensitivity::nudge_in` nudges.
+pub fn shown_step(key: &Key, system: UnitSystem) -> f64 {
+    let unit = key.unit_in(system);
+    if unit.is_identity() {
+        key.step
+    } else {
+        unit.nice_step(key.step)
+    }
+}
+
+/// An SI value of `key` rounded to its step in the unit shown (0.5 mm or
+/// 0.02 in for the undercut): what a click on the surface sets, so that
+/// the inputs pane shows it whole.
+pub fn on_step(key: &Key, si: f64, system: UnitSystem) -> f64 {
+    let (unit, step) = (key.unit_in(system), shown_step(key, system));
+    unit.read((unit.show(si) / step).round() * step)
+}
+
+/// An SI value of `key` as shown in `system`: in SI (and in a unit that
+/// does not convert) to a thousandth of the step, as it always was; in a
+/// converted unit to the step's own last digit (29.92 inHg for a 0.02 inHg
+/// step, 94 mph for 1 mph), since the SI value rarely lands on a round
+/// number there and more digits would only show the conversion. A nudge
+/// still changes the last digit shown.
+pub fn shown_value(key: &Key, si: f64, system: UnitSystem) -> String {
+    let unit = key.unit_in(system);
+    let finer = if unit.is_identity() { 3 } else { 0 };
+    number(unit.show(si), shown_step(key, system), finer)
+}
+
+/// An SI value of `key` in `system`, to a thousandth of the shown step: for
+/// a refused value, which is named as typed rather than rounded.
+fn precise_value(key: &Key, si: f64, system: UnitSystem) -> String {
+    number(key.unit_in(system).show(si), shown_step(key, system), 3)
+}
+
+/// `value` to `finer` more decimals than `step` has, trailing zeros
+/// trimmed.
+fn number(value: f64, step: f64, finer: i32) -> String {
+    let decimals = ((-step.log10()).ceil() as i32 + finer).clamp(0, 12) as usize;
+    trim(format!("{value:.decimals$}"))
+}
+
+/// A number's text without trailing zeros (nor a lone point, nor "-0").
+fn trim(text: String) -> String {
+    let text = if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text
+    };
+    if text == "-0" { "0".to_owned() } else { text }
+}
+
+/// A typed value of `key` back in SI: a bare number in the unit shown, or
+/// a number with a unit (`103mph`, `28°`) as `--set` takes it; or why not.
+pub fn read_value(key: &Key, text: &str, system: UnitSystem) -> Result<f64, InputError> {
+    let unit = key.unit_in(system);
+    match text.trim().parse::<f64>() {
+        Ok(shown) => Ok(unit.read(shown)),
+        Err(_) => key.read_with_unit(text, unit),
+    }
+}
+
+/// A key's accepted range in the unit shown, with the unit: "(0, 100] m/s",
+/// "(0, 223.693] mph", "(-90, 90) °".
+pub fn shown_bounds(key: &Key, system: UnitSystem) -> String {
+    let (range, symbol) = (shown_range(key, system), key.unit_in(system).symbol);
+    if symbol.is_empty() {
+        range
+    } else {
+        format!("{range} {symbol}")
+    }
+}
+
+/// A key's accepted range in the unit shown, without the unit: "(0, 100]",
+/// "(-90, 90)", "[-π/2, π/2]".
+pub fn shown_range(key: &Key, system: UnitSystem) -> String {
+    let unit = key.unit_in(system);
+    // Each end accepted when typed back (in SI the table's own text).
+    key.bounds.shown_in(unit)
+}
+
+/// Why a value was refused, in the units shown: a range error on a key
+/// names the value and its accepted range in the key's shown unit
+/// ("pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph");
+/// a miss, in the undercut's. Other relations between inputs keep the
+/// library's SI text.
+pub fn error_text(error: &InputError, system: UnitSystem) -> String {
+    if system == UnitSystem::Si {
+        return error.to_string();
+    }
+    match error {
+        InputError::OutOfRange { key, value, .. } => {
+            let Ok(key) = model::scene::Scene::key(key) else {
+                return error.to_string();
+            };
+            let unit = key.unit_in(system);
+            if unit.is_identity() {
+                return error.to_string();
+            }
+            format!(
+                "{} = {} {}: must be a finite number in {}",
+                key.name,
+                precise_value(key, *value, system),
+                unit.symbol,
+                shown_bounds(key, system)
+            )
+        }
+        InputError::Miss { value, limit } => {
+            let unit = Quantity::Size.in_system(system);
+            format!(
+                "bat.undercut = {} {}: the bat misses the ball; |E| must be below r_b + r_B = {} {}",
+                number_text((unit.show(*value) * 1e4).round() / 1e4),
+                unit.symbol,
+                number_text((unit.show(*limit) * 1e4).round() / 1e4),
+                unit.symbol
+            )
+        }
+        _ => error.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use model::scene::Scene;
+
+    #[test]
+    fn imperial_values_steps_and_errors_are_in_the_shown_unit() {
+        let imperial = UnitSystem::Imperial;
+        let speed = Scene::key("pitch.speed").unwrap();
+        // 42 m/s is 93.951 mph; the step is 1 mph, so whole mph are shown.
+        assert_eq!(shown_step(speed, imperial), 1.0);
+        assert_eq!(shown_value(speed, 42.0, imperial), "94");
+        assert_eq!(shown_value(speed, 42.0 + 0.44704, imperial), "95");
+        assert!((read_value(speed, "100", imperial).unwrap() - 44.704).abs() < 1e-12);
+        let mut scene = Scene::default();
+        scene.pitch.speed = read_value(speed, "300", imperial).unwrap();
+        let error = scene.validate().unwrap_err();
+        assert_eq!(
+            error_text(&error, imperial),
+            "pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph"
+        );
+        // An angle's bound, π/2, is 90°.
+        let angle = Scene::key("launch.angle").unwrap();
+        let mut scene = Scene::default();
+        (angle.set)(&mut scene, read_value(angle, "95", imperial).unwrap());
+        let error = scene.validate().unwrap_err();
+        assert_eq!(
+            error_text(&error, imperial),
+            "launch.angle = 95 °: must be a finite number in (-90, 90) °"
+        );
+        // SI keeps the library's text.
+        assert_eq!(error_text(&error, UnitSystem::Si), error.to_string());
+    }
+    #[test]
+    fn imperial_values_show_the_steps_digits_and_a_nudge_shows() {
+        let imperial = UnitSystem::Imperial;
+        let shown = |name: &str, si: f64| shown_value(Scene::key(name).unwrap(), si, imperial);
+        // 1013.25 hPa is 29.921 inHg; the step is 0.02 inHg.
+        assert_eq!(shown("environment.pressure", 1013.25), "29.92");
+        // 0.0265 m is 1.0433 in, step 0.02 in; 0.0231 m is 0.9094 in.
+        assert_eq!(shown("bat.undercut", 0.0265), "1.04");
+        assert_eq!(shown("ball.gyration_radius", 0.0231), "0.91");
+        // SI as it always was: a thousandth of the step.
+        assert_eq!(
+            format_value(Scene::key("bat.undercut").unwrap(), 0.0265),
+            "0.0265"
+        );
+        let scene = Scene::default();
+        for key in model::keys::all_keys() {
+            let step = shown_step(key, imperial);
+            let unit = key.unit_in(imperial);
+            let si = (key.get)(&scene);
+            let nudged = unit.read(unit.show(si) + step);
+            assert_ne!(
+                shown_value(key, si, imperial),
+                shown_value(key, nudged, imperial),
+                "{} by {step}",
+                key.name
+            );
+            let text = shown_value(key, si, imperial);
+            let decimals = text.split_once('.').map_or(0, |(_, d)| d.len());
+            if !unit.is_identity() {
+                let step_decimals = (-step.log10()).ceil().max(0.0) as usize;
+                assert!(decimals <= step_decimals, "{}: {text}", key.name);
+            }
+        }
+    }
+}

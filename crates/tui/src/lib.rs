@@ -1,0 +1,194 @@
+//! The explorer: a terminal app over the physics core. It builds scenes and
+//! calls the core; it computes nothing of its own.
+//!
+//! `app` holds the state and `update`, `view` draws it, `worker` runs the
+//! optimiser and the range surface in the background. Beneath both app and
+//! view: `keymap` (every key, what it does and its help), `layout` (where
+//! the panes go), `theme` (colours and styles) and `format` (numbers as
+//! shown). Every arrow points down: `view` reads `app`,
+//! and `app` never reads `view`. This file owns the terminal: set up, event
+//! loop, and restoring it on every way out.
+
+pub mod app;
+pub mod format;
+pub mod inputs;
+pub mod keymap;
+pub mod layout;
+pub mod margin;
+pub mod theme;
+pub mod view;
+pub mod worker;
+
+use std::io::{self, IsTerminal, Write};
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{Receiver, TryRecvError};
+use std::time::Duration;
+
+use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture, Event};
+use ratatui::crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
+use ratatui::crossterm::{execute, queue};
+use ratatui::layout::Rect;
+
+use app::App;
+use preset::Preset;
+use theme::{Background, ColorMode, Theme};
+use worker::Worker;
+
+/// Why the explorer did not run.
+#[derive(Debug, thiserror::Error)]
+pub enum TuiError {
+    #[error(
+        "the explorer needs a terminal (stdin and stdout must be a TTY); for plain numbers use the commands: see `homerun --help`"
+    )]
+    NoTerminal,
+    #[error("the background worker stopped unexpectedly")]
+    WorkerDied,
+    #[error("terminal: {0}")]
+    Io(#[from] io::Error),
+}
+
+/// Ends the process when the terminal goes away (a dropped SSH connection,
+/// a killed tmux). SIGHUP then reaches only the session's leader, often the
+/// shell, not us; and crossterm 0.29 spins forever inside `event::poll` on a
+/// hung-up TTY (each read returns 0 bytes and it reads again), so the event
+/// loop never comes round to notice. There is no terminal left to restore.
+fn watch_for_hang_up() -> io::Result<()> {
+    std::thread::Builder::new()
+        .name("hang-up watch".into())
+        .spawn(|| {
+            loop {
+                std::thread::sleep(Duration::from_millis(250));
+                if terminal_hung_up() {
+                    std::process::exit(0);
+                }
+            }
+        })
+        .map(drop)
+}
+
+/// Whether standard input's terminal has hung up: Linux's `poll(2)` reports
+/// POLLHUP on a TTY whose other end is gone. Written with libc because
+/// crossterm only reports keys, and keeps polling the dead TTY.
+#[cfg(unix)]
+#[allow(unsafe_code)] // std and crossterm cannot ask a TTY whether it hung up.
+fn terminal_hung_up() -> bool {
+    let mut stdin = libc::pollfd {
+        fd: libc::STDIN_FILENO,
+        events: libc::POLLIN,
+        revents: 0,
+    };
+    // SAFETY: one valid pollfd, a zero timeout; no memory is shared.
+    let ready = unsafe { libc::poll(&mut stdin, 1, 0) };
+    ready > 0 && stdin.revents & (libc::POLLHUP | libc::POLLERR | libc::POLLNVAL) != 0
+}
+
+#[cfg(not(unix))]
+fn terminal_hung_up() -> bool {
+    false
+}
+
+/// Restores the terminal when dropped: on quit, on error, and while
+/// unwinding from a panic (ratatui's panic hook restores it too).
+struct Restore;
+
+impl Drop for Restore {
+    fn drop(&mut self) {
+        let _ = execute!(io::stdout(), DisableMouseCapture);
+        ratatui::restore();
+    }
+}
+
+/// Runs the explorer on `preset` until the user quits or a signal (TERM,
+/// HUP, INT) asks it to stop; the terminal is restored either way. Its
+/// colours are for `background` (else the one `COLORFGBG` names), none
+/// under `NO_COLOR`. `m`/`M` go through the bundled parks and the user's
+/// from `parks_dir`.
+pub fn run(
+    preset: Preset,
+    (presets_dir, parks_dir): (Option<PathBuf>, Option<PathBuf>),
+    units: units::UnitSystem,
+    background: Option<Background>,
+) -> Result<(), TuiError> {
+    if !(io::stdin().is_terminal() && io::stdout().is_terminal()) {
+        return Err(TuiError::NoTerminal);
+    }
+    let stop = Arc::new(AtomicBool::new(false));
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    for signal in [SIGTERM, SIGHUP, SIGINT] {
+        signal_hook::flag::register(signal, Arc::clone(&stop))?;
+    }
+    let mut terminal = ratatui::try_init()?;
+    let _restore = Restore;
+    // Clicks and the wheel (see `app/mouse.rs`); Shift-drag still selects text.
+    execute!(io::stdout(), EnableMouseCapture)?;
+    let size = terminal.size()?;
+    let theme = Theme::new(
+        background.unwrap_or_else(Background::detect),
+        ColorMode::detect(),
+    );
+    let mut app = App::new(
+        preset,
+        presets_dir,
+        theme,
+        Rect::new(0, 0, size.width, size.height),
+    );
+    app.set_units(units);
+    app.load_parks(parks_dir.as_deref());
+    let worker = Worker::spawn();
+    watch_for_hang_up()?;
+
+    while !app.quit && !stop.load(Ordering::Relaxed) {
+        if let Some(job) = app.take_job() {
+            worker.submit(job);
+        }
+        if let Some(job) = app.take_figure_job() {
+            worker.submit_figure(job);
+        }
+        if let Some(job) = app.take_margin_job() {
+            worker.submit_margin(job);
+        }
+        // A map no longer shown stops at once (its generation has moved on).
+        worker.cancel_margins_before(app.margin.generation);
+        if app.dirty {
+            app.dirty = false;
+            queue!(terminal.backend_mut(), BeginSynchronizedUpdate)?;
+            terminal.draw(|frame| view::draw(frame, &app))?;
+            execute!(terminal.backend_mut(), EndSynchronizedUpdate)?;
+            terminal.backend_mut().flush()?;
+        }
+        // Wait for a key, a result or a signal; poll often only while the
+        // worker is busy. Waiting writes nothing to the terminal.
+        let timeout = Duration::from_millis(if app.busy() { 20 } else { 200 });
+        if event::poll(timeout)? {
+            // Take every pending event before recomputing: a held-down key
+            // costs one recomputation per frame, not one per repeat.
+            loop {
+                let event: Event = event::read()?;
+                app.handle(&event);
+                if app.quit || !event::poll(Duration::ZERO)? {
+                    break;
+                }
+            }
+            app.flush();
+        }
+        drain(&worker.reports, |report| app.apply(report))?;
+        drain(&worker.figures, |report| app.apply_figure(report))?;
+        drain(&worker.margins, |report| app.apply_margin(report))?;
+    }
+    Ok(())
+}
+
+/// Takes in every result waiting on `reports`. A thread that is gone (it
+/// panicked) stops the explorer rather than leave a screen that will never
+/// update.
+fn drain<R>(reports: &Receiver<R>, mut apply: impl FnMut(R)) -> Result<(), TuiError> {
+    loop {
+        match reports.try_recv() {
+            Ok(report) => apply(report),
+            Err(TryRecvError::Empty) => return Ok(()),
+            Err(TryRecvError::Disconnected) => return Err(TuiError::WorkerDied),
+        }
+    }
+}

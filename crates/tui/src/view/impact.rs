@@ -1,0 +1,215 @@
+//! The collision step by step (paper Fig. 2): the tangential slip v1 and the
+//! normal approach v3 of the contact points against the normal impulse p,
+//! with p_s, p_c and p_f marked, and the ball's state at the cursor. A 3-D
+//! swing's collision is drawn by [`super::impact3d`], over the same chart.
+
+use ratatui::Frame;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::Style;
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph};
+
+use super::chart::{self, AxisSpec, Ticks};
+use super::impact3d;
+use crate::app::{App, impact_stops};
+use model::impact::{Collision, Stop};
+use units::Quantity;
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    // Drawn for a swing only: a batted ball has no impact.
+    let Some(impact) = &app.flown.impact else {
+        return;
+    };
+    let stops = impact_stops(impact);
+    let stop = stops[app.impact_stop.min(stops.len() - 1)];
+    let block = Block::bordered().title(Span::styled(
+        format!(
+            " Impact: {} ({}/{}) · , . step ",
+            stop.name,
+            app.impact_stop + 1,
+            stops.len()
+        ),
+        app.theme.title,
+    ));
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    match impact.spatial() {
+        Some(spatial) => impact3d::draw(frame, inner, app, (impact, spatial), stop),
+        None => planar(frame, inner, app, impact, stop),
+    }
+}
+
+/// The paper's collision: v1 and v3 against p.
+fn planar(frame: &mut Frame, inner: Rect, app: &App, impact: &Collision, stop: Stop) {
+    // Speeds in the units shown (m/s or mph); impulses stay N·s.
+    let (speed, spin) = (app.unit(Quantity::Speed), app.unit(Quantity::Spin));
+    let [chart_area, text_area] =
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(3)]).areas(inner);
+    let (slip_path, normal_path) = (app.theme.path(0), app.theme.path(1));
+    let curves = [
+        Curve {
+            value: |s| s.slip.x,
+            style: app.theme.slip,
+            marker: slip_path.0,
+        },
+        Curve {
+            value: |s| s.normal_velocity,
+            style: app.theme.approach,
+            marker: normal_path.0,
+        },
+    ];
+    phase_chart(frame, chart_area, app, impact, stop.impulse, &curves);
+
+    let s = impact.at(stop.impulse);
+    let lines = vec![
+        impulse_line(app, impact, stop),
+        Line::from(vec![
+            Span::styled(
+                format!("{}v1 slip ", named(app, slip_path.1)),
+                app.theme.slip,
+            ),
+            Span::raw(format!("{:+.2}  ", speed.show(s.slip.x))),
+            Span::styled(
+                format!("{}v3 normal ", named(app, normal_path.1)),
+                app.theme.approach,
+            ),
+            Span::raw(format!(
+                "{:+.2} {}",
+                speed.show(s.normal_velocity),
+                speed.symbol
+            )),
+        ]),
+        Line::from(vec![
+            Span::styled("ball ", app.theme.dim),
+            Span::raw(format!(
+                "({:+.2}, {:+.2}) {}  |v| {:.2}  spin {:+.1} {}",
+                speed.show(s.ball_velocity.x),
+                speed.show(s.ball_velocity.y),
+                speed.symbol,
+                speed.show(s.ball_velocity.norm()),
+                spin.show(s.ball_spin.z),
+                spin.symbol
+            )),
+        ]),
+    ];
+    frame.render_widget(Paragraph::new(lines), text_area);
+}
+
+/// A curve of the chart against p: what it plots of a moment (m/s), and
+/// how it is drawn.
+pub(super) struct Curve {
+    pub value: fn(&model::impact::Moment) -> f64,
+    pub style: Style,
+    pub marker: Marker,
+}
+
+/// Without colour, a curve's name carries its glyph.
+pub(super) fn named(app: &App, glyph: &str) -> String {
+    if app.theme.colored() {
+        String::new()
+    } else {
+        format!("{glyph} ")
+    }
+}
+
+/// "p 4.311 N·s  p_s 1.657  p_c 8.621  p_f 12.341": the cursor and the
+/// phases' impulses.
+pub(super) fn impulse_line(app: &App, impact: &Collision, stop: Stop) -> Line<'static> {
+    Line::from(vec![
+        Span::styled("p ", app.theme.cursor),
+        Span::raw(format!("{:.3} N·s  ", stop.impulse)),
+        Span::styled("p_s ", app.theme.stick),
+        Span::raw(
+            impact
+                .stick_impulse()
+                .map_or("— (slips) ".to_owned(), |p| format!("{p:.3}  ")),
+        ),
+        Span::styled("p_c ", app.theme.compression),
+        Span::raw(format!("{:.3}  ", impact.compression_impulse())),
+        Span::styled("p_f ", app.theme.dim),
+        Span::raw(format!("{:.3}", impact.separation_impulse())),
+    ])
+}
+
+/// `curves` against the normal impulse p from 0 to p_f, in the speed unit
+/// shown, with p_c, p_s (where the contact sticks) and the cursor at
+/// `cursor` as vertical lines, and the names of p_c and p_s at their tops.
+pub(super) fn phase_chart(
+    frame: &mut Frame,
+    chart_area: Rect,
+    app: &App,
+    impact: &Collision,
+    cursor: f64,
+    curves: &[Curve],
+) {
+    let speed = app.unit(Quantity::Speed);
+    let pf = impact.separation_impulse();
+    let samples = (2 * chart_area.width as usize).clamp(8, 400);
+    let states: Vec<_> = (0..samples)
+        .map(|k| impact.at(pf * k as f64 / (samples - 1) as f64))
+        .collect();
+    let points: Vec<Vec<(f64, f64)>> = curves
+        .iter()
+        .map(|c| {
+            states
+                .iter()
+                .map(|s| (s.impulse, speed.show((c.value)(s))))
+                .collect()
+        })
+        .collect();
+    let (lo, hi) = points
+        .iter()
+        .flatten()
+        .fold((0.0f64, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    let x = Ticks::across(0.0, pf, chart_area.width.saturating_sub(6));
+    let pad = 0.05 * (hi - lo);
+    let y = Ticks::up(lo - pad, hi + pad, chart_area.height.saturating_sub(2));
+    let vertical = |p: f64| [(p, y.lo), (p, y.hi)];
+    let pc_line = vertical(impact.compression_impulse());
+    let ps_line = impact.stick_impulse().map(vertical);
+    let cursor = vertical(cursor);
+    let zero = [(0.0, 0.0), (x.hi, 0.0)];
+    let mut datasets = vec![
+        chart::line(app.theme.dim, &zero),
+        chart::line(app.theme.compression, &pc_line),
+    ];
+    if let Some(ps) = &ps_line {
+        datasets.push(chart::line(app.theme.stick, ps));
+    }
+    datasets.push(chart::line(app.theme.cursor, &cursor));
+    for (curve, points) in curves.iter().zip(&points) {
+        datasets.push(chart::curve(curve.marker, curve.style, points));
+    }
+    let graph = chart::draw(
+        frame,
+        chart_area,
+        datasets,
+        (
+            &AxisSpec::new("p (N·s)", x),
+            &AxisSpec::new(speed.symbol, y),
+        ),
+        app.theme.dim,
+    );
+    // Each line's name at its top, where the chart leaves room.
+    let top = |p: f64| (p, y.hi);
+    let at = |p: f64, name| [(top(p), name)];
+    chart::labels(
+        frame,
+        graph,
+        (&x, &y),
+        Marker::Braille,
+        &at(impact.compression_impulse(), "p_c"),
+        app.theme.compression,
+    );
+    if let Some(ps) = impact.stick_impulse() {
+        chart::labels(
+            frame,
+            graph,
+            (&x, &y),
+            Marker::Braille,
+            &at(ps, "p_s"),
+            app.theme.stick,
+        );
+    }
+}

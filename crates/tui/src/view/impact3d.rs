@@ -1,0 +1,288 @@
+//! A 3-D swing's collision step by step: v1 (across the bat), v2 (along
+//! it) and v3 against the normal impulse p, as the plane's chart, and
+//! beside it the slip (v1, v2) in the tangent plane at equal scales: the
+//! path of its tip from s(0) to where it halts (the contact sticks at the
+//! origin) or the ball leaves, with the cursor's slip as an arrow from the
+//! origin. Coulomb friction slows the slip faster across the bat than
+//! along it, so the path curves: the slip's direction turns toward the bat
+//! as it slows (`model::impact::slip`).
+
+use ratatui::Frame;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::Style;
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Axis, Chart, Paragraph};
+
+use super::chart;
+use super::impact::{Curve, impulse_line, named, phase_chart};
+use crate::app::App;
+use crate::layout::CELL_ASPECT;
+use model::impact::{Collision, Impact3d, Regime, Stop};
+use units::Quantity;
+
+/// Points along the slip's path: smooth in braille at any pane size.
+const PATH_POINTS: usize = 80;
+
+pub fn draw(
+    frame: &mut Frame,
+    inner: Rect,
+    app: &App,
+    (impact, spatial): (&Collision, &Impact3d),
+    stop: Stop,
+) {
+    let speed = app.unit(Quantity::Speed);
+    let spin = app.unit(Quantity::Spin);
+    let [charts, text_area] =
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(4)]).areas(inner);
+    // The slip plane beside the chart, about as wide as tall in true
+    // proportion, and never more than two fifths of the pane.
+    let plane_width = (charts.width * 2 / 5).min(CELL_ASPECT as u16 * charts.height + 2);
+    let shows_plane = plane_width >= 12 && charts.height >= 6;
+    let [chart_area, _, plane_area] = Layout::horizontal([
+        Constraint::Fill(1),
+        Constraint::Length(u16::from(shows_plane)),
+        Constraint::Length(if shows_plane { plane_width } else { 0 }),
+    ])
+    .areas(charts);
+    let (across, normal, along) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
+    let curves = [
+        Curve {
+            value: |s| s.slip.x,
+            style: app.theme.slip,
+            marker: across.0,
+        },
+        Curve {
+            value: |s| s.slip.y,
+            style: app.theme.slip_along,
+            marker: along.0,
+        },
+        Curve {
+            value: |s| s.normal_velocity,
+            style: app.theme.approach,
+            marker: normal.0,
+        },
+    ];
+    phase_chart(frame, chart_area, app, impact, stop.impulse, &curves);
+    if shows_plane {
+        slip_plane(frame, plane_area, app, spatial, stop.impulse);
+    }
+
+    let s = impact.at(stop.impulse);
+    let value = |v: f64| Span::raw(format!("{:+.2}  ", speed.show(v)));
+    let v = s.ball_velocity;
+    let lines = vec![
+        impulse_line(app, impact, stop),
+        Line::from(vec![
+            Span::styled(format!("{}v1 ", named(app, across.1)), app.theme.slip),
+            value(s.slip.x),
+            Span::styled(format!("{}v2 ", named(app, along.1)), app.theme.slip_along),
+            value(s.slip.y),
+            Span::styled(format!("{}v3 ", named(app, normal.1)), app.theme.approach),
+            Span::raw(format!(
+                "{:+.2} {}",
+                speed.show(s.normal_velocity),
+                speed.symbol
+            )),
+        ]),
+        turn_line(app, spatial, stop.impulse, text_area.width),
+        Line::from(vec![
+            Span::styled("ball ", app.theme.dim),
+            Span::raw(format!(
+                "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {:.1} {}",
+                speed.show(v.x),
+                speed.show(v.y),
+                speed.show(v.z),
+                speed.symbol,
+                spin.show(s.ball_spin.norm()),
+                spin.symbol
+            )),
+        ]),
+    ];
+    frame.render_widget(Paragraph::new(lines), text_area);
+}
+
+/// "slip 38.2° (26.3° → 74.3°, sticks)": the slip's direction at the
+/// cursor (0° square across the bat, 90° along it), and at the start and
+/// the end of its turn: where it halts, or at separation if it never does.
+fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'static> {
+    let turn = impact.slip_turn(2);
+    let label = Span::styled("slip ", app.theme.slip);
+    let (Some(first), Some(last)) = (turn.first(), turn.last()) else {
+        return Line::from(vec![label, Span::raw("none: it sticks from the start")]);
+    };
+    // From p_s on the contact sticks (at p_s itself the slip's last
+    // trace still has a direction, which means nothing).
+    let stuck = impact.regime == Regime::Stick && cursor >= impact.slip_halt_impulse();
+    let now = match impact.at(cursor).slip_angle().filter(|_| !stuck) {
+        Some(angle) => format!("{:.1}°", angle.to_degrees()),
+        None => "stuck".to_owned(),
+    };
+    let end = match impact.regime {
+        Regime::Stick => Span::styled("sticks", app.theme.stick),
+        Regime::Slip => Span::raw("slips to p_f"),
+    };
+    let mut spans = vec![
+        label,
+        Span::styled(now, app.theme.cursor),
+        Span::raw(format!(
+            " ({:.1}° → {:.1}°, ",
+            first.angle.to_degrees(),
+            last.angle.to_degrees()
+        )),
+        end,
+        Span::raw(")"),
+    ];
+    let key = "  0° across the bat, 90° along";
+    let used: usize = spans.iter().map(Span::width).sum();
+    if used + key.chars().count() <= width as usize {
+        spans.push(Span::styled(key, app.theme.dim));
+    }
+    Line::from(spans)
+}
+
+/// The slip in the tangent plane: v1 across, v2 up, equal scales; the path
+/// of its tip, the stick point, and the cursor's slip as an arrow.
+fn slip_plane(frame: &mut Frame, area: Rect, app: &App, impact: &Impact3d, cursor: f64) {
+    let speed = app.unit(Quantity::Speed);
+    let [title, plot] = Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
+    frame.buffer_mut().set_string(
+        title.x,
+        title.y,
+        fitted("slip (v1, v2)", title.width),
+        app.theme.dim,
+    );
+    let shown = |v: nalgebra::Vector2<f64>| (speed.show(v.x), speed.show(v.y));
+    let mut path: Vec<(f64, f64)> = impact
+        .slip_turn(PATH_POINTS)
+        .iter()
+        .map(|p| {
+            let (sin, cos) = p.angle.sin_cos();
+            (speed.show(p.speed * cos), speed.show(p.speed * sin))
+        })
+        .collect();
+    let sticks = impact.regime == Regime::Stick;
+    if sticks {
+        path.push((0.0, 0.0));
+    } else {
+        path.push(shown(impact.after.slip));
+    }
+    let stuck = sticks && cursor >= impact.slip_halt_impulse();
+    let now = if stuck {
+        (0.0, 0.0)
+    } else {
+        shown(impact.at(cursor).slip)
+    };
+    let bounds = equal_bounds(plot, &path);
+    let (bx, by) = bounds;
+    let axes = [
+        vec![(bx[0], 0.0), (bx[1], 0.0)],
+        vec![(0.0, by[0]), (0.0, by[1])],
+    ];
+    let arrow = arrow(now, bounds);
+    let origin = [(0.0, 0.0)];
+    let mut datasets = vec![
+        chart::line(app.theme.dim, &axes[0]),
+        chart::line(app.theme.dim, &axes[1]),
+        chart::curve(app.theme.path(0).0, app.theme.slip, &path),
+    ];
+    if let Some(arrow) = &arrow {
+        // Without colour, dots tell it from the path.
+        let marker = if app.theme.colored() {
+            Marker::Braille
+        } else {
+            Marker::Dot
+        };
+        datasets.push(chart::curve(marker, app.theme.cursor, arrow));
+    }
+    if sticks {
+        datasets.push(chart::points(Marker::Dot, app.theme.stick, &origin));
+    }
+    frame.render_widget(
+        Chart::new(datasets)
+            .x_axis(Axis::default().bounds(bx))
+            .y_axis(Axis::default().bounds(by))
+            .legend_position(None),
+        plot,
+    );
+    // The axes' names at their ends, the start of the path (on the row
+    // above it) and the stick (below the axis), clear of the path.
+    let buf = frame.buffer_mut();
+    let mut write = |point: (f64, f64), text: &str, style: Style, (left, down): (bool, i16)| {
+        let Some((column, row)) = chart::cell_of(plot, bounds, point, Marker::Braille) else {
+            return;
+        };
+        let width = text.chars().count() as u16;
+        let start = if left {
+            column.checked_sub(width)
+        } else {
+            Some(column + 1)
+        };
+        let row = row
+            .checked_add_signed(down)
+            .filter(|r| *r >= plot.y && *r < plot.bottom());
+        if let (Some(start), Some(row)) = (
+            start.filter(|s| *s >= plot.x && s + width <= plot.right()),
+            row,
+        ) {
+            buf.set_string(start, row, text, style);
+        }
+    };
+    write((bx[1], 0.0), "v1", app.theme.dim, (true, 0));
+    write((0.0, by[1]), "v2", app.theme.dim, (false, 0));
+    if let Some(&start) = path.first() {
+        let left = start.0 > 0.5 * (bx[0] + bx[1]);
+        write(start, "p=0", app.theme.slip, (left, -1));
+    }
+    if sticks {
+        write((0.0, 0.0), "p_s", app.theme.stick, (false, 1));
+    }
+}
+
+/// The bounds (v1, v2) that show `points` and the origin with a margin, at
+/// equal scales in `plot`: a braille dot is half a cell wide and a quarter
+/// of one tall, a cell [`CELL_ASPECT`] times as tall as wide.
+fn equal_bounds(plot: Rect, points: &[(f64, f64)]) -> ([f64; 2], [f64; 2]) {
+    let (mut x, mut y) = ([0.0f64, 0.0f64], [0.0f64, 0.0f64]);
+    for &(px, py) in points.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
+        x = [x[0].min(px), x[1].max(px)];
+        y = [y[0].min(py), y[1].max(py)];
+    }
+    // The plot's width and height in braille dots' widths.
+    let (dots_x, dots_y) = (
+        2.0 * f64::from(plot.width.max(1)),
+        4.0 * f64::from(plot.height.max(1)) * CELL_ASPECT / 2.0,
+    );
+    // Per dot's width, from the wider need.
+    let need = |[a, b]: [f64; 2]| 1.15 * (b - a).max(1e-9);
+    let per_dot = (need(x) / dots_x).max(need(y) / dots_y);
+    let centred = |[a, b]: [f64; 2], dots: f64| {
+        let (mid, half) = (0.5 * (a + b), 0.5 * per_dot * dots);
+        [mid - half, mid + half]
+    };
+    (centred(x, dots_x), centred(y, dots_y))
+}
+
+/// An arrow from the origin toward `tip` with two barbs, at least a
+/// quarter of the plot long so that a dying slip's direction still shows;
+/// `None` once it has halted (the contact sticks).
+fn arrow(tip: (f64, f64), (x, y): ([f64; 2], [f64; 2])) -> Option<Vec<(f64, f64)>> {
+    let length = tip.0.hypot(tip.1);
+    if length == 0.0 || !length.is_finite() {
+        return None;
+    }
+    let shown = length.max(0.25 * (x[1] - x[0]).min(y[1] - y[0]));
+    let heading = tip.1.atan2(tip.0);
+    let tip = (shown * heading.cos(), shown * heading.sin());
+    let barb = |turn: f64| {
+        let back = heading + std::f64::consts::PI + turn;
+        let reach = 0.2 * shown;
+        (tip.0 + reach * back.cos(), tip.1 + reach * back.sin())
+    };
+    Some(vec![(0.0, 0.0), tip, barb(0.5), tip, barb(-0.5)])
+}
+
+/// `text` cut to `width` characters.
+fn fitted(text: &str, width: u16) -> String {
+    text.chars().take(width as usize).collect()
+}

@@ -1,0 +1,466 @@
+//! The inputs pane: every key of the scene, grouped, with the range one
+//! nudge gains beside each (at the current swing and, where there is room,
+//! at the optimum), and the selected one's description (or the edit box and
+//! its error) at the bottom.
+//!
+//! Columns, by priority as the pane narrows: symbol, value and unit always
+//! (a value is never cut); then Δ (the range gained by one step up at the
+//! current swing); then Δopt (the optimal range gained); then the key's
+//! name. Where Δ does not fit as a number it is shown as a sign repeated by
+//! size (+++ to +, or ·).
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph, Wrap};
+
+use crate::app::{App, Field, GainCell, Mode, input_key};
+use crate::format::{shown_bounds, shown_range, shown_step, shown_value};
+use crate::layout::{input_scroll, inputs_list};
+use crate::worker::Gain;
+use analysis::sensitivity;
+use model::aero::{DragModel, LiftModel};
+use model::keys::HAND_KEY;
+use model::scene::Hand;
+use preset::escape_text;
+
+/// Display width of the symbol column (V̂_b0, k_B2, y(0): four cells).
+const SYMBOL: usize = 4;
+/// Display width of the unit column (rad/s, kg/m³).
+const UNIT: usize = 5;
+/// A numeric Δ column, its separating space included ("+12.34").
+const GAIN: usize = 7;
+/// The compact Δ column, its separating space included ("+++").
+const COMPACT: usize = 4;
+
+/// Which columns fit the pane.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Columns {
+    /// Width of the value column: the widest value shown.
+    value: usize,
+    name: Option<usize>,
+    swing: Option<Sensitivity>,
+    optimum: bool,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Sensitivity {
+    Numbers,
+    Signs,
+}
+
+fn width(text: &str) -> usize {
+    Span::raw(text).width()
+}
+
+/// `text` padded with spaces to `cells` display cells, left or right aligned.
+fn pad(text: &str, cells: usize, right: bool) -> String {
+    let fill = " ".repeat(cells.saturating_sub(width(text)));
+    if right {
+        format!("{fill}{text}")
+    } else {
+        format!("{text}{fill}")
+    }
+}
+
+fn columns(inner: usize, value: usize, name: usize) -> Columns {
+    // marker, symbol, space, value, space, unit
+    let base = 1 + SYMBOL + 1 + value + 1 + UNIT;
+    let mut c = Columns {
+        value,
+        name: None,
+        swing: None,
+        optimum: false,
+    };
+    let mut used = base;
+    if used + GAIN <= inner {
+        c.swing = Some(Sensitivity::Numbers);
+        used += GAIN;
+        if used + GAIN <= inner {
+            c.optimum = true;
+            used += GAIN;
+        }
+        if used + name < inner {
+            c.name = Some(name);
+        }
+    } else if used + COMPACT <= inner {
+        c.swing = Some(Sensitivity::Signs);
+    }
+    c
+}
+
+/// A gain in the pane's unit, to fit 6 cells: +4.01, -0.10, +12.3, +123.
+fn gain_text(value: f64) -> String {
+    let a = value.abs();
+    if a < 0.005 {
+        // A gain that rounds to nothing has no sign worth showing: μ's at
+        // the optimum is a few ulps either side of 0, and "-0.00" flips
+        // with any change of the numerics.
+        "+0.00".to_owned()
+    } else if a < 9.995 {
+        format!("{value:+.2}")
+    } else if a < 99.95 {
+        format!("{value:+.1}")
+    } else {
+        format!("{value:+.0}")
+    }
+}
+
+/// A gain as signs repeated by its share of the largest: "+++" to "+", "·"
+/// below a hundredth of it.
+fn gain_signs(value: f64, max: f64) -> String {
+    let share = value.abs() / max;
+    let count = [0.01, 0.1, 0.5].iter().filter(|t| share >= **t).count();
+    if count == 0 {
+        "·".to_owned()
+    } else {
+        let sign = if value >= 0.0 { "+" } else { "-" };
+        sign.repeat(count)
+    }
+}
+
+/// One sensitivity cell, `cells` wide: its text and style.
+fn gain_span(
+    app: &App,
+    cell: Option<GainCell>,
+    max: f64,
+    form: Sensitivity,
+    cells: usize,
+    fixed: bool,
+) -> Span<'static> {
+    let (text, style) = match cell {
+        None => (String::new(), app.theme.plain),
+        // At the optimum, the swing's own inputs change nothing.
+        Some(GainCell { value: None, .. }) if !fixed => ("—".to_owned(), app.theme.dim),
+        Some(GainCell { value: None, .. }) => ("0".to_owned(), app.theme.dim),
+        Some(GainCell {
+            value: Some(v),
+            generation,
+        }) => {
+            let v = app.distance(v).0;
+            let text = match form {
+                Sensitivity::Numbers => gain_text(v),
+                Sensitivity::Signs => gain_signs(v, max),
+            };
+            let style = if generation != app.generation {
+                app.theme.stale_gain
+            } else {
+                app.theme.gain(v, max)
+            };
+            (text, style)
+        }
+    };
+    Span::styled(format!(" {}", pad(&text, cells - 1, true)), style)
+}
+
+/// The largest |gain| of a kind, in the pane's unit (1 if none yet).
+fn largest(app: &App, gain: Gain) -> f64 {
+    let max = app
+        .gains(gain)
+        .iter()
+        .filter_map(|c| c.and_then(|c| c.value))
+        .map(|v| app.distance(v).0.abs())
+        .fold(0.0, f64::max);
+    if max > 0.0 { max } else { 1.0 }
+}
+
+/// The pane's title: "Inputs" at the left, the Δ columns' heads at the right
+/// above their columns (in the busy colour while any is being computed).
+fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
+    let left = Line::from(Span::styled(" Inputs ", app.theme.title));
+    let Some(form) = c.swing else {
+        return (left, None);
+    };
+    let unit = app.distance(1.0).1;
+    // Each head is right-aligned over its column; the border runs on to it.
+    let head = |text: String, gain: Gain, cells: usize| {
+        let busy = app.gains_done(gain) < app.gain_count();
+        let style = if busy { app.theme.busy } else { app.theme.dim };
+        let text = format!(" {text}");
+        [
+            Span::raw("─".repeat(cells.saturating_sub(width(&text)))),
+            Span::styled(text, style),
+        ]
+    };
+    let mut spans = Vec::from(head(
+        match form {
+            Sensitivity::Numbers => format!("Δ {unit}"),
+            Sensitivity::Signs => "Δ".to_owned(),
+        },
+        Gain::Swing,
+        match form {
+            Sensitivity::Numbers => GAIN - 1,
+            Sensitivity::Signs => COMPACT - 1,
+        },
+    ));
+    if c.optimum {
+        spans.extend(head("Δopt".to_owned(), Gain::Optimum, GAIN));
+    }
+    (left, Some(Line::from(spans).right_aligned()))
+}
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let inner_width = Block::bordered().inner(area).width as usize;
+    // The widest value and name of the numeric rows, as shown now.
+    let numeric = app.fields.iter().filter_map(|f| match f {
+        Field::Key(k) => Some(input_key(*k)),
+        _ => None,
+    });
+    let value_width = numeric
+        .clone()
+        .map(|key| width(&shown_value(key, (key.get)(&app.scene), app.units)))
+        .max()
+        .unwrap_or(0);
+    let name_width = numeric
+        .map(|key| width(key.name.split('.').nth(1).unwrap_or(key.name)))
+        .max()
+        .unwrap_or(0);
+    let mut c = columns(inner_width, value_width, name_width);
+    // A batted ball has no optimum, so no Δopt.
+    c.optimum &= app.is_swing();
+
+    let (left, right) = title(app, c);
+    let mut block = Block::bordered().title(left);
+    if let Some(right) = right {
+        block = block.title(right);
+    }
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let list = inputs_list(area);
+    let about = Rect::new(
+        inner.x,
+        list.bottom(),
+        inner.width,
+        inner.bottom() - list.bottom(),
+    );
+    let editing = match &app.mode {
+        Mode::Edit { text, error, .. } => Some((text, error)),
+        _ => None,
+    };
+    // Where the edit box goes: (offset from the list's left, width).
+    let mut edit_box = (0, 0);
+    let (max_swing, max_optimum) = (largest(app, Gain::Swing), largest(app, Gain::Optimum));
+
+    // Rows, with a header line before each group (as `layout` counts them,
+    // so that a click lands on the row drawn); remember the selected row.
+    let lines = app.input_lines();
+    let mut rows: Vec<Line> = Vec::new();
+    let mut selected_row = 0;
+    for (line, field) in lines.iter().enumerate() {
+        let Some(i) = *field else {
+            let group = lines[line + 1].map_or("", |i| app.fields[i].group());
+            rows.push(Line::styled(format!("─ {group}"), app.theme.dim));
+            continue;
+        };
+        let field = &app.fields[i];
+        let selected = i == app.selected;
+        if selected {
+            selected_row = rows.len();
+        }
+        let (symbol, name, value, unit) = match field {
+            Field::Preset => ("", "preset", escape_text(&app.preset_name), ""),
+            Field::Drag => ("C_D", "drag", app.scene.drag.name().to_owned(), ""),
+            Field::Lift => ("C_L", "lift", app.scene.lift.name().to_owned(), ""),
+            Field::Hand => ("", "hand", app.scene.bat.hand.name().to_owned(), ""),
+            Field::Key(k) => {
+                let key = input_key(*k);
+                let short = key.name.split('.').nth(1).unwrap_or(key.name);
+                (
+                    key.symbol,
+                    short,
+                    shown_value(key, (key.get)(&app.scene), app.units),
+                    key.unit_in(app.units).symbol,
+                )
+            }
+        };
+        let mut label = match c.name {
+            Some(n) => format!("{} {}", pad(symbol, SYMBOL, false), pad(name, n, false)),
+            // A row without a symbol (the preset) is named in its place.
+            None if symbol.is_empty() => pad(name, SYMBOL, false),
+            None => pad(symbol, SYMBOL, false),
+        };
+        let text = match field {
+            // A numeric value, right-aligned in its column, then the unit.
+            Field::Key(_) => format!(" {} {}", pad(&value, c.value, true), pad(unit, UNIT, false)),
+            // A name spans the value and unit columns, and further if long.
+            _ => format!(" {}", pad(&value, c.value + 1 + UNIT, true)),
+        };
+        if let (true, Some((typing, _))) = (selected, editing) {
+            // The box takes the value's place; the symbol (and the name)
+            // before it and the unit after it stay.
+            let at = 1 + width(&label) + 1;
+            let typed = width(&typing.lines().join("")) + 1;
+            let (room, unit_cells) = match field {
+                Field::Key(_) => (c.value.max(typed), 1 + UNIT),
+                _ => ((c.value + 1 + UNIT).max(typed), 0),
+            };
+            let room = room.min((list.width as usize).saturating_sub(at + unit_cells));
+            edit_box = (at, room);
+            label.push_str(&" ".repeat(1 + room));
+            if let Field::Key(_) = field {
+                label.push_str(&format!(" {}", pad(unit, UNIT, false)));
+            }
+        } else {
+            label.push_str(&text);
+        }
+        let marker = if selected { "▶" } else { " " };
+        let style = if selected {
+            app.theme.selected
+        } else {
+            app.theme.plain
+        };
+        let mut spans = vec![Span::raw(marker), Span::styled(label, style)];
+        let edited = selected && editing.is_some();
+        if let (Field::Key(k), Some(form), false) = (field, c.swing, edited) {
+            let cells = match form {
+                Sensitivity::Numbers => GAIN,
+                Sensitivity::Signs => COMPACT,
+            };
+            spans.push(gain_span(
+                app,
+                app.swing_gains[*k],
+                max_swing,
+                form,
+                cells,
+                false,
+            ));
+            if c.optimum {
+                spans.push(gain_span(
+                    app,
+                    app.optimum_gains[*k],
+                    max_optimum,
+                    Sensitivity::Numbers,
+                    GAIN,
+                    !sensitivity::moves_optimum(input_key(*k)),
+                ));
+            }
+        }
+        rows.push(Line::from(spans));
+    }
+
+    // Keep the selected row in view.
+    let offset = input_scroll(selected_row, rows.len(), list.height as usize);
+    frame.render_widget(Paragraph::new(rows).scroll((offset as u16, 0)), list);
+
+    if let Some((text, _)) = editing {
+        let row = list.y + (selected_row - offset) as u16;
+        if row < list.y + list.height {
+            let (at, cells) = edit_box;
+            let edit = Rect::new(list.x + at as u16, row, cells as u16, 1);
+            frame.render_widget(ratatui::widgets::Clear, edit);
+            frame.render_widget(text, edit);
+        }
+    }
+
+    let about_text = match editing {
+        Some((_, Some(error))) => Paragraph::new(Line::styled(error.as_str(), app.theme.error)),
+        Some((_, None)) => Paragraph::new(Line::styled(
+            edit_help(app, app.fields[app.selected]),
+            app.theme.dim,
+        )),
+        None if app.message.is_some() => {
+            let (message, error) = app.message.as_ref().expect("checked");
+            let style = if *error {
+                app.theme.error
+            } else {
+                app.theme.good
+            };
+            Paragraph::new(Line::styled(escape_text(message), style))
+        }
+        None => {
+            let text = match app.fields[app.selected] {
+                Field::Preset => format!(
+                    "{} — Enter or o: open a preset",
+                    escape_text(&app.description)
+                ),
+                Field::Drag => format!("model.drag (h l): {}", app.scene.drag.description()),
+                Field::Lift => format!("model.lift (h l): {}", app.scene.lift.description()),
+                Field::Hand => format!(
+                    "{HAND_KEY} (h l): {} batter, right or left",
+                    app.scene.bat.hand.description()
+                ),
+                Field::Key(k) => {
+                    let key = input_key(k);
+                    format!(
+                        "{}: {} {}, step {}",
+                        key.name,
+                        key.description,
+                        shown_bounds(key, app.units),
+                        shown_step(key, app.units)
+                    )
+                }
+            };
+            Paragraph::new(Line::styled(text, app.theme.dim))
+        }
+    };
+    frame.render_widget(about_text.wrap(Wrap { trim: true }), about);
+}
+
+/// What an edit takes, under its box: the key, its unit and its accepted
+/// range ("bat.speed in m/s, (0, 100]"), or a model's choices.
+fn edit_help(app: &App, field: Field) -> String {
+    let takes = match field {
+        Field::Key(k) => {
+            let key = input_key(k);
+            let range = shown_range(key, app.units);
+            match key.unit_in(app.units).symbol {
+                "" => format!("{}: {range}", key.name),
+                unit => format!("{} in {unit}, {range}", key.name),
+            }
+        }
+        Field::Drag => format!("model.drag: {}", names(&DragModel::ALL.map(|m| m.name()))),
+        Field::Lift => format!("model.lift: {}", names(&LiftModel::ALL.map(|m| m.name()))),
+        Field::Hand => format!("{HAND_KEY}: {}", names(&Hand::ALL.map(|h| h.name()))),
+        Field::Preset => String::new(),
+    };
+    format!("{takes} · Enter accepts · Esc cancels")
+}
+
+/// "a, b or c".
+fn names(all: &[&str]) -> String {
+    match all.split_last() {
+        Some((last, [])) => (*last).to_owned(),
+        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+        None => String::new(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn columns_give_way_in_order_and_never_cut_a_value() {
+        // 80×24: 28 cells inside; values up to 8 wide ("0.000015").
+        let narrow = columns(28, 8, 19);
+        assert_eq!(narrow.swing, Some(Sensitivity::Numbers));
+        assert!(!narrow.optimum && narrow.name.is_none());
+        // A 12-wide value (a derived ν) leaves room only for signs.
+        assert_eq!(columns(28, 12, 19).swing, Some(Sensitivity::Signs));
+        assert_eq!(columns(20, 12, 19).swing, None);
+        // 42 inside: both Δ columns, no names; 56: everything.
+        let wide = columns(42, 8, 19);
+        assert!(wide.optimum && wide.name.is_none());
+        assert_eq!(columns(56, 8, 19).name, Some(19));
+    }
+
+    #[test]
+    fn gains_fit_six_cells_and_signs_grade_by_share() {
+        for (v, text) in [
+            (4.0123, "+4.01"),
+            (-0.1, "-0.10"),
+            (12.34, "+12.3"),
+            (123.4, "+123"),
+            (-1234.0, "-1234"),
+            (-1e-15, "+0.00"),
+            (-0.004, "+0.00"),
+            (-0.006, "-0.01"),
+        ] {
+            assert_eq!(gain_text(v), text);
+        }
+        assert_eq!(gain_signs(2.0, 2.0), "+++");
+        assert_eq!(gain_signs(-0.5, 2.0), "--");
+        assert_eq!(gain_signs(0.1, 2.0), "+");
+        assert_eq!(gain_signs(0.001, 2.0), "·");
+    }
+}

@@ -1,0 +1,460 @@
+//! The numbers: launch state, flight summary, impact summary, and the
+//! optimum beside the current swing.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph};
+
+use crate::app::App;
+use analysis::figures::trimmed;
+use analysis::landing::fence_text;
+use analysis::optimum::Status;
+use model::atmosphere::Atmosphere;
+use model::impact::Regime;
+use model::launch::BattedBall;
+use units::{Quantity, UnitSystem};
+
+/// A launch as the readout writes it, in the units shown: "44.30 m/s
+/// 191.8 rad/s  26.38°" or "99.09 mph  1831 rpm  26.38°"; with `sign`, a
+/// difference of two ("+1.20 mph  +95 rpm  -0.50°").
+fn launch_text(app: &App, launch: &BattedBall, sign: bool) -> String {
+    let (speed, spin) = (app.unit(Quantity::Speed), app.unit(Quantity::Spin));
+    let spin_decimals = if app.units == UnitSystem::Si { 1 } else { 0 };
+    let (v, w) = (
+        speed.show_difference(launch.speed),
+        spin.show_difference(launch.spin),
+    );
+    let angle = launch.angle.to_degrees();
+    if sign {
+        format!(
+            "{v:+.2} {}  {w:+.spin_decimals$} {}  {angle:+.2}°",
+            speed.symbol, spin.symbol
+        )
+    } else {
+        format!(
+            "{v:.2} {}  {w:.spin_decimals$} {}  {angle:.2}°",
+            speed.symbol, spin.symbol
+        )
+    }
+}
+
+/// An angle in the units shown: "0.3791 rad" or "21.72°"; `sign` for a
+/// difference.
+fn angle_text(app: &App, radians: f64, sign: bool) -> String {
+    match (app.units, sign) {
+        (UnitSystem::Si, false) => format!("{radians:.4}"),
+        (UnitSystem::Si, true) => format!("{radians:+.4}"),
+        (UnitSystem::Imperial, false) => format!("{:.2}°", radians.to_degrees()),
+        (UnitSystem::Imperial, true) => format!("{:+.2}°", radians.to_degrees()),
+    }
+}
+
+/// An undercut in the units shown: "27.27 mm" or "1.074 in"; `sign` for a
+/// difference.
+fn undercut_text(app: &App, metres: f64, sign: bool) -> String {
+    let (value, unit, decimals) = match app.units {
+        UnitSystem::Si => (metres * 1e3, "mm", 2),
+        UnitSystem::Imperial => (app.unit(Quantity::Size).show(metres), "in", 3),
+    };
+    if sign {
+        format!("{value:+.decimals$} {unit}")
+    } else {
+        format!("{value:.decimals$} {unit}")
+    }
+}
+
+/// The air in force: "ρ 1.194 kg/m³  ν 1.51e-5 m²/s" and where it comes
+/// from, "from 21 °C, 5 m, 1013 hPa, 50 %" (in baseball units "from 70 °F,
+/// 16 ft, 29.92 inHg, 50 %") or "(given)".
+fn air(app: &App) -> (String, String) {
+    let air = app.scene.environment.air();
+    let values = format!(
+        "ρ {:.3} kg/m³  ν {:.3e} m²/s",
+        air.density, air.kinematic_viscosity
+    );
+    // In a park's own air (key `a`), whose: "COL's standard air at
+    // 1579.8 m", while it is that (a weather typed since reads as any).
+    let park = app.chosen_park().filter(|_| app.in_park_air());
+    if let (Some(park), Some(a)) = (park, air.atmosphere)
+        && a == (Atmosphere {
+            elevation: park.elevation,
+            ..Atmosphere::STANDARD
+        })
+    {
+        let elevation = match app.units {
+            UnitSystem::Si => format!("{} m", trimmed(a.elevation)),
+            UnitSystem::Imperial => format!("{:.0} ft", app.distance(a.elevation).0),
+        };
+        let code = preset::escape_cut(&park.code, 8);
+        return (values, format!("{code}'s standard air at {elevation}"));
+    }
+    let source = match air.atmosphere {
+        Some(a) if app.units == UnitSystem::Imperial => {
+            let unit = |q: Quantity| app.unit(q);
+            format!(
+                "from {} °F, {:.0} ft, {:.2} inHg, {} %",
+                trimmed((unit(Quantity::Temperature).show(a.temperature) * 10.0).round() / 10.0),
+                unit(Quantity::Distance).show(a.elevation),
+                unit(Quantity::Pressure).show(a.pressure),
+                trimmed(a.humidity)
+            )
+        }
+        Some(a) => format!(
+            "from {} °C, {} m, {} hPa, {} %",
+            trimmed(a.temperature),
+            trimmed(a.elevation),
+            trimmed(a.pressure),
+            trimmed(a.humidity)
+        ),
+        None => "(given)".to_owned(),
+    };
+    (values, source)
+}
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let flight = &app.flown.flight;
+    let u = app.distance(1.0).1;
+    let d = |metres: f64| app.distance(metres).0;
+    let speed = app.unit(Quantity::Speed);
+    let label = |s: &'static str| Span::styled(format!("{s:<9}"), app.theme.dim);
+    let mut lines = vec![
+        Line::from(vec![
+            label("launch"),
+            Span::raw(launch_text(app, &app.flown.launch, false)),
+        ]),
+        Line::from(vec![
+            label("flight"),
+            // A ball that does not land has no range: where it is instead
+            // (the end of the drawn path).
+            if flight.landed {
+                Span::raw(format!(
+                    "range {:.2} {u}  {:.2} s  apex {:.1} {u}",
+                    d(flight.range),
+                    flight.flight_time,
+                    d(flight.apex)
+                ))
+            } else {
+                Span::styled(
+                    format!(
+                        "did not land in {:.0} s ({:.0} {u} up)",
+                        flight.flight_time,
+                        d(app.path.last().map_or(0.0, |p| p.1))
+                    ),
+                    app.theme.busy,
+                )
+            },
+        ]),
+    ];
+    // A swing's impact (a batted ball has none).
+    if let Some(impact) = &app.flown.impact {
+        lines.push(Line::from(vec![
+            label("impact"),
+            Span::raw(format!(
+                "e* {:.4}  {}  θ {}{}",
+                impact.restitution(),
+                match impact.regime() {
+                    Regime::Stick => "stick",
+                    Regime::Slip => "slip",
+                },
+                angle_text(app, impact.normal_angle(), false),
+                if app.units == UnitSystem::Si {
+                    " rad"
+                } else {
+                    ""
+                }
+            )),
+        ]));
+        lines.push(Line::from(vec![
+            label("impulse"),
+            Span::raw(format!(
+                "p_s {} p_c {:.3} p_f {:.3} N·s",
+                impact
+                    .stick_impulse()
+                    .map_or("—".to_owned(), |p| format!("{p:.3}")),
+                impact.compression_impulse(),
+                impact.separation_impulse()
+            )),
+        ]));
+    }
+    let inner = Block::bordered().inner(area);
+    // Air derived from the weather is worth a line even on a small screen,
+    // where it takes the impulses' (tab 3 shows them); given air, the
+    // paper's, is shown only with room to spare (below).
+    let (air_values, air_source) = air(app);
+    let derived = app.scene.environment.atmosphere().is_some();
+    let air_lines = |width: u16| -> Vec<Line<'static>> {
+        let one = format!("{air_values}  {air_source}");
+        if 9 + Span::raw(one.as_str()).width() <= width as usize {
+            vec![Line::from(vec![label("air"), Span::raw(one)])]
+        } else {
+            vec![
+                Line::from(vec![label("air"), Span::raw(air_values.clone())]),
+                Line::from(vec![label(""), Span::raw(air_source.clone())]),
+            ]
+        }
+    };
+    if derived {
+        let extra = air_lines(inner.width);
+        if (inner.height as usize) < lines.len() + 3 + extra.len() && lines.len() > 3 {
+            lines.remove(3);
+        }
+        for (k, line) in extra.into_iter().enumerate() {
+            lines.insert(2 + k, line);
+        }
+    }
+    // The pinned scene: now − pin under the launch and the flight. When the
+    // pane is short, the deltas take the impact's two lines (tab 3 shows it).
+    if let Some(pin) = &app.pin {
+        let (now, was, was_flight) = (&app.flown.launch, &pin.flown.launch, &pin.flown.flight);
+        let pinned = |text: String| {
+            Line::from(vec![
+                label(" now−pin"),
+                Span::styled(text, app.theme.pinned),
+            ])
+        };
+        let difference = BattedBall {
+            speed: now.speed - was.speed,
+            angle: now.angle - was.angle,
+            spin: now.spin - was.spin,
+            direction: now.direction - was.direction,
+            sidespin: now.sidespin - was.sidespin,
+        };
+        let launch = pinned(launch_text(app, &difference, true));
+        let range = if flight.landed && was_flight.landed {
+            format!("{:+.2} {u}", d(flight.range - was_flight.range))
+        } else {
+            "— (not both land)".to_owned()
+        };
+        let flight = pinned(format!(
+            "range {range}  apex {:+.1} {u}",
+            d(flight.apex - was_flight.apex)
+        ));
+        let short = (inner.height as usize) < lines.len() + 5;
+        if short {
+            lines.retain(|l| {
+                !l.spans
+                    .first()
+                    .is_some_and(|s| ["impact", "impulse"].contains(&s.content.trim()))
+            });
+        }
+        lines.insert(2, flight);
+        lines.insert(1, launch);
+    }
+    let (e, psi) = (app.scene.bat.undercut, app.scene.bat.swing_angle);
+    match app.optimum {
+        // A batted ball has no swing to optimise.
+        _ if !app.is_swing() => {}
+        // Nothing that lands yet: no range to show.
+        Some(o) if !o.best.range.is_finite() => lines.push(Line::from(vec![
+            label("optimum"),
+            if o.done {
+                let why = match o.status {
+                    Status::NothingLands => "no swing of 64 over the window lands",
+                    _ => "no swing tried lands (stopped at a limit)",
+                };
+                Span::styled(format!("none: {why}"), app.theme.error)
+            } else {
+                Span::styled("searching… no swing lands yet", app.theme.busy)
+            },
+        ])),
+        Some(o) => {
+            let style = if o.done {
+                app.theme.good
+            } else {
+                app.theme.busy
+            };
+            let mut state = match (o.done, o.status) {
+                (false, _) => " (searching)",
+                (true, Status::OutOfWork) => " (work limit)",
+                (true, Status::OutOfEvaluations) => " (eval. limit)",
+                (true, _) => "",
+            }
+            .to_owned();
+            // A hovering ball's best lands just before the flight's time
+            // limit: the limit, not the swing, sets that range.
+            if o.best.at_time_limit {
+                state.push_str(" (time limit)");
+            }
+            // Its best grazes the ground at the optimiser's precision only.
+            if !o.lands_at_readout {
+                state.push_str(" (readout: does not land)");
+            }
+            let optimum = format!(
+                "E {}  ψ {}  {:.2} {u}",
+                undercut_text(app, o.best.undercut, false),
+                angle_text(app, o.best.swing_angle, false),
+                d(o.best.range)
+            );
+            // Tags that do not fit take a line of their own (at 80×24 the
+            // impulses', which tab 3 shows), rather than wrap mid-tag.
+            if 9 + Span::raw(format!("{optimum}{state}")).width() <= inner.width as usize {
+                lines.push(Line::from(vec![
+                    label("optimum"),
+                    Span::styled(optimum + &state, style),
+                ]));
+            } else {
+                lines.push(Line::from(vec![
+                    label("optimum"),
+                    Span::styled(optimum, style),
+                ]));
+                lines.push(Line::from(vec![
+                    label(""),
+                    Span::styled(state.trim().to_owned(), style),
+                ]));
+                // Still to come: you − opt and the fence.
+                if (inner.height as usize) < lines.len() + 2 {
+                    lines.retain(|l| {
+                        l.spans
+                            .first()
+                            .is_none_or(|s| s.content.trim() != "impulse")
+                    });
+                }
+            }
+            let range = if flight.landed {
+                format!("{:+.2} {u}", d(flight.range - o.best.range))
+            } else {
+                "—".to_owned()
+            };
+            lines.push(Line::from(vec![
+                label("you −opt"),
+                Span::raw(format!(
+                    "ΔE {}  Δψ {}  {range}",
+                    undercut_text(app, e - o.best.undercut, true),
+                    angle_text(app, psi - o.best.swing_angle, true),
+                )),
+            ]));
+        }
+        None => lines.push(Line::from(vec![
+            label("optimum"),
+            Span::styled("searching…", app.theme.busy),
+        ])),
+    }
+    let landing = Line::from(vec![
+        label("landing"),
+        Span::raw(format!(
+            "{:.2} {} at {:.1}° below level",
+            speed.show(flight.landing_speed),
+            speed.symbol,
+            flight.landing_angle.to_degrees()
+        )),
+    ]);
+    // A batted ball's readout has room for its landing: no impact, no optimum.
+    let batted = !app.is_swing();
+    if batted && flight.landed {
+        lines.push(landing.clone());
+    }
+    if let Some(fence) = app.fence.filter(|_| app.park.is_none()) {
+        // Whether it clears, in the command line's words.
+        let unit = app.unit(Quantity::Distance);
+        let text = fence_text(fence.distance, fence.height, app.fence_height, unit);
+        lines.push(Line::from(vec![label("fence"), Span::raw(text)]));
+    }
+    if let Some(at) = &app.at_parks {
+        lines.push(Line::from(vec![
+            label("parks"),
+            Span::raw(parks_text(app, at)),
+        ]));
+    }
+    // With a park chosen its verdict is the point: where the pane is too
+    // short for it in its place (80×24 with derived air), it comes right
+    // after the flight (the impact and the rest are on their tabs).
+    let rows = inner.height as usize;
+    if app.park.is_some()
+        && lines.len() > rows
+        && rows > 3
+        && let Some(k) = labelled(&lines, "parks")
+    {
+        let verdict = lines.remove(k);
+        let after_flight = labelled(&lines, "flight").map_or(0, |f| f + 1);
+        lines.insert(after_flight, verdict);
+    }
+    // A batted ball's readout has room for the given air too, and for the
+    // models in force (Nathan's unless chosen: not the swing's).
+    if batted && !derived {
+        lines.extend(air_lines(inner.width));
+    }
+    if batted {
+        lines.push(Line::from(vec![
+            label("model"),
+            Span::raw(app.scene.models_text()),
+        ]));
+    }
+    // Room to spare (the large layouts): the rest of the story.
+    if area.height as usize >= lines.len() + 6 {
+        if !derived && !batted {
+            lines.extend(air_lines(inner.width));
+        }
+        if flight.landed && !batted {
+            lines.push(landing);
+        }
+        if let Some(impact) = &app.flown.impact {
+            lines.push(Line::from(vec![
+                label("pitch"),
+                Span::raw(format!(
+                    "{:.1} {}, descending {:.2}°",
+                    speed.show(app.scene.pitch.speed),
+                    speed.symbol,
+                    impact.descent_angle().to_degrees()
+                )),
+            ]));
+        }
+        if !batted {
+            lines.push(Line::from(vec![
+                label("model"),
+                Span::raw(app.scene.models_text()),
+            ]));
+        }
+        lines.push(Line::from(vec![
+            label("drag"),
+            Span::raw(app.scene.drag.description()),
+        ]));
+        lines.push(Line::from(vec![
+            label("lift"),
+            Span::raw(app.scene.lift.description()),
+        ]));
+        if app.scene.spin_decay > 0.0 {
+            lines.push(Line::from(vec![
+                label("spin"),
+                Span::raw(format!(
+                    "decays as e^(−t/{} s)",
+                    trimmed(app.scene.spin_decay)
+                )),
+            ]));
+        }
+    }
+    let block = Block::bordered().title(Span::styled(" Readout ", app.theme.title));
+    // Long lines (a model's description) wrap rather than run off the pane.
+    frame.render_widget(
+        Paragraph::new(lines)
+            .block(block)
+            .wrap(ratatui::widgets::Wrap { trim: false }),
+        area,
+    );
+}
+
+/// Where the line labelled `name` is among `lines`.
+fn labelled(lines: &[Line], name: &str) -> Option<usize> {
+    lines
+        .iter()
+        .position(|l| l.spans.first().is_some_and(|s| s.content.trim() == name))
+}
+
+/// "clears 26 of 30 parks", or with a park chosen "BOS clears by 8.6 m;
+/// 26/30 parks" (off the wall by, short by, foul), in the units shown.
+fn parks_text(app: &App, at: &crate::app::AtParks) -> String {
+    use model::clearing::Outcome;
+    let (Some(park), Some(here)) = (app.chosen_park(), at.here) else {
+        return format!("clears {} of {} parks", at.cleared, at.of);
+    };
+    let code = preset::escape_cut(&park.code, 8);
+    let unit = app.unit(Quantity::Distance);
+    let by = |m: f64| format!("{:.1} {}", unit.show_difference(m.abs()), unit.symbol);
+    let verdict = match (here.outcome, here.margin) {
+        (Outcome::Clears, Some(m)) => format!("clears by {}", by(m)),
+        (Outcome::OffTheWall, Some(m)) => format!("off the wall by {}", by(m)),
+        (Outcome::Short, Some(m)) => format!("short by {}", by(m)),
+        (outcome, _) => outcome.name().to_owned(),
+    };
+    format!("{code} {verdict}; {}/{} parks", at.cleared, at.of)
+}

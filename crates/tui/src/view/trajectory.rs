@@ -1,0 +1,128 @@
+//! The batted flight in braille: the current swing, the optimal swing, the
+//! pinned scene, the apex, the landing point and the fence, with axes in
+//! the units shown (m or ft).
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::Block;
+
+use super::chart::{self, AxisSpec, Ticks};
+use crate::app::App;
+use crate::layout::CELL_ASPECT;
+use picture::MAX_STRETCH;
+
+pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let flight = &app.flown.flight;
+    let (k, unit) = app.distance(1.0);
+    let scaled = |path: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        path.iter().map(|&(x, y)| (k * x, k * y)).collect()
+    };
+    let (path, optimal_path) = (scaled(&app.path), scaled(&app.optimal_path));
+    let pinned_path = app.pin.as_ref().map_or(Vec::new(), |p| scaled(&p.path));
+    let (pin_range, pin_apex) = app
+        .pin
+        .as_ref()
+        .map_or((0.0, 0.0), |p| (p.flown.flight.range, p.flown.flight.apex));
+    let optimal_range = app.optimum.filter(|o| o.done).map_or(0.0, |o| o.best.range);
+    let optimal_apex = app.optimal_path.iter().map(|p| p.1).fold(0.0, f64::max);
+    let fence = app
+        .side_fence()
+        .map_or((0.0, 0.0), |(distance, height)| (k * distance, k * height));
+    // The x axis reaches past the farthest landing and the fence; a ball
+    // carried back over the plate (a steep launch with backspin) lands
+    // behind it, and the axis then starts behind the plate too.
+    let x_most = 1.03 * (k * flight.range.max(optimal_range).max(pin_range)).max(fence.0);
+    let x_least = path
+        .iter()
+        .chain(&optimal_path)
+        .chain(&pinned_path)
+        .map(|p| p.0)
+        .fold(0.0, f64::min);
+    let y_most = 1.1 * (k * flight.apex.max(optimal_apex).max(pin_apex)).max(fence.1);
+    let apex = [(k * flight.apex_distance, k * flight.apex)];
+    // A ball that does not land has no landing point (nor range).
+    let landing = if flight.landed {
+        vec![(k * flight.range, 0.0)]
+    } else {
+        Vec::new()
+    };
+    let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
+    // Each path's marker and legend glyph: told apart by colour, or by
+    // glyph where there is none.
+    let (now, best, pin) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
+    let mut datasets = Vec::new();
+    if !optimal_path.is_empty() {
+        datasets.push(chart::curve(best.0, app.theme.optimal, &optimal_path).name("optimal"));
+    }
+    if !pinned_path.is_empty() {
+        datasets.push(chart::curve(pin.0, app.theme.pinned, &pinned_path).name("pinned"));
+    }
+    datasets.push(chart::curve(now.0, app.theme.swing, &path).name("this swing"));
+    datasets.push(chart::points(Marker::Dot, app.theme.apex, &apex).name("apex"));
+    datasets.push(chart::points(Marker::Block, app.theme.landing, &landing).name("landing"));
+    if app.side_fence().is_some() {
+        datasets.push(chart::line(app.theme.fence, &fence_line).name("fence"));
+    }
+    // The legend sits in the border, where it hides no data.
+    let mut legend = vec![Span::styled(format!("{} now ", now.1), app.theme.swing)];
+    if !optimal_path.is_empty() {
+        legend.push(Span::styled(format!("{} best ", best.1), app.theme.optimal));
+    }
+    if !pinned_path.is_empty() {
+        legend.push(Span::styled(format!("{} pin ", pin.1), app.theme.pinned));
+    }
+    let legend = Line::from(legend);
+    let numbers = if flight.landed {
+        format!(
+            "{:.1} {unit}, apex {:.1} {unit} ",
+            k * flight.range,
+            k * flight.apex
+        )
+    } else {
+        format!("does not land, apex {:.1} {unit} ", k * flight.apex)
+    };
+    // The title gives up its first word before it would run into the legend.
+    let title = format!(" Trajectory {numbers}");
+    let room = area.width.saturating_sub(2) as usize;
+    let title = if title.chars().count() + legend.width() <= room {
+        title
+    } else {
+        format!(" {numbers}")
+    };
+    let block = Block::bordered()
+        .title(Span::styled(title, app.theme.title))
+        .title_top(legend.right_aligned());
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    // Round ticks, as many as the pane has room for; the height drawn at
+    // most MAX_STRETCH times taller than true, as the SVG draws it (the y
+    // labels' width sets the graph's, and a taller axis may widen them).
+    let rows = inner.height.saturating_sub(2);
+    let x = Ticks::across(x_least, x_most, inner.width.saturating_sub(6));
+    let mut y = Ticks::up(0.0, y_most, rows);
+    for _ in 0..2 {
+        let least = true_height(inner, &x, &y) / MAX_STRETCH;
+        y = Ticks::up(0.0, y_most.max(least), rows);
+    }
+    chart::draw(
+        frame,
+        inner,
+        datasets,
+        (
+            &AxisSpec::new(format!("x ({unit})"), x),
+            &AxisSpec::new(format!("y ({unit})"), y),
+        ),
+        app.theme.dim,
+    );
+}
+
+/// The y span that draws heights true to scale against `x` in the graph a
+/// chart in `inner` gets with `y`'s labels: a cell is [`CELL_ASPECT`]
+/// times as tall as it is wide.
+fn true_height(inner: Rect, x: &Ticks, y: &Ticks) -> f64 {
+    let label = y.labels().iter().map(|l| l.len()).max().unwrap_or(1) as u16;
+    let graph = chart::graph_area(inner, label, 1, true);
+    CELL_ASPECT * f64::from(graph.height) * (x.hi - x.lo) / f64::from(graph.width.max(1))
+}

@@ -1,0 +1,574 @@
+//! The batted-ball scene and `homerun fly` (with `--batch`): a batted ball
+//! at a swing's launch flies as the swing does, the vacuum limit is the
+//! closed form, the launch keys are bounded, and a batch keeps its order,
+//! names its bad rows and converts Statcast's units.
+
+use crate::common;
+use std::f64::consts::{FRAC_PI_2, TAU};
+use std::path::Path;
+
+use assert_cmd::Command;
+use homerun::analysis::precision::Purpose;
+use homerun::model::aero::{DragModel, LiftModel};
+use homerun::model::launch::{self, BattedBall, SceneKind};
+use homerun::preset::{Preset, Source};
+use homerun::{Scene, model};
+use serde_json::Value;
+
+fn homerun(presets: &Path) -> Command {
+    let mut command = common::assert_command();
+    command.arg("--presets-dir").arg(presets);
+    command
+}
+
+fn relative(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+#[test]
+fn a_batted_ball_at_the_fastballs_launch_flies_as_the_fastball() {
+    let swing_scene = Scene::default();
+    let swing = model::simulate(&swing_scene, Purpose::Readout);
+    let mut batted_scene = swing_scene.with_launch(BattedBall::of(&swing.impact));
+    assert_eq!(batted_scene.kind, SceneKind::BattedBall);
+    // A batted ball flies Nathan's aero unless the models are chosen: the
+    // paper's, to compare with the swing.
+    assert_eq!(
+        (batted_scene.drag, batted_scene.lift),
+        (DragModel::Nathan, LiftModel::Nathan)
+    );
+    batted_scene.choose_drag(DragModel::Sawicki2003);
+    batted_scene.choose_lift(LiftModel::Sawicki2003);
+    let batted = launch::fly_scene(&batted_scene, Purpose::Readout);
+    assert!(batted.impact.is_none());
+    // Table II's fastball: 134.70 m.
+    assert!((swing.flight.range - 134.699).abs() < 1e-3);
+    for (a, b) in [
+        (batted.flight.range, swing.flight.range),
+        (batted.flight.flight_time, swing.flight.flight_time),
+        (batted.flight.apex, swing.flight.apex),
+        (batted.flight.landing_speed, swing.flight.landing_speed),
+    ] {
+        assert!(relative(a, b) < 1e-12, "{a} vs {b}");
+    }
+    // And a swing scene through fly_scene is simulate itself.
+    let flown = launch::fly_scene(&swing_scene, Purpose::Readout);
+    assert_eq!(flown.flight, swing.flight);
+    assert_eq!(flown.launch, BattedBall::of(&swing.impact));
+}
+
+#[test]
+fn without_air_and_lift_the_flight_is_the_vacuum_parabola() {
+    let mut scene = Scene::default();
+    let mut batch = model::keys::InputBatch::new();
+    for (key, value) in [
+        ("model.lift", "none"),
+        ("environment.air_density", "0"),
+        ("launch.speed", "40"),
+        ("launch.angle", "0.6"),
+        ("launch.spin", "300"),
+    ] {
+        batch.set_text(&mut scene, key, value).unwrap();
+    }
+    scene.validate().unwrap();
+    let (v, angle, g, h) = (40.0_f64, 0.6_f64, 9.81, 1.0);
+    let (vx, vy) = (v * angle.cos(), v * angle.sin());
+    let time = (vy + (vy * vy + 2.0 * g * h).sqrt()) / g;
+    let flight = launch::fly_scene(&scene, Purpose::Readout).flight;
+    assert!(flight.landed);
+    assert!(relative(flight.flight_time, time) < 1e-9, "{flight:?}");
+    assert!(relative(flight.range, vx * time) < 1e-9, "{flight:?}");
+    assert!(
+        relative(flight.apex, h + vy * vy / (2.0 * g)) < 1e-9,
+        "{flight:?}"
+    );
+}
+
+#[test]
+fn missing_launch_keys_come_from_the_swing_in_any_order() {
+    let mut a = Scene::default();
+    a.set("launch.angle", 0.5).unwrap();
+    a.set("bat.speed", 32.0).unwrap();
+    let mut b = Scene::default();
+    b.set("bat.speed", 32.0).unwrap();
+    b.set("launch.angle", 0.5).unwrap();
+    assert_eq!(a, b);
+    let swing = model::simulate(
+        &Scene::default().with_swing(0.0265, 0.1594),
+        Purpose::Readout,
+    );
+    let mut c = Scene::default();
+    c.set("launch.angle", 0.5).unwrap();
+    let launch = c.batted_ball();
+    assert_eq!(launch.speed, swing.impact.launch_speed());
+    assert_eq!(launch.spin, swing.impact.launch_spin());
+    assert_eq!(launch.angle, 0.5);
+}
+
+#[test]
+fn a_batted_ball_preset_round_trips_through_its_toml() {
+    let preset = homerun::preset::load("fly-ball", None).unwrap();
+    assert_eq!(preset.scene.kind, SceneKind::BattedBall);
+    let launch = preset.scene.batted_ball();
+    // 103 mph, 28°, 2500 rpm.
+    assert!((launch.speed - 103.0 * 0.44704).abs() < 1e-12);
+    assert!((launch.angle - 28f64.to_radians()).abs() < 1e-14);
+    assert!((launch.spin - 2500.0 * TAU / 60.0).abs() < 1e-11);
+    let again = Preset::parse(&preset.to_toml(), "again", "again.toml", Source::Bundled).unwrap();
+    assert_eq!(again.scene, preset.scene);
+    // A swing writes no [launch] and stays a swing.
+    let fastball = homerun::preset::load("fastball", None).unwrap();
+    let text = fastball.to_toml();
+    assert!(!text.contains("[launch]"), "{text}");
+    let again = Preset::parse(&text, "f", "f.toml", Source::Bundled).unwrap();
+    assert_eq!(again.scene.kind, SceneKind::Swing);
+    // One launch key given: only it is written, the rest still follow the swing.
+    let mut one = fastball.clone();
+    one.scene.set("launch.angle", 0.5).unwrap();
+    let again = Preset::parse(&one.to_toml(), "o", "o.toml", Source::Bundled).unwrap();
+    assert_eq!(again.scene, one.scene);
+    assert_eq!(again.scene.launch.speed, None);
+}
+
+#[test]
+fn fly_json_has_every_field_finite() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = homerun(dir.path())
+        .args(["fly", "--preset", "fly-ball", "--json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{out:?}");
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    for path in [
+        "launch.speed",
+        "launch.angle",
+        "launch.spin",
+        "flight.range",
+        "flight.flight_time",
+        "flight.apex",
+        "flight.landing_speed",
+        "flight.landing_angle",
+        "environment.air_density",
+        "environment.kinematic_viscosity",
+    ] {
+        let (head, tail) = path.split_once('.').unwrap();
+        let x = v[head][tail]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{path}: {v}"));
+        assert!(x.is_finite(), "{path}: {v}");
+    }
+    assert_eq!(v["flight"]["landed"], true);
+    assert_eq!(v["scene"], "batted_ball");
+    assert_eq!(v["launch"]["speed"], 46.04512);
+    assert_eq!(v["environment"]["air_density"], 1.23);
+    // The weather's ρ and ν reach the JSON, here and in hit's.
+    for command in ["fly", "hit"] {
+        let out = homerun(dir.path())
+            .args([command, "--json", "--set", "environment.elevation=1580"])
+            .output()
+            .unwrap();
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        let rho = v["environment"]["air_density"].as_f64().unwrap();
+        assert!(rho > 1.0 && rho < 1.05, "{command}: {v}");
+        assert_eq!(v["environment"]["atmosphere"]["elevation"], 1580.0);
+    }
+}
+
+#[test]
+fn fly_on_the_fastball_at_another_angle_keeps_its_launch_speed_and_spin() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| -> Value {
+        let out = homerun(dir.path()).args(args).output().unwrap();
+        assert!(out.status.success(), "{out:?}");
+        serde_json::from_slice(&out.stdout).unwrap()
+    };
+    let hit = run(&["hit", "--json"]);
+    let fly = run(&["fly", "--set", "launch.angle=0.5", "--json"]);
+    assert_eq!(fly["launch"]["speed"], hit["impact"]["launch_speed"]);
+    assert_eq!(fly["launch"]["spin"], hit["impact"]["launch_spin"]);
+    assert_eq!(fly["launch"]["angle"], 0.5);
+    // Without launch keys, fly flies the swing: hit's flight.
+    let own = run(&["fly", "--json"]);
+    assert_eq!(own["flight"]["range"], hit["flight"]["range"]);
+    assert_eq!(own["scene"], "swing");
+}
+
+#[test]
+fn launch_keys_out_of_range_are_refused_with_their_range() {
+    let dir = tempfile::tempdir().unwrap();
+    let half_pi = FRAC_PI_2.to_string();
+    let minus_half_pi = format!("-{half_pi}");
+    for (set, message) in [
+        (
+            "launch.speed=0",
+            "launch.speed = 0: must be a finite number in (0, 100] m/s",
+        ),
+        (
+            "launch.speed=-5",
+            "launch.speed = -5: must be a finite number in (0, 100] m/s",
+        ),
+        (
+            &format!("launch.angle={half_pi}")[..],
+            "must be a finite number in (-π/2, π/2) rad",
+        ),
+        (
+            &format!("launch.angle={minus_half_pi}")[..],
+            "must be a finite number in (-π/2, π/2) rad",
+        ),
+        (
+            "launch.spin=2000",
+            "launch.spin = 2000: must be a finite number in [-1000, 1000] rad/s",
+        ),
+    ] {
+        let out = homerun(dir.path())
+            .args(["fly", "--set", set])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{set}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(err.contains(message), "{set}: {err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+    // A batted ball has no swing: hit refuses it, naming fly.
+    let out = homerun(dir.path())
+        .args(["hit", "--preset", "fly-ball"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("homerun fly"), "{err}");
+}
+
+/// `fly --batch` on `input` (through stdin), with extra arguments.
+fn batch(dir: &Path, input: &str, args: &[&str]) -> (Option<i32>, String, String) {
+    let out = homerun(dir)
+        .args(["fly", "--batch", "-"])
+        .args(args)
+        .write_stdin(input)
+        .output()
+        .unwrap();
+    (
+        out.status.code(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+#[test]
+fn a_batch_keeps_the_input_order_across_chunks() {
+    let dir = tempfile::tempdir().unwrap();
+    // 9000 rows: two rounds of reading, 36 pieces flown in parallel.
+    let mut input = String::from("launch.speed,launch.angle,launch.spin\n");
+    for i in 0..9000 {
+        input += &format!("{},0.5,200\n", 20.0 + f64::from(i) * 0.003);
+    }
+    let (status, out, err) = batch(dir.path(), &input, &[]);
+    assert_eq!(status, Some(0), "{err}");
+    let rows: Vec<&str> = out.lines().collect();
+    assert_eq!(
+        rows[0],
+        "line,launch.speed,launch.angle,launch.spin,launch.direction,launch.sidespin,range,direction,flight_time,apex,landing_angle,landed,clears_fence,park,outcome,margin,parks_cleared,spin_estimated"
+    );
+    assert_eq!(rows.len(), 9001);
+    let mut last_range = 0.0;
+    for (i, row) in rows[1..].iter().enumerate() {
+        let cells: Vec<&str> = row.split(',').collect();
+        assert_eq!(cells[0], (i + 2).to_string());
+        assert_eq!(cells[1], format!("{:.4}", 20.0 + i as f64 * 0.003));
+        // Faster launches carry farther at these speeds.
+        let range: f64 = cells[6].parse().unwrap();
+        assert!(range > last_range, "{row}");
+        last_range = range;
+    }
+}
+
+#[test]
+fn fly_and_the_same_launch_in_a_batch_print_the_same_numbers() {
+    // Batch rows fly looser and are flown again where a printed digit is
+    // in doubt (src/cli/batch/tests.rs tries thousands, hundreds of them on
+    // rounding boundaries); here the two commands themselves.
+    let dir = tempfile::tempdir().unwrap();
+    let keys = ["speed", "angle", "spin", "direction", "sidespin"];
+    let launches = [
+        [44.7, 0.47, 250.0, 0.0, 0.0],
+        [38.2, 0.91, 120.0, -0.3, 80.0],
+        [46.1, 0.33, 190.0, 0.52, -120.0],
+        [30.0, -0.2, 50.0, 0.1, 10.0],
+        [49.0, 0.6, 160.0, -0.2, 0.0],
+    ];
+    let mut input = keys.map(|k| format!("launch.{k}")).join(",") + "\n";
+    for launch in &launches {
+        input += &(launch.map(|v| v.to_string()).join(",") + "\n");
+    }
+    let (status, out, err) = batch(dir.path(), &input, &["--preset", "fly-ball"]);
+    assert_eq!(status, Some(0), "{err}");
+    for (launch, row) in launches.iter().zip(out.lines().skip(1)) {
+        let sets: Vec<String> = keys
+            .iter()
+            .zip(launch)
+            .flat_map(|(k, v)| ["--set".to_owned(), format!("launch.{k}={v}")])
+            .collect();
+        let fly = homerun(dir.path())
+            .args(["fly", "--preset", "fly-ball", "--json"])
+            .args(&sets)
+            .output()
+            .unwrap();
+        let fly: Value = serde_json::from_slice(&fly.stdout).unwrap();
+        let number = |v: &Value, decimals: usize| format!("{:.decimals$}", v.as_f64().unwrap());
+        let flight = &fly["flight"];
+        let cells: Vec<&str> = row.split(',').collect();
+        let want = [
+            (6, number(&flight["range"], 3)),
+            (7, number(&flight["direction"], 6)),
+            (8, number(&flight["flight_time"], 3)),
+            (9, number(&flight["apex"], 3)),
+            (10, number(&flight["landing_angle"], 4)),
+            (14, fly["fence"]["outcome"].as_str().unwrap().to_owned()),
+            (15, number(&fly["fence"]["margin"], 3)),
+            (16, fly["parks"]["cleared"].to_string()),
+        ];
+        for (column, text) in want {
+            assert_eq!(cells[column], text, "column {column} of {row}");
+        }
+    }
+}
+
+#[test]
+fn a_bad_row_is_named_by_its_line_and_skipped_with_status_1() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = "launch.speed,launch.angle,launch.spin\n\
+                 40,0.5,200\n\
+                 -3,0.5,200\n\
+                 45,abc,100\n\
+                 \n\
+                 41,0.5\n\
+                 42,0.5,200\n";
+    let (status, out, err) = batch(dir.path(), input, &["--json"]);
+    assert_eq!(status, Some(1), "{err}");
+    let lines: Vec<Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    let numbers: Vec<u64> = lines.iter().map(|v| v["line"].as_u64().unwrap()).collect();
+    assert_eq!(numbers, [2, 7]);
+    assert_eq!(lines[1]["launch"]["speed"], 42.0);
+    assert!(lines[1]["flight"]["range"].as_f64().unwrap() > 100.0);
+    assert!(
+        err.contains("line 3: launch.speed = -3: must be a finite number in (0, 100] m/s; skipped"),
+        "{err}"
+    );
+    assert!(
+        err.contains("line 4: launch.angle = \"abc\": not a number"),
+        "{err}"
+    );
+    assert!(
+        err.contains("line 6: 2 fields where the header has 3"),
+        "{err}"
+    );
+    assert!(err.contains("3 of 5 rows failed"), "{err}");
+}
+
+#[test]
+fn statcast_columns_are_converted_and_other_columns_ignored() {
+    let dir = tempfile::tempdir().unwrap();
+    let statcast = "pitch_type,launch_speed,launch_angle,des,spin_rpm\n\
+                    FF,103,28,\"homers, to left \"\"deep\"\"\",2500\n\
+                    SL,,,ball,\n";
+    let (status, out, err) = batch(dir.path(), statcast, &["--json"]);
+    assert_eq!(status, Some(0), "{err}");
+    assert!(
+        err.contains("ignored 2 columns that are no input: pitch_type, des"),
+        "{err}"
+    );
+    assert!(
+        err.contains("skipped 1 row without a launch speed"),
+        "{err}"
+    );
+    let statcast: Value = serde_json::from_str(out.trim()).unwrap();
+    // The same launch in SI, as the conversions give it exactly.
+    let si = format!(
+        "launch.speed,launch.angle,launch.spin\n{},{},{}\n",
+        103.0 * 0.44704,
+        28f64.to_radians(),
+        2500.0 * (TAU / 60.0)
+    );
+    let (status, out, _) = batch(dir.path(), &si, &["--json"]);
+    assert_eq!(status, Some(0));
+    let si: Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(statcast["launch"], si["launch"]);
+    assert_eq!(statcast["flight"], si["flight"]);
+    assert_eq!(statcast["clears_fence"], true);
+    // Any other key as a column: no air, no lift, a vacuum parabola's carry.
+    let input = "launch.speed,launch.angle,launch.spin,environment.air_density,model.lift\n\
+                 40,0.6,300,0,none\n";
+    let (_, out, err) = batch(dir.path(), input, &["--json"]);
+    let v: Value = serde_json::from_str(out.trim()).unwrap_or_else(|e| panic!("{e}: {err}"));
+    let (vx, vy) = (40.0 * 0.6f64.cos(), 40.0 * 0.6f64.sin());
+    let carry = vx * (vy + (vy * vy + 2.0 * 9.81).sqrt()) / 9.81;
+    assert!(relative(v["flight"]["range"].as_f64().unwrap(), carry) < 1e-9);
+}
+
+#[test]
+fn an_empty_input_a_file_and_hostile_input() {
+    let dir = tempfile::tempdir().unwrap();
+    // Empty: no rows, the header of none, status 0.
+    let (status, out, err) = batch(dir.path(), "", &[]);
+    assert_eq!(status, Some(0), "{err}");
+    assert_eq!(out.lines().count(), 1);
+    assert!(err.contains("the input is empty"), "{err}");
+    // A file, as well as stdin.
+    let file = dir.path().join("launches.csv");
+    std::fs::write(&file, "launch_speed,launch_angle\n100,25\n").unwrap();
+    let out = homerun(dir.path())
+        .args(["fly", "--batch"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{out:?}");
+    assert_eq!(String::from_utf8(out.stdout).unwrap().lines().count(), 2);
+    // A missing file, binary data: one line, status 2.
+    let out = homerun(dir.path())
+        .args(["fly", "--batch", "/nonexistent/launches.csv"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let (status, _, err) = batch(dir.path(), "\0\x01\x02binary", &[]);
+    assert_eq!(status, Some(2));
+    assert!(err.contains("binary data, not CSV text"), "{err}");
+    // A row longer than 64 KiB is skipped; the next one is flown.
+    let input = format!(
+        "launch.speed,launch.angle,launch.spin\n{}\n40,0.5,200\n",
+        "9".repeat(70_000)
+    );
+    let (status, out, err) = batch(dir.path(), &input, &[]);
+    assert_eq!(status, Some(1));
+    assert!(err.contains("line 2: longer than 64 KiB; skipped"), "{err}");
+    assert!(
+        out.lines().nth(1).unwrap().starts_with("3,40.0000"),
+        "{out}"
+    );
+}
+
+#[test]
+fn fly_at_hits_launch_prints_hits_flight() {
+    // The commands, not only the library: `fly` given the launch `hit`
+    // reports for the fastball flies `hit`'s flight.
+    let dir = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| -> Value {
+        let out = homerun(dir.path()).args(args).output().unwrap();
+        assert!(out.status.success(), "{args:?}");
+        serde_json::from_slice(&out.stdout).unwrap()
+    };
+    let hit = run(&["hit", "--json"]);
+    let launch = |k: &str| format!("{:?}", hit["impact"][k].as_f64().unwrap());
+    let sets = [
+        format!("launch.speed={}", launch("launch_speed")),
+        format!("launch.angle={}", launch("launch_angle")),
+        format!("launch.spin={}", launch("launch_spin")),
+    ];
+    // The paper's models, chosen: a batted ball would fly Nathan's.
+    let mut args = vec![
+        "fly",
+        "--json",
+        "--set",
+        "model.drag=sawicki2003",
+        "--set",
+        "model.lift=sawicki2003",
+    ];
+    for set in &sets {
+        args.extend(["--set", set.as_str()]);
+    }
+    let fly = run(&args);
+    assert_eq!(fly["scene"], "batted_ball", "{fly}");
+    for key in [
+        "range",
+        "flight_time",
+        "apex",
+        "landing_speed",
+        "landing_angle",
+    ] {
+        let (a, b) = (
+            fly["flight"][key].as_f64().unwrap(),
+            hit["flight"][key].as_f64().unwrap(),
+        );
+        assert!(relative(a, b) < 1e-12, "{key}: fly {a} vs hit {b}");
+    }
+    // Table II's fastball: 134.70 m.
+    assert!((fly["flight"]["range"].as_f64().unwrap() - 134.699).abs() < 1e-3);
+}
+
+#[test]
+fn a_header_without_inputs_is_refused_and_long_values_are_read_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    // Separated by `;`: no column is an input, so every row would have
+    // flown the preset's launch. Refused before any row, status 2.
+    let (status, out, err) = batch(dir.path(), "launch_speed;launch_angle\n103;28\n", &[]);
+    assert_eq!(status, Some(2), "{err}");
+    assert!(out.is_empty(), "{out}");
+    assert!(
+        err.contains("line 1 (the header): no column is an input")
+            && err.contains("`launch_speed;launch_angle`"),
+        "{err}"
+    );
+    // A key's value longer than an error's quote is parsed whole: 15 °C
+    // written with 100 zeros flies as 15 °C, and a bad one is quoted cut.
+    let long = format!("15.{}", "0".repeat(100));
+    let input = format!(
+        "launch.speed,launch.angle,launch.spin,environment.temperature\n\
+         40,0.5,200,{long}\n40,0.5,200,15\n40,0.5,200,{long}x\n40,0.5\n"
+    );
+    let (status, out, err) = batch(dir.path(), &input, &[]);
+    assert_eq!(status, Some(1), "{err}");
+    let rows: Vec<&str> = out.lines().skip(1).collect();
+    assert_eq!(rows.len(), 2, "{out}\n{err}");
+    assert_eq!(
+        rows[0].split_once(',').unwrap().1,
+        rows[1].split_once(',').unwrap().1
+    );
+    assert!(
+        err.contains("line 4: environment.temperature = 15.000"),
+        "{err}"
+    );
+    assert!(err.contains("…: unknown unit `x`"), "{err}");
+    assert!(
+        err.contains("line 5: 2 fields where the header has 4"),
+        "{err}"
+    );
+    let (_, _, err) = batch(dir.path(), "launch.speed,launch.angle\n40\n", &[]);
+    assert!(
+        err.contains("line 2: 1 field where the header has 2"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_batted_balls_figure_names_its_launch_not_a_pitch_and_bat() {
+    let dir = tempfile::tempdir().unwrap();
+    let second_line = |args: &[&str]| {
+        let out = homerun(dir.path()).args(args).output().unwrap();
+        assert!(out.status.success(), "{args:?}");
+        String::from_utf8(out.stdout)
+            .unwrap()
+            .lines()
+            .nth(1)
+            .unwrap()
+            .to_owned()
+    };
+    // 103 mph, 28°, 2500 rpm: the fly-ball preset's launch in both units.
+    let si = second_line(&["figure", "3", "--preset", "fly-ball"]);
+    assert!(
+        si.starts_with(
+            "preset fly-ball: launch 46.04512 m/s, 0.488692 rad, spin 261.799388 rad/s;"
+        ),
+        "{si}"
+    );
+    let imperial = second_line(&["figure", "4", "--preset", "fly-ball", "--units", "imperial"]);
+    assert!(
+        imperial.starts_with("preset fly-ball: launch 103 mph, 28°, spin 2500 rpm;"),
+        "{imperial}"
+    );
+    assert!(
+        !si.contains("pitch") && !imperial.contains("bat "),
+        "{si}\n{imperial}"
+    );
+}
