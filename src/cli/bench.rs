@@ -207,7 +207,7 @@ fn render(report: &Report) -> String {
     }
     let _ = writeln!(
         out,
-        "\ndefaults (src/analysis/precision.rs), range error on the Table II fastball"
+        "\ndefaults (crates/analysis/src/precision.rs), range error on the Table II fastball"
     );
     let _ = writeln!(
         out,
