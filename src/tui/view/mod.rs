@@ -42,7 +42,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 .select(selected)
                 .highlight_style(app.theme.selected)
                 .padding("", "")
-                .divider(Tab::DIVIDER),
+                .divider(Tab::divider(tabs.width)),
             tabs,
         );
     }
