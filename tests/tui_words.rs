@@ -222,3 +222,39 @@ fn inputs_are_named_in_words_beside_their_symbols_at_every_size() {
         }
     }
 }
+
+/// Issue 28, item 10: in the picker g and G jump to the top and bottom; a
+/// name with spaces is saved fixed up (spaces to '-'), and the preset row's
+/// hint then describes the preset saved.
+#[test]
+fn the_picker_jumps_and_a_name_with_spaces_is_fixed_up() {
+    use homerun::tui::app::Mode;
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = app(80, 24, Some(dir.path().to_owned()));
+    key(&mut app, KeyCode::Char('o'));
+    key(&mut app, KeyCode::Char('G'));
+    let Mode::Open {
+        items, selected, ..
+    } = &app.mode
+    else {
+        panic!("the picker is open");
+    };
+    assert_eq!(*selected, items.len() - 1);
+    key(&mut app, KeyCode::Char('g'));
+    assert!(matches!(app.mode, Mode::Open { selected: 0, .. }));
+    key(&mut app, KeyCode::Esc);
+    key(&mut app, KeyCode::Char('s'));
+    for _ in 0..20 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "class demo");
+    key(&mut app, KeyCode::Enter);
+    assert!(!matches!(app.mode, Mode::Save { .. }), "saved, not refused");
+    assert_eq!(app.preset_name, "class-demo");
+    homerun::preset::load("class-demo", Some(dir.path())).unwrap();
+    assert!(
+        app.description.starts_with("saved from the explorer"),
+        "{}",
+        app.description
+    );
+}
