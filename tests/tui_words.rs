@@ -258,3 +258,23 @@ fn the_picker_jumps_and_a_name_with_spaces_is_fixed_up() {
         app.description
     );
 }
+
+/// Issue 28, item 10: h and l on the preset row load the previous and next
+/// preset, and its hint follows the preset loaded.
+#[test]
+fn h_and_l_on_the_preset_row_cycle_the_presets() {
+    use homerun::tui::app::Field;
+    let mut app = app(80, 24, None);
+    app.selected = app.fields.iter().position(|f| *f == Field::Preset).unwrap();
+    let names: Vec<String> = homerun::preset::bundled()
+        .into_iter()
+        .map(|p| p.name)
+        .collect();
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.preset_name, names[1]);
+    let loaded = homerun::preset::load(&names[1], None).unwrap();
+    assert_eq!(app.description, loaded.description);
+    key(&mut app, KeyCode::Char('h'));
+    key(&mut app, KeyCode::Char('h'));
+    assert_eq!(app.preset_name, names[names.len() - 1]);
+}

@@ -362,7 +362,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
         None => {
             let text = match app.fields[app.selected] {
-                Field::Preset => format!("{} — Enter or o: open a preset", app.description),
+                Field::Preset => format!(
+                    "{} — h l: the previous / next preset · Enter or o: open one",
+                    app.description
+                ),
                 Field::Drag => format!("model.drag (h l): {}", app.scene.drag.description()),
                 Field::Lift => format!("model.lift (h l): {}", app.scene.lift.description()),
                 Field::Hand => format!(
