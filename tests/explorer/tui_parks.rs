@@ -50,7 +50,7 @@ fn c_shows_the_margin_over_the_wall_and_c_again_the_range() {
         shown.contains("Margin at the fence (E, ψ) · ── 0 m"),
         "{shown}"
     );
-    assert!(shown.contains("margin ✓ 33×38"), "{shown}");
+    assert!(shown.contains("margin ✓ 32×38"), "{shown}");
     // A park: its wall.
     pick(&mut app, "BOS");
     settle(&mut app);

@@ -414,3 +414,33 @@ fn the_explorers_figure5_marks_sit_on_the_curve_they_name() {
     // 1000 rad/s at μ = 0.5 is marked at 1000 rad/s.
     assert!((expected[2].1 - 1000.0).abs() < 0.1, "{expected:?}");
 }
+
+/// Issue 28, item 3: Fig. 3 of a batted ball is drawn at the ball's own
+/// launch spin (the fly-ball's 2500 rpm, C_D 0.374), not at its swing's,
+/// sets no paper's drag-crisis number against Nathan's C_D, and names no
+/// type of ours.
+#[test]
+fn figure_3_of_a_batted_ball_is_at_its_own_spin_and_only_its_own_model() {
+    let drag = json(&["3", "--preset", "fly-ball"]);
+    let title = drag["title"].as_str().unwrap();
+    assert!(title.contains("261.8 rad/s"), "{title}");
+    assert!(title.contains("C_D = 0.374"), "{title}");
+    for row in rows(&drag) {
+        assert!(
+            (num(row, "drag_coefficient") - 0.3738).abs() < 1e-4,
+            "{row}"
+        );
+    }
+    assert!(
+        drag["paper"].as_array().is_none_or(|c| c.is_empty()),
+        "{drag}"
+    );
+    let text = drag.to_string();
+    assert!(
+        !text.contains("Dryden") && !text.contains("DragModel"),
+        "{text}"
+    );
+    let paper = json(&["3"]);
+    assert!(!paper.to_string().contains("DragModel"));
+    assert!(!paper["paper"].as_array().unwrap().is_empty());
+}

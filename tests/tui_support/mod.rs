@@ -79,7 +79,8 @@ pub fn select(app: &mut App, name: &str) {
 pub fn screen(app: &App) -> String {
     let mut terminal = Terminal::new(TestBackend::new(app.size.width, app.size.height)).unwrap();
     terminal.draw(|frame| view::draw(frame, app)).unwrap();
-    terminal.backend().to_string()
+    // A non-breaking space (a number glued to its unit) reads as a space.
+    terminal.backend().to_string().replace('\u{a0}', " ")
 }
 
 /// Types `text` into the input `name` (Enter, the text, Enter) and runs the

@@ -35,3 +35,43 @@ pub fn scene_inputs(kind: SceneKind) -> Vec<usize> {
             .collect(),
     }
 }
+
+/// The input `name` in words, shown beside its symbol at every size, in
+/// the scene's language: a batted ball's launch as Statcast says it (exit
+/// speed, launch angle, backspin), a swing's as the paper does. The words
+/// tell apart the symbols that look alike (τ spin decay and τ_B bat tilt;
+/// φ, φ_w and φ_B; h and h_w).
+pub fn input_words(name: &str) -> &'static str {
+    match name {
+        "pitch.speed" | "bat.speed" => "speed",
+        "pitch.spin" | "bat.spin" => "spin",
+        "bat.undercut" => "undercut",
+        "bat.swing_angle" => "swing angle",
+        "bat.friction" => "friction",
+        "bat.effective_mass" | "ball.mass" => "mass",
+        "bat.radius" | "ball.radius" => "radius",
+        "bat.gyration_radius" | "ball.gyration_radius" => "gyration",
+        "bat.tilt" => "bat tilt",
+        "bat.direction" => "bat aim",
+        "environment.wind" => "wind",
+        "environment.wind_direction" => "wind aim",
+        "environment.wind_height" => "wind base",
+        "environment.air_density" => "density",
+        "environment.kinematic_viscosity" => "viscosity",
+        "environment.gravity" => "gravity",
+        "environment.contact_height" => "contact",
+        "environment.temperature" => "temperature",
+        "environment.elevation" => "elevation",
+        "environment.pressure" => "pressure",
+        "environment.humidity" => "humidity",
+        "model.spin_decay" => "spin decay",
+        "model.drag_scale" => "drag scale",
+        "model.lift_scale" => "lift scale",
+        "launch.speed" => "exit speed",
+        "launch.angle" => "launch angle",
+        "launch.spin" => "backspin",
+        "launch.direction" => "spray",
+        "launch.sidespin" => "sidespin",
+        _ => "",
+    }
+}

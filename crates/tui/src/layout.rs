@@ -44,6 +44,18 @@ impl Tab {
 
     /// The tab bar's divider: the titles are unpadded.
     pub const DIVIDER: &'static str = " │ ";
+    /// The divider where even the short titles do not fit with [`Tab::DIVIDER`].
+    pub const NARROW_DIVIDER: &'static str = "│";
+
+    /// The divider for a tab bar `width` columns wide: every title whole.
+    pub fn divider(width: u16) -> &'static str {
+        let short: usize = Tab::ALL.iter().map(|t| t.title(true).chars().count()).sum();
+        if short + 3 * (Tab::ALL.len() - 1) > width as usize {
+            Tab::NARROW_DIVIDER
+        } else {
+            Tab::DIVIDER
+        }
+    }
 
     /// Whether the titles must be short to fit `width` columns.
     pub fn short_titles(width: u16) -> bool {
@@ -95,8 +107,8 @@ pub fn is_medium(area: Rect) -> bool {
     area.width >= 116 && area.height >= 34
 }
 
-/// Whether the inputs pane is wide enough for the Δopt column (44 or 58
-/// columns; at 30 it has room for Δ only). Δopt costs ~28 ms of CPU per
+/// Whether the inputs pane is wide enough for the Δopt column (46 or 58
+/// columns; at 31 it has room for neither). Δopt costs ~28 ms of CPU per
 /// change, so it is computed only where it is shown.
 pub fn shows_optimum_gains(area: Rect) -> bool {
     is_wide(area) || is_big(area)
@@ -131,7 +143,14 @@ pub fn layout(area: Rect, tab: Tab, swing: bool) -> Panes {
     if is_big(area) {
         return big_layout(body, status, swing);
     }
-    let inputs_width = if is_wide(area) { 44 } else { 30 };
+    // Wide enough for each row's words and symbol, value and unit (the Δ
+    // columns from 116 columns): a batted ball's words ("exit speed V̂_bf")
+    // are the longer.
+    let inputs_width = match (is_wide(area), swing) {
+        (true, _) => 46,
+        (false, true) => 31,
+        (false, false) => 33,
+    };
     let [inputs, right] =
         Layout::horizontal([Constraint::Length(inputs_width), Constraint::Fill(1)]).areas(body);
     let mut panes = Panes {

@@ -4,32 +4,40 @@ use super::{FigureData, MARK, columns, compare, marked_row, with_marks};
 use crate::paper;
 use crate::study;
 use model::aero::{DragCurve, DragModel, LiftCurve, LiftModel};
-use model::impact::Collision;
 use model::scene::Scene;
 
 /// Fig. 3: C_D against Re for the scene's drag model, with its kinks and
-/// Dryden's point. A spin-dependent C_D (Nathan's) is drawn at the scene's
-/// launch spin, the one its flight starts with.
+/// Dryden's point. A spin-dependent C_D (Nathan's) is drawn at the spin the
+/// scene's ball leaves the bat with (a batted ball's own, a swing's
+/// impact's), the one its flight starts with. The paper's drag crisis is
+/// set against the paper's model only.
 pub(super) fn figure3(scene: &Scene) -> FigureData {
     let model = scene.drag;
-    let spin_rate = Collision::new(scene).launch_spin().abs();
+    let spin_rate = scene.batted_ball().spin_vector().norm();
     let drag = |re: f64| model.coefficient_on(model.piece(re), re, spin_rate);
     let speed_per_re = scene.environment.kinematic_viscosity / (2.0 * scene.ball.radius);
+    let papers = model == DragModel::Sawicki2003;
     let mut marks: Vec<(f64, String)> = model
         .kinks()
         .iter()
         .map(|&re| (re, "kink".to_owned()))
         .collect();
-    marks.push((
-        paper::DRYDEN_RE,
-        format!("Dryden's point (paper: C_D = {})", paper::DRYDEN.value),
-    ));
+    if papers {
+        marks.push((
+            paper::DRYDEN_RE,
+            format!("Dryden's point (paper: C_D = {})", paper::DRYDEN.value),
+        ));
+    }
     let rows = with_marks(study::linspace(50_000.0, 300_000.0, 26), marks)
         .into_iter()
         .map(|(re, mark)| marked_row(&[re, re * speed_per_re, drag(re)], &mark))
         .collect();
     let spin_note = if model == DragModel::Nathan {
-        format!(", at the launch spin {spin_rate:.1} rad/s")
+        let rpm = spin_rate * 60.0 / std::f64::consts::TAU;
+        format!(
+            ", at the launch spin {spin_rate:.1} rad/s = {rpm:.0} rpm: C_D = {:.3}",
+            drag(paper::DRYDEN_RE)
+        )
     } else {
         String::new()
     };
@@ -44,16 +52,24 @@ pub(super) fn figure3(scene: &Scene) -> FigureData {
         ("drag_coefficient", "C_D", 4),
         MARK,
     ]);
+    let (comparisons, note) = if papers {
+        (
+            vec![
+                compare(paper::CRISIS_FLOOR, drag(paper::CRISIS_FLOOR_RE)),
+                compare(paper::DRYDEN, drag(paper::DRYDEN_RE)),
+                compare(paper::DRAG_FALLS, paper::DRAG_FALLS_RE * speed_per_re),
+            ],
+            "The paper draws its drag curve without giving its formula; ours is read off its Fig. 3.",
+        )
+    } else {
+        (
+            Vec::new(),
+            "Not the paper's drag law, so no drag crisis: set model.drag = \"sawicki2003\" for Fig. 3's.",
+        )
+    };
     FigureData {
-        comparisons: vec![
-            compare(paper::CRISIS_FLOOR, drag(paper::CRISIS_FLOOR_RE)),
-            compare(paper::DRYDEN, drag(paper::DRYDEN_RE)),
-            compare(paper::DRAG_FALLS, paper::DRAG_FALLS_RE * speed_per_re),
-        ],
-        notes: vec![
-            "The paper gives its fit only as a figure; ours is reconstructed (see DragModel)."
-                .to_owned(),
-        ],
+        comparisons,
+        notes: vec![note.to_owned()],
         ..FigureData::new(3, title, columns, rows)
     }
 }

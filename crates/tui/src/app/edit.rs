@@ -12,7 +12,24 @@ impl App {
     /// Moves the selected input by `scale` of its step, if the result is valid.
     pub(super) fn nudge(&mut self, scale: f64) {
         match self.fields[self.selected] {
-            Field::Preset => {}
+            // The next or previous preset that loads, as the picker lists them.
+            Field::Preset => {
+                let presets: Vec<_> = preset::list(self.presets_dir.as_deref())
+                    .into_iter()
+                    .filter_map(Result::ok)
+                    .collect();
+                if presets.is_empty() {
+                    return;
+                }
+                let at = presets.iter().position(|p| p.name == self.preset_name);
+                let n = presets.len();
+                let next = match at {
+                    Some(i) if scale > 0.0 => (i + 1) % n,
+                    Some(i) => (i + n - 1) % n,
+                    None => 0,
+                };
+                self.load(presets[next].clone());
+            }
             Field::Drag => {
                 self.scene
                     .choose_drag(cycle(&DragModel::ALL, self.scene.drag, scale));

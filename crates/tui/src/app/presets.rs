@@ -22,7 +22,14 @@ impl App {
         match action {
             Some(Action::Close) => {}
             Some(Action::Confirm) => {
-                let name = text.lines().join("").trim().to_owned();
+                // A name with spaces is fixed up, not refused: "class demo"
+                // is saved as class-demo.
+                let name = text
+                    .lines()
+                    .join("")
+                    .split_whitespace()
+                    .collect::<Vec<_>>()
+                    .join("-");
                 // Taking a bundled name hides the bundled preset from
                 // `--preset NAME` and from `o`: only when asked twice.
                 // Overwriting one of the user's own: only when asked twice too.
@@ -48,6 +55,8 @@ impl App {
                 }
                 match self.save(&name) {
                     Ok(path) => {
+                        // The preset row's hint now describes the one saved.
+                        self.description = self.saved_description();
                         self.preset_name = name;
                         self.message = Some((format!("saved {}", path.display()), false));
                     }
@@ -71,11 +80,16 @@ impl App {
         }
     }
 
+    /// What a preset saved now says of itself.
+    fn saved_description(&self) -> String {
+        format!("saved from the explorer (from {})", self.preset_name)
+    }
+
     fn save(&self, name: &str) -> Result<PathBuf, String> {
         let dir = self.presets_dir.as_deref().ok_or(preset::NO_FOLDER)?;
         let preset = Preset {
             name: name.to_owned(),
-            description: format!("saved from the explorer (from {})", self.preset_name),
+            description: self.saved_description(),
             scene: self.scene,
             fence: self.fence,
             source: Source::Bundled,
@@ -136,6 +150,9 @@ impl App {
             Some(Action::Close | Action::Quit) => return,
             Some(Action::Down) => ((selected + 1).min(last), None),
             Some(Action::Up) => (selected.saturating_sub(1), None),
+            // g and G: the top and the bottom of the list, as in the inputs.
+            Some(Action::First) => (0, None),
+            Some(Action::Last) => (last, None),
             Some(Action::Confirm) => match items.get(selected).and_then(|i| i.preset.clone()) {
                 Some(preset) => {
                     self.load(preset);

@@ -40,7 +40,10 @@ impl App {
 
     /// Key `b`: from a swing to the batted ball it launches (the same
     /// launch, so the same flight), or back to the swing as it was (the
-    /// ball, air and models as now).
+    /// ball, air and models as now). The models in force go with the
+    /// switch, chosen: a model left unset would otherwise become the other
+    /// kind's default (the paper's for a swing, Nathan's for a batted
+    /// ball), and the same launch would fly another range.
     pub(super) fn switch_scene(&mut self) {
         let (scene, message) = if self.is_swing() {
             // A swing's validation refuses a launch outside launch.*'s
@@ -60,6 +63,9 @@ impl App {
                 "swing scene: pitch, bat, impact, optimum and surface (b: the batted ball)",
             )
         };
+        let mut scene = scene;
+        scene.choose_drag(self.scene.drag);
+        scene.choose_lift(self.scene.lift);
         self.set_scene(scene);
         self.message = Some((message.into(), false));
     }

@@ -136,7 +136,14 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             vec![
                 Span::styled(format!("paper {}", trimmed(c.paper)), app.theme.dim),
                 Span::raw(format!(" · ours {} {}", sig(c.ours, 3), c.unit)),
-                Span::styled(format!("  {}", c.what), app.theme.dim),
+                // A number's groups ("208 000") wrap together.
+                Span::styled(
+                    format!(
+                        "  {}",
+                        words::non_breaking(&c.what, |next| next.is_ascii_digit())
+                    ),
+                    app.theme.dim,
+                ),
             ]
         })
         .chain(

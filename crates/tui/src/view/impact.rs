@@ -12,6 +12,7 @@ use ratatui::widgets::{Block, Paragraph};
 
 use super::chart::{self, AxisSpec, Ticks};
 use super::impact3d;
+use super::words;
 use crate::app::{App, impact_stops};
 use model::impact::{Collision, Stop};
 use units::Quantity;
@@ -43,10 +44,17 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
 /// The paper's collision: v1 and v3 against p.
 fn planar(frame: &mut Frame, inner: Rect, app: &App, impact: &Collision, stop: Stop) {
     // Speeds in the units shown (m/s or mph); impulses stay N·s.
-    let (speed, spin) = (app.unit(Quantity::Speed), app.unit(Quantity::Spin));
-    let [chart_area, text_area] =
-        Layout::vertical([Constraint::Fill(1), Constraint::Length(3)]).areas(inner);
     let (slip_path, normal_path) = (app.theme.path(0), app.theme.path(1));
+    let lines = planar_text(app, impact, stop, (slip_path.1, normal_path.1));
+    // Each line wrapped at words, never cut: up to two rows each.
+    let width = inner.width as usize;
+    let lines: Vec<Line> = lines
+        .iter()
+        .flat_map(|l| words::fit(&l.spans, width, 2))
+        .collect();
+    let [chart_area, text_area] =
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(lines.len() as u16)])
+            .areas(inner);
     let curves = [
         Curve {
             value: |s| s.slip.x,
@@ -61,17 +69,26 @@ fn planar(frame: &mut Frame, inner: Rect, app: &App, impact: &Collision, stop: S
     ];
     phase_chart(frame, chart_area, app, impact, stop.impulse, &curves);
 
+    frame.render_widget(Paragraph::new(lines), text_area);
+}
+
+/// The impact's state at the cursor, in words: the impulses, v1 and v3,
+/// and the ball's velocity and spin.
+fn planar_text(
+    app: &App,
+    impact: &Collision,
+    stop: Stop,
+    glyphs: (&str, &str),
+) -> Vec<Line<'static>> {
+    let (speed, spin) = (app.unit(Quantity::Speed), app.unit(Quantity::Spin));
     let s = impact.at(stop.impulse);
-    let lines = vec![
+    vec![
         impulse_line(app, impact, stop),
         Line::from(vec![
-            Span::styled(
-                format!("{}v1 slip ", named(app, slip_path.1)),
-                app.theme.slip,
-            ),
+            Span::styled(format!("{}v1 slip ", named(app, glyphs.0)), app.theme.slip),
             Span::raw(format!("{:+.2}  ", speed.show(s.slip.x))),
             Span::styled(
-                format!("{}v3 normal ", named(app, normal_path.1)),
+                format!("{}v3 normal ", named(app, glyphs.1)),
                 app.theme.approach,
             ),
             Span::raw(format!(
@@ -92,8 +109,7 @@ fn planar(frame: &mut Frame, inner: Rect, app: &App, impact: &Collision, stop: S
                 spin.symbol
             )),
         ]),
-    ];
-    frame.render_widget(Paragraph::new(lines), text_area);
+    ]
 }
 
 /// A curve of the chart against p: what it plots of a moment (m/s), and

@@ -3,11 +3,11 @@
 //! at the optimum), and the selected one's description (or the edit box and
 //! its error) at the bottom.
 //!
-//! Columns, by priority as the pane narrows: symbol, value and unit always
-//! (a value is never cut); then Δ (the range gained by one step up at the
-//! current swing); then Δopt (the optimal range gained); then the key's
-//! name. Where Δ does not fit as a number it is shown as a sign repeated by
-//! size (+++ to +, or ·).
+//! Columns, by priority as the pane narrows: the input in words beside its
+//! symbol, value and unit always (a value is never cut, a word never
+//! dropped); then Δ (the range gained by one step up at the current swing);
+//! then Δopt (the optimal range gained). Where Δ does not fit as a number
+//! it is shown as a sign repeated by size (+++ to +, or ·).
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
@@ -16,6 +16,7 @@ use ratatui::widgets::{Block, Paragraph, Wrap};
 
 use crate::app::{App, Field, GainCell, Mode, input_key};
 use crate::format::{shown_bounds, shown_range, shown_step, shown_value};
+use crate::inputs::input_words;
 use crate::layout::{input_scroll, inputs_list};
 use crate::worker::Gain;
 use analysis::sensitivity;
@@ -24,8 +25,6 @@ use model::keys::HAND_KEY;
 use model::scene::Hand;
 use preset::escape_text;
 
-/// Display width of the symbol column (V̂_b0, k_B2, y(0): four cells).
-const SYMBOL: usize = 4;
 /// Display width of the unit column (rad/s, kg/m³).
 const UNIT: usize = 5;
 /// A numeric Δ column, its separating space included ("+12.34").
@@ -36,9 +35,10 @@ const COMPACT: usize = 4;
 /// Which columns fit the pane.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Columns {
+    /// Width of the label column: the longest "words symbol" shown.
+    label: usize,
     /// Width of the value column: the widest value shown.
     value: usize,
-    name: Option<usize>,
     swing: Option<Sensitivity>,
     optimum: bool,
 }
@@ -63,25 +63,20 @@ fn pad(text: &str, cells: usize, right: bool) -> String {
     }
 }
 
-fn columns(inner: usize, value: usize, name: usize) -> Columns {
-    // marker, symbol, space, value, space, unit
-    let base = 1 + SYMBOL + 1 + value + 1 + UNIT;
+fn columns(inner: usize, label: usize, value: usize) -> Columns {
+    // marker, words and symbol, space, value, space, unit
+    let base = 1 + label + 1 + value + 1 + UNIT;
     let mut c = Columns {
+        label,
         value,
-        name: None,
         swing: None,
         optimum: false,
     };
-    let mut used = base;
+    let used = base;
     if used + GAIN <= inner {
         c.swing = Some(Sensitivity::Numbers);
-        used += GAIN;
-        if used + GAIN <= inner {
+        if used + 2 * GAIN <= inner {
             c.optimum = true;
-            used += GAIN;
-        }
-        if used + name < inner {
-            c.name = Some(name);
         }
     } else if used + COMPACT <= inner {
         c.swing = Some(Sensitivity::Signs);
@@ -211,11 +206,17 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .map(|key| width(&shown_value(key, (key.get)(&app.scene), app.units)))
         .max()
         .unwrap_or(0);
-    let name_width = numeric
-        .map(|key| width(key.name.split('.').nth(1).unwrap_or(key.name)))
+    let label_width = app
+        .fields
+        .iter()
+        .map(|f| width(&label_text(*f)))
         .max()
         .unwrap_or(0);
-    let mut c = columns(inner_width, value_width, name_width);
+    // A narrow pane gives the words their room and rounds the widest values
+    // (a derived ν) to fewer decimals, rather than cut a row.
+    let room = inner_width.saturating_sub(1 + label_width + 1 + 1 + UNIT);
+    let value_width = value_width.min(room.max(6));
+    let mut c = columns(inner_width, label_width, value_width);
     // A batted ball has no optimum, so no Δopt.
     c.optimum &= app.is_swing();
 
@@ -257,28 +258,21 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         if selected {
             selected_row = rows.len();
         }
-        let (symbol, name, value, unit) = match field {
-            Field::Preset => ("", "preset", escape_text(&app.preset_name), ""),
-            Field::Drag => ("C_D", "drag", app.scene.drag.name().to_owned(), ""),
-            Field::Lift => ("C_L", "lift", app.scene.lift.name().to_owned(), ""),
-            Field::Hand => ("", "hand", app.scene.bat.hand.name().to_owned(), ""),
+        let (value, unit) = match field {
+            Field::Preset => (escape_text(&app.preset_name), ""),
+            // A model's name is a word: never cut (it takes the unit's room).
+            Field::Drag => (app.scene.drag.name().to_owned(), ""),
+            Field::Lift => (app.scene.lift.name().to_owned(), ""),
+            Field::Hand => (app.scene.bat.hand.name().to_owned(), ""),
             Field::Key(k) => {
                 let key = input_key(*k);
-                let short = key.name.split('.').nth(1).unwrap_or(key.name);
                 (
-                    key.symbol,
-                    short,
-                    shown_value(key, (key.get)(&app.scene), app.units),
+                    fitted_number(shown_value(key, (key.get)(&app.scene), app.units), c.value),
                     key.unit_in(app.units).symbol,
                 )
             }
         };
-        let mut label = match c.name {
-            Some(n) => format!("{} {}", pad(symbol, SYMBOL, false), pad(name, n, false)),
-            // A row without a symbol (the preset) is named in its place.
-            None if symbol.is_empty() => pad(name, SYMBOL, false),
-            None => pad(symbol, SYMBOL, false),
-        };
+        let mut label = pad(&label_text(*field), c.label, false);
         let text = match field {
             // A numeric value, right-aligned in its column, then the unit.
             Field::Key(_) => format!(" {} {}", pad(&value, c.value, true), pad(unit, UNIT, false)),
@@ -370,7 +364,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         None => {
             let text = match app.fields[app.selected] {
                 Field::Preset => format!(
-                    "{} — Enter or o: open a preset",
+                    "{} — h l: the previous / next preset · Enter or o: open one",
                     escape_text(&app.description)
                 ),
                 Field::Drag => format!("model.drag (h l): {}", app.scene.drag.description()),
@@ -394,6 +388,40 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
     };
     frame.render_widget(about_text.wrap(Wrap { trim: true }), about);
+}
+
+/// A number's text rounded to fewer decimals until it fits `cells` (its
+/// whole part is never cut).
+fn fitted_number(text: String, cells: usize) -> String {
+    let Ok(value) = text.parse::<f64>() else {
+        return text;
+    };
+    let mut decimals = text.split_once('.').map_or(0, |(_, d)| d.len());
+    let mut shown = text;
+    while width(&shown) > cells && decimals > 0 {
+        decimals -= 1;
+        shown = format!("{value:.decimals$}");
+    }
+    shown
+}
+
+/// A row's label: the input in words, then its symbol ("swing angle ψ").
+fn label_text(field: Field) -> String {
+    let (words, symbol) = match field {
+        Field::Preset => ("preset", ""),
+        Field::Drag => ("drag", "C_D"),
+        Field::Lift => ("lift", "C_L"),
+        Field::Hand => ("batter", ""),
+        Field::Key(k) => {
+            let key = input_key(k);
+            (input_words(key.name), key.symbol)
+        }
+    };
+    if symbol.is_empty() {
+        words.to_owned()
+    } else {
+        format!("{words} {symbol}")
+    }
 }
 
 /// What an edit takes, under its box: the key, its unit and its accepted
@@ -431,17 +459,16 @@ mod tests {
 
     #[test]
     fn columns_give_way_in_order_and_never_cut_a_value() {
-        // 80×24: 28 cells inside; values up to 8 wide ("0.000015").
-        let narrow = columns(28, 8, 19);
-        assert_eq!(narrow.swing, Some(Sensitivity::Numbers));
-        assert!(!narrow.optimum && narrow.name.is_none());
-        // A 12-wide value (a derived ν) leaves room only for signs.
-        assert_eq!(columns(28, 12, 19).swing, Some(Sensitivity::Signs));
-        assert_eq!(columns(20, 12, 19).swing, None);
-        // 42 inside: both Δ columns, no names; 56: everything.
-        let wide = columns(42, 8, 19);
-        assert!(wide.optimum && wide.name.is_none());
-        assert_eq!(columns(56, 8, 19).name, Some(19));
+        // 80×24: 29 cells inside; values up to 8 wide ("0.000015"): the
+        // words, never Δ.
+        let narrow = columns(29, 13, 8);
+        assert_eq!(narrow.swing, None);
+        assert!(!narrow.optimum);
+        assert_eq!(columns(33, 13, 8).swing, Some(Sensitivity::Signs));
+        assert_eq!(columns(20, 13, 12).swing, None);
+        // 56 inside: both Δ columns.
+        let wide = columns(56, 13, 8);
+        assert!(wide.optimum && wide.swing == Some(Sensitivity::Numbers));
     }
 
     #[test]

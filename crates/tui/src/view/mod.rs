@@ -60,7 +60,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
                 .select(selected)
                 .highlight_style(app.theme.selected)
                 .padding("", "")
-                .divider(Tab::DIVIDER),
+                .divider(Tab::divider(tabs.width)),
             tabs,
         );
     }

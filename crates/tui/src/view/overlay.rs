@@ -22,7 +22,7 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
 }
 
 pub fn help(frame: &mut Frame, area: Rect, theme: &Theme) {
-    let mut lines: Vec<Line> = keymap::help()
+    let lines: Vec<Line> = keymap::help()
         .into_iter()
         .map(|(keys, what)| {
             Line::from(vec![
@@ -31,11 +31,16 @@ pub fn help(frame: &mut Frame, area: Rect, theme: &Theme) {
             ])
         })
         .collect();
-    lines.push(Line::styled("any key closes this help", theme.dim));
+    // The closing line on the border, so that it shows even where the keys
+    // fill the screen (80×24).
     let popup = centered(area, 68, lines.len() as u16 + 2);
     frame.render_widget(Clear, popup);
     frame.render_widget(
-        Paragraph::new(lines).block(Block::bordered().title(Span::styled(" Keys ", theme.title))),
+        Paragraph::new(lines).block(
+            Block::bordered()
+                .title(Span::styled(" Keys ", theme.title))
+                .title_bottom(Line::styled(" any key closes this help ", theme.dim)),
+        ),
         popup,
     );
 }
@@ -78,13 +83,16 @@ pub fn open(
     selected: usize,
     error: Option<&str>,
 ) {
-    let popup = centered(area, 76, items.len() as u16 + 6);
+    let popup = centered(area, 76, items.len() as u16 + 7);
     frame.render_widget(Clear, popup);
     let block = Block::bordered().title(Span::styled(" Open preset ", theme.title));
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
     let [list_area, message] =
-        Layout::vertical([Constraint::Fill(1), Constraint::Length(2)]).areas(inner);
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(3)]).areas(inner);
+    // Each description fitted at words to its row ("…" where words are
+    // left over); the selected one's is shown whole under the list.
+    let detail_width = (list_area.width as usize).saturating_sub(2 + 14);
     let list: Vec<ListItem> = items
         .iter()
         .map(|item| {
@@ -93,13 +101,17 @@ pub fn open(
             } else {
                 theme.broken
             };
-            ListItem::new(Line::from(vec![
-                Span::styled(
-                    format!("{:<14}", escape_text(&item.name)),
-                    Theme::strong(style),
-                ),
-                Span::styled(escape_text(&item.detail), style),
-            ]))
+            let detail = super::words::fit(
+                &[Span::styled(escape_text(&item.detail), style)],
+                detail_width,
+                1,
+            );
+            let mut spans = vec![Span::styled(
+                format!("{:<14}", escape_text(&item.name)),
+                Theme::strong(style),
+            )];
+            spans.extend(detail.into_iter().flat_map(|l| l.spans));
+            ListItem::new(Line::from(spans))
         })
         .collect();
     let mut state = ListState::default().with_selected(Some(selected));
@@ -112,7 +124,13 @@ pub fn open(
     );
     let line = match error {
         Some(e) => Paragraph::new(Line::styled(e, theme.broken)),
-        None => Paragraph::new(Line::styled("Enter loads · Esc cancels", theme.dim)),
+        None => Paragraph::new(Line::styled(
+            format!(
+                "{} · Enter loads · Esc cancels",
+                items.get(selected).map_or("", |i| i.detail.as_str())
+            ),
+            theme.dim,
+        )),
     };
     frame.render_widget(line.wrap(Wrap { trim: true }), message);
 }

@@ -129,7 +129,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             // (the end of the drawn path).
             if flight.landed {
                 Span::raw(format!(
-                    "range {:.2} {u}  {:.2} s  apex {:.1} {u}",
+                    "range {:.2} {u}  {:.2} s  apex\u{a0}{:.1} {u}",
                     d(flight.range),
                     flight.flight_time,
                     d(flight.apex)
@@ -423,6 +423,19 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             ]));
         }
     }
+    // A number and its unit wrap together ("27.3 m", "50 %").
+    let lines: Vec<Line> = lines
+        .into_iter()
+        .map(|line| {
+            let spans = line.spans.into_iter().map(|span| {
+                let content = super::words::non_breaking(&span.content, |next| {
+                    !next.is_ascii_digit() && !next.is_whitespace() && next != '('
+                });
+                Span::styled(content, span.style)
+            });
+            Line::from(spans.collect::<Vec<_>>())
+        })
+        .collect();
     let block = Block::bordered().title(Span::styled(" Readout ", app.theme.title));
     // Long lines (a model's description) wrap rather than run off the pane.
     frame.render_widget(

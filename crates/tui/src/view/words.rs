@@ -161,6 +161,24 @@ pub fn fit(spans: &[Span], width: usize, rows: usize) -> Vec<Line<'static>> {
     lines
 }
 
+/// `text` with each space after a digit and before a character `joins`
+/// takes made non-breaking: a number's groups ("208 000"), or a number and
+/// its unit ("27.3 m"), then wrap together.
+pub fn non_breaking(text: &str, joins: fn(char) -> bool) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    chars
+        .iter()
+        .enumerate()
+        .map(|(i, &c)| {
+            let glue = c == ' '
+                && i > 0
+                && chars[i - 1].is_ascii_digit()
+                && chars.get(i + 1).is_some_and(|&n| joins(n));
+            if glue { '\u{a0}' } else { c }
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,0 +1,280 @@
+//! Issue 28 ("Speak baseball, teach physics"): the explorer at 80×24 cuts
+//! no text mid-word, and names every input in words beside its symbol.
+
+use crate::tui_support;
+
+use homerun::tui::app::App;
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::KeyCode;
+use tui_support::*;
+
+/// Cells that end a pane's row: a border, or the screen's edge.
+fn is_edge(symbol: &str) -> bool {
+    ["│", "┐", "┘", "┤", "┌", "└", "├", "┬", "┴"].contains(&symbol)
+}
+
+/// Whether the word ending before column `x` of row `y` is whole: one the
+/// same state shows whole on a screen big enough for every text (`big`,
+/// its words), or shown whole there by design (a preset's name or the
+/// batter's hand, right-aligned in its row, or an axis' name).
+fn whole_at(buffer: &Buffer, x: u16, y: u16, big: &[String]) -> bool {
+    let mut word = String::new();
+    let mut at = x;
+    while at > 0 && {
+        let s = buffer[(at - 1, y)].symbol();
+        s != "│" && !s.chars().all(char::is_whitespace)
+    } {
+        at -= 1;
+        word.insert_str(0, buffer[(at, y)].symbol());
+    }
+    // A word wider than a whole row (a key's name) is split, not lost.
+    let split = big.iter().any(|w| {
+        w.starts_with(&word)
+            && w.chars().count() > word.chars().count() + 1
+            && word.chars().count() > 20
+    });
+    // A key's name, wider than the inputs' row, is split there, not lost.
+    let key = word.chars().count() > 20
+        && homerun::model::keys::KEYS
+            .iter()
+            .chain(homerun::model::keys::EXTENDED_KEYS.iter())
+            .any(|k| k.name.starts_with(&word));
+    split
+        || key
+        || big.contains(&word)
+        || homerun::preset::bundled().iter().any(|p| p.name == word)
+        || ["Re", "right", "left"].contains(&word.as_str())
+}
+
+/// Whether the border at (`x`, `y`) is a box's right side (not the left
+/// side of an overlay drawn over other text): the corner above it is ┐.
+fn right_border(buffer: &Buffer, x: u16, y: u16) -> bool {
+    (0..=y).rev().find_map(|at| match buffer[(x, at)].symbol() {
+        "┐" | "┘" | "┤" | "┬" => Some(true),
+        "┌" | "└" | "├" => Some(false),
+        _ => None,
+    }) != Some(false)
+}
+
+/// Where a row of `buffer` ends inside a word: text running up to a pane's
+/// right border (or the screen's edge) and cut there. A row is cut when its
+/// last two cells before the edge are letters (a word that went on), a
+/// digit and a point ("+196."). (Text fitted with "…" ends at a whole
+/// word: see `view::words`.)
+fn cuts(buffer: &Buffer, what: &str, big: &[String]) -> Vec<String> {
+    let area = buffer.area;
+    let mut found = Vec::new();
+    let row = |y: u16| -> String {
+        (0..area.width)
+            .map(|x| buffer[(x, y)].symbol())
+            .collect::<String>()
+    };
+    for y in 0..area.height {
+        for x in 2..=area.width {
+            // A pane's edge, not the tab bar's divider ("Flight│2").
+            let divider = x + 1 < area.width
+                && buffer[(x + 1, y)]
+                    .symbol()
+                    .starts_with(|c: char| c.is_ascii_digit());
+            let at_edge = x == area.width
+                || (is_edge(buffer[(x, y)].symbol()) && !divider && right_border(buffer, x, y));
+            if !at_edge || whole_at(buffer, x, y, big) {
+                continue;
+            }
+            let last = buffer[(x - 1, y)].symbol();
+            let before = buffer[(x - 2, y)].symbol();
+            let letter = |s: &str| s.chars().next().is_some_and(char::is_alphabetic);
+            let digit = |s: &str| s.chars().next().is_some_and(|c| c.is_ascii_digit());
+            let cut = (letter(last) && letter(before) && x != area.width)
+                || (last == "." && digit(before));
+            if cut {
+                found.push(format!("{what}: {:?}", row(y)));
+            }
+        }
+    }
+    found
+}
+
+/// The words of `app` drawn on a screen of 400×120, where no text is cut.
+fn big_words(app: &App) -> Vec<String> {
+    use ratatui::Terminal;
+    use ratatui::backend::TestBackend;
+    let mut terminal = Terminal::new(TestBackend::new(400, 120)).unwrap();
+    terminal
+        .draw(|frame| homerun::tui::view::draw(frame, app))
+        .unwrap();
+    let text = terminal.backend().to_string();
+    text.split(|c: char| c.is_whitespace() || "│┐┘┤┌└├┬┴─\"".contains(c))
+        .filter(|w| !w.is_empty())
+        .map(str::to_owned)
+        .collect()
+}
+
+/// Every tab, overlay and picker of `app`'s scene, each as drawn.
+fn walk(app: &mut App, scene: &str, found: &mut Vec<String>) {
+    let mut look = |app: &mut App, what: &str| {
+        settle(app);
+        let big = big_words(app);
+        found.extend(cuts(&buffer(app), &format!("{scene} {what}"), &big));
+    };
+    for (tab, name) in ['1', '2', '3', '4', '5']
+        .into_iter()
+        .zip(["flight", "surface", "impact", "figures", "field"])
+    {
+        key(app, KeyCode::Char(tab));
+        look(app, name);
+    }
+    // The figures, each.
+    key(app, KeyCode::Char('4'));
+    for _ in 0..12 {
+        key(app, KeyCode::Char('f'));
+        let what = format!("figure {}", app.figure_number);
+        look(app, &what);
+    }
+    // The impact, step by step.
+    key(app, KeyCode::Char('3'));
+    for step in 0..8 {
+        key(app, KeyCode::Char('.'));
+        look(app, &format!("impact step {step}"));
+    }
+    key(app, KeyCode::Char('1'));
+    // Every input's description, selected in turn.
+    key(app, KeyCode::Char('g'));
+    for row in 0..app.fields.len() {
+        look(app, &format!("input {row}"));
+        key(app, KeyCode::Char('j'));
+    }
+    // The overlays: help, the preset picker, an edit, a park.
+    key(app, KeyCode::Char('?'));
+    look(app, "help");
+    assert!(
+        screen(app).contains("any key closes this help"),
+        "{scene}: the help's closing line"
+    );
+    key(app, KeyCode::Esc);
+    key(app, KeyCode::Char('o'));
+    look(app, "preset picker");
+    for _ in 0..8 {
+        key(app, KeyCode::Down);
+        look(app, "preset picker, moved");
+    }
+    key(app, KeyCode::Esc);
+    key(app, KeyCode::Char('g'));
+    key(app, KeyCode::Char('j'));
+    key(app, KeyCode::Enter);
+    look(app, "edit");
+    key(app, KeyCode::Esc);
+    key(app, KeyCode::Char('m'));
+    look(app, "park");
+    key(app, KeyCode::Char('5'));
+    look(app, "park's field");
+    key(app, KeyCode::Esc);
+}
+
+#[test]
+fn no_text_is_cut_mid_word_at_80x24() {
+    let mut found = Vec::new();
+    for preset in ["fastball", "fly-ball", "figure5", "mile-high"] {
+        let mut app = app_on(preset, 80, 24, None);
+        walk(&mut app, preset, &mut found);
+        if app.is_swing() {
+            key(&mut app, KeyCode::Char('b'));
+            walk(&mut app, &format!("{preset} as a batted ball"), &mut found);
+        }
+    }
+    found.dedup();
+    assert!(
+        found.is_empty(),
+        "{} cut:\n{}",
+        found.len(),
+        found.join("\n")
+    );
+}
+
+/// Words beside the symbols at every size, in the scene's language.
+#[test]
+fn inputs_are_named_in_words_beside_their_symbols_at_every_size() {
+    for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+        let app = app_on("fly-ball", w, h, None);
+        let shown = screen(&app);
+        for label in ["exit speed V̂_bf", "launch angle ζ", "backspin ω_bf"] {
+            assert!(shown.contains(label), "{w}×{h}: {label}\n{shown}");
+        }
+        let mut app = app_on("fastball", w, h, None);
+        let mut shown = String::new();
+        // The whole list, scrolled through.
+        for _ in 0..app.fields.len() {
+            shown.push_str(&screen(&app));
+            key(&mut app, KeyCode::Char('j'));
+        }
+        for label in [
+            "speed V̂_b0",
+            "undercut E",
+            "swing angle ψ",
+            "spin decay τ",
+            "bat tilt τ_B",
+            "wind aim φ_w",
+            "bat aim φ_B",
+            "elevation h",
+            "wind base h_w",
+        ] {
+            assert!(shown.contains(label), "{w}×{h}: {label}");
+        }
+    }
+}
+
+/// Issue 28, item 10: in the picker g and G jump to the top and bottom; a
+/// name with spaces is saved fixed up (spaces to '-'), and the preset row's
+/// hint then describes the preset saved.
+#[test]
+fn the_picker_jumps_and_a_name_with_spaces_is_fixed_up() {
+    use homerun::tui::app::Mode;
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = app(80, 24, Some(dir.path().to_owned()));
+    key(&mut app, KeyCode::Char('o'));
+    key(&mut app, KeyCode::Char('G'));
+    let Mode::Open {
+        items, selected, ..
+    } = &app.mode
+    else {
+        panic!("the picker is open");
+    };
+    assert_eq!(*selected, items.len() - 1);
+    key(&mut app, KeyCode::Char('g'));
+    assert!(matches!(app.mode, Mode::Open { selected: 0, .. }));
+    key(&mut app, KeyCode::Esc);
+    key(&mut app, KeyCode::Char('s'));
+    for _ in 0..20 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "class demo");
+    key(&mut app, KeyCode::Enter);
+    assert!(!matches!(app.mode, Mode::Save { .. }), "saved, not refused");
+    assert_eq!(app.preset_name, "class-demo");
+    homerun::preset::load("class-demo", Some(dir.path())).unwrap();
+    assert!(
+        app.description.starts_with("saved from the explorer"),
+        "{}",
+        app.description
+    );
+}
+
+/// Issue 28, item 10: h and l on the preset row load the previous and next
+/// preset, and its hint follows the preset loaded.
+#[test]
+fn h_and_l_on_the_preset_row_cycle_the_presets() {
+    use homerun::tui::app::Field;
+    let mut app = app(80, 24, None);
+    app.selected = app.fields.iter().position(|f| *f == Field::Preset).unwrap();
+    let names: Vec<String> = homerun::preset::bundled()
+        .into_iter()
+        .map(|p| p.name)
+        .collect();
+    key(&mut app, KeyCode::Char('l'));
+    assert_eq!(app.preset_name, names[1]);
+    let loaded = homerun::preset::load(&names[1], None).unwrap();
+    assert_eq!(app.description, loaded.description);
+    key(&mut app, KeyCode::Char('h'));
+    key(&mut app, KeyCode::Char('h'));
+    assert_eq!(app.preset_name, names[names.len() - 1]);
+}
