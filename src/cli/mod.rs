@@ -60,7 +60,7 @@ pub struct Cli {
     /// Folder for the user's own parks (default: $XDG_CONFIG_HOME/homerun/parks).
     #[arg(long, global = true, value_name = "DIR")]
     pub parks_dir: Option<PathBuf>,
-    /// Units printed: si (the default) or imperial (ft, mph, rpm, °); see `homerun --help`.
+    /// Units printed, and of a bare number typed: si (default) or imperial (ft, mph, °, rpm).
     #[arg(
         long,
         global = true,
@@ -78,9 +78,12 @@ pub struct Cli {
 /// What `--units` does, said once, under `homerun --help` (every command
 /// takes `--units`, and its own help gives one line).
 pub const UNITS_HELP: &str = "Units: --units imperial prints the text and CSV in ft, in, mph, °, rpm, °F, inHg and oz \
-     instead of si's m, m/s, rad, rad/s, °C, hPa and kg. JSON is always SI, and so is a bare number \
-     in --set, a preset or a batch cell (103mph, 28deg, 2500rpm, 400ft, 70F take their unit); the numbers of sweep's --from/--to and surface's --undercut/--swing-angle are taken in the \
-     units printed. The explorer starts in them (its `u` switches).";
+     instead of si's m, m/s, rad, rad/s, °C, hPa and kg. What you see is what you type: a bare number \
+     in --set, sweep's --from/--to and surface's --undercut/--swing-angle is in the unit printed \
+     (--units imperial --set launch.speed=100 is 100 mph), and a number with a unit takes its unit \
+     (103mph, 28deg, 2500rpm, 400ft, 70F). JSON is always SI, and so is a bare number in a preset \
+     file or a batch column named by its key (a file means what it says, whatever the flag). \
+     The explorer starts in these units (its `u` switches).";
 
 // Which preset to start from, and changes to it. (Not a doc comment: it
 // would become the about of each command that flattens these; see
@@ -382,7 +385,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         ..
     } = command
     {
-        let preset = scene.resolve(checked_presets_dir(cli)?.as_deref())?;
+        let preset = scene.resolve(checked_presets_dir(cli)?.as_deref(), cli.units)?;
         scene::check_path("--batch", source)?;
         let parks = preset::parks::all(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
@@ -422,7 +425,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
     } = command
     {
         let dir = checked_presets_dir(cli)?;
-        let preset = scene.resolve(dir.as_deref())?;
+        let preset = scene.resolve(dir.as_deref(), cli.units)?;
         scene::check_path("calibrate", file)?;
         let parks = preset::parks::all(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
@@ -489,7 +492,7 @@ fn render_pieces(cli: &Cli, command: &Command) -> Result<Vec<String>, UsageError
     threads::start_pool();
     let dir = checked_presets_dir(cli)?;
     let shown = Shown(cli.units);
-    let preset = scene.resolve(dir.as_deref())?;
+    let preset = scene.resolve(dir.as_deref(), cli.units)?;
     scene::swing_only("surface", &preset)?;
     let cells = surface::parse_grid(undercut.as_deref(), swing_angle.as_deref(), grid, shown)?;
     if svg.is_some() {
@@ -504,16 +507,18 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
     let dir = dir.as_deref();
     let shown = Shown(cli.units);
     match command {
-        Command::Hit { scene, json } => {
-            Ok(hit::hit(&scene.resolve_swing("hit", dir)?, *json, shown))
-        }
+        Command::Hit { scene, json } => Ok(hit::hit(
+            &scene.resolve_swing("hit", dir, cli.units)?,
+            *json,
+            shown,
+        )),
         Command::Optimize {
             scene,
             json,
             park: None,
             ..
         } => Ok(optimize::optimum(
-            &scene.resolve_swing("optimize", dir)?,
+            &scene.resolve_swing("optimize", dir, cli.units)?,
             *json,
             shown,
         )),
@@ -524,7 +529,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             fix,
         } => {
             let held = optimize::held(fix)?;
-            let mut preset = scene.resolve(dir)?;
+            let mut preset = scene.resolve(dir, cli.units)?;
             scene::swing_only("optimize", &preset)?;
             let parks = preset::parks::all(parks_dir(cli).as_deref())?;
             let park = parks
@@ -547,7 +552,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             own_air,
             ..
         } => {
-            let mut preset = scene.resolve(dir)?;
+            let mut preset = scene.resolve(dir, cli.units)?;
             let parks = preset::parks::all(parks_dir(cli).as_deref())?;
             let generic = ground::generic_fence(&preset);
             let ground = match park {
@@ -583,7 +588,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             json,
             csv,
         } => optimize::sweep(
-            &scene.resolve_swing("sweep", dir)?,
+            &scene.resolve_swing("sweep", dir, cli.units)?,
             key,
             (from, to, *steps),
             Format::new(*json, *csv),
@@ -610,7 +615,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             csv,
             svg,
         } => {
-            let preset = scene.resolve(dir)?;
+            let preset = scene.resolve(dir, cli.units)?;
             if svg.is_some() {
                 return hit::trajectory_svg(&preset, *samples);
             }
