@@ -290,3 +290,70 @@ fn the_outline_is_an_svg_with_every_wall_height_in_its_legend() {
         Some(2)
     );
 }
+
+/// Issue 28, item 7: a park by its code, name or city, any case, wherever
+/// the command line takes one; a name that fits several lists them in one
+/// line.
+#[test]
+fn a_park_is_found_by_code_name_or_city() {
+    use homerun::model::park::Named;
+    for query in [
+        "BOS",
+        "bos",
+        "fenway",
+        "Fenway Park",
+        "FENWAY  park",
+        "boston",
+    ] {
+        match park::named(park::bundled(), query) {
+            Named::One(p) => assert_eq!(p.code, "BOS", "{query}"),
+            other => panic!("{query}: {other:?}"),
+        }
+    }
+    for (query, code) in [("coors", "COL"), ("Kansas City", "KC"), ("camden", "BAL")] {
+        match park::named(park::bundled(), query) {
+            Named::One(p) => assert_eq!(p.code, code, "{query}"),
+            other => panic!("{query}: {other:?}"),
+        }
+    }
+    match park::named(park::bundled(), "chicago") {
+        Named::Several(several) => {
+            let codes: Vec<&str> = several.iter().map(|p| p.code.as_str()).collect();
+            assert_eq!(codes, ["CHC", "CWS"]);
+        }
+        other => panic!("chicago: {other:?}"),
+    }
+    assert!(matches!(park::named(park::bundled(), "xyz"), Named::None));
+    let homerun = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_homerun"))
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    for args in [
+        &["fly", "--preset", "fly-ball", "--park", "Fenway Park"][..],
+        &["parks", "fenway"],
+        &[
+            "optimize",
+            "--park",
+            "boston",
+            "--fix",
+            "bat.direction",
+            "--fix",
+            "bat.undercut",
+        ],
+    ] {
+        let out = homerun(args);
+        assert!(out.status.success(), "{args:?}: {out:?}");
+        assert!(
+            String::from_utf8_lossy(&out.stdout).contains("Fenway Park"),
+            "{args:?}"
+        );
+    }
+    let out = homerun(&["fly", "--park", "new york"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        "homerun: park \"new york\" could be NYM (Citi Field, New York), NYY (Yankee Stadium, New York): give one of these codes\n"
+    );
+}

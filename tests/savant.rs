@@ -113,7 +113,7 @@ fn a_line_drive_off_the_green_monster_clears_the_crawford_boxes() {
     // A park unknown: one line, exit 2.
     let (status, _, err) = homerun(&["fly", "--park", "XYZ"], None);
     assert_eq!(status, Some(2));
-    assert!(err.contains("no park with code \"XYZ\""), "{err}");
+    assert!(err.contains("no park named \"XYZ\""), "{err}");
 }
 
 /// A Savant export in its 2019 layout: quoted fields, "null", `pitcher`

@@ -144,10 +144,11 @@ pub enum Command {
         #[arg(long)]
         json: bool,
         /// The park whose fence the ball meets, and whose air it flies in unless
-        /// air or weather keys are given: a Savant home_team code (`homerun parks`
-        /// lists them) [default: the generic fence, the same in every direction;
-        /// with --batch: each row's home_team].
-        #[arg(long, value_name = "CODE")]
+        /// air or weather keys are given: a code (Savant's home_team), a name or a
+        /// city, any case (BOS, fenway, "Fenway Park", boston; `homerun parks` lists
+        /// them) [default: the generic fence, the same in every direction; with
+        /// --batch: each row's home_team].
+        #[arg(long, value_name = "PARK")]
         park: Option<String>,
         /// Also list every park with the outcome and margin there.
         #[arg(long, conflicts_with = "batch")]
@@ -182,8 +183,8 @@ pub enum Command {
         file: String,
         #[command(flatten)]
         scene: SceneArgs,
-        /// The park every row is at [default: each row's home_team].
-        #[arg(long, value_name = "CODE")]
+        /// The park every row is at, by code, name or city [default: each row's home_team].
+        #[arg(long, value_name = "PARK")]
         park: Option<String>,
         /// What Savant's spray angle is (as `fly --batch --spray`).
         #[arg(long, value_name = "WHAT", default_value = "landing")]
@@ -272,7 +273,7 @@ pub enum Command {
     /// The ballparks: code, name, elevation, distances and tallest wall; with
     /// CODE, that park's fence every 5° and at each change of wall height.
     Parks {
-        /// A park's code, as Baseball Savant's home_team (e.g. BOS).
+        /// A park: its code (Baseball Savant's home_team, e.g. BOS), name or city.
         code: Option<String>,
         /// Print JSON (SI: metres, radians from centre field, + toward right field).
         #[arg(long)]
@@ -532,9 +533,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             let mut preset = scene.resolve(dir, cli.units)?;
             scene::swing_only("optimize", &preset)?;
             let parks = preset::parks::all(parks_dir(cli).as_deref())?;
-            let park = parks
-                .find(code)
-                .ok_or_else(|| parks::unknown(code, &parks))?;
+            let park = parks::lookup(code, &parks)?;
             ground::to_park(&mut preset.scene, park, ground::given_weather(&scene.set));
             Ok(optimize::park_optimum(
                 &preset.scene,
@@ -557,9 +556,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             let generic = ground::generic_fence(&preset);
             let ground = match park {
                 Some(code) => {
-                    let park = parks
-                        .find(code)
-                        .ok_or_else(|| parks::unknown(code, &parks))?;
+                    let park = parks::lookup(code, &parks)?;
                     ground::to_park(&mut preset.scene, park, ground::given_weather(&scene.set));
                     ground::Ground::Park(park)
                 }
@@ -601,7 +598,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             let Some(code) = code else {
                 return Ok(parks::list(&all, *json, shown));
             };
-            let park = all.find(code).ok_or_else(|| parks::unknown(code, &all))?;
+            let park = parks::lookup(code, &all)?;
             if svg.is_some() {
                 return Ok(crate::picture::park_svg(park)?);
             }

@@ -106,11 +106,12 @@ impl<'a> Setup<'a> {
         setup.spin_given = keys.contains(&"launch.spin");
         setup.sidespin_given = keys.contains(&"launch.sidespin");
         if let Some(code) = park {
+            let named = super::super::parks::lookup(code, parks)?;
             let found = parks
                 .parks
                 .iter()
-                .position(|p| p.answers_to(code.trim()))
-                .ok_or_else(|| super::super::parks::unknown(code, parks))?;
+                .position(|p| std::ptr::eq(p, named))
+                .expect("a park of the list");
             setup.park = Some(found);
         }
         Ok(setup)
