@@ -11,8 +11,6 @@
 use std::fmt::Write as _;
 
 fn main() {
-    link_at_a_fixed_address();
-    bundled_presets();
     let source = "data/parks.toml";
     println!("cargo::rerun-if-changed={source}");
     println!("cargo::rerun-if-changed=build.rs");
@@ -74,72 +72,4 @@ fn main() {
     let path =
         std::path::Path::new(&std::env::var("OUT_DIR").expect("OUT_DIR")).join("bundled_parks.rs");
     std::fs::write(path, out).expect("OUT_DIR is writable");
-}
-
-/// Turns `presets/*.toml` (`src/preset/mod.rs` bundles them) into
-/// statics (`$OUT_DIR/bundled_presets.rs`): each preset's entries as the
-/// TOML crate gives them, in its order, for `preset::bundled` to read as it
-/// reads a file's (its TOML parse was a third of a command's start-up work
-/// before its own; a test holds the two equal).
-fn bundled_presets() {
-    println!("cargo::rerun-if-changed=presets");
-    let mut names: Vec<String> = std::fs::read_dir("presets")
-        .expect("presets/ is readable")
-        .filter_map(|entry| {
-            let name = entry.ok()?.file_name().into_string().ok()?;
-            Some(name.strip_suffix(".toml")?.to_owned())
-        })
-        .collect();
-    names.sort();
-    let mut out = String::from("&[\n");
-    for name in names {
-        let source = format!("presets/{name}.toml");
-        println!("cargo::rerun-if-changed={source}");
-        let text = std::fs::read_to_string(&source).expect("a bundled preset is readable");
-        let table: toml::Table = text.parse().expect("a bundled preset is TOML");
-        let _ = write!(out, "({name:?}, &[");
-        for (key, value) in &table {
-            let _ = write!(out, "({key:?}, {}), ", preset_value(value));
-        }
-        out.push_str("]),\n");
-    }
-    out.push(']');
-    let path = std::path::Path::new(&std::env::var("OUT_DIR").expect("OUT_DIR"))
-        .join("bundled_presets.rs");
-    std::fs::write(path, out).expect("OUT_DIR is writable");
-}
-
-/// A bundled preset's value as `preset::bundled::Value` (an integer as the
-/// float a file's integer is read as).
-fn preset_value(value: &toml::Value) -> String {
-    match value {
-        toml::Value::Float(f) => format!("Value::Number({f:?})"),
-        toml::Value::Integer(i) => format!("Value::Number({:?})", *i as f64),
-        toml::Value::String(text) => format!("Value::Text({text:?})"),
-        toml::Value::Table(table) => {
-            let entries: Vec<String> = table
-                .iter()
-                .map(|(key, value)| format!("({key:?}, {})", preset_value(value)))
-                .collect();
-            format!("Value::Table(&[{}])", entries.join(", "))
-        }
-        other => panic!("a bundled preset holds only numbers, texts and tables, not {other}"),
-    }
-}
-
-/// A binary linked statically (glibc too: `.cargo/config.toml` turns on
-/// `crt-static`) is also linked at a fixed address, not as rustc links it
-/// (position-independent, `-static-pie`): its ~5400 relocations are then
-/// done by the linker, not at each start (0.1 ms of `homerun --version`).
-/// The code stays position-independent, for the tests and doctests linked
-/// against the library; only the binary is linked so.
-fn link_at_a_fixed_address() {
-    let var = |name| std::env::var(name).unwrap_or_default();
-    let crt_static = var("CARGO_CFG_TARGET_FEATURE")
-        .split(',')
-        .any(|feature| feature == "crt-static");
-    if crt_static && var("CARGO_CFG_TARGET_OS") == "linux" && var("CARGO_CFG_TARGET_ENV") == "gnu" {
-        println!("cargo::rustc-link-arg-bins=-static");
-        println!("cargo::rustc-link-arg-bins=-no-pie");
-    }
 }

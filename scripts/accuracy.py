@@ -15,10 +15,8 @@ import statistics
 import subprocess
 import sys
 
-# The release binary, under the host's target (.cargo/config.toml names it).
-HOST = subprocess.run(["rustc", "--print", "host-tuple"], capture_output=True, text=True,
-                      check=True).stdout.strip()
-BINARY = f"target/{HOST}/release/homerun"
+# The release binary (`cargo build --release`).
+BINARY = "target/release/homerun"
 FT = 0.3048
 BANDS = [(-90, 20, "< 20°"), (20, 25, "20–25°"), (25, 30, "25–30°"), (30, 35, "30–35°"),
          (35, 90, "≥ 35°")]

@@ -7,7 +7,7 @@ are seeded, so that before/after timings fly the same balls.
     python3 scripts/batch_rows.py planar 200000 > /tmp/planar.csv
     python3 scripts/batch_rows.py spray 200000 > /tmp/spray.csv
     python3 scripts/batch_rows.py savant 200000 > /tmp/savant.csv
-    time RAYON_NUM_THREADS=2 target/x86_64-unknown-linux-gnu/release/homerun fly --preset fly-ball \
+    time RAYON_NUM_THREADS=2 target/release/homerun fly --preset fly-ball \
         --batch /tmp/planar.csv > /dev/null
 
 planar: launch.speed, launch.angle, launch.spin (m/s, rad, rad/s), in the

@@ -14,10 +14,8 @@ import os
 import subprocess
 import tempfile
 
-# The release binary, under the host's target (.cargo/config.toml names it).
-HOST = subprocess.run(["rustc", "--print", "host-tuple"], capture_output=True, text=True,
-                      check=True).stdout.strip()
-BINARY = f"target/{HOST}/release/homerun"
+# The release binary (`cargo build --release`).
+BINARY = "target/release/homerun"
 
 
 def runnable(command):

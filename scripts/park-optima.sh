@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet
-homerun=target/$(rustc --print host-tuple)/release/homerun
+homerun=target/release/homerun
 echo "| park | batter | E | ψ | φ_B | launch | crosses the fence | wall there | margin | over the wall | inside the line |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|"
 for park in LAD NYY BOS HOU SF COL; do

@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet
-homerun=target/$(rustc --print host-tuple)/release/homerun
+homerun=target/release/homerun
 "$homerun" trajectory --samples 201 --svg docs/trajectory.svg
 "$homerun" trajectory --samples 201 --preset fly-ball --set launch.direction=-0.349066 --set launch.sidespin=-104.72 --set environment.wind=4.4704 --set environment.wind_direction=1.570796 --svg docs/trajectory-3d.svg
 "$homerun" surface --grid 61x49 --svg docs/surface.svg

@@ -23,7 +23,7 @@ A developer's script (never run by the tests; docs/speed.md explains the
 columns):
 
     cargo build --release
-    python3 scripts/versus_scipy.py                       # target/<host tuple>/release/homerun
+    python3 scripts/versus_scipy.py                       # target/release/homerun
     python3 scripts/versus_scipy.py --homerun /work/wt/notes/homerun-before18
 """
 import argparse
@@ -220,10 +220,8 @@ def fmt_time(seconds):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    # The release binary, under the host's target (.cargo/config.toml names it).
-    host = subprocess.run(["rustc", "--print", "host-tuple"], capture_output=True, text=True,
-                          check=True).stdout.strip()
-    parser.add_argument("--homerun", default=os.path.join(HERE, "..", "target", host, "release",
+    # The release binary (`cargo build --release`).
+    parser.add_argument("--homerun", default=os.path.join(HERE, "..", "target", "release",
                                                           "homerun"))
     parser.add_argument("--rows", type=int, default=200_000, help="rows per batch")
     parser.add_argument("--repeats", type=int, default=3, help="runs of each command (best kept)")

@@ -20,6 +20,9 @@ fn main() -> ExitCode {
         theme: None,
     };
     let command = cli.command.as_ref().unwrap_or(&default);
+    if let Err(error) = cli::check_thread_count() {
+        return refuse(&error);
+    }
     // Refused before any work: a batch would fly every row for nothing.
     if stdout_at_start::closed() && cli::writes_stdout(command) {
         return refuse(&cli::UsageError::StdoutClosed);

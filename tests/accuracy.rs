@@ -21,6 +21,8 @@ const FOOT: f64 = 0.3048;
 /// the hit coordinates kept to tell which rows had them.
 fn default_pipeline(args: &[&str]) -> Vec<Value> {
     let out = Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .args(["fly", "--batch", SAMPLE, "--json", "--keep", "hc_x,hc_y"])
         .args(args)
         .output()

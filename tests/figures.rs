@@ -310,6 +310,8 @@ fn preset_and_set_apply() {
 fn an_unknown_figure_is_exit_status_2() {
     let dir = tempfile::tempdir().unwrap();
     let output = assert_cmd::Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--presets-dir")
         .arg(dir.path())
         .args(["figure", "2"])

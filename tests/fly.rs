@@ -16,7 +16,11 @@ use serde_json::Value;
 
 fn homerun(presets: &Path) -> Command {
     let mut command = Command::new(env!("CARGO_BIN_EXE_homerun"));
-    command.arg("--presets-dir").arg(presets);
+    command
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
+        .arg("--presets-dir")
+        .arg(presets);
     command
 }
 

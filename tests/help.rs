@@ -9,7 +9,10 @@ use homerun::cli::{Cli, Parsed, UNITS_HELP, parse};
 use unicode_width::UnicodeWidthStr as _;
 
 fn homerun() -> Command {
-    Command::cargo_bin("homerun").unwrap()
+    let mut command = Command::cargo_bin("homerun").unwrap();
+    // No user folder: the developer's own presets and parks are never read.
+    command.env_remove("HOME").env_remove("XDG_CONFIG_HOME");
+    command
 }
 
 /// Every argument of `command` and its subcommands, by the path of

@@ -21,7 +21,11 @@ const LIMIT: Duration = Duration::from_secs(10);
 /// count), at most [`LIMIT`] of time and 1 GiB of address space.
 fn run(dir: &Path, args: &[&str]) -> Output {
     let mut std = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"));
-    std.arg("--presets-dir").arg(dir).args(args);
+    std.env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
+        .arg("--presets-dir")
+        .arg(dir)
+        .args(args);
     // SAFETY: `setrlimit` is async-signal-safe and touches no memory of ours.
     unsafe {
         std.pre_exec(|| {
@@ -373,7 +377,7 @@ fn saving_a_preset_onto_a_fifo_or_a_device_is_refused_at_once() {
         let mut results = Vec::new();
         for name in ["pipe", "null", "dir", "new"] {
             preset.name = name.to_owned();
-            results.push(preset.save(&root).map_err(|e| e.to_string()));
+            results.push(preset.save(&root, false).map_err(|e| e.to_string()));
         }
         send.send(results).unwrap();
     });
@@ -400,5 +404,224 @@ fn saving_a_preset_onto_a_fifo_or_a_device_is_refused_at_once() {
     assert_eq!(
         homerun::preset::Preset::read(saved).unwrap().scene,
         homerun::preset::load("fastball", None).unwrap().scene
+    );
+}
+
+/// A CSV `calibrate` fits: home runs' launches (mph, °) and distances (ft),
+/// with `extra` columns after them (the header's, then each row's cells).
+fn calibration_csv(dir: &Path, extra: (&str, &[String])) -> PathBuf {
+    let mut text = format!("launch_speed,launch_angle,hit_distance_sc{}\n", extra.0);
+    for i in 0..12 {
+        let (speed, angle) = (98 + i, 24 + i % 8);
+        let distance = 380 + 6 * i;
+        let cells = extra.1.get(i as usize).map_or("", String::as_str);
+        text += &format!("{speed},{angle},{distance}{cells}\n");
+    }
+    let path = dir.join("flights.csv");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// Issue 25 row 5: `--svg out.svg` wrote its bytes to `.out.svg.PID.tmp`
+/// with `File::create`, which follows a link planted there. The temporary
+/// is now created new, at a name nobody can guess: links planted at every
+/// PID the run may have are left alone.
+#[test]
+fn svg_never_writes_through_a_link_planted_at_a_temporary_name() {
+    let (dir, elsewhere) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
+    let victim = elsewhere.path().join("victim");
+    std::fs::write(&victim, "keep me").unwrap();
+    let read = |file: &str| {
+        std::fs::read_to_string(file)
+            .ok()
+            .and_then(|t| t.trim().parse::<u32>().ok())
+    };
+    let last = read("/proc/sys/kernel/ns_last_pid").unwrap_or_else(std::process::id);
+    let max = read("/proc/sys/kernel/pid_max").unwrap_or(u32::MAX);
+    for next in last + 1..=last + 3000 {
+        // Past the largest PID, Linux starts again from 300.
+        let pid = if next > max { next - max + 300 } else { next };
+        let planted = dir.path().join(format!(".out.svg.{pid}.tmp"));
+        std::os::unix::fs::symlink(&victim, planted).unwrap();
+    }
+    let out = dir.path().join("out.svg");
+    let output = run(dir.path(), &["trajectory", "--svg", out.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    assert_eq!(std::fs::read_to_string(&victim).unwrap(), "keep me");
+    assert!(std::fs::symlink_metadata(&out).unwrap().is_file());
+    assert!(std::fs::read_to_string(&out).unwrap().contains("<svg"));
+    // A link out of the folder at the target itself is not written through.
+    let link = dir.path().join("link.svg");
+    std::os::unix::fs::symlink(&victim, &link).unwrap();
+    refused(
+        dir.path(),
+        &["trajectory", "--svg", link.to_str().unwrap()],
+        &["link.svg", "outside its folder"],
+    );
+    assert_eq!(std::fs::read_to_string(&victim).unwrap(), "keep me");
+}
+
+/// Issue 25 row 6: `calibrate --save x` wrote through `x.toml`, a link out
+/// of the presets folder, and silently overwrote a user's preset or hid a
+/// bundled one. Each is refused, before the fit, in one line (exit 2);
+/// `--force` overwrites and hides, never writes through the link.
+#[test]
+fn calibrate_save_refuses_links_out_and_overwrites_without_force() {
+    let (dir, elsewhere) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
+    let parks = elsewhere.path().join("parks");
+    let parks = ["--parks-dir", parks.to_str().unwrap()];
+    let csv = calibration_csv(elsewhere.path(), ("", &[]));
+    let csv = csv.to_str().unwrap();
+    let victim = elsewhere.path().join("victim.toml");
+    std::fs::write(&victim, "keep me").unwrap();
+    std::os::unix::fs::symlink(&victim, dir.path().join("x.toml")).unwrap();
+    let save = |name: &str, force: bool| {
+        let mut args = parks.to_vec();
+        args.extend(["calibrate", csv, "--save", name]);
+        if force {
+            args.push("--force");
+        }
+        args.into_iter().map(str::to_owned).collect::<Vec<_>>()
+    };
+    fn args(v: &[String]) -> Vec<&str> {
+        v.iter().map(String::as_str).collect()
+    }
+    let x = save("x", false);
+    refused(dir.path(), &args(&x), &["preset `x` exists", "--force"]);
+    let x = save("x", true);
+    refused(dir.path(), &args(&x), &["x.toml", "outside its folder"]);
+    assert_eq!(std::fs::read_to_string(&victim).unwrap(), "keep me");
+    let fastball = save("fastball", false);
+    refused(
+        dir.path(),
+        &args(&fastball),
+        &["`fastball` is a bundled preset", "--force"],
+    );
+    assert!(!dir.path().join("fastball.toml").exists());
+    // A new name is saved; again, it is refused; with --force, replaced.
+    let mine = save("mine", false);
+    assert_eq!(run(dir.path(), &args(&mine)).status.code(), Some(0));
+    refused(dir.path(), &args(&mine), &["preset `mine` exists"]);
+    let mine = save("mine", true);
+    assert_eq!(run(dir.path(), &args(&mine)).status.code(), Some(0));
+    let fastball = save("fastball", true);
+    assert_eq!(run(dir.path(), &args(&fastball)).status.code(), Some(0));
+    assert!(dir.path().join("fastball.toml").is_file());
+}
+
+/// Issue 25 row 10: rows with a hang time of 0 or an apex of 10⁹ ft were
+/// fitted, pinning the factors at their bounds. Each is named (column,
+/// value, range) and left out; the rest are fitted.
+#[test]
+fn calibrate_leaves_out_implausible_measurements_naming_each() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut cells: Vec<String> = (0..12).map(|_| ",5.6,110".to_owned()).collect();
+    cells[3] = ",0,110".into();
+    cells[7] = ",5.6,1000000000".into();
+    let csv = calibration_csv(dir.path(), (",hang_time,apex", &cells));
+    let parks = dir.path().join("parks");
+    let output = run(
+        dir.path(),
+        &[
+            "--parks-dir",
+            parks.to_str().unwrap(),
+            "calibrate",
+            csv.to_str().unwrap(),
+            "--json",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(0), "{stderr}");
+    assert!(
+        stderr.contains("line 5: hang_time = 0 s: outside (0, 12] s"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("line 9: apex = 1.000e9 ft: outside (0, 492.1] ft"),
+        "{stderr}"
+    );
+    assert_eq!(stderr.lines().count(), 2, "{stderr}");
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(json["implausible"], 2);
+    assert_eq!(json["measured"], 10);
+}
+
+/// A fit that ends at a bound of its search says so, and is not saved
+/// without --force: hang times of 11.5 s for 400 ft flies ask more lift
+/// than model.lift_scale's 3.
+#[test]
+fn calibrate_says_when_a_factor_ends_at_its_bound_and_saves_it_only_forced() {
+    let dir = tempfile::tempdir().unwrap();
+    let cells: Vec<String> = (0..12).map(|_| ",11.5".to_owned()).collect();
+    let csv = calibration_csv(dir.path(), (",hang_time", &cells));
+    let parks = dir.path().join("parks");
+    let (parks, csv) = (parks.to_str().unwrap(), csv.to_str().unwrap());
+    let output = run(dir.path(), &["--parks-dir", parks, "calibrate", csv]);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    assert!(
+        stdout.contains("model.lift_scale = 3.0000 ended at the end of [0, 3] searched"),
+        "{stdout}"
+    );
+    let save = ["--parks-dir", parks, "calibrate", csv, "--save", "pinned"];
+    refused(
+        dir.path(),
+        &save,
+        &[
+            "calibrate --save pinned: ",
+            "model.lift_scale = 3.0000 ended at the end of [0, 3] searched",
+            "not saved (--force",
+        ],
+    );
+    assert!(!dir.path().join("pinned.toml").exists());
+    let forced = [&save[..], &["--force"]].concat();
+    assert_eq!(run(dir.path(), &forced).status.code(), Some(0));
+    assert!(dir.path().join("pinned.toml").is_file());
+}
+
+/// Issue 25 row 11: 6,600 user parks took 2.35 GB over a batch. At most
+/// 200 are read, with one note; a fence of more than 1000 points is refused.
+#[test]
+fn user_parks_are_capped_with_one_note() {
+    let (dir, parks) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
+    let park = |code: &str, points: usize| {
+        let step = std::f64::consts::FRAC_PI_2 / (points - 1) as f64;
+        let fence: String = (0..points)
+            .map(|i| {
+                let direction = -std::f64::consts::FRAC_PI_4 + step * i as f64;
+                format!("  {{ direction = {direction:.6}, distance = 100, height = 3 }},\n")
+            })
+            .collect();
+        format!(
+            "[[park]]\ncode = \"{code}\"\nname = \"Park {code}\"\nelevation = 10\ncenter_field_bearing = 45\nfence = [\n{fence}]\n"
+        )
+    };
+    for i in 0..260 {
+        let code = format!("Q{i:03}");
+        std::fs::write(parks.path().join(format!("{code}.toml")), park(&code, 3)).unwrap();
+    }
+    let list = ["--parks-dir", parks.path().to_str().unwrap(), "parks"];
+    let output = run(dir.path(), &list);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(0), "{stderr}");
+    one_line(&stderr, &list);
+    assert!(
+        stderr.contains("more than 200 parks or files (260 files); only the first 200 parks"),
+        "{stderr}"
+    );
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        stdout.contains("Q199") && !stdout.contains("Q200"),
+        "{stdout}"
+    );
+    // A fence of 1001 points: the file is refused, naming it.
+    for i in 0..260 {
+        std::fs::remove_file(parks.path().join(format!("Q{i:03}.toml"))).unwrap();
+    }
+    std::fs::write(parks.path().join("dense.toml"), park("DNS", 1001)).unwrap();
+    refused(
+        dir.path(),
+        &list,
+        &["dense.toml", "has 1001 points; a fence takes at most 1000"],
     );
 }

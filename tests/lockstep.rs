@@ -6,10 +6,9 @@
 use homerun::Purpose;
 use homerun::model::flight::{FlightOptions, FlightSummary};
 use homerun::model::launch::{BattedBall, SceneFlight};
-use homerun::model::many::{fly_many, fly_many_on, judge_many, land_many_on};
+use homerun::model::many::{fly_many, judge_many, land_many};
 use homerun::model::park::{Fence, bundled};
 use homerun::model::scene::Scene;
-use homerun::numerics::ode::lanes::LaneCode;
 
 /// A small deterministic generator (no dependency for a test's dice).
 struct Dice(u64);
@@ -198,75 +197,11 @@ fn lock_step_flights_find_the_fences_the_single_flight_finds() {
     assert_eq!(seen, flights.len());
 }
 
-/// Whether the CPU says it has AVX2, asked without the program's own
-/// detection (Linux's /proc/cpuinfo), so that a detection that failed
-/// cannot pass for a CPU without it.
-fn cpuinfo_has_avx2() -> Option<bool> {
-    let info = std::fs::read_to_string("/proc/cpuinfo").ok()?;
-    let flags = info.lines().find(|line| line.starts_with("flags"))?;
-    Some(flags.split_whitespace().any(|flag| flag == "avx2"))
-}
-
-#[test]
-fn the_avx2_lanes_give_the_baseline_lanes_bits() {
-    // Every kind of flight, at a surface's and at the readout's tolerance,
-    // and without stopping at the kinks (each evaluation's own drag piece).
-    let flights = random_flights(240, 29);
-    let fly = |code: LaneCode, options: &FlightOptions| {
-        let mut all = vec![None; flights.len()];
-        fly_many_on(code, flights.iter().copied(), options, |index, summary| {
-            all[index] = Some(summary);
-        });
-        all.into_iter()
-            .map(|summary| summary.expect("every flight reported"))
-            .collect::<Vec<FlightSummary>>()
-    };
-    // Debug prints each number's shortest exact form: equal strings are
-    // equal bits (−0.0 included).
-    let bits = |summary: &FlightSummary| format!("{summary:?}");
-    let no_kinks = FlightOptions {
-        stop_at_kinks: false,
-        ..Purpose::Readout.flight_options()
-    };
-    let option_sets = [
-        Purpose::Surface.flight_options(),
-        Purpose::Readout.flight_options(),
-        no_kinks,
-    ];
-    let avx2 = LaneCode::Avx2.runs_here();
-    if let Some(has) = cpuinfo_has_avx2() {
-        assert_eq!(avx2, has, "AVX2 detected {avx2}, /proc/cpuinfo says {has}");
-    }
-    if !avx2 {
-        eprintln!("no AVX2 on this CPU: the baseline lanes alone are checked");
-        assert_eq!(LaneCode::detected(), LaneCode::Baseline);
-    }
-    for options in &option_sets {
-        let baseline = fly(LaneCode::Baseline, options);
-        // The other tests check the detected lanes against single flights;
-        // here the baseline's are flown whatever the CPU.
-        for (k, flight) in flights.iter().enumerate().step_by(7) {
-            assert_eq!(baseline[k].landed, flight.fly(options).landed, "flight {k}");
-        }
-        if avx2 {
-            assert_eq!(LaneCode::detected(), LaneCode::Avx2);
-            let wide = fly(LaneCode::Avx2, options);
-            for (k, (b, w)) in baseline.iter().zip(&wide).enumerate() {
-                assert_eq!(
-                    bits(b),
-                    bits(w),
-                    "flight {k}: baseline lanes against AVX2's"
-                );
-            }
-        }
-    }
-}
-
 #[test]
 fn flights_asked_for_their_range_alone_are_the_same_flights() {
     // Without their apexes located (a step that only passes one is left
     // unseen), each flight's range, time, work and landing are its whole
-    // summary's, bit for bit: on both lanes, at a surface's tolerance, the
+    // summary's, bit for bit: at a surface's tolerance, the
     // readout's and without the kinks.
     let flights = random_flights(240, 41);
     let no_kinks = FlightOptions {
@@ -278,26 +213,24 @@ fn flights_asked_for_their_range_alone_are_the_same_flights() {
         Purpose::Readout.flight_options(),
         no_kinks,
     ];
-    for code in [LaneCode::Baseline, LaneCode::detected()] {
-        for options in &option_sets {
-            let mut whole = vec![None; flights.len()];
-            fly_many_on(code, flights.iter().copied(), options, |index, summary| {
-                whole[index] = Some(summary.range_summary());
-            });
-            let mut ranges = vec![None; flights.len()];
-            land_many_on(code, flights.iter().copied(), options, |index, range| {
-                assert!(ranges[index].is_none(), "flight {index} reported twice");
-                ranges[index] = Some(range);
-            });
-            for (k, (whole, range)) in whole.iter().zip(&ranges).enumerate() {
-                // Debug prints each number's shortest exact form.
-                let whole = whole.expect("every flight reported");
-                assert_eq!(
-                    format!("{whole:?}"),
-                    format!("{:?}", range.expect("every flight reported")),
-                    "{code:?}, flight {k}"
-                );
-            }
+    for options in &option_sets {
+        let mut whole = vec![None; flights.len()];
+        fly_many(flights.iter().copied(), options, |index, summary| {
+            whole[index] = Some(summary.range_summary());
+        });
+        let mut ranges = vec![None; flights.len()];
+        land_many(flights.iter().copied(), options, |index, range| {
+            assert!(ranges[index].is_none(), "flight {index} reported twice");
+            ranges[index] = Some(range);
+        });
+        for (k, (whole, range)) in whole.iter().zip(&ranges).enumerate() {
+            // Debug prints each number's shortest exact form.
+            let whole = whole.expect("every flight reported");
+            assert_eq!(
+                format!("{whole:?}"),
+                format!("{:?}", range.expect("every flight reported")),
+                "flight {k}"
+            );
         }
     }
 }

@@ -34,6 +34,8 @@ fn homerun(args: &[&str]) -> std::process::Output {
     let none = tempfile::tempdir().unwrap();
     Command::cargo_bin("homerun")
         .unwrap()
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--presets-dir")
         .arg(none.path())
         .arg("--parks-dir")

@@ -136,6 +136,8 @@ fn coors_field_is_a_mile_high_and_parks_face_their_own_way() {
 fn homerun(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
     Command::cargo_bin("homerun")
         .unwrap()
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--parks-dir")
         .arg(dir)
         .args(args)

@@ -280,7 +280,10 @@ fn the_work_precision_diagram_has_a_line_per_setting_and_a_dot_per_row() {
 }
 
 fn homerun() -> Command {
-    Command::cargo_bin("homerun").unwrap()
+    let mut command = Command::cargo_bin("homerun").unwrap();
+    // No user folder: the developer's own presets and parks are never read.
+    command.env_remove("HOME").env_remove("XDG_CONFIG_HOME");
+    command
 }
 
 #[test]

@@ -65,3 +65,72 @@ fn descriptions_and_names_are_escaped() {
         "{listing}"
     );
 }
+
+/// The user's folders come from XDG_CONFIG_HOME or HOME alone (no lookup of
+/// the user, which crashed a static glibc under an unknown uid); with
+/// neither, every command works on the bundled presets and parks, and only
+/// a save says it has no folder.
+#[test]
+fn the_user_folders_come_from_the_environment_alone() {
+    let run = |env: &[(&str, &std::path::Path)], args: &[&str]| {
+        let mut command = Command::cargo_bin("homerun").unwrap();
+        command.env_clear().args(args);
+        for (name, value) in env {
+            command.env(name, value);
+        }
+        command.output().unwrap()
+    };
+    let data = tempfile::tempdir().unwrap();
+    let rows = data.path().join("rows.csv");
+    std::fs::write(
+        &rows,
+        "launch_speed,launch_angle,hit_distance_sc\n105,28,400\n104,30,395\n106,27,405\n",
+    )
+    .unwrap();
+    let rows = rows.to_str().unwrap();
+    // Neither variable set.
+    for args in [
+        &["keys"][..],
+        &["fly", "--preset", "fly-ball"],
+        &["parks", "BOS"],
+        &["optimize", "--park", "BOS"],
+        &["fly", "--batch", rows, "--preset", "fly-ball"],
+        &["calibrate", rows],
+    ] {
+        let out = run(&[], args);
+        assert!(out.status.success(), "{args:?}: {out:?}");
+        assert!(!out.stdout.is_empty(), "{args:?}");
+    }
+    let listing = String::from_utf8(run(&[], &["presets"]).stdout).unwrap();
+    assert!(listing.contains("No user preset folder"), "{listing}");
+    let out = run(&[], &["calibrate", rows, "--save", "mine"]);
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(stderr.contains(homerun::preset::NO_FOLDER), "{stderr}");
+    // HOME alone: ~/.config/homerun; XDG_CONFIG_HOME first when absolute.
+    let home = tempfile::tempdir().unwrap();
+    let xdg = tempfile::tempdir().unwrap();
+    let saved = |env: &[(&str, &std::path::Path)]| {
+        let out = run(env, &["calibrate", rows, "--save", "mine"]);
+        assert!(out.status.success(), "{env:?}: {out:?}");
+    };
+    saved(&[("HOME", home.path())]);
+    assert!(
+        home.path()
+            .join(".config/homerun/presets/mine.toml")
+            .is_file()
+    );
+    saved(&[("HOME", home.path()), ("XDG_CONFIG_HOME", xdg.path())]);
+    assert!(xdg.path().join("homerun/presets/mine.toml").is_file());
+    let relative = std::path::Path::new("relative");
+    let listing = run(
+        &[("HOME", home.path()), ("XDG_CONFIG_HOME", relative)],
+        &["presets"],
+    );
+    let listing = String::from_utf8(listing.stdout).unwrap();
+    let folder = home.path().join(".config/homerun/presets");
+    assert!(
+        listing.contains(&format!("Your presets: {}", folder.display())),
+        "{listing}"
+    );
+}

@@ -91,7 +91,7 @@ fn f2_a_swings_launch_out_of_bounds_is_not_frozen_nor_saved() {
     let dir = tempfile::tempdir().unwrap();
     let mut frozen = swing;
     frozen.scene = frozen.scene.with_launch(frozen.scene.batted_ball());
-    let error = frozen.save(dir.path()).unwrap_err().to_string();
+    let error = frozen.save(dir.path(), true).unwrap_err().to_string();
     assert!(
         error.starts_with("fierce.toml: launch.spin = ") && error.contains("[-1000, 1000] rad/s"),
         "{error}"
@@ -129,12 +129,12 @@ fn f2_every_batted_ball_flown_loads_back_from_its_saved_preset() {
                             match batted.validate() {
                                 Ok(()) => {
                                     accepted += 1;
-                                    let path = preset.save(dir.path()).unwrap();
+                                    let path = preset.save(dir.path(), true).unwrap();
                                     assert_eq!(Preset::read(&path).unwrap().scene, batted);
                                 }
                                 Err(_) => {
                                     refused += 1;
-                                    assert!(preset.save(dir.path()).is_err());
+                                    assert!(preset.save(dir.path(), true).is_err());
                                 }
                             }
                         }
@@ -401,6 +401,8 @@ fn f6_errors_show_extreme_values_short_and_without_inf() {
 /// `fly --batch -` on `input`: (status, stdout, stderr).
 fn batch(presets: &Path, input: &str) -> (Option<i32>, String, String) {
     let output = Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--presets-dir")
         .arg(presets)
         .args(["fly", "--batch", "-"])
@@ -453,6 +455,8 @@ fn with_stdout_closed(presets: &Path, args: &[&str], input: &str) -> (Option<i32
     use std::os::unix::process::CommandExt as _;
     let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"));
     command
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--presets-dir")
         .arg(presets)
         .args(args)

@@ -412,3 +412,64 @@ fn the_margin_thread_cancels_old_maps_and_finishes_the_new() {
         "{sent} of {blocks} blocks sent after the cancel"
     );
 }
+
+/// Issue 25 row 12: a preset's description (and name) or a park's name
+/// holding U+202E (right-to-left override) was printed raw, reversing the
+/// rest of the line on the terminal. Every text from a file is escaped,
+/// and no bidirectional or control character reaches a cell.
+#[test]
+fn bidi_controls_from_files_never_reach_the_screen() {
+    let presets = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string("presets/fly-ball.toml").unwrap();
+    let description = text
+        .lines()
+        .find(|l| l.starts_with("description"))
+        .unwrap()
+        .to_owned();
+    let evil = text.replace(
+        &description,
+        "description = \"harmless\u{202e}txt.exe \u{2066}x\u{2069} \\u001b[2J\"",
+    );
+    std::fs::write(presets.path().join("evil.toml"), evil).unwrap();
+    let parks = tempfile::tempdir().unwrap();
+    let park = "[[park]]\ncode = \"RLO\"\nname = \"Left\u{202e}Right\"\nelevation = 10\ncenter_field_bearing = 45\nfence = [\n  { direction = -0.7854, distance = 80, height = 2 },\n  { direction = 0.7854, distance = 80, height = 2 },\n]\n";
+    std::fs::write(parks.path().join("rlo.toml"), park).unwrap();
+    let mut app = app(120, 40, Some(presets.path().to_owned()));
+    settle(&mut app);
+    app.load_parks(Some(parks.path()));
+    let clean = |screen: &str| {
+        !screen
+            .chars()
+            .any(|c| homerun::preset::needs_escape(c) && c != '\n')
+    };
+    // The picker shows the description escaped.
+    key(&mut app, KeyCode::Char('o'));
+    let shown = screen(&app);
+    assert!(clean(&shown), "{shown:?}");
+    assert!(shown.contains("harmless\\u{202e}txt.exe"), "{shown}");
+    // Loaded: its description under the inputs, escaped.
+    for _ in 0..20 {
+        let homerun::tui::app::Mode::Open {
+            items, selected, ..
+        } = &app.mode
+        else {
+            panic!("the picker is open")
+        };
+        if items[*selected].name == "evil" {
+            key(&mut app, KeyCode::Enter);
+            break;
+        }
+        key(&mut app, KeyCode::Down);
+    }
+    assert_eq!(app.preset_name, "evil");
+    settle(&mut app);
+    let shown = screen(&app);
+    assert!(clean(&shown), "{shown:?}");
+    // The user's park, chosen: its name escaped wherever it shows.
+    key(&mut app, KeyCode::Char('M'));
+    key(&mut app, KeyCode::Char('5'));
+    settle(&mut app);
+    let shown = screen(&app);
+    assert!(clean(&shown), "{shown:?}");
+    assert!(shown.contains("RLO"), "{shown}");
+}

@@ -355,6 +355,8 @@ fn the_fence_reads_the_same_in_the_cli_and_the_explorer() {
         ("imperial", "400 ft, 10 ft high: over by 30.2 ft"),
     ] {
         let output = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"))
+            .env_remove("HOME")
+            .env_remove("XDG_CONFIG_HOME")
             .args(["fly", "--units", units])
             .output()
             .unwrap();

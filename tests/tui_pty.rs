@@ -36,6 +36,8 @@ impl Session {
         let mut command = CommandBuilder::new(env!("CARGO_BIN_EXE_homerun"));
         command.args(args);
         command.env("TERM", "xterm-256color");
+        command.env_remove("HOME");
+        command.env_remove("XDG_CONFIG_HOME");
         command.env_remove("COLORTERM");
         command.env_remove("NO_COLOR");
         command.env_remove("COLORFGBG");
@@ -207,6 +209,8 @@ fn sigterm_restores_the_terminal_and_exits() {
 #[test]
 fn without_a_terminal_it_points_at_the_cli() {
     let output = std::process::Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .stdin(std::process::Stdio::null())
         .output()
         .unwrap();

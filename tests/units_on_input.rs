@@ -161,6 +161,8 @@ fn preset_strings_take_units_as_set_does() {
 
 fn homerun(presets: &Path, args: &[&str], stdin: &str) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--presets-dir")
         .arg(presets)
         .args(args)
@@ -221,15 +223,14 @@ fn batch_cells_take_units_and_statcast_columns_keep_theirs() {
         typed[0].starts_with("46.0451,0.488692,261.799,"),
         "{typed:?}"
     );
-    // A Statcast column is mph already: a unit there is no number.
-    let output = homerun(
-        dir.path(),
-        &["fly", "--batch", "-"],
-        "launch_speed\n103mph\n",
-    );
+    // A Statcast column is mph when bare, and takes a unit as --set does
+    // (issue 26): the same launch either way; a word is still no number.
+    let units = flown("launch_speed,launch_angle,spin_rpm\n103mph,28deg,2500rpm\n");
+    assert_eq!(units[0], statcast[0]);
+    let output = homerun(dir.path(), &["fly", "--batch", "-"], "launch_speed\nfast\n");
     assert_eq!(output.status.code(), Some(1));
     assert!(
-        String::from_utf8_lossy(&output.stderr).contains("launch_speed = \"103mph\": not a number"),
+        String::from_utf8_lossy(&output.stderr).contains("launch_speed = \"fast\": not a number"),
         "{output:?}"
     );
 }

@@ -34,6 +34,60 @@ pub struct Measured {
     pub apex: Option<f64>,
 }
 
+/// A measured quantity's plausible range, (0, `high`], and why: a row
+/// with a measurement outside is left out of the fit, since one absurd
+/// number (a hang time of 0, an apex of 10⁹ ft) drags the medians and
+/// pins a factor at its bound.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plausible {
+    /// The upper end (m or s); the lower is 0, excluded: no flight.
+    pub high: f64,
+    pub why: &'static str,
+}
+
+impl Plausible {
+    pub fn holds(&self, value: f64) -> bool {
+        value > 0.0 && value <= self.high
+    }
+}
+
+/// Distance (m): the longest home runs measured are about 154 m (Statcast's
+/// longest, 505 ft); 200 m leaves room for wind and thin air.
+pub const DISTANCE: Plausible = Plausible {
+    high: 200.0,
+    why: "the longest home runs measured are about 154 m, 505 ft",
+};
+/// Hang time (s): a ball hit straight up at 70 m/s (157 mph, past any exit
+/// speed measured) is back down in 10.0 s against the paper's drag
+/// (`fly --set launch.speed=70 --set launch.angle=1.5 --set launch.spin=0`);
+/// the longest pop-ups measured hang about 7 s.
+pub const HANG_TIME: Plausible = Plausible {
+    high: 12.0,
+    why: "a ball hit straight up at 157 mph is back down in about 10 s",
+};
+/// Apex (m): the same ball rises 122 m (250 m in a vacuum); the highest
+/// pop-ups measured are near 50 m.
+pub const APEX: Plausible = Plausible {
+    high: 150.0,
+    why: "a ball hit straight up at 157 mph rises about 122 m",
+};
+
+/// The first of a row's measurements outside its plausible range: which
+/// range (one of [`DISTANCE`], [`HANG_TIME`], [`APEX`]) and the value.
+pub fn implausible(
+    distance: f64,
+    hang_time: Option<f64>,
+    apex: Option<f64>,
+) -> Option<(Plausible, f64)> {
+    [
+        (DISTANCE, Some(distance)),
+        (HANG_TIME, hang_time),
+        (APEX, apex),
+    ]
+    .into_iter()
+    .find_map(|(range, value)| value.filter(|v| !range.holds(*v)).map(|v| (range, v)))
+}
+
 /// A fitted factor and its standard error.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Estimate {
@@ -86,6 +140,26 @@ pub struct Fit {
     pub second_after: Option<Errors>,
     /// Trials flown (each flies every row once).
     pub trials: usize,
+}
+
+impl Fit {
+    /// The factors that ended at an end of the range searched (the key,
+    /// its value, the range): the medians pull them further, which the
+    /// model's physics cannot follow, and points to measurements that do
+    /// not describe flights.
+    pub fn at_bounds(&self) -> Vec<(&'static str, f64, (f64, f64))> {
+        let ended = |value: f64, (low, high): (f64, f64)| {
+            (value - low).abs() < 10.0 * TOLERANCE || (value - high).abs() < 10.0 * TOLERANCE
+        };
+        let mut out = Vec::new();
+        if ended(self.drag_scale.value, DRAG_RANGE) {
+            out.push(("model.drag_scale", self.drag_scale.value, DRAG_RANGE));
+        }
+        if let Some(lift) = self.lift_scale.filter(|l| ended(l.value, LIFT_RANGE)) {
+            out.push(("model.lift_scale", lift.value, LIFT_RANGE));
+        }
+        out
+    }
 }
 
 /// Why no fit.

@@ -24,12 +24,6 @@ pub enum Purpose {
     /// A drawn trajectory: a braille dot is ~0.5 m at the smallest zoom; the
     /// points are sampled from the dense output at the plot's resolution.
     Plot,
-    /// A `fly --batch` row printed as CSV (to 1 mm, 1 ms, 1e-4 rad; the
-    /// direction to 1e-6 rad): flown looser than the readout, then flown
-    /// again at [`Purpose::Readout`] unless every printed digit and every
-    /// outcome stands [`BATCH_GUARD`] away from where it would change, so
-    /// that the batch prints exactly what `fly` prints.
-    Batch,
     /// A flight of a launch direction's solve (`analysis::savant`), which
     /// wants the landing direction to 1e-4 rad: its flights need it to a
     /// hundredth of that, 1e-6 rad, ~1.5e-4 m sideways at 150 m.
@@ -38,39 +32,13 @@ pub enum Purpose {
     Reference,
 }
 
-/// How far (SI) a [`Purpose::Batch`] flight's numbers may be from the
-/// readout's: a printed digit, a margin's sign or a foul line this close
-/// to a change sends the row to the readout's flight. Each is ~10× the
-/// worst difference from the readout's over 200 000 Statcast-like rows,
-/// planar and with spray and sidespin (`scripts/batch_rows.py`'s spread):
-/// 9.3e-7 m in range (pop-ups at 75°), 6.3e-8 s, 5.7e-9 rad. So ~4 % of
-/// planar rows and ~13 % of 3-D ones (the direction, printed to 1e-6 rad)
-/// are flown twice, and the rest once at ~55 % of the readout's cost.
-pub const BATCH_GUARD: Guard = Guard {
-    distance: 1e-5,
-    time: 1e-6,
-    angle: 5e-8,
-};
-
-/// Bounds on the difference between two precisions' numbers.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Guard {
-    /// Ranges, heights, margins (m).
-    pub distance: f64,
-    /// Flight times (s).
-    pub time: f64,
-    /// Directions and landing angles (rad).
-    pub angle: f64,
-}
-
 impl Purpose {
     /// The consumers, each with a budget.
-    pub const CONSUMERS: [Purpose; 6] = [
+    pub const CONSUMERS: [Purpose; 5] = [
         Purpose::Readout,
         Purpose::Optimizer,
         Purpose::Surface,
         Purpose::Plot,
-        Purpose::Batch,
         Purpose::Solve,
     ];
 
@@ -88,9 +56,6 @@ impl Purpose {
             Purpose::Surface => 0.25 * 40.0 / 16.0,
             // A quarter of a braille dot at the smallest zoom.
             Purpose::Plot => 0.1,
-            // Well inside the guard, which must bound its distance from
-            // the readout's numbers (tested over many rows below).
-            Purpose::Batch => BATCH_GUARD.distance / 4.0,
             // A hundredth of the solve's 1e-4 rad, at 150 m.
             Purpose::Solve => 1e-6 * 150.0,
             Purpose::Reference => 1e-8,
@@ -117,12 +82,6 @@ impl Purpose {
             // ≤ 5e-5 m at every one of 300 points read off the dense output
             // (Table II): far inside a braille dot.
             Purpose::Plot => Tolerance::uniform(1e-6),
-            // Statcast-like rows: 119 evaluations a row against the
-            // readout's 213 (Nathan's model), worst 9.3e-7 m off it over
-            // 200 000 rows. 1e-8 (98) is 2.9e-6 m off, and its guard would
-            // send ~45 % of 3-D rows to a second flight; 1e-9 (143) leaves
-            // too little to gain.
-            Purpose::Batch => Tolerance::uniform(3e-9),
             // 3e-5 m on Table II; the landing direction of Statcast-like
             // 3-D flights within 8.4e-9 rad of the reference's (worst of
             // 400), 120× inside the budget, in 92 evaluations against the
@@ -223,88 +182,5 @@ mod tests {
             }
         }
         assert!(worst <= Purpose::Surface.range_budget(), "{worst}");
-    }
-
-    /// Statcast-like batted balls (~88 ± 14 mph, ~12 ± 25°, backspin
-    /// rising with the angle; with `spray`, directions to ±44° and
-    /// sidespin ~100 rad/s) under Nathan's model and the paper's.
-    fn statcast_like(rows: usize, spray: bool) -> Vec<Scene> {
-        let mut uniform = crate::numerics::xorshift::uniform(0x9e37_79b9_7f4a_7c15);
-        let gauss = |u: &mut dyn FnMut() -> f64| {
-            let (a, b) = (u().max(1e-300), u());
-            (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
-        };
-        (0..rows)
-            .map(|i| {
-                let speed = (88.0 + 14.0 * gauss(&mut uniform)).clamp(30.0, 120.0);
-                let angle = (12.0 + 25.0 * gauss(&mut uniform)).clamp(-60.0, 75.0);
-                let rpm = -763.0 + 120.0 * f64::max(angle, 5.0) + 400.0 * gauss(&mut uniform);
-                let (direction, sidespin) = if spray {
-                    (
-                        (88.0 * uniform() - 44.0).to_radians(),
-                        100.0 * gauss(&mut uniform),
-                    )
-                } else {
-                    (0.0, 0.0)
-                };
-                let mut scene = Scene::default();
-                if i % 2 == 0 {
-                    scene.set_text("model.drag", "nathan").unwrap();
-                    scene.set_text("model.lift", "nathan").unwrap();
-                }
-                scene.with_launch(crate::model::launch::BattedBall {
-                    speed: speed * 0.44704,
-                    angle: angle.to_radians(),
-                    spin: rpm.clamp(200.0, 4500.0) * std::f64::consts::TAU / 60.0,
-                    direction,
-                    sidespin,
-                })
-            })
-            .collect()
-    }
-
-    #[test]
-    fn a_batch_flight_stays_well_inside_its_guard_of_the_readout() {
-        use crate::model::launch::scene_start;
-        use crate::model::park::Fence;
-        // The generic fence and a deep one: margins over and under walls.
-        let (near, deep) = (Fence::uniform(121.92, 3.0), Fence::uniform(135.0, 11.3));
-        let fences = [&near, &deep];
-        let mut worst = [0.0_f64; 3];
-        for spray in [false, true] {
-            for scene in statcast_like(3000, spray) {
-                let (flight, _, _) = scene_start(&scene);
-                let judge = |purpose: Purpose| flight.judge(&purpose.flight_options(), &fences);
-                let ((batch, batch_at), (readout, readout_at)) =
-                    (judge(Purpose::Batch), judge(Purpose::Readout));
-                assert_eq!(batch.landed, readout.landed);
-                let margins = batch_at.iter().zip(&readout_at).map(|(a, b)| {
-                    assert_eq!(a.outcome, b.outcome, "{scene:?}");
-                    match (a.margin, b.margin) {
-                        (Some(a), Some(b)) => (a - b).abs(),
-                        _ => 0.0,
-                    }
-                });
-                let distance = margins
-                    .chain([batch.range - readout.range, batch.apex - readout.apex])
-                    .fold(0.0_f64, |w, e| w.max(e.abs()));
-                let time = (batch.flight_time - readout.flight_time).abs();
-                let angle = (batch.landing_angle - readout.landing_angle)
-                    .abs()
-                    .max((batch.direction - readout.direction).abs());
-                for (w, e) in worst.iter_mut().zip([distance, time, angle]) {
-                    *w = w.max(e);
-                }
-            }
-        }
-        // A quarter of the guard at most: the guard is ~10× the worst of
-        // 200 000 rows, these 6000 must stay well inside it.
-        let guard = [BATCH_GUARD.distance, BATCH_GUARD.time, BATCH_GUARD.angle];
-        for ((w, g), what) in worst.iter().zip(guard).zip(["m", "s", "rad"]) {
-            assert!(*w <= g / 4.0, "{w:e} {what} against a guard of {g:e}");
-        }
-        // And the batch's tolerance is no tighter than it needs to be: the
-        // worst is within ~100× of the guard (1e-9 would be ~5× tighter).
-        assert!(worst[0] > BATCH_GUARD.distance / 100.0, "{worst:?}");
     }
 }

@@ -254,9 +254,8 @@ fn landing_direction(summary: &FlightSummary) -> f64 {
 }
 
 /// [`launch`] for many rows (each its scene and row), in their order: the
-/// direction solves go on together, a round of flights at a time, flown in
-/// lock-step where the lanes fly a flight bit for bit as it flies alone
-/// ([`many::flies_alone_alike`]), else one by one. So each row's launch is
+/// direction solves go on together, a round of flights at a time, each
+/// flight's answer its own ([`many::judge_many`]). So each row's launch is
 /// [`launch`]'s, to the bit.
 pub fn launch_many<'s>(
     rows: impl IntoIterator<Item = (&'s Scene, &'s RowLaunch)>,
@@ -285,16 +284,11 @@ pub fn launch_many<'s>(
         let flights: Vec<SceneFlight> = solving.iter().map(|(_, s)| s.flight()).collect();
         summaries.clear();
         summaries.resize(flights.len(), None);
-        let (alike, alone): (Vec<usize>, Vec<usize>) =
-            (0..flights.len()).partition(|&k| many::flies_alone_alike(&flights[k]));
-        many::judge_many_alone(
-            alike.iter().map(|&k| (flights[k], &[][..])),
+        many::judge_many(
+            flights.iter().map(|&flight| (flight, &[][..])),
             options,
-            |index, summary, _| summaries[alike[index]] = Some(summary),
+            |index, summary, _| summaries[index] = Some(summary),
         );
-        for k in alone {
-            summaries[k] = Some(flights[k].fly(options));
-        }
         let mut flown = summaries.iter();
         solving.retain_mut(|(index, solve)| {
             let summary = flown.next().copied().flatten().expect("every flight flown");

@@ -14,7 +14,6 @@ mod parks;
 mod presets;
 mod progress;
 mod scene;
-mod shortest;
 mod shown;
 mod surface;
 mod svg_file;
@@ -39,6 +38,7 @@ use shown::Shown;
 pub use crate::preset::FIELD_KEYS;
 pub use optimize::MAX_STEPS;
 pub use surface::{MAX_GRID, SURFACE_FLIGHT_STEPS};
+pub use threads::{MAX_THREADS, check_thread_count};
 pub use usage::{Parsed, error_line, parse};
 
 #[derive(Parser, Debug)]
@@ -48,7 +48,9 @@ pub use usage::{Parsed, error_line, parse};
     about = "The physics of hitting a baseball as far as possible (Sawicki, Hubbard & Stronge 2003).",
     long_about = "The physics of hitting a baseball as far as possible, after Sawicki, Hubbard & Stronge, \
                   \"How to hit home runs\", Am. J. Phys. 71 (2003).\n\n\
-                  With no command, opens the explorer (a terminal app); the commands below print numbers.",
+                  With no command, opens the explorer (a terminal app); the commands below print numbers.\n\n\
+                  RAYON_NUM_THREADS sets how many threads share the work: a whole number from 0 (one per CPU, \
+                  as when it is unset) to 256; any other value is refused.",
     after_long_help = UNITS_HELP
 )]
 pub struct Cli {
@@ -197,6 +199,10 @@ pub enum Command {
         /// Save the preset with the factors found as NAME in the presets folder.
         #[arg(long, value_name = "NAME")]
         save: Option<String>,
+        /// With --save: overwrite a preset of that name, hide a bundled one,
+        /// or save a factor that ended at its bound.
+        #[arg(long, requires = "save")]
+        force: bool,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
@@ -393,7 +399,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
     {
         let preset = scene.resolve(checked_presets_dir(cli)?.as_deref(), cli.units)?;
         scene::check_path("--batch", source)?;
-        let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+        let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
         setup.own_air = !*one_flight;
@@ -405,6 +411,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
                 .collect();
         }
         let stdout = std::io::stdout().lock();
+        setup.escape_kept = stdout.is_terminal();
         let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
         let mut err = std::io::stderr().lock();
         let erase = err.is_terminal();
@@ -427,16 +434,21 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         park,
         spray,
         save,
+        force,
         json,
     } = command
     {
         let dir = checked_presets_dir(cli)?;
         let preset = scene.resolve(dir.as_deref(), cli.units)?;
         scene::check_path("calibrate", file)?;
-        let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+        let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
-        let save = save.as_deref().map(|name| (name, dir.as_deref()));
+        let save = save.as_deref().map(|name| batch::calibrate::Save {
+            name,
+            dir: dir.as_deref(),
+            force: *force,
+        });
         let text = batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?;
         print!("{text}");
         return Ok(ExitCode::SUCCESS);
@@ -452,8 +464,9 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         eprintln!("wrote {}", svg_file::shown(path));
         return Ok(ExitCode::SUCCESS);
     }
-    let mut stdout = std::io::stdout().lock();
-    match write_pieces(&mut stdout, &pieces).and_then(|()| stdout.flush()) {
+    let mut stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
+    let written = (pieces.iter()).try_for_each(|piece| stdout.write_all(piece.as_bytes()));
+    match written.and_then(|()| stdout.flush()) {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
         _ => Ok(ExitCode::SUCCESS),
     }
@@ -494,8 +507,6 @@ fn render_pieces(cli: &Cli, command: &Command) -> Result<Vec<String>, UsageError
     else {
         return Ok(vec![render(cli, command)?]);
     };
-    // The pool's thread starts while the scene is read.
-    threads::start_pool();
     let dir = checked_presets_dir(cli)?;
     let shown = Shown(cli.units);
     let preset = scene.resolve(dir.as_deref(), cli.units)?;
@@ -537,7 +548,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             let held = optimize::held(fix)?;
             let mut preset = scene.resolve(dir, cli.units)?;
             scene::swing_only("optimize", &preset)?;
-            let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+            let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let park = parks::lookup(code, &parks)?;
             ground::to_park(&mut preset.scene, park, ground::given_weather(&scene.set));
             Ok(optimize::park_optimum(
@@ -557,7 +568,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             ..
         } => {
             let mut preset = scene.resolve(dir, cli.units)?;
-            let parks = preset::parks::all(parks_dir(cli).as_deref())?;
+            let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let generic = ground::generic_fence(&preset);
             let ground = match park {
                 Some(code) => {
@@ -600,7 +611,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         Command::Surface { .. } => Ok(render_pieces(cli, command)?.concat()),
         Command::Presets => Ok(presets::presets(preset::check_dir(dir)?)),
         Command::Parks { code, json, svg } => {
-            let all = preset::parks::all(parks_dir(cli).as_deref())?;
+            let all = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let Some(code) = code else {
                 return Ok(parks::list(&all, *json, shown));
             };
@@ -643,24 +654,6 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         Command::Tui { .. } => Err(UsageError::NotHeadless),
         Command::Calibrate { .. } => unreachable!("run() answers calibrate"),
     }
-}
-
-/// Writes `pieces` one after another, as few calls as the system takes
-/// (`writev`), without joining them first.
-fn write_pieces(out: &mut impl std::io::Write, pieces: &[String]) -> std::io::Result<()> {
-    use std::io::{ErrorKind, IoSlice};
-    let mut slices: Vec<IoSlice> = pieces.iter().map(|p| IoSlice::new(p.as_bytes())).collect();
-    let mut slices = &mut slices[..];
-    IoSlice::advance_slices(&mut slices, 0);
-    while !slices.is_empty() {
-        match out.write_vectored(slices) {
-            Ok(0) => return Err(ErrorKind::WriteZero.into()),
-            Ok(written) => IoSlice::advance_slices(&mut slices, written),
-            Err(e) if e.kind() == ErrorKind::Interrupted => {}
-            Err(e) => return Err(e),
-        }
-    }
-    Ok(())
 }
 
 /// `job`, with a progress line giving the time it has taken once it passes a

@@ -4,7 +4,6 @@
 use std::fmt::Write as _;
 
 use super::progress::{self, Work};
-use super::shortest;
 use super::shown::Shown;
 use super::table::{Cell, Column, Digits, Table};
 use super::{Format, UsageError, WindowFault, pretty};
@@ -193,7 +192,6 @@ fn within_budget<T>(
         what: "surface",
         steps: Some((grid.columns * grid.rows, "cells")),
     };
-    super::threads::start_pool();
     progress::run(work, |p| fly(&|| p.tick())).map_err(|work| too_much(text, work))
 }
 
@@ -320,7 +318,7 @@ fn csv_header(shown: Shown) -> String {
 /// once, not once a cell).
 fn undercut_texts(grid: Grid, shown: Shown) -> Vec<String> {
     (0..grid.columns)
-        .map(|i| shortest::text(shown.convert(Quantity::Size, grid.undercut_at(i))) + ",")
+        .map(|i| format!("{},", shown.convert(Quantity::Size, grid.undercut_at(i))))
         .collect()
 }
 
@@ -347,15 +345,13 @@ fn csv_lines(
     for (k, &outcome) in (first..).zip(outcomes) {
         let (i, j) = (k % grid.columns, k / grid.columns);
         if row.0 != j {
-            let mut swing_angle =
-                shortest::text(shown.convert(Quantity::Angle, grid.swing_angle_at(j)));
-            swing_angle.push(',');
-            row = (j, swing_angle);
+            let swing_angle = shown.convert(Quantity::Angle, grid.swing_angle_at(j));
+            row = (j, format!("{swing_angle},"));
         }
         text.push_str(&undercuts[i]);
         text.push_str(&row.1);
         if let Some(range) = outcome.range() {
-            shortest::push(&mut text, shown.convert(Quantity::Distance, range));
+            let _ = write!(text, "{}", shown.convert(Quantity::Distance, range));
         }
         text.push_str(match landed(outcome) {
             Some(true) => ",true\n",

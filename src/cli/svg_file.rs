@@ -37,7 +37,7 @@ pub(super) fn check(path: &Path) -> Result<(), UsageError> {
         return Ok(());
     }
     // Through a link, the file replaced is the one it points to.
-    let resolved = crate::atomic_file::resolved(path);
+    let resolved = crate::atomic_file::resolved(path).map_err(|e| refused(path, e.to_string()))?;
     let dir = folder(&resolved);
     if !dir.exists() {
         return Err(refused(
@@ -48,17 +48,12 @@ pub(super) fn check(path: &Path) -> Result<(), UsageError> {
     if !dir.is_dir() {
         return Err(refused(path, format!("{} is not a folder", shown(dir))));
     }
-    let probe = resolved.with_file_name(format!(".homerun-probe.{}.tmp", std::process::id()));
-    match std::fs::File::create(&probe) {
-        Ok(_) => {
-            let _ = std::fs::remove_file(&probe);
-            Ok(())
-        }
-        Err(e) => Err(refused(
+    crate::atomic_file::probe(&resolved).map_err(|e| {
+        refused(
             path,
             format!("cannot write in the folder {}: {e}", shown(dir)),
-        )),
-    }
+        )
+    })
 }
 
 /// Writes `svg` to `path` atomically: the whole file or none.

@@ -90,7 +90,7 @@ impl Column {
         match cell {
             Cell::Num(x) => match self.digits {
                 Digits::Fixed(decimals) => format!("{x:.decimals$}"),
-                Digits::Shortest => super::shortest::text(*x),
+                Digits::Shortest => x.to_string(),
                 Digits::Trimmed => crate::analysis::figures::trimmed(*x),
             },
             Cell::Text(t) => t.clone(),
@@ -211,7 +211,9 @@ impl Table {
                         text.push(',');
                     }
                     match &row[k] {
-                        Cell::Num(x) => super::shortest::push(&mut text, *x),
+                        Cell::Num(x) => {
+                            let _ = write!(text, "{x}");
+                        }
                         Cell::Text(t) if t.contains([',', '"']) => {
                             text.push('"');
                             text.push_str(&t.replace('"', "\"\""));

@@ -64,6 +64,16 @@ pub enum UsageError {
         length: usize,
         max: usize,
     },
+    /// A thread count (`RAYON_NUM_THREADS`) out of bounds, or no number.
+    #[error(
+        "{variable}={value:?}: must be a whole number from 0 (one thread per CPU, as when unset) to {max}",
+        max = super::threads::MAX_THREADS
+    )]
+    BadThreadCount {
+        variable: &'static str,
+        /// As set, its first 40 characters.
+        value: String,
+    },
     /// A command line clap refused, in one line.
     #[error("{0}")]
     CommandLine(String),
@@ -110,6 +120,8 @@ pub enum UsageError {
     /// `calibrate FILE`'s file could not be read or fitted (named as given).
     #[error("calibrate {input}: {message}")]
     Calibrate { input: String, message: String },
+    #[error("calibrate --save {name}: {message}")]
+    CalibrateSave { name: String, message: String },
     #[error("no park named {code:?} (a code, a park's name or its city); the parks: {accepted}")]
     UnknownPark { code: String, accepted: String },
     #[error("park {query:?} could be {candidates}: give one of these codes")]

@@ -2,7 +2,6 @@
 //! and the simplex search. Nothing here knows about baseballs; nothing here
 //! imports the rest of the crate.
 
-pub mod cpu;
 pub mod nelder_mead;
 pub mod ode;
 pub mod real;

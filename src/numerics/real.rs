@@ -305,13 +305,8 @@ lanes_real!(f64x8, wide::u64x8);
 /// What the flights in lock-step need of their numbers beyond [`Real`]:
 /// [`LANES`] of them, one flight's each, read and written one at a time.
 ///
-/// Two types have it: [`Lane`] (`wide`'s, whose instructions are chosen
-/// when the crate is compiled: two SSE2 pairs for baseline x86-64), and,
-/// on x86-64, `Avx2Lane` (`real/avx2.rs`), one AVX register, for the
-/// lock-step loop's clone that runs where the CPU has AVX2
-/// ([`super::ode::lanes`]). Reading
-/// and writing lanes goes through memory, never through an instruction a
-/// CPU might lack.
+/// [`Lane`] (`wide`'s, whose instructions are chosen when the crate is
+/// compiled: two SSE2 pairs for baseline x86-64) has it.
 pub trait LaneReal: Real + std::fmt::Debug {
     fn from_array(lanes: [f64; LANES]) -> Self;
     fn to_array(self) -> [f64; LANES];
@@ -365,12 +360,6 @@ impl LaneReal for f64x4 {
         mask.to_bitmask()
     }
 }
-
-#[cfg(target_arch = "x86_64")]
-pub(crate) use avx2::Avx2Lane;
-
-#[cfg(target_arch = "x86_64")]
-mod avx2;
 
 #[cfg(test)]
 mod tests {

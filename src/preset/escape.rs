@@ -8,6 +8,12 @@ pub fn escape_for_terminal(text: &str) -> String {
     escape_cut(text, 80)
 }
 
+/// Escapes like [`escape_for_terminal`], never cutting: for text a screen
+/// lays out itself (the explorer's preset names and descriptions).
+pub fn escape_text(text: &str) -> String {
+    escape_cut(text, usize::MAX)
+}
+
 /// Escapes like [`escape_for_terminal`], cutting at `max` characters (the
 /// "…" included), never inside an escape.
 pub fn escape_cut(text: &str, max: usize) -> String {
@@ -46,7 +52,11 @@ fn cut_pieces(text: &str, max: usize, escape: fn(char) -> bool) -> String {
     out
 }
 
-fn needs_escape(c: char) -> bool {
+/// Whether `c` is escaped: a control character (C0, DEL, C1), a
+/// bidirectional control (U+061C, U+200E/F, U+202A–E, U+2066–9), a line or
+/// paragraph separator, or an invisible format character (zero-width
+/// spaces and joiners, word joiner, BOM).
+pub fn needs_escape(c: char) -> bool {
     c.is_control()
         || matches!(
             c,
@@ -70,5 +80,18 @@ mod tests {
         // Nothing escaped: the caller quotes it with its own escapes.
         assert_eq!(cut("a\x1bb", 80), "a\x1bb");
         assert_eq!(escape_cut("a\x1bb", 80), "a\\u{1b}b");
+    }
+
+    #[test]
+    fn every_bidi_control_is_escaped() {
+        for c in [
+            '\u{61c}', '\u{200e}', '\u{200f}', '\u{202a}', '\u{202b}', '\u{202c}', '\u{202d}',
+            '\u{202e}', '\u{2066}', '\u{2067}', '\u{2068}', '\u{2069}',
+        ] {
+            assert!(needs_escape(c), "{c:?}");
+            let shown = escape_text(&format!("a{c}b"));
+            assert!(!shown.contains(c) && shown.starts_with("a\\u{"), "{shown}");
+        }
+        assert_eq!(escape_text("Fenway é"), "Fenway é");
     }
 }

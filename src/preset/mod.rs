@@ -1,23 +1,21 @@
 //! Presets: TOML files ↔ [`Scene`], with errors that name the key, and a save
 //! that never leaves a broken file (temporary file, then rename).
 //!
-//! The bundled presets (`presets/*.toml`) are compiled into the binary, so
-//! `homerun` works from any directory; a user's own presets live in their
-//! config folder (`$XDG_CONFIG_HOME/homerun/presets`) or a folder given with
-//! `--presets-dir`.
+//! The bundled presets (`presets/*.toml`) are compiled into the binary as
+//! their TOML text, parsed when asked for as a user's file is, so `homerun`
+//! works from any directory; a user's own presets live in their config
+//! folder ([`config_dir`]: `$XDG_CONFIG_HOME/homerun/presets`, else
+//! `$HOME/.config/homerun/presets`) or a folder given with `--presets-dir`.
 
 use std::fs;
 use std::path::{Path, PathBuf};
 
-mod bundled;
 mod escape;
 mod field;
 mod file;
 pub mod parks;
 
-use bundled::{PresetValue, Scalar};
-
-pub use escape::{cut, escape_cut, escape_for_terminal};
+pub use escape::{cut, escape_cut, escape_for_terminal, escape_text, needs_escape};
 pub use field::{FIELD_KEYS, FieldKey};
 pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
@@ -114,6 +112,14 @@ pub enum PresetError {
     /// A park file that is not a list of parks (the message is one line).
     #[error("{path}: {message}")]
     Park { path: String, message: String },
+    /// A save over a preset of the user's, without `--force`.
+    #[error("preset `{name}` exists ({path}): --force to overwrite it")]
+    Exists { name: String, path: String },
+    /// A save under a bundled preset's name, without `--force`.
+    #[error(
+        "`{name}` is a bundled preset: yours would hide it (--preset {name} would load yours); --force to save it anyway"
+    )]
+    HidesBundled { name: String },
     /// The presets folder exists but is not a folder.
     #[error("{path}: not a folder ({kind}), so it cannot hold presets")]
     NotAFolder { path: String, kind: FileKind },
@@ -148,27 +154,14 @@ impl Preset {
                     path: origin.to_owned(),
                     message: syntax_message(&e),
                 })?;
-        let sections = table.iter().map(|(name, value)| (name.as_str(), value));
-        Preset::of_sections(sections, name, origin, source)
-    }
-
-    /// A preset from its top-level entries (its sections and its
-    /// description), in the file's order: read from TOML, or compiled in
-    /// ([`bundled::Value`]).
-    fn of_sections<'v, V: PresetValue + 'v>(
-        sections: impl Iterator<Item = (&'v str, &'v V)>,
-        name: &str,
-        origin: &str,
-        source: Source,
-    ) -> Result<Preset, PresetError> {
         let input = |source| PresetError::Input {
             path: origin.to_owned(),
             source,
         };
-        let wrong = |key: &str, value: &V, expected| PresetError::WrongType {
+        let wrong = |key: &str, value: &toml::Value, expected| PresetError::WrongType {
             path: origin.to_owned(),
             key: escape_for_terminal(key),
-            value: escape_for_terminal(&value.shown()),
+            value: escape_for_terminal(&value.to_string()),
             expected,
         };
         let mut scene = Scene::default();
@@ -177,7 +170,8 @@ impl Preset {
         let mut description = String::new();
         let mut fence_distance = None;
         let mut fence_height = None;
-        for (section, value) in sections {
+        for (section, value) in &table {
+            let section = section.as_str();
             if section == "description" {
                 description = value
                     .as_str()
@@ -185,7 +179,7 @@ impl Preset {
                     .to_owned();
                 continue;
             }
-            let Some(entries) = value.entries() else {
+            let Some(entries) = value.as_table() else {
                 // `pitch = 5`: a section written as a value.
                 let is_section = all_keys()
                     .map(|k| k.name)
@@ -227,17 +221,18 @@ impl Preset {
                     input(if shown == key { e } else { unknown(&shown) })
                 };
                 let field = FIELD_KEYS.iter().find(|f| f.name == key);
-                let number = match value.scalar() {
-                    Some(Scalar::Number(number)) => number,
+                let number = match value {
+                    toml::Value::Float(number) => *number,
+                    toml::Value::Integer(number) => *number as f64,
                     // A number with its unit, "103mph", as `--set` takes it.
-                    Some(Scalar::Text(text)) => match field {
+                    toml::Value::String(text) => match field {
                         Some(field) => field.read(text).map_err(input)?,
                         None => {
                             batch.set_text(&mut scene, &key, text).map_err(named)?;
                             continue;
                         }
                     },
-                    None => {
+                    _ => {
                         return Err(wrong(
                             &key,
                             value,
@@ -397,8 +392,11 @@ impl Preset {
     /// same folder, flushed to disk, then renamed over the target, so that a
     /// crash or a full disk never leaves a half-written preset. A target that
     /// exists and is not a regular file (a FIFO, a device, a folder) is
-    /// refused, as reading refuses it; so is a scene that reading refuses.
-    pub fn save(&self, dir: &Path) -> Result<PathBuf, PresetError> {
+    /// refused, as reading refuses it; so is a scene that reading refuses,
+    /// and a link that leads out of `dir` ([`crate::atomic_file::resolved`]).
+    /// Without `force`, a name the user's presets already hold, or a bundled
+    /// preset's (which the file would hide), is refused.
+    pub fn save(&self, dir: &Path, force: bool) -> Result<PathBuf, PresetError> {
         check_name(&self.name)?;
         // Never write what `load` would refuse.
         self.scene.validate().map_err(|source| PresetError::Input {
@@ -410,11 +408,38 @@ impl Preset {
             move |source| PresetError::Io { path, source }
         };
         fs::create_dir_all(dir).map_err(io(dir))?;
-        let target = dir.join(format!("{}.toml", self.name));
-        check_save_target(&target)?;
+        let target = check_save(&self.name, dir, force)?;
         crate::atomic_file::replace(&target, self.to_toml().as_bytes()).map_err(io(&target))?;
         Ok(target)
     }
+}
+
+/// Whether a preset can be saved as `name` in `dir`, before any work is
+/// done for it: the name is usable, the target is a regular file or a new
+/// name, not a link out of `dir`, and, without `force`, neither one of the
+/// user's presets nor a bundled one's name. The target's path.
+pub fn check_save(name: &str, dir: &Path, force: bool) -> Result<PathBuf, PresetError> {
+    check_name(name)?;
+    let target = dir.join(format!("{name}.toml"));
+    check_save_target(&target)?;
+    if !force {
+        if let Some(path) = user_file(name, Some(dir)) {
+            return Err(PresetError::Exists {
+                name: name.to_owned(),
+                path: shown(&path),
+            });
+        }
+        if is_bundled(name) {
+            return Err(PresetError::HidesBundled {
+                name: name.to_owned(),
+            });
+        }
+    }
+    crate::atomic_file::resolved(&target).map_err(|source| PresetError::Io {
+        path: shown(&target),
+        source,
+    })?;
+    Ok(target)
 }
 
 /// A TOML error on one line, as the toml crate words it, with the quoted
@@ -457,11 +482,29 @@ fn check_name(name: &str) -> Result<(), PresetError> {
     }
 }
 
-/// The user's preset folder: `$XDG_CONFIG_HOME/homerun/presets` (or the
-/// platform's config folder).
+/// The user's preset folder: `presets` in [`config_dir`].
 pub fn user_dir() -> Option<PathBuf> {
-    dirs::config_dir().map(|d| d.join("homerun").join("presets"))
+    config_dir().map(|d| d.join("presets"))
 }
+
+/// homerun's config folder, from the environment alone (no lookup of the
+/// user in the system's databases, which a process of an unknown user or
+/// without NSS could not do): `$XDG_CONFIG_HOME/homerun` if that is an
+/// absolute path (as the XDG spec asks), else `$HOME/.config/homerun`;
+/// `None` when neither is set: then there is no user folder, and every
+/// command works on the bundled presets and parks.
+pub fn config_dir() -> Option<PathBuf> {
+    let absolute = |name| {
+        let path = PathBuf::from(std::env::var_os(name)?);
+        path.is_absolute().then_some(path)
+    };
+    let base = absolute("XDG_CONFIG_HOME").or_else(|| Some(absolute("HOME")?.join(".config")))?;
+    Some(base.join("homerun"))
+}
+
+/// Why a preset cannot be saved without `--presets-dir`: one line.
+pub const NO_FOLDER: &str =
+    "no presets folder: neither XDG_CONFIG_HOME nor HOME is set; pass --presets-dir DIR";
 
 /// The bundled presets, parsed.
 pub fn bundled() -> Vec<Preset> {
@@ -469,24 +512,17 @@ pub fn bundled() -> Vec<Preset> {
         .iter()
         .map(|(name, _)| match bundled_preset(name) {
             Some(Ok(preset)) => preset,
-            _ => panic!("bundled preset {name} is compiled in and valid (tested)"),
+            _ => panic!("bundled preset {name} is valid (tested)"),
         })
         .collect()
 }
 
-/// The bundled preset `name`, from its entries compiled in (build.rs: no
-/// TOML read at run time, a third of a command's start-up work before its
-/// own), checked as a file's are; `None` if there is none of that name.
+/// The bundled preset `name`, its text parsed and checked as a file's is;
+/// `None` if there is none of that name.
 fn bundled_preset(name: &str) -> Option<Result<Preset, PresetError>> {
-    let (name, sections) = bundled::PRESETS.iter().find(|(n, _)| *n == name)?;
-    let sections = sections.iter().map(|(section, value)| (*section, value));
+    let (name, text) = BUNDLED.iter().find(|(n, _)| *n == name)?;
     let origin = format!("presets/{name}.toml");
-    Some(Preset::of_sections(
-        sections,
-        name,
-        &origin,
-        Source::Bundled,
-    ))
+    Some(Preset::parse(text, name, &origin, Source::Bundled))
 }
 
 /// Every preset available: bundled first, then each `*.toml` in `dir`, each

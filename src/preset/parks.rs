@@ -1,6 +1,6 @@
 //! Users' own parks: files of `data/parks.toml`'s format (one or more
-//! `[[park]]` tables) in the parks folder, `$XDG_CONFIG_HOME/homerun/parks`
-//! beside the presets, or `--parks-dir`. Each is read safely
+//! `[[park]]` tables) in the parks folder, `parks` in
+//! [`super::config_dir`] beside the presets, or `--parks-dir`. Each is read safely
 //! ([`read_text`]); a user's park whose code or alias names a bundled park
 //! hides that park, as a user's preset hides a bundled one.
 
@@ -10,10 +10,9 @@ use super::file::preset_files;
 use super::{PresetError, escape_cut, read_text, shown};
 use crate::model::park::{self, Park};
 
-/// The user's parks folder: `$XDG_CONFIG_HOME/homerun/parks` (or the
-/// platform's config folder).
+/// The user's parks folder: `parks` in [`super::config_dir`].
 pub fn user_dir() -> Option<PathBuf> {
-    dirs::config_dir().map(|d| d.join("homerun").join("parks"))
+    super::config_dir().map(|d| d.join("parks"))
 }
 
 /// Every park available, bundled first (less those a user's park hides),
@@ -23,6 +22,9 @@ pub struct Parks {
     pub parks: Vec<Park>,
     /// The file of each park in `parks`; `None`: bundled.
     pub files: Vec<Option<PathBuf>>,
+    /// Said once when the folder held more than [`MAX_USER_PARKS`] parks
+    /// or files: which were read.
+    pub note: Option<String>,
 }
 
 impl Parks {
@@ -50,16 +52,42 @@ impl Parks {
     }
 }
 
+/// [`all`], its note (if any) said on stderr: for the command line.
+pub fn all_noted(dir: Option<&Path>) -> Result<Parks, PresetError> {
+    let parks = all(dir)?;
+    if let Some(note) = &parks.note {
+        eprintln!("{note}");
+    }
+    Ok(parks)
+}
+
+/// The most parks read from the user's folder, and the most files: every
+/// park a batch row may name is checked against every row's flight, and a
+/// folder of thousands (6,600 parks took 2.35 GB and 68 s over a batch of
+/// 20,000 rows) is a mistake, not a league. 200 holds the majors' 30, the
+/// minors' 120 and room besides.
+pub const MAX_USER_PARKS: usize = 200;
+
 /// The bundled parks and the user's from `dir` (every `*.toml` in it, in
-/// name order; a missing folder holds none). A broken file is an error
-/// naming it: a park silently missing would change every count of parks.
+/// name order; a missing folder holds none), at most [`MAX_USER_PARKS`] of
+/// them from as many files (the rest left, and [`Parks::note`] says so). A
+/// broken file is an error naming it: a park silently missing would change
+/// every count of parks.
 pub fn all(dir: Option<&Path>) -> Result<Parks, PresetError> {
     let mut user: Vec<(Park, PathBuf)> = Vec::new();
+    let mut note = None;
     if let Some(dir) = dir {
-        for path in preset_files(dir)? {
-            let text = read_text(&path)?;
+        let files = preset_files(dir)?;
+        let (mut read, mut capped) = (0, false);
+        'files: for path in &files {
+            if read == MAX_USER_PARKS || user.len() == MAX_USER_PARKS {
+                capped = true;
+                break;
+            }
+            read += 1;
+            let text = read_text(path)?;
             let parks = park::parse(&text).map_err(|e| PresetError::Park {
-                path: shown(&path),
+                path: shown(path),
                 message: escape_cut(&e.to_string(), 400),
             })?;
             for park in parks {
@@ -68,7 +96,7 @@ pub fn all(dir: Option<&Path>) -> Result<Parks, PresetError> {
                     .find(|(o, _)| park.codes().any(|c| o.answers_to(c)))
                 {
                     return Err(PresetError::Park {
-                        path: shown(&path),
+                        path: shown(path),
                         message: format!(
                             "park {} is also in {} (as {}); keep it in one file",
                             park.code,
@@ -77,15 +105,30 @@ pub fn all(dir: Option<&Path>) -> Result<Parks, PresetError> {
                         ),
                     });
                 }
+                if user.len() == MAX_USER_PARKS {
+                    capped = true;
+                    break 'files;
+                }
                 user.push((park, path.clone()));
             }
+        }
+        if capped {
+            note = Some(format!(
+                "note: {}: more than {MAX_USER_PARKS} parks or files ({} files); only the first {} parks, from the first {read} files in name order, are used",
+                shown(dir),
+                files.len(),
+                user.len(),
+            ));
         }
     }
     let hidden = |bundled: &Park| {
         user.iter()
             .any(|(u, _)| u.codes().any(|c| bundled.answers_to(c)))
     };
-    let mut out = Parks::default();
+    let mut out = Parks {
+        note,
+        ..Parks::default()
+    };
     for p in park::bundled().iter().filter(|p| !hidden(p)) {
         out.parks.push(p.clone());
         out.files.push(None);
@@ -117,6 +160,36 @@ mod tests {
         // No folder, or a missing one: the bundled parks alone.
         assert_eq!(all(None).unwrap().parks.len(), 30);
         assert_eq!(all(Some(&dir.path().join("none"))).unwrap().parks.len(), 30);
+    }
+
+    #[test]
+    fn at_most_200_user_parks_are_read_with_a_note() {
+        // Issue 25 row 11: thousands of parks were all read.
+        let dir = tempfile::tempdir().unwrap();
+        for i in 0..250 {
+            let code = format!("Z{i:03}");
+            let text = MINE.replace("\"BOS\"", &format!("\"{code}\""));
+            std::fs::write(dir.path().join(format!("{code}.toml")), text).unwrap();
+        }
+        let parks = all(Some(dir.path())).unwrap();
+        assert_eq!(parks.parks.len(), 30 + MAX_USER_PARKS);
+        assert_eq!(parks.parks.last().unwrap().code, "Z199");
+        let note = parks.note.unwrap();
+        assert!(
+            note.contains("(250 files); only the first 200 parks"),
+            "{note}"
+        );
+        // Many parks in one file: the same cap.
+        let dir = tempfile::tempdir().unwrap();
+        let many: String = (0..300)
+            .map(|i| MINE.replace("\"BOS\"", &format!("\"Y{i:03}\"")))
+            .collect();
+        std::fs::write(dir.path().join("many.toml"), many).unwrap();
+        let parks = all(Some(dir.path())).unwrap();
+        assert_eq!(parks.parks.len(), 30 + MAX_USER_PARKS);
+        assert!(parks.note.is_some());
+        // Under the cap: no note.
+        assert!(all(None).unwrap().note.is_none());
     }
 
     #[test]

@@ -68,7 +68,7 @@ fn save_is_atomic_and_reloads() {
     let mut preset = bundled().remove(0);
     preset.name = "mine".into();
     preset.scene.bat.speed = 33.5;
-    let path = preset.save(dir.path()).unwrap();
+    let path = preset.save(dir.path(), false).unwrap();
     let back = Preset::read(&path).unwrap();
     assert_eq!(back.scene, preset.scene);
     let names: Vec<_> = fs::read_dir(dir.path())
@@ -78,9 +78,44 @@ fn save_is_atomic_and_reloads() {
     assert_eq!(names.len(), 1, "no temporary file left: {names:?}");
     preset.name = "../escape".into();
     assert!(matches!(
-        preset.save(dir.path()),
+        preset.save(dir.path(), false),
         Err(PresetError::BadName(_))
     ));
+}
+
+/// Issue 25 rows 5 and 6 in a presets folder: a link planted at the old
+/// temporary name is not followed; a save refuses a link out of the folder,
+/// a user's preset and a bundled name unless forced.
+#[cfg(unix)]
+#[test]
+fn a_save_never_writes_through_a_link_nor_over_a_preset_unforced() {
+    let (dir, elsewhere) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
+    let victim = elsewhere.path().join("victim.toml");
+    fs::write(&victim, "keep me").unwrap();
+    let planted = dir
+        .path()
+        .join(format!(".mine.toml.{}.tmp", std::process::id()));
+    std::os::unix::fs::symlink(&victim, &planted).unwrap();
+    let mut preset = bundled().remove(0);
+    preset.name = "mine".into();
+    let path = preset.save(dir.path(), false).unwrap();
+    assert!(fs::symlink_metadata(&path).unwrap().is_file());
+    assert_eq!(fs::read_to_string(&victim).unwrap(), "keep me");
+    let again = preset.save(dir.path(), false).unwrap_err().to_string();
+    assert!(
+        again.starts_with("preset `mine` exists (") && again.ends_with("--force to overwrite it"),
+        "{again}"
+    );
+    preset.save(dir.path(), true).unwrap();
+    preset.name = "fastball".into();
+    let hides = preset.save(dir.path(), false).unwrap_err().to_string();
+    assert!(hides.contains("`fastball` is a bundled preset"), "{hides}");
+    std::os::unix::fs::symlink(&victim, dir.path().join("x.toml")).unwrap();
+    preset.name = "x".into();
+    let out = preset.save(dir.path(), true).unwrap_err().to_string();
+    assert!(out.contains("x.toml: a symbolic link to"), "{out}");
+    assert!(out.contains("outside its folder"), "{out}");
+    assert_eq!(fs::read_to_string(&victim).unwrap(), "keep me");
 }
 
 #[test]
@@ -180,21 +215,4 @@ fn check_dir_accepts_a_folder_or_nothing_and_refuses_a_file() {
 fn a_quoted_top_level_key_naming_an_input_is_an_error_not_a_panic() {
     let e = Preset::parse("\"bat.speed\" = 3", "x", "x.toml", Source::Bundled).unwrap_err();
     assert!(e.to_string().contains("unknown key `\"bat.speed\"`"), "{e}");
-}
-
-#[test]
-fn the_compiled_in_presets_are_their_files_parsed() {
-    // One of each bundled file, and no other, each the preset its TOML
-    // text gives (scene, fence, description, name, source).
-    let compiled: Vec<&str> = bundled::PRESETS.iter().map(|(name, _)| *name).collect();
-    let mut listed: Vec<&str> = BUNDLED.iter().map(|(name, _)| *name).collect();
-    listed.sort_unstable();
-    assert_eq!(compiled, listed);
-    for (name, text) in BUNDLED {
-        let parsed = Preset::parse(text, name, &format!("presets/{name}.toml"), Source::Bundled)
-            .expect("a bundled preset is valid");
-        let compiled = bundled_preset(name).expect("compiled in").expect("valid");
-        assert_eq!(compiled, parsed, "{name}");
-    }
-    assert!(bundled_preset("no-such-preset").is_none());
 }

@@ -132,8 +132,9 @@ pub enum Mode {
         error: Option<String>,
         initial: String,
     },
-    /// Typing a name to save the inputs under. `overwrite` is the bundled
-    /// name the user was warned about: Enter on it again saves anyway.
+    /// Typing a name to save the inputs under. `overwrite` is the name (a
+    /// bundled preset's, or one of the user's) the user was warned about:
+    /// Enter on it again saves anyway.
     Save {
         text: TextArea<'static>,
         error: Option<String>,

@@ -15,7 +15,12 @@ use serde_json::Value;
 
 pub(crate) fn homerun(presets: &Path) -> Command {
     let mut command = Command::new(env!("CARGO_BIN_EXE_homerun"));
-    command.arg("--presets-dir").arg(presets).timeout(LIMIT);
+    command
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
+        .arg("--presets-dir")
+        .arg(presets)
+        .timeout(LIMIT);
     command
 }
 

@@ -302,3 +302,69 @@ fn a_section_written_as_a_value_is_called_a_section() {
         &["unknown key `pitchh`"],
     );
 }
+
+#[test]
+fn a_thread_count_out_of_bounds_is_refused_at_once_in_one_line() {
+    // rayon would start 100000 threads (still starting after 30 s), or
+    // take a word for its own count without a word said.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let batch = d.join("rows.csv");
+    std::fs::write(&batch, "launch_speed,launch_angle\n40,30\n45,25\n").unwrap();
+    let batch = batch.to_str().unwrap();
+    let run = |variable: &str, value: &str| {
+        let start = std::time::Instant::now();
+        let output = homerun(d)
+            .env_remove("RAYON_NUM_THREADS")
+            .env_remove("RAYON_RS_NUM_CPUS")
+            .env(variable, value)
+            .args(["fly", "--batch", batch])
+            .output()
+            .unwrap();
+        assert!(start.elapsed().as_secs() < 10, "{variable}={value}");
+        output
+    };
+    let max = homerun::cli::MAX_THREADS;
+    for (variable, value) in [
+        ("RAYON_NUM_THREADS", "100000"),
+        ("RAYON_NUM_THREADS", &(max + 1).to_string()),
+        ("RAYON_NUM_THREADS", "-1"),
+        ("RAYON_NUM_THREADS", "many"),
+        ("RAYON_NUM_THREADS", ""),
+        ("RAYON_NUM_THREADS", "4\u{1b}[2J"),
+        ("RAYON_RS_NUM_CPUS", "100000"),
+    ] {
+        let output = run(variable, value);
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{variable}={value}: {stderr}"
+        );
+        assert!(output.stdout.is_empty());
+        let line = stderr.strip_suffix('\n').unwrap();
+        assert!(!line.chars().any(char::is_control), "{line:?}");
+        let expected =
+            format!("must be a whole number from 0 (one thread per CPU, as when unset) to {max}");
+        assert!(line.starts_with(&format!("homerun: {variable}=")), "{line}");
+        assert!(line.ends_with(&expected), "{line}");
+    }
+    // Within bounds, the same rows whatever the count.
+    let plain = homerun(d).args(["fly", "--batch", batch]).output().unwrap();
+    assert!(plain.status.success());
+    for value in ["0", "1", "3"] {
+        let output = run("RAYON_NUM_THREADS", value);
+        assert!(output.status.success(), "{value}: {output:?}");
+        assert_eq!(output.stdout, plain.stdout, "RAYON_NUM_THREADS={value}");
+    }
+    // --help says so.
+    let help = text(d, &["--help"]);
+    assert!(
+        help.contains("RAYON_NUM_THREADS sets how many threads"),
+        "{help}"
+    );
+    assert!(
+        help.contains(&format!("to {max}; any other value is refused")),
+        "{help}"
+    );
+}

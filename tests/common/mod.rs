@@ -8,9 +8,12 @@ use homerun::Scene;
 use homerun::preset;
 
 /// `homerun` with `presets` as the user's preset folder (an empty one, so
-/// that the machine's own presets never change a result).
+/// that the machine's own presets never change a result), and neither HOME
+/// nor XDG_CONFIG_HOME (so that its parks never do either).
 pub fn homerun(presets: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_homerun"))
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
         .arg("--presets-dir")
         .arg(presets)
         .args(args)
@@ -87,7 +90,10 @@ impl Row<'_> {
 /// and stderr.
 pub fn run_homerun(args: &[&str], input: Option<&str>) -> (Option<i32>, String, String) {
     let mut command = assert_cmd::Command::new(env!("CARGO_BIN_EXE_homerun"));
-    command.args(args);
+    command
+        .env_remove("HOME")
+        .env_remove("XDG_CONFIG_HOME")
+        .args(args);
     if let Some(input) = input {
         command.write_stdin(input);
     }

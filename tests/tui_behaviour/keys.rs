@@ -341,6 +341,41 @@ fn a_save_never_hides_a_bundled_preset_unless_asked_twice() {
     assert!(details[1].ends_with("(yours; hides the bundled one)"));
 }
 
+/// Issue 25 item 5: saving over one of the user's own presets asks too, as
+/// `--save` refuses it without `--force`.
+#[test]
+fn a_save_never_overwrites_a_users_preset_unless_asked_twice() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("mine.toml"), "description = \"old\"\n").unwrap();
+    let mut app = app(80, 24, Some(dir.path().to_owned()));
+    key(&mut app, KeyCode::Char('s'));
+    let Mode::Save { text, .. } = &app.mode else {
+        panic!("the save prompt is open")
+    };
+    for _ in 0..text.lines().join("").chars().count() {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "mine");
+    key(&mut app, KeyCode::Enter);
+    match &app.mode {
+        Mode::Save { error: Some(e), .. } => {
+            assert!(e.contains("is one of your presets"), "{e}");
+        }
+        other => panic!("a warning, not {other:?}"),
+    }
+    let old = "description = \"old\"\n";
+    assert_eq!(
+        std::fs::read_to_string(dir.path().join("mine.toml")).unwrap(),
+        old
+    );
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_ne!(
+        std::fs::read_to_string(dir.path().join("mine.toml")).unwrap(),
+        old
+    );
+}
+
 #[test]
 fn a_pin_survives_a_nudge_and_a_preset_load_and_p_clears_it() {
     let mut app = app(80, 24, None);

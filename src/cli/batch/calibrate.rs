@@ -10,7 +10,7 @@ use std::path::Path;
 use rayon::prelude::*;
 
 use super::pieces::PIECE_ROWS;
-use super::records::{Fields, MAX_RECORD_BYTES, Record, Records, Stop, split_fields};
+use super::read::{Fields, Lossy, MAX_RECORD_BYTES, Records};
 use super::rows::{Header, Job, Row, parse_row};
 use super::savant_columns::{SavantColumn, Setup};
 use crate::analysis::calibrate::{self, Errors, Fit, Measured};
@@ -27,17 +27,31 @@ struct Read {
     measured: Vec<Measured>,
     rows: usize,
     without_distance: usize,
+    /// Rows with a measurement outside its plausible range, left out (each
+    /// named on stderr).
+    implausible: usize,
     /// Rows whose header has hit coordinates but the row none: their launch
     /// direction would be a guess, so they are left out of the fit.
     without_spray: usize,
     skipped: usize,
 }
 
+/// `--save NAME` in the presets folder `dir` (if there is one), and
+/// whether `--force` was given.
+pub(in crate::cli) struct Save<'a> {
+    pub name: &'a str,
+    pub dir: Option<&'a Path>,
+    pub force: bool,
+}
+
+/// The most rows named one by one as implausible; the rest are counted.
+const NAMED_IMPLAUSIBLE: usize = 20;
+
 /// Runs `calibrate` on `source` ("-" for stdin): the text (or JSON) to print.
 pub(in crate::cli) fn run(
     setup: &Setup,
     source: &str,
-    save: Option<(&str, Option<&Path>)>,
+    save: Option<Save>,
     json: bool,
     shown: Shown,
 ) -> Result<String, UsageError> {
@@ -45,6 +59,15 @@ pub(in crate::cli) fn run(
         input: escape_cut(source, 200),
         message,
     };
+    // A name that cannot be saved is refused before the work.
+    if let Some(Save {
+        name,
+        dir: Some(dir),
+        force,
+    }) = &save
+    {
+        crate::preset::check_save(name, dir, *force)?;
+    }
     let read = if source == "-" {
         read(setup, io::stdin().lock())
     } else {
@@ -54,9 +77,26 @@ pub(in crate::cli) fn run(
     .map_err(failed)?;
     let options = Purpose::Readout.flight_options();
     let fit = calibrate::fit(&read.measured, &options).map_err(|e| failed(e.to_string()))?;
+    let at_bounds: Vec<String> = fit
+        .at_bounds()
+        .iter()
+        .map(|(key, value, (low, high))| {
+            format!("{key} = {value:.4} ended at the end of [{low}, {high}] searched")
+        })
+        .collect();
     let saved = match save {
-        Some((name, dir)) => {
-            let dir = dir.ok_or_else(|| failed("--save: no presets folder".to_owned()))?;
+        Some(Save { name, dir, force }) => {
+            let dir = dir.ok_or_else(|| failed(format!("--save: {}", crate::preset::NO_FOLDER)))?;
+            if !at_bounds.is_empty() && !force {
+                return Err(UsageError::CalibrateSave {
+                    name: escape_cut(name, 64),
+                    message: format!(
+                        "{}: the measurements pull {} further than the model can follow; not saved (--force to save anyway)",
+                        at_bounds.join(", "),
+                        if at_bounds.len() == 1 { "it" } else { "them" }
+                    ),
+                });
+            }
             let mut preset = Preset {
                 name: name.to_owned(),
                 description: format!(
@@ -80,7 +120,7 @@ pub(in crate::cli) fn run(
                 preset.scene.lift_scale *= lift.value;
             }
             preset.scene.validate()?;
-            Some(preset.save(dir)?)
+            Some(preset.save(dir, force)?)
         }
         None => None,
     };
@@ -89,65 +129,49 @@ pub(in crate::cli) fn run(
             "rows": read.rows,
             "measured": read.measured.len(),
             "without_distance": read.without_distance,
+            "implausible": read.implausible,
             "without_spray": read.without_spray,
             "skipped": read.skipped,
             "fit": fit,
+            "at_bound": fit.at_bounds().iter().map(|b| b.0).collect::<Vec<_>>(),
         });
         if let Some(path) = &saved {
             value["saved"] = path.display().to_string().into();
         }
         return Ok(super::super::pretty(&value));
     }
-    Ok(text(&read, &fit, saved.as_deref(), shown))
+    Ok(text(&read, &fit, &at_bounds, saved.as_deref(), shown))
 }
 
 /// Reads every row into a measured flight, the launches completed in
 /// parallel.
 fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
     let mut records = Records::new(input);
-    let header = match records.next() {
-        Ok(Record::Text { text, .. }) => {
-            let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
-            let names = split_fields(text).map_err(|e| format!("line 1 (the header): {e}"))?;
-            Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?
-        }
-        Ok(Record::End) => return Err("the input is empty".to_owned()),
-        Ok(Record::TooLong) => return Err("line 1 (the header) is too long".to_owned()),
-        Err(Stop::Binary { .. }) => return Err("binary data, not CSV text".to_owned()),
-        Err(Stop::Io(e)) => return Err(e.to_string()),
+    let header = match super::read_header(&mut records)? {
+        Some(names) => Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?,
+        None => return Err("the input is empty".to_owned()),
     };
-    records.read_past_long = true;
     let mut jobs = Vec::new();
     let mut skipped = 0;
     let mut rows = 0;
-    let (mut fields, mut kept) = (Fields::default(), Fields::default());
+    let (mut bytes, mut ends, mut lossy) = (Vec::new(), Vec::new(), Lossy::default());
     loop {
-        match records.next() {
-            Ok(Record::End) => break,
-            Ok(Record::Text { line, text }) => {
-                match parse_row(
-                    &header,
-                    setup,
-                    (line, &text),
-                    (&mut fields, &mut kept),
-                    None,
-                    &mut jobs,
-                ) {
+        bytes.clear();
+        ends.clear();
+        match records.next(&mut bytes, &mut ends, true) {
+            Ok(None) => break,
+            Ok(Some(read)) if read.too_long => skipped += 1,
+            Ok(Some(read)) => {
+                let fields = Fields::of(&bytes, &ends, &mut lossy);
+                match parse_row(&header, setup, (read.line, fields), None, &mut jobs) {
                     Row::Job => rows += 1,
-                    Row::Blank => {}
                     Row::Bad { .. } | Row::NoLaunch => {
                         rows += 1;
                         skipped += 1;
                     }
                 }
             }
-            Ok(Record::TooLong) => skipped += 1,
-            Err(Stop::Binary { line }) => {
-                return Err(format!(
-                    "line {line}: a NUL byte: binary data, not CSV text"
-                ));
-            }
-            Err(Stop::Io(e)) => return Err(e.to_string()),
+            Err(stop) => return Err(stop.to_string()),
         }
     }
     let options = Purpose::Solve.flight_options();
@@ -157,10 +181,27 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
         .filter(|j| sprayed && j.statcast.is_some() && j.launch.spray.is_none())
         .count();
     // Launched as `fly --batch` launches them: a piece's solves together.
+    let mut implausible = 0;
     let wanted: Vec<&Job> = jobs
         .iter()
         .filter(|job| (!sprayed || job.launch.spray.is_some()) && job.statcast.is_some())
+        .filter(|job| match plausible(job) {
+            Ok(()) => true,
+            Err(why) => {
+                implausible += 1;
+                if implausible <= NAMED_IMPLAUSIBLE {
+                    eprintln!("line {}: {why}; skipped", job.line);
+                }
+                false
+            }
+        })
         .collect();
+    if implausible > NAMED_IMPLAUSIBLE {
+        eprintln!(
+            "{} more rows with a measurement outside its range; skipped",
+            implausible - NAMED_IMPLAUSIBLE
+        );
+    }
     let launched: Vec<Option<Measured>> = wanted
         .par_chunks(PIECE_ROWS)
         .flat_map_iter(|piece| {
@@ -180,17 +221,59 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
         .collect();
     let without_distance = jobs.iter().filter(|j| j.statcast.is_none()).count();
     let measured: Vec<Measured> = launched.into_iter().flatten().collect();
-    skipped += jobs.len() - without_distance - without_spray - measured.len();
+    skipped += jobs.len() - without_distance - without_spray - implausible - measured.len();
     Ok(Read {
         measured,
         rows,
         without_distance,
+        implausible,
         without_spray,
         skipped,
     })
 }
 
-fn text(read: &Read, fit: &Fit, saved: Option<&Path>, shown: Shown) -> String {
+/// Refuses a row whose measurements are not plausible ([`calibrate::implausible`]):
+/// the column, its value and the range accepted, in the CSV's units.
+fn plausible(job: &Job) -> Result<(), String> {
+    let Some(distance) = job.statcast else {
+        return Ok(());
+    };
+    let Some((range, value)) = calibrate::implausible(distance, job.hang_time, job.apex) else {
+        return Ok(());
+    };
+    let (column, unit, scale) = if range == calibrate::HANG_TIME {
+        ("hang_time", "s", 1.0)
+    } else if range == calibrate::APEX {
+        ("apex", "ft", FEET_PER_METRE)
+    } else {
+        ("hit_distance_sc", "ft", FEET_PER_METRE)
+    };
+    let number = |v: f64| {
+        if v.abs() >= 1e6 {
+            format!("{v:.3e}")
+        } else {
+            let text = format!("{v:.2}");
+            text.trim_end_matches('0').trim_end_matches('.').to_owned()
+        }
+    };
+    Err(format!(
+        "{column} = {} {unit}: outside (0, {}] {unit} ({})",
+        number(value * scale),
+        number((range.high * scale * 10.0).round() / 10.0),
+        range.why
+    ))
+}
+
+/// Savant's feet, for messages about its columns.
+const FEET_PER_METRE: f64 = 1.0 / 0.3048;
+
+fn text(
+    read: &Read,
+    fit: &Fit,
+    at_bounds: &[String],
+    saved: Option<&Path>,
+    shown: Shown,
+) -> String {
     let d = |m: f64| shown.value(Quantity::Distance, m, 1);
     let errors = |e: &Errors, unit: &dyn Fn(f64) -> String| {
         format!(
@@ -207,11 +290,16 @@ fn text(read: &Read, fit: &Fit, saved: Option<&Path>, shown: Shown) -> String {
         (
             "rows",
             format!(
-                "{} of {} read: {} without a distance, {} without hit coordinates, {} skipped",
+                "{} of {} read: {} without a distance, {} without hit coordinates, {}{} skipped",
                 read.measured.len(),
                 read.rows,
                 read.without_distance,
                 read.without_spray,
+                if read.implausible > 0 {
+                    format!("{} outside the plausible ranges, ", read.implausible)
+                } else {
+                    String::new()
+                },
                 read.skipped
             ),
         ),
@@ -240,6 +328,12 @@ fn text(read: &Read, fit: &Fit, saved: Option<&Path>, shown: Shown) -> String {
         };
         lines.push(("", format!("second: before {}", errors(&before, unit))));
         lines.push(("", format!("second: after {}", errors(&after, unit))));
+    }
+    for bound in at_bounds {
+        lines.push((
+            "bound",
+            format!("{bound}: the measurements pull it further; check them"),
+        ));
     }
     if let Some(path) = saved {
         lines.push(("saved", path.display().to_string()));

@@ -14,18 +14,16 @@ use crate::model::launch::SceneKind;
 use crate::preset::escape_cut;
 
 pub(super) mod calibrate;
-mod fixed;
 mod flights;
 mod output;
 mod own_launch;
 mod pieces;
-mod plain;
-mod records;
+mod read;
 mod rows;
 mod savant_columns;
 
-pub use records::MAX_RECORD_BYTES;
-use records::*;
+pub use read::MAX_RECORD_BYTES;
+use read::{Fields, Lossy, Records, Stop};
 pub(super) use rows::columns_help;
 use rows::*;
 pub(super) use savant_columns::Setup;
@@ -111,13 +109,10 @@ pub(super) fn batch(
     progress: &Progress,
 ) -> Result<Outcome, String> {
     let mut records = Records::new(input);
-    records.read_past_long = false;
     let mut outcome = Outcome::default();
-    let header = match records.next() {
-        Ok(Record::End) => None,
-        Ok(Record::Text { text, .. }) => {
-            let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
-            let names = split_fields(text).map_err(|e| format!("line 1 (the header): {e}"))?;
+    let header = match read_header(&mut records) {
+        Ok(None) => None,
+        Ok(Some(names)) => {
             let mut header = Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?;
             if !header.has_input() {
                 return Err(format!(
@@ -130,18 +125,8 @@ pub(super) fn batch(
             header.keep(&setup.keep)?;
             Some(header)
         }
-        Ok(Record::TooLong) => {
-            return Err(format!(
-                "line 1 (the header): longer than {} KiB: not a CSV of launches",
-                MAX_RECORD_BYTES / 1024
-            ));
-        }
-        Err(Stop::Binary { .. }) => {
-            return Err("a NUL byte in line 1: binary data, not CSV text".to_owned());
-        }
-        Err(Stop::Io(e)) => return Err(e.to_string()),
+        Err(e) => return Err(e),
     };
-    records.read_past_long = true;
     let statcast = header
         .as_ref()
         .is_some_and(|h| h.has(SavantColumn::Distance));
@@ -159,7 +144,7 @@ pub(super) fn batch(
     let context = pieces::Context {
         header: &header,
         setup,
-        printed: flights::Printed {
+        printed: pieces::Printed {
             shown,
             statcast,
             json,
@@ -169,14 +154,15 @@ pub(super) fn batch(
     let mut messages = 0;
     let (mut round, mut next) = (pieces::Round::default(), pieces::Round::default());
     let mut work = Vec::new();
-    round.read(&mut records);
+    let rows = pieces::sizes(setup.parks.parks.len()).0;
+    round.read(&mut records, rows);
     loop {
         // The next round is read (on this thread) while this one flies (on
         // the pool).
         let mut used = 0;
         rayon::in_place_scope(|scope| {
             scope.spawn(|_| used = pieces::work(&round, &mut work, &context));
-            next.read(&mut records);
+            next.read(&mut records, rows);
         });
         for piece in &work[..used] {
             for (line, reason) in &piece.failed {
@@ -189,7 +175,6 @@ pub(super) fn batch(
             }
             outcome.failed += piece.failed.len();
             outcome.without_launch += piece.without_launch;
-            outcome.empty += piece.empty;
             summary.add(&piece.summary);
             match sinks.out.write_all(&piece.out) {
                 // `| head`: the reader has what it wanted.
@@ -212,6 +197,7 @@ pub(super) fn batch(
         }
         std::mem::swap(&mut round, &mut next);
     }
+    outcome.empty = records.empty;
     summary.without_speed = outcome.without_launch;
     if let Some(line) = summary.line(&header.savant_used(), outcome.flown, setup) {
         sinks.note(&line);
@@ -231,6 +217,33 @@ pub(super) fn batch(
         ));
     }
     Ok(outcome)
+}
+
+/// The header's names (a byte-order mark dropped), `None` for an empty
+/// input, or why the input is no CSV of launches.
+fn read_header<R: BufRead>(records: &mut Records<R>) -> Result<Option<Vec<String>>, String> {
+    let (mut bytes, mut ends) = (Vec::new(), Vec::new());
+    match records.next(&mut bytes, &mut ends, false) {
+        Ok(None) => Ok(None),
+        Ok(Some(read)) if read.too_long => Err(format!(
+            "line {} (the header): longer than {} KiB: not a CSV of launches",
+            read.line,
+            MAX_RECORD_BYTES / 1024
+        )),
+        Ok(Some(_)) => {
+            let mut lossy = Lossy::default();
+            let fields = Fields::of(&bytes, &ends, &mut lossy);
+            let mut names: Vec<String> = fields.iter().map(str::to_owned).collect();
+            if names.first().is_some_and(|n| n.starts_with('\u{feff}')) {
+                names[0].drain(..'\u{feff}'.len_utf8());
+            }
+            Ok(Some(names))
+        }
+        Err(Stop::Binary(line)) => Err(format!(
+            "a NUL byte in line {line}: binary data, not CSV text"
+        )),
+        Err(Stop::Io(e)) => Err(e.to_string()),
+    }
 }
 
 /// One stderr note for the columns ignored and the launch values every

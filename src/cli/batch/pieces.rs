@@ -3,17 +3,17 @@
 //! [`PIECE_ROWS`] records, and every piece is parsed, flown and written
 //! into its own byte buffer on the thread pool, while the next round is
 //! read. Only reading records and writing the pieces' bytes, in order,
-//! stay serial; buffers are kept from round to round, so a row costs no
-//! allocation (but a failed row's message and a JSON line).
+//! stay serial.
 
 use std::io::BufRead;
+use std::ops::Range;
 
 use rayon::prelude::*;
 
-use super::flights::{Printed, RowFlight, Scratch, fly_chunk};
+use super::flights::{RowFlight, Scratch, fly_chunk};
 use super::output::{CsvLine, json_line};
 use super::own_launch::SwingLaunches;
-use super::records::{Fields, MAX_RECORD_BYTES, RecordTexts, Records, Span, Stop};
+use super::read::{Fields, Lossy, MAX_RECORD_BYTES, Read, Records};
 use super::rows::{Header, Job, Row, parse_row};
 use super::savant_columns::{Setup, Summary};
 use crate::cli::progress::Progress;
@@ -25,14 +25,26 @@ pub(super) const PIECE_ROWS: usize = 256;
 /// Records read a round, at most...
 const ROUND_ROWS: usize = 8192;
 /// ...and bytes (one record more at most): memory stays flat however long
-/// the input.
+/// the input...
 const ROUND_BYTES: usize = 1 << 20;
+/// ...and rows × fences judged (each row its own fence and every park's,
+/// a crossing each): many user parks make rounds of fewer rows.
+const ROUND_CROSSINGS: usize = ROUND_ROWS * 31;
+
+/// The rows of a round and of a piece for a batch judged at `parks` parks.
+pub(super) fn sizes(parks: usize) -> (usize, usize) {
+    let round = (ROUND_CROSSINGS / (parks + 1)).clamp(1, ROUND_ROWS);
+    (round, (round / 32).clamp(1, PIECE_ROWS))
+}
 
 /// Records read at once, and how reading stopped after them.
 #[derive(Default)]
 pub(super) struct Round {
-    text: Vec<u8>,
-    spans: Vec<Span>,
+    /// The records' fields, back to back, and where each field ends (from
+    /// its record's start).
+    bytes: Vec<u8>,
+    ends: Vec<usize>,
+    records: Vec<(Read, Range<usize>, Range<usize>)>,
     /// Why reading stopped early after these records (a note to say).
     pub stop: Option<String>,
     /// No records follow.
@@ -41,26 +53,35 @@ pub(super) struct Round {
 
 impl Round {
     /// Reads the next round of records (none once the input has ended).
-    pub(super) fn read<R: BufRead>(&mut self, records: &mut Records<R>) {
-        self.text.clear();
-        self.spans.clear();
+    pub(super) fn read<R: BufRead>(&mut self, records: &mut Records<R>, rows: usize) {
+        self.bytes.clear();
+        self.ends.clear();
+        self.records.clear();
         self.stop = None;
-        while !self.ended && self.spans.len() < ROUND_ROWS && self.text.len() < ROUND_BYTES {
-            match records.next_into(&mut self.text) {
-                Ok(Span::End) => self.ended = true,
-                Ok(span) => self.spans.push(span),
+        while !self.ended && self.records.len() < rows && self.bytes.len() < ROUND_BYTES {
+            let (bytes, ends) = (self.bytes.len(), self.ends.len());
+            match records.next(&mut self.bytes, &mut self.ends, true) {
+                Ok(Some(read)) => {
+                    let places = (bytes..self.bytes.len(), ends..self.ends.len());
+                    self.records.push((read, places.0, places.1));
+                }
+                Ok(None) => self.ended = true,
                 Err(stop) => {
-                    self.stop = Some(match stop {
-                        Stop::Binary { line } => {
-                            format!("line {line}: a NUL byte: binary data, not CSV text")
-                        }
-                        Stop::Io(e) => format!("reading the input: {e}"),
-                    });
+                    self.stop = Some(stop.to_string());
                     self.ended = true;
                 }
             }
         }
     }
+}
+
+/// What the output prints of a row.
+#[derive(Clone, Copy)]
+pub(super) struct Printed {
+    pub shown: crate::cli::shown::Shown,
+    /// The `difference` column (range less Statcast's) is printed.
+    pub statcast: bool,
+    pub json: bool,
 }
 
 /// What every piece shares.
@@ -74,8 +95,7 @@ pub(super) struct Context<'a> {
 /// One piece's work and what it made.
 #[derive(Default)]
 pub(super) struct Piece {
-    fields: Fields,
-    kept: Fields,
+    lossy: Lossy,
     jobs: Vec<Job>,
     swings: SwingLaunches,
     flown: Vec<Result<RowFlight, String>>,
@@ -86,80 +106,68 @@ pub(super) struct Piece {
     pub failed: Vec<(usize, String)>,
     pub flown_rows: usize,
     pub without_launch: usize,
-    pub empty: usize,
-    /// Rows flown a second time, at the readout's precision.
-    pub refined: usize,
     pub summary: Summary,
 }
 
 /// Parses, flies and writes every piece of `round`, in parallel, into
 /// `pieces` (grown as needed); how many it used, from the first.
 pub(super) fn work(round: &Round, pieces: &mut Vec<Piece>, context: &Context) -> usize {
-    let used = round.spans.len().div_ceil(PIECE_ROWS);
+    let rows = sizes(context.setup.parks.parks.len()).1;
+    let used = round.records.len().div_ceil(rows);
     if pieces.len() < used {
         pieces.resize_with(used, Piece::default);
     }
     round
-        .spans
-        .par_chunks(PIECE_ROWS)
+        .records
+        .par_chunks(rows)
         .zip(pieces.par_iter_mut())
-        .for_each(|(spans, piece)| piece.work(spans, &round.text, context));
+        .for_each(|(records, piece)| piece.work(records, round, context));
     used
 }
 
 impl Piece {
-    fn work(&mut self, spans: &[Span], text: &[u8], context: &Context) {
+    fn work(
+        &mut self,
+        records: &[(Read, Range<usize>, Range<usize>)],
+        round: &Round,
+        context: &Context,
+    ) {
         let (header, setup) = (context.header, context.setup);
         self.out.clear();
         self.failed.clear();
         self.jobs.clear();
-        self.kept.clear();
-        (self.flown_rows, self.without_launch, self.empty) = (0, 0, 0);
+        (self.flown_rows, self.without_launch) = (0, 0);
         self.summary = Summary::new(setup.parks.parks.len());
-        let texts = RecordTexts::new(text, spans);
-        for span in spans {
-            let row = match *span {
-                Span::Text { line, start, end } => {
-                    let record = texts.get(start, end);
-                    // With --own-air each park's flight takes the launch
-                    // its swing gives in that park's air: left to it.
-                    let swings = (!setup.own_air).then_some(&mut self.swings);
-                    parse_row(
-                        header,
-                        setup,
-                        (line, &record),
-                        (&mut self.fields, &mut self.kept),
-                        swings,
-                        &mut self.jobs,
-                    )
-                }
-                Span::TooLong { line } => Row::Bad {
+        for (read, bytes, ends) in records {
+            let line = read.line;
+            let row = if read.too_long {
+                Row::Bad {
                     line,
                     reason: format!("longer than {} KiB", MAX_RECORD_BYTES / 1024),
-                },
-                Span::End => continue,
+                }
+            } else {
+                let fields = Fields::of(
+                    &round.bytes[bytes.clone()],
+                    &round.ends[ends.clone()],
+                    &mut self.lossy,
+                );
+                // With --own-air each park's flight takes the launch its
+                // swing gives in that park's air: left to it.
+                let swings = (!setup.own_air).then_some(&mut self.swings);
+                parse_row(header, setup, (line, fields), swings, &mut self.jobs)
             };
             match row {
                 Row::Job => {}
                 Row::Bad { line, reason } => self.failed.push((line, reason)),
                 Row::NoLaunch => self.without_launch += 1,
-                Row::Blank => self.empty += 1,
             }
         }
-        fly_chunk(
-            &self.jobs,
-            setup,
-            context.printed,
-            &mut self.scratch,
-            &mut self.flown,
-        );
-        self.refined = self.scratch.refined;
+        fly_chunk(&self.jobs, setup, &mut self.scratch, &mut self.flown);
         let csv = CsvLine {
             setup,
             shown: context.printed.shown,
             statcast: context.printed.statcast,
         };
-        let mut kept: Vec<&str> = Vec::with_capacity(setup.keep.len());
         for (job, flown) in self.jobs.iter().zip(&self.flown) {
             let flown = match flown {
                 Ok(flown) => flown,
@@ -168,14 +176,12 @@ impl Piece {
                     continue;
                 }
             };
-            kept.clear();
-            kept.extend(job.kept.clone().map(|i| self.kept.get(i)));
             if context.printed.json {
                 let parks = setup.parks.parks.len();
                 let cleared = &self.scratch.cleared[flown.cleared_from..][..parks];
-                json_line(&mut self.out, job, flown, cleared, &kept, setup);
+                json_line(&mut self.out, job, flown, cleared, setup);
             } else {
-                csv.write(&mut self.out, job, flown, &kept);
+                csv.write(&mut self.out, job, flown);
             }
             self.summary.count(job, header, flown.flights);
             self.flown_rows += 1;

@@ -14,8 +14,7 @@ use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem};
 
 use super::own_launch::SwingLaunches;
-use super::plain::plain_decimal;
-use super::records::*;
+use super::read::Fields;
 use super::savant_columns::{SavantCells, SavantColumn, Setup};
 
 /// How a column's values become a launch value in SI.
@@ -34,13 +33,19 @@ impl Unit {
     /// The explorer's and `--units`' conversion, so that 103 mph is the
     /// same launch to the last bit wherever it is typed.
     pub(super) fn to_si(self, value: f64) -> f64 {
-        let quantity = match self {
-            Unit::Si => return value,
-            Unit::Mph => Quantity::Speed,
-            Unit::Degrees => Quantity::Angle,
-            Unit::Rpm => Quantity::Spin,
-        };
-        quantity.unit(UnitSystem::Imperial, "").read(value)
+        match self.quantity() {
+            None => value,
+            Some(quantity) => quantity.unit(UnitSystem::Imperial, "").read(value),
+        }
+    }
+
+    fn quantity(self) -> Option<Quantity> {
+        match self {
+            Unit::Si => None,
+            Unit::Mph => Some(Quantity::Speed),
+            Unit::Degrees => Some(Quantity::Angle),
+            Unit::Rpm => Some(Quantity::Spin),
+        }
     }
 
     pub(super) fn name(self) -> &'static str {
@@ -116,7 +121,10 @@ pub(in crate::cli) fn columns_help() -> String {
          Statcast's launch_speed and launch_angle columns are read as they are; its \
          release_spin_rate is the pitch's spin, not the batted ball's, and is not read: a row \
          without spin gets Nathan's estimate from its angle, direction and side. \
-         `null` is a missing value; a row without a launch speed is skipped. \
+         `null`, `NA`, `NaN` and the empty cell are missing values; a row without a launch speed \
+         is skipped. Statcast's columns take a unit as --set does (`103mph`, `460ft`); a \
+         distance, hang time or apex that cannot be read is missing, never a reason to skip \
+         the row. \
          Other columns are ignored (named once on stderr). A launch column not given takes \
          the preset's value for every row; an empty cell of another column, the preset's \
          value; a row whose launch cells are all empty is skipped.",
@@ -373,9 +381,10 @@ pub(super) struct Job {
     /// Measured hang time (s) and apex (m), for `calibrate`.
     pub(super) hang_time: Option<f64>,
     pub(super) apex: Option<f64>,
-    /// The `--keep` cells, as read: their indices in the store
-    /// [`parse_row`] was given.
-    pub(super) kept: std::ops::Range<usize>,
+    /// The `--keep` cells, as read.
+    pub(super) kept: Vec<String>,
+    /// Its hit coordinates are the plate's: it has no spray.
+    pub(super) spray_at_plate: bool,
     /// The air keys given, by `--set` and by the row: a park keeps them.
     pub(super) given: GivenWeather,
 }
@@ -391,9 +400,6 @@ pub(super) enum Row {
     /// Every launch column empty, or no launch speed (in a Statcast export:
     /// a pitch not put in play): skipped and counted, not a failure.
     NoLaunch,
-    /// An empty line (not even a space): skipped and counted. A line of
-    /// spaces or tabs is a record of one field, and fails or flies as one.
-    Blank,
 }
 
 /// [`InputBatch::set_key_text`], a plain decimal in the key's bounds read
@@ -406,7 +412,7 @@ fn set_number(
     (key, air): (&'static Key, bool),
     text: &str,
 ) -> Result<(), InputError> {
-    match plain_decimal(text) {
+    match text.parse::<f64>().ok() {
         Some(value) if key.bounds.contains(value) && !air => {
             (key.set)(scene, value);
             Ok(())
@@ -416,32 +422,38 @@ fn set_number(
     }
 }
 
-/// Savant's missing value in its 2019 layout: the string `null`.
+/// A missing value: the empty cell, Savant's `null` (its 2019 layout), R's
+/// `NA`, pandas' `NaN`.
 fn is_missing(value: &str) -> bool {
-    value.is_empty() || value.eq_ignore_ascii_case("null")
+    ["", "null", "na", "nan"]
+        .iter()
+        .any(|missing| value.eq_ignore_ascii_case(missing))
 }
 
-/// The row on `line`, its `text` split into `fields` (a buffer reused from
-/// row to row) and its `--keep` cells added to `kept`; with `swings`, the
-/// launch values it leaves to its swing filled in where its swing is known
-/// (see [`SwingLaunches`]). A row that flies is pushed onto `jobs`, built
-/// there (a job holds a scene: moving it cost more than reading its cells).
+/// A measured cell of `quantity`: a bare number in the column's own unit
+/// (`bare` makes it SI), or a number with a unit as `--set` takes it
+/// (`103mph`, `460ft`, `140m`); `None` if it is neither, or not finite.
+pub(super) fn measure(text: &str, quantity: Quantity, bare: impl Fn(f64) -> f64) -> Option<f64> {
+    let reading = crate::units::read_typed(text, quantity, quantity.si_symbol()).ok()?;
+    let si = match reading.unit {
+        Some(_) => reading.si,
+        None => bare(reading.number),
+    };
+    si.is_finite().then_some(si)
+}
+
+/// The row on `line`, its `fields` as read; with `swings`, the launch
+/// values it leaves to its swing filled in where its swing is known (see
+/// [`SwingLaunches`]). A row that flies is pushed onto `jobs`, built there
+/// (a job holds a scene: moving it cost more than reading its cells).
 pub(super) fn parse_row(
     header: &Header,
     setup: &Setup,
-    (line, text): (usize, &str),
-    (fields, kept): (&mut Fields, &mut Fields),
+    (line, fields): (usize, Fields),
     swings: Option<&mut SwingLaunches>,
     jobs: &mut Vec<Job>,
 ) -> Row {
-    if text.is_empty() {
-        return Row::Blank;
-    }
     let bad = |reason: String| Row::Bad { line, reason };
-    if let Err(reason) = fields.split(text) {
-        return bad(reason.to_owned());
-    }
-    let fields = &*fields;
     if fields.len() != header.columns.len() {
         return bad(format!(
             "{} field{} where the header has {}",
@@ -450,9 +462,9 @@ pub(super) fn parse_row(
             header.columns.len()
         ));
     }
-    let no_speed = header.speed.is_some_and(|i| cell(fields, i).is_empty());
+    let no_speed = header.speed.is_some_and(|i| cell(&fields, i).is_empty());
     let launch = &header.launch;
-    if no_speed || (!launch.is_empty() && launch.iter().all(|&i| cell(fields, i).is_empty())) {
+    if no_speed || (!launch.is_empty() && launch.iter().all(|&i| cell(&fields, i).is_empty())) {
         return Row::NoLaunch;
     }
     jobs.push(Job {
@@ -464,26 +476,26 @@ pub(super) fn parse_row(
         statcast: None,
         hang_time: None,
         apex: None,
-        kept: 0..0,
+        kept: Vec::new(),
+        spray_at_plate: false,
         given: setup.given,
     });
     let job = jobs.last_mut().expect("a job just pushed");
-    if let Err(reason) = read_cells(header, setup, fields, swings, job) {
+    if let Err(reason) = read_cells(header, setup, &fields, swings, job) {
         jobs.pop();
         return bad(reason);
     }
-    let first = kept.len();
-    for &i in &header.keep {
-        kept.push(fields.get(i));
-    }
-    job.kept = first..kept.len();
+    job.kept = header
+        .keep
+        .iter()
+        .map(|&i| fields.get(i).to_owned())
+        .collect();
     Row::Job
 }
 
 /// Cell `i` of a row, trimmed, "" where missing.
-#[inline(always)]
-fn cell(fields: &Fields, i: usize) -> &str {
-    let value = fields.trimmed(i);
+fn cell<'a>(fields: &Fields<'a>, i: usize) -> &'a str {
+    let value = fields.get(i).trim();
     if is_missing(value) { "" } else { value }
 }
 
@@ -513,15 +525,13 @@ fn read_cells(
         let (column, name) = (&header.columns[i], &header.names[i]);
         let value = cell(i);
         let number = || {
-            plain_decimal(value)
-                .map_or_else(|| value.parse::<f64>(), Ok)
-                .map_err(|_| {
-                    format!(
-                        "{} = {:?}: not a number",
-                        escape_cut(name, 80),
-                        cut(value, 80)
-                    )
-                })
+            value.parse::<f64>().map_err(|_| {
+                format!(
+                    "{} = {:?}: not a number",
+                    escape_cut(name, 80),
+                    cut(value, 80)
+                )
+            })
         };
         let done = match *column {
             Column::Ignored => Ok(()),
@@ -538,14 +548,21 @@ fn read_cells(
                 set_number(&mut batch, scene, (launch_key(index), false), value)
                     .map_err(|e| e.to_string())
             }
-            // Statcast's own columns: a bare number in their unit (a launch
-            // key: nothing of the batch's, set at once; checked with the
-            // scene).
-            Column::Launch(index, unit) => number().map(|v| {
-                converted = true;
-                spin_given |= index == 2;
-                (launch_key(index).set)(scene, unit.to_si(v));
-            }),
+            // Statcast's own columns: a bare number in their unit, or one
+            // with its unit (a launch key: nothing of the batch's, set at
+            // once; checked with the scene).
+            Column::Launch(index, unit) => {
+                let quantity = unit.quantity().expect("Statcast's columns have units");
+                let si = match measure(value, quantity, |v| unit.to_si(v)) {
+                    Some(si) => Ok(si),
+                    None => number().map(|v| unit.to_si(v)),
+                };
+                si.map(|si| {
+                    converted = true;
+                    spin_given |= index == 2;
+                    (launch_key(index).set)(scene, si);
+                })
+            }
             // The whole value is parsed; only the error's copy is cut.
             Column::Input(_) => {
                 let input = header.inputs[i].expect("an input column's key");
@@ -619,6 +636,7 @@ fn read_cells(
         estimate_sidespin: !spin_given && !sidespin_given,
     };
     job.park = park;
+    job.spray_at_plate = savant.at_plate() && !header.direction_given;
     (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);
     Ok(())
 }

@@ -10,8 +10,8 @@ use crate::model::spin_estimate::Side;
 use crate::preset::parks::Parks;
 use crate::preset::{Preset, cut, escape_cut};
 
-use super::plain::plain_decimal;
-use super::rows::{Header, Job};
+use super::rows::{Header, Job, measure};
+use crate::units::Quantity;
 
 /// Exactly 0.3048 m to the foot (Statcast's distances are in feet).
 const METRES_PER_FOOT: f64 = 0.3048;
@@ -78,11 +78,9 @@ pub(in crate::cli) struct Setup<'a> {
     pub own_air: bool,
     /// `--keep`'s column names.
     pub keep: Vec<String>,
-    /// Every park's codes and aliases in ASCII lower case, sorted, each with
-    /// the first park that answers to it: a row's `home_team` found by a
-    /// binary search, not by asking 30 parks (`None` if a code is too long
-    /// for [`Setup::park_of`]'s room: then each park is asked).
-    codes: Option<Vec<(String, usize)>>,
+    /// Whether the kept cells go to a terminal: their control characters
+    /// are then escaped (a file or pipe gets them as read).
+    pub escape_kept: bool,
     /// Each park's code as a CSV field (quoted if it must be), for every
     /// row's `park` column.
     pub(super) code_fields: Vec<String>,
@@ -129,7 +127,7 @@ impl<'a> Setup<'a> {
             spray: Spray::Landing,
             own_air: false,
             keep: Vec::new(),
-            codes: park_codes(parks),
+            escape_kept: false,
             code_fields: parks.parks.iter().map(|p| quoted(&p.code)).collect(),
         }
     }
@@ -137,39 +135,8 @@ impl<'a> Setup<'a> {
     /// The index of the first park that answers to `code` (any case), as
     /// [`park::Park::answers_to`] says.
     pub(super) fn park_of(&self, code: &str) -> Option<usize> {
-        let mut room = [0u8; LONGEST_CODE];
-        match (&self.codes, room.get_mut(..code.len())) {
-            (Some(codes), Some(lower)) => {
-                lower.copy_from_slice(code.as_bytes());
-                lower.make_ascii_lowercase();
-                let found = codes.binary_search_by(|(c, _)| c.as_bytes().cmp(lower));
-                found.ok().map(|i| codes[i].1)
-            }
-            _ => self.parks.parks.iter().position(|p| p.answers_to(code)),
-        }
+        self.parks.parks.iter().position(|p| p.answers_to(code))
     }
-}
-
-/// Room for a park's code or alias in [`Setup::park_of`]; a park whose
-/// code is longer is found by asking each park.
-const LONGEST_CODE: usize = 32;
-
-/// [`Setup`]'s sorted codes: the first park's, where two answer to one.
-fn park_codes(parks: &Parks) -> Option<Vec<(String, usize)>> {
-    let mut codes: Vec<(String, usize)> = Vec::new();
-    for (index, park) in parks.parks.iter().enumerate() {
-        for code in park.codes() {
-            if code.len() > LONGEST_CODE {
-                return None;
-            }
-            let code = code.to_ascii_lowercase();
-            if !codes.iter().any(|(c, _)| *c == code) {
-                codes.push((code, index));
-            }
-        }
-    }
-    codes.sort();
-    Some(codes)
 }
 
 /// What a row's Savant cells say.
@@ -196,17 +163,18 @@ impl SavantCells {
         setup: &Setup,
     ) -> Result<(), String> {
         let number = || {
-            plain_decimal(value)
-                .or_else(|| value.parse::<f64>().ok())
+            (value.parse::<f64>().ok())
                 .filter(|v| v.is_finite())
                 .ok_or_else(|| format!("{} = {:?}: not a number", column.name(), cut(value, 80)))
         };
+        // Measurements, only compared: one that cannot be read is missing.
+        let feet = || measure(value, Quantity::Distance, |ft| ft * METRES_PER_FOOT);
         match column {
             SavantColumn::HcX => self.hc_x = Some(number()?),
             SavantColumn::HcY => self.hc_y = Some(number()?),
-            SavantColumn::Distance => self.distance = Some(number()? * METRES_PER_FOOT),
-            SavantColumn::HangTime => self.hang_time = Some(number()?),
-            SavantColumn::Apex => self.apex = Some(number()? * METRES_PER_FOOT),
+            SavantColumn::Distance => self.distance = feet(),
+            SavantColumn::HangTime => self.hang_time = measure(value, Quantity::Unchanged, |s| s),
+            SavantColumn::Apex => self.apex = feet(),
             SavantColumn::Stand => {
                 self.side = Some(match value {
                     "R" | "r" => Side::Right,
@@ -232,9 +200,17 @@ impl SavantCells {
         Ok(())
     }
 
-    /// The spray angle (rad), if the row has both hit coordinates.
+    /// The spray angle (rad), if the row has both hit coordinates and they
+    /// are not the plate's own (which gives no direction).
     pub(super) fn spray(&self) -> Option<f64> {
-        Some(spray_angle(self.hc_x?, self.hc_y?))
+        Some(spray_angle(self.hc_x?, self.hc_y?)).filter(|angle| !angle.is_nan())
+    }
+
+    /// Whether the hit coordinates are exactly the plate's.
+    pub(super) fn at_plate(&self) -> bool {
+        self.hc_x
+            .zip(self.hc_y)
+            .is_some_and(|(x, y)| spray_angle(x, y).is_nan())
     }
 }
 
@@ -242,30 +218,12 @@ impl SavantCells {
 /// quote or a line break (and when it starts or ends with a space, which
 /// some readers would trim).
 pub(super) fn quoted(field: &str) -> String {
-    let mut out = Vec::with_capacity(field.len());
-    write_quoted(&mut out, field);
-    String::from_utf8(out).expect("text in, text out")
-}
-
-/// [`quoted`], appended to a byte buffer.
-pub(super) fn write_quoted(out: &mut Vec<u8>, field: &str) {
-    // The specials are ASCII, so a byte test finds them (a multi-byte
-    // character holds no ASCII byte).
-    let special = |b: &u8| matches!(b, b',' | b'"' | b'\n' | b'\r');
-    let needs =
-        field.as_bytes().iter().any(special) || field.starts_with(' ') || field.ends_with(' ');
-    if !needs {
-        out.extend_from_slice(field.as_bytes());
-        return;
+    let special = field.contains([',', '"', '\n', '\r']);
+    if special || field.starts_with(' ') || field.ends_with(' ') {
+        format!("\"{}\"", field.replace('"', "\"\""))
+    } else {
+        field.to_owned()
     }
-    out.push(b'"');
-    for piece in field.split_inclusive('"') {
-        out.extend_from_slice(piece.as_bytes());
-        if piece.ends_with('"') {
-            out.push(b'"');
-        }
-    }
-    out.push(b'"');
 }
 
 /// What the batch used and skipped, said in one line at the end.
@@ -277,6 +235,8 @@ pub(super) struct Summary {
     pub sprayed: usize,
     /// Rows flown without hit coordinates (though the header has them).
     pub without_spray: usize,
+    /// Rows whose hit coordinates are the plate's: no spray.
+    pub at_plate: usize,
     /// Flights spent solving launch directions.
     pub solve_flights: usize,
     /// Rows flown at each park (by index), and at the generic fence.
@@ -299,6 +259,7 @@ impl Summary {
         self.estimated += other.estimated;
         self.sprayed += other.sprayed;
         self.without_spray += other.without_spray;
+        self.at_plate += other.at_plate;
         self.solve_flights += other.solve_flights;
         for (mine, theirs) in self.at_park.iter_mut().zip(&other.at_park) {
             *mine += theirs;
@@ -313,6 +274,8 @@ impl Summary {
         if job.launch.spray.is_some() {
             self.sprayed += 1;
             self.solve_flights += flights;
+        } else if job.spray_at_plate {
+            self.at_plate += 1;
         } else if header.hit_coordinates {
             self.without_spray += 1;
         }
@@ -353,6 +316,14 @@ impl Summary {
                 self.without_spray
             ));
         }
+        if self.at_plate > 0 {
+            parts.push(format!(
+                "{} row{} with a spray at the plate (hit coordinates 125.42, 198.27: no \
+                 direction) flown toward the preset's direction",
+                self.at_plate,
+                if self.at_plate == 1 { "" } else { "s" }
+            ));
+        }
         let parks = self.at_park.iter().filter(|&&n| n > 0).count();
         if parks > 0 {
             let how = if setup.park.is_some() {
@@ -387,38 +358,6 @@ impl Summary {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_park_is_found_by_its_codes_as_the_parks_answer() {
-        let parks = crate::preset::parks::all(None).unwrap();
-        let preset = crate::preset::load("fly-ball", None).unwrap();
-        let setup = Setup::new(&preset, &parks);
-        let mut asked = vec![
-            String::new(),
-            "generic".to_owned(),
-            "x".repeat(LONGEST_CODE + 1),
-            "NYYY".to_owned(),
-            "ny".to_owned(),
-            "BOS ".to_owned(),
-            "bös".to_owned(),
-        ];
-        for park in &parks.parks {
-            for code in park.codes() {
-                asked.push(code.to_owned());
-                asked.push(code.to_ascii_lowercase());
-                asked.push(code.to_ascii_uppercase());
-                asked.push(format!("{code}x"));
-                asked.push(code[..code.len() - 1].to_owned());
-            }
-        }
-        let mut found = 0;
-        for code in &asked {
-            let each = parks.parks.iter().position(|p| p.answers_to(code));
-            assert_eq!(setup.park_of(code), each, "{code:?}");
-            found += usize::from(each.is_some());
-        }
-        assert!(found >= 3 * 30, "{found}");
-    }
 
     #[test]
     fn kept_fields_are_quoted_as_rfc_4180_asks() {

@@ -9,8 +9,7 @@ use super::{PlanarConstants, SpatialConstants};
 use crate::model::aero::{DragCurve, LiftCurve, WithModels};
 use crate::model::clearing::{planar_reach_at, spatial_reach_at};
 use crate::numerics::ode::lanes::{
-    FirstSteps, LANES, LaneCode, LaneProblems, LaneReal, LaneStart, LaneSystem, Lanes,
-    integrate_lanes,
+    FirstSteps, LANES, Lane, LaneReal, LaneStart, LaneSystem, Lanes, integrate_lanes,
 };
 use crate::numerics::ode::{Control, Outcome, Settings, State, Stats, Step};
 
@@ -62,10 +61,6 @@ fn lanes_of<C, V: LaneReal>(each: &[C; LANES], field: impl Fn(&C) -> f64) -> V {
 /// C_D of four flights: by each lane's piece (`pieces`), or by the piece
 /// its Re is on if `None`.
 ///
-/// The forces are handed it in a closure marked `#[inline(always)]`: a
-/// closure is compiled with the target features of the function that
-/// defines it, so one left to the inliner's choice could be baseline code
-/// called from the lanes' AVX2 loop, its vector operations each a call.
 #[inline(always)]
 fn drag_lanes<V: LaneReal>(drag: &impl DragCurve, pieces: Option<V>, re: V, spin_rate: V) -> V {
     let pieces = match pieces {
@@ -441,11 +436,10 @@ where
 /// Flies `jobs` in lock-step, four at a time, every flight with the
 /// models of the first (the caller groups them so), reporting to
 /// `reports`: each as [`super::fly`] would fly it alone, to its tolerance.
-/// On `code`'s instructions where the CPU has them (the same results on
-/// any). Each flight starts from its neighbour's first step, or with
+/// Each flight starts from its neighbour's first step, or with
 /// [`FirstSteps::Guessed`] from its own, as a flight alone does.
 pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
-    (code, first_steps): (LaneCode, FirstSteps),
+    first_steps: FirstSteps,
     jobs: impl Iterator<Item = LaneJob<N, D>>,
     options: &FlightOptions,
     reports: LaneReports<'_, N>,
@@ -456,7 +450,6 @@ pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
     };
     let (drag, lift) = (first.flight.drag(), first.flight.lift());
     let run = Run {
-        code,
         first_steps,
         jobs,
         options: *options,
@@ -468,7 +461,6 @@ pub fn fly_lanes<const N: usize, D: LaneFlight<N>>(
 
 /// [`fly_lanes`] once the models are known.
 struct Run<'r, const N: usize, D, J> {
-    code: LaneCode,
     first_steps: FirstSteps,
     jobs: J,
     options: FlightOptions,
@@ -484,60 +476,28 @@ where
     type Output = ();
 
     fn run<Dr: DragCurve + Copy, L: LiftCurve + Copy>(self, drag: Dr, lift: L) {
-        let problems = Problems {
+        let none = [false; LANES];
+        let mut system: FlightLanes<N, Lane, D, Dr, L, J> = FlightLanes {
+            switching: self.options.stop_at_kinks && !drag.kinks().is_empty(),
             models: (drag, lift),
             stop_at_kinks: self.options.stop_at_kinks,
-            jobs: self.jobs,
-            reports: self.reports,
-            flight: std::marker::PhantomData,
-        };
-        let settings = Settings::new(self.options.tolerance);
-        integrate_lanes(self.code, problems, &settings, self.first_steps);
-    }
-}
-
-/// The flights, their models and their reports, before they are put on
-/// lanes of a number type.
-struct Problems<'r, const N: usize, D, Dr, L, J> {
-    models: (Dr, L),
-    stop_at_kinks: bool,
-    jobs: J,
-    reports: LaneReports<'r, N>,
-    flight: std::marker::PhantomData<D>,
-}
-
-impl<'r, const N: usize, D, Dr, L, J> LaneProblems<N> for Problems<'r, N, D, Dr, L, J>
-where
-    D: LaneFlight<N>,
-    Dr: DragCurve,
-    L: LiftCurve,
-    J: Iterator<Item = LaneJob<N, D>>,
-{
-    type System<V: LaneReal> = FlightLanes<'r, N, V, D, Dr, L, J>;
-
-    #[inline(always)]
-    fn system<V: LaneReal>(self) -> Self::System<V> {
-        let (drag, _) = &self.models;
-        let none = [false; LANES];
-        FlightLanes {
-            switching: self.stop_at_kinks && !drag.kinks().is_empty(),
-            models: self.models,
-            stop_at_kinks: self.stop_at_kinks,
             locates_apex: self.reports.done.locates_apex(),
             constants: D::gather(&[D::Constants::default(); LANES]),
-            pieces: V::splat(0.0),
-            in_wind: V::mask_of(none),
+            pieces: Lane::splat(0.0),
+            in_wind: Lane::mask_of(none),
             bounds: Bounds {
-                kink_below: V::splat(0.0),
-                kink_above: V::splat(0.0),
-                wind_height: V::splat(0.0),
-                in_wind: V::mask_of(none),
+                kink_below: Lane::splat(0.0),
+                kink_above: Lane::splat(0.0),
+                wind_height: Lane::splat(0.0),
+                in_wind: Lane::mask_of(none),
             },
-            watched_from: V::splat(0.0),
+            watched_from: Lane::splat(0.0),
             events: [const { None }; LANES],
             index: [0; LANES],
             jobs: self.jobs,
             reports: self.reports,
-        }
+        };
+        let settings = Settings::new(self.options.tolerance);
+        integrate_lanes(&mut system, &settings, self.first_steps);
     }
 }

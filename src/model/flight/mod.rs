@@ -344,8 +344,7 @@ impl<const N: usize, D: Dynamics<N>, S: Start<N>, W: FnMut(&Step<N>)> WithModels
         // The regime the right-hand side reads during a step, which the
         // observer changes between steps.
         let regime = Cell::new(events.regime());
-        // Inlined into the integrator's loop (and so compiled for AVX2 in
-        // its clone for it: see `ode::integrate`), whatever the inliner's
+        // Inlined into the integrator's loop, whatever the inliner's
         // estimate of the models' formulas.
         let rhs = inlined(
             #[inline(always)]

@@ -90,6 +90,8 @@ const SHORT_MARGIN: f64 = 1e-9;
 pub enum FenceError {
     #[error("has {0} points; a fence needs at least 2, from -π/4 to +π/4")]
     TooFew(usize),
+    #[error("has {0} points; a fence takes at most {MAX_POINTS} (one every 0.09°)")]
+    TooMany(usize),
     #[error("point {index}: {field} = {value}: must be a finite number in {accepted}")]
     OutOfRange {
         index: usize,
@@ -115,6 +117,11 @@ pub enum FenceError {
     NotFoulLineToFoulLine { first: f64, last: f64 },
 }
 
+/// The most points a fence takes: the bundled fences have at most 181 (one
+/// every half degree); every flight that meets a fence looks it up, and a
+/// park file of 1 MiB could otherwise hold 20,000.
+pub const MAX_POINTS: usize = 1000;
+
 /// How close to ±π/4 the end points must be (rad): the data files give
 /// directions to five decimals.
 const END_TOLERANCE: f64 = 1e-4;
@@ -123,13 +130,17 @@ const MAX_DISTANCE: f64 = 1000.0;
 const MAX_HEIGHT: f64 = 100.0;
 
 impl Fence {
-    /// A fence from points, checked: at least two, each distance in
+    /// A fence from points, checked: at least two and at most
+    /// [`MAX_POINTS`], each distance in
     /// (0, 1000] m and height in (0, 100] m, directions not decreasing (at
     /// most two at one direction) from −π/4 to +π/4. The end points are
     /// moved onto the foul lines exactly.
     pub fn new(mut points: Vec<FencePoint>) -> Result<Fence, FenceError> {
         if points.len() < 2 {
             return Err(FenceError::TooFew(points.len()));
+        }
+        if points.len() > MAX_POINTS {
+            return Err(FenceError::TooMany(points.len()));
         }
         for (index, p) in points.iter().enumerate() {
             let check = |field, value: f64, max: f64, accepted| {

@@ -4,8 +4,7 @@
 //! them), and the extension's coefficients are six combinations of the
 //! stages that those steps need not pay for.
 
-use std::cell::{Cell, UnsafeCell};
-use std::mem::MaybeUninit;
+use std::cell::OnceCell;
 
 use super::State;
 
@@ -97,26 +96,12 @@ pub struct Step<'a, const N: usize> {
     pub y1: State<N>,
     /// Where the extension comes from.
     source: Source<'a, N>,
-    /// The extension [`Source::Build`] made, once `is_built`: written in
-    /// place (a `OnceCell` moved its 200 bytes twice on the way in).
-    built: UnsafeCell<MaybeUninit<DenseStep<N>>>,
-    is_built: Cell<bool>,
+    /// The extension [`Source::Build`] made, once asked for.
+    built: OnceCell<DenseStep<N>>,
 }
 
-/// Writes a step's extension into the place given, and lends it back (the
-/// builder writes it in place: returned by value, it was copied on its way).
-pub type BuildDense<'a, const N: usize> =
-    dyn Fn(&mut MaybeUninit<DenseStep<N>>) -> &DenseStep<N> + 'a;
-
-/// `build`, as a [`BuildDense`] (a closure's signature is inferred with the
-/// lent extension's lifetime unrelated to its place's).
-#[inline(always)]
-pub fn dense_builder<const N: usize, F>(build: F) -> F
-where
-    F: Fn(&mut MaybeUninit<DenseStep<N>>) -> &DenseStep<N>,
-{
-    build
-}
+/// Makes a step's extension from the integrator's stages.
+pub type BuildDense<'a, const N: usize> = dyn Fn() -> DenseStep<N> + 'a;
 
 /// Where a [`Step`]'s extension comes from.
 #[derive(Clone, Copy)]
@@ -141,8 +126,7 @@ impl<'a, const N: usize> Step<'a, N> {
             y0,
             y1,
             source: Source::Build(build),
-            built: UnsafeCell::new(MaybeUninit::uninit()),
-            is_built: Cell::new(false),
+            built: OnceCell::new(),
         }
     }
 
@@ -158,8 +142,7 @@ impl<'a, const N: usize> Step<'a, N> {
             y0,
             y1,
             source: Source::Borrowed(dense),
-            built: UnsafeCell::new(MaybeUninit::uninit()),
-            is_built: Cell::new(false),
+            built: OnceCell::new(),
         }
     }
 
@@ -168,27 +151,7 @@ impl<'a, const N: usize> Step<'a, N> {
     pub fn dense(&self) -> &DenseStep<N> {
         match self.source {
             Source::Borrowed(dense) => dense,
-            // SAFETY: `is_built` is set only once `built` is written (the
-            // builder lent it back), and `built` is not written again.
-            Source::Build(_) if self.is_built.get() => unsafe {
-                (*self.built.get()).assume_init_ref()
-            },
-            Source::Build(build) => {
-                // SAFETY: nothing borrows `built` before it is written (it is
-                // lent out only once `is_built`), and a `Step` is not `Sync`
-                // (its `Cell`), so no other thread writes it meanwhile.
-                let place = self.built.get();
-                let dense = build(unsafe { &mut *place });
-                // Safe code lends the place's contents only through
-                // `MaybeUninit::write`, which fills it: a builder that lent
-                // some other extension leaves this one unbuilt (and asked
-                // again), so that `assume_init_ref` above never reads an
-                // unwritten place.
-                if std::ptr::eq(dense, place.cast::<DenseStep<N>>()) {
-                    self.is_built.set(true);
-                }
-                dense
-            }
+            Source::Build(build) => self.built.get_or_init(build),
         }
     }
 

@@ -12,9 +12,7 @@
 //! system's, lane by lane, in scalar code.
 //!
 //! The vectors' type is a parameter ([`LaneReal`]): `wide`'s [`Lane`]
-//! (SSE2 pairs in the baseline x86-64 build), or, where the CPU has AVX2
-//! ([`LaneCode`]), one AVX register in a clone of the loop compiled for it.
-//! Both give the same bits.
+//! (SSE2 pairs in the baseline x86-64 build).
 
 use std::ops::{Add, Mul, Sub};
 
@@ -22,13 +20,12 @@ use super::controller::{
     LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth,
 };
 use super::stages::{Stages, Vector, dense_c5, error_squared, inverse_scales, stages_into};
-use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, dense_builder, too_small};
+use super::{Control, DenseStep, Outcome, Settings, State, Stats, Step, too_small};
 
 pub use super::super::real::{LANES, Lane, LaneReal};
 
 /// The states (or slopes) of four problems: component i of lane j is
-/// `self.0[i]`'s lane j. `V` is the lanes' number: [`Lane`] (baseline), or
-/// the AVX2 loop's (see [`integrate_lanes`]).
+/// `self.0[i]`'s lane j. `V` is the lanes' number ([`Lane`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Lanes<const N: usize, V = Lane>(pub [V; N]);
 
@@ -63,9 +60,6 @@ impl<const N: usize, V: LaneReal> Lanes<N, V> {
     }
 }
 
-// The operators as loops, not closures: a closure is compiled with the
-// target features of the function that defines it, and would leave the
-// AVX2 loop's lanes to baseline code.
 impl<const N: usize, V: LaneReal> Add for Lanes<N, V> {
     type Output = Self;
     #[inline(always)]
@@ -193,10 +187,6 @@ fn set<V: LaneReal>(v: &mut V, j: usize, x: f64) {
     v.set(j, x);
 }
 
-/// The lanes' right-hand side, as [`integrate_lanes_body`] is handed it.
-trait Derivative<const N: usize, V, S>: Fn(&S, V, &Lanes<N, V>) -> Lanes<N, V> {}
-impl<const N: usize, V, S, F: Fn(&S, V, &Lanes<N, V>) -> Lanes<N, V>> Derivative<N, V, S> for F {}
-
 impl<const N: usize, V: LaneReal> Carried<N, V> {
     /// Takes lane `j`'s next problem, or idles it.
     fn refill<S: LaneSystem<N, V>>(&mut self, system: &mut S, j: usize) {
@@ -229,19 +219,14 @@ impl<const N: usize, V: LaneReal> Carried<N, V> {
 
     /// Evaluates k1 for the fresh lanes (one evaluation for all), and the
     /// first step of those that have none (Hairer's guess, one more).
-    fn start_fresh<S: LaneSystem<N, V>>(
-        &mut self,
-        system: &S,
-        derivative: &impl Derivative<N, V, S>,
-        settings: &Settings,
-    ) {
+    fn start_fresh<S: LaneSystem<N, V>>(&mut self, system: &S, settings: &Settings) {
         let count = self.fresh.iter().filter(|&&fresh| fresh).count();
         if count == 0 {
             return;
         }
         // One lane (a restart, mostly) by itself; several at once.
         let all = if count > 1 {
-            Some(derivative(system, self.t, &self.y))
+            Some(system.derivative(self.t, &self.y))
         } else {
             None
         };
@@ -269,103 +254,14 @@ impl<const N: usize, V: LaneReal> Carried<N, V> {
     }
 }
 
-/// Which instructions the lock-step loop runs on: the baseline build's
-/// ([`Lane`]: SSE2 pairs on x86-64), or AVX2's (one register for four
-/// lanes). Both give the same bits: only exactly rounded operations, and
-/// no fused multiply-add.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum LaneCode {
-    Baseline,
-    Avx2,
-}
-
-impl LaneCode {
-    /// The fastest this CPU runs ([`super::super::cpu::has_avx2`] asks the CPU
-    /// once and caches the answer).
-    pub fn detected() -> Self {
-        if LaneCode::Avx2.runs_here() {
-            LaneCode::Avx2
-        } else {
-            LaneCode::Baseline
-        }
-    }
-
-    /// Whether this CPU runs it.
-    pub fn runs_here(self) -> bool {
-        match self {
-            LaneCode::Baseline => true,
-            #[cfg(target_arch = "x86_64")]
-            LaneCode::Avx2 => super::super::cpu::has_avx2(),
-            #[cfg(not(target_arch = "x86_64"))]
-            LaneCode::Avx2 => false,
-        }
-    }
-}
-
-/// Problems for the lanes, whichever number type they are flown on: the
-/// caller's side of [`integrate_lanes`].
-pub trait LaneProblems<const N: usize> {
-    type System<V: LaneReal>: LaneSystem<N, V>;
-    /// The system on lanes of `V`, ready to be refilled.
-    fn system<V: LaneReal>(self) -> Self::System<V>;
-}
-
-/// Integrates the problems, four at a time, until there are no more: each
-/// as [`super::integrate`] would, with `settings` for all (its
+/// Integrates `system`'s problems, four at a time, until there are no
+/// more: each as [`super::integrate`] would, with `settings` for all (its
 /// `initial_step`, if given, for the first four, unless `first_steps` is
-/// [`FirstSteps::Guessed`]). Never allocates. On `code`'s instructions, or
-/// the baseline's where the CPU lacks them.
-pub fn integrate_lanes<const N: usize, P: LaneProblems<N>>(
-    code: LaneCode,
-    problems: P,
-    settings: &Settings,
-    first_steps: FirstSteps,
-) {
-    #[cfg(target_arch = "x86_64")]
-    if code == LaneCode::Avx2 && code.runs_here() {
-        // SAFETY: the CPU runs AVX2.
-        unsafe { integrate_lanes_avx2(problems, settings, first_steps) };
-        return;
-    }
-    let _ = code;
-    let mut system = problems.system::<Lane>();
-    integrate_lanes_body(
-        &mut system,
-        settings,
-        first_steps,
-        |s: &P::System<Lane>, t, y| s.derivative(t, y),
-    );
-}
-
-/// The loop on `Avx2Lane` (`real/avx2.rs`), compiled for AVX2: every
-/// operation on its lanes is inlined here. The right-hand side is the
-/// closure defined here, so that it is compiled for AVX2 too (a closure
-/// takes the target features of the function that defines it, not of its
-/// caller).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn integrate_lanes_avx2<const N: usize, P: LaneProblems<N>>(
-    problems: P,
-    settings: &Settings,
-    first_steps: FirstSteps,
-) {
-    use super::super::real::Avx2Lane;
-    let mut system = problems.system::<Avx2Lane>();
-    integrate_lanes_body(
-        &mut system,
-        settings,
-        first_steps,
-        |s: &P::System<Avx2Lane>, t, y| s.derivative(t, y),
-    );
-}
-
-/// The loop, inlined into each of its entries.
-#[inline(always)]
-fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
+/// [`FirstSteps::Guessed`]). Never allocates.
+pub fn integrate_lanes<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
     system: &mut S,
     settings: &Settings,
     first_steps: FirstSteps,
-    derivative: impl Derivative<N, V, S>,
 ) {
     let tol = settings.tolerance;
     let (relative, absolute) = (V::splat(tol.relative), V::splat(tol.absolute));
@@ -390,7 +286,7 @@ fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
         y1: Lanes::zero(),
     };
     loop {
-        c.start_fresh(system, &derivative, settings);
+        c.start_fresh(system, settings);
         // Each lane's limits, as the single integrator checks them.
         let mut h = c.h.to_array();
         let t = c.t.to_array();
@@ -426,7 +322,7 @@ fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
         let (t0, y0, k1) = (c.t, c.y, c.k1);
         stages_into(
             &mut s,
-            &mut |t, y: &Lanes<N, V>| derivative(system, t, y),
+            &mut |t, y: &Lanes<N, V>| system.derivative(t, y),
             t0,
             &y0,
             &k1,
@@ -481,8 +377,7 @@ fn integrate_lanes_body<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
             let (t0j, hj) = (t0.to_array()[j], h_all[j]);
             let y0j = y0.lane(j);
             let y1j = s.y1.lane(j);
-            let build =
-                dense_builder(|out| &*out.write(lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s)));
+            let build = || lane_dense(j, t0j, hj, (&y0j, &y1j), &k1, &s);
             let step = Step::new((t0j, t1_all[j]), (y0j, y1j), &build);
             let control = system.observe(j, &step);
             match control {

@@ -19,7 +19,7 @@ pub mod stages;
 mod tableau;
 
 use controller::{LOG2_ERROR_FLOOR, accepted_growth, initial_step, log2_error, rejected_growth};
-pub use dense::{BuildDense, DenseStep, Step, dense_builder};
+pub use dense::{BuildDense, DenseStep, Step};
 pub use fixed::integrate_fixed;
 use stages::{dense_c5, error_squared, inverse_scales, stages};
 
@@ -124,53 +124,7 @@ pub(crate) fn too_small(h: f64, t: f64) -> bool {
 
 /// Integrates y' = f(t, y) from (t0, y0) toward `t_end`, showing each
 /// accepted step to `observe`. Never allocates.
-///
-/// Where the CPU has AVX2, the loop runs a clone compiled for it, with the
-/// right-hand side and the observer inlined (hand them in as closures
-/// marked `#[inline(always)]`): three-operand instructions, fewer register
-/// copies. Its bits are the baseline's: the same exactly rounded
-/// operations, and no fused multiply-add (Rust fuses none by itself).
 pub fn integrate<const N: usize, F, O>(
-    f: F,
-    t0: f64,
-    y0: State<N>,
-    t_end: f64,
-    settings: &Settings,
-    observe: O,
-) -> (Outcome, Stats)
-where
-    F: FnMut(f64, &State<N>) -> State<N>,
-    O: FnMut(&Step<N>) -> Control,
-{
-    #[cfg(target_arch = "x86_64")]
-    if super::cpu::has_avx2() {
-        // SAFETY: the CPU has AVX2.
-        return unsafe { integrate_avx2(f, t0, y0, t_end, settings, observe) };
-    }
-    integrate_body(f, t0, y0, t_end, settings, observe)
-}
-
-/// [`integrate`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn integrate_avx2<const N: usize, F, O>(
-    f: F,
-    t0: f64,
-    y0: State<N>,
-    t_end: f64,
-    settings: &Settings,
-    observe: O,
-) -> (Outcome, Stats)
-where
-    F: FnMut(f64, &State<N>) -> State<N>,
-    O: FnMut(&Step<N>) -> Control,
-{
-    integrate_body(f, t0, y0, t_end, settings, observe)
-}
-
-/// [`integrate`]'s loop, inlined into each clone.
-#[inline(always)]
-fn integrate_body<const N: usize, F, O>(
     mut f: F,
     t0: f64,
     y0: State<N>,
@@ -227,15 +181,7 @@ where
             previous_log2_error = log2_error.max(LOG2_ERROR_FLOOR);
             last_rejected = false;
             let k7 = s.k[5];
-            let build = dense_builder(|out| {
-                &*out.write(DenseStep::new(
-                    t,
-                    h,
-                    (y, s.y1),
-                    (&k1, &k7),
-                    dense_c5(&k1, &s, h),
-                ))
-            });
+            let build = || DenseStep::new(t, h, (y, s.y1), (&k1, &k7), dense_c5(&k1, &s, h));
             let t1 = t + h;
             let step = Step::new((t, t1), (y, s.y1), &build);
             let control = observe(&step);
@@ -290,50 +236,6 @@ mod tests {
         assert!(stats.accepted < 400);
     }
 
-    /// The AVX2 clone's bits are the baseline's, step for step: on a ball
-    /// with quadratic drag whose coefficient falls exponentially with the
-    /// speed (a square root, an exponential, divisions, the controller's
-    /// bit tricks and the observer's reads inside the steps).
-    #[test]
-    #[cfg(target_arch = "x86_64")]
-    fn the_avx2_clone_gives_the_baselines_bits() {
-        if !std::arch::is_x86_feature_detected!("avx2") {
-            return;
-        }
-        let f = |_t: f64, y: &State<4>| {
-            let speed = (y[2] * y[2] + y[3] * y[3]).sqrt();
-            let drag = (0.15 + 0.35 * (-speed / 30.0).exp()) * speed / 200.0;
-            State::<4>::new(y[2], y[3], -drag * y[2], -drag * y[3] - 9.81)
-        };
-        let y0 = State::<4>::new(0.0, 1.0, 40.0, 25.0);
-        for tol in [1e-3, 1e-7, 1e-11] {
-            let settings = Settings::new(Tolerance::uniform(tol));
-            let run = |avx2: bool| {
-                let mut seen = Vec::new();
-                let observe = |s: &Step<4>| {
-                    let mid = s.at(0.5 * (s.t0 + s.t1));
-                    seen.push((s.t1, s.y1, mid));
-                    if s.y1[1] < 0.0 {
-                        Control::Stop
-                    } else {
-                        Control::Continue
-                    }
-                };
-                let result = if avx2 {
-                    // SAFETY: the CPU has AVX2 (checked above).
-                    unsafe { integrate_avx2(f, 0.0, y0, 20.0, &settings, observe) }
-                } else {
-                    integrate_body(f, 0.0, y0, 20.0, &settings, observe)
-                };
-                (result, format!("{seen:?}"))
-            };
-            let (baseline, avx2) = (run(false), run(true));
-            assert_eq!(baseline.0.0, Outcome::Stopped);
-            assert!(baseline.0.1.accepted >= 4, "{:?}", baseline.0.1);
-            assert_eq!(baseline, avx2, "tolerance {tol}");
-        }
-    }
-
     #[test]
     fn dense_output_is_fourth_order_accurate() {
         let f = |_t: f64, y: &State<1>| State::<1>::new(y[0]);
@@ -367,16 +269,10 @@ mod tests {
         let builds = std::cell::Cell::new(0);
         let (y0, y1) = (State::<2>::new(1.0, 0.0), State::<2>::new(0.995, -0.0998));
         let (k0, k1) = (State::<2>::new(0.0, -1.0), State::<2>::new(-0.0998, -0.995));
-        let build = dense_builder(|out| {
+        let build = || {
             builds.set(builds.get() + 1);
-            &*out.write(DenseStep::new(
-                0.0,
-                0.1,
-                (y0, y1),
-                (&k0, &k1),
-                State::zeros(),
-            ))
-        });
+            DenseStep::new(0.0, 0.1, (y0, y1), (&k0, &k1), State::zeros())
+        };
         let step = Step::new((0.0, 0.1), (y0, y1), &build);
         // Its ends need no extension.
         assert_eq!((step.y0, step.y1, builds.get()), (y0, y1, 0));
@@ -390,32 +286,6 @@ mod tests {
         // A cubic Hermite through the ends with their slopes.
         assert!((step.slope_at(0.0) - k0).norm() < 1e-14);
         assert!((step.slope_at(0.1) - k1).norm() < 1e-12);
-    }
-
-    #[test]
-    fn a_builder_that_lends_another_extension_leaves_the_step_unbuilt() {
-        // Safe code may lend back an extension other than the place it was
-        // given (leaving the place unwritten): the step must then never
-        // read its place, and asks again.
-        let builds = std::cell::Cell::new(0);
-        let (y0, y1) = (State::<1>::new(1.0), State::<1>::new(2.0));
-        let (k0, k1) = (State::<1>::new(1.0), State::<1>::new(1.0));
-        // (Lent for any place's lifetime: one that lives for ever.)
-        let elsewhere: &'static DenseStep<1> = Box::leak(Box::new(DenseStep::new(
-            0.0,
-            1.0,
-            (y0, y1),
-            (&k0, &k1),
-            State::zeros(),
-        )));
-        let build = dense_builder(|_out| {
-            builds.set(builds.get() + 1);
-            elsewhere
-        });
-        let step = Step::new((0.0, 1.0), (y0, y1), &build);
-        assert_eq!(step.at(0.5), elsewhere.at(0.5));
-        assert_eq!(step.at(0.25), elsewhere.at(0.25));
-        assert_eq!(builds.get(), 2);
     }
 
     #[test]

@@ -105,8 +105,6 @@ pub fn inverse_scales<R: Real, V: Vector<R>, const D: usize>(
     relative: R,
     absolute: R,
 ) -> [R; D] {
-    // A loop, not `array::from_fn`'s closure: a closure left out of line
-    // would be baseline code in the lanes' AVX2 loop (`lanes.rs`).
     let mut scales = [R::splat(1.0); D];
     for (i, scale) in scales.iter_mut().enumerate() {
         let size = y0.component(i).abs().max(y1.component(i).abs());

@@ -46,10 +46,22 @@ impl App {
         }
         let (kind, svg) = self.chart_svg()?;
         let svg = svg.map_err(|e: PictureError| e.to_string())?;
-        let path = fresh_path(dir, &kind).ok_or_else(|| {
-            format!("{MAX_NUMBER} homerun-{kind}-N.svg files already in the folder")
-        })?;
-        crate::atomic_file::write(&path, svg.as_bytes())
+        let fresh = || {
+            fresh_path(dir, &kind).ok_or_else(|| {
+                format!("{MAX_NUMBER} homerun-{kind}-N.svg files already in the folder")
+            })
+        };
+        let mut path = fresh()?;
+        // A name taken meanwhile (another explorer's `x`): the next one.
+        let mut written = crate::atomic_file::write_new(&path, svg.as_bytes());
+        for _ in 0..8 {
+            if !matches!(&written, Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists) {
+                break;
+            }
+            path = fresh()?;
+            written = crate::atomic_file::write_new(&path, svg.as_bytes());
+        }
+        written
             // The reason first and the path last, so that a narrow status line
             // cuts the path's start, not the reason or the file's name.
             .map_err(|e| {

@@ -64,7 +64,12 @@ impl App {
     /// be a wrong answer, not a smaller list).
     pub fn load_parks(&mut self, dir: Option<&std::path::Path>) {
         self.parks = match crate::preset::parks::all(dir) {
-            Ok(list) => ParkList { list, error: None },
+            Ok(list) => {
+                if let Some(note) = &list.note {
+                    self.message = Some((note.clone(), false));
+                }
+                ParkList { list, error: None }
+            }
             Err(e) => {
                 let error = e.to_string();
                 self.message = Some((

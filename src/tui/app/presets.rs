@@ -25,12 +25,23 @@ impl App {
                 let name = text.lines().join("").trim().to_owned();
                 // Taking a bundled name hides the bundled preset from
                 // `--preset NAME` and from `o`: only when asked twice.
-                if preset::is_bundled(&name) && overwrite.as_deref() != Some(name.as_str()) {
+                // Overwriting one of the user's own: only when asked twice too.
+                let asked = overwrite.as_deref() == Some(name.as_str());
+                let question = if preset::user_file(&name, self.presets_dir.as_deref()).is_some() {
+                    Some(format!(
+                        "`{name}` is one of your presets: Enter again to overwrite it"
+                    ))
+                } else if preset::is_bundled(&name) {
+                    Some(format!(
+                        "`{name}` is bundled: your file would hide it (--preset {name} and o load yours); Enter again to save anyway"
+                    ))
+                } else {
+                    None
+                };
+                if let Some(question) = question.filter(|_| !asked) {
                     self.mode = Mode::Save {
                         text,
-                        error: Some(format!(
-                            "`{name}` is bundled: your file would hide it (--preset {name} and o load yours); Enter again to save anyway"
-                        )),
+                        error: Some(question),
                         overwrite: Some(name),
                     };
                     return;
@@ -61,9 +72,7 @@ impl App {
     }
 
     fn save(&self, name: &str) -> Result<PathBuf, String> {
-        let dir = self.presets_dir.as_deref().ok_or_else(|| {
-            "no folder for presets (no config directory); pass --presets-dir DIR".to_owned()
-        })?;
+        let dir = self.presets_dir.as_deref().ok_or(preset::NO_FOLDER)?;
         let preset = Preset {
             name: name.to_owned(),
             description: format!("saved from the explorer (from {})", self.preset_name),
@@ -71,7 +80,9 @@ impl App {
             fence: self.fence,
             source: Source::Bundled,
         };
-        preset.save(dir).map_err(|e| format!("not saved: {e}"))
+        preset
+            .save(dir, true)
+            .map_err(|e| format!("not saved: {e}"))
     }
 
     pub(super) fn open_picker(&mut self) {

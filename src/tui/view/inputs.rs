@@ -18,6 +18,7 @@ use crate::analysis::sensitivity;
 use crate::model::aero::{DragModel, LiftModel};
 use crate::model::keys::HAND_KEY;
 use crate::model::scene::Hand;
+use crate::preset::escape_text;
 use crate::tui::app::{App, Field, GainCell, Mode, input_key};
 use crate::tui::format::{shown_bounds, shown_range, shown_step, shown_value};
 use crate::tui::layout::{input_scroll, inputs_list};
@@ -257,7 +258,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             selected_row = rows.len();
         }
         let (symbol, name, value, unit) = match field {
-            Field::Preset => ("", "preset", app.preset_name.clone(), ""),
+            Field::Preset => ("", "preset", escape_text(&app.preset_name), ""),
             Field::Drag => ("C_D", "drag", app.scene.drag.name().to_owned(), ""),
             Field::Lift => ("C_L", "lift", app.scene.lift.name().to_owned(), ""),
             Field::Hand => ("", "hand", app.scene.bat.hand.name().to_owned(), ""),
@@ -364,11 +365,14 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             } else {
                 app.theme.good
             };
-            Paragraph::new(Line::styled(message.as_str(), style))
+            Paragraph::new(Line::styled(escape_text(message), style))
         }
         None => {
             let text = match app.fields[app.selected] {
-                Field::Preset => format!("{} — Enter or o: open a preset", app.description),
+                Field::Preset => format!(
+                    "{} — Enter or o: open a preset",
+                    escape_text(&app.description)
+                ),
                 Field::Drag => format!("model.drag (h l): {}", app.scene.drag.description()),
                 Field::Lift => format!("model.lift (h l): {}", app.scene.lift.description()),
                 Field::Hand => format!(

@@ -25,8 +25,26 @@ use super::layout::{MIN_SIZE, Tab, layout};
 use super::theme::Theme;
 use super::worker::Gain;
 
-/// Draws the whole screen from the app's state.
+/// Draws the whole screen from the app's state, then takes out of every
+/// cell any control, bidirectional or invisible format character
+/// ([`crate::preset::needs_escape`]) that text from a file brought: the
+/// views escape the texts they know come from files, and this catches the
+/// rest, so that no U+202E reorders the screen and no ESC reaches it.
 pub fn draw(frame: &mut Frame, app: &App) {
+    draw_panes(frame, app);
+    for cell in &mut frame.buffer_mut().content {
+        if cell.symbol().chars().any(crate::preset::needs_escape) {
+            let kept: String = cell
+                .symbol()
+                .chars()
+                .filter(|c| !crate::preset::needs_escape(*c))
+                .collect();
+            cell.set_symbol(if kept.is_empty() { " " } else { &kept });
+        }
+    }
+}
+
+fn draw_panes(frame: &mut Frame, app: &App) {
     let area = frame.area();
     if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
         too_small(frame, area, &app.theme);

@@ -6,6 +6,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap};
 use ratatui_textarea::TextArea;
 
+use crate::preset::escape_text;
 use crate::tui::app::{App, PickItem};
 use crate::tui::keymap;
 use crate::tui::theme::Theme;
@@ -93,8 +94,11 @@ pub fn open(
                 theme.broken
             };
             ListItem::new(Line::from(vec![
-                Span::styled(format!("{:<14}", item.name), Theme::strong(style)),
-                Span::styled(item.detail.clone(), style),
+                Span::styled(
+                    format!("{:<14}", escape_text(&item.name)),
+                    Theme::strong(style),
+                ),
+                Span::styled(escape_text(&item.detail), style),
             ]))
         })
         .collect();
