@@ -226,7 +226,7 @@ fn kept_columns_are_copied_into_the_csv_quoted() {
     );
     let first = lines.next().unwrap();
     // Statcast's 385 ft, then the field with its trailing spaces, quoted.
-    assert!(first.contains(",385.00,"), "{first}");
+    assert!(first.contains(",385.0,"), "{first}");
     assert!(
         first.ends_with(",\"Edwin Encarnacion homers (30) on a fly ball to left center field.  \""),
         "{first}"

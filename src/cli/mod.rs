@@ -165,6 +165,10 @@ pub enum Command {
         /// for a large batch; the parks line says so.
         #[arg(long)]
         one_flight: bool,
+        /// With --batch: write the closing summary (rows flown and skipped, outcomes,
+        /// the error against hit_distance_sc) on stdout after the rows, not stderr.
+        #[arg(long, requires = "batch")]
+        summary: bool,
         /// With --batch: copy these input columns into the output, after the
         /// others (comma-separated, e.g. player_name,game_date,events).
         #[arg(long, value_name = "COLS", requires = "batch")]
@@ -394,6 +398,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         keep,
         spray,
         one_flight,
+        summary,
         ..
     } = command
     {
@@ -403,6 +408,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
         setup.own_air = !*one_flight;
+        setup.summary_to_stdout = *summary;
         if let Some(keep) = keep {
             setup.keep = keep
                 .split(',')
