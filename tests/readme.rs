@@ -392,7 +392,9 @@ fn anchors_are_made_as_github_makes_them() {
 fn the_readme_serves_a_new_user() {
     let readme = std::fs::read_to_string("README.md").unwrap();
     assert!(readme.contains("cargo install --path . --locked"));
-    let batch = readme.find("## A Statcast export").expect("a batch section");
+    let batch = readme
+        .find("## A Statcast export")
+        .expect("a batch section");
     let quick = readme.find("## Quick start for baseball").unwrap();
     assert!(batch < quick);
     assert!(readme[batch..quick].contains("--batch tests/data/savant_home_runs.csv"));
