@@ -211,13 +211,6 @@ pub(super) fn batch(
             if n == 1 { "" } else { "s" }
         ));
     }
-    if outcome.failed > 0 {
-        sinks.note(&format!(
-            "{} of {} rows failed and were skipped (exit status 1)",
-            outcome.failed,
-            outcome.failed + outcome.flown
-        ));
-    }
     // One summary at the end: on stderr, or after the rows with --summary.
     let at = match setup.park {
         Some(i) => format!("at {}", escape_cut(&setup.parks.parks[i].code, 20)),
@@ -235,6 +228,13 @@ pub(super) fn batch(
         let _ = sinks.out.flush();
     } else {
         sinks.note(&line);
+    }
+    if outcome.failed > 0 {
+        sinks.note(&format!(
+            "{} of {} rows failed and were skipped (exit status 1)",
+            outcome.failed,
+            outcome.failed + outcome.flown
+        ));
     }
     Ok(outcome)
 }
