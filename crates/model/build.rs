@@ -47,11 +47,12 @@ fn main() {
         };
         let _ = write!(
             out,
-            "BundledEntry {{ code: {}, aliases: &[{}], name: {}, elevation: {:?}, \
+            "BundledEntry {{ code: {}, aliases: &[{}], name: {}, city: {:?}, elevation: {:?}, \
              center_field_bearing: {:?}, published: {published}, fence: &[",
             text("code"),
             aliases.join(", "),
             text("name"),
+            park.get("city").and_then(|c| c.as_str()).unwrap_or(""),
             number(&park["elevation"]),
             number(&park["center_field_bearing"]),
         );

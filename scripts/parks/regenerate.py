@@ -281,6 +281,7 @@ def main():
             f'code = "{p["code"]}"',
             "aliases = [" + ", ".join(f'"{a}"' for a in aliases) + "]",
             f'name = "{p["name"]}"',
+            f'city = "{p["city"]}"',
             f"elevation = {float(p['elevation_ft']) * FOOT:.1f}  # {p['elevation_ft']} ft",
             f"center_field_bearing = {float(p['bearing']):.1f}  # from {p['bearing_source']}",
             "published = { "

@@ -30,7 +30,7 @@ pub(super) fn figure(
         preset: preset.unwrap_or(paper::figure_preset(number)).to_owned(),
         set: set.to_vec(),
     };
-    let preset = args.resolve(dir)?;
+    let preset = args.resolve(dir, shown.0)?;
     // Figs. 3–4 are the aerodynamic curves; the others need a swing.
     if number >= 5 {
         super::scene::swing_only("figure", &preset)?;

@@ -233,7 +233,8 @@ pub(super) fn clearing_text(ground: &Ground, c: &Clearing, shown: Shown) -> Stri
     }
 }
 
-/// "clears 22 of 30 parks", "… (each in its own air)".
+/// "clears 22 of 30 parks (each in its own air)", "… (on this one flight,
+/// in its air)": every count says whose air it is in.
 pub(super) fn parks_text(flown: &FlownToFence, parks: &Parks, own_air: bool) -> String {
     format!(
         "clears {} of {} parks{}",
@@ -242,7 +243,7 @@ pub(super) fn parks_text(flown: &FlownToFence, parks: &Parks, own_air: bool) -> 
         if own_air {
             " (each in its own air)"
         } else {
-            ""
+            " (on this one flight, in its air)"
         }
     )
 }

@@ -62,7 +62,7 @@ pub struct Cli {
     /// Folder for the user's own parks (default: $XDG_CONFIG_HOME/homerun/parks).
     #[arg(long, global = true, value_name = "DIR")]
     pub parks_dir: Option<PathBuf>,
-    /// Units printed: si (the default) or imperial (ft, mph, rpm, °); see `homerun --help`.
+    /// Units printed, and of a bare number typed: si (default) or imperial (ft, mph, °, rpm).
     #[arg(
         long,
         global = true,
@@ -80,9 +80,12 @@ pub struct Cli {
 /// What `--units` does, said once, under `homerun --help` (every command
 /// takes `--units`, and its own help gives one line).
 pub const UNITS_HELP: &str = "Units: --units imperial prints the text and CSV in ft, in, mph, °, rpm, °F, inHg and oz \
-     instead of si's m, m/s, rad, rad/s, °C, hPa and kg. JSON is always SI, and so is a bare number \
-     in --set, a preset or a batch cell (103mph, 28deg, 2500rpm, 400ft, 70F take their unit); the numbers of sweep's --from/--to and surface's --undercut/--swing-angle are taken in the \
-     units printed. The explorer starts in them (its `u` switches).";
+     instead of si's m, m/s, rad, rad/s, °C, hPa and kg. What you see is what you type: a bare number \
+     in --set, sweep's --from/--to and surface's --undercut/--swing-angle is in the unit printed \
+     (--units imperial --set launch.speed=100 is 100 mph), and a number with a unit takes its unit \
+     (103mph, 28deg, 2500rpm, 400ft, 70F). JSON is always SI, and so is a bare number in a preset \
+     file or a batch column named by its key (a file means what it says, whatever the flag). \
+     The explorer starts in these units (its `u` switches).";
 
 // Which preset to start from, and changes to it. (Not a doc comment: it
 // would become the about of each command that flattens these; see
@@ -143,19 +146,31 @@ pub enum Command {
         #[arg(long)]
         json: bool,
         /// The park whose fence the ball meets, and whose air it flies in unless
-        /// air or weather keys are given: a Savant home_team code (`homerun parks`
-        /// lists them) [default: the generic fence, the same in every direction;
-        /// with --batch: each row's home_team].
-        #[arg(long, value_name = "CODE")]
+        /// air or weather keys are given: a code (Savant's home_team), a name or a
+        /// city, any case (BOS, fenway, "Fenway Park", boston; `homerun parks` lists
+        /// them) [default: the generic fence, the same in every direction; with
+        /// --batch: each row's home_team].
+        #[arg(long, value_name = "PARK")]
         park: Option<String>,
         /// Also list every park with the outcome and margin there.
         #[arg(long, conflicts_with = "batch")]
         all_parks: bool,
-        /// Count (and list) the parks each in its own air, the standard air at
-        /// its elevation (the weather given kept): a flight per park, where by
-        /// default this one flight meets every park's fence.
-        #[arg(long)]
+        /// With --batch: judge each row at each park in that park's own air (the
+        /// standard air at its elevation, the weather given kept), a flight a
+        /// park: ~30x the work. Without it a batch judges each row's one flight,
+        /// in the scene's air, at every park (the summary says so). A lone
+        /// `fly` always judges each park in its own air, unless --one-flight.
+        #[arg(long, conflicts_with = "one_flight")]
         own_air: bool,
+        /// Count (and list) the parks on this one flight, in its air (--park's, or
+        /// the scene's) instead of a flight a park in each park's own air; the
+        /// parks line says so.
+        #[arg(long, conflicts_with = "batch")]
+        one_flight: bool,
+        /// With --batch: write the closing summary (rows flown and skipped, outcomes,
+        /// the error against hit_distance_sc) on stdout after the rows, not stderr.
+        #[arg(long, requires = "batch")]
+        summary: bool,
         /// With --batch: copy these input columns into the output, after the
         /// others (comma-separated, e.g. player_name,game_date,events).
         #[arg(long, value_name = "COLS", requires = "batch")]
@@ -181,8 +196,8 @@ pub enum Command {
         file: String,
         #[command(flatten)]
         scene: SceneArgs,
-        /// The park every row is at [default: each row's home_team].
-        #[arg(long, value_name = "CODE")]
+        /// The park every row is at, by code, name or city [default: each row's home_team].
+        #[arg(long, value_name = "PARK")]
         park: Option<String>,
         /// What Savant's spray angle is (as `fly --batch --spray`).
         #[arg(long, value_name = "WHAT", default_value = "landing")]
@@ -275,7 +290,7 @@ pub enum Command {
     /// The ballparks: code, name, elevation, distances and tallest wall; with
     /// CODE, that park's fence every 5° and at each change of wall height.
     Parks {
-        /// A park's code, as Baseball Savant's home_team (e.g. BOS).
+        /// A park: its code (Baseball Savant's home_team, e.g. BOS), name or city.
         code: Option<String>,
         /// Print JSON (SI: metres, radians from centre field, + toward right field).
         #[arg(long)]
@@ -385,15 +400,19 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         keep,
         spray,
         own_air,
+        summary,
         ..
     } = command
     {
-        let preset = scene.resolve(checked_presets_dir(cli)?.as_deref())?;
+        let preset = scene.resolve(checked_presets_dir(cli)?.as_deref(), cli.units)?;
         scene::check_path("--batch", source)?;
         let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
+        // A batch flies each row once (a season in about a second); a park's
+        // own air is a flight a park, asked for.
         setup.own_air = *own_air;
+        setup.summary_to_stdout = *summary;
         if let Some(keep) = keep {
             setup.keep = keep
                 .split(',')
@@ -430,7 +449,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
     } = command
     {
         let dir = checked_presets_dir(cli)?;
-        let preset = scene.resolve(dir.as_deref())?;
+        let preset = scene.resolve(dir.as_deref(), cli.units)?;
         scene::check_path("calibrate", file)?;
         let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
@@ -500,7 +519,7 @@ fn render_pieces(cli: &Cli, command: &Command) -> Result<Vec<String>, UsageError
     };
     let dir = checked_presets_dir(cli)?;
     let shown = Shown(cli.units);
-    let preset = scene.resolve(dir.as_deref())?;
+    let preset = scene.resolve(dir.as_deref(), cli.units)?;
     scene::swing_only("surface", &preset)?;
     let cells = surface::parse_grid(undercut.as_deref(), swing_angle.as_deref(), grid, shown)?;
     if svg.is_some() {
@@ -515,16 +534,18 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
     let dir = dir.as_deref();
     let shown = Shown(cli.units);
     match command {
-        Command::Hit { scene, json } => {
-            Ok(hit::hit(&scene.resolve_swing("hit", dir)?, *json, shown))
-        }
+        Command::Hit { scene, json } => Ok(hit::hit(
+            &scene.resolve_swing("hit", dir, cli.units)?,
+            *json,
+            shown,
+        )),
         Command::Optimize {
             scene,
             json,
             park: None,
             ..
         } => Ok(optimize::optimum(
-            &scene.resolve_swing("optimize", dir)?,
+            &scene.resolve_swing("optimize", dir, cli.units)?,
             *json,
             shown,
         )),
@@ -535,12 +556,10 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             fix,
         } => {
             let held = optimize::held(fix)?;
-            let mut preset = scene.resolve(dir)?;
+            let mut preset = scene.resolve(dir, cli.units)?;
             scene::swing_only("optimize", &preset)?;
             let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
-            let park = parks
-                .find(code)
-                .ok_or_else(|| parks::unknown(code, &parks))?;
+            let park = parks::lookup(code, &parks)?;
             ground::to_park(&mut preset.scene, park, ground::given_weather(&scene.set));
             Ok(optimize::park_optimum(
                 &preset.scene,
@@ -555,23 +574,22 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             json,
             park,
             all_parks,
-            own_air,
+            one_flight,
             ..
         } => {
-            let mut preset = scene.resolve(dir)?;
+            let mut preset = scene.resolve(dir, cli.units)?;
             let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let generic = ground::generic_fence(&preset);
             let ground = match park {
                 Some(code) => {
-                    let park = parks
-                        .find(code)
-                        .ok_or_else(|| parks::unknown(code, &parks))?;
+                    let park = parks::lookup(code, &parks)?;
                     ground::to_park(&mut preset.scene, park, ground::given_weather(&scene.set));
                     ground::Ground::Park(park)
                 }
                 None => ground::Ground::Generic(&generic),
             };
-            let own_air = own_air.then(|| ground::given_weather(&scene.set));
+            // One rule: a park's outcome is the ball in that park's own air.
+            let own_air = (!*one_flight).then(|| ground::given_weather(&scene.set));
             Ok(fly::fly(
                 &preset,
                 ground,
@@ -594,7 +612,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             json,
             csv,
         } => optimize::sweep(
-            &scene.resolve_swing("sweep", dir)?,
+            &scene.resolve_swing("sweep", dir, cli.units)?,
             key,
             (from, to, *steps),
             Format::new(*json, *csv),
@@ -607,7 +625,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             let Some(code) = code else {
                 return Ok(parks::list(&all, *json, shown));
             };
-            let park = all.find(code).ok_or_else(|| parks::unknown(code, &all))?;
+            let park = parks::lookup(code, &all)?;
             if svg.is_some() {
                 return Ok(crate::picture::park_svg(park)?);
             }
@@ -621,7 +639,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             csv,
             svg,
         } => {
-            let preset = scene.resolve(dir)?;
+            let preset = scene.resolve(dir, cli.units)?;
             if svg.is_some() {
                 return hit::trajectory_svg(&preset, *samples);
             }

@@ -8,7 +8,7 @@ use serde_json::{Value, json};
 use super::shown::Shown;
 use super::table::{Align, Cell, Column, Digits, Table, Width};
 use super::{UsageError, pretty};
-use crate::model::park::{FOUL_LINE, FencePoint, Park};
+use crate::model::park::{FOUL_LINE, FencePoint, Named, Park};
 use crate::preset::parks::Parks;
 use crate::preset::{escape_cut, escape_for_terminal, shown as shown_path};
 use crate::units::Quantity;
@@ -188,6 +188,34 @@ pub(super) fn park_json(park: &Park) -> Value {
 
 /// `parks CODE` for a code no park answers to: one line naming the code
 /// and every code accepted.
+/// The park `query` names (`BOS`, `fenway`, `"Fenway Park"`, `boston`, any
+/// case), or one line saying there is none, or which several it names.
+pub(super) fn lookup<'p>(query: &str, parks: &'p Parks) -> Result<&'p Park, UsageError> {
+    match parks.named(query) {
+        Named::One(park) => Ok(park),
+        Named::None => Err(unknown(query, parks)),
+        Named::Several(several) => Err(UsageError::AmbiguousPark {
+            query: escape_cut(query, 40),
+            candidates: several
+                .iter()
+                .map(|p| {
+                    let city = if p.city.is_empty() {
+                        String::new()
+                    } else {
+                        format!(", {}", escape_cut(&p.city, 40))
+                    };
+                    format!(
+                        "{} ({}{city})",
+                        escape_for_terminal(&p.code),
+                        escape_cut(&p.name, 40)
+                    )
+                })
+                .collect::<Vec<_>>()
+                .join(", "),
+        }),
+    }
+}
+
 pub(super) fn unknown(code: &str, parks: &Parks) -> UsageError {
     UsageError::UnknownPark {
         code: escape_cut(code, 20),

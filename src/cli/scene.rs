@@ -9,14 +9,21 @@ use crate::model::keys::{InputBatch, InputError, TEXT_KEYS};
 use crate::model::launch::SceneKind;
 use crate::model::scene::Scene;
 use crate::preset::{self, FIELD_KEYS, Fence, Preset, cut, escape_for_terminal};
+use crate::units::UnitSystem;
 
 /// The longest path Linux opens (PATH_MAX): a longer `--preset` or
 /// `--presets-dir` is refused before it is used, so that no error echoes it.
 const MAX_PATH: usize = 4096;
 
 impl SceneArgs {
-    /// The preset, with every `--set` applied, validated.
-    pub fn resolve(&self, presets_dir: Option<&Path>) -> Result<Preset, UsageError> {
+    /// The preset, with every `--set` applied, validated. A bare number
+    /// in `--set` is in the unit `--units` shows (`system`): what you see
+    /// is what you type.
+    pub fn resolve(
+        &self,
+        presets_dir: Option<&Path>,
+        system: UnitSystem,
+    ) -> Result<Preset, UsageError> {
         let mut preset = open(&self.preset, presets_dir)?;
         // The --set list is one source: ρ or ν beside the weather is refused.
         let mut batch = InputBatch::new();
@@ -33,7 +40,7 @@ impl SceneArgs {
                     distance: FIELD_KEYS[0].default,
                     height: FIELD_KEYS[1].default,
                 });
-                (field.set)(fence, field.read(value)?);
+                (field.set)(fence, field.read_in(value, system)?);
                 continue;
             }
             // A name (a model's, a hand's) too long to be one is shown cut; a number is
@@ -44,7 +51,7 @@ impl SceneArgs {
                 value.to_owned()
             };
             batch
-                .set_text(&mut preset.scene, key, &value)
+                .set_text_in(&mut preset.scene, key, &value, system)
                 .map_err(with_field_keys)?;
         }
         if let Some(fence) = &preset.fence {
@@ -66,8 +73,9 @@ impl SceneArgs {
         &self,
         command: &'static str,
         presets_dir: Option<&Path>,
+        system: UnitSystem,
     ) -> Result<Scene, UsageError> {
-        let preset = self.resolve(presets_dir)?;
+        let preset = self.resolve(presets_dir, system)?;
         swing_only(command, &preset)?;
         Ok(preset.scene)
     }

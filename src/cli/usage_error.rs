@@ -117,10 +117,15 @@ pub enum UsageError {
     LaunchSwept(&'static str),
     #[error("--batch {input}: {message}")]
     Batch { input: String, message: String },
+    /// `calibrate FILE`'s file could not be read or fitted (named as given).
+    #[error("calibrate {input}: {message}")]
+    Calibrate { input: String, message: String },
     #[error("calibrate --save {name}: {message}")]
     CalibrateSave { name: String, message: String },
-    #[error("no park with code {code:?}; the parks: {accepted}")]
+    #[error("no park named {code:?} (a code, a park's name or its city); the parks: {accepted}")]
     UnknownPark { code: String, accepted: String },
+    #[error("park {query:?} could be {candidates}: give one of these codes")]
+    AmbiguousPark { query: String, candidates: String },
     #[error("standard output is closed: nothing could be written (give it a file or a pipe)")]
     StdoutClosed,
 }

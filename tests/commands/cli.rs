@@ -577,3 +577,29 @@ fn a_sweeps_ends_take_units_and_a_bare_number_is_in_the_unit_shown() {
         ],
     );
 }
+
+/// Issue 28, item 14: `calibrate FILE` blames the file it was given, not
+/// `--batch`; an unknown key is one short line with a "did you mean".
+#[test]
+fn small_refusals_name_what_the_user_typed() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = homerun(dir.path())
+        .args(["calibrate", "/nope.csv"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.starts_with("homerun: calibrate /nope.csv: "), "{err}");
+    assert!(!err.contains("--batch"), "{err}");
+    let out = homerun(dir.path())
+        .args(["fly", "--set", "launch.sped=40"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(
+        err,
+        "homerun: unknown key `launch.sped`; did you mean `launch.speed`? (`homerun keys` lists every key)\n"
+    );
+    assert!(err.len() < 120);
+}

@@ -219,7 +219,7 @@ fn imperial_text_gives_the_margin_in_feet_and_the_directions_in_degrees() {
     let v = json(&["optimize", "--json", "--park", "BOS"]);
     let out = homerun(&["optimize", "--park", "BOS", "--units", "imperial"]);
     let text = String::from_utf8(out.stdout).unwrap();
-    let feet = format!("margin   {:.2} ft: ", number(&v, "margin") / 0.3048);
+    let feet = format!("margin   {:.2} ft ", number(&v, "margin") / 0.3048);
     assert!(text.contains(&feet), "{feet} in {text}");
     let degrees = number(&v, "bat_direction").abs().to_degrees();
     assert!(
@@ -287,4 +287,17 @@ fn a_swing_that_cannot_clear_says_how_far_below_the_wall_and_outside_the_line() 
         margin,
         format!("margin   {:.2} m: {wall}, {line}", number(&v, "margin"))
     );
+}
+
+/// Issue 28, item 14: where the two sides balance, the margin is said once.
+#[test]
+fn a_balanced_margin_is_one_number_once() {
+    let out = homerun(&["optimize", "--park", "BOS"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let margin = text.lines().find(|l| l.starts_with("margin")).unwrap();
+    assert!(
+        margin.ends_with(" m over the wall and inside the foul line alike"),
+        "{margin}"
+    );
+    assert_eq!(margin.matches(" m ").count(), 1, "{margin}");
 }

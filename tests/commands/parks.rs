@@ -289,3 +289,129 @@ fn the_outline_is_an_svg_with_every_wall_height_in_its_legend() {
         Some(2)
     );
 }
+
+/// Issue 28, item 7: a park by its code, name or city, any case, wherever
+/// the command line takes one; a name that fits several lists them in one
+/// line.
+#[test]
+fn a_park_is_found_by_code_name_or_city() {
+    use homerun::model::park::Named;
+    for query in [
+        "BOS",
+        "bos",
+        "fenway",
+        "Fenway Park",
+        "FENWAY  park",
+        "boston",
+    ] {
+        match park::named(park::bundled(), query) {
+            Named::One(p) => assert_eq!(p.code, "BOS", "{query}"),
+            other => panic!("{query}: {other:?}"),
+        }
+    }
+    for (query, code) in [("coors", "COL"), ("Kansas City", "KC"), ("camden", "BAL")] {
+        match park::named(park::bundled(), query) {
+            Named::One(p) => assert_eq!(p.code, code, "{query}"),
+            other => panic!("{query}: {other:?}"),
+        }
+    }
+    match park::named(park::bundled(), "chicago") {
+        Named::Several(several) => {
+            let codes: Vec<&str> = several.iter().map(|p| p.code.as_str()).collect();
+            assert_eq!(codes, ["CHC", "CWS"]);
+        }
+        other => panic!("chicago: {other:?}"),
+    }
+    assert!(matches!(park::named(park::bundled(), "xyz"), Named::None));
+    let homerun = |args: &[&str]| common::command().args(args).output().unwrap();
+    for args in [
+        &["fly", "--preset", "fly-ball", "--park", "Fenway Park"][..],
+        &["parks", "fenway"],
+        &[
+            "optimize",
+            "--park",
+            "boston",
+            "--fix",
+            "bat.direction",
+            "--fix",
+            "bat.undercut",
+        ],
+    ] {
+        let out = homerun(args);
+        assert!(out.status.success(), "{args:?}: {out:?}");
+        assert!(
+            String::from_utf8_lossy(&out.stdout).contains("Fenway Park"),
+            "{args:?}"
+        );
+    }
+    let out = homerun(&["fly", "--park", "new york"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        "homerun: park \"new york\" could be NYM (Citi Field, New York), NYY (Yankee Stadium, New York): give one of these codes\n"
+    );
+}
+
+/// Issue 28, item 4: one rule for a park's air. "Does it clear Fenway" has
+/// one answer: `fly --park BOS`, the BOS row of `--all-parks` (with or
+/// without `--park`) and the batch's margin at BOS all fly the ball in
+/// Fenway's own air; `--one-flight` says it is on one flight.
+#[test]
+fn a_park_is_judged_in_its_own_air_everywhere() {
+    let run = |args: &[&str], stdin: &str| {
+        let out = common::assert_command()
+            .args(args)
+            .write_stdin(stdin)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{args:?}: {out:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let json =
+        |args: &[&str]| -> serde_json::Value { serde_json::from_str(&run(args, "")).unwrap() };
+    let at_park = json(&["fly", "--json", "--preset", "fly-ball", "--park", "BOS"]);
+    let margin = at_park["fence"]["margin"].as_f64().unwrap();
+    for args in [
+        &["fly", "--json", "--preset", "fly-ball", "--all-parks"][..],
+        &[
+            "fly",
+            "--json",
+            "--preset",
+            "fly-ball",
+            "--all-parks",
+            "--park",
+            "COL",
+        ],
+    ] {
+        let all = json(args);
+        let bos = all["all_parks"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|p| p["park"] == "BOS")
+            .unwrap();
+        assert_eq!(bos["margin"].as_f64().unwrap(), margin, "{args:?}");
+    }
+    let batch = run(
+        &[
+            "fly", "--preset", "fly-ball", "--park", "BOS", "--batch", "-",
+        ],
+        "launch.speed,launch.angle,launch.spin\n46.04512,0.48869219,261.79939\n",
+    );
+    let mut lines = batch.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let column = header.iter().position(|h| *h == "margin").unwrap();
+    let printed: f64 = row[column].parse().unwrap();
+    assert!(
+        (printed - margin).abs() < 1e-3,
+        "{printed} against {margin}"
+    );
+    let text = run(&["fly", "--preset", "fly-ball"], "");
+    assert!(text.contains("parks (each in its own air)"), "{text}");
+    let text = run(&["fly", "--preset", "fly-ball", "--one-flight"], "");
+    assert!(
+        text.contains("parks (on this one flight, in its air)"),
+        "{text}"
+    );
+}

@@ -384,3 +384,20 @@ fn anchors_are_made_as_github_makes_them() {
         vec![(1, "b.md#c".to_owned()), (1, "e.svg".to_owned())]
     );
 }
+
+/// Issue 28, item 15: the README installs with the lock file, gives the
+/// batch (an analyst's first command) its own section before the quick
+/// starts, and says how to run the examples without `homerun` on PATH.
+#[test]
+fn the_readme_serves_a_new_user() {
+    let readme = std::fs::read_to_string("README.md").unwrap();
+    assert!(readme.contains("cargo install --path . --locked"));
+    let batch = readme
+        .find("## A Statcast export")
+        .expect("a batch section");
+    let quick = readme.find("## Quick start for baseball").unwrap();
+    assert!(batch < quick);
+    assert!(readme[batch..quick].contains("--batch tests/data/savant_home_runs.csv"));
+    assert!(readme.contains("cargo run --release -- fly"));
+    assert!(readme.contains("target/release/homerun fly"));
+}

@@ -232,3 +232,90 @@ fn batch_cells_take_units_and_statcast_columns_keep_theirs() {
         "{output:?}"
     );
 }
+
+/// Issue 28, item 1: what you see is what you type. Under imperial a bare
+/// number is in the unit each key is shown in, so it is the same double as
+/// the number typed with that unit's symbol, for every key with a unit.
+#[test]
+fn an_imperial_bare_number_is_the_unit_shown_for_every_key() {
+    use homerun::model::keys::all_keys;
+    use homerun::units::UnitSystem;
+    let mut checked = 0;
+    for key in all_keys() {
+        let unit = key.unit_in(UnitSystem::Imperial);
+        if unit.is_identity() {
+            continue;
+        }
+        // The default value as shown, to three decimals, nudged inside.
+        let default = (key.get)(&Scene::default());
+        let mut shown = (unit.show(default) * 1000.0).round() / 1000.0;
+        if !key.bounds.contains(unit.read(shown)) {
+            shown = (unit.show(key.bounds.min.max(-1e3) + key.step) * 1000.0).round() / 1000.0;
+        }
+        let bare = shown.to_string();
+        let mut imperial = Scene::default();
+        imperial
+            .set_text_in(key.name, &bare, UnitSystem::Imperial)
+            .unwrap_or_else(|e| panic!("{}={bare}: {e}", key.name));
+        let suffixed = format!("{bare}{}", unit.symbol);
+        assert_eq!(
+            imperial.get(key.name).unwrap(),
+            typed(key.name, &suffixed),
+            "{} = {bare} under imperial against {suffixed}",
+            key.name
+        );
+        // And never as SI, unless the two units agree there.
+        if unit.read(shown) != shown {
+            assert_ne!(imperial.get(key.name).unwrap(), shown, "{}", key.name);
+        }
+        checked += 1;
+    }
+    assert!(checked >= 20, "{checked} keys with an imperial unit");
+}
+
+#[test]
+fn set_under_units_imperial_reads_a_bare_number_as_shown() {
+    let dir = tempfile::tempdir().unwrap();
+    let fly = |args: &[&str]| {
+        let mut all = vec!["fly", "--json"];
+        all.extend_from_slice(args);
+        let out = homerun(dir.path(), &all, "");
+        assert!(out.status.success(), "{out:?}");
+        serde_json::from_slice::<serde_json::Value>(&out.stdout).unwrap()
+    };
+    let bare = fly(&[
+        "--units",
+        "imperial",
+        "--set",
+        "launch.speed=100",
+        "--set",
+        "launch.angle=25",
+        "--set",
+        "launch.spin=2000",
+        "--set",
+        "field.fence_distance=400",
+    ]);
+    let suffixed = fly(&[
+        "--set",
+        "launch.speed=100mph",
+        "--set",
+        "launch.angle=25deg",
+        "--set",
+        "launch.spin=2000rpm",
+        "--set",
+        "field.fence_distance=400ft",
+    ]);
+    assert_eq!(bare, suffixed);
+    assert_eq!(bare["launch"]["speed"].as_f64(), Some(44.704));
+    // Out of range, the refusal names the unit it was read in and the range in it.
+    let refused = homerun(
+        dir.path(),
+        &["fly", "--units", "imperial", "--set", "launch.speed=300"],
+        "",
+    );
+    assert_eq!(refused.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&refused.stderr),
+        "homerun: launch.speed = 300 mph (134.112 m/s): must be a finite number in (0, 100] m/s, that is (0, 223.693] mph\n"
+    );
+}

@@ -1,8 +1,8 @@
 //! The keys of a preset's `[field]` section: the fence.
 
 use super::Fence;
-use model::keys::{Bounds, InputError, read_typed};
-use units::Quantity;
+use model::keys::{Bounds, InputError, read_in_system, read_typed};
+use units::{Quantity, UnitSystem};
 
 /// One key of a preset's `[field]`: the fence the explorer draws, not an
 /// input of the physics (so not in [`model::keys::KEYS`]). The TOML
@@ -43,6 +43,16 @@ impl FieldKey {
         read_typed(
             (self.name, Quantity::Distance, self.unit, self.bounds),
             text,
+        )
+    }
+
+    /// [`FieldKey::read`] typed under `system`: a bare number in the unit
+    /// shown there (feet under imperial).
+    pub fn read_in(&self, text: &str, system: UnitSystem) -> Result<f64, InputError> {
+        read_in_system(
+            (self.name, Quantity::Distance, self.unit, self.bounds),
+            text,
+            system,
         )
     }
 

@@ -33,6 +33,12 @@ impl Parks {
         park::find(&self.parks, code)
     }
 
+    /// The park `query` names as a user types it: a code or alias, a name
+    /// or a city, or the start of a word of one ([`park::named`]).
+    pub fn named(&self, query: &str) -> park::Named<'_> {
+        park::named(&self.parks, query)
+    }
+
     /// Every code, aliases in parentheses: "AZ (ARI), ATL, …".
     pub fn codes(&self) -> String {
         self.parks

@@ -55,7 +55,7 @@ pub(in crate::cli) fn run(
     json: bool,
     shown: Shown,
 ) -> Result<String, UsageError> {
-    let failed = |message: String| UsageError::Batch {
+    let failed = |message: String| UsageError::Calibrate {
         input: escape_cut(source, 200),
         message,
     };

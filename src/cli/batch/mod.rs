@@ -141,6 +141,7 @@ pub(super) fn batch(
     };
     announce(&header, setup, sinks);
     let mut summary = Summary::new(setup.parks.parks.len());
+    let mut tally = output::Tally::default();
     let context = pieces::Context {
         header: &header,
         setup,
@@ -176,6 +177,7 @@ pub(super) fn batch(
             outcome.failed += piece.failed.len();
             outcome.without_launch += piece.without_launch;
             summary.add(&piece.summary);
+            tally.add(&piece.tally);
             match sinks.out.write_all(&piece.out) {
                 // `| head`: the reader has what it wanted.
                 Err(e) if e.kind() == io::ErrorKind::BrokenPipe => return Ok(outcome),
@@ -208,6 +210,29 @@ pub(super) fn batch(
             "{n} empty line{} skipped",
             if n == 1 { "" } else { "s" }
         ));
+    }
+    // One summary at the end: on stderr, or after the rows with --summary.
+    let air = if setup.own_air {
+        "in its own air"
+    } else {
+        "in the scene's air"
+    };
+    let at = match setup.park {
+        Some(i) => format!("at {} ({air})", escape_cut(&setup.parks.parks[i].code, 20)),
+        None => format!("at each row's park ({air})"),
+    };
+    let skipped = outcome.failed + outcome.without_launch;
+    let line = tally.line(outcome.flown, skipped, &at, shown);
+    if setup.summary_to_stdout {
+        let line = if json {
+            serde_json::json!({ "summary": line }).to_string()
+        } else {
+            line
+        };
+        let _ = writeln!(sinks.out, "{line}");
+        let _ = sinks.out.flush();
+    } else {
+        sinks.note(&line);
     }
     if outcome.failed > 0 {
         sinks.note(&format!(

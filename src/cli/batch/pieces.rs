@@ -11,7 +11,7 @@ use std::ops::Range;
 use rayon::prelude::*;
 
 use super::flights::{RowFlight, Scratch, fly_chunk};
-use super::output::{CsvLine, json_line};
+use super::output::{CsvLine, Tally, json_line};
 use super::own_launch::SwingLaunches;
 use super::read::{Fields, Lossy, MAX_RECORD_BYTES, Read, Records};
 use super::rows::{Header, Job, Row, parse_row};
@@ -107,6 +107,8 @@ pub(super) struct Piece {
     pub flown_rows: usize,
     pub without_launch: usize,
     pub summary: Summary,
+    /// The rows' outcomes and differences, for the batch's summary.
+    pub tally: Tally,
 }
 
 /// Parses, flies and writes every piece of `round`, in parallel, into
@@ -138,6 +140,7 @@ impl Piece {
         self.jobs.clear();
         (self.flown_rows, self.without_launch) = (0, 0);
         self.summary = Summary::new(setup.parks.parks.len());
+        self.tally = Tally::default();
         for (read, bytes, ends) in records {
             let line = read.line;
             let row = if read.too_long {
@@ -184,6 +187,7 @@ impl Piece {
                 csv.write(&mut self.out, job, flown);
             }
             self.summary.count(job, header, flown.flights);
+            self.tally.count(job, flown);
             self.flown_rows += 1;
             context.progress.tick();
         }

@@ -127,7 +127,12 @@ pub(in crate::cli) fn columns_help() -> String {
          the row. \
          Other columns are ignored (named once on stderr). A launch column not given takes \
          the preset's value for every row; an empty cell of another column, the preset's \
-         value; a row whose launch cells are all empty is skipped.",
+         value; a row whose launch cells are all empty is skipped. \
+         The output is in the units of --units, SI by default whatever the file: --units \
+         imperial writes a Savant export in its own mph, ° and ft (columns named with their \
+         unit, launch.speed_mph). One summary closes the batch on stderr (--summary: on \
+         stdout): rows flown and skipped, the outcomes at the park, the error against \
+         hit_distance_sc.",
         FIELD_KEYS[0].name
     );
     text

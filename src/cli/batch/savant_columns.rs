@@ -76,6 +76,8 @@ pub(in crate::cli) struct Setup<'a> {
     pub spray: Spray,
     /// `--own-air`: each park counted in its own air (a flight per park).
     pub own_air: bool,
+    /// `--summary`: the closing summary on stdout, after the rows (else stderr).
+    pub summary_to_stdout: bool,
     /// `--keep`'s column names.
     pub keep: Vec<String>,
     /// Whether the kept cells go to a terminal: their control characters
@@ -104,11 +106,12 @@ impl<'a> Setup<'a> {
         setup.spin_given = keys.contains(&"launch.spin");
         setup.sidespin_given = keys.contains(&"launch.sidespin");
         if let Some(code) = park {
+            let named = super::super::parks::lookup(code, parks)?;
             let found = parks
                 .parks
                 .iter()
-                .position(|p| p.answers_to(code.trim()))
-                .ok_or_else(|| super::super::parks::unknown(code, parks))?;
+                .position(|p| std::ptr::eq(p, named))
+                .expect("a park of the list");
             setup.park = Some(found);
         }
         Ok(setup)
@@ -125,6 +128,7 @@ impl<'a> Setup<'a> {
             sidespin_given: false,
             spray: Spray::Landing,
             own_air: false,
+            summary_to_stdout: false,
             keep: Vec::new(),
             escape_kept: false,
             code_fields: parks.parks.iter().map(|p| quoted(&p.code)).collect(),

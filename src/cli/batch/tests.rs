@@ -235,7 +235,25 @@ fn fly_line(
             distance(difference, 2)
         );
     }
-    text
+    if shown.is_si() {
+        return text;
+    }
+    // Outside SI the batch writes a number as its reader wrote it: trailing
+    // zeros trimmed, one decimal kept.
+    let fields: Vec<String> = text
+        .split(',')
+        .map(|field| match field.split_once('.') {
+            Some((whole, decimals)) if field.parse::<f64>().is_ok() => {
+                let decimals = decimals.trim_end_matches('0');
+                format!(
+                    "{whole}.{}",
+                    if decimals.is_empty() { "0" } else { decimals }
+                )
+            }
+            _ => field.to_owned(),
+        })
+        .collect();
+    fields.join(",")
 }
 
 /// Batted balls over Statcast's spread and beyond it (grounders, pop-ups,

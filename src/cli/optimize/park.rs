@@ -139,12 +139,13 @@ pub(in crate::cli) fn park_optimum(
             } else {
                 "outside the foul line"
             };
-            format!(
-                "{}: {} {wall}{short}, {} {line}",
-                d(m.value()),
-                d(m.over_wall.abs()),
-                d(m.inside_line.abs())
-            )
+            // At the optimum the two sides often balance: one number, once.
+            let (over, inside) = (d(m.over_wall.abs()), d(m.inside_line.abs()));
+            if over == inside && d(m.value()) == over {
+                format!("{over} {wall}{short} and {line} alike")
+            } else {
+                format!("{}: {over} {wall}{short}, {inside} {line}", d(m.value()))
+            }
         }
         None => "none: it neither lands nor reaches the fence".to_owned(),
     };

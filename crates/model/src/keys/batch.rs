@@ -2,6 +2,7 @@
 
 use super::table::{AIR_KEYS, ATMOSPHERE_KEYS, TEXT_KEYS};
 use super::{InputError, Key, Scene};
+use units::UnitSystem;
 
 /// Sets keys one by one from one source of inputs (one preset file, one
 /// command line's `--set` list), refusing a source that both gives ρ or ν
@@ -81,12 +82,23 @@ impl InputBatch {
         name: &str,
         text: &str,
     ) -> Result<(), InputError> {
+        self.set_text_in(scene, name, text, UnitSystem::Si)
+    }
+
+    /// [`InputBatch::set_text`] typed under `system` ([`Scene::set_text_in`]).
+    pub fn set_text_in(
+        &mut self,
+        scene: &mut Scene,
+        name: &str,
+        text: &str,
+        system: UnitSystem,
+    ) -> Result<(), InputError> {
         let next = if TEXT_KEYS.contains(&name) {
             *self
         } else {
             self.with(Scene::key(name)?.name)?
         };
-        scene.set_text(name, text)?;
+        scene.set_text_in(name, text, system)?;
         *self = next;
         Ok(())
     }

@@ -23,7 +23,7 @@ pub use table::{
     AIR_KEYS, ATMOSPHERE_KEYS, CALIBRATION_KEYS, DRAG_KEY, EXTENDED_KEYS, HAND_KEY, KEYS,
     LAUNCH_KEYS, LIFT_KEY, SWING_3D_KEYS, TEXT_KEYS, all_keys, swing_keys,
 };
-pub use typed::{Typed, read_typed};
+pub use typed::{Typed, read_in_system, read_typed};
 
 /// A closed or half-open interval of accepted values.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -216,7 +216,7 @@ pub enum InputError {
         vertical: f64,
         minimum: f64,
     },
-    #[error("unknown key `{key}`{}; known keys: {known}", suggestion(.key))]
+    #[error("unknown key `{key}`; {}", unknown_key_hint(.key, .known))]
     UnknownKey { key: String, known: String },
     #[error("{key} = {text:?}: not a number")]
     NotANumber { key: String, text: String },
@@ -308,6 +308,17 @@ impl Scene {
     /// Sets any key from text, as `--set KEY=VALUE` does: a number in SI,
     /// or with a unit of the key's quantity ([`Key::read`]), in range.
     pub fn set_text(&mut self, name: &str, text: &str) -> Result<(), InputError> {
+        self.set_text_in(name, text, UnitSystem::Si)
+    }
+
+    /// [`Scene::set_text`] typed under `system`: a bare number is in the
+    /// unit the key is shown in there ([`Key::read_in`]).
+    pub fn set_text_in(
+        &mut self,
+        name: &str,
+        text: &str,
+        system: UnitSystem,
+    ) -> Result<(), InputError> {
         if name == DRAG_KEY {
             self.choose_drag(text.parse()?);
             return Ok(());
@@ -321,7 +332,7 @@ impl Scene {
             return Ok(());
         }
         let key = Self::key(name)?;
-        let value = key.read(text)?;
+        let value = key.read_in(text, system)?;
         (key.set)(self, value);
         Ok(())
     }
@@ -464,16 +475,26 @@ fn check_gyration(
     }
 }
 
-/// " (did you mean `bat.speed`?)" for a near miss of a known key.
-fn suggestion(key: &str) -> String {
-    all_keys()
-        .map(|k| k.name)
-        .chain(TEXT_KEYS)
+/// What to say of an unknown key: the known key closest to it (by
+/// Jaro–Winkler, above 0.85), or where to find them all, not all of them.
+fn unknown_key_hint(key: &str, known: &str) -> String {
+    let names = || known.split(", ").filter(|name| !name.is_empty());
+    let closest = names()
         .map(|name| (strsim::jaro_winkler(key, name), name))
         .max_by(|a, b| a.0.total_cmp(&b.0))
-        .filter(|(score, _)| *score > 0.85)
-        .map(|(_, name)| format!(" (did you mean `{name}`?)"))
-        .unwrap_or_default()
+        .filter(|(score, _)| *score > 0.85);
+    if let Some((_, name)) = closest {
+        return format!("did you mean `{name}`? (`homerun keys` lists every key)");
+    }
+    let mut groups: Vec<&str> = Vec::new();
+    for name in names() {
+        let group = name.split_once('.').map_or(name, |(group, _)| group);
+        if !groups.contains(&group) {
+            groups.push(group);
+        }
+    }
+    let groups: Vec<String> = groups.iter().map(|g| format!("{g}.*")).collect();
+    format!("`homerun keys` lists every key ({})", groups.join(", "))
 }
 
 /// A number as typed when that is short (0.09, 1000, NaN, 1518.1420786309536),

@@ -4,7 +4,7 @@
 //! bounds printed in another unit so that each end is accepted typed back.
 
 use super::{Bounds, InputError, Key};
-use units::{self, Quantity, TypedError, Unit};
+use units::{self, Quantity, TypedError, Unit, UnitSystem};
 
 impl Key {
     /// A value of this key typed as text, in SI: a bare number (SI) or one
@@ -12,6 +12,21 @@ impl Key {
     /// the bounds. The one reading of `--set`, preset strings and batch cells.
     pub fn read(&self, text: &str) -> Result<f64, InputError> {
         read_typed((self.name, self.quantity(), self.unit, self.bounds), text)
+    }
+
+    /// A value of this key typed under `system`, in SI: what you see is
+    /// what you type. A bare number is in the unit the key is shown in
+    /// there (`100` is 100 mph for `launch.speed` under imperial), a
+    /// number with a unit is read in that unit; either is checked against
+    /// the bounds, a refusal giving the range in the unit shown too. Under
+    /// SI this is [`Key::read`]. The one rule of `--set` under `--units`
+    /// (and of the explorer's inputs, which show the same units).
+    pub fn read_in(&self, text: &str, system: UnitSystem) -> Result<f64, InputError> {
+        read_in_system(
+            (self.name, self.quantity(), self.unit, self.bounds),
+            text,
+            system,
+        )
     }
 
     /// [`Key::read`] where a bare number means the unit `shown` (the
@@ -34,6 +49,49 @@ pub fn read_typed(
     text: &str,
 ) -> Result<f64, InputError> {
     read_typed_where(spec, text, spec.2)
+}
+
+/// [`Key::read_in`] for any input named `name`, of `quantity` (its SI unit
+/// `unit`), accepted in `bounds` (the fence's keys too): a bare number is
+/// in `quantity`'s unit under `system`.
+pub fn read_in_system(
+    spec: (&'static str, Quantity, &'static str, Bounds),
+    text: &str,
+    system: UnitSystem,
+) -> Result<f64, InputError> {
+    let (name, quantity, unit, bounds) = spec;
+    let shown = quantity.unit(system, unit);
+    if shown.is_identity() {
+        return read_typed(spec, text);
+    }
+    let bare = format!("{}, as shown with --units {}", shown.symbol, system.name());
+    let Some(number) = bare_number(text) else {
+        return read_typed_where(spec, text, &bare);
+    };
+    let si = shown.read(number);
+    if bounds.contains(si) {
+        return Ok(si);
+    }
+    Err(InputError::OutOfRange {
+        key: name,
+        value: si,
+        bounds,
+        unit,
+        typed: Some(Box::new(Typed {
+            text: format!(
+                "{} {} ({} {unit})",
+                typed_text(text),
+                shown.symbol,
+                units::significant(si)
+            ),
+            suggestion: format!(", that is {} {}", bounds.shown_in(shown), shown.symbol),
+        })),
+    })
+}
+
+/// The number `text` is, if it is a bare number (no unit after it).
+fn bare_number(text: &str) -> Option<f64> {
+    text.trim().parse().ok()
 }
 
 /// [`read_typed`] where a bare number is in `bare` (its refusals say so).

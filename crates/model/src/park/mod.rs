@@ -24,6 +24,8 @@ pub struct Park {
     /// Other codes that name it ("ARI" for "AZ").
     pub aliases: Vec<String>,
     pub name: String,
+    /// The city it is in ("Boston"), empty if not given.
+    pub city: String,
     /// Elevation of the field above sea level (m).
     pub elevation: f64,
     /// Compass bearing from home plate to centre field, degrees clockwise
@@ -83,6 +85,62 @@ pub fn find<'a>(parks: &'a [Park], code: &str) -> Option<&'a Park> {
         .or_else(|| parks.iter().find(|p| p.answers_to(code)))
 }
 
+/// What a park's name, city or code given by a user matched among `parks`.
+#[derive(Debug)]
+pub enum Named<'a> {
+    One(&'a Park),
+    /// Several parks answer to it (`chicago`, `park`): these.
+    Several(Vec<&'a Park>),
+    None,
+}
+
+/// The park `query` names among `parks`, as a user types it: a code or an
+/// alias (as [`find`]); else a park whose name or city is `query`; else one
+/// whose name or city has `query` at the start of a word (`fenway`,
+/// `camden`, `kansas`). Case and runs of blanks do not matter.
+pub fn named<'a>(parks: &'a [Park], query: &str) -> Named<'a> {
+    if let Some(park) = find(parks, query) {
+        return Named::One(park);
+    }
+    let query = words(query);
+    if query.is_empty() {
+        return Named::None;
+    }
+    let exact: Vec<&Park> = parks
+        .iter()
+        .filter(|p| words(&p.name) == query || words(&p.city) == query)
+        .collect();
+    let matches = if exact.is_empty() {
+        parks
+            .iter()
+            .filter(|p| {
+                starts_a_word(&words(&p.name), &query) || starts_a_word(&words(&p.city), &query)
+            })
+            .collect()
+    } else {
+        exact
+    };
+    match matches.as_slice() {
+        [] => Named::None,
+        [one] => Named::One(one),
+        _ => Named::Several(matches),
+    }
+}
+
+/// `text` lower-cased, its words one blank apart.
+fn words(text: &str) -> String {
+    text.split_whitespace()
+        .map(str::to_lowercase)
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Whether `query` stands in `text` from the start of one of its words.
+fn starts_a_word(text: &str, query: &str) -> bool {
+    text.match_indices(query)
+        .any(|(at, _)| at == 0 || text[..at].ends_with(' '))
+}
+
 impl Park {
     /// Its code and aliases.
     pub fn codes(&self) -> impl Iterator<Item = &str> {
@@ -132,6 +190,7 @@ mod tests {
             code: "T".into(),
             aliases: vec![],
             name: "T".into(),
+            city: String::new(),
             elevation: 0.0,
             center_field_bearing: bearing,
             published: None,

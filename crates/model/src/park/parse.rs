@@ -45,6 +45,8 @@ struct Entry {
     #[serde(default)]
     aliases: Vec<String>,
     name: String,
+    #[serde(default)]
+    city: String,
     elevation: f64,
     center_field_bearing: f64,
     #[serde(default)]
@@ -74,6 +76,7 @@ pub(super) struct BundledEntry {
     pub code: &'static str,
     pub aliases: &'static [&'static str],
     pub name: &'static str,
+    pub city: &'static str,
     pub elevation: f64,
     pub center_field_bearing: f64,
     pub published: Option<[f64; 3]>,
@@ -87,6 +90,7 @@ impl BundledEntry {
             code: self.code.to_owned(),
             aliases: self.aliases.iter().map(|&a| a.to_owned()).collect(),
             name: self.name.to_owned(),
+            city: self.city.to_owned(),
             elevation: self.elevation,
             center_field_bearing: self.center_field_bearing,
             published: self
@@ -188,6 +192,13 @@ impl Entry {
                 "1 to 80 characters, none of them control characters",
             ));
         }
+        if self.city.chars().count() > 80 || self.city.chars().any(char::is_control) {
+            return Err(field(
+                "city",
+                format!("{:?}", self.city.chars().take(80).collect::<String>()),
+                "at most 80 characters, none of them control characters",
+            ));
+        }
         let (low, high) = ELEVATION;
         if !(self.elevation.is_finite() && (low..=high).contains(&self.elevation)) {
             return Err(field(
@@ -248,6 +259,7 @@ impl Entry {
                 .map(|a| a.to_ascii_uppercase())
                 .collect(),
             name: self.name.trim().to_owned(),
+            city: self.city.trim().to_owned(),
             elevation: self.elevation,
             center_field_bearing: bearing,
             published,
