@@ -113,7 +113,7 @@ impl CsvLine<'_> {
             if let Some(si) = si {
                 let decimals = self.shown.unit(quantity).decimals(decimals);
                 let start = out.len();
-                let _ = write!(out, "{:.*}", decimals, self.shown.convert(quantity, si));
+                write_fixed(out, self.shown.convert(quantity, si), decimals);
                 // Outside SI, a number as its reader wrote it: 99.9 mph,
                 // not 99.9000 (trailing zeros trimmed, one decimal kept).
                 if !self.shown.is_si() && decimals > 1 {
@@ -361,5 +361,75 @@ fn median(values: &mut [f64]) -> f64 {
         values[n / 2]
     } else {
         (values[n / 2 - 1] + values[n / 2]) / 2.0
+    }
+}
+
+/// `value` to `decimals` places, as `format!("{value:.decimals$}")` writes
+/// it, through the integer of its scaled value: std's fixed-precision
+/// formatting often falls back from Grisu to Dragon (measured: `{:.4}` of
+/// values in [0, 150] ~570 ns, `{:.3}` ~190 ns): with this, 20k planar
+/// rows 859 → 775 M instructions (callgrind), 200k planar rows 0.91 → 0.77 s
+/// of CPU, 200k 3-D rows 1.59 → 1.34 s (best of 3), output byte-identical. A value whose
+/// scaled integer is not exact in f64, or that lies within a few ulps of a
+/// tie, goes to std, so every digit is std's (tested on 3.2M values).
+fn write_fixed(out: &mut Vec<u8>, value: f64, decimals: usize) {
+    const POWERS: [f64; 7] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6];
+    let scaled = POWERS.get(decimals).map(|power| value * power);
+    // Near a tie the product's own rounding may decide it: std's exact digits do.
+    let clear_of_a_tie = |scaled: f64| {
+        let fraction = (scaled - scaled.trunc()).abs();
+        (fraction - 0.5).abs() > 8.0 * f64::EPSILON * scaled.abs().max(1.0)
+    };
+    match scaled {
+        Some(scaled) if scaled.abs() < 9.0e15 && clear_of_a_tie(scaled) => {
+            let scaled = scaled.round();
+            let sign = if value.is_sign_negative() { "-" } else { "" };
+            let digits = scaled.abs() as u64;
+            let unit = 10u64.pow(decimals as u32);
+            if decimals == 0 {
+                let _ = write!(out, "{sign}{digits}");
+            } else {
+                let (whole, part) = (digits / unit, digits % unit);
+                let _ = write!(out, "{sign}{whole}.{part:0decimals$}");
+            }
+        }
+        _ => {
+            let _ = write!(out, "{value:.decimals$}");
+        }
+    }
+}
+
+#[cfg(test)]
+mod fixed_tests {
+    #[test]
+    fn fixed_decimals_are_std_s() {
+        let mut uniform = numerics::xorshift::uniform(0x2545_f491_4f6c_dd1d);
+        let mut specials = vec![
+            0.0, -0.0, 0.5, 1.5, 2.5, -2.5, 1.03125, 0.00005, -1e-9, 1e300, -7.0,
+        ];
+        specials.extend([f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 123.456_789_5]);
+        let mut out = Vec::new();
+        for i in 0..400_000 {
+            let value = if i < specials.len() {
+                specials[i]
+            } else {
+                // Magnitudes from 1e-8 to 1e6, either sign.
+                let magnitude = 10f64.powf(uniform() * 14.0 - 8.0);
+                if uniform() < 0.5 {
+                    -magnitude
+                } else {
+                    magnitude
+                }
+            };
+            for decimals in 0..=7 {
+                out.clear();
+                super::write_fixed(&mut out, value, decimals);
+                assert_eq!(
+                    std::str::from_utf8(&out).unwrap(),
+                    format!("{value:.decimals$}"),
+                    "{value:e} to {decimals}"
+                );
+            }
+        }
     }
 }
