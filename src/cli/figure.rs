@@ -44,11 +44,7 @@ pub(super) fn figure(
         figures::figure_data_observed(number, &preset.scene, &preset.name, &|| p.tick())
     })?;
     if svg {
-        return Ok(crate::picture::figure_svg(
-            &figure,
-            &preset.scene,
-            &preset.name,
-        )?);
+        return figure_svg(figure, &preset.scene, &preset.name, shown);
     }
     let environment = environment_json(&preset.scene);
     // JSON is SI whatever the units shown.
@@ -73,6 +69,35 @@ pub(super) fn figure(
             environment,
             shown,
         ),
+    })
+}
+
+/// `figure N --svg`: the picture in the units shown (its axes, headings,
+/// title and conditions; marks and the paper's numbers keep their SI words).
+fn figure_svg(
+    figure: Figure,
+    scene: &crate::Scene,
+    name: &str,
+    shown: Shown,
+) -> Result<String, UsageError> {
+    let conditions = units::conditions(name, scene, shown);
+    Ok(match figure {
+        Figure::Table(data) => {
+            let now = units::now(&data, scene, shown);
+            let data = units::converted(data, shown);
+            crate::picture::table_figure_svg_now(&FigureData { conditions, ..data }, now, name)?
+        }
+        Figure::Surface(surface) => {
+            let surface = SurfaceFigure {
+                conditions,
+                title: units::title(&surface.title, shown),
+                ..surface
+            };
+            crate::picture::surface_svg_in(
+                &crate::picture::SurfacePicture::figure7(&surface, scene, name),
+                shown.0,
+            )?
+        }
     })
 }
 

@@ -58,6 +58,20 @@ pub(super) fn converted(mut data: FigureData, shown: Shown) -> FigureData {
     data
 }
 
+/// The current input's value on a figure's x axis, in the units shown
+/// (`data` in SI, as computed).
+pub(super) fn now(data: &FigureData, scene: &Scene, shown: Shown) -> Option<f64> {
+    let value = figures::curves::current_value(data, scene)?;
+    let key = &data.columns[figures::curves::x_column(data)].key;
+    let (quantity, si_symbol) = quantity(key);
+    let unit = quantity.unit(shown.0, si_symbol);
+    Some(if unit.is_identity() {
+        value
+    } else {
+        unit.show(value)
+    })
+}
+
 /// The units a title names for its axes, in the units shown (the numbers it
 /// quotes keep their SI units beside them).
 pub(super) fn title(title: &str, shown: Shown) -> String {

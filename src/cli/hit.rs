@@ -264,23 +264,41 @@ fn sampled(
 }
 
 /// `trajectory --svg`: the flight in x–y with the preset's fence.
-pub(super) fn trajectory_svg(preset: &Preset, samples: usize) -> Result<String, UsageError> {
+pub(super) fn trajectory_svg(
+    preset: &Preset,
+    samples: usize,
+    shown: Shown,
+) -> Result<String, UsageError> {
     let (summary, points) = sampled(&preset.scene, samples)?;
     let end = points.last().map_or(0.0, |p| p.y);
     let picture = TrajectoryPicture {
         preset: preset.name.clone(),
         paths: vec![FlightPath {
             name: match preset.scene.kind {
-                SceneKind::Swing => format!(
+                SceneKind::Swing if shown.is_si() => format!(
                     "E = {} m, ψ = {} rad",
                     preset.scene.bat.undercut, preset.scene.bat.swing_angle
                 ),
+                SceneKind::Swing => format!(
+                    "E = {}, ψ = {}",
+                    shown.value(Quantity::Size, preset.scene.bat.undercut, 3),
+                    shown.value(Quantity::Angle, preset.scene.bat.swing_angle, 4)
+                ),
                 SceneKind::BattedBall => {
                     let launch = preset.scene.batted_ball();
-                    format!(
-                        "launched at {:.2} m/s, {:.4} rad up, {:.4} rad across",
-                        launch.speed, launch.angle, launch.direction
-                    )
+                    if shown.is_si() {
+                        format!(
+                            "launched at {:.2} m/s, {:.4} rad up, {:.4} rad across",
+                            launch.speed, launch.angle, launch.direction
+                        )
+                    } else {
+                        format!(
+                            "launched at {}, {} up, {} across",
+                            shown.value(Quantity::Speed, launch.speed, 2),
+                            shown.value(Quantity::Angle, launch.angle, 4),
+                            shown.value(Quantity::Angle, launch.direction, 4)
+                        )
+                    }
                 }
             },
             points: points.iter().map(|p| (p.distance, p.y)).collect(),
@@ -291,7 +309,7 @@ pub(super) fn trajectory_svg(preset: &Preset, samples: usize) -> Result<String, 
         not_landed: (!summary.landed).then(|| landing::not_landed(&summary, end)),
         fence: preset.fence,
     };
-    Ok(picture::trajectory_svg(&picture)?)
+    Ok(picture::trajectory_svg_in(&picture, shown.0)?)
 }
 
 /// The flight at readout precision, sampled from the dense output.

@@ -79,7 +79,7 @@ pub struct Cli {
 
 /// What `--units` does, said once, under `homerun --help` (every command
 /// takes `--units`, and its own help gives one line).
-pub const UNITS_HELP: &str = "Units: --units imperial prints the text and CSV in ft, in, mph, °, rpm, °F, inHg and oz \
+pub const UNITS_HELP: &str = "Units: --units imperial prints the text, CSV and SVG pictures in ft, in, mph, °, rpm, °F, inHg and oz \
      instead of si's m, m/s, rad, rad/s, °C, hPa and kg. What you see is what you type: a bare number \
      in --set, sweep's --from/--to and surface's --undercut/--swing-angle is in the unit printed \
      (--units imperial --set launch.speed=100 is 100 mph), and a number with a unit takes its unit \
@@ -523,7 +523,7 @@ fn render_pieces(cli: &Cli, command: &Command) -> Result<Vec<String>, UsageError
     scene::swing_only("surface", &preset)?;
     let cells = surface::parse_grid(undercut.as_deref(), swing_angle.as_deref(), grid, shown)?;
     if svg.is_some() {
-        return Ok(vec![surface::surface_svg(&preset, cells, grid)?]);
+        return Ok(vec![surface::surface_svg(&preset, cells, grid, shown)?]);
     }
     surface::surface(&preset.scene, cells, grid, Format::new(*json, *csv), shown)
 }
@@ -627,7 +627,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             };
             let park = parks::lookup(code, &all)?;
             if svg.is_some() {
-                return Ok(crate::picture::park_svg(park)?);
+                return Ok(crate::picture::park_svg_in(park, shown.0)?);
             }
             Ok(parks::profile(park, *json, shown))
         }
@@ -641,7 +641,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         } => {
             let preset = scene.resolve(dir, cli.units)?;
             if svg.is_some() {
-                return hit::trajectory_svg(&preset, *samples);
+                return hit::trajectory_svg(&preset, *samples, shown);
             }
             hit::trajectory(&preset.scene, *samples, Format::new(*json, *csv), shown)
         }

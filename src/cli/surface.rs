@@ -8,7 +8,6 @@ use super::shown::Shown;
 use super::table::{Cell, Column, Digits, Table};
 use super::{Format, UsageError, WindowFault, pretty};
 use crate::Scene;
-use crate::analysis::figures;
 use crate::analysis::optimum::{OptimizerSettings, optimize};
 use crate::analysis::precision::Purpose;
 use crate::analysis::study::{self, CellOutcome, Grid, Surface, TooMuchWork};
@@ -197,14 +196,19 @@ fn within_budget<T>(
 
 /// `surface --svg`: the heatmap with the optimum, the current swing and, if
 /// the preset has a fence, the outline of the cells that reach its distance.
-pub(super) fn surface_svg(preset: &Preset, grid: Grid, text: &str) -> Result<String, UsageError> {
+pub(super) fn surface_svg(
+    preset: &Preset,
+    grid: Grid,
+    text: &str,
+    shown: Shown,
+) -> Result<String, UsageError> {
     let scene = &preset.scene;
     let surface = computed(scene, grid, text)?;
     let o = optimize(scene, OptimizerSettings::default());
     let picture = SurfacePicture {
         surface: &surface,
         title: format!("Range over (E, ψ) — preset {}", preset.name),
-        conditions: figures::conditions(&preset.name, scene)
+        conditions: super::figure_units::conditions(&preset.name, scene, shown)
             .split_once(": ")
             .map_or(String::new(), |(_, rest)| rest.to_owned()),
         now: Some((scene.bat.undercut, scene.bat.swing_angle)),
@@ -212,7 +216,7 @@ pub(super) fn surface_svg(preset: &Preset, grid: Grid, text: &str) -> Result<Str
         paper: None,
         level: preset.fence.map(|f| f.distance),
     };
-    Ok(picture::surface_svg(&picture)?)
+    Ok(picture::surface_svg_in(&picture, shown.0)?)
 }
 
 /// "--grid 500x500: about 2.7e9 integration steps on this scene …"

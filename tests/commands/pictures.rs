@@ -328,6 +328,71 @@ fn svg_writes_the_file_says_so_on_stderr_and_leaves_no_temporary() {
     assert_eq!(names.len(), 1, "no temporary left: {names:?}");
 }
 
+/// The SVG `homerun --units imperial ARGS --svg FILE` writes.
+fn imperial_svg(args: &[&str]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let target = dir.path().join("t.svg");
+    let out = homerun()
+        .args(["--units", "imperial"])
+        .args(args)
+        .arg("--svg")
+        .arg(&target)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    std::fs::read_to_string(&target).unwrap()
+}
+
+#[test]
+fn svgs_follow_units_imperial_on_every_axis_and_label() {
+    let trajectory = texts(&imperial_svg(&["trajectory", "--samples", "30"]));
+    for label in [
+        "distance from the plate (ft)",
+        "y (ft)",
+        "x (ft)",
+        "z (ft)",
+        "range 441.93 ft, apex 88.69 ft",
+        "E = 1.04 in, ψ = 9.13°",
+    ] {
+        assert!(trajectory.contains(label), "{label}: {trajectory}");
+    }
+    assert!(!trajectory.contains("(m)"), "{trajectory}");
+    let figure = texts(&imperial_svg(&["figure", "5"]));
+    for label in ["E (in)", "ω_bf (rpm)", "mph"] {
+        assert!(figure.contains(label), "{label}: {figure}");
+    }
+    assert!(!figure.contains("E (m)"), "{figure}");
+    let surface = texts(&imperial_svg(&["surface", "--grid", "6x6"]));
+    for label in ["undercut E (in)", "swing angle ψ (°)", "range (ft)", " ft"] {
+        assert!(surface.contains(label), "{label}: {surface}");
+    }
+    assert!(
+        !surface.contains("(mm)") && !surface.contains("(rad)"),
+        "{surface}"
+    );
+    let park = texts(&imperial_svg(&["parks", "BOS"]));
+    for label in [
+        "310.0 ft down the left-field line",
+        "toward centre field (ft)",
+        "wall 37.0 ft high",
+    ] {
+        assert!(park.contains(label), "{label}: {park}");
+    }
+    // SI stays the default.
+    let dir = tempfile::tempdir().unwrap();
+    let target = dir.path().join("t.svg");
+    homerun()
+        .args(["surface", "--grid", "6x6", "--svg"])
+        .arg(&target)
+        .assert()
+        .success();
+    let si = texts(&std::fs::read_to_string(&target).unwrap());
+    assert!(
+        si.contains("undercut E (mm)") && si.contains("range (m)"),
+        "{si}"
+    );
+}
+
 #[test]
 fn explorer_x_writes_fresh_files_and_never_overwrites() {
     let dir = tempfile::tempdir().unwrap();

@@ -59,6 +59,17 @@ pub fn table_figure_svg(
     scene: &Scene,
     preset: &str,
 ) -> Result<String, PictureError> {
+    table_figure_svg_now(data, current_value(data, scene), preset)
+}
+
+/// As [`table_figure_svg`], with the current input's value `now` given in
+/// the units of `data`'s x column: for a table already converted to the
+/// units shown (its headings, title and numbers), as `--units imperial` asks.
+pub fn table_figure_svg_now(
+    data: &FigureData,
+    now: Option<f64>,
+    preset: &str,
+) -> Result<String, PictureError> {
     let prefixes = panels(data.number);
     let notes = notes(data);
     let title = wrapped(
@@ -104,7 +115,6 @@ pub fn table_figure_svg(
                 ))
                 .map_err(drawn)?;
         }
-        let now = current_value(data, scene);
         for (panel, prefix) in body.split_evenly((prefixes.len(), 1)).iter().zip(prefixes) {
             draw_panel(panel, data, prefix, now)?;
         }

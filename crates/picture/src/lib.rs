@@ -14,10 +14,61 @@ mod surface;
 mod trajectory;
 
 pub use bench::bench_svg;
-pub use figure::{figure_svg, table_figure_svg};
-pub use park::park_svg;
-pub use surface::{SurfacePicture, surface_svg};
-pub use trajectory::{FlightPath, MAX_STRETCH, TrajectoryPicture, trajectory_svg};
+pub use figure::{figure_svg, table_figure_svg, table_figure_svg_now};
+pub use park::{park_svg, park_svg_in};
+pub use surface::{SurfacePicture, surface_svg, surface_svg_in};
+pub use trajectory::{
+    FlightPath, MAX_STRETCH, TrajectoryPicture, trajectory_svg, trajectory_svg_in,
+};
+pub use units::UnitSystem;
+
+use units::Quantity;
+
+/// A picture's lengths, sizes, angles and ranges in the units asked for:
+/// SI (m, mm, rad) by default, or ft, in and ° under `--units imperial`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Scale(UnitSystem);
+
+impl Scale {
+    /// A distance (m) in the unit shown.
+    fn len(self, m: f64) -> f64 {
+        Quantity::Distance.in_system(self.0).show(m)
+    }
+
+    /// The distance's unit: "m" or "ft".
+    fn len_unit(self) -> &'static str {
+        Quantity::Distance.in_system(self.0).symbol
+    }
+
+    /// An undercut (m) on the surface's axis: in mm, as the paper's Fig. 7,
+    /// or in inches.
+    fn undercut(self, m: f64) -> f64 {
+        if self.0 == UnitSystem::Si {
+            m * 1e3
+        } else {
+            Quantity::Size.in_system(self.0).show(m)
+        }
+    }
+
+    /// The undercut axis' unit: "mm" or "in".
+    fn undercut_unit(self) -> &'static str {
+        if self.0 == UnitSystem::Si {
+            "mm"
+        } else {
+            Quantity::Size.in_system(self.0).symbol
+        }
+    }
+
+    /// An angle (rad) in the unit shown.
+    fn angle(self, rad: f64) -> f64 {
+        Quantity::Angle.in_system(self.0).show(rad)
+    }
+
+    /// The angle's unit: "rad" or "°".
+    fn angle_unit(self) -> &'static str {
+        Quantity::Angle.in_system(self.0).symbol
+    }
+}
 
 use plotters::chart::{ChartContext, MeshStyle, SeriesLabelPosition};
 use plotters::coord::CoordTranslate;

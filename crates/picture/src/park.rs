@@ -4,7 +4,10 @@
 
 use plotters::prelude::*;
 
-use super::{FONT, NOW, PictureError, draw_legend, drawn, house_style, series_color, tick_label};
+use super::{
+    FONT, NOW, PictureError, Scale, UnitSystem, draw_legend, drawn, house_style, series_color,
+    tick_label,
+};
 use model::park::{FOUL_LINE, Park};
 
 const SIZE: u32 = 820;
@@ -12,13 +15,22 @@ const TITLE: u32 = 40;
 const LABELS: u32 = 48;
 const MARGIN: u32 = 14;
 
-/// The park's outline as SVG.
+/// The park's outline as SVG, in metres.
 pub fn park_svg(park: &Park) -> Result<String, PictureError> {
+    park_svg_in(park, UnitSystem::Si)
+}
+
+/// The park's outline as SVG, its distances and walls in `system`'s unit
+/// (m or ft).
+pub fn park_svg_in(park: &Park, system: UnitSystem) -> Result<String, PictureError> {
+    let scale = Scale(system);
+    let (l, unit) = (|m: f64| scale.len(m), scale.len_unit());
     let points = park.fence.points();
     // Ground coordinates: across (toward right field) and out (toward centre).
-    let ground =
-        |direction: f64, distance: f64| (distance * direction.sin(), distance * direction.cos());
-    let reach = points.iter().map(|p| p.distance).fold(1.0, f64::max) * 1.06;
+    let ground = |direction: f64, distance: f64| {
+        (l(distance) * direction.sin(), l(distance) * direction.cos())
+    };
+    let reach = l(points.iter().map(|p| p.distance).fold(1.0, f64::max)) * 1.06;
     let half = reach * FOUL_LINE.sin();
     let (x_range, y_range) = (-half..half, -0.08 * reach..reach);
     let mut heights: Vec<f64> = points.iter().map(|p| p.height).collect();
@@ -26,8 +38,12 @@ pub fn park_svg(park: &Park) -> Result<String, PictureError> {
     heights.dedup();
     let [left, center, right] = park.fence.lines_and_center();
     let title = format!(
-        "{} ({}): {:.1} m down the left-field line, {:.1} m to centre, {:.1} m down the right",
-        park.name, park.code, left.distance, center.distance, right.distance
+        "{} ({}): {:.1} {unit} down the left-field line, {:.1} {unit} to centre, {:.1} {unit} down the right",
+        park.name,
+        park.code,
+        l(left.distance),
+        l(center.distance),
+        l(right.distance)
     );
     let mut svg = String::new();
     {
@@ -55,8 +71,8 @@ pub fn park_svg(park: &Park) -> Result<String, PictureError> {
         house_style(
             chart
                 .configure_mesh()
-                .x_desc("toward right field (m)")
-                .y_desc("toward centre field (m)")
+                .x_desc(format!("toward right field ({unit})"))
+                .y_desc(format!("toward centre field ({unit})"))
                 .x_label_formatter(&label)
                 .y_label_formatter(&label),
         )
@@ -91,7 +107,7 @@ pub fn park_svg(park: &Park) -> Result<String, PictureError> {
             chart
                 .draw_series(segments)
                 .map_err(drawn)?
-                .label(format!("wall {wall:.1} m high"))
+                .label(format!("wall {:.1} {unit} high", l(wall)))
                 .legend(move |(x, y)| {
                     PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(width))
                 });
@@ -111,7 +127,11 @@ pub fn park_svg(park: &Park) -> Result<String, PictureError> {
                     -24
                 };
                 EmptyElement::at(ground(d, r))
-                    + Text::new(format!("{r:.1} m"), (dx, 8), (FONT, 13).into_font())
+                    + Text::new(
+                        format!("{:.1} {unit}", l(r)),
+                        (dx, 8),
+                        (FONT, 13).into_font(),
+                    )
             }))
             .map_err(drawn)?;
         draw_legend(&mut chart, plotters::chart::SeriesLabelPosition::LowerRight)?;

@@ -8,7 +8,9 @@ use plotters::prelude::*;
 
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::{FONT, Labels, MARK, NOW, PictureError, drawn, house_style, sig, tick_label};
+use super::{
+    FONT, Labels, MARK, NOW, PictureError, Scale, UnitSystem, drawn, house_style, sig, tick_label,
+};
 use analysis::figures::SurfaceFigure;
 use analysis::study::{CellOutcome, Surface};
 use model::scene::Scene;
@@ -139,8 +141,21 @@ const WIDTH: u32 = 960;
 const HEIGHT: u32 = 680;
 const SCALE_WIDTH: u32 = 130;
 
-/// The range surface as an SVG heatmap.
+/// The range surface as an SVG heatmap, E in mm, ψ in rad, ranges in m.
 pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
+    surface_svg_in(picture, UnitSystem::Si)
+}
+
+/// The range surface as an SVG heatmap with its axes, marks and scale in
+/// `system`'s units (E in in, ψ in °, ranges in ft under imperial); the
+/// title and conditions are the caller's, as given.
+pub fn surface_svg_in(
+    picture: &SurfacePicture,
+    system: UnitSystem,
+) -> Result<String, PictureError> {
+    let scale = Scale(system);
+    let (ex, py) = (|e: f64| scale.undercut(e), |p: f64| scale.angle(p));
+    let unit = scale.len_unit();
     let surface = picture.surface;
     let grid = surface.grid;
     let span = span(surface).unwrap_or((0.0, 1.0));
@@ -161,30 +176,30 @@ pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
             (FONT, 12).into_font().color(&NOW),
         ))
         .map_err(drawn)?;
-        let (main, scale) = body.split_horizontally(WIDTH - SCALE_WIDTH);
+        let (main, colours) = body.split_horizontally(WIDTH - SCALE_WIDTH);
         let (e0, e1) = (
-            edges(grid.undercut, grid.columns, 0).0,
-            edges(grid.undercut, grid.columns, grid.columns - 1).1,
+            ex(edges(grid.undercut, grid.columns, 0).0),
+            ex(edges(grid.undercut, grid.columns, grid.columns - 1).1),
         );
         let (p0, p1) = (
-            edges(grid.swing_angle, grid.rows, 0).0,
-            edges(grid.swing_angle, grid.rows, grid.rows - 1).1,
+            py(edges(grid.swing_angle, grid.rows, 0).0),
+            py(edges(grid.swing_angle, grid.rows, grid.rows - 1).1),
         );
         // E in mm on the axis, as the paper's Fig. 7.
         let mut chart = ChartBuilder::on(&main)
             .margin(12)
             .x_label_area_size(44)
             .y_label_area_size(64)
-            .build_cartesian_2d(e0 * 1e3..e1 * 1e3, p0..p1)
+            .build_cartesian_2d(e0..e1, p0..p1)
             .map_err(drawn)?;
-        let x_label = tick_label((e1 - e0) * 1e3);
+        let x_label = tick_label(e1 - e0);
         let y_label = tick_label(p1 - p0);
         house_style(
             chart
                 .configure_mesh()
                 .disable_mesh()
-                .x_desc("undercut E (mm)")
-                .y_desc("swing angle ψ (rad)")
+                .x_desc(format!("undercut E ({})", scale.undercut_unit()))
+                .y_desc(format!("swing angle ψ ({})", scale.angle_unit()))
                 .x_label_formatter(&x_label)
                 .y_label_formatter(&y_label),
         )
@@ -194,6 +209,7 @@ pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
         let mut cells = Vec::new();
         for j in 0..grid.rows {
             let (y0, y1) = edges(grid.swing_angle, grid.rows, j);
+            let (y0, y1) = (py(y0), py(y1));
             let mut i = 0;
             while i < grid.columns {
                 let here = shade(surface.outcome(i, j), span);
@@ -201,8 +217,8 @@ pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
                 while end < grid.columns && shade(surface.outcome(end, j), span) == here {
                     end += 1;
                 }
-                let x0 = edges(grid.undercut, grid.columns, i).0 * 1e3;
-                let x1 = edges(grid.undercut, grid.columns, end - 1).1 * 1e3;
+                let x0 = ex(edges(grid.undercut, grid.columns, i).0);
+                let x1 = ex(edges(grid.undercut, grid.columns, end - 1).1);
                 cells.push(Rectangle::new([(x0, y0), (x1, y1)], here.color().filled()));
                 i = end;
             }
@@ -210,20 +226,21 @@ pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
         chart.draw_series(cells).map_err(drawn)?;
         if let Some(level) = picture.level {
             chart
-                .draw_series(
-                    contour(surface, level)
-                        .into_iter()
-                        .map(|segment| PathElement::new(segment.to_vec(), CONTOUR.stroke_width(2))),
-                )
+                .draw_series(contour(surface, level).into_iter().map(|segment| {
+                    PathElement::new(
+                        segment.map(|(e, p)| (ex(e), py(p))).to_vec(),
+                        CONTOUR.stroke_width(2),
+                    )
+                }))
                 .map_err(drawn)?;
         }
         let (xs, ys) = chart.plotting_area().get_pixel_range();
         let plot = [xs.start, ys.start, xs.end, ys.end];
         let mut labels = Labels::new();
-        let inside = |e: f64, psi: f64| (e0..=e1).contains(&e) && (p0..=p1).contains(&psi);
+        let inside = |e: f64, psi: f64| (e0..=e1).contains(&ex(e)) && (p0..=p1).contains(&py(psi));
         // The current swing as the explorer's ✚, O as a red ring, the paper's O as a triangle.
         if let Some((e, psi)) = picture.now.filter(|&(e, psi)| inside(e, psi)) {
-            let at = (e * 1e3, psi);
+            let at = (ex(e), py(psi));
             let (offset, right) = labels.place(chart.backend_coord(&at), "now", plot);
             chart
                 .draw_series(std::iter::once(
@@ -234,8 +251,8 @@ pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
                 .map_err(drawn)?;
         }
         if let Some((e, psi, range)) = picture.optimum.filter(|&(e, psi, _)| inside(e, psi)) {
-            let at = (e * 1e3, psi);
-            let text = format!("O {} m", sig(range, 5));
+            let at = (ex(e), py(psi));
+            let text = format!("O {} {unit}", sig(scale.len(range), 5));
             let (offset, right) = labels.place(chart.backend_coord(&at), &text, plot);
             chart
                 .draw_series(std::iter::once(
@@ -246,8 +263,8 @@ pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
                 .map_err(drawn)?;
         }
         if let Some((e, psi, range)) = picture.paper.filter(|&(e, psi, _)| inside(e, psi)) {
-            let at = (e * 1e3, psi);
-            let text = format!("paper's O {} m", sig(range, 5));
+            let at = (ex(e), py(psi));
+            let text = format!("paper's O {} {unit}", sig(scale.len(range), 5));
             let (offset, right) = labels.place(chart.backend_coord(&at), &text, plot);
             chart
                 .draw_series(std::iter::once(
@@ -257,7 +274,7 @@ pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
                 ))
                 .map_err(drawn)?;
         }
-        draw_scale(&scale, surface, span, picture.level)?;
+        draw_scale(&colours, surface, span, picture.level, scale)?;
         root.present().map_err(drawn)?;
     }
     Ok(svg)
@@ -280,10 +297,13 @@ fn draw_scale(
     surface: &Surface,
     (low, high): (f64, f64),
     level: Option<f64>,
+    scale: Scale,
 ) -> Result<(), PictureError> {
     let (top, box_height, x) = (24, 14, 10);
-    area.draw(&Text::new("range (m)", (x, 4), (FONT, 13)))
+    let unit = scale.len_unit();
+    area.draw(&Text::new(format!("range ({unit})"), (x, 4), (FONT, 13)))
         .map_err(drawn)?;
+    let (low, high) = (scale.len(low), scale.len(high));
     let mut y = top;
     // Far at the top, as ψ grows upward.
     for k in (0..STEPS).rev() {
@@ -333,7 +353,7 @@ fn draw_scale(
     }
     if let Some(level) = level {
         area.draw(&Text::new(
-            format!("white: {} m (fence)", sig(level, 4)),
+            format!("white: {} {unit} (fence)", sig(scale.len(level), 4)),
             (x, y + 6),
             (FONT, 11),
         ))
@@ -343,7 +363,7 @@ fn draw_scale(
 }
 
 /// The boundary between cells that reach `level` and landed cells that do
-/// not, along the cells' edges: each segment in (E mm, ψ).
+/// not, along the cells' edges: each segment in (E, ψ), in m and rad.
 fn contour(surface: &Surface, level: f64) -> Vec<[(f64, f64); 2]> {
     let grid = surface.grid;
     // Landed cells only: a missing or unlanded neighbour draws no boundary.
@@ -355,10 +375,10 @@ fn contour(surface: &Surface, level: f64) -> Vec<[(f64, f64); 2]> {
             let (x0, x1) = edges(grid.undercut, grid.columns, i);
             let Some(here) = reaches(i, j) else { continue };
             if i + 1 < grid.columns && reaches(i + 1, j).is_some_and(|r| r != here) {
-                segments.push([(x1 * 1e3, y0), (x1 * 1e3, y1)]);
+                segments.push([(x1, y0), (x1, y1)]);
             }
             if j + 1 < grid.rows && reaches(i, j + 1).is_some_and(|r| r != here) {
-                segments.push([(x0 * 1e3, y1), (x1 * 1e3, y1)]);
+                segments.push([(x0, y1), (x1, y1)]);
             }
         }
     }

@@ -8,11 +8,21 @@
 use plotters::prelude::*;
 
 use super::{
-    FONT, NOW, PictureError, draw_legend, drawn, emptiest_corner, house_style, series_color,
-    tick_label,
+    FONT, NOW, PictureError, Scale, UnitSystem, draw_legend, drawn, emptiest_corner, house_style,
+    series_color, tick_label,
 };
 use analysis::figures::trimmed;
 use preset::Fence;
+
+/// A fence's number as the legend gives it: as typed in metres (`trimmed`),
+/// to 0.1 in feet (a converted number has no short form of its own).
+fn trimmed_to(v: f64, unit: &str) -> String {
+    if unit == "m" {
+        trimmed(v)
+    } else {
+        format!("{v:.1}")
+    }
+}
 
 /// How much taller than true a metre of height may be drawn.
 pub const MAX_STRETCH: f64 = 2.0;
@@ -51,8 +61,42 @@ const X_LABELS: u32 = 44;
 const Y_LABELS: u32 = 56;
 const MARGIN: u32 = 12;
 
-/// The trajectory as SVG.
+/// The trajectory as SVG, in metres.
 pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureError> {
+    trajectory_svg_in(picture, UnitSystem::Si)
+}
+
+/// The trajectory as SVG with its distances in `system`'s unit (m or ft);
+/// the paths' names are the caller's, as given.
+pub fn trajectory_svg_in(
+    picture: &TrajectoryPicture,
+    system: UnitSystem,
+) -> Result<String, PictureError> {
+    let scale = Scale(system);
+    let l = |v: f64| scale.len(v);
+    let shown = TrajectoryPicture {
+        paths: picture
+            .paths
+            .iter()
+            .map(|p| FlightPath {
+                name: p.name.clone(),
+                points: p.points.iter().map(|&(a, b)| (l(a), l(b))).collect(),
+                ground: p.ground.iter().map(|&(a, b)| (l(a), l(b))).collect(),
+            })
+            .collect(),
+        range: picture.range.map(l),
+        apex: l(picture.apex),
+        fence: picture.fence.map(|f| Fence {
+            distance: l(f.distance),
+            height: l(f.height),
+        }),
+        ..picture.clone()
+    };
+    drawn_in(&shown, scale.len_unit())
+}
+
+/// The trajectory as SVG, its numbers already in `unit`.
+fn drawn_in(picture: &TrajectoryPicture, unit: &str) -> Result<String, PictureError> {
     let points = || picture.paths.iter().flat_map(|p| p.points.iter());
     let fence = picture.fence;
     let x_max = points()
@@ -83,11 +127,11 @@ pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureErro
     let height = side_height + if tracked { TOP_VIEW } else { 0 };
     let title = match (picture.range, &picture.not_landed) {
         (Some(range), _) => format!(
-            "Trajectory — preset {}: range {range:.2} m, apex {:.2} m",
+            "Trajectory — preset {}: range {range:.2} {unit}, apex {:.2} {unit}",
             picture.preset, picture.apex
         ),
         (None, why) => format!(
-            "Trajectory — preset {}: no range, the ball {}; apex {:.2} m",
+            "Trajectory — preset {}: no range, the ball {}; apex {:.2} {unit}",
             picture.preset,
             why.as_deref().unwrap_or("did not land"),
             picture.apex
@@ -99,7 +143,7 @@ pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureErro
         root.fill(&WHITE).map_err(drawn)?;
         let (side, below) = root.split_vertically(side_height);
         if tracked {
-            top_view(&below, picture)?;
+            top_view(&below, picture, unit)?;
         }
         let (top, body) = side.split_vertically(TITLE);
         top.draw(&Text::new(
@@ -119,8 +163,8 @@ pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureErro
         house_style(
             chart
                 .configure_mesh()
-                .x_desc("distance from the plate (m)")
-                .y_desc("y (m)")
+                .x_desc(format!("distance from the plate ({unit})"))
+                .y_desc(format!("y ({unit})"))
                 .x_label_formatter(&x_label)
                 .y_label_formatter(&y_label),
         )
@@ -147,9 +191,9 @@ pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureErro
                 )))
                 .map_err(drawn)?
                 .label(format!(
-                    "fence: {} m out, {} m high",
-                    trimmed(f.distance),
-                    trimmed(f.height)
+                    "fence: {} {unit} out, {} {unit} high",
+                    trimmed_to(f.distance, unit),
+                    trimmed_to(f.height, unit)
                 ))
                 .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], NOW.stroke_width(4)));
         }
@@ -172,6 +216,7 @@ pub fn trajectory_svg(picture: &TrajectoryPicture) -> Result<String, PictureErro
 fn top_view<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
     picture: &TrajectoryPicture,
+    unit: &str,
 ) -> Result<(), PictureError> {
     let tracks = || picture.paths.iter().flat_map(|p| p.ground.iter());
     let reach = tracks()
@@ -184,7 +229,7 @@ fn top_view<DB: DrawingBackend>(
     let (title, body) = area.split_vertically(28);
     title
         .draw(&Text::new(
-            "From above: x toward centre field, z toward right field (m)",
+            format!("From above: x toward centre field, z toward right field ({unit})"),
             (12, 6),
             (FONT, 14).into_font(),
         ))
@@ -204,8 +249,8 @@ fn top_view<DB: DrawingBackend>(
     house_style(
         chart
             .configure_mesh()
-            .x_desc("z (m)")
-            .y_desc("x (m)")
+            .x_desc(format!("z ({unit})"))
+            .y_desc(format!("x ({unit})"))
             .x_label_formatter(&label)
             .y_label_formatter(&label),
     )
