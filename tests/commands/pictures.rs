@@ -99,6 +99,146 @@ fn figure_5_draws_three_curves_and_each_mark_on_the_curve_it_names() {
     assert!(text.contains("paper 0.064"), "{text}");
 }
 
+/// Every `<text>`: its x, y, anchor and words.
+fn placed_texts(svg: &str) -> Vec<(f64, f64, String, String)> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .map(|n| {
+            let num = |a: &str| n.attribute(a).unwrap_or("0").parse::<f64>().unwrap();
+            (
+                num("x"),
+                num("y"),
+                n.attribute("text-anchor").unwrap_or("start").to_owned(),
+                n.text().unwrap_or("").trim().to_owned(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn figure_5_notes_stay_off_the_curves_and_now_has_its_line() {
+    let preset = homerun::preset::load("figure5", None).unwrap();
+    let data = table(5, &preset.scene, "figure5");
+    let svg = table_figure_svg(&data, &preset.scene, "figure5").unwrap();
+    let height: f64 = roxmltree::Document::parse(&svg)
+        .unwrap()
+        .root_element()
+        .attribute("height")
+        .unwrap()
+        .parse()
+        .unwrap();
+    let placed = placed_texts(&svg);
+    // The marks' long words are written out under the chart, by number;
+    // beside the points only their numbers.
+    let red: Vec<String> = roxmltree::Document::parse(&svg)
+        .unwrap()
+        .descendants()
+        .filter(|n| n.has_tag_name("text") && n.attribute("fill") == Some("#C80000"))
+        .map(|n| n.text().unwrap_or("").trim().to_owned())
+        .collect();
+    assert_eq!(red, ["1", "2", "3", "4"]);
+    let notes: Vec<_> = placed
+        .iter()
+        .filter(|t| t.3.starts_with("1: cusp") || t.3.starts_with("paper") || t.3.contains("paper"))
+        .collect();
+    assert!(!notes.is_empty(), "{placed:?}");
+    assert!(
+        texts(&svg).contains("1: cusp μ = 0.05: slip halts at separation"),
+        "{placed:?}"
+    );
+    // The notes under the chart: one line each, 18 px apart, none past the
+    // picture's width (a 13 px character is about 7.5 px) or its foot.
+    let mut under: Vec<_> = placed
+        .iter()
+        .filter(|t| t.0 == 12.0 && t.1 > height - 140.0)
+        .collect();
+    under.sort_by(|a, b| a.1.total_cmp(&b.1));
+    assert!(under.len() >= 5, "{under:?}");
+    for pair in under.windows(2) {
+        assert!(pair[1].1 - pair[0].1 >= 18.0, "{pair:?}");
+    }
+    for t in &under {
+        assert!(12.0 + 7.6 * t.3.chars().count() as f64 <= 960.0, "{t:?}");
+        assert!(t.1 + 14.0 <= height, "{t:?}");
+    }
+    // "now: E = 0 m" in the legend with its swatch: dashes 2 px wide in the
+    // now-line's grey, beside the legend's words.
+    let now = placed
+        .iter()
+        .find(|t| t.3 == "now: E = 0 m")
+        .expect("the legend names now with its unit");
+    let swatch = roxmltree::Document::parse(&svg)
+        .unwrap()
+        .descendants()
+        .filter(|n| {
+            n.has_tag_name("polyline")
+                && n.attribute("stroke") == Some("#5A5A5A")
+                && n.attribute("stroke-width") == Some("2")
+        })
+        .filter(|n| {
+            let points: Vec<f64> = n
+                .attribute("points")
+                .unwrap()
+                .split([' ', ','])
+                .filter(|p| !p.is_empty())
+                .map(|p| p.parse().unwrap())
+                .collect();
+            points[0] < now.0 && now.0 - points[0] < 40.0 && (points[1] - now.1).abs() < 12.0
+        })
+        .count();
+    assert!(swatch >= 2, "the now entry's swatch: {swatch} dashes");
+}
+
+#[test]
+fn surface_labels_stand_clear_of_the_markers() {
+    let grid = Grid {
+        undercut: (0.0, 0.04),
+        swing_angle: (0.0, 0.4),
+        columns: 3,
+        rows: 2,
+    };
+    let surface = Surface::from_outcomes(grid, vec![CellOutcome::Landed(100.0); 6]).unwrap();
+    // The current swing and the optimum side by side.
+    let picture = SurfacePicture {
+        surface: &surface,
+        title: "test".into(),
+        conditions: String::new(),
+        now: Some((0.02, 0.2)),
+        optimum: Some((0.021, 0.21, 130.0)),
+        paper: None,
+        level: None,
+    };
+    let svg = picture::surface_svg(&picture).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let ring = doc
+        .descendants()
+        .find(|n| n.has_tag_name("circle"))
+        .expect("O's ring");
+    let at = |a: &str| ring.attribute(a).unwrap().parse::<f64>().unwrap();
+    let (cx, cy) = (at("cx"), at("cy"));
+    // Each label's box (12–13 px text, about 7.5 px a character) keeps at
+    // least 9 px from both markers, which are within a few pixels of (cx, cy).
+    for (x, y, anchor, words) in placed_texts(&svg) {
+        if words != "now" && !words.starts_with("O ") {
+            continue;
+        }
+        let width = 7.6 * words.chars().count() as f64;
+        let (left, right) = if anchor == "end" {
+            (x - width, x)
+        } else {
+            (x, x + width)
+        };
+        let (top, bottom) = (y, y + 14.0);
+        let dx = (left - cx).max(cx - right).max(0.0);
+        let dy = (top - cy).max(cy - bottom).max(0.0);
+        assert!(
+            dx.max(dy) >= 9.0,
+            "{words:?} at ({x}, {y}) crowds ({cx}, {cy})"
+        );
+    }
+}
+
 #[test]
 fn a_surface_shows_its_scale_its_gaps_and_its_marks() {
     // 3×2 cells: one where the bat misses, one that does not land.

@@ -30,8 +30,51 @@ pub fn figure_svg(figure: &Figure, scene: &Scene, preset: &str) -> Result<String
     }
 }
 
-/// The lines under the chart: the paper's numbers beside ours, then the notes.
+/// A mark's label longer than this is drawn as its number beside the
+/// point and written out under the chart, so that no long text runs across
+/// the curves or into another mark's.
+const SHORT_MARK: usize = 16;
+
+/// The long marks' labels, each once, in the order of the rows: the mark
+/// numbered `k + 1` beside its point is the `k`-th.
+fn long_marks(data: &FigureData) -> Vec<String> {
+    let Some(m) = data.columns.iter().position(|c| c.key == "mark") else {
+        return Vec::new();
+    };
+    let mut long: Vec<String> = Vec::new();
+    for row in &data.rows {
+        if let analysis::figures::Cell::Text(label) = &row[m]
+            && label.chars().count() > SHORT_MARK
+            && !long.contains(label)
+        {
+            long.push(label.clone());
+        }
+    }
+    long
+}
+
+/// What to write beside a mark's point: its label, or its number among
+/// `long` marks.
+fn mark_text(label: &str, long: &[String]) -> String {
+    long.iter()
+        .position(|l| l == label)
+        .map_or(label.to_owned(), |k| format!("{}", k + 1))
+}
+
+/// The lines under the chart: the long marks by number, the paper's
+/// numbers beside ours, then the notes; each wrapped to the picture's width.
 fn notes(data: &FigureData) -> Vec<String> {
+    let marks = long_marks(data)
+        .into_iter()
+        .enumerate()
+        .map(|(k, label)| format!("{}: {label}", k + 1));
+    marks
+        .chain(notes_unwrapped(data))
+        .flat_map(|line| wrapped(&line, chars_in(WIDTH - 24, 13.0)))
+        .collect()
+}
+
+fn notes_unwrapped(data: &FigureData) -> Vec<String> {
     let mut lines: Vec<String> = data
         .comparisons
         .iter()
@@ -72,6 +115,7 @@ pub fn table_figure_svg_now(
 ) -> Result<String, PictureError> {
     let prefixes = panels(data.number);
     let notes = notes(data);
+    let long = long_marks(data);
     let title = wrapped(
         &format!("Fig. {} (preset {preset}): {}", data.number, data.title),
         chars_in(WIDTH - 24, 17.0),
@@ -116,7 +160,7 @@ pub fn table_figure_svg_now(
                 .map_err(drawn)?;
         }
         for (panel, prefix) in body.split_evenly((prefixes.len(), 1)).iter().zip(prefixes) {
-            draw_panel(panel, data, prefix, now)?;
+            draw_panel(panel, data, prefix, now, &long)?;
         }
         root.present().map_err(drawn)?;
     }
@@ -129,6 +173,7 @@ fn draw_panel(
     data: &FigureData,
     prefix: &str,
     now: Option<f64>,
+    long: &[String],
 ) -> Result<(), PictureError> {
     let curves = curves::curves(data, prefix);
     let points = || curves.iter().flat_map(|c| c.points.iter());
@@ -149,7 +194,7 @@ fn draw_panel(
     house_style(
         chart
             .configure_mesh()
-            .x_desc(x_head)
+            .x_desc(x_head.as_str())
             .y_desc(y_head)
             .x_label_formatter(&x_label)
             .y_label_formatter(&y_label),
@@ -180,21 +225,37 @@ fn draw_panel(
         }
     }
     if let Some(v) = now.filter(|v| (x0..=x1).contains(v)) {
+        // Dashed and 2 px wide, so that it shows on the axis too (a value at
+        // the window's edge) and its legend swatch is a line one sees.
+        let (name, unit) = x_head
+            .split_once(" (")
+            .map_or((x_head.as_str(), ""), |(n, u)| (n, u.trim_end_matches(')')));
+        let gap = if unit == "°" || unit.is_empty() {
+            ""
+        } else {
+            " "
+        };
         chart
-            .draw_series(std::iter::once(PathElement::new(
-                vec![(v, y0), (v, y1)],
-                NOW.stroke_width(1),
-            )))
+            .draw_series((0..40).step_by(2).map(|k| {
+                let at = |k: i32| y0 + (y1 - y0) * f64::from(k) / 40.0;
+                PathElement::new(vec![(v, at(k)), (v, at(k + 1))], NOW.stroke_width(2))
+            }))
             .map_err(drawn)?
-            .label(format!("now: {}", sig(v, 4)))
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], NOW.stroke_width(1)));
+            .label(format!("now: {name} = {}{gap}{unit}", sig(v, 4)))
+            .legend(|(x, y)| {
+                EmptyElement::at((x, y))
+                    + PathElement::new(vec![(0, 0), (6, 0)], NOW.stroke_width(2))
+                    + PathElement::new(vec![(10, 0), (16, 0)], NOW.stroke_width(2))
+                    + PathElement::new(vec![(20, 0), (22, 0)], NOW.stroke_width(2))
+            });
     }
     let (xs, ys) = chart.plotting_area().get_pixel_range();
     let plot = [xs.start, ys.start, xs.end, ys.end];
     let mut labels = Labels::new();
     // Each mark on the curve it names, or on every curve if it names none.
     for mark in marked_points(data, &curves) {
-        let (offset, right) = labels.place(chart.backend_coord(&mark.point), &mark.label, plot);
+        let text = mark_text(&mark.label, long);
+        let (offset, right) = labels.place(chart.backend_coord(&mark.point), &text, plot);
         let style = (FONT, Labels::SIZE).into_font().color(&MARK).pos(Pos::new(
             if right { HPos::Right } else { HPos::Left },
             VPos::Top,
@@ -203,7 +264,7 @@ fn draw_panel(
             .draw_series(std::iter::once(
                 EmptyElement::at(mark.point)
                     + Circle::new((0, 0), 5, MARK.stroke_width(2))
-                    + Text::new(mark.label, offset, style),
+                    + Text::new(text, offset, style),
             ))
             .map_err(drawn)?;
     }

@@ -230,17 +230,36 @@ impl Labels {
     /// plotting area `area` (left, top, right, bottom): an offset from the
     /// point and whether the text ends there (right-aligned).
     fn place(&mut self, at: (i32, i32), text: &str, area: [i32; 4]) -> ((i32, i32), bool) {
+        self.place_clear(at, text, area, 0)
+    }
+
+    /// Keeps later labels off a marker of `radius` pixels drawn at `at`.
+    fn block(&mut self, at: (i32, i32), radius: i32) {
+        self.placed
+            .push([at.0 - radius, at.1 - radius, at.0 + radius, at.1 + radius]);
+    }
+
+    /// As [`Labels::place`], `clear` pixels further from the point on each
+    /// side (for a big marker, so that its label does not crowd it).
+    fn place_clear(
+        &mut self,
+        at: (i32, i32),
+        text: &str,
+        area: [i32; 4],
+        clear: i32,
+    ) -> ((i32, i32), bool) {
         let width = (text.chars().count() as f64 * 0.58 * Self::SIZE) as i32;
         let height = Self::SIZE as i32 + 2;
+        let (dx, up, down) = (8 + clear, -height - 4 - clear, 6 + clear);
         let candidates = [
-            (8, -height - 4, false),
-            (8, 6, false),
-            (-8, -height - 4, true),
-            (-8, 6, true),
-            (8, -2 * height - 6, false),
-            (-8, -2 * height - 6, true),
-            (8, height + 8, false),
-            (-8, height + 8, true),
+            (dx, up, false),
+            (dx, down, false),
+            (-dx, up, true),
+            (-dx, down, true),
+            (dx, up - height - 2, false),
+            (-dx, up - height - 2, true),
+            (dx, down + height + 2, false),
+            (-dx, down + height + 2, true),
         ];
         let rect = |(dx, dy, right): (i32, i32, bool)| {
             let left = if right { at.0 + dx - width } else { at.0 + dx };

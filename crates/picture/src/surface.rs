@@ -237,11 +237,21 @@ pub fn surface_svg_in(
         let (xs, ys) = chart.plotting_area().get_pixel_range();
         let plot = [xs.start, ys.start, xs.end, ys.end];
         let mut labels = Labels::new();
+        // Labels stand clear of both markers, each of about this radius.
+        const MARKER: i32 = 9;
+        let markers = [
+            picture.now,
+            picture.optimum.map(|(e, psi, _)| (e, psi)),
+            picture.paper.map(|(e, psi, _)| (e, psi)),
+        ];
+        for (e, psi) in markers.into_iter().flatten() {
+            labels.block(chart.backend_coord(&(ex(e), py(psi))), MARKER);
+        }
         let inside = |e: f64, psi: f64| (e0..=e1).contains(&ex(e)) && (p0..=p1).contains(&py(psi));
         // The current swing as the explorer's ✚, O as a red ring, the paper's O as a triangle.
         if let Some((e, psi)) = picture.now.filter(|&(e, psi)| inside(e, psi)) {
             let at = (ex(e), py(psi));
-            let (offset, right) = labels.place(chart.backend_coord(&at), "now", plot);
+            let (offset, right) = labels.place_clear(chart.backend_coord(&at), "now", plot, MARKER);
             chart
                 .draw_series(std::iter::once(
                     EmptyElement::at(at)
@@ -253,7 +263,7 @@ pub fn surface_svg_in(
         if let Some((e, psi, range)) = picture.optimum.filter(|&(e, psi, _)| inside(e, psi)) {
             let at = (ex(e), py(psi));
             let text = format!("O {} {unit}", sig(scale.len(range), 5));
-            let (offset, right) = labels.place(chart.backend_coord(&at), &text, plot);
+            let (offset, right) = labels.place_clear(chart.backend_coord(&at), &text, plot, MARKER);
             chart
                 .draw_series(std::iter::once(
                     EmptyElement::at(at)
@@ -265,7 +275,7 @@ pub fn surface_svg_in(
         if let Some((e, psi, range)) = picture.paper.filter(|&(e, psi, _)| inside(e, psi)) {
             let at = (ex(e), py(psi));
             let text = format!("paper's O {} {unit}", sig(scale.len(range), 5));
-            let (offset, right) = labels.place(chart.backend_coord(&at), &text, plot);
+            let (offset, right) = labels.place_clear(chart.backend_coord(&at), &text, plot, MARKER);
             chart
                 .draw_series(std::iter::once(
                     EmptyElement::at(at)
