@@ -152,8 +152,11 @@ pub enum Command {
         /// --batch: each row's home_team].
         #[arg(long, value_name = "PARK")]
         park: Option<String>,
-        /// Also list every park with the outcome and margin there.
-        #[arg(long, conflicts_with = "batch")]
+        /// Also list every park with the outcome and margin there. With --batch:
+        /// two more columns a park, <CODE>_outcome and <CODE>_margin (_margin_ft
+        /// with --units imperial), after the others and before --keep's; in JSON
+        /// an `all_parks` list of {park, outcome, margin} (SI).
+        #[arg(long)]
         all_parks: bool,
         /// With --batch: judge each row at each park in that park's own air (the
         /// standard air at its elevation, the weather given kept), a flight a
@@ -401,6 +404,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         spray,
         own_air,
         summary,
+        all_parks,
         ..
     } = command
     {
@@ -412,6 +416,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         // A batch flies each row once (a season in about a second); a park's
         // own air is a flight a park, asked for.
         setup.own_air = *own_air;
+        setup.all_parks = *all_parks;
         setup.summary_to_stdout = *summary;
         if let Some(keep) = keep {
             setup.keep = keep

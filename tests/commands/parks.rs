@@ -415,3 +415,72 @@ fn a_park_is_judged_in_its_own_air_everywhere() {
         "{text}"
     );
 }
+
+/// Issue 28, item 12: `fly --batch --all-parks` gives each row's outcome
+/// and margin at every park: two CSV columns a park (the margin's unit in
+/// its name outside SI), or a JSON `all_parks` list. By default the row's
+/// one flight in the scene's air is judged at every park, so that the
+/// columns count to `parks_cleared`; `--own-air` flies each park in its own
+/// air.
+#[test]
+fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
+    let run = |args: &[&str]| {
+        let out = common::assert_command().args(args).output().unwrap();
+        assert!(out.status.success(), "{args:?}: {out:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let file = "tests/data/savant_home_runs.csv";
+    let csv = run(&["fly", "--all-parks", "--batch", file]);
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let at = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    for code in SAVANT_CODES {
+        assert_eq!(
+            at(&format!("{code}_margin")),
+            at(&format!("{code}_outcome")) + 1
+        );
+    }
+    assert_eq!(header.len(), 20 + 2 * 30);
+    let mut rows = 0;
+    for line in lines {
+        let cells: Vec<&str> = line.split(',').collect();
+        assert_eq!(cells.len(), header.len(), "{line}");
+        let cleared = SAVANT_CODES
+            .iter()
+            .filter(|code| cells[at(&format!("{code}_outcome"))] == "clears")
+            .count();
+        assert_eq!(cleared.to_string(), cells[at("parks_cleared")], "{line}");
+        // The row's own park's columns are its outcome and margin.
+        let park = cells[at("park")];
+        assert_eq!(cells[at(&format!("{park}_outcome"))], cells[at("outcome")]);
+        assert_eq!(cells[at(&format!("{park}_margin"))], cells[at("margin")]);
+        rows += 1;
+    }
+    assert_eq!(rows, 248);
+    // Imperial: the margins in feet, named so.
+    let imperial = run(&["fly", "--units", "imperial", "--all-parks", "--batch", file]);
+    let header = imperial.lines().next().unwrap();
+    assert!(header.contains(",BOS_outcome,BOS_margin_ft,"), "{header}");
+    // JSON: a list of {park, outcome, margin} in the parks' order, SI.
+    let json = run(&["fly", "--json", "--all-parks", "--batch", file]);
+    let first: serde_json::Value = serde_json::from_str(json.lines().next().unwrap()).unwrap();
+    let list = first["all_parks"].as_array().unwrap();
+    assert_eq!(list.len(), 30);
+    assert_eq!(list[0]["park"], "AZ");
+    let mine = list
+        .iter()
+        .find(|p| p["park"] == first["fence"]["park"])
+        .unwrap();
+    assert_eq!(mine["outcome"], first["fence"]["outcome"]);
+    assert_eq!(mine["margin"], first["fence"]["margin"]);
+    // Without --all-parks, no such key or columns.
+    let plain = run(&["fly", "--json", "--batch", file]);
+    assert!(!plain.contains("all_parks"));
+    // --own-air: each park in its own air, as the lone fly judges it.
+    let own = run(&["fly", "--all-parks", "--own-air", "--batch", file]);
+    let header: Vec<&str> = own.lines().next().unwrap().split(',').collect();
+    let first: Vec<&str> = own.lines().nth(1).unwrap().split(',').collect();
+    let bos = header.iter().position(|h| *h == "BOS_margin").unwrap();
+    let shared: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
+    assert_ne!(first[bos], shared[bos], "Fenway's own air moves the margin");
+}

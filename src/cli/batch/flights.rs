@@ -38,6 +38,9 @@ pub(super) struct Scratch {
     summaries: Vec<FlightSummary>,
     /// For each row flown, a flag per park: cleared.
     pub cleared: Vec<bool>,
+    /// With `--all-parks`, for each row flown, its judgement at each park
+    /// (beside `cleared`: from the same `cleared_from`).
+    pub clearings: Vec<Clearing>,
 }
 
 /// A row ready to fly: its launch complete and checked, and the fence it
@@ -59,6 +62,7 @@ pub(super) fn fly_chunk(
 ) {
     out.clear();
     scratch.cleared.clear();
+    scratch.clearings.clear();
     // The generic fences of the piece (one, unless rows give field.*).
     let mut generic: Vec<(crate::preset::Fence, park::Fence)> = Vec::new();
     for job in jobs.iter().filter(|j| j.park.is_none()) {
@@ -109,6 +113,12 @@ pub(super) fn fly_chunk(
         let landing = Landing::of(&summary);
         let clearing = Clearing::judge_landed(ready.own, crossings[0], &summary, landing);
         let from = scratch.cleared.len();
+        if setup.all_parks && !setup.own_air {
+            let judged = parks.iter().zip(&crossings[1..]);
+            scratch.clearings.extend(judged.map(|(fence, crossing)| {
+                Clearing::judge_landed(fence, *crossing, &summary, landing)
+            }));
+        }
         // A ball clears a park's wall only where it crosses it.
         let at_parks = parks.iter().zip(&crossings[1..]).map(|(fence, crossing)| {
             crossing.is_some()
@@ -117,8 +127,11 @@ pub(super) fn fly_chunk(
         scratch.cleared.extend(at_parks);
         if setup.own_air {
             for park in &setup.parks.parks {
-                let clears = own_air_clears(ready, park, job.given, &options);
-                scratch.cleared.push(clears);
+                let there = own_air_clearing(ready, park, job.given, &options);
+                scratch.cleared.push(there.clears());
+                if setup.all_parks {
+                    scratch.clearings.push(there);
+                }
             }
         }
         out.push(Ok(RowFlight {
@@ -206,18 +219,18 @@ fn ready<'f>(
     })
 }
 
-/// Whether the row clears `park`'s wall on a flight of its own in that
-/// park's air (as `fly --own-air` flies it).
-fn own_air_clears(
+/// The row at `park`'s wall on a flight of its own in that park's air (as
+/// `fly --own-air` flies it).
+fn own_air_clearing(
     ready: &Ready,
     park: &park::Park,
     given: GivenWeather,
     options: &FlightOptions,
-) -> bool {
+) -> Clearing {
     let mut there = ready.scene;
     given.park_air(&mut there.environment, park.elevation);
     let (flight, _, _) = launch::scene_start(&there);
     let mut crossing = [None];
     let flown = flight.fly_to_fences(options, &[&park.fence], &mut crossing);
-    Clearing::judge(&park.fence, crossing[0], &flown).clears()
+    Clearing::judge(&park.fence, crossing[0], &flown)
 }

@@ -12,6 +12,7 @@ use super::flights::RowFlight;
 use super::rows::Job;
 use super::savant_columns::{Setup, quoted};
 use crate::cli::shown::Shown;
+use crate::model::clearing::Clearing;
 use crate::preset::escape_cut;
 use crate::units::Quantity;
 
@@ -75,6 +76,15 @@ pub(super) fn csv_header(statcast: bool, setup: &Setup, shown: Shown) -> String 
         .chain(STATCAST_COLUMNS.into_iter().filter(|_| statcast))
         .map(|(name, quantity)| shown.csv_key(name, quantity))
         .collect();
+    if setup.all_parks {
+        for park in &setup.parks.parks {
+            let code = &park.code;
+            names.push(quoted(&format!("{code}_outcome")));
+            names.push(quoted(
+                &shown.csv_key(&format!("{code}_margin"), Quantity::Distance),
+            ));
+        }
+    }
     names.extend(setup.keep.iter().map(|n| quoted(n)));
     names.join(",") + "\n"
 }
@@ -105,7 +115,14 @@ pub(super) struct CsvLine<'a> {
 }
 
 impl CsvLine<'_> {
-    pub(super) fn write(&self, out: &mut Vec<u8>, job: &Job, flown: &RowFlight) {
+    /// `judged`: with `--all-parks`, the row at each park, else empty.
+    pub(super) fn write(
+        &self,
+        out: &mut Vec<u8>,
+        job: &Job,
+        flown: &RowFlight,
+        judged: &[Clearing],
+    ) {
         let (launch, flight) = (&flown.launch, &flown.flight);
         // A number of `quantity` to `si_decimals` in SI (about as fine in
         // the other system), and its comma; nothing for none.
@@ -163,6 +180,11 @@ impl CsvLine<'_> {
                 out.pop();
             }
         }
+        for there in judged {
+            let _ = write!(out, ",{},", there.outcome.name());
+            number(out, Quantity::Distance, there.margin, 3);
+            out.pop();
+        }
         for cell in &job.kept {
             out.push(b',');
             // Control characters reach a terminal escaped, a file as read.
@@ -180,6 +202,9 @@ impl CsvLine<'_> {
 /// `serde_json` values kept them.
 #[derive(Serialize)]
 struct JsonLine<'a> {
+    /// With `--all-parks`: the row at each park.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    all_parks: Option<Vec<AtParkJson<'a>>>,
     clears_fence: bool,
     fence: FenceJson<'a>,
     flight: FlightJson,
@@ -200,6 +225,13 @@ struct FenceJson<'a> {
     distance: Option<f64>,
     height: Option<f64>,
     height_at_fence: Option<f64>,
+    margin: Option<f64>,
+    outcome: &'a str,
+    park: &'a str,
+}
+
+#[derive(Serialize)]
+struct AtParkJson<'a> {
     margin: Option<f64>,
     outcome: &'a str,
     park: &'a str,
@@ -241,12 +273,21 @@ pub(super) fn json_line(
     out: &mut Vec<u8>,
     job: &Job,
     flown: &RowFlight,
-    cleared: &[bool],
+    (cleared, judged): (&[bool], &[Clearing]),
     setup: &Setup,
 ) {
     let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.clearing);
     let parks = setup.parks.parks.iter().zip(cleared);
     let line = JsonLine {
+        all_parks: setup.all_parks.then(|| {
+            (setup.parks.parks.iter().zip(judged))
+                .map(|(park, there)| AtParkJson {
+                    margin: there.margin,
+                    outcome: there.outcome.name(),
+                    park: park.code.as_str(),
+                })
+                .collect()
+        }),
         clears_fence: fence.clears(),
         fence: FenceJson {
             direction: fence.direction,

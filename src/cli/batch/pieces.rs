@@ -179,12 +179,17 @@ impl Piece {
                     continue;
                 }
             };
-            if context.printed.json {
-                let parks = setup.parks.parks.len();
-                let cleared = &self.scratch.cleared[flown.cleared_from..][..parks];
-                json_line(&mut self.out, job, flown, cleared, setup);
+            let parks = setup.parks.parks.len();
+            let judged = if setup.all_parks {
+                &self.scratch.clearings[flown.cleared_from..][..parks]
             } else {
-                csv.write(&mut self.out, job, flown);
+                &[]
+            };
+            if context.printed.json {
+                let cleared = &self.scratch.cleared[flown.cleared_from..][..parks];
+                json_line(&mut self.out, job, flown, (cleared, judged), setup);
+            } else {
+                csv.write(&mut self.out, job, flown, judged);
             }
             self.summary.count(job, header, flown.flights);
             self.tally.count(job, flown);

@@ -76,6 +76,8 @@ pub(in crate::cli) struct Setup<'a> {
     pub spray: Spray,
     /// `--own-air`: each park counted in its own air (a flight per park).
     pub own_air: bool,
+    /// `--all-parks`: each park's outcome and margin on every row.
+    pub all_parks: bool,
     /// `--summary`: the closing summary on stdout, after the rows (else stderr).
     pub summary_to_stdout: bool,
     /// `--keep`'s column names.
@@ -128,6 +130,7 @@ impl<'a> Setup<'a> {
             sidespin_given: false,
             spray: Spray::Landing,
             own_air: false,
+            all_parks: false,
             summary_to_stdout: false,
             keep: Vec::new(),
             escape_kept: false,
