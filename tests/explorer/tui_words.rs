@@ -278,3 +278,29 @@ fn h_and_l_on_the_preset_row_cycle_the_presets() {
     key(&mut app, KeyCode::Char('h'));
     assert_eq!(app.preset_name, names[names.len() - 1]);
 }
+
+/// Issue 28: at 80×24, where the Δ column gives way to the words, the
+/// selected input's Δ (the range a step up gains) shows in the pane's title,
+/// for a swing and for a batted ball, and follows the selection; where the
+/// column shows, it does not.
+#[test]
+fn the_selected_inputs_delta_is_shown_at_80x24() {
+    for (preset, gain, next) in [
+        ("fastball", "▶ Δ +2.01 m", "▶ Δ +0.16 m"),
+        ("fly-ball", "▶ Δ +1.60 m", ""),
+    ] {
+        let mut app = app_on(preset, 80, 24, None);
+        settle(&mut app);
+        let top = screen(&app).lines().next().unwrap().to_owned();
+        assert!(top.contains(gain), "{preset}: {top}");
+        if !next.is_empty() {
+            key(&mut app, KeyCode::Char('j'));
+            settle(&mut app);
+            let top = screen(&app).lines().next().unwrap().to_owned();
+            assert!(top.contains(next), "{preset}, the next row: {top}");
+        }
+        let mut wide = app_on(preset, 200, 60, None);
+        settle(&mut wide);
+        assert!(!screen(&wide).contains("▶ Δ"), "{preset} at 200×60");
+    }
+}
