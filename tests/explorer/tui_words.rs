@@ -304,3 +304,29 @@ fn the_selected_inputs_delta_is_shown_at_80x24() {
         assert!(!screen(&wide).contains("▶ Δ"), "{preset} at 200×60");
     }
 }
+
+/// Issue 28, item 8: the same ball's range at one rounding everywhere on
+/// screen (the trajectory's title, the field's and the readout's), in
+/// metres and in feet.
+#[test]
+fn the_range_has_one_rounding_on_screen() {
+    for (imperial, unit) in [(false, " m"), (true, " ft")] {
+        let mut app = app_on("fly-ball", 160, 48, None);
+        key(&mut app, KeyCode::Char('5'));
+        if imperial {
+            key(&mut app, KeyCode::Char('u'));
+        }
+        settle(&mut app);
+        let range = app.range_text(app.flown.flight.range);
+        let (number, _) = range.split_once(unit).expect("the unit");
+        assert_eq!(
+            number.split_once('.').map(|(_, d)| d.len()),
+            Some(2),
+            "{range}"
+        );
+        let shown = screen(&app);
+        assert!(shown.contains(&format!("Trajectory {range}")), "{shown}");
+        assert!(shown.contains(&format!("Field {range}")), "{shown}");
+        assert!(shown.contains(&format!("range {range}")), "{shown}");
+    }
+}

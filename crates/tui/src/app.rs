@@ -268,6 +268,13 @@ impl App {
         (unit.show(metres), unit.symbol)
     }
 
+    /// The scene's range as every pane shows it, at one rounding (the
+    /// readout's, to which the Δ column's gains add up): "134.70 m".
+    pub fn range_text(&self, metres: f64) -> String {
+        let (value, unit) = self.distance(metres);
+        format!("{value:.2} {unit}")
+    }
+
     /// The unit a quantity is shown in.
     pub fn unit(&self, quantity: Quantity) -> Unit {
         quantity.in_system(self.units)
