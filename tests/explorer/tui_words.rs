@@ -164,6 +164,11 @@ fn walk(app: &mut App, scene: &str, found: &mut Vec<String>) {
     key(app, KeyCode::Enter);
     look(app, "edit");
     key(app, KeyCode::Esc);
+    key(app, KeyCode::Char('/'));
+    look(app, "park list");
+    key(app, KeyCode::Char('s'));
+    look(app, "park list, filtered");
+    key(app, KeyCode::Esc);
     key(app, KeyCode::Char('m'));
     look(app, "park");
     key(app, KeyCode::Char('5'));
@@ -329,4 +334,53 @@ fn the_range_has_one_rounding_on_screen() {
         assert!(shown.contains(&format!("Field {range}")), "{shown}");
         assert!(shown.contains(&format!("range {range}")), "{shown}");
     }
+}
+
+/// Issue 28, item 7: `/` opens the park list, which filters as a code, a
+/// name or a city is typed; Enter chooses the park (as `m` would have), Esc
+/// leaves the park as it was; `m`/`M` still cycle.
+#[test]
+fn the_park_list_filters_by_code_name_or_city() {
+    use homerun::tui::app::Mode;
+    let mut app = app_on("fly-ball", 80, 24, None);
+    let typed = |app: &mut App, text: &str| {
+        for c in text.chars() {
+            key(app, KeyCode::Char(c));
+        }
+    };
+    let codes = |app: &App, query: &str| -> Vec<String> {
+        app.parks_matching(query)
+            .into_iter()
+            .map(|k| app.parks.list.parks[k].code.clone())
+            .collect()
+    };
+    assert_eq!(codes(&app, "").len(), 30);
+    assert_eq!(codes(&app, "fenway"), ["BOS"]);
+    assert_eq!(codes(&app, "bos"), ["BOS"]);
+    assert_eq!(codes(&app, "Fenway Park"), ["BOS"]);
+    assert_eq!(codes(&app, "sea"), ["SEA"]);
+    assert_eq!(codes(&app, "chicago").len(), 2);
+    assert!(codes(&app, "zzz").is_empty());
+
+    key(&mut app, KeyCode::Char('/'));
+    typed(&mut app, "seattle");
+    let shown = screen(&app);
+    assert!(shown.contains("Parks: 1 of 30"), "{shown}");
+    assert!(shown.contains("SEA"), "{shown}");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_eq!(app.chosen_park().unwrap().code, "SEA");
+    // Backspace widens the list again; Esc keeps the park chosen.
+    key(&mut app, KeyCode::Char('/'));
+    typed(&mut app, "fenx");
+    assert!(screen(&app).contains("Parks: 0 of 30"));
+    key(&mut app, KeyCode::Backspace);
+    assert!(screen(&app).contains("Parks: 1 of 30"));
+    key(&mut app, KeyCode::Esc);
+    assert_eq!(app.chosen_park().unwrap().code, "SEA");
+    // m and M still cycle.
+    key(&mut app, KeyCode::Char('m'));
+    assert_ne!(app.chosen_park().map(|p| p.code.as_str()), Some("SEA"));
+    key(&mut app, KeyCode::Char('M'));
+    assert_eq!(app.chosen_park().unwrap().code, "SEA");
 }

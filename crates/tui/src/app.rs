@@ -147,6 +147,12 @@ pub enum Mode {
         error: Option<String>,
     },
     Help,
+    /// Choosing a park from the list, filtered by `query` (a code, or words
+    /// of a name or a city); `selected` counts in the filtered list.
+    Parks {
+        query: String,
+        selected: usize,
+    },
 }
 
 /// The optimiser's latest word for the current inputs.
@@ -550,6 +556,7 @@ impl App {
                 selected,
                 error,
             } => self.open_key(action, items, selected, error),
+            Mode::Parks { query, selected } => self.parks_key(key, query, selected),
         }
     }
 
@@ -593,6 +600,12 @@ impl App {
             Action::Unpin => self.pin = None,
             Action::NextPark | Action::PreviousPark => {
                 self.cycle_park(action == Action::NextPark);
+            }
+            Action::FindPark => {
+                self.mode = Mode::Parks {
+                    query: String::new(),
+                    selected: self.park.unwrap_or(0),
+                }
             }
             Action::MarginMap => self.toggle_margin(),
             Action::ParkAir => self.toggle_park_air(),
