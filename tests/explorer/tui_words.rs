@@ -384,3 +384,26 @@ fn the_park_list_filters_by_code_name_or_city() {
     key(&mut app, KeyCode::Char('M'));
     assert_eq!(app.chosen_park().unwrap().code, "SEA");
 }
+
+/// Issue 28, item 11: in the impact chart the curves are named at their
+/// ends (v1, v3; a 3-D swing's v2 too), not told apart by colour alone,
+/// and p_f is marked inside the axis, which runs on past it.
+#[test]
+fn the_impact_chart_names_its_curves_and_keeps_p_f_inside() {
+    for (preset, names) in [("fastball", &["v1", "v3"][..]), ("figure5", &["v3"][..])] {
+        let mut app = app_on(preset, 80, 24, None);
+        settle(&mut app);
+        key(&mut app, KeyCode::Char('3'));
+        key(&mut app, KeyCode::Char('.'));
+        settle(&mut app);
+        let shown = screen(&app);
+        // The chart's rows: those above its x axis' labels.
+        let chart: String = shown
+            .lines()
+            .take_while(|l| !l.contains("p (N·s)"))
+            .collect();
+        for name in names.iter().chain(&["p_f"]) {
+            assert!(chart.contains(name), "{preset}: {name}\n{shown}");
+        }
+    }
+}

@@ -48,16 +48,19 @@ pub fn draw(
     let (across, normal, along) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
     let curves = [
         Curve {
+            name: "v1",
             value: |s| s.slip.x,
             style: app.theme.slip,
             marker: across.0,
         },
         Curve {
+            name: "v2",
             value: |s| s.slip.y,
             style: app.theme.slip_along,
             marker: along.0,
         },
         Curve {
+            name: "v3",
             value: |s| s.normal_velocity,
             style: app.theme.approach,
             marker: normal.0,
