@@ -164,6 +164,11 @@ fn walk(app: &mut App, scene: &str, found: &mut Vec<String>) {
     key(app, KeyCode::Enter);
     look(app, "edit");
     key(app, KeyCode::Esc);
+    key(app, KeyCode::Char('/'));
+    look(app, "park list");
+    key(app, KeyCode::Char('s'));
+    look(app, "park list, filtered");
+    key(app, KeyCode::Esc);
     key(app, KeyCode::Char('m'));
     look(app, "park");
     key(app, KeyCode::Char('5'));
@@ -277,4 +282,128 @@ fn h_and_l_on_the_preset_row_cycle_the_presets() {
     key(&mut app, KeyCode::Char('h'));
     key(&mut app, KeyCode::Char('h'));
     assert_eq!(app.preset_name, names[names.len() - 1]);
+}
+
+/// Issue 28: at 80×24, where the Δ column gives way to the words, the
+/// selected input's Δ (the range a step up gains) shows in the pane's title,
+/// for a swing and for a batted ball, and follows the selection; where the
+/// column shows, it does not.
+#[test]
+fn the_selected_inputs_delta_is_shown_at_80x24() {
+    for (preset, gain, next) in [
+        ("fastball", "▶ Δ +2.01 m", "▶ Δ +0.16 m"),
+        ("fly-ball", "▶ Δ +1.60 m", ""),
+    ] {
+        let mut app = app_on(preset, 80, 24, None);
+        settle(&mut app);
+        let top = screen(&app).lines().next().unwrap().to_owned();
+        assert!(top.contains(gain), "{preset}: {top}");
+        if !next.is_empty() {
+            key(&mut app, KeyCode::Char('j'));
+            settle(&mut app);
+            let top = screen(&app).lines().next().unwrap().to_owned();
+            assert!(top.contains(next), "{preset}, the next row: {top}");
+        }
+        let mut wide = app_on(preset, 200, 60, None);
+        settle(&mut wide);
+        assert!(!screen(&wide).contains("▶ Δ"), "{preset} at 200×60");
+    }
+}
+
+/// Issue 28, item 8: the same ball's range at one rounding everywhere on
+/// screen (the trajectory's title, the field's and the readout's), in
+/// metres and in feet.
+#[test]
+fn the_range_has_one_rounding_on_screen() {
+    for (imperial, unit) in [(false, " m"), (true, " ft")] {
+        let mut app = app_on("fly-ball", 160, 48, None);
+        key(&mut app, KeyCode::Char('5'));
+        if imperial {
+            key(&mut app, KeyCode::Char('u'));
+        }
+        settle(&mut app);
+        let range = app.range_text(app.flown.flight.range);
+        let (number, _) = range.split_once(unit).expect("the unit");
+        assert_eq!(
+            number.split_once('.').map(|(_, d)| d.len()),
+            Some(2),
+            "{range}"
+        );
+        let shown = screen(&app);
+        assert!(shown.contains(&format!("Trajectory {range}")), "{shown}");
+        assert!(shown.contains(&format!("Field {range}")), "{shown}");
+        assert!(shown.contains(&format!("range {range}")), "{shown}");
+    }
+}
+
+/// Issue 28, item 7: `/` opens the park list, which filters as a code, a
+/// name or a city is typed; Enter chooses the park (as `m` would have), Esc
+/// leaves the park as it was; `m`/`M` still cycle.
+#[test]
+fn the_park_list_filters_by_code_name_or_city() {
+    use homerun::tui::app::Mode;
+    let mut app = app_on("fly-ball", 80, 24, None);
+    let typed = |app: &mut App, text: &str| {
+        for c in text.chars() {
+            key(app, KeyCode::Char(c));
+        }
+    };
+    let codes = |app: &App, query: &str| -> Vec<String> {
+        app.parks_matching(query)
+            .into_iter()
+            .map(|k| app.parks.list.parks[k].code.clone())
+            .collect()
+    };
+    assert_eq!(codes(&app, "").len(), 30);
+    assert_eq!(codes(&app, "fenway"), ["BOS"]);
+    assert_eq!(codes(&app, "bos"), ["BOS"]);
+    assert_eq!(codes(&app, "Fenway Park"), ["BOS"]);
+    assert_eq!(codes(&app, "sea"), ["SEA"]);
+    assert_eq!(codes(&app, "chicago").len(), 2);
+    assert!(codes(&app, "zzz").is_empty());
+
+    key(&mut app, KeyCode::Char('/'));
+    typed(&mut app, "seattle");
+    let shown = screen(&app);
+    assert!(shown.contains("Parks: 1 of 30"), "{shown}");
+    assert!(shown.contains("SEA"), "{shown}");
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_eq!(app.chosen_park().unwrap().code, "SEA");
+    // Backspace widens the list again; Esc keeps the park chosen.
+    key(&mut app, KeyCode::Char('/'));
+    typed(&mut app, "fenx");
+    assert!(screen(&app).contains("Parks: 0 of 30"));
+    key(&mut app, KeyCode::Backspace);
+    assert!(screen(&app).contains("Parks: 1 of 30"));
+    key(&mut app, KeyCode::Esc);
+    assert_eq!(app.chosen_park().unwrap().code, "SEA");
+    // m and M still cycle.
+    key(&mut app, KeyCode::Char('m'));
+    assert_ne!(app.chosen_park().map(|p| p.code.as_str()), Some("SEA"));
+    key(&mut app, KeyCode::Char('M'));
+    assert_eq!(app.chosen_park().unwrap().code, "SEA");
+}
+
+/// Issue 28, item 11: in the impact chart the curves are named at their
+/// ends (v1, v3; a 3-D swing's v2 too), not told apart by colour alone,
+/// and p_f is marked inside the axis, which runs on past it.
+#[test]
+fn the_impact_chart_names_its_curves_and_keeps_p_f_inside() {
+    for (preset, names) in [("fastball", &["v1", "v3"][..]), ("figure5", &["v3"][..])] {
+        let mut app = app_on(preset, 80, 24, None);
+        settle(&mut app);
+        key(&mut app, KeyCode::Char('3'));
+        key(&mut app, KeyCode::Char('.'));
+        settle(&mut app);
+        let shown = screen(&app);
+        // The chart's rows: those above its x axis' labels.
+        let chart: String = shown
+            .lines()
+            .take_while(|l| !l.contains("p (N·s)"))
+            .collect();
+        for name in names.iter().chain(&["p_f"]) {
+            assert!(chart.contains(name), "{preset}: {name}\n{shown}");
+        }
+    }
 }

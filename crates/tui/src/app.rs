@@ -147,6 +147,12 @@ pub enum Mode {
         error: Option<String>,
     },
     Help,
+    /// Choosing a park from the list, filtered by `query` (a code, or words
+    /// of a name or a city); `selected` counts in the filtered list.
+    Parks {
+        query: String,
+        selected: usize,
+    },
 }
 
 /// The optimiser's latest word for the current inputs.
@@ -266,6 +272,13 @@ impl App {
     pub fn distance(&self, metres: f64) -> (f64, &'static str) {
         let unit = self.unit(Quantity::Distance);
         (unit.show(metres), unit.symbol)
+    }
+
+    /// The scene's range as every pane shows it, at one rounding (the
+    /// readout's, to which the Δ column's gains add up): "134.70 m".
+    pub fn range_text(&self, metres: f64) -> String {
+        let (value, unit) = self.distance(metres);
+        format!("{value:.2} {unit}")
     }
 
     /// The unit a quantity is shown in.
@@ -543,6 +556,7 @@ impl App {
                 selected,
                 error,
             } => self.open_key(action, items, selected, error),
+            Mode::Parks { query, selected } => self.parks_key(key, query, selected),
         }
     }
 
@@ -586,6 +600,12 @@ impl App {
             Action::Unpin => self.pin = None,
             Action::NextPark | Action::PreviousPark => {
                 self.cycle_park(action == Action::NextPark);
+            }
+            Action::FindPark => {
+                self.mode = Mode::Parks {
+                    query: String::new(),
+                    selected: self.park.unwrap_or(0),
+                }
             }
             Action::MarginMap => self.toggle_margin(),
             Action::ParkAir => self.toggle_park_air(),

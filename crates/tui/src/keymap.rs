@@ -58,6 +58,8 @@ pub enum Action {
     /// its verdict in the readout.
     NextPark,
     PreviousPark,
+    /// The park list: filtered as a code, name or city is typed.
+    FindPark,
     /// The heatmap: the range, or the margin over the park's wall.
     MarginMap,
     /// The scene in the park's own air, or back to the air before.
@@ -242,10 +244,11 @@ pub const KEYMAP: &[Row] = &[
         &[
             ch('m', NextPark),
             ch('M', PreviousPark),
+            ch('/', FindPark),
             ch('c', MarginMap),
             ch('a', ParkAir),
         ],
-        "next / previous park / its margin map / its air",
+        "park: next / previous / find / margin map / air",
     ),
     row(
         &[
@@ -417,7 +420,7 @@ mod tests {
                 "r",
                 "u",
                 "p P",
-                "m M c a",
+                "m M / c a",
                 "Tab  1 2 3 4 5",
                 "f F",
                 ", .",

@@ -147,12 +147,78 @@ impl App {
     /// through "none" (the preset's fence) at either end.
     pub(super) fn cycle_park(&mut self, forward: bool) {
         let n = self.parks.list.parks.len();
-        self.park = match (self.park, forward) {
+        let park = match (self.park, forward) {
             (None, true) => n.checked_sub(1).map(|_| 0),
             (None, false) => n.checked_sub(1),
             (Some(k), true) => (k + 1 < n).then_some(k + 1),
             (Some(k), false) => k.checked_sub(1),
         };
+        self.choose_park(park);
+    }
+
+    /// The parks (their indices) that answer to `query` as it is typed in
+    /// the park list: each of its words the start of the park's code (or an
+    /// alias), or of a word of its name or city; without regard to case.
+    /// All of them for an empty query.
+    pub fn parks_matching(&self, query: &str) -> Vec<usize> {
+        let query = query.to_lowercase();
+        let words: Vec<&str> = query.split_whitespace().collect();
+        let starts = |text: &str, word: &str| {
+            text.to_lowercase()
+                .split(|c: char| c.is_whitespace() || c == '-' || c == '.')
+                .any(|w| w.starts_with(word))
+        };
+        self.parks
+            .list
+            .parks
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| {
+                words.iter().all(|w| {
+                    p.code.to_lowercase().starts_with(w)
+                        || p.aliases.iter().any(|a| a.to_lowercase().starts_with(w))
+                        || starts(&p.name, w)
+                        || starts(&p.city, w)
+                })
+            })
+            .map(|(k, _)| k)
+            .collect()
+    }
+
+    /// A key in the park list: typing filters it, ↑ ↓ move, Enter chooses
+    /// the park, Esc closes it.
+    pub(super) fn parks_key(&mut self, key: KeyEvent, mut query: String, selected: usize) {
+        use ratatui::crossterm::event::{KeyCode, KeyModifiers};
+        let found = self.parks_matching(&query);
+        let mut at = found.iter().position(|&k| k == selected).unwrap_or(0);
+        match key.code {
+            KeyCode::Esc => return,
+            KeyCode::Enter => {
+                if let Some(&k) = found.get(at) {
+                    self.choose_park(Some(k));
+                    return;
+                }
+            }
+            KeyCode::Down => at = (at + 1).min(found.len().saturating_sub(1)),
+            KeyCode::Up => at = at.saturating_sub(1),
+            KeyCode::Backspace => {
+                query.pop();
+            }
+            KeyCode::Char(c) if !key.modifiers.contains(KeyModifiers::CONTROL) => query.push(c),
+            _ => {}
+        }
+        let found_now = self.parks_matching(&query);
+        // The same park stays selected while it still answers, else the first.
+        let keep = found.get(at).copied().filter(|k| found_now.contains(k));
+        let selected = keep.or(found_now.first().copied()).unwrap_or(selected);
+        self.mode = Mode::Parks { query, selected };
+    }
+
+    /// Chooses the park `park` (an index into the list; None: the preset's
+    /// fence): its fence, its verdict and (in the park's air) its air.
+    fn choose_park(&mut self, park: Option<usize>) {
+        let n = self.parks.list.parks.len();
+        self.park = park;
         self.judge_fences();
         self.refresh_margin(true);
         self.dirty = true;

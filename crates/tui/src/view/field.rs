@@ -22,7 +22,7 @@ const ARC_POINTS: usize = 120;
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let map = app.field_map(area);
-    let (k, unit) = app.distance(1.0);
+    let k = app.distance(1.0).0;
     // Drawn as (z, x): across the page, then up it.
     let across =
         |track: &[(f64, f64)]| -> Vec<(f64, f64)> { track.iter().map(|&(x, z)| (z, x)).collect() };
@@ -104,8 +104,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let legend = Line::from(legend);
     let numbers = if flight.landed {
         format!(
-            "{:.0} {unit}, {} ",
-            k * flight.range,
+            "{}, {} ",
+            app.range_text(flight.range),
             direction_words(flight.direction)
         )
     } else {

@@ -57,11 +57,13 @@ fn planar(frame: &mut Frame, inner: Rect, app: &App, impact: &Collision, stop: S
             .areas(inner);
     let curves = [
         Curve {
+            name: "v1",
             value: |s| s.slip.x,
             style: app.theme.slip,
             marker: slip_path.0,
         },
         Curve {
+            name: "v3",
             value: |s| s.normal_velocity,
             style: app.theme.approach,
             marker: normal_path.0,
@@ -115,6 +117,9 @@ fn planar_text(
 /// A curve of the chart against p: what it plots of a moment (m/s), and
 /// how it is drawn.
 pub(super) struct Curve {
+    /// Its name, written at its end ("v1"): the curves told apart by more
+    /// than colour.
+    pub name: &'static str,
     pub value: fn(&model::impact::Moment) -> f64,
     pub style: Style,
     pub marker: Marker,
@@ -178,17 +183,29 @@ pub(super) fn phase_chart(
         .iter()
         .flatten()
         .fold((0.0f64, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
-    let x = Ticks::across(0.0, pf, chart_area.width.saturating_sub(6));
+    // The axis runs on to a tick at or past p_f, so that p_f lies inside
+    // its labels (12.3 on an axis labelled to 14, not past its 10).
+    let cells = chart_area.width.saturating_sub(6);
+    let mut x = Ticks::across(0.0, pf, cells);
+    for _ in 0..4 {
+        let end = (pf / x.step).ceil() * x.step;
+        if end <= x.hi * (1.0 + 1e-12) {
+            break;
+        }
+        x = Ticks::across(0.0, end, cells);
+    }
     let pad = 0.05 * (hi - lo);
     let y = Ticks::up(lo - pad, hi + pad, chart_area.height.saturating_sub(2));
     let vertical = |p: f64| [(p, y.lo), (p, y.hi)];
     let pc_line = vertical(impact.compression_impulse());
+    let pf_line = vertical(pf);
     let ps_line = impact.stick_impulse().map(vertical);
     let cursor = vertical(cursor);
     let zero = [(0.0, 0.0), (x.hi, 0.0)];
     let mut datasets = vec![
         chart::line(app.theme.dim, &zero),
         chart::line(app.theme.compression, &pc_line),
+        chart::line(app.theme.dim, &pf_line),
     ];
     if let Some(ps) = &ps_line {
         datasets.push(chart::line(app.theme.stick, ps));
@@ -227,5 +244,27 @@ pub(super) fn phase_chart(
             &at(ps, "p_s"),
             app.theme.stick,
         );
+    }
+    chart::labels(
+        frame,
+        graph,
+        (&x, &y),
+        Marker::Braille,
+        // At the foot of its line: the curves end at its top.
+        &[((pf, y.lo), "p_f")],
+        app.theme.dim,
+    );
+    // Each curve's name at its end, in its colour.
+    for (curve, points) in curves.iter().zip(&points) {
+        if let Some(&end) = points.last() {
+            chart::labels(
+                frame,
+                graph,
+                (&x, &y),
+                Marker::Braille,
+                &[(end, curve.name)],
+                curve.style,
+            );
+        }
     }
 }

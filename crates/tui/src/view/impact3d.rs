@@ -48,16 +48,19 @@ pub fn draw(
     let (across, normal, along) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
     let curves = [
         Curve {
+            name: "v1",
             value: |s| s.slip.x,
             style: app.theme.slip,
             marker: across.0,
         },
         Curve {
+            name: "v2",
             value: |s| s.slip.y,
             style: app.theme.slip_along,
             marker: along.0,
         },
         Curve {
+            name: "v3",
             value: |s| s.normal_velocity,
             style: app.theme.approach,
             marker: normal.0,
@@ -205,37 +208,48 @@ fn slip_plane(frame: &mut Frame, area: Rect, app: &App, impact: &Impact3d, curso
             .legend_position(None),
         plot,
     );
-    // The axes' names at their ends, the start of the path (on the row
-    // above it) and the stick (below the axis), clear of the path.
+    // The axes' names at their ends; the start of the path and the stick
+    // each on the first place beside their point (above or below it, right
+    // or left) where every cell is blank: clear of the curves.
     let buf = frame.buffer_mut();
-    let mut write = |point: (f64, f64), text: &str, style: Style, (left, down): (bool, i16)| {
-        let Some((column, row)) = chart::cell_of(plot, bounds, point, Marker::Braille) else {
-            return;
+    let mut write =
+        |point: (f64, f64), text: &str, style: Style, places: &[(bool, i16)], blank: bool| {
+            let Some((column, row)) = chart::cell_of(plot, bounds, point, Marker::Braille) else {
+                return;
+            };
+            let width = text.chars().count() as u16;
+            for &(left, down) in places {
+                let start = if left {
+                    column.checked_sub(width)
+                } else {
+                    Some(column + 1)
+                };
+                let row = row
+                    .checked_add_signed(down)
+                    .filter(|r| *r >= plot.y && *r < plot.bottom());
+                let (Some(start), Some(row)) = (
+                    start.filter(|s| *s >= plot.x && s + width <= plot.right()),
+                    row,
+                ) else {
+                    continue;
+                };
+                let free = (start..start + width).all(|x| buf[(x, row)].symbol() == " ");
+                if free || !blank {
+                    buf.set_string(start, row, text, style);
+                    return;
+                }
+            }
         };
-        let width = text.chars().count() as u16;
-        let start = if left {
-            column.checked_sub(width)
-        } else {
-            Some(column + 1)
-        };
-        let row = row
-            .checked_add_signed(down)
-            .filter(|r| *r >= plot.y && *r < plot.bottom());
-        if let (Some(start), Some(row)) = (
-            start.filter(|s| *s >= plot.x && s + width <= plot.right()),
-            row,
-        ) {
-            buf.set_string(start, row, text, style);
-        }
-    };
-    write((bx[1], 0.0), "v1", app.theme.dim, (true, 0));
-    write((0.0, by[1]), "v2", app.theme.dim, (false, 0));
+    write((bx[1], 0.0), "v1", app.theme.dim, &[(true, 0)], false);
+    write((0.0, by[1]), "v2", app.theme.dim, &[(false, 0)], false);
     if let Some(&start) = path.first() {
         let left = start.0 > 0.5 * (bx[0] + bx[1]);
-        write(start, "p=0", app.theme.slip, (left, -1));
+        let places = [(left, -1), (left, 1), (!left, -1), (!left, 1), (left, 0)];
+        write(start, "p=0", app.theme.slip, &places, true);
     }
     if sticks {
-        write((0.0, 0.0), "p_s", app.theme.stick, (false, 1));
+        let places = [(false, 1), (true, 1), (false, -1), (true, -1)];
+        write((0.0, 0.0), "p_s", app.theme.stick, &places, true);
     }
 }
 

@@ -164,7 +164,7 @@ fn largest(app: &App, gain: Gain) -> f64 {
 fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
     let left = Line::from(Span::styled(" Inputs ", app.theme.title));
     let Some(form) = c.swing else {
-        return (left, None);
+        return (left, selected_gain(app));
     };
     let unit = app.distance(1.0).1;
     // Each head is right-aligned over its column; the border runs on to it.
@@ -388,6 +388,42 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
     };
     frame.render_widget(about_text.wrap(Wrap { trim: true }), about);
+}
+
+/// Where the pane has no Δ column (80×24), the selected input's Δ at the
+/// title's right, marked as the selected row is (" ▶ Δ +2.01 m "): grey
+/// while it is computed, "…" before it first is, none for a model or the
+/// preset.
+fn selected_gain(app: &App) -> Option<Line<'static>> {
+    let Field::Key(k) = app.fields[app.selected] else {
+        return None;
+    };
+    let unit = app.distance(1.0).1;
+    let (text, style) = match app.swing_gains[k] {
+        Some(GainCell {
+            value: Some(v),
+            generation,
+        }) => {
+            let v = app.distance(v).0;
+            let style = if generation == app.generation {
+                app.theme.gain(v, largest(app, Gain::Swing))
+            } else {
+                app.theme.stale_gain
+            };
+            (format!("{} {unit}", gain_text(v)), style)
+        }
+        // Refused (at a bound) or not landing, as in the column.
+        Some(GainCell { value: None, .. }) => ("—".to_owned(), app.theme.dim),
+        None => ("…".to_owned(), app.theme.busy),
+    };
+    Some(
+        Line::from(vec![
+            Span::styled(" ▶ Δ ", app.theme.dim),
+            Span::styled(text, style),
+            Span::raw(" "),
+        ])
+        .right_aligned(),
+    )
 }
 
 /// A number's text rounded to fewer decimals until it fits `cells` (its

@@ -111,6 +111,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
             *selected,
             error.as_deref(),
         ),
+        Mode::Parks { query, selected } => overlay::parks(frame, area, app, query, *selected),
         Mode::Normal | Mode::Edit { .. } => {}
     }
 }

@@ -1,4 +1,5 @@
-//! Pop-ups over the panes: help, the save prompt and the preset picker.
+//! Pop-ups over the panes: help, the save prompt, the preset picker and
+//! the park list.
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Flex, Layout, Rect};
@@ -133,4 +134,74 @@ pub fn open(
         )),
     };
     frame.render_widget(line.wrap(Wrap { trim: true }), message);
+}
+
+/// The park list (`/`): what is typed, then the parks that answer to it
+/// (code, name, city), the chosen one marked; under it the keys.
+pub fn parks(frame: &mut Frame, area: Rect, app: &App, query: &str, selected: usize) {
+    let theme = &app.theme;
+    let found = app.parks_matching(query);
+    let height = (found.len() as u16 + 6).min(area.height.saturating_sub(2));
+    let popup = centered(area, 60, height);
+    frame.render_widget(Clear, popup);
+    let title = format!(" Parks: {} of {} ", found.len(), app.parks.list.parks.len());
+    let block = Block::bordered().title(Span::styled(title, theme.title));
+    let inner = block.inner(popup);
+    frame.render_widget(block, popup);
+    let [typed, list_area, keys] = Layout::vertical([
+        Constraint::Length(1),
+        Constraint::Fill(1),
+        Constraint::Length(2),
+    ])
+    .areas(inner);
+    frame.render_widget(
+        Paragraph::new(Line::from(vec![
+            Span::styled("find: ", theme.dim),
+            Span::styled(format!("{}▏", escape_text(query)), theme.selected),
+        ])),
+        typed,
+    );
+    let width = (list_area.width as usize).saturating_sub(2 + 5);
+    let list: Vec<ListItem> = found
+        .iter()
+        .map(|&k| {
+            let p = &app.parks.list.parks[k];
+            let place = if p.city.is_empty() {
+                escape_text(&p.name)
+            } else {
+                format!("{}, {}", escape_text(&p.name), escape_text(&p.city))
+            };
+            let mut spans = vec![Span::styled(
+                format!("{:<5}", escape_text(&p.code)),
+                Theme::strong(theme.plain),
+            )];
+            let place = super::words::fit(&[Span::styled(place, theme.plain)], width, 1);
+            spans.extend(place.into_iter().flat_map(|l| l.spans));
+            ListItem::new(Line::from(spans))
+        })
+        .collect();
+    if list.is_empty() {
+        frame.render_widget(
+            Paragraph::new(Line::styled("no park answers: Backspace", theme.broken)),
+            list_area,
+        );
+    } else {
+        let at = found.iter().position(|&k| k == selected).unwrap_or(0);
+        let mut state = ListState::default().with_selected(Some(at));
+        frame.render_stateful_widget(
+            List::new(list)
+                .highlight_style(theme.selected)
+                .highlight_symbol("▶ "),
+            list_area,
+            &mut state,
+        );
+    }
+    frame.render_widget(
+        Paragraph::new(Line::styled(
+            "type a code, name or city · ↑ ↓ move · Enter chooses · Esc cancels",
+            theme.dim,
+        ))
+        .wrap(Wrap { trim: true }),
+        keys,
+    );
 }

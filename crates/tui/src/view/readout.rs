@@ -129,8 +129,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             // (the end of the drawn path).
             if flight.landed {
                 Span::raw(format!(
-                    "range {:.2} {u}  {:.2} s  apex\u{a0}{:.1} {u}",
-                    d(flight.range),
+                    "range {}  {:.2} s  apex\u{a0}{:.1} {u}",
+                    app.range_text(flight.range),
                     flight.flight_time,
                     d(flight.apex)
                 ))

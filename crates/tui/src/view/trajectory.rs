@@ -76,8 +76,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let legend = Line::from(legend);
     let numbers = if flight.landed {
         format!(
-            "{:.1} {unit}, apex {:.1} {unit} ",
-            k * flight.range,
+            "{}, apex {:.1} {unit} ",
+            app.range_text(flight.range),
             k * flight.apex
         )
     } else {
