@@ -17,6 +17,7 @@ mod parks;
 mod pictures;
 mod presets_by_name;
 mod readme;
+mod start_up;
 mod stress_pass;
 #[path = "../tui_support/mod.rs"]
 mod tui_support;
