@@ -26,19 +26,7 @@ pub fn fly_many(
     options: &FlightOptions,
     mut done: impl FnMut(usize, FlightSummary),
 ) {
-    let flights: Vec<SceneFlight> = flights.into_iter().collect();
-    for group in groups(&flights) {
-        let done = LaneDone::Summary(&mut done);
-        fly_group(
-            FirstSteps::FromNeighbours,
-            &flights,
-            &group,
-            options,
-            None,
-            &[],
-            done,
-        );
-    }
+    fly_groups(flights, options, LaneDone::Summary(&mut done));
 }
 
 /// As [`fly_many`], telling `done(index, range)` only what each flight's
@@ -49,9 +37,19 @@ pub fn land_many(
     options: &FlightOptions,
     mut done: impl FnMut(usize, RangeSummary),
 ) {
+    fly_groups(flights, options, LaneDone::Range(&mut done));
+}
+
+/// [`fly_many`] and [`land_many`]: the flights in groups that fly alike,
+/// each lane from its neighbour's first step, nothing watched.
+fn fly_groups(
+    flights: impl IntoIterator<Item = SceneFlight>,
+    options: &FlightOptions,
+    mut done: LaneDone<'_>,
+) {
     let flights: Vec<SceneFlight> = flights.into_iter().collect();
     for group in groups(&flights) {
-        let done = LaneDone::Range(&mut done);
+        let done = done.reborrow();
         fly_group(
             FirstSteps::FromNeighbours,
             &flights,
