@@ -84,8 +84,13 @@ impl<R: Real> SpatialConstants<R> {
     #[inline(always)]
     pub fn air(&self, in_wind: R::Mask, [vx, vy, vz]: [R; 3]) -> ([R; 3], R, R) {
         let zero = R::splat(0.0);
-        let [wx, wy, wz] = self.wind.map(|w| R::select(in_wind, w, zero));
-        let rel = [wx - vx, wy - vy, wz - vz];
+        // Written out, not `map`: the lanes' closure was left uninlined.
+        let [wx, wy, wz] = self.wind;
+        let rel = [
+            R::select(in_wind, wx, zero) - vx,
+            R::select(in_wind, wy, zero) - vy,
+            R::select(in_wind, wz, zero) - vz,
+        ];
         let air_speed = (rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2]).sqrt();
         (rel, air_speed, air_speed * self.reynolds_per_speed)
     }
@@ -118,8 +123,11 @@ impl<R: Real> SpatialConstants<R> {
             rel[0] * a[1] - rel[1] * a[0],
         ];
         let lift = lift.coefficient_times_speed(air_speed, surface_speed) * self.force_per_mass;
-        let aero: [R; 3] = std::array::from_fn(|i| rel[i] * along + lift_direction[i] * lift);
-        [aero[0], aero[1] - self.gravity, aero[2]]
+        [
+            rel[0] * along + lift_direction[0] * lift,
+            rel[1] * along + lift_direction[1] * lift - self.gravity,
+            rel[2] * along + lift_direction[2] * lift,
+        ]
     }
 }
 

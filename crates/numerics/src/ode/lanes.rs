@@ -322,7 +322,7 @@ pub fn integrate_lanes<const N: usize, V: LaneReal, S: LaneSystem<N, V>>(
         let (t0, y0, k1) = (c.t, c.y, c.k1);
         stages_into(
             &mut s,
-            &mut |t, y: &Lanes<N, V>| system.derivative(t, y),
+            &mut |t, y: &Lanes<N, V>, slope: &mut Lanes<N, V>| *slope = system.derivative(t, y),
             t0,
             &y0,
             &k1,
