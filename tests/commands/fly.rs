@@ -267,7 +267,7 @@ fn a_batch_keeps_the_input_order_across_chunks() {
     let rows: Vec<&str> = out.lines().collect();
     assert_eq!(
         rows[0],
-        "line,launch.speed,launch.angle,launch.spin,launch.direction,launch.sidespin,range,direction,flight_time,apex,landing_angle,landed,clears_fence,park,outcome,margin,parks_cleared,spin_estimated"
+        "line,launch.speed,launch.angle,launch.spin,launch.direction,launch.sidespin,range,direction,flight_time,apex,landing_angle,landed,clears_fence,park,outcome,margin,parks_cleared,spin_estimated,direction_from"
     );
     assert_eq!(rows.len(), 9001);
     let mut last_range = 0.0;
@@ -280,6 +280,49 @@ fn a_batch_keeps_the_input_order_across_chunks() {
         assert!(range > last_range, "{row}");
         last_range = range;
     }
+}
+
+/// Rows of April 2024 that were once refused (`../shared/data/`, lines 84,
+/// 251 and 2 of the export): a foul popup whose spray (71°) no flight
+/// lands on, a chopper at −81° whose estimated topspin (10,500 rpm) was
+/// past the batch's 1000 rad/s, and a grounder to the left side.
+#[test]
+fn every_ball_in_play_with_a_launch_speed_flies() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = "stand,home_team,hc_x,hc_y,hit_distance_sc,launch_speed,launch_angle,bb_type\n\
+                 L,SEA,110.95,203.29,12,88.7,82,popup\n\
+                 R,HOU,124.74,175.93,0,55.4,-81,ground_ball\n\
+                 R,KC,109.13,157.39,5,100.2,-22,ground_ball\n\
+                 R,KC,109.13,157.39,5,NA,-22,ground_ball\n";
+    let (status, out, err) = batch(dir.path(), input, &["--json"]);
+    assert_eq!(status, Some(0), "{err}");
+    let rows: Vec<serde_json::Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(rows.len(), 3, "{out}");
+    let from: Vec<&str> = rows
+        .iter()
+        .map(|r| r["direction_from"].as_str().unwrap())
+        .collect();
+    assert_eq!(from, ["spray_unsolved", "landing", "landing"]);
+    // The popup flies toward its spray: atan((110.95 − 125.42)/(198.27 − 203.29)).
+    let spray = ((110.95f64 - 125.42) / (198.27 - 203.29)).atan();
+    assert_eq!(rows[0]["launch"]["direction"].as_f64(), Some(spray));
+    // The chopper's spin is the estimate held at −10°: √(1963² + 849²) rpm
+    // of topspin and slice, far inside the batch's bounds.
+    let spin = rows[1]["launch"]["spin"].as_f64().unwrap();
+    let sidespin = rows[1]["launch"]["sidespin"].as_f64().unwrap();
+    let rpm = spin.hypot(sidespin) * 60.0 / std::f64::consts::TAU;
+    assert!((rpm - 1963f64.hypot(849.0)).abs() < 60.0, "{rpm}");
+    assert!(
+        err.contains("1 row whose spray no flight lands on"),
+        "{err}"
+    );
+    assert!(
+        err.contains("skipped 1 row without a launch speed"),
+        "{err}"
+    );
 }
 
 #[test]

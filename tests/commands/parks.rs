@@ -440,7 +440,7 @@ fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
             at(&format!("{code}_outcome")) + 1
         );
     }
-    assert_eq!(header.len(), 20 + 2 * 30);
+    assert_eq!(header.len(), 21 + 2 * 30);
     let mut rows = 0;
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();

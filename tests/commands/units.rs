@@ -205,7 +205,7 @@ fn csv_headers_carry_the_units_and_the_numbers_convert() {
     let mut lines = out.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "line,launch.speed_mph,launch.angle_deg,launch.spin_rpm,launch.direction_deg,launch.sidespin_rpm,range_ft,direction_deg,flight_time,apex_ft,landing_angle_deg,landed,clears_fence,park,outcome,margin_ft,parks_cleared,spin_estimated"
+        "line,launch.speed_mph,launch.angle_deg,launch.spin_rpm,launch.direction_deg,launch.sidespin_rpm,range_ft,direction_deg,flight_time,apex_ft,landing_angle_deg,landed,clears_fence,park,outcome,margin_ft,parks_cleared,spin_estimated,direction_from"
     );
     assert!(lines.next().unwrap().starts_with("2,103.0,28.0,2500.0,"));
 }

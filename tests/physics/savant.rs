@@ -220,7 +220,7 @@ fn kept_columns_are_copied_into_the_csv_quoted() {
     let header = lines.next().unwrap();
     assert!(
         header.ends_with(
-            ",park,outcome,margin_ft,parks_cleared,spin_estimated,statcast_distance_ft,difference_ft,des"
+            ",park,outcome,margin_ft,parks_cleared,spin_estimated,direction_from,statcast_distance_ft,difference_ft,des"
         ),
         "{header}"
     );

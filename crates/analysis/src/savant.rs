@@ -81,6 +81,35 @@ pub struct Launched {
     pub scene: Scene,
     /// Flights flown to solve the direction (0 when it was not solved).
     pub flights: usize,
+    pub direction_from: DirectionFrom,
+}
+
+/// Where a row's launch direction came from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DirectionFrom {
+    /// Solved: the flight lands on the spray's bearing.
+    Landing,
+    /// The spray angle, taken as the launch direction ([`Spray::Launch`]).
+    Spray,
+    /// The spray angle, because no launch direction lands on it: the hit
+    /// coordinates of a grounder or a popup are where it was fielded,
+    /// which need not be anywhere a flight comes down (a chopper fielded
+    /// down the line, a popup that drifts foul).
+    SprayUnsolved(SolveError),
+    /// The scene's own (the row has no hit coordinates).
+    Scene,
+}
+
+impl DirectionFrom {
+    /// The word a batch's row gives.
+    pub fn name(self) -> &'static str {
+        match self {
+            DirectionFrom::Landing => "landing",
+            DirectionFrom::Spray => "spray",
+            DirectionFrom::SprayUnsolved(_) => "spray_unsolved",
+            DirectionFrom::Scene => "scene",
+        }
+    }
 }
 
 /// Why no launch direction lands on the spray.
@@ -98,27 +127,24 @@ pub enum SolveError {
 /// gave) with the rest of its launch: the direction from the spray as
 /// `spray` says, and the spin estimated where `row` asks, from that
 /// direction.
-pub fn launch(
-    scene: &Scene,
-    row: &RowLaunch,
-    spray: Spray,
-    options: &FlightOptions,
-) -> Result<Launched, SolveError> {
+pub fn launch(scene: &Scene, row: &RowLaunch, spray: Spray, options: &FlightOptions) -> Launched {
     let mut scene = *scene;
-    match (row.spray, spray) {
-        (Some(bearing), Spray::Landing) => {
-            let flights = solve_direction(&mut scene, row, bearing, options)?;
-            Ok(Launched { scene, flights })
-        }
+    let (flights, direction_from) = match (row.spray, spray) {
+        (Some(bearing), Spray::Landing) => solve_direction(&mut scene, row, bearing, options),
         (Some(bearing), Spray::Launch) => {
             launch_toward(&mut scene, row, bearing);
-            Ok(Launched { scene, flights: 0 })
+            (0, DirectionFrom::Spray)
         }
         (None, _) => {
             let direction = scene.batted_ball().direction;
             launch_toward(&mut scene, row, direction);
-            Ok(Launched { scene, flights: 0 })
+            (0, DirectionFrom::Scene)
         }
+    };
+    Launched {
+        scene,
+        flights,
+        direction_from,
     }
 }
 
@@ -151,19 +177,20 @@ fn launch_toward(scene: &mut Scene, row: &RowLaunch, direction: f64) {
 /// Solves for the launch direction whose flight lands on `bearing`: the
 /// secant method on miss(φ) = landing direction(φ) − bearing, from φ =
 /// bearing and a step of one miss (the landing direction moves about as the
-/// launch does). Returns the flights it took.
+/// launch does). Returns the flights it took, and where the direction came
+/// from (the spray itself where no direction lands on it).
 fn solve_direction(
     scene: &mut Scene,
     row: &RowLaunch,
     bearing: f64,
     options: &FlightOptions,
-) -> Result<usize, SolveError> {
+) -> (usize, DirectionFrom) {
     let mut solve = DirectionSolve::new(*scene, row, bearing);
     loop {
         let summary = solve.flight().fly(options);
-        if let Some(solved) = solve.flown(&summary) {
+        if let Some(ended) = solve.flown(&summary) {
             *scene = solve.scene;
-            return solved;
+            return ended;
         }
     }
 }
@@ -202,18 +229,18 @@ impl DirectionSolve {
         SceneFlight::new(&self.scene, &self.scene.batted_ball())
     }
 
-    /// Takes the outcome of [`Self::flight`]: the flights taken once the
-    /// solve has ended (or why it failed), else `None` and the next
-    /// direction to try.
-    fn flown(&mut self, summary: &FlightSummary) -> Option<Result<usize, SolveError>> {
+    /// Takes the outcome of [`Self::flight`]: the flights taken and where
+    /// the direction came from once the solve has ended, else `None` and
+    /// the next direction to try.
+    fn flown(&mut self, summary: &FlightSummary) -> Option<(usize, DirectionFrom)> {
         self.flights += 1;
         let bearing = self.bearing;
         if !summary.landed {
-            return Some(Err(SolveError::NotLanded { spray: bearing }));
+            return Some(self.unsolved(SolveError::NotLanded { spray: bearing }));
         }
         let miss = landing_direction(summary) - bearing;
         if miss.abs() < DIRECTION_TOLERANCE {
-            return Some(Ok(self.flights));
+            return Some((self.flights, DirectionFrom::Landing));
         }
         let next = match self.previous {
             None => {
@@ -231,10 +258,11 @@ impl DirectionSolve {
             }
             Some((previous, previous_miss)) => {
                 if self.flights >= MAX_FLIGHTS || miss == previous_miss {
-                    return Some(Err(SolveError::NotConverged {
+                    let error = SolveError::NotConverged {
                         spray: bearing,
                         miss,
-                    }));
+                    };
+                    return Some(self.unsolved(error));
                 }
                 self.direction - miss * (self.direction - previous) / (miss - previous_miss)
             }
@@ -243,6 +271,13 @@ impl DirectionSolve {
         self.direction = next.clamp(-MAX_DIRECTION, MAX_DIRECTION);
         launch_toward(&mut self.scene, &self.row, self.direction);
         None
+    }
+
+    /// Gives up the solve: the spray taken as the launch direction.
+    fn unsolved(&mut self, error: SolveError) -> (usize, DirectionFrom) {
+        let direction = self.bearing.clamp(-MAX_DIRECTION, MAX_DIRECTION);
+        launch_toward(&mut self.scene, &self.row, direction);
+        (self.flights, DirectionFrom::SprayUnsolved(error))
     }
 }
 
@@ -261,9 +296,9 @@ pub fn launch_many<'s>(
     rows: impl IntoIterator<Item = (&'s Scene, &'s RowLaunch)>,
     spray: Spray,
     options: &FlightOptions,
-) -> Vec<Result<Launched, SolveError>> {
+) -> Vec<Launched> {
     // Each row's launch; a row being solved has none until its solve ends.
-    let mut launched: Vec<Option<Result<Launched, SolveError>>> = Vec::new();
+    let mut launched: Vec<Option<Launched>> = Vec::new();
     let mut solving: Vec<(usize, DirectionSolve)> = Vec::new();
     for (index, (scene, row)) in rows.into_iter().enumerate() {
         match (row.spray, spray) {
@@ -272,10 +307,11 @@ pub fn launch_many<'s>(
                 launched.push(None);
             }
             // As `launch` would give it, without its copies.
-            _ if launches_as_given(scene, row) => launched.push(Some(Ok(Launched {
+            _ if launches_as_given(scene, row) => launched.push(Some(Launched {
                 scene: *scene,
                 flights: 0,
-            }))),
+                direction_from: DirectionFrom::Scene,
+            })),
             _ => launched.push(Some(launch(scene, row, spray, options))),
         }
     }
@@ -293,11 +329,12 @@ pub fn launch_many<'s>(
         solving.retain_mut(|(index, solve)| {
             let summary = flown.next().copied().flatten().expect("every flight flown");
             match solve.flown(&summary) {
-                Some(solved) => {
-                    launched[*index] = Some(solved.map(|flights| Launched {
+                Some((flights, direction_from)) => {
+                    launched[*index] = Some(Launched {
                         scene: solve.scene,
                         flights,
-                    }));
+                        direction_from,
+                    });
                     false
                 }
                 None => true,
@@ -370,7 +407,7 @@ mod tests {
                 if row.spray.is_some() && spray == Spray::Landing {
                     continue; // solved: never taken as given
                 }
-                let launched = launch(&scene, row, spray, &options).unwrap();
+                let launched = launch(&scene, row, spray, &options);
                 if launches_as_given(&scene, row) {
                     given += 1;
                     // To the bit: the scene, and no flight spent.
@@ -405,7 +442,7 @@ mod tests {
                 estimate_backspin: true,
                 estimate_sidespin: true,
             };
-            let solved = launch(&base, &row, Spray::Landing, &options).unwrap();
+            let solved = launch(&base, &row, Spray::Landing, &options);
             let ball = solved.scene.batted_ball();
             let landing = SceneFlight::new(&solved.scene, &ball)
                 .fly(&options)
@@ -419,7 +456,7 @@ mod tests {
             // where it lands, a hook right of it.
             assert_eq!(ball.direction < bearing, sidespin > 0.0, "{ball:?}");
             // Taken as the launch direction, the spray is where it leaves.
-            let taken = launch(&base, &row, Spray::Launch, &options).unwrap();
+            let taken = launch(&base, &row, Spray::Launch, &options);
             assert_eq!(taken.scene.batted_ball().direction, bearing);
         }
     }
@@ -478,12 +515,25 @@ mod tests {
             for ((scene, row), together) in rows.iter().zip(&together) {
                 let alone = launch(scene, row, spray, &options);
                 assert_eq!(&alone, together);
-                solved += alone.as_ref().map_or(0, |l| usize::from(l.flights > 1));
+                solved += usize::from(alone.flights > 1);
             }
             // The test bites: most rows solved over several flights.
             if spray == Spray::Landing {
                 assert!(solved > 20, "{solved}");
-                assert!(together.iter().any(|l| l.is_err()));
+                // Straight up never lands on its bearing's side: flown
+                // toward the spray, and said so.
+                let unsolved =
+                    |l: &&Launched| matches!(l.direction_from, DirectionFrom::SprayUnsolved(_));
+                let unsolved: Vec<&Launched> = together.iter().filter(unsolved).collect();
+                assert!(!unsolved.is_empty());
+                for launched in unsolved {
+                    let bearing = launched.scene.batted_ball().direction;
+                    let (scene, row) = rows
+                        .iter()
+                        .find(|(s, _)| s.launch.speed == launched.scene.launch.speed)
+                        .unwrap();
+                    assert_eq!(Some(bearing), row.spray, "{scene:?}");
+                }
             }
         }
     }

@@ -19,6 +19,22 @@ const RAD_PER_S_PER_RPM: f64 = TAU / 60.0;
 /// 94 rpm per degree, in (rad/s)/rad (94·(2π/60)·(180/π) = 564).
 pub const SIDESPIN_PER_DIRECTION: f64 = 94.0 * 6.0;
 
+/// The launch angles (°) over which measured spins follow the relation;
+/// outside them it is held at the nearer end. Measured on 5,344 balls of
+/// April 2018 with Trackman's spin (`../shared/data/`, docs/accuracy.md):
+/// the median spin rises as the relation does up to the 40–50° band
+/// (4,565 rpm, the relation 4,637 at 45°) and then stays flat (4,758,
+/// 4,822 and 4,685 rpm at 50–60°, 60–70° and 70–90°), where the relation
+/// would go on to 9,917 rpm at 89°: past a glancing contact the bat's
+/// friction gives no more spin. Below −10° there are no measured spins
+/// (1 ball); the relation is not extended into them.
+pub const MEASURED_ANGLES: (f64, f64) = (-10.0, 45.0);
+
+/// The launch directions (°) the relation was made for: fair territory.
+/// A ball fielded foul or behind the plate keeps the sidespin of the
+/// nearer foul line.
+pub const FAIR_DIRECTIONS: f64 = 45.0;
+
 /// The batter's side, as Statcast's `stand` gives it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Side {
@@ -47,11 +63,18 @@ impl Side {
 ///   backspin = −763 + 120·θ + 21·s·φ   rpm
 ///   sidespin =  849·s + 94·φ           rpm
 ///
-/// θ and φ in degrees. A right-handed batter's ball to straightaway centre
-/// slices toward right field (849 rpm); pulled 9° to left field it flies
-/// straight; pulled further it hooks.
+/// θ and φ in degrees, θ held within [`MEASURED_ANGLES`] and φ within
+/// [`FAIR_DIRECTIONS`]. A right-handed batter's ball to straightaway
+/// centre slices toward right field (849 rpm); pulled 9° to left field it
+/// flies straight; pulled further it hooks.
 pub fn nathan_spin(angle: f64, direction: f64, side: Option<Side>) -> (f64, f64) {
-    let (theta, phi, s) = (angle.to_degrees(), direction.to_degrees(), Side::sign(side));
+    let theta = angle
+        .to_degrees()
+        .clamp(MEASURED_ANGLES.0, MEASURED_ANGLES.1);
+    let phi = direction
+        .to_degrees()
+        .clamp(-FAIR_DIRECTIONS, FAIR_DIRECTIONS);
+    let s = Side::sign(side);
     let backspin = -763.0 + 120.0 * theta + 21.0 * s * phi;
     let sidespin = 849.0 * s + 94.0 * phi;
     (backspin * RAD_PER_S_PER_RPM, sidespin * RAD_PER_S_PER_RPM)
@@ -81,8 +104,29 @@ mod tests {
         let straight = rpm(nathan_spin(0.5, (-849.0f64 / 94.0).to_radians(), right)).1;
         assert!(straight.abs() < 1e-9);
         let (_, at_0) = nathan_spin(0.5, 0.0, right);
-        let (_, at_1) = nathan_spin(0.5, 1.0, right);
-        assert!((at_1 - at_0 - SIDESPIN_PER_DIRECTION).abs() < 1e-9);
+        let (_, at_half) = nathan_spin(0.5, 0.5, right);
+        assert!((at_half - at_0 - 0.5 * SIDESPIN_PER_DIRECTION).abs() < 1e-9);
+    }
+
+    #[test]
+    fn the_estimate_is_held_where_measured_spins_stop_following_it() {
+        let right = Some(Side::Right);
+        let at =
+            |theta: f64, phi: f64| rpm(nathan_spin(theta.to_radians(), phi.to_radians(), right));
+        // 45°: −763 + 120·45 = 4637 rpm of backspin, and no more above it
+        // (measured spins stay near 4,700 rpm up to 90°).
+        assert!(close(at(45.0, 0.0), (4637.0, 849.0)));
+        assert!(close(at(80.0, 0.0), at(45.0, 0.0)));
+        // −10°: 1963 rpm of topspin, held below (a chopper at −88° was
+        // 9,600 rpm of topspin, past any spin a batted ball has shown).
+        assert!(close(at(-10.0, 0.0), (-1963.0, 849.0)));
+        assert!(close(at(-88.0, 0.0), at(-10.0, 0.0)));
+        // A ball fielded foul keeps the foul line's sidespin: 849 + 94·45.
+        assert!(close(at(20.0, 84.0), at(20.0, 45.0)));
+        assert!(close(at(20.0, 84.0), (-763.0 + 2400.0 + 945.0, 5079.0)));
+        // The largest estimate anywhere: under the 1000 rad/s a batch takes.
+        let (back, side) = nathan_spin(1.5, 1.5, right);
+        assert!(back.hypot(side) < 800.0, "{}", back.hypot(side));
     }
 
     #[test]

@@ -208,7 +208,11 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
             let rows = piece.iter().map(|job| (&job.scene, &job.launch));
             let launched = savant::launch_many(rows, setup.spray, &options);
             piece.iter().zip(launched).map(|(job, launched)| {
-                let launched = launched.ok()?;
+                // A ball fielded where no flight comes down says nothing
+                // of the flight's length.
+                if let savant::DirectionFrom::SprayUnsolved(_) = launched.direction_from {
+                    return None;
+                }
                 launched.scene.validate().ok()?;
                 Some(Measured {
                     scene: launched.scene,

@@ -28,6 +28,7 @@ pub(super) struct RowFlight {
     pub cleared_from: usize,
     /// Flights spent solving the launch direction.
     pub flights: usize,
+    pub direction_from: savant::DirectionFrom,
 }
 
 /// What flying a piece reuses from row to row.
@@ -50,6 +51,7 @@ struct Ready<'f> {
     flight: SceneFlight,
     launch: BattedBall,
     flights: usize,
+    direction_from: savant::DirectionFrom,
     own: &'f park::Fence,
 }
 
@@ -141,6 +143,7 @@ pub(super) fn fly_chunk(
             parks_cleared: scratch.cleared[from..].iter().filter(|&&c| c).count(),
             cleared_from: from,
             flights: ready.flights,
+            direction_from: ready.direction_from,
         }));
     }
 }
@@ -190,10 +193,9 @@ fn fly_all(
 /// The row's launch, completed ([`savant::launch_many`]), checked.
 fn ready<'f>(
     job: &Job,
-    launched: Result<savant::Launched, savant::SolveError>,
+    launched: savant::Launched,
     own: &'f park::Fence,
 ) -> Result<Ready<'f>, String> {
-    let launched = launched.map_err(|e| e.to_string())?;
     // The row was validated whole when it was read; only its launch moved,
     // if it did (a spin estimated, a direction solved).
     let moved = launched.scene.launch != job.scene.launch;
@@ -215,6 +217,7 @@ fn ready<'f>(
         flight,
         launch,
         flights: launched.flights,
+        direction_from: launched.direction_from,
         own,
     })
 }

@@ -18,7 +18,7 @@ use crate::units::Quantity;
 
 /// The output's columns, in order: then [`STATCAST_COLUMNS`] when the input
 /// has Statcast's distance, then `--keep`'s.
-pub const OUTPUT_COLUMNS: [&str; 18] = [
+pub const OUTPUT_COLUMNS: [&str; 19] = [
     "line",
     "launch.speed",
     "launch.angle",
@@ -37,10 +37,11 @@ pub const OUTPUT_COLUMNS: [&str; 18] = [
     "margin",
     "parks_cleared",
     "spin_estimated",
+    "direction_from",
 ];
 
 /// What each output column measures, for its unit outside SI.
-const OUTPUT_QUANTITIES: [Quantity; 18] = [
+const OUTPUT_QUANTITIES: [Quantity; 19] = [
     Quantity::Unchanged,
     Quantity::Speed,
     Quantity::Angle,
@@ -57,6 +58,7 @@ const OUTPUT_QUANTITIES: [Quantity; 18] = [
     Quantity::Unchanged,
     Quantity::Unchanged,
     Quantity::Distance,
+    Quantity::Unchanged,
     Quantity::Unchanged,
     Quantity::Unchanged,
 ];
@@ -169,9 +171,10 @@ impl CsvLine<'_> {
         number(out, Quantity::Distance, flown.clearing.margin, 3);
         let _ = write!(
             out,
-            "{},{}",
+            "{},{},{}",
             flown.parks_cleared,
-            job.launch.estimates_spin()
+            job.launch.estimates_spin(),
+            flown.direction_from.name()
         );
         if self.statcast {
             for value in [job.statcast, difference(job, flown)] {
@@ -206,6 +209,7 @@ struct JsonLine<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     all_parks: Option<Vec<AtParkJson<'a>>>,
     clears_fence: bool,
+    direction_from: &'static str,
     fence: FenceJson<'a>,
     flight: FlightJson,
     /// The kept cells by column name: a repeated name's last cell.
@@ -325,6 +329,7 @@ pub(super) fn json_line(
                 .collect(),
         },
         spin_estimated: job.launch.estimates_spin(),
+        direction_from: flown.direction_from.name(),
         statcast: job.statcast.map(|distance| StatcastJson {
             difference: difference(job, flown),
             distance,

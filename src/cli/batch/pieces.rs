@@ -191,7 +191,8 @@ impl Piece {
             } else {
                 csv.write(&mut self.out, job, flown, judged);
             }
-            self.summary.count(job, header, flown.flights);
+            self.summary
+                .count(job, header, (flown.flights, flown.direction_from));
             self.tally.count(job, flown);
             self.flown_rows += 1;
             context.progress.tick();

@@ -3,7 +3,7 @@
 //! park, Statcast's distance), what every row shares (the parks, the
 //! command line's choices), and the one summary line said at the end.
 
-use crate::analysis::savant::{Spray, spray_angle};
+use crate::analysis::savant::{DirectionFrom, Spray, spray_angle};
 use crate::cli::UsageError;
 use crate::model::park::{self, GivenWeather};
 use crate::model::spin_estimate::Side;
@@ -245,6 +245,8 @@ pub(super) struct Summary {
     pub at_plate: usize,
     /// Flights spent solving launch directions.
     pub solve_flights: usize,
+    /// Rows whose spray no launch direction lands on, flown toward it.
+    pub unsolved: usize,
     /// Rows flown at each park (by index), and at the generic fence.
     pub at_park: Vec<usize>,
     pub at_generic: usize,
@@ -267,6 +269,7 @@ impl Summary {
         self.without_spray += other.without_spray;
         self.at_plate += other.at_plate;
         self.solve_flights += other.solve_flights;
+        self.unsolved += other.unsolved;
         for (mine, theirs) in self.at_park.iter_mut().zip(&other.at_park) {
             *mine += theirs;
         }
@@ -274,12 +277,19 @@ impl Summary {
         self.without_speed += other.without_speed;
     }
 
-    /// Counts a row flown, whose direction took `flights` to solve.
-    pub(super) fn count(&mut self, job: &Job, header: &Header, flights: usize) {
+    /// Counts a row flown, whose direction took `flights` to solve and
+    /// came `from` there.
+    pub(super) fn count(
+        &mut self,
+        job: &Job,
+        header: &Header,
+        (flights, from): (usize, DirectionFrom),
+    ) {
         self.estimated += usize::from(job.launch.estimates_spin());
         if job.launch.spray.is_some() {
             self.sprayed += 1;
             self.solve_flights += flights;
+            self.unsolved += usize::from(matches!(from, DirectionFrom::SprayUnsolved(_)));
         } else if job.spray_at_plate {
             self.at_plate += 1;
         } else if header.hit_coordinates {
@@ -315,6 +325,14 @@ impl Summary {
                     format!("spray taken as the launch direction on {} rows", self.sprayed)
                 }
             });
+        }
+        if self.unsolved > 0 {
+            parts.push(format!(
+                "{} row{} whose spray no flight lands on (a grounder or popup fielded where it \
+                 never came down) flown toward the spray (direction_from = spray_unsolved)",
+                self.unsolved,
+                if self.unsolved == 1 { "" } else { "s" }
+            ));
         }
         if self.without_spray > 0 {
             parts.push(format!(

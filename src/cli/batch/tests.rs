@@ -210,7 +210,7 @@ fn fly_line(
     let (launch, flight) = (&flown.launch, &flown.flight);
     let distance = |m: Option<f64>, d| m.map_or(String::new(), |m| number(shown, Distance, m, d));
     let mut text = format!(
-        "{line},{},{},{},{},{},{},{},{:.3},{},{},{},{},{code},{},{},{},false",
+        "{line},{},{},{},{},{},{},{},{:.3},{},{},{},{},{code},{},{},{},false,scene",
         number(shown, Speed, launch.speed, 4),
         number(shown, Angle, launch.angle, 6),
         number(shown, Spin, launch.spin, 3),
@@ -630,7 +630,7 @@ fn missing_values_units_and_compared_columns() {
     assert_eq!(rows[0][1..6], rows[1][1..6]);
     assert_eq!(rows[0][1..6], rows[3][1..6]);
     // 460 ft and 140 m in the distance column; `far` is missing.
-    assert_eq!(rows[1][18], "140.21");
-    assert_eq!(rows[2][18], "");
-    assert_eq!(rows[3][18], "140.00");
+    assert_eq!(rows[1][19], "140.21");
+    assert_eq!(rows[2][19], "");
+    assert_eq!(rows[3][19], "140.00");
 }

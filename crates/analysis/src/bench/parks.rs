@@ -53,7 +53,7 @@ pub(super) fn rows(effort: Effort) -> Vec<ParksRow> {
     let parks: Vec<&Fence> = bundled().iter().map(|p| &p.fence).collect();
     let mut all = vec![&generic];
     all.extend_from_slice(&parks);
-    let solved = savant::launch(&scene, &row, Spray::Landing, &options).expect("it lands");
+    let solved = savant::launch(&scene, &row, Spray::Landing, &options);
     let measure = |work, flights, job: &mut dyn FnMut()| {
         let (time, cpu) = time_median(effort.trajectory_batches, TRAJECTORY_BATCH, job);
         ParksRow {
@@ -73,7 +73,7 @@ pub(super) fn rows(effort: Effort) -> Vec<ParksRow> {
         measure("flight, generic fence", 1, &mut || judge(&all[..1])),
         measure("flight, generic + 30 parks", 1, &mut || judge(&all)),
         measure("spray solved, then that", solved.flights + 1, &mut || {
-            let solved = savant::launch(&scene, &row, Spray::Landing, &options).expect("it lands");
+            let solved = savant::launch(&scene, &row, Spray::Landing, &options);
             let s = solved.scene;
             std::hint::black_box(SceneFlight::new(&s, &s.batted_ball()).judge(&options, &all));
         }),
