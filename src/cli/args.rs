@@ -139,7 +139,8 @@ pub enum Command {
         #[arg(long, conflicts_with = "batch")]
         one_flight: bool,
         /// With --batch: write the closing summary (rows flown and skipped, outcomes,
-        /// the error against hit_distance_sc) on stdout after the rows, not stderr.
+        /// the error against hit_distance_sc) on stdout after the rows, not stderr,
+        /// followed by that error's medians by launch-angle band.
         #[arg(long, requires = "batch")]
         summary: bool,
         /// With --batch: copy these input columns into the output, after the

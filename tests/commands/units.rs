@@ -337,7 +337,50 @@ fn a_savant_batch_prints_its_units_and_one_summary() {
     assert!(summary[0].ends_with(" ft"), "{}", summary[0]);
     let (out, err) = run(&["fly", "--park", "BOS", "--summary", "--batch", file]);
     assert!(!err.contains("summary:"), "{err}");
-    let last = out.lines().last().unwrap();
+    let at = out.lines().position(|l| l.starts_with("summary:")).unwrap();
+    let lines: Vec<&str> = out.lines().collect();
+    let last = lines[at];
     assert!(last.starts_with("summary: flown 248 rows"), "{last}");
     assert!(last.ends_with(" m"), "{last}");
+    // Issue 26, item 4: then the error by launch-angle band, each band's
+    // median the median of its rows' `difference`.
+    assert_eq!(
+        lines[at + 1],
+        "by launch angle, model − hit_distance_sc (m):"
+    );
+    let header: Vec<&str> = lines[0].split(',').collect();
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let (angle, difference) = (column("launch.angle"), column("difference"));
+    let rows: Vec<(f64, f64)> = (lines[1..at].iter())
+        .map(|l| l.split(',').collect::<Vec<&str>>())
+        .filter(|cells| !cells[difference].is_empty())
+        .map(|cells| {
+            // The file's whole degrees, through the printed radians' 6 decimals.
+            let radians: f64 = cells[angle].parse().unwrap();
+            let degrees = (radians.to_degrees() * 1e3).round() / 1e3;
+            (degrees, cells[difference].parse().unwrap())
+        })
+        .collect();
+    // Rows and median ("-" for none) of a band's line.
+    let band = |line: &str| -> (usize, Option<f64>) {
+        let cells: Vec<&str> = line.split_whitespace().collect();
+        (
+            cells[cells.len() - 3].parse().unwrap(),
+            cells[cells.len() - 2].parse().ok(),
+        )
+    };
+    let mut in_25_to_30: Vec<f64> = (rows.iter())
+        .filter(|(a, _)| (25.0..30.0).contains(a))
+        .map(|r| r.1)
+        .collect();
+    in_25_to_30.sort_by(f64::total_cmp);
+    let n = in_25_to_30.len();
+    let median = (in_25_to_30[(n - 1) / 2] + in_25_to_30[n / 2]) / 2.0;
+    let row = lines.iter().find(|l| l.starts_with("25–30°")).unwrap();
+    assert_eq!(band(row).0, n);
+    // The table's one decimal against the rows' two.
+    assert!((band(row).1.unwrap() - median).abs() <= 0.06, "{row}: {median}");
+    let counted: usize = lines[at + 3..].iter().map(|l| band(l).0).sum();
+    assert_eq!(counted, rows.len());
+    assert_eq!(rows.len(), 245);
 }

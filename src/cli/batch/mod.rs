@@ -224,10 +224,15 @@ pub(super) fn batch(
     let skipped = outcome.failed + outcome.without_launch;
     let line = tally.line(outcome.flown, skipped, &at, shown);
     if setup.summary_to_stdout {
-        let line = if json {
-            serde_json::json!({ "summary": line }).to_string()
-        } else {
-            line
+        // On request, the error by launch-angle band too (JSON in SI).
+        let bands = !tally.differences.is_empty();
+        let line = match (json, bands) {
+            (true, true) => {
+                serde_json::json!({ "summary": line, "bands": tally.bands() }).to_string()
+            }
+            (true, false) => serde_json::json!({ "summary": line }).to_string(),
+            (false, true) => format!("{line}\n{}", tally.band_table(shown)),
+            (false, false) => line,
         };
         let _ = writeln!(sinks.out, "{line}");
         let _ = sinks.out.flush();
