@@ -174,6 +174,10 @@ pub enum Command {
         /// What Savant's spray angle is (as `fly --batch --spray`).
         #[arg(long, value_name = "WHAT", default_value = "landing")]
         spray: SprayArg,
+        /// Fit each group of rows apart, one line a group: by a column's value
+        /// (game_year, home_team, …), or `month` (game_date's year and month).
+        #[arg(long, value_name = "COLUMN", conflicts_with = "save")]
+        by: Option<String>,
         /// Save the preset with the factors found as NAME in the presets folder.
         #[arg(long, value_name = "NAME")]
         save: Option<String>,

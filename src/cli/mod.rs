@@ -121,6 +121,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         scene,
         park,
         spray,
+        by,
         save,
         force,
         json,
@@ -137,7 +138,10 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
             dir: dir.as_deref(),
             force: *force,
         });
-        let text = batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?;
+        let text = match by {
+            Some(by) => batch::calibrate::run_by(setup, file, by, *json, Shown(cli.units))?,
+            None => batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?,
+        };
         print!("{text}");
         return Ok(ExitCode::SUCCESS);
     }

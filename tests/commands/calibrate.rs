@@ -141,3 +141,60 @@ fn calibrate_fits_the_sample_and_saves_a_preset_that_lands_on_the_median() {
     assert_eq!(errors.len(), 239);
     assert!(median.abs() < 0.1, "{median}");
 }
+
+/// Issue 26, item 3: `--by` fits each group apart, and each group's fit is
+/// the fit of its rows alone (the committed sample's rows of May 2019,
+/// written to a file of their own, give the same factor to the digit).
+#[test]
+fn calibrate_by_month_fits_each_month_as_its_rows_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = "tests/data/savant_home_runs.csv";
+    let (status, out, err) = homerun(dir.path(), &["calibrate", file, "--by", "month", "--json"]);
+    assert_eq!(status, Some(0), "{err}");
+    let value: Value = serde_json::from_str(&out).unwrap();
+    let groups = value["groups"].as_array().unwrap();
+    let names: Vec<&str> = groups
+        .iter()
+        .map(|g| g["group"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        ["2019-03", "2019-04", "2019-05", "2019-06", "2019-07"]
+    );
+    let rows: u64 = groups.iter().map(|g| g["rows"].as_u64().unwrap()).sum();
+    assert_eq!(rows, value["measured"].as_u64().unwrap());
+    assert_eq!(rows, 239);
+    // March's 7 rows are too few to fit: named, not fitted.
+    assert!(groups[0]["fit"].is_null());
+    // May alone.
+    let text = std::fs::read_to_string(file).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    // Each row opens with its quoted game_date.
+    assert!(header.starts_with("\"game_date\""), "{header}");
+    let may: Vec<&str> = lines.filter(|l| l.starts_with("\"2019-05-")).collect();
+    assert_eq!(may.len(), 67);
+    let alone = dir.path().join("may.csv");
+    std::fs::write(&alone, format!("{header}\n{}\n", may.join("\n"))).unwrap();
+    let (status, out, err) = homerun(
+        dir.path(),
+        &["calibrate", alone.to_str().unwrap(), "--json"],
+    );
+    assert_eq!(status, Some(0), "{err}");
+    let alone: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(groups[2]["fit"]["drag_scale"], alone["fit"]["drag_scale"]);
+    assert_eq!(groups[2]["rows"], alone["measured"]);
+    // --by with --save is refused: a group's factor is no preset's.
+    let (status, _, err) = homerun(
+        dir.path(),
+        &["calibrate", file, "--by", "month", "--save", "x"],
+    );
+    assert_eq!(status, Some(2), "{err}");
+    // A column the file lacks is named.
+    let (status, _, err) = homerun(dir.path(), &["calibrate", file, "--by", "nope"]);
+    assert_eq!(status, Some(2), "{err}");
+    assert!(
+        err.contains("--by nope: no column of that name in the header"),
+        "{err}"
+    );
+}

@@ -379,7 +379,10 @@ fn a_savant_batch_prints_its_units_and_one_summary() {
     let row = lines.iter().find(|l| l.starts_with("25–30°")).unwrap();
     assert_eq!(band(row).0, n);
     // The table's one decimal against the rows' two.
-    assert!((band(row).1.unwrap() - median).abs() <= 0.06, "{row}: {median}");
+    assert!(
+        (band(row).1.unwrap() - median).abs() <= 0.06,
+        "{row}: {median}"
+    );
     let counted: usize = lines[at + 3..].iter().map(|l| band(l).0).sum();
     assert_eq!(counted, rows.len());
     assert_eq!(rows.len(), 245);

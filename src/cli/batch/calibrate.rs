@@ -25,8 +25,13 @@ use crate::units::Quantity;
 /// What was read: the measured rows, and the others counted.
 struct Read {
     measured: Vec<Measured>,
+    /// Each measured row's group (`--by`'s cell; empty without `--by`).
+    groups: Vec<String>,
     rows: usize,
     without_distance: usize,
+    /// Rows launched below [`LOWEST_FLIGHT`]: a grounder's distance is
+    /// where it was fielded, not where a flight came down.
+    grounders: usize,
     /// Rows with a measurement outside its plausible range, left out (each
     /// named on stderr).
     implausible: usize,
@@ -46,6 +51,16 @@ pub(in crate::cli) struct Save<'a> {
 
 /// The most rows named one by one as implausible; the rest are counted.
 const NAMED_IMPLAUSIBLE: usize = 20;
+
+/// The lowest launch angle (rad) whose distance is a flight's: 10°, where
+/// Statcast's own bands put the line drive (below it the ball bounces
+/// before anyone fields it, and `hit_distance_sc` is where it was fielded).
+/// A whole export, grounders and all, then calibrates as its balls in the
+/// air do.
+const LOWEST_FLIGHT: f64 = 10.0 * std::f64::consts::PI / 180.0;
+
+/// Groups with fewer rows are named, not fitted.
+const FEWEST_IN_GROUP: usize = 10;
 
 /// Runs `calibrate` on `source` ("-" for stdin): the text (or JSON) to print.
 pub(in crate::cli) fn run(
@@ -77,6 +92,7 @@ pub(in crate::cli) fn run(
     .map_err(failed)?;
     let options = Purpose::Readout.flight_options();
     let fit = calibrate::fit(&read.measured, &options).map_err(|e| failed(e.to_string()))?;
+
     let at_bounds: Vec<String> = fit
         .at_bounds()
         .iter()
@@ -129,6 +145,7 @@ pub(in crate::cli) fn run(
             "rows": read.rows,
             "measured": read.measured.len(),
             "without_distance": read.without_distance,
+            "grounders": read.grounders,
             "implausible": read.implausible,
             "without_spray": read.without_spray,
             "skipped": read.skipped,
@@ -143,14 +160,98 @@ pub(in crate::cli) fn run(
     Ok(text(&read, &fit, &at_bounds, saved.as_deref(), shown))
 }
 
+/// `calibrate --by COLUMN`: the fit of each group of rows apart (by the
+/// column's cell, or `month`: game_date's year and month), one line a
+/// group, in the groups' order.
+pub(in crate::cli) fn run_by(
+    mut setup: Setup,
+    source: &str,
+    by: &str,
+    json: bool,
+    shown: Shown,
+) -> Result<String, UsageError> {
+    let failed = |message: String| UsageError::Calibrate {
+        input: escape_cut(source, 200),
+        message,
+    };
+    let month = by == "month";
+    setup.keep = vec![if month { "game_date" } else { by }.to_owned()];
+    let read = if source == "-" {
+        read(&setup, io::stdin().lock())
+    } else {
+        let file = std::fs::File::open(source).map_err(|e| failed(e.to_string()))?;
+        read(&setup, io::BufReader::with_capacity(MAX_RECORD_BYTES, file))
+    }
+    .map_err(|e| failed(e.replace("--keep", "--by")))?;
+    let mut groups: std::collections::BTreeMap<String, Vec<Measured>> = Default::default();
+    for (measured, cell) in read.measured.iter().zip(&read.groups) {
+        // Savant's dates are YYYY-MM-DD.
+        let key = match month {
+            true => cell.chars().take(7).collect(),
+            false => cell.clone(),
+        };
+        groups.entry(key).or_default().push(*measured);
+    }
+    let options = Purpose::Readout.flight_options();
+    let d = |m: f64| shown.value(Quantity::Distance, m, 1);
+    let mut lines = Vec::new();
+    let mut fits = Vec::new();
+    for (group, measured) in &groups {
+        let name = escape_cut(if group.is_empty() { "(empty)" } else { group }, 24);
+        if measured.len() < FEWEST_IN_GROUP {
+            lines.push(format!(
+                "{name:<12} {:>6} rows: too few to fit",
+                measured.len()
+            ));
+            fits.push(serde_json::json!({ "group": group, "rows": measured.len() }));
+            continue;
+        }
+        let fit = calibrate::fit(measured, &options).map_err(|e| failed(format!("{name}: {e}")))?;
+        let lift = fit.lift_scale.map_or(String::new(), |l| {
+            format!("  model.lift_scale = {:.4} ± {:.4}", l.value, l.uncertainty)
+        });
+        let signed = |m: f64| format!("{}{}", if m >= 0.0 { "+" } else { "-" }, d(m.abs()));
+        lines.push(format!(
+            "{name:<12} {:>6} rows  model.drag_scale = {:.4} ± {:.4}{lift}  median {} → {}, median |error| {} → {}{}",
+            fit.after.rows,
+            fit.drag_scale.value,
+            fit.drag_scale.uncertainty,
+            signed(fit.before.median),
+            signed(fit.after.median),
+            d(fit.before.median_absolute),
+            d(fit.after.median_absolute),
+            if fit.at_bounds().is_empty() { "" } else { "  (at a bound)" }
+        ));
+        fits.push(serde_json::json!({ "group": group, "rows": measured.len(), "fit": fit }));
+    }
+    if json {
+        let value = serde_json::json!({ "by": by, "groups": fits, "rows": read.rows,
+            "measured": read.measured.len(), "grounders": read.grounders });
+        return Ok(super::super::pretty(&value));
+    }
+    let mut text = format!(
+        "by {}: {} groups, {} of {} rows measured (launched at 10° or more, with a distance and hit coordinates)\n",
+        escape_cut(by, 40),
+        groups.len(),
+        read.measured.len(),
+        read.rows
+    );
+    for line in lines {
+        text += &line;
+        text.push('\n');
+    }
+    Ok(text)
+}
+
 /// Reads every row into a measured flight, the launches completed in
 /// parallel.
 fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
     let mut records = Records::new(input);
-    let header = match super::read_header(&mut records)? {
+    let mut header = match super::read_header(&mut records)? {
         Some(names) => Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?,
         None => return Err("the input is empty".to_owned()),
     };
+    header.keep(&setup.keep)?;
     let mut jobs = Vec::new();
     let mut skipped = 0;
     let mut rows = 0;
@@ -176,15 +277,20 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
     }
     let options = Purpose::Solve.flight_options();
     let sprayed = header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY);
-    let without_spray = jobs
-        .iter()
-        .filter(|j| sprayed && j.statcast.is_some() && j.launch.spray.is_none())
-        .count();
+
     // Launched as `fly --batch` launches them: a piece's solves together.
     let mut implausible = 0;
+    let flies = |job: &&Job| job.scene.batted_ball().angle >= LOWEST_FLIGHT;
+    let grounders = (jobs.iter())
+        .filter(|job| job.statcast.is_some() && !flies(job))
+        .count();
+    let without_spray = (jobs.iter())
+        .filter(|j| sprayed && j.statcast.is_some() && j.launch.spray.is_none() && flies(j))
+        .count();
     let wanted: Vec<&Job> = jobs
         .iter()
         .filter(|job| (!sprayed || job.launch.spray.is_some()) && job.statcast.is_some())
+        .filter(flies)
         .filter(|job| match plausible(job) {
             Ok(()) => true,
             Err(why) => {
@@ -202,7 +308,7 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
             implausible - NAMED_IMPLAUSIBLE
         );
     }
-    let launched: Vec<Option<Measured>> = wanted
+    let launched: Vec<Option<(Measured, String)>> = wanted
         .par_chunks(PIECE_ROWS)
         .flat_map_iter(|piece| {
             let rows = piece.iter().map(|job| (&job.scene, &job.launch));
@@ -214,22 +320,26 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
                     return None;
                 }
                 launched.scene.validate().ok()?;
-                Some(Measured {
+                let measured = Measured {
                     scene: launched.scene,
                     distance: job.statcast?,
                     hang_time: job.hang_time,
                     apex: job.apex,
-                })
+                };
+                Some((measured, job.kept.first().cloned().unwrap_or_default()))
             })
         })
         .collect();
     let without_distance = jobs.iter().filter(|j| j.statcast.is_none()).count();
-    let measured: Vec<Measured> = launched.into_iter().flatten().collect();
-    skipped += jobs.len() - without_distance - without_spray - implausible - measured.len();
+    let (measured, groups): (Vec<Measured>, Vec<String>) = launched.into_iter().flatten().unzip();
+    skipped +=
+        jobs.len() - without_distance - grounders - without_spray - implausible - measured.len();
     Ok(Read {
         measured,
+        groups,
         rows,
         without_distance,
+        grounders,
         implausible,
         without_spray,
         skipped,
@@ -294,10 +404,11 @@ fn text(
         (
             "rows",
             format!(
-                "{} of {} read: {} without a distance, {} without hit coordinates, {}{} skipped",
+                "{} of {} read: {} without a distance, {} launched below 10° (a grounder's distance is where it was fielded), {} without hit coordinates, {}{} skipped",
                 read.measured.len(),
                 read.rows,
                 read.without_distance,
+                read.grounders,
                 read.without_spray,
                 if read.implausible > 0 {
                     format!("{} outside the plausible ranges, ", read.implausible)
