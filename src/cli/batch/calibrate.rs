@@ -83,13 +83,7 @@ pub(in crate::cli) fn run(
     {
         crate::preset::check_save(name, dir, *force)?;
     }
-    let read = if source == "-" {
-        read(setup, io::stdin().lock())
-    } else {
-        let file = std::fs::File::open(source).map_err(|e| failed(e.to_string()))?;
-        read(setup, io::BufReader::with_capacity(MAX_RECORD_BYTES, file))
-    }
-    .map_err(failed)?;
+    let read = read_source(setup, source).map_err(failed)?;
     let options = Purpose::Readout.flight_options();
     let fit = calibrate::fit(&read.measured, &options).map_err(|e| failed(e.to_string()))?;
 
@@ -176,13 +170,7 @@ pub(in crate::cli) fn run_by(
     };
     let month = by == "month";
     setup.keep = vec![if month { "game_date" } else { by }.to_owned()];
-    let read = if source == "-" {
-        read(&setup, io::stdin().lock())
-    } else {
-        let file = std::fs::File::open(source).map_err(|e| failed(e.to_string()))?;
-        read(&setup, io::BufReader::with_capacity(MAX_RECORD_BYTES, file))
-    }
-    .map_err(|e| failed(e.replace("--keep", "--by")))?;
+    let read = read_source(&setup, source).map_err(|e| failed(e.replace("--keep", "--by")))?;
     let mut groups: std::collections::BTreeMap<String, Vec<Measured>> = Default::default();
     for (measured, cell) in read.measured.iter().zip(&read.groups) {
         // Savant's dates are YYYY-MM-DD.
@@ -241,6 +229,16 @@ pub(in crate::cli) fn run_by(
         text.push('\n');
     }
     Ok(text)
+}
+
+/// [`read`] from `source`: a file, or stdin for "-".
+fn read_source(setup: &Setup, source: &str) -> Result<Read, String> {
+    if source == "-" {
+        read(setup, io::stdin().lock())
+    } else {
+        let file = std::fs::File::open(source).map_err(|e| e.to_string())?;
+        read(setup, io::BufReader::with_capacity(MAX_RECORD_BYTES, file))
+    }
 }
 
 /// Reads every row into a measured flight, the launches completed in
