@@ -5,7 +5,6 @@
 mod batch;
 mod bench;
 mod figure;
-mod figure_units;
 mod fly;
 mod ground;
 mod hit;
