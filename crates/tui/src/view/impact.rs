@@ -188,9 +188,7 @@ pub(super) fn phase_chart(
         .fold((0.0f64, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
     // The axis runs on to a tick at or past p_f, so that p_f lies inside
     // its labels (12.3 on an axis labelled to 14, not past its 10).
-    // Its labels share their row with its title.
-    let title = P_AXIS.chars().count() as u16;
-    let x = Ticks::across_past(0.0, pf, chart_area.width.saturating_sub(6 + title));
+    let x = Ticks::across_past(0.0, pf, chart_area.width.saturating_sub(6));
     let pad = 0.05 * (hi - lo);
     let y = Ticks::up(lo - pad, hi + pad, chart_area.height.saturating_sub(2));
     let vertical = |p: f64| [(p, y.lo), (p, y.hi)];

@@ -14,8 +14,8 @@ use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Chart, Paragraph};
 
-use super::chart;
 use super::impact::{Curve, impulse_line, named, phase_chart};
+use super::{chart, words};
 use crate::app::App;
 use crate::layout::CELL_ASPECT;
 use model::impact::{Collision, Impact3d, Regime, Stop};
@@ -33,8 +33,45 @@ pub fn draw(
 ) {
     let speed = app.unit(Quantity::Speed);
     let spin = app.unit(Quantity::Spin);
+    let (across, normal, along) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
+    let s = impact.at(stop.impulse);
+    let value = |v: f64| Span::raw(format!("{:+.2}  ", speed.show(v)));
+    let v = s.ball_velocity;
+    let lines: Vec<Line> = [
+        impulse_line(app, impact, stop),
+        Line::from(vec![
+            Span::styled(format!("{}v1 ", named(app, across.1)), app.theme.slip),
+            value(s.slip.x),
+            Span::styled(format!("{}v2 ", named(app, along.1)), app.theme.slip_along),
+            value(s.slip.y),
+            Span::styled(format!("{}v3 ", named(app, normal.1)), app.theme.approach),
+            Span::raw(format!(
+                "{:+.2} {}",
+                speed.show(s.normal_velocity),
+                speed.symbol
+            )),
+        ]),
+        turn_line(app, spatial, stop.impulse, inner.width),
+        Line::from(vec![
+            Span::styled("ball ", app.theme.dim),
+            Span::raw(format!(
+                "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {:.1} {}",
+                speed.show(v.x),
+                speed.show(v.y),
+                speed.show(v.z),
+                speed.symbol,
+                spin.show(s.ball_spin.norm()),
+                spin.symbol
+            )),
+        ]),
+    ]
+    .iter()
+    // Each line wrapped at words, never cut: up to two rows each.
+    .flat_map(|l| words::fit(&l.spans, inner.width as usize, 2))
+    .collect();
     let [charts, text_area] =
-        Layout::vertical([Constraint::Fill(1), Constraint::Length(4)]).areas(inner);
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(lines.len() as u16)])
+            .areas(inner);
     // The slip plane beside the chart, about as wide as tall in true
     // proportion, and never more than two fifths of the pane.
     let plane_width = (charts.width * 2 / 5).min(CELL_ASPECT as u16 * charts.height + 2);
@@ -45,7 +82,6 @@ pub fn draw(
         Constraint::Length(if shows_plane { plane_width } else { 0 }),
     ])
     .areas(charts);
-    let (across, normal, along) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
     let curves = [
         Curve {
             name: "v1",
@@ -71,37 +107,6 @@ pub fn draw(
         slip_plane(frame, plane_area, app, spatial, stop.impulse);
     }
 
-    let s = impact.at(stop.impulse);
-    let value = |v: f64| Span::raw(format!("{:+.2}  ", speed.show(v)));
-    let v = s.ball_velocity;
-    let lines = vec![
-        impulse_line(app, impact, stop),
-        Line::from(vec![
-            Span::styled(format!("{}v1 ", named(app, across.1)), app.theme.slip),
-            value(s.slip.x),
-            Span::styled(format!("{}v2 ", named(app, along.1)), app.theme.slip_along),
-            value(s.slip.y),
-            Span::styled(format!("{}v3 ", named(app, normal.1)), app.theme.approach),
-            Span::raw(format!(
-                "{:+.2} {}",
-                speed.show(s.normal_velocity),
-                speed.symbol
-            )),
-        ]),
-        turn_line(app, spatial, stop.impulse, text_area.width),
-        Line::from(vec![
-            Span::styled("ball ", app.theme.dim),
-            Span::raw(format!(
-                "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {:.1} {}",
-                speed.show(v.x),
-                speed.show(v.y),
-                speed.show(v.z),
-                speed.symbol,
-                spin.show(s.ball_spin.norm()),
-                spin.symbol
-            )),
-        ]),
-    ];
     frame.render_widget(Paragraph::new(lines), text_area);
 }
 
