@@ -4,13 +4,13 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::figure_units as units;
 use super::hit::environment_json;
 use super::progress::{self, Work};
 use super::shown::Shown;
 use super::surface::{render_surface, surface_json};
 use super::table::{Align, Cell, Column, Digits, Table, Width, trim_lines};
 use super::{Format, SceneArgs, UsageError, pretty};
+use crate::analysis::figures::shown as units;
 use crate::analysis::figures::{self, Figure, FigureData, SurfaceFigure};
 use crate::analysis::paper;
 use crate::units::Quantity;
@@ -53,16 +53,16 @@ pub(super) fn figure(
     } else {
         shown
     };
-    let conditions = units::conditions(&preset.name, &preset.scene, shown);
+    let conditions = units::conditions(&preset.name, &preset.scene, shown.0);
     Ok(match figure {
         Figure::Table(data) => {
-            let data = units::converted(data, shown);
+            let data = units::converted(data, shown.0);
             render(&FigureData { conditions, ..data }, format, environment)
         }
         Figure::Surface(surface) => render_figure7(
             &SurfaceFigure {
                 conditions,
-                title: units::title(&surface.title, shown),
+                title: units::title(&surface.title, shown.0),
                 ..surface
             },
             format,
@@ -80,17 +80,17 @@ fn figure_svg(
     name: &str,
     shown: Shown,
 ) -> Result<String, UsageError> {
-    let conditions = units::conditions(name, scene, shown);
+    let conditions = units::conditions(name, scene, shown.0);
     Ok(match figure {
         Figure::Table(data) => {
-            let now = units::now(&data, scene, shown);
-            let data = units::converted(data, shown);
+            let now = units::now(&data, scene, shown.0);
+            let data = units::converted(data, shown.0);
             crate::picture::table_figure_svg_now(&FigureData { conditions, ..data }, now, name)?
         }
         Figure::Surface(surface) => {
             let surface = SurfaceFigure {
                 conditions,
-                title: units::title(&surface.title, shown),
+                title: units::title(&surface.title, shown.0),
                 ..surface
             };
             crate::picture::surface_svg_in(

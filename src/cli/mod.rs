@@ -6,7 +6,6 @@ mod args;
 mod batch;
 mod bench;
 mod figure;
-mod figure_units;
 mod fly;
 mod ground;
 mod hit;

@@ -170,17 +170,9 @@ fn spaced(symbol: &str) -> String {
     }
 }
 
-/// A converted value, short: at most three decimals, no trailing zeros
-/// (223.694, 90, -58).
-pub fn short(value: f64) -> String {
-    let text = format!("{value:.3}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".to_owned()
-    } else {
-        text.to_owned()
-    }
-}
+// A converted value, short: at most three decimals, no trailing zeros
+// (223.694, 90, -58); the figures write theirs so too.
+pub use crate::analysis::figures::short;
 
 #[cfg(test)]
 mod tests {

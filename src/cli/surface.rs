@@ -208,7 +208,7 @@ pub(super) fn surface_svg(
     let picture = SurfacePicture {
         surface: &surface,
         title: format!("Range over (E, ψ) — preset {}", preset.name),
-        conditions: super::figure_units::conditions(&preset.name, scene, shown)
+        conditions: crate::analysis::figures::shown::conditions(&preset.name, scene, shown.0)
             .split_once(": ")
             .map_or(String::new(), |(_, rest)| rest.to_owned()),
         now: Some((scene.bat.undercut, scene.bat.swing_angle)),

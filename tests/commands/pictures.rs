@@ -625,3 +625,50 @@ fn explorer_x_on_the_field_writes_both_views_with_every_ground_sample() {
     // The track leaves toward left field.
     assert!(app.ground.last().unwrap().1 < -30.0);
 }
+
+#[test]
+fn explorer_x_in_an_imperial_scene_draws_in_its_units() {
+    use ratatui::crossterm::event::KeyCode;
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = tui_support::app(80, 24, None);
+    app.set_units(homerun::units::UnitSystem::Imperial);
+    tui_support::settle(&mut app);
+    let svg = |app: &homerun::tui::app::App| {
+        let path = app.export_to(dir.path()).unwrap();
+        texts(&std::fs::read_to_string(path).unwrap())
+    };
+    // The trajectory (tab 1): the fastball's 134.70 m is 441.93 ft.
+    let trajectory = svg(&app);
+    for label in ["y (ft)", "x (ft)", "range 441.93 ft"] {
+        assert!(trajectory.contains(label), "{label}: {trajectory}");
+    }
+    assert!(!trajectory.contains("(m)"), "{trajectory}");
+    // The range surface (tab 2): E in inches, ψ in degrees, ranges in ft.
+    tui_support::key(&mut app, KeyCode::Char('2'));
+    tui_support::settle(&mut app);
+    let surface = svg(&app);
+    for label in ["undercut E (in)", "swing angle ψ (°)", "range (ft)"] {
+        assert!(surface.contains(label), "{label}: {surface}");
+    }
+    assert!(!surface.contains("(mm)"), "{surface}");
+    // The figure (tab 4, Fig. 8): its axes, title and conditions in mph,
+    // in, ft (the paper's stated numbers keep their SI words).
+    tui_support::key(&mut app, KeyCode::Char('4'));
+    tui_support::settle(&mut app);
+    let figure = svg(&app);
+    for label in ["range (ft)", "(mph)", "bat 67.108 mph"] {
+        assert!(figure.contains(label), "{label}: {figure}");
+    }
+    assert!(
+        !figure.contains("range (m)") && !figure.contains("bat 30 m/s"),
+        "{figure}"
+    );
+    // Back in SI, SI again.
+    app.set_units(homerun::units::UnitSystem::Si);
+    tui_support::settle(&mut app);
+    let si = svg(&app);
+    assert!(
+        si.contains("range (m)") && si.contains("bat 30 m/s"),
+        "{si}"
+    );
+}

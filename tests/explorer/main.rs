@@ -4,6 +4,7 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+mod tui_fit;
 mod tui_output;
 mod tui_parks;
 mod tui_polish;

@@ -24,17 +24,6 @@ fn themed(theme: Theme, w: u16, h: u16) -> App {
     )
 }
 
-/// `m` until the chosen park is `code`.
-fn pick(app: &mut App, code: &str) {
-    for _ in 0..=park::bundled().len() {
-        if app.chosen_park().is_some_and(|p| p.code == code) {
-            return;
-        }
-        key(app, KeyCode::Char('m'));
-    }
-    panic!("no park {code}");
-}
-
 #[test]
 fn c_shows_the_margin_over_the_wall_and_c_again_the_range() {
     let mut app = app(80, 24, None);

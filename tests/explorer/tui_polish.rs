@@ -44,12 +44,16 @@ fn figure_captions_and_notes_are_never_cut_mid_word() {
             let pane = layout(app.size, app.tab, true).figure.unwrap();
             let rows = rows_in(&app, pane);
             // The caption: the rows above the chart; the notes: those under
-            // its x labels (the row after the axis' corner).
+            // its x labels (the row after the axis' corner) and the axis'
+            // title where it has a row of its own ("bat.speed (m/s)").
             let caption = rows
                 .iter()
                 .take_while(|r| !r.contains('│') && !r.contains('━'));
             let corner = rows.iter().rposition(|r| r.contains('└')).unwrap();
-            let notes = rows[corner + 2..].iter();
+            let axis_title = |r: &&String| {
+                r.split_whitespace().count() == 2 && r.contains(" (") && r.ends_with(')')
+            };
+            let notes = rows[corner + 2..].iter().skip_while(axis_title);
             let mut shown = 0;
             for row in caption.chain(notes) {
                 for word in row.trim_end_matches('…').split_whitespace() {
@@ -191,12 +195,13 @@ fn fig_13_names_its_points_a_and_b_and_p_c_is_named_in_a_colour_that_reads_on_bl
 }
 
 #[test]
-fn the_trajectory_is_stretched_at_most_twice_as_the_svg_is() {
+fn the_trajectory_fills_its_pane_at_every_size() {
     // The fly ball: 28°, 143 m long and 34 m high. Measured on screen: the
-    // rows from the ground to the apex against the columns from the plate
-    // to the landing, a row being CELL_ASPECT columns tall.
-    use homerun::tui::layout::CELL_ASPECT;
-    for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+    // rows from the ground to the apex against those from the ground to the
+    // graph's top, the columns from the plate to the landing against those
+    // to the x axis' end. (At equal scales, 200×60 drew a 34 m apex under a
+    // 90 m axis: 38 % of the height.)
+    for (w, h) in [(80, 24), (120, 40), (160, 48), (200, 60)] {
         let mut app = app_on("fly-ball", w, h, None);
         settle(&mut app);
         let pane = layout(app.size, app.tab, false).trajectory.unwrap();
@@ -217,14 +222,29 @@ fn the_trajectory_is_stretched_at_most_twice_as_the_svg_is() {
             .min()
             .unwrap();
         let &(corner_x, ground) = cells.iter().find(|&&c| at(c) == "└").unwrap();
+        let axis_end = (corner_x..pane.right())
+            .take_while(|&x| at((x, ground)) == "─" || x == corner_x)
+            .last()
+            .unwrap();
         let &(landing, _) = cells.iter().find(|&&c| at(c) == "█").unwrap();
-        let flight = app.flown.flight;
-        let rows = f64::from(ground - top);
-        let columns = f64::from(landing - corner_x);
-        let stretch = (rows * CELL_ASPECT / flight.apex) / (columns / flight.range);
+        let height = f64::from(ground - top) / f64::from(ground - (pane.y + 1));
+        let length = f64::from(landing - corner_x) / f64::from(axis_end - corner_x);
         assert!(
-            stretch < 2.3,
-            "{w}×{h}: {stretch:.2}× ({rows} rows, {columns} columns)"
+            height > 0.8 && length > 0.9,
+            "{w}×{h}: the apex at {height:.2} of the height, the landing at {length:.2} of the length"
+        );
+        // The height axis is labelled to the apex or past it.
+        let labels: Vec<f64> = (pane.y + 1..ground)
+            .filter_map(|y| {
+                let row: String = (pane.x + 1..corner_x).map(|x| at((x, y))).collect();
+                row.trim().parse().ok()
+            })
+            .collect();
+        let highest = labels.iter().copied().fold(0.0, f64::max);
+        assert!(
+            highest > 0.75 * app.flown.flight.apex,
+            "{w}×{h}: {labels:?} for an apex of {:.1} m",
+            app.flown.flight.apex
         );
     }
 }

@@ -271,6 +271,10 @@ fn impact_of_a_3d_swing() {
             screen.contains("slip 37.1° (26.3° → 74.3°, sticks)"),
             "{screen}"
         );
+        // The ball's line wraps at a word: its spin's unit whole (at 80×24
+        // it was cut "447.1 rad/").
+        assert!(screen.contains("rad/s ") || screen.contains("rad/s\n"));
+        assert!(!screen.contains("rad/│"), "{screen}");
         insta::assert_snapshot!(format!("impact3d_{w}x{h}"), screen);
     }
 }

@@ -124,3 +124,14 @@ pub fn rows_in(app: &App, area: Rect) -> Vec<String> {
         })
         .collect()
 }
+
+/// `m` until the chosen park is `code`.
+pub fn pick(app: &mut App, code: &str) {
+    for _ in 0..=homerun::model::park::bundled().len() {
+        if app.chosen_park().is_some_and(|p| p.code == code) {
+            return;
+        }
+        key(app, KeyCode::Char('m'));
+    }
+    panic!("no park {code}");
+}

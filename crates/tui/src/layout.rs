@@ -227,54 +227,62 @@ fn medium_layout(panes: &mut Panes, right: Rect, tab: Tab, swing: bool) {
     }
 }
 
-/// Everything at once: the inputs over the readout at the left; the
-/// trajectory, the field and the figure over the range surface and impact.
+/// A field's width over its height in cells, about: fair territory out to
+/// a fence the same all round is 1.4 times as wide as it is deep, a cell
+/// twice as tall as wide, and a park's nearer foul poles make it narrower.
+const FIELD_ASPECT: f64 = 2.6;
+
+/// The field's pane width for a row of panes `height` tall: the field at
+/// equal scales fills it (at most half of `width`).
+fn field_width(height: u16, width: u16) -> u16 {
+    let inner = f64::from(height.saturating_sub(2));
+    ((2.0 + FIELD_ASPECT * inner).round() as u16).min(width / 2)
+}
+
+/// Everything at once: the inputs over the readout at the left; along the
+/// top the trajectory beside the field from above (each pane about the
+/// shape of what it draws: a flight is long and low, a field twice as wide
+/// as deep in cells), and under them the range surface, the impact and the
+/// figure; a batted ball's figure under its flight.
 fn big_layout(body: Rect, status: Rect, swing: bool) -> Panes {
     let [left, right] =
         Layout::horizontal([Constraint::Length(BIG_INPUTS_WIDTH), Constraint::Fill(1)]).areas(body);
     let inputs_height = inputs_height().min(body.height.saturating_sub(BIG_READOUT_MIN));
     let [inputs, readout] =
         Layout::vertical([Constraint::Length(inputs_height), Constraint::Fill(1)]).areas(left);
-    if !swing {
-        // A batted ball: the trajectory and the field over the aero figure.
-        let [top, figure] =
-            Layout::vertical([Constraint::Percentage(55), Constraint::Fill(1)]).areas(right);
-        let [trajectory, field] =
-            Layout::horizontal([Constraint::Percentage(55), Constraint::Fill(1)]).areas(top);
-        return Panes {
-            inputs,
-            tabs: None,
-            trajectory: Some(trajectory),
-            readout: Some(readout),
-            heatmap: None,
-            impact: None,
-            figure: Some(figure),
-            field: Some(field),
-            status,
-        };
-    }
-    // The side and top views beside the figure, over the swing's views.
-    let [top, bottom] =
-        Layout::vertical([Constraint::Percentage(50), Constraint::Fill(1)]).areas(right);
-    let [trajectory, field, figure] = Layout::horizontal([
-        Constraint::Percentage(38),
-        Constraint::Percentage(28),
+    let [top, bottom] = Layout::vertical([
+        Constraint::Percentage(if swing { 42 } else { 45 }),
         Constraint::Fill(1),
     ])
+    .areas(right);
+    let [trajectory, field] = Layout::horizontal([
+        Constraint::Fill(1),
+        Constraint::Length(field_width(top.height, top.width)),
+    ])
     .areas(top);
-    let [heatmap, impact] =
-        Layout::horizontal([Constraint::Percentage(50), Constraint::Fill(1)]).areas(bottom);
-    Panes {
+    let mut panes = Panes {
         inputs,
         tabs: None,
         trajectory: Some(trajectory),
         readout: Some(readout),
-        heatmap: Some(heatmap),
-        impact: Some(impact),
-        figure: Some(figure),
         field: Some(field),
         status,
+        ..Panes::default()
+    };
+    if !swing {
+        panes.figure = Some(bottom);
+        return panes;
     }
+    let [heatmap, impact, figure] = Layout::horizontal([
+        Constraint::Ratio(1, 3),
+        Constraint::Ratio(1, 3),
+        Constraint::Ratio(1, 3),
+    ])
+    .areas(bottom);
+    panes.heatmap = Some(heatmap);
+    panes.impact = Some(impact);
+    panes.figure = Some(figure);
+    panes
 }
 
 /// Trajectory samples for a screen: two per braille column of the plot.

@@ -10,6 +10,7 @@ pub mod curves;
 mod flight;
 mod impact;
 mod optimum;
+pub mod shown;
 
 use crate::optimum::Optimum;
 use crate::paper::{FIGURES, Stated};
@@ -212,6 +213,18 @@ pub fn conditions(name: &str, s: &Scene) -> String {
         s.drag,
         s.lift
     )
+}
+
+/// A value to three decimals, without trailing zeros nor a "-0": "1.5",
+/// "223.694", "0".
+pub fn short(value: f64) -> String {
+    let text = format!("{value:.3}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".to_owned()
+    } else {
+        text.to_owned()
+    }
 }
 
 /// A value to six decimals, without trailing zeros.

@@ -2,13 +2,16 @@
 //! folder (`homerun-trajectory-1.svg`, `-2`, …; never over an existing
 //! file), with where it went, or why not, in the status line (the screen's
 //! full width, where a path fits best; until the next key). The trajectory
-//! (from the side and from above) for tabs 1, 3 and 5, the range surface for tab 2, the figure for tab 4. A
-//! write of ~50 KB is done at once, on the UI thread.
+//! (from the side and from above) for tabs 1, 3 and 5, the range surface
+//! for tab 2, the figure for tab 4, each in the units shown (as the command
+//! line's `--units` draws them). A write of ~50 KB is done at once, on the
+//! UI thread.
 
 use std::path::{Path, PathBuf};
 
 use super::App;
 use crate::layout::Tab;
+use analysis::figures::{FigureData, shown};
 use picture::{self, FlightPath, PictureError, SurfacePicture, TrajectoryPicture};
 
 /// The most files of one kind `x` numbers before it gives up.
@@ -99,7 +102,7 @@ impl App {
                 let picture = SurfacePicture {
                     surface: &state.surface,
                     title: format!("Range over (E, ψ) — preset {}", self.preset_name),
-                    conditions: analysis::figures::conditions(&self.preset_name, &self.scene)
+                    conditions: shown::conditions(&self.preset_name, &self.scene, self.units)
                         .split_once(": ")
                         .map_or(String::new(), |(_, rest)| rest.to_owned()),
                     now: Some((self.scene.bat.undercut, self.scene.bat.swing_angle)),
@@ -107,7 +110,10 @@ impl App {
                     paper: None,
                     level: self.fence.map(|f| f.distance),
                 };
-                Ok(("surface".into(), picture::surface_svg(&picture)))
+                Ok((
+                    "surface".into(),
+                    picture::surface_svg_in(&picture, self.units),
+                ))
             }
             Tab::Figures => {
                 let state = self
@@ -115,9 +121,15 @@ impl App {
                     .as_ref()
                     .ok_or("the figure is still being computed")?;
                 let data = state.data.as_ref().map_err(Clone::clone)?;
+                // In the units shown, as `figure N --svg --units` draws it.
+                let now = shown::now(data, &self.scene, self.units);
+                let data = FigureData {
+                    conditions: shown::conditions(&self.preset_name, &self.scene, self.units),
+                    ..shown::converted(data.clone(), self.units)
+                };
                 Ok((
                     format!("figure{}", data.number),
-                    picture::table_figure_svg(data, &self.scene, &self.preset_name),
+                    picture::table_figure_svg_now(&data, now, &self.preset_name),
                 ))
             }
             Tab::Flight | Tab::Impact | Tab::Field => {
@@ -149,7 +161,10 @@ impl App {
                     not_landed: (!flight.landed).then(|| "did not land".to_owned()),
                     fence: self.fence,
                 };
-                Ok(("trajectory".into(), picture::trajectory_svg(&picture)))
+                Ok((
+                    "trajectory".into(),
+                    picture::trajectory_svg_in(&picture, self.units),
+                ))
             }
         }
     }

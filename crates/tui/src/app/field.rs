@@ -2,7 +2,7 @@
 //! one computation), the fence it shows, and a click that sets the launch
 //! direction.
 
-use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2};
+use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, FRAC_PI_4};
 
 use ratatui::layout::Rect;
 
@@ -258,29 +258,32 @@ impl App {
     }
 
     /// The field view's scale in `pane`: the fence and every track with a
-    /// margin, and the foul lines' fair territory at least.
+    /// margin, as tight as they are (a park's foul poles nearer than its
+    /// centre field make it narrower), so that they fill the pane as far
+    /// as equal scales allow.
     pub fn field_map(&self, pane: Rect) -> FieldMap {
-        let fence = self.field_fence().map_or(0.0, |f| {
-            f.points().iter().map(|p| p.distance).fold(0.0, f64::max)
+        // The fence's reach up the page and to either side, pole to pole
+        // (sampled finely, with its own corners).
+        let fence: Vec<(f64, f64)> = self.field_fence().map_or(Vec::new(), |f| {
+            let n = 180;
+            (0..=n)
+                .map(|i| -FRAC_PI_4 + FRAC_PI_2 * f64::from(i) / f64::from(n))
+                .chain(f.points().iter().map(|p| p.direction))
+                .filter_map(|d| f.distance_at(d).map(|r| (r * d.cos(), r * d.sin())))
+                .collect()
         });
-        let far = self
-            .ground_tracks()
-            .map(|&(x, z)| x.hypot(z))
-            .filter(|d| d.is_finite())
-            .fold(fence.max(10.0), f64::max);
-        let reach = 1.06 * far;
-        let half = self
-            .ground_tracks()
-            .map(|p| p.1.abs())
-            .filter(|z| z.is_finite())
-            .fold(FRAC_1_SQRT_2 * far, f64::max)
-            * 1.04;
-        let behind = self
-            .ground_tracks()
-            .map(|p| -p.0)
-            .filter(|x| x.is_finite())
-            .fold(0.0, f64::max)
-            + 0.03 * reach;
+        let points = || {
+            fence
+                .iter()
+                .chain(self.ground_tracks())
+                .filter(|p| p.0.is_finite() && p.1.is_finite())
+        };
+        let reach = 1.06 * points().map(|p| p.0).fold(10.0, f64::max);
+        let half = 1.04 * points().map(|p| p.1.abs()).fold(0.0, f64::max);
+        // Fair territory to the foul lines at least half as far as the view
+        // reaches (a short pop-up's view still shows the lines part).
+        let half = half.max(0.5 * FRAC_1_SQRT_2 * reach);
+        let behind = points().map(|p| -p.0).fold(0.0, f64::max) + 0.03 * reach;
         FieldMap::new(pane, half, behind, reach)
     }
 

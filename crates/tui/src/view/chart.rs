@@ -109,6 +109,15 @@ impl Ticks {
             .collect()
     }
 
+    /// The axis run on to its first tick at or past `hi`.
+    pub fn to_a_tick(self) -> Ticks {
+        let end = (self.hi / self.step - 1e-9).ceil() * self.step;
+        Ticks {
+            hi: end.max(self.hi),
+            ..self
+        }
+    }
+
     pub fn bounds(&self) -> [f64; 2] {
         [self.lo, self.hi]
     }
@@ -119,6 +128,22 @@ impl Ticks {
         let mut intervals = (cells / 6).clamp(1, 10) as usize;
         loop {
             let ticks = Ticks::new(lo, hi, intervals);
+            let labels = ticks.labels();
+            let widest = labels.iter().map(|l| l.len()).max().unwrap_or(1);
+            if intervals == 1 || labels.len() * (widest + 2) <= cells as usize {
+                return ticks;
+            }
+            intervals -= 1;
+        }
+    }
+
+    /// As [`Ticks::across`], the axis then run on to the first tick at or
+    /// past `hi` (12.3 on an axis to 14 by 2s), the step kept where its
+    /// labels still fit.
+    pub fn across_past(lo: f64, hi: f64, cells: u16) -> Ticks {
+        let mut intervals = (cells / 6).clamp(1, 10) as usize;
+        loop {
+            let ticks = Ticks::new(lo, hi, intervals).to_a_tick();
             let labels = ticks.labels();
             let widest = labels.iter().map(|l| l.len()).max().unwrap_or(1);
             if intervals == 1 || labels.len() * (widest + 2) <= cells as usize {
@@ -208,6 +233,34 @@ pub fn cell_of(
     Some((graph.x + column, graph.y + row))
 }
 
+/// Where the x axis's title goes so that its last label shows whole: at
+/// the end of the labels' row, the graph leaving `Some(n)` blank columns at
+/// its right (0 where the label shows anyway; at most a quarter of the
+/// area); else (`None`) on a row of its own under the labels. The same for
+/// every panel stacked over one x axis, labelled or not, so that their
+/// graphs line up.
+pub fn title_room(area: Rect, y_width: u16, x: &AxisSpec) -> Option<u16> {
+    let title = x.title.chars().count() as u16;
+    let (Some(last), Some(text)) = (x.ticks.values().pop(), x.ticks.labels().pop()) else {
+        return Some(0);
+    };
+    if title == 0 {
+        return Some(0);
+    }
+    let width = text.chars().count() as u16;
+    let title_at = area.right().saturating_sub(title);
+    let bounds = (x.ticks.bounds(), [0.0, 1.0]);
+    (0..=area.width / 4).find(|&room| {
+        let narrowed = Rect {
+            width: area.width - room,
+            ..area
+        };
+        let graph = graph_area(narrowed, y_width, 1, true);
+        cell_of(graph, bounds, (last, 0.0), Marker::Braille)
+            .is_some_and(|(column, _)| column.saturating_sub(width / 2) + width < title_at)
+    })
+}
+
 /// Draws `datasets` in `area` over the axes `x` and `y`, each tick
 /// labelled at its value; returns the graph's area (for [`labels`]).
 pub fn draw(
@@ -241,8 +294,17 @@ pub fn draw(
                 .labels([blank(y_width), blank(y_width)]),
         )
         .legend_position(None);
-    frame.render_widget(chart, area);
-    let graph = graph_area(area, y_width as u16, 1, x.labelled);
+    // The graph stops short of the x title where its last label needs it,
+    // or leaves the title a row of its own.
+    let room = title_room(area, y_width as u16, x);
+    let own_row = x.labelled && room.is_none() && area.height > 4;
+    let narrowed = Rect {
+        width: area.width - room.unwrap_or(0),
+        height: area.height - u16::from(own_row),
+        ..area
+    };
+    frame.render_widget(chart, narrowed);
+    let graph = graph_area(narrowed, y_width as u16, 1, x.labelled);
     let buf = frame.buffer_mut();
     // y: right-aligned left of the axis, on the row of its value.
     if graph.x >= area.x + 2 {
@@ -255,17 +317,20 @@ pub fn draw(
         }
     }
     // x: the title at the right of the labels' row (in the graph it would
-    // hide the data's end: the landing point), then each label centred
-    // under its column, where it clears its neighbours and the title.
+    // hide the data's end: the landing point) or under it, then each label
+    // centred under its column, where it clears its neighbours and the title.
     if x.labelled && area.height > 2 {
-        let row = area.bottom() - 1;
+        let row = narrowed.bottom() - 1;
         let title = x.title.chars().count() as u16;
         let title_at = area.right().saturating_sub(title);
         let titled = title > 0 && title_at > graph.x + 4;
-        let end = if titled {
+        let end = if titled && !own_row {
             buf.set_string(title_at, row, &x.title, dim);
             title_at - 1
         } else {
+            if titled {
+                buf.set_string(title_at, area.bottom() - 1, &x.title, dim);
+            }
             area.right()
         };
         let bounds = (x.ticks.bounds(), [0.0, 1.0]);
@@ -407,5 +472,50 @@ mod tests {
                 "{labels:?} {graph:?}"
             );
         }
+    }
+
+    /// The last two rows of a chart drawn in `width` columns.
+    fn x_rows(width: u16, x: &AxisSpec) -> (String, String) {
+        let area = Rect::new(0, 0, width, 12);
+        let mut terminal = Terminal::new(TestBackend::new(width, 12)).unwrap();
+        let y = AxisSpec::new("", Ticks::new(0.0, 100.0, 3));
+        terminal
+            .draw(|frame| {
+                draw(frame, area, vec![], (x, &y), Style::new());
+            })
+            .unwrap();
+        let buffer = terminal.backend().buffer();
+        let row = |r: u16| -> String { (0..width).map(|c| buffer[(c, r)].symbol()).collect() };
+        (row(10), row(11))
+    }
+
+    #[test]
+    fn the_last_x_label_shows_beside_or_over_the_axis_title() {
+        // p_f = 12.34 on an axis run on to a tick past it: 14 by 2s.
+        let p = Ticks::across_past(0.0, 12.34, 34);
+        assert!(p.hi >= 12.34 && p.values().last() == Some(&p.hi), "{p:?}");
+        assert_eq!(Ticks::across_past(0.0, 12.34, 60).hi, 14.0);
+        // The impact's axis at 80×24 (47 columns): "15" before the title.
+        let impact = AxisSpec::new("p (N·s)", Ticks::new(0.0, 15.0, 3));
+        let (axis, labels) = x_rows(47, &impact);
+        assert!(
+            labels.trim_end().ends_with("10         15 p (N·s)"),
+            "{labels:?}"
+        );
+        assert!(axis.trim_end().ends_with('─'), "{axis:?}");
+        // A long title the graph cannot make room for gets the row under
+        // the labels, which run to the axis's end.
+        let sweep = AxisSpec::new("bat.speed (m/s)", Ticks::new(20.0, 45.0, 5));
+        let (labels, under) = x_rows(45, &sweep);
+        assert!(labels.trim_end().ends_with("40      45"), "{labels:?}");
+        assert_eq!(under.trim(), "bat.speed (m/s)");
+        // Where the last label clears the title, the graph keeps its width.
+        let room = AxisSpec::new("x (m)", Ticks::new(0.0, 139.0, 6));
+        assert_eq!(title_room(Rect::new(0, 0, 60, 12), 3, &room), Some(0));
+        let (_, labels) = x_rows(60, &room);
+        assert!(
+            labels.trim_end().ends_with("100     120 x (m)"),
+            "{labels:?}"
+        );
     }
 }

@@ -181,11 +181,11 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
         if k == 0 {
             datasets.push(chart::points(mark_marker, app.theme.apex, &mark_points));
         }
-        // Only the lowest panel has the x axis and its title.
-        let lowest = k + 1 == count;
+        // Only the lowest panel has the x axis and its title (each is given
+        // the title, so that each graph leaves it the same room).
         let x = AxisSpec {
-            labelled: lowest,
-            ..AxisSpec::new(if lowest { x_title.as_str() } else { "" }, x_ticks)
+            labelled: k + 1 == count,
+            ..AxisSpec::new(x_title.as_str(), x_ticks)
         };
         let y_axis = AxisSpec {
             width,

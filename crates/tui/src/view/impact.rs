@@ -153,6 +153,9 @@ pub(super) fn impulse_line(app: &App, impact: &Collision, stop: Stop) -> Line<'s
     ])
 }
 
+/// The impulse axis's title.
+const P_AXIS: &str = "p (N·s)";
+
 /// `curves` against the normal impulse p from 0 to p_f, in the speed unit
 /// shown, with p_c, p_s (where the contact sticks) and the cursor at
 /// `cursor` as vertical lines, and the names of p_c and p_s at their tops.
@@ -185,15 +188,7 @@ pub(super) fn phase_chart(
         .fold((0.0f64, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
     // The axis runs on to a tick at or past p_f, so that p_f lies inside
     // its labels (12.3 on an axis labelled to 14, not past its 10).
-    let cells = chart_area.width.saturating_sub(6);
-    let mut x = Ticks::across(0.0, pf, cells);
-    for _ in 0..4 {
-        let end = (pf / x.step).ceil() * x.step;
-        if end <= x.hi * (1.0 + 1e-12) {
-            break;
-        }
-        x = Ticks::across(0.0, end, cells);
-    }
+    let x = Ticks::across_past(0.0, pf, chart_area.width.saturating_sub(6));
     let pad = 0.05 * (hi - lo);
     let y = Ticks::up(lo - pad, hi + pad, chart_area.height.saturating_sub(2));
     let vertical = |p: f64| [(p, y.lo), (p, y.hi)];
@@ -218,10 +213,7 @@ pub(super) fn phase_chart(
         frame,
         chart_area,
         datasets,
-        (
-            &AxisSpec::new("p (N·s)", x),
-            &AxisSpec::new(speed.symbol, y),
-        ),
+        (&AxisSpec::new(P_AXIS, x), &AxisSpec::new(speed.symbol, y)),
         app.theme.dim,
     );
     // Each line's name at its top, where the chart leaves room.

@@ -14,8 +14,8 @@ use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Chart, Paragraph};
 
-use super::chart;
 use super::impact::{Curve, impulse_line, named, phase_chart};
+use super::{chart, words};
 use crate::app::App;
 use crate::layout::CELL_ASPECT;
 use model::impact::{Collision, Impact3d, Regime, Stop};
@@ -33,8 +33,45 @@ pub fn draw(
 ) {
     let speed = app.unit(Quantity::Speed);
     let spin = app.unit(Quantity::Spin);
+    let (across, normal, along) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
+    let s = impact.at(stop.impulse);
+    let value = |v: f64| Span::raw(format!("{:+.2}  ", speed.show(v)));
+    let v = s.ball_velocity;
+    let lines: Vec<Line> = [
+        impulse_line(app, impact, stop),
+        Line::from(vec![
+            Span::styled(format!("{}v1 ", named(app, across.1)), app.theme.slip),
+            value(s.slip.x),
+            Span::styled(format!("{}v2 ", named(app, along.1)), app.theme.slip_along),
+            value(s.slip.y),
+            Span::styled(format!("{}v3 ", named(app, normal.1)), app.theme.approach),
+            Span::raw(format!(
+                "{:+.2} {}",
+                speed.show(s.normal_velocity),
+                speed.symbol
+            )),
+        ]),
+        turn_line(app, spatial, stop.impulse, inner.width),
+        Line::from(vec![
+            Span::styled("ball ", app.theme.dim),
+            Span::raw(format!(
+                "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {:.1} {}",
+                speed.show(v.x),
+                speed.show(v.y),
+                speed.show(v.z),
+                speed.symbol,
+                spin.show(s.ball_spin.norm()),
+                spin.symbol
+            )),
+        ]),
+    ]
+    .iter()
+    // Each line wrapped at words, never cut: up to two rows each.
+    .flat_map(|l| words::fit(&l.spans, inner.width as usize, 2))
+    .collect();
     let [charts, text_area] =
-        Layout::vertical([Constraint::Fill(1), Constraint::Length(4)]).areas(inner);
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(lines.len() as u16)])
+            .areas(inner);
     // The slip plane beside the chart, about as wide as tall in true
     // proportion, and never more than two fifths of the pane.
     let plane_width = (charts.width * 2 / 5).min(CELL_ASPECT as u16 * charts.height + 2);
@@ -45,7 +82,6 @@ pub fn draw(
         Constraint::Length(if shows_plane { plane_width } else { 0 }),
     ])
     .areas(charts);
-    let (across, normal, along) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
     let curves = [
         Curve {
             name: "v1",
@@ -71,37 +107,6 @@ pub fn draw(
         slip_plane(frame, plane_area, app, spatial, stop.impulse);
     }
 
-    let s = impact.at(stop.impulse);
-    let value = |v: f64| Span::raw(format!("{:+.2}  ", speed.show(v)));
-    let v = s.ball_velocity;
-    let lines = vec![
-        impulse_line(app, impact, stop),
-        Line::from(vec![
-            Span::styled(format!("{}v1 ", named(app, across.1)), app.theme.slip),
-            value(s.slip.x),
-            Span::styled(format!("{}v2 ", named(app, along.1)), app.theme.slip_along),
-            value(s.slip.y),
-            Span::styled(format!("{}v3 ", named(app, normal.1)), app.theme.approach),
-            Span::raw(format!(
-                "{:+.2} {}",
-                speed.show(s.normal_velocity),
-                speed.symbol
-            )),
-        ]),
-        turn_line(app, spatial, stop.impulse, text_area.width),
-        Line::from(vec![
-            Span::styled("ball ", app.theme.dim),
-            Span::raw(format!(
-                "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {:.1} {}",
-                speed.show(v.x),
-                speed.show(v.y),
-                speed.show(v.z),
-                speed.symbol,
-                spin.show(s.ball_spin.norm()),
-                spin.symbol
-            )),
-        ]),
-    ];
     frame.render_widget(Paragraph::new(lines), text_area);
 }
 
@@ -147,7 +152,6 @@ fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'sta
 /// The slip in the tangent plane: v1 across, v2 up, equal scales; the path
 /// of its tip, the stick point, and the cursor's slip as an arrow.
 fn slip_plane(frame: &mut Frame, area: Rect, app: &App, impact: &Impact3d, cursor: f64) {
-    let speed = app.unit(Quantity::Speed);
     let [title, plot] = Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
     frame.buffer_mut().set_string(
         title.x,
@@ -155,102 +159,179 @@ fn slip_plane(frame: &mut Frame, area: Rect, app: &App, impact: &Impact3d, curso
         fitted("slip (v1, v2)", title.width),
         app.theme.dim,
     );
-    let shown = |v: nalgebra::Vector2<f64>| (speed.show(v.x), speed.show(v.y));
-    let mut path: Vec<(f64, f64)> = impact
-        .slip_turn(PATH_POINTS)
-        .iter()
-        .map(|p| {
-            let (sin, cos) = p.angle.sin_cos();
-            (speed.show(p.speed * cos), speed.show(p.speed * sin))
-        })
-        .collect();
-    let sticks = impact.regime == Regime::Stick;
-    if sticks {
-        path.push((0.0, 0.0));
-    } else {
-        path.push(shown(impact.after.slip));
-    }
-    let stuck = sticks && cursor >= impact.slip_halt_impulse();
-    let now = if stuck {
-        (0.0, 0.0)
-    } else {
-        shown(impact.at(cursor).slip)
-    };
-    let bounds = equal_bounds(plot, &path);
-    let (bx, by) = bounds;
-    let axes = [
-        vec![(bx[0], 0.0), (bx[1], 0.0)],
-        vec![(0.0, by[0]), (0.0, by[1])],
-    ];
-    let arrow = arrow(now, bounds);
-    let origin = [(0.0, 0.0)];
-    let mut datasets = vec![
-        chart::line(app.theme.dim, &axes[0]),
-        chart::line(app.theme.dim, &axes[1]),
-        chart::curve(app.theme.path(0).0, app.theme.slip, &path),
-    ];
-    if let Some(arrow) = &arrow {
-        // Without colour, dots tell it from the path.
-        let marker = if app.theme.colored() {
-            Marker::Braille
+    let plane = Plane::new(plot, app, impact, cursor);
+    plane.draw(frame, app);
+    plane.name(frame, app);
+}
+
+/// What the slip plane draws, in the speed unit shown: the path of the
+/// slip's tip (ending at the origin where it sticks), the cursor's arrow,
+/// and the bounds at equal scales over `plot`.
+struct Plane {
+    plot: Rect,
+    path: Vec<(f64, f64)>,
+    arrow: Option<Vec<(f64, f64)>>,
+    bounds: ([f64; 2], [f64; 2]),
+    sticks: bool,
+}
+
+impl Plane {
+    fn new(plot: Rect, app: &App, impact: &Impact3d, cursor: f64) -> Plane {
+        let speed = app.unit(Quantity::Speed);
+        let shown = |v: nalgebra::Vector2<f64>| (speed.show(v.x), speed.show(v.y));
+        let mut path: Vec<(f64, f64)> = impact
+            .slip_turn(PATH_POINTS)
+            .iter()
+            .map(|p| {
+                let (sin, cos) = p.angle.sin_cos();
+                (speed.show(p.speed * cos), speed.show(p.speed * sin))
+            })
+            .collect();
+        let sticks = impact.regime == Regime::Stick;
+        if sticks {
+            path.push((0.0, 0.0));
         } else {
-            Marker::Dot
+            path.push(shown(impact.after.slip));
+        }
+        let stuck = sticks && cursor >= impact.slip_halt_impulse();
+        let now = if stuck {
+            (0.0, 0.0)
+        } else {
+            shown(impact.at(cursor).slip)
         };
-        datasets.push(chart::curve(marker, app.theme.cursor, arrow));
+        let bounds = equal_bounds(plot, &path);
+        Plane {
+            plot,
+            arrow: arrow(now, bounds),
+            path,
+            bounds,
+            sticks,
+        }
     }
-    if sticks {
-        datasets.push(chart::points(Marker::Dot, app.theme.stick, &origin));
-    }
-    frame.render_widget(
-        Chart::new(datasets)
-            .x_axis(Axis::default().bounds(bx))
-            .y_axis(Axis::default().bounds(by))
-            .legend_position(None),
-        plot,
-    );
-    // The axes' names at their ends; the start of the path and the stick
-    // each on the first place beside their point (above or below it, right
-    // or left) where every cell is blank: clear of the curves.
-    let buf = frame.buffer_mut();
-    let mut write =
-        |point: (f64, f64), text: &str, style: Style, places: &[(bool, i16)], blank: bool| {
-            let Some((column, row)) = chart::cell_of(plot, bounds, point, Marker::Braille) else {
-                return;
+
+    /// The axes, the path, the arrow and the stick point.
+    fn draw(&self, frame: &mut Frame, app: &App) {
+        let (bx, by) = self.bounds;
+        let axes = [
+            vec![(bx[0], 0.0), (bx[1], 0.0)],
+            vec![(0.0, by[0]), (0.0, by[1])],
+        ];
+        let mut datasets = vec![
+            chart::line(app.theme.dim, &axes[0]),
+            chart::line(app.theme.dim, &axes[1]),
+            chart::curve(app.theme.path(0).0, app.theme.slip, &self.path),
+        ];
+        if let Some(arrow) = &self.arrow {
+            // Without colour, dots tell it from the path.
+            let marker = if app.theme.colored() {
+                Marker::Braille
+            } else {
+                Marker::Dot
             };
-            let width = text.chars().count() as u16;
-            for &(left, down) in places {
-                let start = if left {
-                    column.checked_sub(width)
-                } else {
-                    Some(column + 1)
-                };
-                let row = row
-                    .checked_add_signed(down)
-                    .filter(|r| *r >= plot.y && *r < plot.bottom());
-                let (Some(start), Some(row)) = (
-                    start.filter(|s| *s >= plot.x && s + width <= plot.right()),
-                    row,
-                ) else {
-                    continue;
-                };
-                let free = (start..start + width).all(|x| buf[(x, row)].symbol() == " ");
-                if free || !blank {
-                    buf.set_string(start, row, text, style);
+            datasets.push(chart::curve(marker, app.theme.cursor, arrow));
+        }
+        if self.sticks {
+            datasets.push(chart::points(Marker::Dot, app.theme.stick, &ORIGIN));
+        }
+        frame.render_widget(
+            Chart::new(datasets)
+                .x_axis(Axis::default().bounds(bx))
+                .y_axis(Axis::default().bounds(by))
+                .legend_position(None),
+            self.plot,
+        );
+    }
+
+    /// The axes' names at their ends; the start of the path and the stick
+    /// each on the first place beside their point (above or below it,
+    /// right or left) where every cell is blank. No word covers a cell the
+    /// path, the arrow or the stick point passes through: an axis's name
+    /// moves off its axis's end where the slip runs along it.
+    fn name(&self, frame: &mut Frame, app: &App) {
+        let (plot, bounds) = (self.plot, self.bounds);
+        let (bx, by) = bounds;
+        let mut ink = inked(plot, bounds, &self.path);
+        if let Some(arrow) = &self.arrow {
+            ink.extend(inked(plot, bounds, arrow));
+        }
+        ink.extend(inked(plot, bounds, &ORIGIN));
+        let buf = frame.buffer_mut();
+        let mut write =
+            |point: (f64, f64), text: &str, style: Style, places: &[(bool, i16)], blank: bool| {
+                let Some((column, row)) = chart::cell_of(plot, bounds, point, Marker::Braille)
+                else {
                     return;
+                };
+                let width = text.chars().count() as u16;
+                for &(left, down) in places {
+                    let start = if left {
+                        column.checked_sub(width)
+                    } else {
+                        Some(column + 1)
+                    };
+                    let row = row
+                        .checked_add_signed(down)
+                        .filter(|r| *r >= plot.y && *r < plot.bottom());
+                    let (Some(start), Some(row)) = (
+                        start.filter(|s| *s >= plot.x && s + width <= plot.right()),
+                        row,
+                    ) else {
+                        continue;
+                    };
+                    let free = (start..start + width).all(|x| {
+                        !ink.contains(&(x, row)) && (!blank || buf[(x, row)].symbol() == " ")
+                    });
+                    if free {
+                        buf.set_string(start, row, text, style);
+                        return;
+                    }
                 }
-            }
-        };
-    write((bx[1], 0.0), "v1", app.theme.dim, &[(true, 0)], false);
-    write((0.0, by[1]), "v2", app.theme.dim, &[(false, 0)], false);
-    if let Some(&start) = path.first() {
-        let left = start.0 > 0.5 * (bx[0] + bx[1]);
-        let places = [(left, -1), (left, 1), (!left, -1), (!left, 1), (left, 0)];
-        write(start, "p=0", app.theme.slip, &places, true);
+            };
+        let ends = [(true, 0), (true, -1), (true, 1)];
+        write((bx[1], 0.0), "v1", app.theme.dim, &ends, false);
+        let top = [(false, 0), (true, 0), (false, 1), (true, 1)];
+        write((0.0, by[1]), "v2", app.theme.dim, &top, false);
+        if let Some(&start) = self.path.first() {
+            let left = start.0 > 0.5 * (bx[0] + bx[1]);
+            let places = [
+                (left, -1),
+                (left, 1),
+                (!left, -1),
+                (!left, 1),
+                (left, 0),
+                (left, -2),
+                (left, 2),
+            ];
+            write(start, "p=0", app.theme.slip, &places, true);
+        }
+        if self.sticks {
+            let places = [(false, 1), (true, 1), (false, -1), (true, -1)];
+            write(ORIGIN[0], "p_s", app.theme.stick, &places, true);
+        }
     }
-    if sticks {
-        let places = [(false, 1), (true, 1), (false, -1), (true, -1)];
-        write((0.0, 0.0), "p_s", app.theme.stick, &places, true);
+}
+
+/// The slip plane's origin: where the contact sticks.
+const ORIGIN: [(f64, f64); 1] = [(0.0, 0.0)];
+
+/// The cells a polyline through `points` passes through, drawn in braille
+/// over `plot` with `bounds` (each segment sampled finer than a dot).
+fn inked(
+    plot: Rect,
+    bounds: ([f64; 2], [f64; 2]),
+    points: &[(f64, f64)],
+) -> std::collections::HashSet<(u16, u16)> {
+    let dots = 2 * u32::from(plot.width.max(plot.height * 2));
+    let cell = |p| chart::cell_of(plot, bounds, p, Marker::Braille);
+    let mut cells: std::collections::HashSet<_> = points.iter().filter_map(|&p| cell(p)).collect();
+    for pair in points.windows(2) {
+        let ((x0, y0), (x1, y1)) = (pair[0], pair[1]);
+        for k in 1..dots {
+            let t = f64::from(k) / f64::from(dots);
+            cells.extend(cell((x0 + t * (x1 - x0), y0 + t * (y1 - y0))));
+        }
     }
+    cells
 }
 
 /// The bounds (v1, v2) that show `points` and the origin with a margin, at
@@ -299,4 +380,65 @@ fn arrow(tip: (f64, f64), (x, y): ([f64; 2], [f64; 2])) -> Option<Vec<(f64, f64)
 /// `text` cut to `width` characters.
 fn fitted(text: &str, width: u16) -> String {
     text.chars().take(width as usize).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::theme::ColorMode;
+    use ratatui::Terminal;
+    use ratatui::backend::TestBackend;
+    use ratatui::buffer::Buffer;
+
+    fn drawn(area: Rect, draw: impl FnOnce(&mut Frame)) -> Buffer {
+        let mut terminal = Terminal::new(TestBackend::new(area.width, area.height)).unwrap();
+        terminal.draw(draw).unwrap();
+        terminal.backend().buffer().clone()
+    }
+
+    /// Every cell that ratatui draws of the path, the arrow or the stick
+    /// point (in their colours) is still theirs once the words are written:
+    /// over swings that slip along the v1 axis (μ 0.05) or stick, at every
+    /// sixth of the impulse, in insets small and large.
+    #[test]
+    fn the_slip_planes_words_never_cover_its_path_its_arrow_or_the_stick() {
+        for (tilt, direction, friction) in [(0.5, 0.0, 0.05), (0.5, 0.3, 0.5), (0.2, 0.6, 0.1)] {
+            let mut fastball = preset::load("fastball", None).unwrap();
+            fastball.scene.bat.tilt = tilt;
+            fastball.scene.bat.direction = direction;
+            fastball.scene.bat.friction = friction;
+            let app = App::new(fastball, None, ColorMode::Indexed, Rect::new(0, 0, 80, 24));
+            let impact = app.flown.impact.as_ref().unwrap();
+            let spatial = impact.spatial().unwrap();
+            let inks = [app.theme.slip.fg, app.theme.cursor.fg, app.theme.stick.fg];
+            for (w, h) in [(18, 16), (26, 28)] {
+                let area = Rect::new(0, 0, w, h);
+                for k in 0..6 {
+                    let cursor = impact.separation_impulse() * f64::from(k) / 6.0;
+                    let plane = Plane::new(area, &app, spatial, cursor);
+                    let bare = drawn(area, |f| plane.draw(f, &app));
+                    let named = drawn(area, |f| {
+                        plane.draw(f, &app);
+                        plane.name(f, &app);
+                    });
+                    let mut words = 0;
+                    for (x, y) in (0..h).flat_map(|y| (0..w).map(move |x| (x, y))) {
+                        let (before, after) = (&bare[(x, y)], &named[(x, y)]);
+                        if before != after {
+                            words += 1;
+                        }
+                        let inked = before.symbol() != " " && inks.contains(&Some(before.fg));
+                        assert!(
+                            !inked || before == after,
+                            "μ {friction}, {w}×{h}, p {cursor:.2}: ({x}, {y}) {:?} became {:?}",
+                            before.symbol(),
+                            after.symbol()
+                        );
+                    }
+                    // The axes' names at least are written.
+                    assert!(words >= 4, "μ {friction}, {w}×{h}: {words} cells of words");
+                }
+            }
+        }
+    }
 }

@@ -10,8 +10,6 @@ use ratatui::widgets::Block;
 
 use super::chart::{self, AxisSpec, Ticks};
 use crate::app::App;
-use crate::layout::CELL_ASPECT;
-use picture::MAX_STRETCH;
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let flight = &app.flown.flight;
@@ -40,7 +38,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .chain(&pinned_path)
         .map(|p| p.0)
         .fold(0.0, f64::min);
-    let y_most = 1.1 * (k * flight.apex.max(optimal_apex).max(pin_apex)).max(fence.1);
+    let y_most = 1.05 * (k * flight.apex.max(optimal_apex).max(pin_apex)).max(fence.1);
     let apex = [(k * flight.apex_distance, k * flight.apex)];
     // A ball that does not land has no landing point (nor range).
     let landing = if flight.landed {
@@ -96,16 +94,17 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .title_top(legend.right_aligned());
     let inner = block.inner(area);
     frame.render_widget(block, area);
-    // Round ticks, as many as the pane has room for; the height drawn at
-    // most MAX_STRETCH times taller than true, as the SVG draws it (the y
-    // labels' width sets the graph's, and a taller axis may widen them).
+    // Round ticks, as many as the pane has room for, the height axis to the
+    // first tick over the flight's where that adds under a fifth. Not at equal scales: the pane's shape is
+    // the layout's, and a true-scale flight leaves most of a tall pane
+    // empty (a 27 m apex under a 75 m axis at 200×60); the ticks give the
+    // scale, the title the true apex and range. (The SVG, whose shape is
+    // its own, stretches the height at most picture::MAX_STRETCH times.)
     let rows = inner.height.saturating_sub(2);
     let x = Ticks::across(x_least, x_most, inner.width.saturating_sub(6));
-    let mut y = Ticks::up(0.0, y_most, rows);
-    for _ in 0..2 {
-        let least = true_height(inner, &x, &y) / MAX_STRETCH;
-        y = Ticks::up(0.0, y_most.max(least), rows);
-    }
+    let y = Ticks::up(0.0, y_most, rows);
+    let tidy = y.to_a_tick();
+    let y = if tidy.hi <= 1.2 * y.hi { tidy } else { y };
     chart::draw(
         frame,
         inner,
@@ -116,13 +115,4 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         ),
         app.theme.dim,
     );
-}
-
-/// The y span that draws heights true to scale against `x` in the graph a
-/// chart in `inner` gets with `y`'s labels: a cell is [`CELL_ASPECT`]
-/// times as tall as it is wide.
-fn true_height(inner: Rect, x: &Ticks, y: &Ticks) -> f64 {
-    let label = y.labels().iter().map(|l| l.len()).max().unwrap_or(1) as u16;
-    let graph = chart::graph_area(inner, label, 1, true);
-    CELL_ASPECT * f64::from(graph.height) * (x.hi - x.lo) / f64::from(graph.width.max(1))
 }

@@ -1,14 +1,14 @@
-//! A figure's table, conditions and title in the units `--units` asks for.
-//! The figures are computed in SI ([`crate::analysis::figures`]); this only
-//! rewrites what text and CSV show. Marks, notes and the paper's stated
-//! numbers keep the paper's SI words, each with its unit.
+//! A figure's table, conditions and title in the units shown (the command
+//! line's `--units`, the explorer's `u`). The figures are computed in SI
+//! ([`super`]); this only rewrites what text, CSV and SVG show. Marks,
+//! notes and the paper's stated numbers keep the paper's SI words, each
+//! with its unit.
 
-use super::shown::{Shown, short};
-use crate::Scene;
-use crate::analysis::figures::{self, Cell, FigureData};
-use crate::model::keys::all_keys;
-use crate::model::launch::SceneKind;
-use crate::units::Quantity;
+use super::{self as figures, Cell, FigureData};
+use model::keys::all_keys;
+use model::launch::SceneKind;
+use model::scene::Scene;
+use units::{Quantity, UnitSystem};
 
 /// What a figure column measures, from its key: `launch_spin_mu_0.35` is a
 /// spin, `bat_speed` (a swept key, dots made underscores) the key's own.
@@ -32,13 +32,13 @@ fn quantity(key: &str) -> (Quantity, &'static str) {
 
 /// `data` with its numeric columns converted, their headings, CSV names and
 /// decimals in the units shown; as it is in SI.
-pub(super) fn converted(mut data: FigureData, shown: Shown) -> FigureData {
-    if shown.is_si() {
+pub fn converted(mut data: FigureData, shown: UnitSystem) -> FigureData {
+    if shown == UnitSystem::Si {
         return data;
     }
     for (k, column) in data.columns.iter_mut().enumerate() {
         let (quantity, si_symbol) = quantity(&column.key);
-        let unit = quantity.unit(shown.0, si_symbol);
+        let unit = quantity.unit(shown, si_symbol);
         if unit.is_identity() {
             continue;
         }
@@ -46,7 +46,7 @@ pub(super) fn converted(mut data: FigureData, shown: Shown) -> FigureData {
             column
                 .head
                 .replacen(&format!("({si_symbol})"), &format!("({})", unit.symbol), 1);
-        column.key = shown.csv_key(&column.key, quantity);
+        column.key = format!("{}_{}", column.key, unit.ascii_symbol());
         column.decimals = unit.decimals(column.decimals);
         for row in &mut data.rows {
             if let Cell::Num(x) = &mut row[k] {
@@ -60,11 +60,11 @@ pub(super) fn converted(mut data: FigureData, shown: Shown) -> FigureData {
 
 /// The current input's value on a figure's x axis, in the units shown
 /// (`data` in SI, as computed).
-pub(super) fn now(data: &FigureData, scene: &Scene, shown: Shown) -> Option<f64> {
+pub fn now(data: &FigureData, scene: &Scene, shown: UnitSystem) -> Option<f64> {
     let value = figures::curves::current_value(data, scene)?;
     let key = &data.columns[figures::curves::x_column(data)].key;
     let (quantity, si_symbol) = quantity(key);
-    let unit = quantity.unit(shown.0, si_symbol);
+    let unit = quantity.unit(shown, si_symbol);
     Some(if unit.is_identity() {
         value
     } else {
@@ -74,8 +74,8 @@ pub(super) fn now(data: &FigureData, scene: &Scene, shown: Shown) -> Option<f64>
 
 /// The units a title names for its axes, in the units shown (the numbers it
 /// quotes keep their SI units beside them).
-pub(super) fn title(title: &str, shown: Shown) -> String {
-    if shown.is_si() {
+pub fn title(title: &str, shown: UnitSystem) -> String {
+    if shown == UnitSystem::Si {
         return title.to_owned();
     }
     let mut out = title.to_owned();
@@ -99,14 +99,19 @@ pub(super) fn title(title: &str, shown: Shown) -> String {
 
 /// The inputs a figure was computed with, in one line, as
 /// [`figures::conditions`] writes them in SI.
-pub(super) fn conditions(name: &str, s: &Scene, shown: Shown) -> String {
-    if shown.is_si() {
+pub fn conditions(name: &str, s: &Scene, shown: UnitSystem) -> String {
+    if shown == UnitSystem::Si {
         return figures::conditions(name, s);
     }
     let v = |quantity: Quantity, si: f64| {
-        let unit = shown.unit(quantity);
+        let unit = quantity.in_system(shown);
         let gap = if unit.symbol == "°" { "" } else { " " };
-        format!("{}{gap}{}", short(shown.convert(quantity, si)), unit.symbol)
+        let value = if unit.is_identity() {
+            si
+        } else {
+            unit.show(si)
+        };
+        format!("{}{gap}{}", figures::short(value), unit.symbol)
     };
     if s.kind == SceneKind::BattedBall {
         let launch = s.batted_ball();
@@ -140,7 +145,6 @@ pub(super) fn conditions(name: &str, s: &Scene, shown: Shown) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::units::UnitSystem;
 
     #[test]
     fn columns_are_known_by_their_keys() {
@@ -152,7 +156,7 @@ mod tests {
 
     #[test]
     fn titles_name_the_units_shown() {
-        let imperial = Shown(UnitSystem::Imperial);
+        let imperial = UnitSystem::Imperial;
         assert_eq!(
             title(
                 "the optimum (E_opt m, ψ_opt rad, range m) and its launch against bat speed V_B0 (m/s)",
