@@ -198,3 +198,42 @@ fn calibrate_by_month_fits_each_month_as_its_rows_alone() {
         "{err}"
     );
 }
+
+/// Issue 26, item 3: where hang times are measured, `calibrate` fits the
+/// lift as well as the drag. The 2018 set's columns (capitals, Statcast's
+/// older names) are read as they come: the launch direction measured at
+/// the bat from EXIT_DIRECTION, the distance from HIT_DISTANCE.
+#[test]
+fn a_trackman_file_with_hang_times_fits_drag_and_lift() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = "tests/data/trackman_2018_sample.csv";
+    let (status, out, err) = homerun(dir.path(), &["calibrate", file, "--json"]);
+    assert_eq!(status, Some(0), "{err}");
+    let value: Value = serde_json::from_str(&out).unwrap();
+    // 40 rows, 21 of them launched below 10°.
+    assert_eq!(value["rows"], 40);
+    assert_eq!(value["grounders"], 21);
+    assert_eq!(value["measured"], 19);
+    let fit = &value["fit"];
+    assert!(fit["lift_scale"]["value"].is_f64(), "{fit}");
+    // The fit lands both medians: distance and hang time.
+    assert!(
+        fit["after"]["median"].as_f64().unwrap().abs() < 0.05,
+        "{fit}"
+    );
+    assert!(
+        fit["second_after"]["median"].as_f64().unwrap().abs() < 0.01,
+        "{fit}"
+    );
+    // Each row flies in its measured direction (row 2: 38.02812° toward right field).
+    let (status, out, err) = homerun(dir.path(), &["fly", "--batch", file, "--json"]);
+    assert_eq!(status, Some(0), "{err}");
+    let first: Value = serde_json::from_str(out.lines().next().unwrap()).unwrap();
+    let direction = first["launch"]["direction"].as_f64().unwrap();
+    assert_eq!(direction, 38.02812f64.to_radians());
+    assert_eq!(first["direction_from"], "scene");
+    assert_eq!(
+        first["statcast"]["distance"].as_f64().unwrap(),
+        72.895 * 0.3048
+    );
+}

@@ -112,7 +112,7 @@ fn fly_help_lists_the_columns_the_batch_reads() {
     for statcast in ["launch_speed", "launch_angle", "spin_rpm"] {
         assert!(names.contains(&statcast), "{statcast} not in {names:?}");
     }
-    assert_eq!(columns.len(), 6, "{columns:?}");
+    assert_eq!(columns.len(), 7, "{columns:?}");
     let text = help(&["fly", "--help"]);
     assert!(text.contains("any other key of `homerun keys`"), "{text}");
     // Each column is read, in the unit the help gives.

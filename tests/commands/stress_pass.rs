@@ -517,7 +517,7 @@ fn f8_the_batch_notice_names_each_rows_own_swing_when_columns_change_it() {
     assert_eq!(status, Some(0), "{err}");
     assert!(
         err.contains(
-            "no launch.speed or launch_speed column: each row's launch.speed comes from its own swing (column bat.speed)"
+            "no launch.speed or launch_speed or exit_speed column: each row's launch.speed comes from its own swing (column bat.speed)"
         ) && !err.contains("every row takes"),
         "{err}"
     );
@@ -531,7 +531,7 @@ fn f8_the_batch_notice_names_each_rows_own_swing_when_columns_change_it() {
     // Without such a column, every row takes the preset's swing's launch.
     let (_, _, err) = batch(dir.path(), "launch.angle\n0.3\n");
     assert!(
-        err.contains("no launch.speed or launch_speed column: every row takes preset fastball's launch.speed = 44.29906800990522"),
+        err.contains("no launch.speed or launch_speed or exit_speed column: every row takes preset fastball's launch.speed = 44.29906800990522"),
         "{err}"
     );
 }

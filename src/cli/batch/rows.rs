@@ -62,7 +62,12 @@ impl Unit {
 pub(super) const LAUNCH_COLUMNS: [(&str, &[(&str, Unit)]); 3] = [
     (
         "launch.speed",
-        &[("launch.speed", Unit::Si), ("launch_speed", Unit::Mph)],
+        &[
+            ("launch.speed", Unit::Si),
+            ("launch_speed", Unit::Mph),
+            // Statcast's older and Trackman's files (the 2018 set).
+            ("exit_speed", Unit::Mph),
+        ],
     ),
     (
         "launch.angle",
@@ -104,6 +109,14 @@ pub(in crate::cli) fn columns_help() -> String {
                 "hit_distance_sc",
                 "Statcast's distance (ft): the output adds it and the difference",
             ),
+            (
+                "exit_direction",
+                "the launch direction measured at the bat (°, + toward right field)",
+            ),
+            (
+                "hang_time, apex",
+                "measured hang time (s) and apex (ft): calibrate fits the lift on them",
+            ),
         ]
         .map(|(name, meaning)| (name, meaning.to_owned())),
     );
@@ -118,7 +131,9 @@ pub(in crate::cli) fn columns_help() -> String {
     text += &format!(
         "  and any other key of `homerun keys` ({DRAG_KEY}, environment.temperature, {}, …), \
          that input for the row, as --set takes it.\n\
-         Statcast's launch_speed and launch_angle columns are read as they are; its \
+         Statcast's launch_speed and launch_angle columns are read as they are, its names \
+         in either case (EXIT_SPEED, LAUNCH_ANGLE, HIT_DISTANCE, HANG_TIME, as older and \
+         Trackman's files write them); its \
          release_spin_rate is the pitch's spin, not the batted ball's, and is not read: a row \
          without spin gets Nathan's estimate from its angle, direction and side. \
          `null`, `NA`, `NaN` and the empty cell are missing values; a row without a launch speed \
@@ -213,6 +228,7 @@ impl Header {
                 {
                     Some("launch.direction")
                 }
+                Column::Savant(SavantColumn::ExitDirection) => Some("launch.direction"),
                 Column::Savant(c) => Some(c.name()),
                 Column::Ignored => None,
             };
@@ -256,7 +272,8 @@ impl Header {
         let is = |column: SavantColumn| columns.contains(&Column::Savant(column));
         let hit_coordinates = is(SavantColumn::HcX) || is(SavantColumn::HcY);
         Ok(Header {
-            direction_given: columns.contains(&Column::Input("launch.direction")),
+            direction_given: columns.contains(&Column::Input("launch.direction"))
+                || columns.contains(&Column::Savant(SavantColumn::ExitDirection)),
             names,
             columns,
             inputs,
@@ -349,15 +366,20 @@ impl Header {
 }
 
 pub(super) fn column_of(name: &str) -> Column {
+    // Statcast's own names in either case (`LAUNCH_ANGLE`, as its search
+    // and Trackman's files write them); a key only as written.
+    let statcast = name.to_ascii_lowercase();
     for (index, (_, names)) in LAUNCH_COLUMNS.iter().enumerate() {
-        if let Some((_, unit)) = names.iter().find(|(n, _)| *n == name) {
+        let found =
+            (names.iter()).find(|(n, unit)| *n == name || (*unit != Unit::Si && *n == statcast));
+        if let Some((_, unit)) = found {
             return Column::Launch(index, *unit);
         }
     }
     if let Some(index) = FIELD_KEYS.iter().position(|f| f.name == name) {
         return Column::Field(index);
     }
-    if let Some(column) = SavantColumn::of(name) {
+    if let Some(column) = SavantColumn::of(&statcast) {
         return Column::Savant(column);
     }
     if let Some(key) = TEXT_KEYS.iter().find(|k| **k == name) {
@@ -603,6 +625,9 @@ fn read_cells(
             }
         };
         done?;
+    }
+    if let Some(direction) = savant.direction {
+        scene.launch.direction = Some(direction);
     }
     let park = setup.park.or(savant.park);
     if let Some(index) = park {

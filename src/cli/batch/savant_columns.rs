@@ -31,17 +31,26 @@ pub(super) enum SavantColumn {
     /// Measured hang time (s) and apex (ft), for `calibrate`'s lift.
     HangTime,
     Apex,
+    /// The launch direction measured at the bat (°, positive toward right
+    /// field, as Trackman's "Direction"): Statcast's older and Trackman's
+    /// files have it where Savant's exports have the hit coordinates.
+    ExitDirection,
 }
 
 impl SavantColumn {
-    pub(super) const ALL: [(&'static str, SavantColumn); 7] = [
+    /// Each column's names, lower case (a header's are matched in either
+    /// case); the first is the one named in messages.
+    pub(super) const ALL: [(&'static str, SavantColumn); 9] = [
         ("hc_x", SavantColumn::HcX),
         ("hc_y", SavantColumn::HcY),
         ("stand", SavantColumn::Stand),
         ("home_team", SavantColumn::HomeTeam),
         ("hit_distance_sc", SavantColumn::Distance),
+        // Statcast's older and Trackman's files (the 2018 set).
+        ("hit_distance", SavantColumn::Distance),
         ("hang_time", SavantColumn::HangTime),
         ("apex", SavantColumn::Apex),
+        ("exit_direction", SavantColumn::ExitDirection),
     ];
 
     pub(super) fn of(name: &str) -> Option<SavantColumn> {
@@ -158,6 +167,8 @@ pub(super) struct SavantCells {
     /// Hang time (s) and apex (m).
     pub hang_time: Option<f64>,
     pub apex: Option<f64>,
+    /// The launch direction (rad).
+    pub direction: Option<f64>,
 }
 
 impl SavantCells {
@@ -181,6 +192,7 @@ impl SavantCells {
             SavantColumn::Distance => self.distance = feet(),
             SavantColumn::HangTime => self.hang_time = measure(value, Quantity::Unchanged, |s| s),
             SavantColumn::Apex => self.apex = feet(),
+            SavantColumn::ExitDirection => self.direction = Some(number()?.to_radians()),
             SavantColumn::Stand => {
                 self.side = Some(match value {
                     "R" | "r" => Side::Right,
