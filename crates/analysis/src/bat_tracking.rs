@@ -263,7 +263,10 @@ impl Problem {
                     Second::SwingAngle => self.swing_angle_start(direction)?,
                     Second::ContactSpeed => self.contact_speed_start(direction)?,
                 };
-                self.newton(start).ok_or(Unreached::NoConvergence)?
+                match self.newton(start) {
+                    Some(x) => x,
+                    None => self.aim(start)?,
+                }
             }
         };
         let impact = self.impact(x);
@@ -406,6 +409,40 @@ impl Problem {
         Ok([undercut, v, direction])
     }
 
+    /// Near the most a swing gives, Newton's method in all unknowns can
+    /// fail (the speed's slope in ψ vanishes there): then the direction
+    /// alone is iterated (a secant), each step solving E and ψ (or V̂_B0)
+    /// at that direction as the start did.
+    fn aim(&self, start: [f64; 3]) -> Result<[f64; 3], Unreached> {
+        if !self.free_direction {
+            return Err(Unreached::NoConvergence);
+        }
+        let at = |direction: f64| match self.second {
+            Second::SwingAngle => self.swing_angle_start(direction),
+            Second::ContactSpeed => self.contact_speed_start(direction),
+        };
+        let miss = |x: [f64; 3]| self.impact(x).launch_direction() - self.target[2];
+        let (mut last, mut last_miss) = (start, miss(start));
+        let mut x = at(start[2] - last_miss)?;
+        for _ in 0..30 {
+            let now = miss(x);
+            if self.converged(&self.residual(x)) {
+                return Ok(x);
+            }
+            let slope = (now - last_miss) / (x[2] - last[2]);
+            let next = x[2]
+                - now
+                    / if slope.is_finite() && slope != 0.0 {
+                        slope
+                    } else {
+                        1.0
+                    };
+            (last, last_miss) = (x, now);
+            x = at(next)?;
+        }
+        Err(Unreached::NoConvergence)
+    }
+
     /// The residual (speed, angle, direction) at x; the direction's is 0
     /// when it is not an unknown.
     fn residual(&self, x: [f64; 3]) -> Vector3<f64> {
@@ -469,8 +506,20 @@ impl Problem {
         None
     }
 
+    /// E within reach, ψ within [`SWING_ANGLES`] (or V̂_B0 within
+    /// [`CONTACT_SPEEDS`] of the sweet spot's), the direction within ±90°.
     fn within_bounds(&self, x: [f64; 3]) -> bool {
-        x.iter().all(|v| v.is_finite()) && x[0].abs() < self.reach()
+        let second = match self.second {
+            Second::SwingAngle => SWING_ANGLES,
+            Second::ContactSpeed => {
+                let v = self.scene.bat.speed;
+                (CONTACT_SPEEDS.0 * v, CONTACT_SPEEDS.1 * v)
+            }
+        };
+        x.iter().all(|v| v.is_finite())
+            && x[0].abs() < self.reach()
+            && (second.0..=second.1).contains(&x[1])
+            && x[2].abs() < std::f64::consts::FRAC_PI_2
     }
 }
 
