@@ -77,13 +77,30 @@ pub struct SceneArgs {
 #[derive(Subcommand, Debug)]
 #[command(defer = true)]
 pub enum Command {
-    /// One swing: pitch, every impact quantity, flight summary.
+    /// One swing: pitch, every impact quantity, flight summary; --batch solves
+    /// the swing behind each tracked ball of a Savant export.
     Hit {
         #[command(flatten)]
         scene: SceneArgs,
-        /// Print JSON instead of text.
+        /// Print JSON instead of text (with --batch: one JSON object per line).
         #[arg(long)]
         json: bool,
+        /// A Savant export with bat tracking (`-` for stdin): each row's undercut,
+        /// swing angle and bat direction solved so that the paper's impact gives
+        /// its measured launch, then flown as `fly --batch` flies it
+        /// (docs/bat-tracking.md).
+        #[arg(long, value_name = "FILE")]
+        batch: Option<String>,
+        /// With --batch: the park every row is taken to, as `fly --park` [default:
+        /// each row's home_team].
+        #[arg(long, value_name = "PARK", requires = "batch")]
+        park: Option<String>,
+        /// With --batch: write the closing summary on stdout after the rows.
+        #[arg(long, requires = "batch")]
+        summary: bool,
+        /// With --batch: copy these input columns into the output, after the others.
+        #[arg(long, value_name = "COLS", requires = "batch")]
+        keep: Option<String>,
     },
     /// The batted ball's path: time, x, y and C_D, sampled evenly in time.
     Trajectory {

@@ -10,6 +10,7 @@ mod cli;
 mod common;
 mod fly;
 mod help;
+mod hit_batch;
 mod hit_json;
 mod hostile_files;
 mod optimize_park;

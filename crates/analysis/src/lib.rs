@@ -6,6 +6,7 @@
 //! (`bench`). Uses `model` and `numerics`; knows nothing of the CLI or the
 //! explorer.
 
+pub mod bat_tracking;
 pub mod bench;
 pub mod calibrate;
 pub mod figures;

@@ -26,6 +26,7 @@ pub mod park;
 pub mod pitch;
 pub mod scene;
 pub mod spin_estimate;
+pub mod tracked_pitch;
 
 use nalgebra::Vector2;
 

@@ -21,6 +21,7 @@ mod pieces;
 mod read;
 mod rows;
 mod savant_columns;
+mod swing_columns;
 
 pub use read::MAX_RECORD_BYTES;
 use read::{Fields, Lossy, Records, Stop};
@@ -78,7 +79,11 @@ pub(super) fn run(
     sinks: &mut Sinks,
 ) -> Result<Outcome, UsageError> {
     let work = Work {
-        what: "fly --batch",
+        what: if setup.swing_columns {
+            "hit --batch"
+        } else {
+            "fly --batch"
+        },
         steps: Some((progress::UNCOUNTED, "rows")),
     };
     if source == "-" {
@@ -123,6 +128,11 @@ pub(super) fn batch(
                 ));
             }
             header.keep(&setup.keep)?;
+            if setup.solve_swings {
+                header
+                    .read_swings()
+                    .map_err(|e| format!("line 1 (the header): {e}"))?;
+            }
             Some(header)
         }
         Err(e) => return Err(e),

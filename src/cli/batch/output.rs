@@ -71,10 +71,21 @@ const STATCAST_COLUMNS: [(&str, Quantity); 2] = [
 
 /// The CSV header line.
 pub(super) fn csv_header(statcast: bool, setup: &Setup, shown: Shown) -> String {
-    let mut names: Vec<String> = OUTPUT_COLUMNS
+    let swing = super::swing_columns::CSV_COLUMNS
+        .iter()
+        .copied()
+        .filter(|_| setup.swing_columns);
+    let mut names: Vec<String> = OUTPUT_COLUMNS[..1]
         .iter()
         .copied()
         .zip(OUTPUT_QUANTITIES)
+        .chain(swing)
+        .chain(
+            OUTPUT_COLUMNS[1..]
+                .iter()
+                .copied()
+                .zip(OUTPUT_QUANTITIES[1..].iter().copied()),
+        )
         .chain(STATCAST_COLUMNS.into_iter().filter(|_| statcast))
         .map(|(name, quantity)| shown.csv_key(name, quantity))
         .collect();
@@ -117,6 +128,34 @@ pub(super) struct CsvLine<'a> {
 }
 
 impl CsvLine<'_> {
+    /// A number of `quantity` to `si_decimals` in SI (about as fine in
+    /// the other system), and its comma; nothing for none.
+    pub(super) fn number(
+        &self,
+        out: &mut Vec<u8>,
+        quantity: Quantity,
+        si: Option<f64>,
+        decimals: usize,
+    ) {
+        if let Some(si) = si {
+            let decimals = self.shown.unit(quantity).decimals(decimals);
+            let start = out.len();
+            write_fixed(out, self.shown.convert(quantity, si), decimals);
+            // Outside SI, a number as its reader wrote it: 99.9 mph,
+            // not 99.9000 (trailing zeros trimmed, one decimal kept).
+            if !self.shown.is_si() && decimals > 1 {
+                let keep = out[start..]
+                    .iter()
+                    .rposition(|&b| b != b'0')
+                    .map_or(out.len(), |last| start + last + 1);
+                let point = out[start..].iter().position(|&b| b == b'.');
+                let keep = point.map_or(keep, |p| keep.max(start + p + 2));
+                out.truncate(keep);
+            }
+        }
+        out.push(b',');
+    }
+
     /// `judged`: with `--all-parks`, the row at each park, else empty.
     pub(super) fn write(
         &self,
@@ -126,28 +165,13 @@ impl CsvLine<'_> {
         judged: &[Clearing],
     ) {
         let (launch, flight) = (&flown.launch, &flown.flight);
-        // A number of `quantity` to `si_decimals` in SI (about as fine in
-        // the other system), and its comma; nothing for none.
         let number = |out: &mut Vec<u8>, quantity: Quantity, si: Option<f64>, decimals: usize| {
-            if let Some(si) = si {
-                let decimals = self.shown.unit(quantity).decimals(decimals);
-                let start = out.len();
-                write_fixed(out, self.shown.convert(quantity, si), decimals);
-                // Outside SI, a number as its reader wrote it: 99.9 mph,
-                // not 99.9000 (trailing zeros trimmed, one decimal kept).
-                if !self.shown.is_si() && decimals > 1 {
-                    let keep = out[start..]
-                        .iter()
-                        .rposition(|&b| b != b'0')
-                        .map_or(out.len(), |last| start + last + 1);
-                    let point = out[start..].iter().position(|&b| b == b'.');
-                    let keep = point.map_or(keep, |p| keep.max(start + p + 2));
-                    out.truncate(keep);
-                }
-            }
-            out.push(b',');
+            self.number(out, quantity, si, decimals)
         };
         let _ = write!(out, "{},", job.line);
+        if self.setup.swing_columns {
+            super::swing_columns::write_csv(self, out, job);
+        }
         number(out, Quantity::Speed, Some(launch.speed), 4);
         number(out, Quantity::Angle, Some(launch.angle), 6);
         number(out, Quantity::Spin, Some(launch.spin), 3);
@@ -212,15 +236,28 @@ struct JsonLine<'a> {
     direction_from: &'static str,
     fence: FenceJson<'a>,
     flight: FlightJson,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    impact: Option<ImpactJson<'a>>,
     /// The kept cells by column name: a repeated name's last cell.
     #[serde(skip_serializing_if = "Option::is_none")]
     kept: Option<BTreeMap<&'a str, &'a str>>,
     launch: LaunchJson,
     line: usize,
     parks: ParksJson<'a>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pitch: Option<PitchJson>,
+    /// Solving swings: why a row is not solved, and by how much speed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    reason: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    shortfall: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    solved: Option<bool>,
     spin_estimated: bool,
     #[serde(skip_serializing_if = "Option::is_none")]
     statcast: Option<StatcastJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    swing: Option<SwingJson>,
 }
 
 #[derive(Serialize)]
@@ -255,10 +292,15 @@ struct FlightJson {
 struct LaunchJson {
     angle: f64,
     direction: f64,
+    /// Out of a solved impact: the spin about the launch velocity.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    gyrospin: Option<f64>,
     sidespin: f64,
     speed: f64,
     spin: f64,
 }
+
+use super::swing_columns::{ImpactJson, PitchJson, SwingJson};
 
 #[derive(Serialize)]
 struct ParksJson<'a> {
@@ -281,6 +323,7 @@ pub(super) fn json_line(
     setup: &Setup,
 ) {
     let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.clearing);
+    let swing = super::swing_columns::json_parts(job);
     let parks = setup.parks.parks.iter().zip(cleared);
     let line = JsonLine {
         all_parks: setup.all_parks.then(|| {
@@ -317,6 +360,7 @@ pub(super) fn json_line(
         launch: LaunchJson {
             angle: launch.angle,
             direction: launch.direction,
+            gyrospin: swing.gyrospin,
             sidespin: launch.sidespin,
             speed: launch.speed,
             spin: launch.spin,
@@ -328,6 +372,12 @@ pub(super) fn json_line(
                 .map(|(park, _)| park.code.as_str())
                 .collect(),
         },
+        impact: swing.impact,
+        pitch: swing.pitch,
+        reason: swing.reason,
+        shortfall: swing.shortfall,
+        solved: swing.solved,
+        swing: swing.swing,
         spin_estimated: job.launch.estimates_spin(),
         direction_from: flown.direction_from.name(),
         statcast: job.statcast.map(|distance| StatcastJson {

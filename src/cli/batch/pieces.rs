@@ -16,6 +16,7 @@ use super::own_launch::SwingLaunches;
 use super::read::{Fields, Lossy, MAX_RECORD_BYTES, Read, Records};
 use super::rows::{Header, Job, Row, parse_row};
 use super::savant_columns::{Setup, Summary};
+use super::swing_columns::solve_row;
 use crate::cli::progress::Progress;
 
 /// Records a piece holds: small enough that a round's last pieces leave
@@ -164,6 +165,9 @@ impl Piece {
                 Row::Bad { line, reason } => self.failed.push((line, reason)),
                 Row::NoLaunch => self.without_launch += 1,
             }
+        }
+        if setup.solve_swings {
+            self.jobs.iter_mut().for_each(solve_row);
         }
         fly_chunk(&self.jobs, setup, &mut self.scratch, &mut self.flown);
         let csv = CsvLine {

@@ -16,6 +16,7 @@ use crate::units::{Quantity, UnitSystem};
 use super::own_launch::SwingLaunches;
 use super::read::Fields;
 use super::savant_columns::{SavantCells, SavantColumn, Setup};
+use super::swing_columns::{RowSwing, SwingCells, SwingColumn};
 
 /// How a column's values become a launch value in SI.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -171,6 +172,8 @@ pub(super) enum Column {
     Field(usize),
     /// A Savant column that is no key (hit coordinates, side, park, distance).
     Savant(SavantColumn),
+    /// Bat or pitch tracking, read when swings are solved.
+    Swing(SwingColumn),
     /// Not an input: ignored (Statcast's other 80-odd columns).
     Ignored,
 }
@@ -185,7 +188,7 @@ pub(super) struct Header {
     /// The columns `--keep` copies, by index (the first of a repeated name).
     pub(super) keep: Vec<usize>,
     /// The columns a row reads (all but the ignored), by index.
-    read: Vec<usize>,
+    pub(super) read: Vec<usize>,
     /// The launch columns, by index, and the launch speed's.
     launch: Vec<usize>,
     speed: Option<usize>,
@@ -230,7 +233,7 @@ impl Header {
                 }
                 Column::Savant(SavantColumn::ExitDirection) => Some("launch.direction"),
                 Column::Savant(c) => Some(c.name()),
-                Column::Ignored => None,
+                Column::Swing(_) | Column::Ignored => None,
             };
             if let Some(key) = key {
                 if let Some((_, first)) = given.iter().find(|(k, _)| *k == key) {
@@ -412,6 +415,9 @@ pub(super) struct Job {
     pub(super) kept: Vec<String>,
     /// Its hit coordinates are the plate's: it has no spray.
     pub(super) spray_at_plate: bool,
+    /// Its tracking cells, and (when swings are solved) its swing.
+    pub(super) tracked: SwingCells,
+    pub(super) swing: Option<RowSwing>,
     /// The air keys given, by `--set` and by the row: a park keeps them.
     pub(super) given: GivenWeather,
 }
@@ -505,6 +511,8 @@ pub(super) fn parse_row(
         apex: None,
         kept: Vec::new(),
         spray_at_plate: false,
+        tracked: SwingCells::default(),
+        swing: None,
         given: setup.given,
     });
     let job = jobs.last_mut().expect("a job just pushed");
@@ -543,6 +551,7 @@ fn read_cells(
         ..
     } = job;
     let mut savant = SavantCells::default();
+    let mut tracked = SwingCells::default();
     let (mut spin_given, mut sidespin_given) = (setup.spin_given, setup.sidespin_given);
     // One row is one source: ρ beside the weather is refused.
     let mut batch = InputBatch::new();
@@ -569,6 +578,7 @@ fn read_cells(
             }
             _ if value.is_empty() => Ok(()), // the preset's value
             Column::Savant(column) => savant.read(column, value, setup),
+            Column::Swing(column) => tracked.read(column, value),
             // A launch.* cell as `--set` takes it (`103mph`).
             Column::Launch(index, Unit::Si) => {
                 spin_given |= index == 2;
@@ -666,6 +676,7 @@ fn read_cells(
         estimate_sidespin: !spin_given && !sidespin_given,
     };
     job.park = park;
+    job.tracked = tracked;
     job.spray_at_plate = savant.at_plate() && !header.direction_given;
     (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);
     Ok(())

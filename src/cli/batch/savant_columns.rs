@@ -11,6 +11,7 @@ use crate::preset::parks::Parks;
 use crate::preset::{Preset, cut, escape_cut};
 
 use super::rows::{Header, Job, measure};
+use super::swing_columns::SwingTally;
 use crate::units::Quantity;
 
 /// Exactly 0.3048 m to the foot (Statcast's distances are in feet).
@@ -91,6 +92,11 @@ pub(in crate::cli) struct Setup<'a> {
     pub summary_to_stdout: bool,
     /// `--keep`'s column names.
     pub keep: Vec<String>,
+    /// Solve each row's swing from bat tracking and fly the impact's
+    /// launch where it is solved (`hit --batch`, `fly --batch --spin swing`).
+    pub solve_swings: bool,
+    /// Print the swing's columns (`hit --batch`).
+    pub swing_columns: bool,
     /// Whether the kept cells go to a terminal: their control characters
     /// are then escaped (a file or pipe gets them as read).
     pub escape_kept: bool,
@@ -142,6 +148,8 @@ impl<'a> Setup<'a> {
             all_parks: false,
             summary_to_stdout: false,
             keep: Vec::new(),
+            solve_swings: false,
+            swing_columns: false,
             escape_kept: false,
             code_fields: parks.parks.iter().map(|p| quoted(&p.code)).collect(),
         }
@@ -264,6 +272,8 @@ pub(super) struct Summary {
     pub at_generic: usize,
     /// Rows skipped for having no launch speed.
     pub without_speed: usize,
+    /// The rows' swings, when they are solved.
+    pub swings: SwingTally,
 }
 
 impl Summary {
@@ -287,6 +297,7 @@ impl Summary {
         }
         self.at_generic += other.at_generic;
         self.without_speed += other.without_speed;
+        self.swings.add(&other.swings);
     }
 
     /// Counts a row flown, whose direction took `flights` to solve and
@@ -298,7 +309,10 @@ impl Summary {
         (flights, from): (usize, DirectionFrom),
     ) {
         self.estimated += usize::from(job.launch.estimates_spin());
-        if job.launch.spray.is_some() {
+        // A solved swing's direction is the impact's (aimed at the spray).
+        let swung = job.swing.as_ref().is_some_and(|s| s.solved().is_some());
+        if swung {
+        } else if job.launch.spray.is_some() {
             self.sprayed += 1;
             self.solve_flights += flights;
             self.unsolved += usize::from(matches!(from, DirectionFrom::SprayUnsolved(_)));
@@ -311,12 +325,14 @@ impl Summary {
             Some(index) => self.at_park[index] += 1,
             None => self.at_generic += 1,
         }
+        self.swings.count(job);
     }
 
     /// "read launch_speed, …; spin estimated (Nathan's relation) on 239 of
     /// 239 rows; …": the line's text, if there is anything to say.
     pub(super) fn line(&self, used: &[&str], flown: usize, setup: &Setup) -> Option<String> {
         let mut parts = Vec::new();
+        parts.extend(self.swings.line());
         if !used.is_empty() {
             parts.push(format!("read {}", used.join(", ")));
         }

@@ -32,6 +32,16 @@ pub enum Regime {
     Slip,
 }
 
+impl Regime {
+    /// "stick" or "slip", as JSON has it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Regime::Stick => "stick",
+            Regime::Slip => "slip",
+        }
+    }
+}
+
 /// The two bodies as the impact sees them: the ball, and the bat at the
 /// contact (its effective mass and its roll about its own axis), with the
 /// constants of Eq. (11) and (13).

@@ -103,15 +103,31 @@ impl Impact3d {
     /// Solves the collision for a scene (assumed validated), in space
     /// whatever its bat.
     pub fn new(scene: &Scene) -> Impact3d {
+        let gravity = scene.environment.gravity;
+        let descent_angle = pitch::descent_angle(scene.pitch.speed, gravity);
+        let pitched = pitch::velocity_descending(scene.pitch.speed, descent_angle);
+        Impact3d::meeting(
+            scene,
+            Vector3::new(pitched.x, pitched.y, 0.0),
+            descent_angle,
+        )
+    }
+
+    /// The collision of a scene's swing with a pitch arriving at `velocity`
+    /// (flight frame, m/s) instead of the paper's pitch of Eq. (3)–(4): a
+    /// tracked pitch, which may also move sideways ([`crate::tracked_pitch`]).
+    /// `scene.pitch.speed` is not read; its spin is.
+    pub fn with_pitch(scene: &Scene, velocity: Vector3<f64>) -> Impact3d {
+        let descent_angle = (-velocity.y).atan2(velocity.x.hypot(velocity.z));
+        Impact3d::meeting(scene, velocity, descent_angle)
+    }
+
+    fn meeting(scene: &Scene, ball_velocity_before: Vector3<f64>, descent_angle: f64) -> Impact3d {
         let (ball, bat) = (scene.ball, scene.bat);
         // Eq. (1), square to the bat; the clamp only guards rounding.
         let normal_angle = (bat.undercut / scene.reach()).clamp(-1.0, 1.0).asin();
-        let gravity = scene.environment.gravity;
-        let descent_angle = pitch::descent_angle(scene.pitch.speed, gravity);
         let bat_frame = BatFrame::new(bat.tilt, bat.direction, bat.hand);
         let frame = ContactFrame::new(bat_frame, normal_angle, bat.hand);
-        let pitched = pitch::velocity_descending(scene.pitch.speed, descent_angle);
-        let ball_velocity_before = Vector3::new(pitched.x, pitched.y, 0.0);
         let ball_spin_before = Vector3::z() * scene.pitch.spin;
         let bat_velocity_before = bat_frame.velocity(bat.speed, bat.swing_angle);
         // Fig. 9's positive roll adds backspin: it turns about −n2.

@@ -1,0 +1,117 @@
+use super::*;
+use model::tracked_pitch::PitchFit;
+
+/// A 94-mph-ish four-seamer tracked as Statcast gives it.
+fn fastball() -> PitchAtPlate {
+    PitchFit {
+        velocity: [6.0, -137.0, -5.0],
+        acceleration: [-12.0, 29.0, -15.0],
+    }
+    .at_front_of_plate()
+    .unwrap()
+}
+
+/// The launch a known swing gives, as a tracked row would measure it.
+fn measured(
+    undercut: f64,
+    swing_angle: f64,
+    direction: f64,
+    hand: Hand,
+) -> (TrackedSwing, Impact3d) {
+    let mut scene = Scene::default();
+    let pitch = fastball();
+    let pitch = if hand == Hand::Left {
+        PitchAtPlate {
+            velocity: Vector3::new(pitch.velocity.x, pitch.velocity.y, -pitch.velocity.z),
+            ..pitch
+        }
+    } else {
+        pitch
+    };
+    scene.bat.speed = 31.0;
+    scene.bat.undercut = undercut;
+    scene.bat.swing_angle = swing_angle;
+    scene.bat.direction = direction;
+    scene.bat.hand = hand;
+    scene.pitch.spin = -230.0;
+    let impact = Impact3d::with_pitch(&scene, pitch.velocity);
+    let swing = TrackedSwing {
+        pitch,
+        pitch_spin: Some(-230.0),
+        bat_speed: 31.0,
+        attack_angle: None,
+        attack_direction: None,
+        tilt: None,
+        hand,
+        launch_speed: impact.launch_speed(),
+        launch_angle: impact.launch_angle(),
+        spray: Some(impact.launch_direction()),
+    };
+    (swing, impact)
+}
+
+#[test]
+fn a_known_swing_is_found_again() {
+    let (swing, impact) = measured(0.021, 0.22, -0.3, Hand::Right);
+    let answer = solve(&Scene::default(), &swing);
+    let solved = answer.solved.expect("solved");
+    let bat = solved.scene.bat;
+    assert!((bat.undercut - 0.021).abs() < 1e-8, "{}", bat.undercut);
+    assert!((bat.swing_angle - 0.22).abs() < 1e-7, "{}", bat.swing_angle);
+    assert!((bat.direction + 0.3).abs() < 1e-7, "{}", bat.direction);
+    assert!((solved.launch.spin - impact.launch_spin()).abs() < 1e-5);
+    assert!((solved.launch.speed - swing.launch_speed).abs() < 1e-9);
+    assert!((solved.launch.angle - swing.launch_angle).abs() < 1e-10);
+    // E = 0 is not quite the most: this swing meets the pitch head-on at
+    // E ≈ (r_b + r_B)·sin 0.15 ≈ 11 mm, so this ball beats it by 1.4 %.
+    let squared_up = solved.squared_up();
+    assert!((squared_up - 1.014).abs() < 0.001, "{squared_up}");
+    let q = (swing.launch_speed - 31.0) / (swing.pitch.speed() + 31.0);
+    assert_eq!(answer.collision_efficiency, q);
+}
+
+#[test]
+fn a_left_handed_batter_is_the_mirror_image() {
+    let (right, _) = measured(0.015, 0.12, 0.25, Hand::Right);
+    let (left, _) = measured(0.015, 0.12, -0.25, Hand::Left);
+    let r = solve(&Scene::default(), &right).solved.unwrap();
+    let l = solve(&Scene::default(), &left).solved.unwrap();
+    assert!((r.scene.bat.undercut - l.scene.bat.undercut).abs() < 1e-9);
+    assert!((r.scene.bat.swing_angle - l.scene.bat.swing_angle).abs() < 1e-8);
+    assert!((r.scene.bat.direction + l.scene.bat.direction).abs() < 1e-8);
+    assert!((r.launch.spin - l.launch.spin).abs() < 1e-5);
+    assert!((r.launch.sidespin + l.launch.sidespin).abs() < 1e-5);
+    assert!((r.scene.bat.direction - 0.25).abs() < 1e-7);
+}
+
+#[test]
+fn a_ball_faster_than_the_bat_can_hit_is_unreached_by_its_shortfall() {
+    let (mut swing, _) = measured(0.0, 0.1, 0.0, Hand::Right);
+    let most = swing.launch_speed;
+    swing.launch_speed = most + 3.0;
+    let answer = solve(&Scene::default(), &swing);
+    match answer.solved {
+        Err(Unreached::TooFast { shortfall }) => {
+            // At E = 0, ψ = 0.1 the swing is near head-on: the most at this
+            // angle is a little above it, so the shortfall a little below 3.
+            assert!(shortfall > 2.0 && shortfall < 3.0, "{shortfall}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn with_a_measured_attack_angle_the_contact_speed_is_solved() {
+    let (mut swing, _) = measured(0.018, 0.15, 0.0, Hand::Right);
+    swing.attack_angle = Some(0.15);
+    swing.attack_direction = Some(0.0);
+    swing.spray = None;
+    let solved = solve(&Scene::default(), &swing).solved.unwrap();
+    assert!(
+        (solved.scene.bat.speed - 31.0).abs() < 1e-7,
+        "{}",
+        solved.scene.bat.speed
+    );
+    assert!((solved.scene.bat.undercut - 0.018).abs() < 1e-8);
+    assert_eq!(solved.scene.bat.swing_angle, 0.15);
+}

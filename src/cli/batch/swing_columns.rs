@@ -1,0 +1,500 @@
+//! Bat tracking's columns (`hit --batch`, `fly --batch --spin swing`): the
+//! swing Statcast measured (`bat_speed`, and since 2025 `attack_angle`,
+//! `attack_direction`, `swing_path_tilt`) and the pitch's kinematics
+//! (`vx0` … `az`, `release_spin_rate`, `spin_axis`), read in their own
+//! units (mph, degrees, ft/s, ft/s², rpm) and made a
+//! [`TrackedSwing`] with the row's launch, spray and side.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use super::output::CsvLine;
+use super::rows::{Column, Header, Job};
+use super::savant_columns::quoted;
+use crate::analysis::bat_tracking::{
+    self, SolvedSwing, SwingAnswer, TrackedSwing, collision_efficiency,
+};
+use crate::analysis::savant::RowLaunch;
+use crate::model::scene::Hand;
+use crate::model::spin_estimate::Side;
+use crate::model::tracked_pitch::{PitchFit, topspin};
+use crate::preset::cut;
+use crate::units::{Quantity, UnitSystem};
+
+/// A bat-tracking or pitch-tracking column.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum SwingColumn {
+    BatSpeed,
+    AttackAngle,
+    AttackDirection,
+    SwingPathTilt,
+    /// vx0, vy0, vz0 (ft/s) by index.
+    Velocity(usize),
+    /// ax, ay, az (ft/s²) by index.
+    Acceleration(usize),
+    SpinRate,
+    SpinAxis,
+}
+
+/// Each column: its name, and the values it accepts (in its own unit).
+const COLUMNS: [(&str, SwingColumn, (f64, f64)); 12] = [
+    ("bat_speed", SwingColumn::BatSpeed, (0.0, 150.0)),
+    ("attack_angle", SwingColumn::AttackAngle, (-90.0, 90.0)),
+    (
+        "attack_direction",
+        SwingColumn::AttackDirection,
+        (-90.0, 90.0),
+    ),
+    ("swing_path_tilt", SwingColumn::SwingPathTilt, (-90.0, 90.0)),
+    ("vx0", SwingColumn::Velocity(0), (-100.0, 100.0)),
+    ("vy0", SwingColumn::Velocity(1), (-250.0, 0.0)),
+    ("vz0", SwingColumn::Velocity(2), (-100.0, 100.0)),
+    ("ax", SwingColumn::Acceleration(0), (-100.0, 100.0)),
+    ("ay", SwingColumn::Acceleration(1), (-100.0, 100.0)),
+    ("az", SwingColumn::Acceleration(2), (-100.0, 100.0)),
+    ("release_spin_rate", SwingColumn::SpinRate, (0.0, 5000.0)),
+    ("spin_axis", SwingColumn::SpinAxis, (0.0, 360.0)),
+];
+
+/// The columns a row needs for its swing to be solved.
+pub(super) const NEEDED: [&str; 7] = ["bat_speed", "vx0", "vy0", "vz0", "ax", "ay", "az"];
+
+impl SwingColumn {
+    pub(super) fn of(name: &str) -> Option<SwingColumn> {
+        COLUMNS
+            .iter()
+            .find(|(n, ..)| *n == name)
+            .map(|(_, c, _)| *c)
+    }
+
+    fn entry(self) -> (&'static str, (f64, f64)) {
+        let (name, _, range) = COLUMNS
+            .iter()
+            .find(|(_, c, _)| *c == self)
+            .expect("every column listed");
+        (name, *range)
+    }
+}
+
+/// What a row's tracking cells say, in their own units.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(super) struct SwingCells {
+    pub bat_speed: Option<f64>,
+    pub attack_angle: Option<f64>,
+    pub attack_direction: Option<f64>,
+    pub swing_path_tilt: Option<f64>,
+    pub velocity: [Option<f64>; 3],
+    pub acceleration: [Option<f64>; 3],
+    pub spin_rate: Option<f64>,
+    pub spin_axis: Option<f64>,
+}
+
+impl Header {
+    /// Reads bat and pitch tracking's columns too (when swings are solved:
+    /// `fly --batch` alone ignores them); the header must have those a
+    /// swing needs, and the launch's speed and angle.
+    pub(super) fn read_swings(&mut self) -> Result<(), String> {
+        for (i, name) in self.names.iter().enumerate() {
+            if let (Column::Ignored, Some(column)) = (self.columns[i], SwingColumn::of(name)) {
+                self.columns[i] = Column::Swing(column);
+                self.read.push(i);
+            }
+        }
+        self.read.sort_unstable();
+        let mut missing: Vec<&str> = NEEDED
+            .iter()
+            .copied()
+            .filter(|needed| !self.names.iter().any(|name| name == needed))
+            .collect();
+        for (index, name) in [(0, "launch_speed"), (1, "launch_angle")] {
+            if !self.has_launch(index) {
+                missing.push(name);
+            }
+        }
+        if missing.is_empty() {
+            return Ok(());
+        }
+        Err(format!(
+            "no {} column{}: a swing is solved from bat tracking (bat_speed), the pitch's \
+             kinematics (vx0, vy0, vz0, ax, ay, az) and the launch (launch_speed, launch_angle), \
+             as a Baseball Savant export since 2024 has them",
+            missing.join(", "),
+            if missing.len() == 1 { "" } else { "s" }
+        ))
+    }
+}
+
+/// Why a row with a launch has no swing to solve.
+pub(super) const NO_BAT_SPEED: &str = "no bat_speed (the swing was not tracked)";
+pub(super) const NO_PITCH: &str = "no pitch kinematics (vx0, vy0, vz0, ax, ay, az)";
+pub(super) const PITCH_SHORT: &str = "the pitch's kinematics never reach the plate";
+
+impl SwingCells {
+    /// Reads one (trimmed, non-empty) cell: a number in the column's range,
+    /// or the reason naming the field, the value and the range.
+    pub(super) fn read(&mut self, column: SwingColumn, value: &str) -> Result<(), String> {
+        let (name, (low, high)) = column.entry();
+        let number = value
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite() && (low..=high).contains(v))
+            .ok_or_else(|| {
+                format!(
+                    "{name} = {:?}: expected a number from {low} to {high}",
+                    cut(value, 80)
+                )
+            })?;
+        let slot = match column {
+            SwingColumn::BatSpeed => &mut self.bat_speed,
+            SwingColumn::AttackAngle => &mut self.attack_angle,
+            SwingColumn::AttackDirection => &mut self.attack_direction,
+            SwingColumn::SwingPathTilt => &mut self.swing_path_tilt,
+            SwingColumn::Velocity(i) => &mut self.velocity[i],
+            SwingColumn::Acceleration(i) => &mut self.acceleration[i],
+            SwingColumn::SpinRate => &mut self.spin_rate,
+            SwingColumn::SpinAxis => &mut self.spin_axis,
+        };
+        *slot = Some(number);
+        Ok(())
+    }
+
+    /// The row's tracked swing in SI, given its measured launch (m/s,
+    /// rad), spray (rad) and side; or why it has none.
+    pub(super) fn swing(
+        &self,
+        (launch_speed, launch_angle): (f64, f64),
+        spray: Option<f64>,
+        side: Option<Side>,
+    ) -> Result<TrackedSwing, &'static str> {
+        let bat_speed = self.bat_speed.ok_or(NO_BAT_SPEED)?;
+        let all = |v: [Option<f64>; 3]| Some([v[0]?, v[1]?, v[2]?]);
+        let fit = PitchFit {
+            velocity: all(self.velocity).ok_or(NO_PITCH)?,
+            acceleration: all(self.acceleration).ok_or(NO_PITCH)?,
+        };
+        let pitch = fit.at_front_of_plate().ok_or(PITCH_SHORT)?;
+        let hand = match side {
+            Some(Side::Left) => Hand::Left,
+            _ => Hand::Right,
+        };
+        let degrees = |d: f64| Quantity::Angle.unit(UnitSystem::Imperial, "").read(d);
+        let mph = Quantity::Speed.unit(UnitSystem::Imperial, "");
+        Ok(TrackedSwing {
+            pitch,
+            pitch_spin: self
+                .spin_rate
+                .zip(self.spin_axis)
+                .map(|(r, a)| topspin(r, a)),
+            // Statcast's sweet-spot speed taken as the paper's V̂_B0 at the
+            // contact (analysis::bat_tracking says why).
+            bat_speed: mph.read(bat_speed),
+            attack_angle: self.attack_angle.map(degrees),
+            // Savant's attack direction is positive toward the opposite
+            // field: right field for a right-handed batter.
+            attack_direction: self.attack_direction.map(|d| degrees(d) * hand.sign()),
+            tilt: self.swing_path_tilt.map(degrees),
+            hand,
+            launch_speed,
+            launch_angle,
+            spray,
+        })
+    }
+}
+
+/// A row's swing: the tracked one (or why it has none) and the solve's
+/// answer.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct RowSwing {
+    pub tracked: Result<TrackedSwing, &'static str>,
+    pub answer: Option<SwingAnswer>,
+}
+
+impl RowSwing {
+    /// The solved swing, if any.
+    pub(super) fn solved(&self) -> Option<&SolvedSwing> {
+        self.answer.as_ref().and_then(|a| a.solved.as_ref().ok())
+    }
+
+    /// Why the row has no solved swing.
+    pub(super) fn reason(&self) -> Option<String> {
+        match (&self.tracked, &self.answer) {
+            (Err(why), _) => Some((*why).to_owned()),
+            (Ok(_), Some(answer)) => answer.solved.err().map(|e| e.to_string()),
+            (Ok(_), None) => None,
+        }
+    }
+
+    /// The model's missing exit speed (m/s), where speed is the trouble.
+    pub(super) fn shortfall(&self) -> Option<f64> {
+        self.answer?.solved.err()?.shortfall()
+    }
+
+    /// The model's own q at E = 0 for the solved swing.
+    pub(super) fn model_efficiency(&self) -> Option<f64> {
+        let tracked = self.tracked.ok()?;
+        let solved = self.solved()?;
+        Some(collision_efficiency(
+            solved.max_exit_speed,
+            tracked.pitch.speed(),
+            solved.scene.bat.speed,
+        ))
+    }
+}
+
+/// Solves the row's swing (when it has a tracked one) and, solved, gives
+/// its flight the impact's launch: the measured speed and angle, and the
+/// impact's direction, backspin and sidespin (nothing estimated). A row
+/// not solved keeps what `fly --batch` makes of it.
+pub(super) fn solve_row(job: &mut Job) {
+    let launch = job.scene.launch;
+    let measured = (
+        launch.speed.unwrap_or(f64::NAN),
+        launch.angle.unwrap_or(f64::NAN),
+    );
+    let tracked = job
+        .tracked
+        .swing(measured, job.launch.spray, job.launch.side);
+    let answer = tracked
+        .ok()
+        .map(|swing| bat_tracking::solve(&job.scene, &swing));
+    if let Some(solved) = answer.as_ref().and_then(|a| a.solved.as_ref().ok()) {
+        let given = &mut job.scene.launch;
+        let out = solved.launch;
+        (given.speed, given.angle) = (Some(out.speed), Some(out.angle));
+        (given.spin, given.sidespin) = (Some(out.spin), Some(out.sidespin));
+        given.direction = Some(out.direction);
+        job.launch = RowLaunch {
+            spray: None,
+            side: job.launch.side,
+            estimate_backspin: false,
+            estimate_sidespin: false,
+        };
+    }
+    job.swing = Some(RowSwing { tracked, answer });
+}
+
+/// The swing's CSV columns, after `line` (`hit --batch`).
+pub(super) const CSV_COLUMNS: [(&str, Quantity); 14] = [
+    ("solved", Quantity::Unchanged),
+    ("reason", Quantity::Unchanged),
+    ("shortfall", Quantity::Speed),
+    ("pitch.speed", Quantity::Speed),
+    ("pitch.descent_angle", Quantity::Angle),
+    ("swing.speed", Quantity::Speed),
+    ("swing.angle", Quantity::Angle),
+    ("swing.direction", Quantity::Angle),
+    ("impact.undercut", Quantity::Size),
+    ("impact.regime", Quantity::Unchanged),
+    ("impact.collision_efficiency", Quantity::Unchanged),
+    ("impact.max_exit_speed", Quantity::Speed),
+    ("impact.squared_up", Quantity::Unchanged),
+    ("launch.gyrospin", Quantity::Spin),
+];
+
+/// Writes a row's swing columns (each with its comma).
+pub(super) fn write_csv(csv: &CsvLine, out: &mut Vec<u8>, job: &Job) {
+    let Some(swing) = &job.swing else {
+        out.extend_from_slice(&[b','; CSV_COLUMNS.len()]);
+        return;
+    };
+    let solved = swing.solved();
+    out.extend_from_slice(if solved.is_some() {
+        b"true,"
+    } else {
+        b"false,"
+    });
+    let reason = swing.reason().unwrap_or_default();
+    out.extend_from_slice(quoted(&reason).as_bytes());
+    out.push(b',');
+    csv.number(out, Quantity::Speed, swing.shortfall(), 4);
+    let pitch = swing.tracked.ok().map(|t| t.pitch);
+    csv.number(out, Quantity::Speed, pitch.map(|p| p.speed()), 4);
+    csv.number(out, Quantity::Angle, pitch.map(|p| p.descent_angle()), 6);
+    let bat = solved.map(|s| s.scene.bat);
+    csv.number(out, Quantity::Speed, bat.map(|b| b.speed), 4);
+    csv.number(out, Quantity::Angle, bat.map(|b| b.swing_angle), 6);
+    csv.number(out, Quantity::Angle, bat.map(|b| b.direction), 6);
+    csv.number(out, Quantity::Size, bat.map(|b| b.undercut), 6);
+    if let Some(solved) = solved {
+        out.extend_from_slice(solved.regime.name().as_bytes());
+    }
+    out.push(b',');
+    let q = swing.answer.map(|a| a.collision_efficiency);
+    csv.number(out, Quantity::Unchanged, q, 5);
+    csv.number(out, Quantity::Speed, solved.map(|s| s.max_exit_speed), 4);
+    csv.number(out, Quantity::Unchanged, solved.map(|s| s.squared_up()), 5);
+    csv.number(out, Quantity::Spin, solved.map(|s| s.launch.gyrospin), 3);
+}
+
+#[derive(Serialize)]
+pub(super) struct ImpactJson<'a> {
+    collision_efficiency: Option<f64>,
+    max_exit_speed: Option<f64>,
+    regime: Option<&'a str>,
+    squared_up: Option<f64>,
+    undercut: Option<f64>,
+}
+
+#[derive(Serialize)]
+pub(super) struct PitchJson {
+    descent_angle: f64,
+    speed: f64,
+}
+
+#[derive(Serialize)]
+pub(super) struct SwingJson {
+    angle: f64,
+    direction: f64,
+    speed: f64,
+}
+
+/// The swing's parts of a row's JSON line (all `None` unless swings are
+/// printed).
+#[derive(Default)]
+pub(super) struct JsonParts<'a> {
+    pub impact: Option<ImpactJson<'a>>,
+    pub pitch: Option<PitchJson>,
+    pub reason: Option<String>,
+    pub shortfall: Option<f64>,
+    pub solved: Option<bool>,
+    pub swing: Option<SwingJson>,
+    pub gyrospin: Option<f64>,
+}
+
+pub(super) fn json_parts(job: &Job) -> JsonParts<'static> {
+    let Some(swing) = &job.swing else {
+        return JsonParts::default();
+    };
+    let solved = swing.solved();
+    JsonParts {
+        impact: Some(ImpactJson {
+            collision_efficiency: swing.answer.map(|a| a.collision_efficiency),
+            max_exit_speed: solved.map(|s| s.max_exit_speed),
+            regime: solved.map(|s| s.regime.name()),
+            squared_up: solved.map(|s| s.squared_up()),
+            undercut: solved.map(|s| s.scene.bat.undercut),
+        }),
+        pitch: swing.tracked.ok().map(|t| PitchJson {
+            descent_angle: t.pitch.descent_angle(),
+            speed: t.pitch.speed(),
+        }),
+        reason: swing.reason(),
+        shortfall: swing.shortfall(),
+        solved: Some(solved.is_some()),
+        swing: solved.map(|s| SwingJson {
+            angle: s.scene.bat.swing_angle,
+            direction: s.scene.bat.direction,
+            speed: s.scene.bat.speed,
+        }),
+        gyrospin: solved.map(|s| s.launch.gyrospin),
+    }
+}
+
+/// What the rows' swings came to, for the batch's summary line.
+#[derive(Clone, Debug, Default)]
+pub(super) struct SwingTally {
+    /// Rows without a tracked swing, by reason.
+    pub untracked: BTreeMap<&'static str, usize>,
+    /// Tracked rows not solved, by reason.
+    pub unsolved: BTreeMap<String, usize>,
+    /// q from the data on every tracked row; the model's at E = 0 and the
+    /// undercut (m) on each solved one.
+    pub data_efficiency: Vec<f64>,
+    pub model_efficiency: Vec<f64>,
+    pub undercuts: Vec<f64>,
+}
+
+impl SwingTally {
+    pub(super) fn count(&mut self, job: &Job) {
+        let Some(swing) = &job.swing else { return };
+        match &swing.tracked {
+            Err(why) => *self.untracked.entry(why).or_default() += 1,
+            Ok(_) => {
+                let answer = swing.answer.expect("a tracked swing is answered");
+                self.data_efficiency.push(answer.collision_efficiency);
+                match (swing.solved(), swing.model_efficiency()) {
+                    (Some(solved), Some(q)) => {
+                        self.model_efficiency.push(q);
+                        self.undercuts.push(solved.scene.bat.undercut);
+                    }
+                    _ => {
+                        let reason = swing.reason().unwrap_or_default();
+                        *self.unsolved.entry(reason).or_default() += 1;
+                    }
+                }
+            }
+        }
+    }
+
+    pub(super) fn add(&mut self, other: &SwingTally) {
+        for (why, n) in &other.untracked {
+            *self.untracked.entry(why).or_default() += n;
+        }
+        for (why, n) in &other.unsolved {
+            *self.unsolved.entry(why.clone()).or_default() += n;
+        }
+        self.data_efficiency
+            .extend_from_slice(&other.data_efficiency);
+        self.model_efficiency
+            .extend_from_slice(&other.model_efficiency);
+        self.undercuts.extend_from_slice(&other.undercuts);
+    }
+
+    /// "swings: solved 16627 of 17436 tracked (95.4 %); q median 0.132,
+    /// 99th percentile 0.235 (data), 0.207 (model at E = 0); undercut
+    /// median 18.7 mm (IQR −4.8 to 31.7); not solved: …", or `None`
+    /// without swings.
+    pub(super) fn line(&self) -> Option<String> {
+        let tracked = self.data_efficiency.len();
+        let untracked: usize = self.untracked.values().sum();
+        if tracked + untracked == 0 {
+            return None;
+        }
+        let solved = self.undercuts.len();
+        let mut line = format!(
+            "swings: solved {solved} of {tracked} tracked ({:.1} %)",
+            100.0 * solved as f64 / tracked.max(1) as f64
+        );
+        if tracked > 0 {
+            let data = percentiles(&self.data_efficiency, &[0.5, 0.99]);
+            let _ = write!(
+                line,
+                "; q median {:.3}, 99th percentile {:.3} (data)",
+                data[0], data[1]
+            );
+        }
+        if solved > 0 {
+            let model = percentiles(&self.model_efficiency, &[0.5, 0.99]);
+            let e = percentiles(&self.undercuts, &[0.25, 0.5, 0.75]);
+            let _ = write!(
+                line,
+                ", median {:.3}, 99th {:.3} (model at E = 0, solved rows); undercut median {:.1} mm (quartiles {:.1}, {:.1})",
+                model[0],
+                model[1],
+                e[1] * 1e3,
+                e[0] * 1e3,
+                e[2] * 1e3
+            );
+        }
+        let reasons: Vec<String> = (self.unsolved.iter().map(|(why, n)| format!("{n} {why}")))
+            .chain(self.untracked.iter().map(|(why, n)| format!("{n} {why}")))
+            .collect();
+        if !reasons.is_empty() {
+            let _ = write!(line, "; not solved: {}", reasons.join(", "));
+        }
+        Some(line)
+    }
+}
+
+/// The `quantiles` of `values` (not empty), by the nearest rank.
+pub(super) fn percentiles(values: &[f64], quantiles: &[f64]) -> Vec<f64> {
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let last = sorted.len() - 1;
+    quantiles
+        .iter()
+        .map(|q| sorted[(q * last as f64).round() as usize])
+        .collect()
+}
