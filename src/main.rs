@@ -17,6 +17,7 @@ fn main() -> ExitCode {
     };
     let default = Command::Tui {
         preset: "fastball".to_owned(),
+        savant: None,
         theme: None,
     };
     let command = cli.command.as_ref().unwrap_or(&default);
@@ -28,9 +29,12 @@ fn main() -> ExitCode {
         return refuse(&cli::UsageError::StdoutClosed);
     }
     let result = match command {
-        Command::Tui { preset, theme } => {
-            explore(&cli, preset, theme.or(cli.theme)).map(|()| ExitCode::SUCCESS)
-        }
+        Command::Tui {
+            preset,
+            savant,
+            theme,
+        } => explore(&cli, (preset, savant.as_deref()), theme.or(cli.theme))
+            .map(|()| ExitCode::SUCCESS),
         command => cli::run(&cli, command),
     };
     match result {
@@ -45,17 +49,23 @@ fn refuse(error: &cli::UsageError) -> ExitCode {
     ExitCode::from(2)
 }
 
-/// Opens the explorer on `preset`, with the user's (or `--presets-dir`'s)
-/// folder and parks (or `--parks-dir`'s), in the colours for `background` (`None`: detected).
+/// Opens the explorer on `preset` (and with `--savant FILE`, a picker of
+/// that file's solved swings), with the user's (or `--presets-dir`'s)
+/// folder and parks (or `--parks-dir`'s), in the colours for `background`
+/// (`None`: detected).
 fn explore(
     cli: &Cli,
-    preset: &str,
+    (preset, savant): (&str, Option<&str>),
     background: Option<homerun::tui::theme::Background>,
 ) -> Result<(), cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
+    let swings = match savant {
+        Some(file) => cli::savant_swings(cli, &preset, file)?,
+        None => Vec::new(),
+    };
     let parks = cli::parks_dir(cli);
     Ok(homerun::tui::run(
-        preset,
+        (preset, swings),
         (dir, parks),
         cli.units,
         background,

@@ -330,6 +330,11 @@ pub enum Command {
         /// The preset to start from.
         #[arg(long, short, value_name = "P", default_value = "fastball")]
         preset: String,
+        /// A Savant export with bat tracking: each row's swing solved (as `hit
+        /// --batch`), and a picker of them (batter, date, measured launch) to open
+        /// one as the scene.
+        #[arg(long, value_name = "FILE")]
+        savant: Option<String>,
         /// The colours: dark or light, for the terminal's background
         /// (default: from COLORFGBG, else dark). NO_COLOR turns colour off.
         #[arg(long, value_name = "THEME")]

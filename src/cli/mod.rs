@@ -38,6 +38,34 @@ pub use surface::{MAX_GRID, SURFACE_FLIGHT_STEPS};
 pub use threads::{MAX_THREADS, check_thread_count};
 pub use usage::{Parsed, error_line, parse};
 
+/// `tui --savant FILE`: the file's solved swings as presets for the
+/// explorer's picker (from `preset`'s ball and bat), with a note of how
+/// many were solved. None solved is refused: there would be nothing to pick.
+pub fn savant_swings(cli: &Cli, preset: &Preset, file: &str) -> Result<Vec<Preset>, UsageError> {
+    scene::check_path("--savant", file)?;
+    let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
+    let mut setup = batch::Setup::for_command(preset, &parks, &[], None)?;
+    let failed = |message: String| UsageError::Savant {
+        input: crate::preset::escape_cut(file, 200),
+        message,
+    };
+    let swings =
+        batch::swing_scenes::solved_swings(&mut setup, file, Shown(cli.units)).map_err(failed)?;
+    if swings.presets.is_empty() {
+        return Err(failed(format!(
+            "no swing solved in {} rows ({} tracked but not solved)",
+            swings.rows, swings.unsolved
+        )));
+    }
+    eprintln!(
+        "homerun: {} swings solved of {} rows ({} tracked but not solved)",
+        swings.presets.len(),
+        swings.rows,
+        swings.unsolved
+    );
+    Ok(swings.presets)
+}
+
 /// The user's preset folder: `--presets-dir` or the XDG default.
 pub fn presets_dir(cli: &Cli) -> Option<PathBuf> {
     cli.presets_dir.clone().or_else(preset::user_dir)

@@ -120,6 +120,8 @@ pub enum UsageError {
     /// `calibrate FILE`'s file could not be read or fitted (named as given).
     #[error("calibrate {input}: {message}")]
     Calibrate { input: String, message: String },
+    #[error("tui --savant {input}: {message}")]
+    Savant { input: String, message: String },
     #[error("calibrate --save {name}: {message}")]
     CalibrateSave { name: String, message: String },
     #[error("no park named {code:?} (a code, a park's name or its city); the parks: {accepted}")]

@@ -496,3 +496,47 @@ fn a_unit_switch_keeps_the_optimum_and_recomputes_only_the_deltas() {
     let gain = app.swing_gains[k].unwrap().value.unwrap();
     assert!(gain > 0.0 && gain < si_gain, "{gain} vs {si_gain}");
 }
+
+/// Issue 27 item 5: `tui --savant FILE` offers the file's swings first in
+/// the picker, open at start on the first; Enter loads one as the scene
+/// (its name on the preset row), and `o` offers them again.
+#[test]
+fn a_savant_files_swings_open_first_in_the_picker() {
+    let mut app = app(80, 24, None);
+    let mut swing = homerun::preset::load("fastball", None).unwrap();
+    swing.name = "Turang 04-03".to_owned();
+    swing.description = "line 4, 2024-04-03: measured 78.5 mph at 32.0°".to_owned();
+    swing.scene.bat.undercut = 0.0338;
+    swing.scene.bat.tilt = 0.4;
+    let other = homerun::preset::Preset {
+        name: "Correa 04-03".to_owned(),
+        ..swing.clone()
+    };
+    app.offer_swings(vec![swing.clone(), other]);
+    let Mode::Open {
+        items, selected, ..
+    } = &app.mode
+    else {
+        panic!("the picker is open at start")
+    };
+    assert_eq!(*selected, 0);
+    let names: Vec<&str> = items.iter().map(|i| i.name.as_str()).collect();
+    assert_eq!(names[..3], ["Turang 04-03", "Correa 04-03", "fastball"]);
+    assert!(items[0].detail.starts_with("line 4, 2024-04-03"));
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_eq!(app.preset_name, "Turang 04-03");
+    assert_eq!(app.scene, swing.scene);
+    key(&mut app, KeyCode::Char('o'));
+    let Mode::Open {
+        items, selected, ..
+    } = &app.mode
+    else {
+        panic!("the picker is open")
+    };
+    assert_eq!((items[0].name.as_str(), *selected), ("Turang 04-03", 0));
+    // No swings: nothing opens.
+    let mut plain = crate::tui_support::app(80, 24, None);
+    plain.offer_swings(Vec::new());
+    assert!(matches!(plain.mode, Mode::Normal));
+}

@@ -199,6 +199,8 @@ pub struct App {
     pub scene: Scene,
     pub fence: Option<Fence>,
     pub presets_dir: Option<PathBuf>,
+    /// Swings of a Savant export (`tui --savant`), first in the picker.
+    pub swings: Vec<Preset>,
     pub fields: Vec<Field>,
     pub selected: usize,
     pub mode: Mode,
@@ -312,6 +314,7 @@ impl App {
             scene: preset.scene,
             fence: preset.fence,
             presets_dir,
+            swings: Vec::new(),
             fields,
             selected,
             mode: Mode::Normal,

@@ -106,7 +106,7 @@ impl Drop for Restore {
 /// under `NO_COLOR`. `m`/`M` go through the bundled parks and the user's
 /// from `parks_dir`.
 pub fn run(
-    preset: Preset,
+    (preset, swings): (Preset, Vec<Preset>),
     (presets_dir, parks_dir): (Option<PathBuf>, Option<PathBuf>),
     units: units::UnitSystem,
     background: Option<Background>,
@@ -136,6 +136,7 @@ pub fn run(
     );
     app.set_units(units);
     app.load_parks(parks_dir.as_deref());
+    app.offer_swings(swings);
     let worker = Worker::spawn();
     watch_for_hang_up()?;
 

@@ -10,8 +10,8 @@ use std::path::Path;
 use rayon::prelude::*;
 
 use super::pieces::PIECE_ROWS;
-use super::read::{Fields, Lossy, MAX_RECORD_BYTES, Records};
-use super::rows::{Header, Job, Row, parse_row};
+use super::read::{MAX_RECORD_BYTES, Records};
+use super::rows::{Header, Job, Row};
 use super::savant_columns::{SavantColumn, Setup};
 use crate::analysis::calibrate::{self, Errors, Fit, Measured};
 use crate::analysis::precision::Purpose;
@@ -250,29 +250,15 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
         None => return Err("the input is empty".to_owned()),
     };
     header.keep(&setup.keep)?;
-    let mut jobs = Vec::new();
-    let mut skipped = 0;
-    let mut rows = 0;
-    let (mut bytes, mut ends, mut lossy) = (Vec::new(), Vec::new(), Lossy::default());
-    loop {
-        bytes.clear();
-        ends.clear();
-        match records.next(&mut bytes, &mut ends, true) {
-            Ok(None) => break,
-            Ok(Some(read)) if read.too_long => skipped += 1,
-            Ok(Some(read)) => {
-                let fields = Fields::of(&bytes, &ends, &mut lossy);
-                match parse_row(&header, setup, (read.line, fields), None, &mut jobs) {
-                    Row::Job => rows += 1,
-                    Row::Bad { .. } | Row::NoLaunch => {
-                        rows += 1;
-                        skipped += 1;
-                    }
-                }
-            }
-            Err(stop) => return Err(stop.to_string()),
+    let (mut skipped, mut rows) = (0, 0);
+    let jobs = super::parse_all(&mut records, &header, setup, |row| match row {
+        None => skipped += 1,
+        Some(Row::Job) => rows += 1,
+        Some(Row::Bad { .. } | Row::NoLaunch) => {
+            rows += 1;
+            skipped += 1;
         }
-    }
+    })?;
     let options = Purpose::Solve.flight_options();
     let sprayed = header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY);
 

@@ -22,6 +22,7 @@ mod read;
 mod rows;
 mod savant_columns;
 mod swing_columns;
+pub(super) mod swing_scenes;
 
 pub use read::MAX_RECORD_BYTES;
 use read::{Fields, Lossy, Records, Stop};
@@ -257,6 +258,38 @@ pub(super) fn batch(
         ));
     }
     Ok(outcome)
+}
+
+/// Every remaining record of `records` parsed into jobs, as `calibrate`
+/// and `tui --savant` read a file whole (no pieces, no flights); `seen` is
+/// told of each row: `None` for one too long, else what it came to.
+fn parse_all<R: BufRead>(
+    records: &mut Records<R>,
+    header: &rows::Header,
+    setup: &Setup,
+    mut seen: impl FnMut(Option<rows::Row>),
+) -> Result<Vec<rows::Job>, String> {
+    let mut jobs = Vec::new();
+    let (mut bytes, mut ends, mut lossy) = (Vec::new(), Vec::new(), read::Lossy::default());
+    loop {
+        bytes.clear();
+        ends.clear();
+        match records.next(&mut bytes, &mut ends, true) {
+            Ok(None) => return Ok(jobs),
+            Ok(Some(read)) if read.too_long => seen(None),
+            Ok(Some(read)) => {
+                let fields = read::Fields::of(&bytes, &ends, &mut lossy);
+                seen(Some(rows::parse_row(
+                    header,
+                    setup,
+                    (read.line, fields),
+                    None,
+                    &mut jobs,
+                )));
+            }
+            Err(stop) => return Err(stop.to_string()),
+        }
+    }
 }
 
 /// The header's names (a byte-order mark dropped), `None` for an empty

@@ -99,33 +99,57 @@ impl App {
             .map_err(|e| format!("not saved: {e}"))
     }
 
+    /// Offers `swings` (a Savant export's, solved) at the top of the
+    /// picker, and opens it on the first of them.
+    pub fn offer_swings(&mut self, swings: Vec<Preset>) {
+        if swings.is_empty() {
+            return;
+        }
+        self.swings = swings;
+        self.open_picker();
+        if let Mode::Open { selected, .. } = &mut self.mode {
+            *selected = 0;
+        }
+    }
+
     pub(super) fn open_picker(&mut self) {
-        let items: Vec<PickItem> = preset::list(self.presets_dir.as_deref())
-            .into_iter()
-            .map(|entry| match entry {
-                Ok(p) => PickItem {
-                    name: p.name.clone(),
-                    detail: match &p.source {
-                        Source::Bundled
-                            if preset::user_file(&p.name, self.presets_dir.as_deref())
-                                .is_some() =>
-                        {
-                            format!("{} (bundled; hidden by yours of that name)", p.description)
-                        }
-                        Source::Bundled => format!("{} (bundled)", p.description),
-                        Source::File(_) if preset::is_bundled(&p.name) => {
-                            format!("{} (yours; hides the bundled one)", p.description)
-                        }
-                        Source::File(_) => p.description.clone(),
-                    },
-                    preset: Some(p),
-                },
-                Err(e) => PickItem {
-                    name: broken_name(&e),
-                    detail: format!("broken: {e}"),
-                    preset: None,
-                },
-            })
+        let swings = self.swings.iter().map(|p| PickItem {
+            name: p.name.clone(),
+            detail: p.description.clone(),
+            preset: Some(p.clone()),
+        });
+        let items: Vec<PickItem> = swings
+            .chain(
+                preset::list(self.presets_dir.as_deref())
+                    .into_iter()
+                    .map(|entry| match entry {
+                        Ok(p) => PickItem {
+                            name: p.name.clone(),
+                            detail: match &p.source {
+                                Source::Bundled
+                                    if preset::user_file(&p.name, self.presets_dir.as_deref())
+                                        .is_some() =>
+                                {
+                                    format!(
+                                        "{} (bundled; hidden by yours of that name)",
+                                        p.description
+                                    )
+                                }
+                                Source::Bundled => format!("{} (bundled)", p.description),
+                                Source::File(_) if preset::is_bundled(&p.name) => {
+                                    format!("{} (yours; hides the bundled one)", p.description)
+                                }
+                                Source::File(_) => p.description.clone(),
+                            },
+                            preset: Some(p),
+                        },
+                        Err(e) => PickItem {
+                            name: broken_name(&e),
+                            detail: format!("broken: {e}"),
+                            preset: None,
+                        },
+                    }),
+            )
             .collect();
         let selected = items
             .iter()

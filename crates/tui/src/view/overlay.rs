@@ -94,8 +94,14 @@ pub fn open(
     // Each description fitted at words to its row ("…" where words are
     // left over); the selected one's is shown whole under the list.
     let detail_width = (list_area.width as usize).saturating_sub(2 + 14);
+    // Only the rows in view are made: a Savant export's swings are
+    // thousands (`tui --savant`).
+    let height = (list_area.height as usize).max(1);
+    let offset = (selected + 1).saturating_sub(height);
     let list: Vec<ListItem> = items
         .iter()
+        .skip(offset)
+        .take(height)
         .map(|item| {
             let style = if item.preset.is_some() {
                 theme.plain
@@ -115,7 +121,7 @@ pub fn open(
             ListItem::new(Line::from(spans))
         })
         .collect();
-    let mut state = ListState::default().with_selected(Some(selected));
+    let mut state = ListState::default().with_selected(Some(selected - offset));
     frame.render_stateful_widget(
         List::new(list)
             .highlight_style(theme.selected)
