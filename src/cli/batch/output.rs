@@ -566,14 +566,20 @@ fn write_fixed(out: &mut Vec<u8>, value: f64, decimals: usize) {
     match scaled {
         Some(scaled) if scaled.abs() < 9.0e15 && clear_of_a_tie(scaled) => {
             let scaled = scaled.round();
-            let sign = if value.is_sign_negative() { "-" } else { "" };
+            if value.is_sign_negative() {
+                out.push(b'-');
+            }
             let digits = scaled.abs() as u64;
             let unit = 10u64.pow(decimals as u32);
-            if decimals == 0 {
-                let _ = write!(out, "{sign}{digits}");
-            } else {
-                let (whole, part) = (digits / unit, digits % unit);
-                let _ = write!(out, "{sign}{whole}.{part:0decimals$}");
+            // The integers by `itoa` (serde_json's own): `write!`'s
+            // formatting machinery was a tenth of a planar batch.
+            let mut integer = itoa::Buffer::new();
+            out.extend_from_slice(integer.format(digits / unit).as_bytes());
+            if decimals > 0 {
+                out.push(b'.');
+                let part = integer.format(digits % unit).as_bytes();
+                out.resize(out.len() + decimals - part.len(), b'0');
+                out.extend_from_slice(part);
             }
         }
         _ => {
