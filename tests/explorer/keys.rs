@@ -540,3 +540,45 @@ fn a_savant_files_swings_open_first_in_the_picker() {
     plain.offer_swings(Vec::new());
     assert!(matches!(plain.mode, Mode::Normal));
 }
+
+/// `/` in the picker finds: each word typed must be in an item's name or
+/// description (a Savant file's swings are thousands); Enter keeps the
+/// list found for j, k and Enter; Esc gives the whole list back.
+#[test]
+fn slash_in_the_picker_finds_by_words() {
+    let mut app = app(80, 24, None);
+    let mut swing = homerun::preset::load("fastball", None).unwrap();
+    let swings: Vec<homerun::preset::Preset> = ["Turang 04-03", "Correa 04-03", "Turner 04-05"]
+        .iter()
+        .map(|name| {
+            swing.name = (*name).to_owned();
+            swing.description = format!("{name}: measured 90 mph");
+            swing.clone()
+        })
+        .collect();
+    app.offer_swings(swings);
+    key(&mut app, KeyCode::Char('/'));
+    typed(&mut app, "tur 04-0");
+    let names = |app: &homerun::tui::app::App| match &app.mode {
+        Mode::Open { items, .. } => items.iter().map(|i| i.name.clone()).collect::<Vec<_>>(),
+        other => panic!("the picker, not {other:?}"),
+    };
+    assert_eq!(names(&app), ["Turang 04-03", "Turner 04-05"]);
+    // Words in any order, any case; none found is an empty list.
+    for _ in 0..5 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, " 05 TURN");
+    assert_eq!(names(&app), ["Turner 04-05"]);
+    typed(&mut app, "x");
+    assert!(names(&app).is_empty());
+    key(&mut app, KeyCode::Esc);
+    assert!(names(&app).len() > 3, "{:?}", names(&app));
+    // Enter ends the find; j and Enter then pick in what was found.
+    key(&mut app, KeyCode::Char('/'));
+    typed(&mut app, "04-03");
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::Char('j'));
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.preset_name, "Correa 04-03");
+}

@@ -140,11 +140,14 @@ pub enum Mode {
         error: Option<String>,
         overwrite: Option<String>,
     },
-    /// Choosing a preset to load.
+    /// Choosing a preset (or a Savant file's swing) to load; with `find`,
+    /// the items are those whose name and description hold each of its
+    /// words, and `find` is being typed while it is `Some`.
     Open {
         items: Vec<PickItem>,
         selected: usize,
         error: Option<String>,
+        find: Option<String>,
     },
     Help,
     /// Choosing a park from the list, filtered by `query` (a code, or words
@@ -558,7 +561,8 @@ impl App {
                 items,
                 selected,
                 error,
-            } => self.open_key(action, items, selected, error),
+                find,
+            } => self.open_key((key, action), items, (selected, find), error),
             Mode::Parks { query, selected } => self.parks_key(key, query, selected),
         }
     }

@@ -109,8 +109,13 @@ fn swing_preset(job: &Job, shown: Shown) -> Option<Preset> {
     let angle = |a: f64| shown.angle_and_degrees(a, 3, 1);
     let size = |e: f64| shown.value_to(Quantity::Size, e, if shown.is_si() { 4 } else { 2 });
     let description = format!(
-        "line {}, {}: measured {} at {}; solved E {}, ψ {}, {}, q {:.3}; here {} at {} (E \
+        "{}, line {}, {}: measured {} at {}; solved E {}, ψ {}, {}, q {:.3}; here {} at {} (E \
          for the paper's pitch path)",
+        // "Ohtani, Shohei" as "Shohei Ohtani": found by either name.
+        cell("player_name").map_or(String::from("?"), |n| match n.split_once(", ") {
+            Some((last, first)) => format!("{first} {last}"),
+            None => n.clone(),
+        }),
         job.line,
         cell("game_date").map_or("", |d| d.as_str()),
         speed(tracked.launch_speed),
@@ -189,7 +194,7 @@ mod tests {
         assert!(
             first
                 .description
-                .starts_with("line 2, 2024-04-03: measured 42.1 m/s"),
+                .starts_with("Gunnar Henderson, line 2, 2024-04-03: measured 42.1 m/s"),
             "{}",
             first.description
         );

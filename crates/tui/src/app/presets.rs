@@ -113,12 +113,27 @@ impl App {
     }
 
     pub(super) fn open_picker(&mut self) {
+        let items = self.pick_items();
+        let selected = items
+            .iter()
+            .position(|i| i.name == self.preset_name)
+            .unwrap_or(0);
+        self.mode = Mode::Open {
+            items,
+            selected,
+            error: None,
+            find: None,
+        };
+    }
+
+    /// Everything the picker offers: the swings, then the presets.
+    fn pick_items(&self) -> Vec<PickItem> {
         let swings = self.swings.iter().map(|p| PickItem {
             name: p.name.clone(),
             detail: p.description.clone(),
             preset: Some(p.clone()),
         });
-        let items: Vec<PickItem> = swings
+        swings
             .chain(
                 preset::list(self.presets_dir.as_deref())
                     .into_iter()
@@ -150,25 +165,60 @@ impl App {
                         },
                     }),
             )
-            .collect();
-        let selected = items
-            .iter()
-            .position(|i| i.name == self.preset_name)
-            .unwrap_or(0);
-        self.mode = Mode::Open {
-            items,
-            selected,
-            error: None,
-        };
+            .collect()
     }
 
     pub(super) fn open_key(
         &mut self,
-        action: Option<Action>,
+        (key, action): (KeyEvent, Option<Action>),
         items: Vec<PickItem>,
-        selected: usize,
+        (selected, find): (usize, Option<String>),
         error: Option<String>,
     ) {
+        use ratatui::crossterm::event::{KeyCode, KeyModifiers};
+        // Typing a find: letters go to it, the list follows at each key.
+        if let Some(mut find) = find {
+            match key.code {
+                KeyCode::Esc => return self.open_picker(),
+                KeyCode::Enter | KeyCode::Down | KeyCode::Up => {
+                    self.mode = Mode::Open {
+                        items,
+                        selected: 0,
+                        error,
+                        find: None,
+                    };
+                    return;
+                }
+                KeyCode::Backspace => {
+                    find.pop();
+                }
+                KeyCode::Char(c) if !key.modifiers.contains(KeyModifiers::CONTROL) => find.push(c),
+                _ => {}
+            }
+            let words: Vec<String> = find.split_whitespace().map(str::to_lowercase).collect();
+            let items = (self.pick_items().into_iter())
+                .filter(|item| {
+                    let text = format!("{} {}", item.name, item.detail).to_lowercase();
+                    words.iter().all(|w| text.contains(w.as_str()))
+                })
+                .collect();
+            self.mode = Mode::Open {
+                items,
+                selected: 0,
+                error: None,
+                find: Some(find),
+            };
+            return;
+        }
+        if key.code == KeyCode::Char('/') {
+            self.mode = Mode::Open {
+                items,
+                selected,
+                error: None,
+                find: Some(String::new()),
+            };
+            return;
+        }
         let last = items.len().saturating_sub(1);
         let (selected, error) = match action {
             Some(Action::Close | Action::Quit) => return,
@@ -197,6 +247,7 @@ impl App {
             items,
             selected,
             error,
+            find: None,
         };
     }
 }

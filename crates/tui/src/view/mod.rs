@@ -104,10 +104,11 @@ fn draw_panes(frame: &mut Frame, app: &App) {
             items,
             selected,
             error,
+            find,
         } => overlay::open(
             frame,
             (area, &app.theme),
-            items,
+            (items, find.as_deref()),
             *selected,
             error.as_deref(),
         ),

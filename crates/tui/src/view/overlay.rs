@@ -80,13 +80,22 @@ pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Op
 pub fn open(
     frame: &mut Frame,
     (area, theme): (Rect, &Theme),
-    items: &[PickItem],
+    (items, find): (&[PickItem], Option<&str>),
     selected: usize,
     error: Option<&str>,
 ) {
-    let popup = centered(area, 76, items.len() as u16 + 7);
+    let popup = centered(area, 76, (items.len() as u16).saturating_add(7));
     frame.render_widget(Clear, popup);
-    let block = Block::bordered().title(Span::styled(" Open preset ", theme.title));
+    // While a find is typed, the title shows it (`/` starts one).
+    let title = match find {
+        Some(find) => format!(
+            " Open: find {}▏ ({} found) ",
+            escape_text(find),
+            items.len()
+        ),
+        None => " Open preset (/ finds) ".to_owned(),
+    };
+    let block = Block::bordered().title(Span::styled(title, theme.title));
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
     let [list_area, message] =
