@@ -159,17 +159,6 @@ pub fn outcome_at(
     CellOutcome::of_flight(flight.landed, flight.range)
 }
 
-/// The range of `scene` with its swing replaced by (E, ψ), if the bat
-/// reaches and the ball lands.
-pub fn range_at(
-    scene: &Scene,
-    undercut: f64,
-    swing_angle: f64,
-    options: impl Into<FlightOptions>,
-) -> Option<f64> {
-    outcome_at(scene, undercut, swing_angle, options).range()
-}
-
 /// The most integration steps a sweep's optimisations may take together
 /// (about 3 s on one core), shared by its points: each point's optimiser
 /// gets the smaller of an even share of what is left and its own

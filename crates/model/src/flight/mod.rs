@@ -254,22 +254,6 @@ pub fn fly<const N: usize, D: Dynamics<N>, S: Start<N>>(
     fly_observed(flight, launch, options, |_| {})
 }
 
-/// As [`fly`], trying `first_step` (s) first: a neighbouring flight's
-/// [`Stats::first_step`](ode::Stats::first_step), which saves the two
-/// evaluations of the first step's guess, and usually a rejection.
-pub fn fly_from<const N: usize, D: Dynamics<N>, S: Start<N>>(
-    flight: &D,
-    launch: &S,
-    options: &FlightOptions,
-    first_step: Option<f64>,
-) -> FlightSummary {
-    let stepper = Stepper::Adaptive(Settings {
-        initial_step: first_step,
-        ..Settings::new(options.tolerance)
-    });
-    fly_with(flight, launch, stepper, options.stop_at_kinks, |_| {})
-}
-
 /// As [`fly`], showing each accepted step (with its dense output) to `watch`,
 /// e.g. to sample the trajectory.
 pub fn fly_observed<const N: usize, D: Dynamics<N>, S: Start<N>>(

@@ -179,12 +179,6 @@ impl Flight {
         self.relative_wind(velocity).norm() * self.reynolds_per_speed
     }
 
-    /// Whether the spin changes during the flight.
-    #[inline]
-    pub fn spin_decays(&self) -> bool {
-        self.spin_decay_rate != 0.0
-    }
-
     /// The spin at time `t` after launch: ω(t) = ω₀·e^(−t/τ), or ω₀ without
     /// decay (then no exponential is taken).
     #[inline]
