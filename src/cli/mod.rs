@@ -3,6 +3,7 @@
 //! One file per command group; every table goes through [`table`].
 
 mod batch;
+mod batch_run;
 mod bench;
 mod figure;
 mod figure_units;
@@ -24,7 +25,7 @@ mod usage;
 mod usage_error;
 pub use usage_error::{UsageError, WindowFault};
 
-use std::io::{IsTerminal as _, Write as _};
+use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -206,6 +207,18 @@ pub enum Command {
             requires = "batch"
         )]
         spray: SprayArg,
+        /// With --batch: where each row's spin comes from: `nathan`,
+        /// Nathan's relation from its launch angle and direction; `swing`, the
+        /// impact of its swing solved from bat tracking (bat_speed and the pitch's
+        /// kinematics, as `hit --batch`), and Nathan's relation where that swing
+        /// is missing or not solved.
+        #[arg(
+            long,
+            value_name = "FROM",
+            default_value = "nathan",
+            requires = "batch"
+        )]
+        spin: SpinArg,
     },
     /// Fit model.drag_scale (and model.lift_scale, given hang_time or apex
     /// columns) to the measured distances of a CSV of flights, as `fly --batch`
@@ -232,6 +245,11 @@ pub enum Command {
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
+        /// Fit the impact instead: the bat's effective mass (bat.effective_mass) for
+        /// which the model's most q = (EV - V_bat)/(V_pitch + V_bat) at the 99th
+        /// percentile of the file's tracked swings is the data's (docs/bat-tracking.md).
+        #[arg(long)]
+        impact: bool,
     },
     /// Every input key: symbol, unit, accepted range and the fastball's value.
     Keys,
@@ -364,6 +382,16 @@ pub enum Command {
     },
 }
 
+/// Where a batch row's spin comes from (`fly --batch --spin`).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SpinArg {
+    /// Nathan's relation from the launch angle and direction.
+    #[default]
+    Nathan,
+    /// The impact of the row's swing, solved from bat tracking.
+    Swing,
+}
+
 /// What Savant's spray angle is taken to be (`fly --batch --spray`).
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum SprayArg {
@@ -408,119 +436,12 @@ fn checked_presets_dir(cli: &Cli) -> Result<Option<PathBuf>, UsageError> {
     Ok(dir)
 }
 
-/// What `fly --batch` and `hit --batch` share on their command lines.
-struct BatchArgs<'a> {
-    scene: &'a SceneArgs,
-    source: &'a str,
-    park: Option<&'a str>,
-    keep: Option<&'a str>,
-    summary: bool,
-    json: bool,
-}
-
-impl<'a> BatchArgs<'a> {
-    fn new(
-        scene: &'a SceneArgs,
-        source: &'a str,
-        (park, keep): (&'a Option<String>, &'a Option<String>),
-        summary: bool,
-        json: bool,
-    ) -> BatchArgs<'a> {
-        BatchArgs {
-            scene,
-            source,
-            park: park.as_deref(),
-            keep: keep.as_deref(),
-            summary,
-            json,
-        }
-    }
-}
-
-/// Runs a batch over `batch.source`, its setup made as the command line
-/// says and then as `choose` sets it.
-fn run_batch(
-    cli: &Cli,
-    batch: &BatchArgs,
-    choose: impl FnOnce(&mut batch::Setup),
-) -> Result<ExitCode, UsageError> {
-    let preset = batch
-        .scene
-        .resolve(checked_presets_dir(cli)?.as_deref(), cli.units)?;
-    scene::check_path("--batch", batch.source)?;
-    let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
-    let mut setup = batch::Setup::for_command(&preset, &parks, &batch.scene.set, batch.park)?;
-    setup.summary_to_stdout = batch.summary;
-    if let Some(keep) = batch.keep {
-        setup.keep = keep
-            .split(',')
-            .map(|c| c.trim().to_owned())
-            .filter(|c| !c.is_empty())
-            .collect();
-    }
-    choose(&mut setup);
-    let stdout = std::io::stdout().lock();
-    setup.escape_kept = stdout.is_terminal();
-    let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
-    let mut err = std::io::stderr().lock();
-    let erase = err.is_terminal();
-    let outcome = batch::run(
-        &setup,
-        batch.source,
-        batch.json,
-        Shown(cli.units),
-        &mut batch::Sinks {
-            out: &mut out,
-            err: &mut err,
-            erase,
-        },
-    )?;
-    Ok(ExitCode::from(outcome.exit_status()))
-}
-
 /// Runs a headless command, writing to stdout, and gives the exit status: 0,
 /// or 1 when some rows of `fly --batch` failed. A closed pipe (`| head`)
 /// ends the output quietly.
 pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
-    if let Command::Fly {
-        scene,
-        batch: Some(source),
-        json,
-        park,
-        keep,
-        spray,
-        own_air,
-        summary,
-        all_parks,
-        ..
-    } = command
-    {
-        let batch = BatchArgs::new(scene, source, (park, keep), *summary, *json);
-        return run_batch(cli, &batch, |setup| {
-            setup.spray = (*spray).into();
-            // A batch flies each row once (a season in about a second); a
-            // park's own air is a flight a park, asked for.
-            setup.own_air = *own_air;
-            setup.all_parks = *all_parks;
-        });
-    }
-    if let Command::Hit {
-        scene,
-        batch: Some(source),
-        json,
-        park,
-        keep,
-        summary,
-    } = command
-    {
-        let batch = BatchArgs::new(scene, source, (park, keep), *summary, *json);
-        return run_batch(cli, &batch, |setup| {
-            setup.solve_swings = true;
-            setup.swing_columns = true;
-            // The impact's launch direction is the spray (the solve's third
-            // equation), so the flight is not re-aimed.
-            setup.spray = crate::analysis::savant::Spray::Launch;
-        });
+    if let Some(ran) = batch_run::run(cli, command) {
+        return ran;
     }
     if let Command::Calibrate {
         file,
@@ -530,6 +451,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         save,
         force,
         json,
+        impact,
     } = command
     {
         let dir = checked_presets_dir(cli)?;
@@ -543,7 +465,11 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
             dir: dir.as_deref(),
             force: *force,
         });
-        let text = batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?;
+        let text = if *impact {
+            batch::calibrate_impact::run(&setup, file, save, *json)?
+        } else {
+            batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?
+        };
         print!("{text}");
         return Ok(ExitCode::SUCCESS);
     }

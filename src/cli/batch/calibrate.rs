@@ -59,22 +59,7 @@ pub(in crate::cli) fn run(
         input: escape_cut(source, 200),
         message,
     };
-    // A name that cannot be saved is refused before the work.
-    if let Some(Save {
-        name,
-        dir: Some(dir),
-        force,
-    }) = &save
-    {
-        crate::preset::check_save(name, dir, *force)?;
-    }
-    let read = if source == "-" {
-        read(setup, io::stdin().lock())
-    } else {
-        let file = std::fs::File::open(source).map_err(|e| failed(e.to_string()))?;
-        read(setup, io::BufReader::with_capacity(MAX_RECORD_BYTES, file))
-    }
-    .map_err(failed)?;
+    let read = read_source(source, save.as_ref(), |input| read(setup, input))?;
     let options = Purpose::Readout.flight_options();
     let fit = calibrate::fit(&read.measured, &options).map_err(|e| failed(e.to_string()))?;
     let at_bounds: Vec<String> = fit
@@ -141,6 +126,34 @@ pub(in crate::cli) fn run(
         return Ok(super::super::pretty(&value));
     }
     Ok(text(&read, &fit, &at_bounds, saved.as_deref(), shown))
+}
+
+/// Refuses a name `--save` cannot take (before the work), then reads
+/// `source` ("-" for stdin) with `read`.
+pub(super) fn read_source<T>(
+    source: &str,
+    save: Option<&Save>,
+    read: impl FnOnce(Box<dyn BufRead>) -> Result<T, String>,
+) -> Result<T, UsageError> {
+    let failed = |message: String| UsageError::Calibrate {
+        input: escape_cut(source, 200),
+        message,
+    };
+    if let Some(Save {
+        name,
+        dir: Some(dir),
+        force,
+    }) = save
+    {
+        crate::preset::check_save(name, dir, *force)?;
+    }
+    let input: Box<dyn BufRead> = if source == "-" {
+        Box::new(io::stdin().lock())
+    } else {
+        let file = std::fs::File::open(source).map_err(|e| failed(e.to_string()))?;
+        Box::new(io::BufReader::with_capacity(MAX_RECORD_BYTES, file))
+    };
+    read(input).map_err(failed)
 }
 
 /// Reads every row into a measured flight, the launches completed in
