@@ -78,8 +78,12 @@ def impact(case):
     n1 = np.cross(n2, n3)
 
     speed, spin = case["pitch_speed"], case["pitch_spin"]
-    _, gamma = pitch(speed, G)
-    vb0 = np.array([-speed * math.cos(gamma), -speed * math.sin(gamma), 0.0])
+    if "pitch_velocity" in case:
+        # A tracked pitch (reference/swing_solve.py): its own velocity.
+        vb0 = np.array(case["pitch_velocity"], dtype=float)
+    else:
+        _, gamma = pitch(speed, G)
+        vb0 = np.array([-speed * math.cos(gamma), -speed * math.sin(gamma), 0.0])
     wb0 = np.array([0.0, 0.0, spin])
     psi = case["swing_angle"]
     vB0 = case["bat_speed"] * (math.cos(psi) * forward + math.sin(psi) * np.array([0.0, 1.0, 0.0]))

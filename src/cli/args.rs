@@ -175,6 +175,18 @@ pub enum Command {
             requires = "batch"
         )]
         spray: SprayArg,
+        /// With --batch: where each row's spin comes from: `nathan`,
+        /// Nathan's relation from its launch angle and direction; `swing`, the
+        /// impact of its swing solved from bat tracking (bat_speed and the pitch's
+        /// kinematics, as `hit --batch`), and Nathan's relation where that swing
+        /// is missing or not solved.
+        #[arg(
+            long,
+            value_name = "FROM",
+            default_value = "nathan",
+            requires = "batch"
+        )]
+        spin: SpinArg,
     },
     /// Fit model.drag_scale (and model.lift_scale, given hang_time or apex
     /// columns) to the measured distances of a CSV of flights, as `fly --batch`
@@ -205,6 +217,11 @@ pub enum Command {
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
+        /// Fit the impact instead: the bat's effective mass (bat.effective_mass) for
+        /// which the model's most q = (EV - V_bat)/(V_pitch + V_bat) at the 99th
+        /// percentile of the file's tracked swings is the data's (docs/bat-tracking.md).
+        #[arg(long, conflicts_with = "by")]
+        impact: bool,
     },
     /// Every input key: symbol, unit, accepted range and the fastball's value.
     Keys,
@@ -340,6 +357,16 @@ pub enum Command {
         #[arg(long, value_name = "THEME")]
         theme: Option<Background>,
     },
+}
+
+/// Where a batch row's spin comes from (`fly --batch --spin`).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SpinArg {
+    /// Nathan's relation from the launch angle and direction.
+    #[default]
+    Nathan,
+    /// The impact of the row's swing, solved from bat tracking.
+    Swing,
 }
 
 /// What Savant's spray angle is taken to be (`fly --batch --spray`).

@@ -4,6 +4,7 @@
 
 mod args;
 mod batch;
+mod batch_run;
 mod bench;
 mod figure;
 mod fly;
@@ -22,10 +23,10 @@ mod table2;
 mod threads;
 mod usage;
 mod usage_error;
-pub use args::{Cli, Command, SceneArgs, SprayArg, UNITS_HELP};
+pub use args::{Cli, Command, SceneArgs, SpinArg, SprayArg, UNITS_HELP};
 pub use usage_error::{UsageError, WindowFault};
 
-use std::io::{IsTerminal as _, Write as _};
+use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -91,119 +92,12 @@ fn checked_presets_dir(cli: &Cli) -> Result<Option<PathBuf>, UsageError> {
     Ok(dir)
 }
 
-/// What `fly --batch` and `hit --batch` share on their command lines.
-struct BatchArgs<'a> {
-    scene: &'a SceneArgs,
-    source: &'a str,
-    park: Option<&'a str>,
-    keep: Option<&'a str>,
-    summary: bool,
-    json: bool,
-}
-
-impl<'a> BatchArgs<'a> {
-    fn new(
-        scene: &'a SceneArgs,
-        source: &'a str,
-        (park, keep): (&'a Option<String>, &'a Option<String>),
-        summary: bool,
-        json: bool,
-    ) -> BatchArgs<'a> {
-        BatchArgs {
-            scene,
-            source,
-            park: park.as_deref(),
-            keep: keep.as_deref(),
-            summary,
-            json,
-        }
-    }
-}
-
-/// Runs a batch over `batch.source`, its setup made as the command line
-/// says and then as `choose` sets it.
-fn run_batch(
-    cli: &Cli,
-    batch: &BatchArgs,
-    choose: impl FnOnce(&mut batch::Setup),
-) -> Result<ExitCode, UsageError> {
-    let preset = batch
-        .scene
-        .resolve(checked_presets_dir(cli)?.as_deref(), cli.units)?;
-    scene::check_path("--batch", batch.source)?;
-    let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
-    let mut setup = batch::Setup::for_command(&preset, &parks, &batch.scene.set, batch.park)?;
-    setup.summary_to_stdout = batch.summary;
-    if let Some(keep) = batch.keep {
-        setup.keep = keep
-            .split(',')
-            .map(|c| c.trim().to_owned())
-            .filter(|c| !c.is_empty())
-            .collect();
-    }
-    choose(&mut setup);
-    let stdout = std::io::stdout().lock();
-    setup.escape_kept = stdout.is_terminal();
-    let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
-    let mut err = std::io::stderr().lock();
-    let erase = err.is_terminal();
-    let outcome = batch::run(
-        &setup,
-        batch.source,
-        batch.json,
-        Shown(cli.units),
-        &mut batch::Sinks {
-            out: &mut out,
-            err: &mut err,
-            erase,
-        },
-    )?;
-    Ok(ExitCode::from(outcome.exit_status()))
-}
-
 /// Runs a headless command, writing to stdout, and gives the exit status: 0,
 /// or 1 when some rows of `fly --batch` failed. A closed pipe (`| head`)
 /// ends the output quietly.
 pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
-    if let Command::Fly {
-        scene,
-        batch: Some(source),
-        json,
-        park,
-        keep,
-        spray,
-        own_air,
-        summary,
-        all_parks,
-        ..
-    } = command
-    {
-        let batch = BatchArgs::new(scene, source, (park, keep), *summary, *json);
-        return run_batch(cli, &batch, |setup| {
-            setup.spray = (*spray).into();
-            // A batch flies each row once (a season in about a second); a
-            // park's own air is a flight a park, asked for.
-            setup.own_air = *own_air;
-            setup.all_parks = *all_parks;
-        });
-    }
-    if let Command::Hit {
-        scene,
-        batch: Some(source),
-        json,
-        park,
-        keep,
-        summary,
-    } = command
-    {
-        let batch = BatchArgs::new(scene, source, (park, keep), *summary, *json);
-        return run_batch(cli, &batch, |setup| {
-            setup.solve_swings = true;
-            setup.swing_columns = true;
-            // The impact's launch direction is the spray (the solve's third
-            // equation), so the flight is not re-aimed.
-            setup.spray = crate::analysis::savant::Spray::Launch;
-        });
+    if let Some(ran) = batch_run::run(cli, command) {
+        return ran;
     }
     if let Command::Calibrate {
         file,
@@ -214,6 +108,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         save,
         force,
         json,
+        impact,
     } = command
     {
         let dir = checked_presets_dir(cli)?;
@@ -229,6 +124,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         });
         let text = match by {
             Some(by) => batch::calibrate::run_by(setup, file, by, *json, Shown(cli.units))?,
+            None if *impact => batch::calibrate_impact::run(&setup, file, save, *json)?,
             None => batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?,
         };
         print!("{text}");

@@ -220,3 +220,125 @@ fn bad_input_is_named() {
         "{err}"
     );
 }
+
+#[test]
+fn fly_takes_its_spin_from_the_swing_where_it_is_solved() {
+    let (_, hit, _) = run_homerun(&["hit", "--batch", SAMPLE, "--json"], None);
+    let (code, swing, err) = run_homerun(
+        &["fly", "--batch", SAMPLE, "--json", "--spin", "swing"],
+        None,
+    );
+    assert_eq!(code, Some(0), "{err}");
+    let (_, nathan, _) = run_homerun(&["fly", "--batch", SAMPLE, "--json"], None);
+    let (hit, swing, nathan) = (json_lines(&hit), json_lines(&swing), json_lines(&nathan));
+    for ((h, s), n) in hit.iter().zip(&swing).zip(&nathan) {
+        if h["solved"] == Value::Bool(true) {
+            // The impact's launch, flown: hit --batch's flight exactly.
+            assert_eq!(s["launch"]["spin"], h["launch"]["spin"]);
+            assert_eq!(s["flight"], h["flight"]);
+            assert_eq!(s["spin_estimated"], Value::Bool(false));
+            assert_ne!(s["launch"]["spin"], n["launch"]["spin"]);
+        } else {
+            // Nathan's relation, as fly --batch alone.
+            assert_eq!(s["launch"], n["launch"]);
+            assert_eq!(s["flight"], n["flight"]);
+        }
+    }
+    assert!(err.contains("swings: solved 31 of 35"), "{err}");
+}
+
+/// The Python reference's answers on the sample (reference/swing_solve.py:
+/// its own pitch kinematics, the impact integrated over the impulse, scipy's
+/// root finder from a fan of starts).
+#[test]
+fn the_python_reference_agrees() {
+    let text = std::fs::read_to_string("tests/data/swing_solve_reference.csv").unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let names: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let (_, out, _) = run_homerun(&["hit", "--batch", SAMPLE, "--json"], None);
+    let out = json_lines(&out);
+    let mut compared = 0;
+    for line in lines {
+        let cells: std::collections::HashMap<&str, &str> =
+            names.iter().copied().zip(line.split(',')).collect();
+        let index: usize = cells["line"].parse().unwrap();
+        let rust = &out[index - 2];
+        assert_eq!(rust["line"], Value::from(index));
+        assert_eq!(
+            rust["solved"],
+            Value::Bool(cells["solved"] == "true"),
+            "line {index}: {rust}"
+        );
+        if cells["solved"] != "true" {
+            continue;
+        }
+        compared += 1;
+        let near = |reference: &str, got: &Value, tolerance: f64| {
+            let (r, g) = (
+                cells[reference].parse::<f64>().unwrap(),
+                got.as_f64().unwrap(),
+            );
+            assert!(
+                (r - g).abs() < tolerance,
+                "line {index} {reference}: {g} vs {r}"
+            );
+        };
+        // They agree to 3e-13 m, 4e-11 rad, 2e-8 rad/s and 4e-10 m/s.
+        near("undercut", &rust["impact"]["undercut"], 1e-11);
+        near("swing_angle", &rust["swing"]["angle"], 1e-9);
+        near("direction", &rust["swing"]["direction"], 1e-9);
+        near("spin", &rust["launch"]["spin"], 1e-6);
+        near("sidespin", &rust["launch"]["sidespin"], 1e-6);
+        near("max_exit_speed", &rust["impact"]["max_exit_speed"], 1e-8);
+    }
+    assert_eq!(compared, 31);
+}
+
+#[test]
+fn calibrating_the_impact_fits_the_bat_s_effective_mass() {
+    let (code, out, err) = run_homerun(&["calibrate", "--impact", SAMPLE, "--json"], None);
+    assert_eq!(code, Some(0), "{err}");
+    let fit: Value = serde_json::from_str(&out).unwrap();
+    let fit = &fit["impact"];
+    assert_eq!(fit["rows"], 35);
+    // Five of the 35 swings beat the paper's bat (M_B = 0.8 kg) head-on;
+    // the fitted bat lets none of them (the 99th percentile of 35 rows is
+    // the last), the heaviest needing 0.946 kg.
+    assert!((fit["above_before"].as_f64().unwrap() - 5.0 / 35.0).abs() < 1e-12);
+    assert_eq!(fit["above_after"].as_f64().unwrap(), 0.0);
+    let mass = fit["effective_mass"].as_f64().unwrap();
+    assert!((mass - 0.9457).abs() < 1e-3, "{mass}");
+    // Saved, the preset carries it.
+    let presets = tempfile::tempdir().unwrap();
+    let dir = presets.path().to_str().unwrap();
+    let (code, out, err) = run_homerun(
+        &[
+            "--presets-dir",
+            dir,
+            "calibrate",
+            "--impact",
+            SAMPLE,
+            "--save",
+            "bat-2024",
+        ],
+        None,
+    );
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("saved"), "{out}");
+    let saved = std::fs::read_to_string(presets.path().join("bat-2024.toml")).unwrap();
+    let line = saved
+        .lines()
+        .find(|l| l.starts_with("effective_mass"))
+        .unwrap();
+    let value: f64 = line
+        .split('=')
+        .nth(1)
+        .unwrap()
+        .split('#')
+        .next()
+        .unwrap()
+        .trim()
+        .parse()
+        .unwrap();
+    assert!((value - mass).abs() < 1e-9, "{line}");
+}

@@ -74,16 +74,7 @@ pub(in crate::cli) fn run(
         input: escape_cut(source, 200),
         message,
     };
-    // A name that cannot be saved is refused before the work.
-    if let Some(Save {
-        name,
-        dir: Some(dir),
-        force,
-    }) = &save
-    {
-        crate::preset::check_save(name, dir, *force)?;
-    }
-    let read = read_source(setup, source).map_err(failed)?;
+    let read = read_source(source, save.as_ref(), |input| read(setup, input))?;
     let options = Purpose::Readout.flight_options();
     let fit = calibrate::fit(&read.measured, &options).map_err(|e| failed(e.to_string()))?;
 
@@ -170,7 +161,9 @@ pub(in crate::cli) fn run_by(
     };
     let month = by == "month";
     setup.keep = vec![if month { "game_date" } else { by }.to_owned()];
-    let read = read_source(&setup, source).map_err(|e| failed(e.replace("--keep", "--by")))?;
+    let read = read_source(source, None, |input| {
+        read(&setup, input).map_err(|e| e.replace("--keep", "--by"))
+    })?;
     let mut groups: std::collections::BTreeMap<String, Vec<Measured>> = Default::default();
     for (measured, cell) in read.measured.iter().zip(&read.groups) {
         // Savant's dates are YYYY-MM-DD.
@@ -231,14 +224,32 @@ pub(in crate::cli) fn run_by(
     Ok(text)
 }
 
-/// [`read`] from `source`: a file, or stdin for "-".
-fn read_source(setup: &Setup, source: &str) -> Result<Read, String> {
-    if source == "-" {
-        read(setup, io::stdin().lock())
-    } else {
-        let file = std::fs::File::open(source).map_err(|e| e.to_string())?;
-        read(setup, io::BufReader::with_capacity(MAX_RECORD_BYTES, file))
+/// Refuses a name `--save` cannot take (before the work), then reads
+/// `source` ("-" for stdin) with `read`.
+pub(super) fn read_source<T>(
+    source: &str,
+    save: Option<&Save>,
+    read: impl FnOnce(Box<dyn BufRead>) -> Result<T, String>,
+) -> Result<T, UsageError> {
+    let failed = |message: String| UsageError::Calibrate {
+        input: escape_cut(source, 200),
+        message,
+    };
+    if let Some(Save {
+        name,
+        dir: Some(dir),
+        force,
+    }) = save
+    {
+        crate::preset::check_save(name, dir, *force)?;
     }
+    let input: Box<dyn BufRead> = if source == "-" {
+        Box::new(io::stdin().lock())
+    } else {
+        let file = std::fs::File::open(source).map_err(|e| failed(e.to_string()))?;
+        Box::new(io::BufReader::with_capacity(MAX_RECORD_BYTES, file))
+    };
+    read(input).map_err(failed)
 }
 
 /// Reads every row into a measured flight, the launches completed in

@@ -14,6 +14,7 @@ use crate::model::launch::SceneKind;
 use crate::preset::escape_cut;
 
 pub(super) mod calibrate;
+pub(super) mod calibrate_impact;
 mod flights;
 mod output;
 mod own_launch;

@@ -490,11 +490,8 @@ impl SwingTally {
 
 /// The `quantiles` of `values` (not empty), by the nearest rank.
 pub(super) fn percentiles(values: &[f64], quantiles: &[f64]) -> Vec<f64> {
-    let mut sorted = values.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    let last = sorted.len() - 1;
     quantiles
         .iter()
-        .map(|q| sorted[(q * last as f64).round() as usize])
+        .map(|&q| bat_tracking::quantile(values, q))
         .collect()
 }

@@ -115,3 +115,42 @@ fn with_a_measured_attack_angle_the_contact_speed_is_solved() {
     assert!((solved.scene.bat.undercut - 0.018).abs() < 1e-8);
     assert_eq!(solved.scene.bat.swing_angle, 0.15);
 }
+
+#[test]
+fn the_ceiling_is_the_head_on_centred_swing_and_rises_with_the_bat_s_mass() {
+    let (swing, _) = measured(0.0, 0.1, 0.0, Hand::Right);
+    let scene = Scene::default();
+    let q = ceiling_efficiency(&scene, &swing);
+    // (e* − r)/(1 + r) for a head-on collision of point masses, r = M_b/M_B,
+    // e* from Eq. (19) at the approach speed; the ball's roll and the
+    // pitch's spin move it little.
+    let approach = swing.pitch.speed() + 31.0;
+    let e = 0.540 - (approach - 26.8) / 400.0;
+    let r = 0.145 / 0.8;
+    assert!((q - (e - r) / (1.0 + r)).abs() < 0.005, "{q}");
+    let mut heavier = scene;
+    heavier.bat.effective_mass = 1.0;
+    assert!(ceiling_efficiency(&heavier, &swing) > q + 0.02);
+}
+
+#[test]
+fn the_fitted_mass_leaves_one_row_in_a_hundred_above_its_ceiling() {
+    // 200 rows hit at q = 0.15 … 0.25 (by exit speed), from the same pitch
+    // and bat: their ceiling is one number, which the fit puts at the 99th
+    // percentile of the data.
+    let swings: Vec<TrackedSwing> = (0..200)
+        .map(|k| {
+            let (mut swing, _) = measured(0.0, 0.1, 0.0, Hand::Right);
+            let q = 0.15 + 0.1 * k as f64 / 199.0;
+            swing.launch_speed = q * (swing.pitch.speed() + 31.0) + 31.0;
+            swing
+        })
+        .collect();
+    let fit = fit_effective_mass(&Scene::default(), &swings, 0.99).unwrap();
+    assert!((fit.ceiling_after - fit.data).abs() < 1e-6, "{fit:?}");
+    assert!((fit.above_after - 0.01).abs() < 0.006, "{fit:?}");
+    assert!(
+        fit.above_before > 0.05 && fit.effective_mass > 0.8,
+        "{fit:?}"
+    );
+}

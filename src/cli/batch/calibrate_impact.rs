@@ -1,0 +1,154 @@
+//! `homerun calibrate --impact FILE [--save NAME]`: a Savant export's
+//! tracked swings read as `hit --batch` reads them, and the bat's effective
+//! mass fitted so that the model's ceiling q at the 99th percentile of the
+//! rows is the data's ([`bat_tracking::fit_effective_mass`];
+//! docs/bat-tracking.md).
+
+use std::io::BufRead;
+
+use super::calibrate::{Save, read_source};
+use super::read::{Fields, Lossy, Records};
+use super::rows::{Header, Row, parse_row};
+use super::savant_columns::Setup;
+use crate::analysis::bat_tracking::{self, ImpactFit, TrackedSwing};
+use crate::cli::UsageError;
+use crate::preset::{Preset, Source, escape_cut};
+
+/// The quantile of q matched.
+const QUANTILE: f64 = 0.99;
+
+/// Runs the fit on `source` ("-" for stdin): the text (or JSON) to print.
+pub(in crate::cli) fn run(
+    setup: &Setup,
+    source: &str,
+    save: Option<Save>,
+    json: bool,
+) -> Result<String, UsageError> {
+    let failed = |message: String| UsageError::Calibrate {
+        input: escape_cut(source, 200),
+        message,
+    };
+    let swings = read_source(source, save.as_ref(), |input| read(setup, input))?;
+    let base = &setup.base.scene;
+    let fit = bat_tracking::fit_effective_mass(base, &swings, QUANTILE).ok_or_else(|| {
+        failed("no row has a tracked swing (bat_speed and the pitch's kinematics)".to_owned())
+    })?;
+    let (low, high) = bat_tracking::EFFECTIVE_MASSES;
+    let at_bound = (fit.effective_mass - low).min(high - fit.effective_mass) < 1e-6;
+    let saved = match save {
+        Some(Save { name, dir, force }) => {
+            let dir = dir.ok_or_else(|| failed(format!("--save: {}", crate::preset::NO_FOLDER)))?;
+            if at_bound && !force {
+                return Err(UsageError::CalibrateSave {
+                    name: escape_cut(name, 64),
+                    message: format!(
+                        "bat.effective_mass = {:.4} ended at the end of [{low}, {high}] searched; not saved (--force to save anyway)",
+                        fit.effective_mass
+                    ),
+                });
+            }
+            let mut preset = Preset {
+                name: name.to_owned(),
+                description: format!(
+                    "{}, its bat's effective mass fitted on {} ({} swings): bat.effective_mass = {:.4} kg",
+                    setup.base.name,
+                    escape_cut(source, 80),
+                    fit.rows,
+                    fit.effective_mass
+                ),
+                scene: setup.base.scene,
+                fence: setup.base.fence,
+                source: Source::Bundled,
+            };
+            preset.scene.bat.effective_mass = fit.effective_mass;
+            preset.scene.validate()?;
+            Some(preset.save(dir, force)?)
+        }
+        None => None,
+    };
+    if json {
+        let mut value = serde_json::json!({ "impact": fit, "at_bound": at_bound });
+        if let Some(path) = &saved {
+            value["saved"] = path.display().to_string().into();
+        }
+        return Ok(super::super::pretty(&value));
+    }
+    Ok(text(&fit, saved.as_deref()))
+}
+
+fn text(fit: &ImpactFit, saved: Option<&std::path::Path>) -> String {
+    let percent = |share: f64| share * 100.0;
+    let mut text = format!(
+        "{} tracked swings; q = (EV - V_bat)/(V_pitch + V_bat), {:.0}th percentile {:.4} (data)\n\
+         the model's ceiling (E = 0, the bat head-on to the pitch), row by row:\n\
+         M_B = {:.4} kg   {:.1} % of rows above it, its {:.0}th percentile {:.4}\n\
+         M_B = {:.4} kg   {:.1} % of rows above it, its {:.0}th percentile {:.4}  (fitted: bat.effective_mass)\n",
+        fit.rows,
+        percent(fit.quantile),
+        fit.data,
+        fit.effective_mass_before,
+        percent(fit.above_before),
+        percent(fit.quantile),
+        fit.ceiling_before,
+        fit.effective_mass,
+        percent(fit.above_after),
+        percent(fit.quantile),
+        fit.ceiling_after,
+    );
+    if let Some(path) = saved {
+        text += &format!("saved {}\n", path.display());
+    }
+    text
+}
+
+/// Every row's tracked swing (rows without one, or bad, are left out).
+fn read(setup: &Setup, input: impl BufRead) -> Result<Vec<TrackedSwing>, String> {
+    let mut records = Records::new(input);
+    let (mut bytes, mut ends) = (Vec::new(), Vec::new());
+    let mut lossy = Lossy::default();
+    let mut header = match records.next(&mut bytes, &mut ends, false) {
+        Ok(Some(_)) => {
+            let names = Fields::of(&bytes, &ends, &mut lossy)
+                .iter()
+                .map(|n| n.trim_start_matches('\u{feff}').to_owned())
+                .collect();
+            Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?
+        }
+        Ok(None) => return Err("the input is empty".to_owned()),
+        Err(stop) => return Err(stop.to_string()),
+    };
+    header
+        .read_swings()
+        .map_err(|e| format!("line 1 (the header): {e}"))?;
+    let mut jobs = Vec::new();
+    let mut swings = Vec::new();
+    loop {
+        bytes.clear();
+        ends.clear();
+        let read = match records.next(&mut bytes, &mut ends, true) {
+            Ok(Some(read)) => read,
+            Ok(None) => break,
+            Err(stop) => return Err(stop.to_string()),
+        };
+        if read.too_long {
+            continue;
+        }
+        let fields = Fields::of(&bytes, &ends, &mut lossy);
+        jobs.clear();
+        if let Row::Job = parse_row(&header, setup, (read.line, fields), None, &mut jobs) {
+            let job = &jobs[0];
+            let launch = job.scene.launch;
+            let measured = (
+                launch.speed.unwrap_or(f64::NAN),
+                launch.angle.unwrap_or(f64::NAN),
+            );
+            if let Ok(swing) = job
+                .tracked
+                .swing(measured, job.launch.spray, job.launch.side)
+            {
+                swings.push(swing);
+            }
+        }
+    }
+    Ok(swings)
+}
