@@ -79,6 +79,10 @@ pub struct SolvedSwing {
     pub launch: ImpactLaunch,
     /// The same swing and pitch at E = 0 (m/s).
     pub max_exit_speed: f64,
+    /// Solved off the sweet spot: the bat's speed at the contact (in
+    /// `scene.bat.speed`) below the sweet spot's, at the prior swing angle,
+    /// for a ball slower than the sweet spot gives.
+    pub off_sweet_spot: bool,
 }
 
 impl SolvedSwing {
@@ -169,9 +173,29 @@ pub fn solve(base: &Scene, swing: &TrackedSwing) -> SwingAnswer {
     let collision_efficiency =
         collision_efficiency(swing.launch_speed, pitch_speed, swing.bat_speed);
     let problem = Problem::new(base, swing);
+    let solved = match problem.solve() {
+        // Slower than any swing angle gives at the sweet spot's speed: the
+        // ball met the bat off its sweet spot (toward the hands, or a bunt),
+        // where the bat moves slower. The swing angle is held at the prior
+        // and the bat's speed at the contact solved instead (0.3 to 1 times
+        // the sweet spot's), as a measured attack angle has it solved.
+        Err(Unreached::TooSlow { shortfall }) if problem.second == Second::SwingAngle => {
+            let off = Problem {
+                second: Second::ContactSpeed,
+                ..problem
+            };
+            off.solve()
+                .map(|solved| SolvedSwing {
+                    off_sweet_spot: true,
+                    ..solved
+                })
+                .map_err(|_| Unreached::TooSlow { shortfall })
+        }
+        solved => solved,
+    };
     SwingAnswer {
         collision_efficiency,
-        solved: problem.solve(),
+        solved,
     }
 }
 
@@ -184,6 +208,7 @@ enum Second {
 
 /// One row's equations: unknowns x = (E, ψ or V̂_B0, φ), targets (EV, LA,
 /// spray).
+#[derive(Clone, Copy)]
 struct Problem {
     scene: Scene,
     pitch: Vector3<f64>,
@@ -278,6 +303,7 @@ impl Problem {
             regime: impact.regime,
             launch: ImpactLaunch::of(&impact),
             max_exit_speed: Impact3d::with_pitch(&centred, self.pitch).launch_speed(),
+            off_sweet_spot: false,
         })
     }
 

@@ -234,7 +234,8 @@ impl RowSwing {
     /// The model's own q at E = 0 for the solved swing.
     pub(super) fn model_efficiency(&self) -> Option<f64> {
         let tracked = self.tracked.ok()?;
-        let solved = self.solved()?;
+        // q is the sweet spot's: a contact off it has none to compare.
+        let solved = self.solved().filter(|s| !s.off_sweet_spot)?;
         Some(collision_efficiency(
             solved.max_exit_speed,
             tracked.pitch.speed(),
@@ -404,6 +405,8 @@ pub(super) struct SwingTally {
     pub data_efficiency: Vec<f64>,
     pub model_efficiency: Vec<f64>,
     pub undercuts: Vec<f64>,
+    /// Solved rows whose contact is off the sweet spot.
+    pub off_sweet_spot: usize,
 }
 
 impl SwingTally {
@@ -414,12 +417,13 @@ impl SwingTally {
             Ok(_) => {
                 let answer = swing.answer.expect("a tracked swing is answered");
                 self.data_efficiency.push(answer.collision_efficiency);
-                match (swing.solved(), swing.model_efficiency()) {
-                    (Some(solved), Some(q)) => {
-                        self.model_efficiency.push(q);
+                match swing.solved() {
+                    Some(solved) => {
+                        self.model_efficiency.extend(swing.model_efficiency());
                         self.undercuts.push(solved.scene.bat.undercut);
+                        self.off_sweet_spot += usize::from(solved.off_sweet_spot);
                     }
-                    _ => {
+                    None => {
                         let reason = swing.reason().unwrap_or_default();
                         *self.unsolved.entry(reason).or_default() += 1;
                     }
@@ -440,6 +444,7 @@ impl SwingTally {
         self.model_efficiency
             .extend_from_slice(&other.model_efficiency);
         self.undercuts.extend_from_slice(&other.undercuts);
+        self.off_sweet_spot += other.off_sweet_spot;
     }
 
     /// "swings: solved 16627 of 17436 tracked (95.4 %); q median 0.132,
@@ -454,8 +459,9 @@ impl SwingTally {
         }
         let solved = self.undercuts.len();
         let mut line = format!(
-            "swings: solved {solved} of {tracked} tracked ({:.1} %)",
-            100.0 * solved as f64 / tracked.max(1) as f64
+            "swings: solved {solved} of {tracked} tracked ({:.1} %, {} of them off the sweet spot)",
+            100.0 * solved as f64 / tracked.max(1) as f64,
+            self.off_sweet_spot
         );
         if tracked > 0 {
             let data = percentiles(&self.data_efficiency, &[0.5, 0.99]);

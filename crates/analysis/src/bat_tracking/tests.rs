@@ -154,3 +154,38 @@ fn the_fitted_mass_leaves_one_row_in_a_hundred_above_its_ceiling() {
         "{fit:?}"
     );
 }
+
+/// A ball slower than any swing angle gives at the sweet spot's speed is
+/// solved off the sweet spot: a swing at 60 % of the tracked bat speed
+/// (a contact toward the hands) is found again at the prior swing angle,
+/// its launch given back, and marked so.
+#[test]
+fn a_ball_too_slow_for_the_sweet_spot_is_solved_off_it() {
+    let base = Scene::default();
+    let (mut swing, _) = measured(0.015, base.bat.swing_angle, -0.2, Hand::Right);
+    // The same contact with the bat 40 % slower there.
+    let mut scene = base;
+    scene.bat.speed = 0.6 * 31.0;
+    scene.bat.undercut = 0.015;
+    scene.bat.direction = -0.2;
+    scene.pitch.spin = -230.0;
+    let slow = Impact3d::with_pitch(&scene, swing.pitch.velocity);
+    swing.launch_speed = slow.launch_speed();
+    swing.launch_angle = slow.launch_angle();
+    swing.spray = Some(slow.launch_direction());
+    let solved = solve(&base, &swing)
+        .solved
+        .expect("solved off the sweet spot");
+    assert!(solved.off_sweet_spot);
+    assert!(
+        (solved.scene.bat.speed - 0.6 * 31.0).abs() < 1e-6,
+        "{}",
+        solved.scene.bat.speed
+    );
+    assert_eq!(solved.scene.bat.swing_angle, base.bat.swing_angle);
+    assert!((solved.launch.speed - swing.launch_speed).abs() < 1e-6);
+    assert!((solved.launch.angle - swing.launch_angle).abs() < 1e-9);
+    // At the sweet spot's speed the same ball is a plain solve.
+    let (plain, _) = measured(0.015, 0.3, -0.2, Hand::Right);
+    assert!(!solve(&base, &plain).solved.unwrap().off_sweet_spot);
+}
