@@ -162,6 +162,9 @@ pub struct SwingAnswer {
 const SWING_ANGLES: (f64, f64) = (-0.6, 1.0);
 /// The bat's speed at the contact, as a multiple of the sweet spot's.
 const CONTACT_SPEEDS: (f64, f64) = (0.3, 2.0);
+/// … and off the sweet spot: slower, down to a bat held nearly still (a
+/// bunt meets the pitch with the barrel at rest).
+const OFF_SWEET_SPOT_SPEEDS: (f64, f64) = (0.02, 1.0);
 /// Solved rows reproduce the launch to far better than 0.1 mph and 0.1°.
 const SPEED_TOLERANCE: f64 = 1e-9; // m/s
 const ANGLE_TOLERANCE: f64 = 1e-11; // rad
@@ -177,11 +180,12 @@ pub fn solve(base: &Scene, swing: &TrackedSwing) -> SwingAnswer {
         // Slower than any swing angle gives at the sweet spot's speed: the
         // ball met the bat off its sweet spot (toward the hands, or a bunt),
         // where the bat moves slower. The swing angle is held at the prior
-        // and the bat's speed at the contact solved instead (0.3 to 1 times
+        // and the bat's speed at the contact solved instead (0.02 to 1 times
         // the sweet spot's), as a measured attack angle has it solved.
         Err(Unreached::TooSlow { shortfall }) if problem.second == Second::SwingAngle => {
             let off = Problem {
                 second: Second::ContactSpeed,
+                contact_speeds: OFF_SWEET_SPOT_SPEEDS,
                 ..problem
             };
             off.solve()
@@ -216,6 +220,9 @@ struct Problem {
     free_direction: bool,
     target: [f64; 3],
     prior: f64,
+    /// The bat's speed at the contact allowed, as multiples of the sweet
+    /// spot's (when it is the second unknown).
+    contact_speeds: (f64, f64),
 }
 
 impl Problem {
@@ -246,6 +253,7 @@ impl Problem {
                 swing.spray.unwrap_or(0.0),
             ],
             prior: swing.attack_angle.unwrap_or(base.bat.swing_angle),
+            contact_speeds: CONTACT_SPEEDS,
         }
     }
 
@@ -434,7 +442,10 @@ impl Problem {
     /// E and V̂_B0 at the measured ψ: the exit speed rises with the bat's.
     fn contact_speed_start(&self, direction: f64) -> Result<[f64; 3], Unreached> {
         let measured = self.scene.bat.speed;
-        let (low, high) = (measured * CONTACT_SPEEDS.0, measured * CONTACT_SPEEDS.1);
+        let (low, high) = (
+            measured * self.contact_speeds.0,
+            measured * self.contact_speeds.1,
+        );
         let mut guess = None;
         let mut speed_less_target = |v: f64| match self.undercut_for_angle(v, direction, guess) {
             Some((e, s)) => {
@@ -561,7 +572,7 @@ impl Problem {
             Second::SwingAngle => SWING_ANGLES,
             Second::ContactSpeed => {
                 let v = self.scene.bat.speed;
-                (CONTACT_SPEEDS.0 * v, CONTACT_SPEEDS.1 * v)
+                (self.contact_speeds.0 * v, self.contact_speeds.1 * v)
             }
         };
         x.iter().all(|v| v.is_finite())
