@@ -247,20 +247,46 @@ fn fly_takes_its_spin_from_the_swing_where_it_is_solved() {
     assert!(err.contains("swings: solved 31 of 35"), "{err}");
 }
 
+/// A reference table's rows (`#` lines skipped), each as column → cell.
+fn reference_rows(path: &str) -> Vec<std::collections::HashMap<String, String>> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let names: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+    lines
+        .map(|line| {
+            names
+                .iter()
+                .cloned()
+                .zip(line.split(',').map(String::from))
+                .collect()
+        })
+        .collect()
+}
+
+/// Asserts the reference's `column` and what homerun gave agree.
+fn near(
+    cells: &std::collections::HashMap<String, String>,
+    column: &str,
+    got: &Value,
+    tolerance: f64,
+) {
+    let (r, g) = (cells[column].parse::<f64>().unwrap(), got.as_f64().unwrap());
+    assert!(
+        (r - g).abs() < tolerance,
+        "line {} {column}: {g} vs {r}",
+        cells["line"]
+    );
+}
+
 /// The Python reference's answers on the sample (reference/swing_solve.py:
 /// its own pitch kinematics, the impact integrated over the impulse, scipy's
 /// root finder from a fan of starts).
 #[test]
 fn the_python_reference_agrees() {
-    let text = std::fs::read_to_string("tests/data/swing_solve_reference.csv").unwrap();
-    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    let names: Vec<&str> = lines.next().unwrap().split(',').collect();
     let (_, out, _) = run_homerun(&["hit", "--batch", SAMPLE, "--json"], None);
     let out = json_lines(&out);
     let mut compared = 0;
-    for line in lines {
-        let cells: std::collections::HashMap<&str, &str> =
-            names.iter().copied().zip(line.split(',')).collect();
+    for cells in reference_rows("tests/data/swing_solve_reference.csv") {
         let index: usize = cells["line"].parse().unwrap();
         let rust = &out[index - 2];
         assert_eq!(rust["line"], Value::from(index));
@@ -273,23 +299,18 @@ fn the_python_reference_agrees() {
             continue;
         }
         compared += 1;
-        let near = |reference: &str, got: &Value, tolerance: f64| {
-            let (r, g) = (
-                cells[reference].parse::<f64>().unwrap(),
-                got.as_f64().unwrap(),
-            );
-            assert!(
-                (r - g).abs() < tolerance,
-                "line {index} {reference}: {g} vs {r}"
-            );
-        };
         // They agree to 3e-13 m, 4e-11 rad, 2e-8 rad/s and 4e-10 m/s.
-        near("undercut", &rust["impact"]["undercut"], 1e-11);
-        near("swing_angle", &rust["swing"]["angle"], 1e-9);
-        near("direction", &rust["swing"]["direction"], 1e-9);
-        near("spin", &rust["launch"]["spin"], 1e-6);
-        near("sidespin", &rust["launch"]["sidespin"], 1e-6);
-        near("max_exit_speed", &rust["impact"]["max_exit_speed"], 1e-8);
+        near(&cells, "undercut", &rust["impact"]["undercut"], 1e-11);
+        near(&cells, "swing_angle", &rust["swing"]["angle"], 1e-9);
+        near(&cells, "direction", &rust["swing"]["direction"], 1e-9);
+        near(&cells, "spin", &rust["launch"]["spin"], 1e-6);
+        near(&cells, "sidespin", &rust["launch"]["sidespin"], 1e-6);
+        near(
+            &cells,
+            "max_exit_speed",
+            &rust["impact"]["max_exit_speed"],
+            1e-8,
+        );
     }
     assert_eq!(compared, 31);
 }
@@ -341,4 +362,44 @@ fn calibrating_the_impact_fits_the_bat_s_effective_mass() {
         .parse()
         .unwrap();
     assert!((value - mass).abs() < 1e-9, "{line}");
+}
+
+/// Rows too slow for any swing angle at the sweet spot's speed are solved
+/// off it, as the Python reference solves them
+/// (tests/data/swing_off_sweet_spot_reference.csv, reference/swing_solve.py
+/// --off): three of the sample's rows with their exit speed cut to 60 %
+/// (tests/data/savant_swings_off_sweet_spot.csv, synthetic from real rows).
+/// The reference also finds line 3 (a contact above the ball's centre at a
+/// fifth of the bat's speed), which the Rust solve's start misses: it is
+/// left unsolved here, with its reason, and named in docs/bat-tracking.md.
+#[test]
+fn rows_too_slow_for_the_sweet_spot_are_solved_off_it_as_the_reference_solves_them() {
+    let file = "tests/data/savant_swings_off_sweet_spot.csv";
+    let (code, out, err) = run_homerun(&["hit", "--batch", file, "--json"], None);
+    assert_eq!(code, Some(0), "{err}");
+    // Every solved row off the sweet spot: the model's q has none, and
+    // the summary says so without failing.
+    assert!(
+        err.contains("swings: solved 2 of 3 tracked (66.7 %, 2 of them off the sweet spot)"),
+        "{err}"
+    );
+    let out = json_lines(&out);
+    let mut compared = 0;
+    for cells in reference_rows("tests/data/swing_off_sweet_spot_reference.csv") {
+        let index: usize = cells["line"].parse().unwrap();
+        let rust = &out[index - 2];
+        if rust["solved"] != Value::Bool(true) {
+            assert_eq!(index, 3, "{rust}");
+            continue;
+        }
+        near(&cells, "undercut", &rust["impact"]["undercut"], 1e-11);
+        near(&cells, "contact_speed", &rust["swing"]["speed"], 1e-8);
+        near(&cells, "direction", &rust["swing"]["direction"], 1e-9);
+        near(&cells, "spin", &rust["launch"]["spin"], 1e-6);
+        near(&cells, "sidespin", &rust["launch"]["sidespin"], 1e-6);
+        // The swing angle held at the prior (the fastball preset's).
+        assert_eq!(rust["swing"]["angle"], Value::from(0.1594));
+        compared += 1;
+    }
+    assert_eq!(compared, 2);
 }

@@ -454,14 +454,37 @@ impl Problem {
             }
             None => f64::NAN,
         };
-        let (gl, gh) = (speed_less_target(low), speed_less_target(high));
-        if gl.is_nan() || gh.is_nan() {
-            return Err(Unreached::Angle);
+        // On a grid: at the slowest contacts no undercut may give the
+        // angle (a bat nearly at rest sends the ball back along the pitch),
+        // so the bracket is the first pair of neighbours, both reached,
+        // across which the exit speed passes the measured one.
+        const STEPS: usize = 8;
+        let (mut previous, mut reached, mut bracket) = (None, false, None);
+        for i in 0..=STEPS {
+            let v = low + (high - low) * i as f64 / STEPS as f64;
+            let g = speed_less_target(v);
+            if g.is_nan() {
+                previous = None;
+                continue;
+            }
+            reached = true;
+            if let Some((pv, pg)) = previous
+                && pg <= 0.0
+                && g >= 0.0
+            {
+                bracket = Some(((pv, pg), (v, g)));
+                break;
+            }
+            previous = Some((v, g));
         }
-        if gl > 0.0 || gh < 0.0 {
-            return Err(Unreached::BatSpeed);
-        }
-        let v = illinois(&mut speed_less_target, ((low, gl), (high, gh)), 1e-12);
+        let Some(bracket) = bracket else {
+            return Err(if reached {
+                Unreached::BatSpeed
+            } else {
+                Unreached::Angle
+            });
+        };
+        let v = illinois(&mut speed_less_target, bracket, 1e-12);
         let (undercut, _) = self
             .undercut_for_angle(v, direction, None)
             .ok_or(Unreached::Angle)?;

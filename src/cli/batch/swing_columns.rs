@@ -471,14 +471,21 @@ impl SwingTally {
                 data[0], data[1]
             );
         }
-        if solved > 0 {
+        // The model's q is the sweet spot's: none when every solved row is
+        // off it.
+        if !self.model_efficiency.is_empty() {
             let model = percentiles(&self.model_efficiency, &[0.5, 0.99]);
+            let _ = write!(
+                line,
+                ", median {:.3}, 99th {:.3} (model at E = 0, solved rows at the sweet spot)",
+                model[0], model[1],
+            );
+        }
+        if solved > 0 {
             let e = percentiles(&self.undercuts, &[0.25, 0.5, 0.75]);
             let _ = write!(
                 line,
-                ", median {:.3}, 99th {:.3} (model at E = 0, solved rows); undercut median {:.1} mm (quartiles {:.1}, {:.1})",
-                model[0],
-                model[1],
+                "; undercut median {:.1} mm (quartiles {:.1}, {:.1})",
                 e[1] * 1e3,
                 e[0] * 1e3,
                 e[2] * 1e3
