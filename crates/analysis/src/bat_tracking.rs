@@ -188,12 +188,25 @@ pub fn solve(base: &Scene, swing: &TrackedSwing) -> SwingAnswer {
                 contact_speeds: OFF_SWEET_SPOT_SPEEDS,
                 ..problem
             };
-            off.solve()
+            // A slow bat turns the ball less: its direction may lie far
+            // from the spray's, so where the spray's fails the start is
+            // tried from bats turned either way (with a free direction).
+            let turns: &[f64] = match off.free_direction {
+                true => &[0.0, -0.2, 0.2, -0.4, 0.4],
+                false => &[0.0],
+            };
+            let mut found = turns.iter().map(|turn| {
+                let mut from = off;
+                from.scene.bat.direction += turn;
+                from.solve()
+            });
+            found
+                .find_map(Result::ok)
                 .map(|solved| SolvedSwing {
                     off_sweet_spot: true,
                     ..solved
                 })
-                .map_err(|_| Unreached::TooSlow { shortfall })
+                .ok_or(Unreached::TooSlow { shortfall })
         }
         solved => solved,
     };
