@@ -85,7 +85,7 @@ pub struct Launched {
 }
 
 /// Where a row's launch direction came from.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DirectionFrom {
     /// Solved: the flight lands on the spray's bearing.
     Landing,
@@ -95,7 +95,7 @@ pub enum DirectionFrom {
     /// coordinates of a grounder or a popup are where it was fielded,
     /// which need not be anywhere a flight comes down (a chopper fielded
     /// down the line, a popup that drifts foul).
-    SprayUnsolved(SolveError),
+    SprayUnsolved,
     /// The scene's own (the row has no hit coordinates).
     Scene,
 }
@@ -106,21 +106,10 @@ impl DirectionFrom {
         match self {
             DirectionFrom::Landing => "landing",
             DirectionFrom::Spray => "spray",
-            DirectionFrom::SprayUnsolved(_) => "spray_unsolved",
+            DirectionFrom::SprayUnsolved => "spray_unsolved",
             DirectionFrom::Scene => "scene",
         }
     }
-}
-
-/// Why no launch direction lands on the spray.
-#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
-pub enum SolveError {
-    #[error("no launch direction lands on the spray angle {spray:.4} rad: a flight did not land")]
-    NotLanded { spray: f64 },
-    #[error(
-        "no launch direction lands on the spray angle {spray:.4} rad within {MAX_FLIGHTS} flights (last miss {miss:.2e} rad)"
-    )]
-    NotConverged { spray: f64, miss: f64 },
 }
 
 /// `scene` (a batted ball with its speed and angle, and any spin the row
@@ -236,7 +225,7 @@ impl DirectionSolve {
         self.flights += 1;
         let bearing = self.bearing;
         if !summary.landed {
-            return Some(self.unsolved(SolveError::NotLanded { spray: bearing }));
+            return Some(self.unsolved());
         }
         let miss = landing_direction(summary) - bearing;
         if miss.abs() < DIRECTION_TOLERANCE {
@@ -258,11 +247,7 @@ impl DirectionSolve {
             }
             Some((previous, previous_miss)) => {
                 if self.flights >= MAX_FLIGHTS || miss == previous_miss {
-                    let error = SolveError::NotConverged {
-                        spray: bearing,
-                        miss,
-                    };
-                    return Some(self.unsolved(error));
+                    return Some(self.unsolved());
                 }
                 self.direction - miss * (self.direction - previous) / (miss - previous_miss)
             }
@@ -273,11 +258,13 @@ impl DirectionSolve {
         None
     }
 
-    /// Gives up the solve: the spray taken as the launch direction.
-    fn unsolved(&mut self, error: SolveError) -> (usize, DirectionFrom) {
+    /// Gives up the solve (a flight that does not land, or no landing on
+    /// the bearing within [`MAX_FLIGHTS`]): the spray taken as the launch
+    /// direction.
+    fn unsolved(&mut self) -> (usize, DirectionFrom) {
         let direction = self.bearing.clamp(-MAX_DIRECTION, MAX_DIRECTION);
         launch_toward(&mut self.scene, &self.row, direction);
-        (self.flights, DirectionFrom::SprayUnsolved(error))
+        (self.flights, DirectionFrom::SprayUnsolved)
     }
 }
 
@@ -522,8 +509,7 @@ mod tests {
                 assert!(solved > 20, "{solved}");
                 // Straight up never lands on its bearing's side: flown
                 // toward the spray, and said so.
-                let unsolved =
-                    |l: &&Launched| matches!(l.direction_from, DirectionFrom::SprayUnsolved(_));
+                let unsolved = |l: &&Launched| l.direction_from == DirectionFrom::SprayUnsolved;
                 let unsolved: Vec<&Launched> = together.iter().filter(unsolved).collect();
                 assert!(!unsolved.is_empty());
                 for launched in unsolved {

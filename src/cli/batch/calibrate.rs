@@ -311,7 +311,7 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
             piece.iter().zip(launched).map(|(job, launched)| {
                 // A ball fielded where no flight comes down says nothing
                 // of the flight's length.
-                if let savant::DirectionFrom::SprayUnsolved(_) = launched.direction_from {
+                if launched.direction_from == savant::DirectionFrom::SprayUnsolved {
                     return None;
                 }
                 launched.scene.validate().ok()?;

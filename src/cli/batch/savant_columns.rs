@@ -315,7 +315,7 @@ impl Summary {
         } else if job.launch.spray.is_some() {
             self.sprayed += 1;
             self.solve_flights += flights;
-            self.unsolved += usize::from(matches!(from, DirectionFrom::SprayUnsolved(_)));
+            self.unsolved += usize::from(from == DirectionFrom::SprayUnsolved);
         } else if job.spray_at_plate {
             self.at_plate += 1;
         } else if header.hit_coordinates {
