@@ -72,7 +72,7 @@ fn read(setup: &mut Setup, input: impl BufRead, shown: Shown) -> Result<Swings, 
         .count();
     let presets: Vec<Preset> = jobs
         .iter()
-        .filter_map(|job| swing_preset(job, shown))
+        .filter_map(|job| swing_preset(job, &setup.keep, shown))
         .collect();
     Ok(Swings {
         unsolved: tracked - presets.len(),
@@ -84,7 +84,7 @@ fn read(setup: &mut Setup, input: impl BufRead, shown: Shown) -> Result<Swings, 
 /// A solved row as a preset: its swing scene (the launch left to the
 /// impact), named by batter and date, described by what was measured and
 /// what the explorer's impact gives.
-fn swing_preset(job: &Job, shown: Shown) -> Option<Preset> {
+fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
     let swing = job.swing?;
     let solved = swing.solved()?;
     let tracked = swing.tracked.ok()?;
@@ -98,10 +98,10 @@ fn swing_preset(job: &Job, shown: Shown) -> Option<Preset> {
     // description says by how much.
     fit_launch_angle(&mut scene, tracked.launch_angle);
     let (_, here, _) = scene_start(&scene);
+    // The cell of a kept column (`kept` names them, in order), if any.
     let cell = |name: &str| {
-        let at = NAMING.iter().position(|n| *n == name)?;
-        let index = job.kept.len().checked_sub(NAMING.len() - at)?;
-        job.kept.get(index).filter(|c| !c.is_empty())
+        let at = kept.iter().position(|k| k == name)?;
+        job.kept.get(at).filter(|c| !c.is_empty())
     };
     let batter = cell("player_name").map_or("row", |n| n.split(',').next().unwrap_or(n));
     let date = cell("game_date").map_or(String::new(), |d| d.chars().skip(5).collect());
@@ -109,7 +109,7 @@ fn swing_preset(job: &Job, shown: Shown) -> Option<Preset> {
     let angle = |a: f64| shown.angle_and_degrees(a, 3, 1);
     let size = |e: f64| shown.value_to(Quantity::Size, e, if shown.is_si() { 4 } else { 2 });
     let description = format!(
-        "{}, line {}, {}: measured {} at {}; solved E {}, ψ {}, {}, q {:.3}; here {} at {} (E \
+        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}, {}, q {:.3}; here {} at {} (E \
          for the paper's pitch path)",
         // "Ohtani, Shohei" as "Shohei Ohtani": found by either name.
         cell("player_name").map_or(String::from("?"), |n| match n.split_once(", ") {
@@ -117,12 +117,12 @@ fn swing_preset(job: &Job, shown: Shown) -> Option<Preset> {
             None => n.clone(),
         }),
         job.line,
-        cell("game_date").map_or("", |d| d.as_str()),
+        cell("game_date").map_or(String::new(), |d| format!(", {d}")),
         speed(tracked.launch_speed),
         angle(tracked.launch_angle),
         size(scene.bat.undercut),
         angle(solved.scene.bat.swing_angle),
-        format!("{:?}", solved.regime).to_lowercase(),
+        solved.regime.name(),
         crate::analysis::bat_tracking::collision_efficiency(
             tracked.launch_speed,
             tracked.pitch.speed(),
@@ -137,7 +137,9 @@ fn swing_preset(job: &Job, shown: Shown) -> Option<Preset> {
         name: format!(
             "{} {date}",
             escape_cut(batter, 12usize.saturating_sub(date.chars().count()))
-        ),
+        )
+        .trim_end()
+        .to_owned(),
         description,
         scene,
         fence: Some(job.fence),
@@ -225,5 +227,25 @@ mod tests {
         // radian); the speed within 1.5 m/s: the pitch's path is the
         // paper's, not the tracked one's.
         assert!(worst.0 < 1.5 && worst.1 < 0.03, "{worst:?}");
+    }
+
+    /// The batter is named from `player_name` whatever other naming column
+    /// the file lacks (here its `game_date`, renamed away).
+    #[test]
+    fn a_swing_is_named_by_its_batter_without_a_date() {
+        let text = std::fs::read_to_string("tests/data/savant_swings.csv").unwrap();
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("no-date.csv");
+        std::fs::write(&path, text.replacen("game_date", "day", 1)).unwrap();
+        let preset = crate::preset::load("fastball", None).unwrap();
+        let parks = crate::preset::parks::all(None).unwrap();
+        let mut setup = Setup::new(&preset, &parks);
+        let swings = solved_swings(&mut setup, path.to_str().unwrap(), Shown::default()).unwrap();
+        assert_eq!(swings.presets[0].name, "Henderson");
+        assert!(
+            swings.presets[0]
+                .description
+                .starts_with("Gunnar Henderson, line 2: measured")
+        );
     }
 }
