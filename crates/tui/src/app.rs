@@ -119,6 +119,15 @@ pub struct PickItem {
     pub preset: Option<Preset>,
 }
 
+/// A find being typed in the picker: its text, and the whole list it
+/// filters, each item with its name and description in lower case (read
+/// once, when `/` starts it, not at every key).
+#[derive(Debug)]
+pub struct Find {
+    pub text: String,
+    pub all: Vec<(String, PickItem)>,
+}
+
 /// What the keyboard is talking to.
 #[derive(Debug)]
 pub enum Mode {
@@ -147,7 +156,7 @@ pub enum Mode {
         items: Vec<PickItem>,
         selected: usize,
         error: Option<String>,
-        find: Option<String>,
+        find: Option<Find>,
     },
     Help,
     /// Choosing a park from the list, filtered by `query` (a code, or words

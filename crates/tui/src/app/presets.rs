@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use ratatui::crossterm::event::KeyEvent;
 use ratatui_textarea::TextArea;
 
-use super::{App, Mode, PickItem};
+use super::{App, Find, Mode, PickItem};
 use crate::keymap::Action;
 use preset::{self, Preset, PresetError, Source};
 
@@ -172,7 +172,7 @@ impl App {
         &mut self,
         (key, action): (KeyEvent, Option<Action>),
         items: Vec<PickItem>,
-        (selected, find): (usize, Option<String>),
+        (selected, find): (usize, Option<Find>),
         error: Option<String>,
     ) {
         use ratatui::crossterm::event::{KeyCode, KeyModifiers};
@@ -190,17 +190,19 @@ impl App {
                     return;
                 }
                 KeyCode::Backspace => {
-                    find.pop();
+                    find.text.pop();
                 }
-                KeyCode::Char(c) if !key.modifiers.contains(KeyModifiers::CONTROL) => find.push(c),
+                KeyCode::Char(c) if !key.modifiers.contains(KeyModifiers::CONTROL) => {
+                    find.text.push(c)
+                }
                 _ => {}
             }
-            let words: Vec<String> = find.split_whitespace().map(str::to_lowercase).collect();
-            let items = (self.pick_items().into_iter())
-                .filter(|item| {
-                    let text = format!("{} {}", item.name, item.detail).to_lowercase();
-                    words.iter().all(|w| text.contains(w.as_str()))
-                })
+            let words: Vec<String> = (find.text.split_whitespace())
+                .map(str::to_lowercase)
+                .collect();
+            let items = (find.all.iter())
+                .filter(|(text, _)| words.iter().all(|w| text.contains(w.as_str())))
+                .map(|(_, item)| item.clone())
                 .collect();
             self.mode = Mode::Open {
                 items,
@@ -211,11 +213,22 @@ impl App {
             return;
         }
         if key.code == KeyCode::Char('/') {
+            let all = (self.pick_items().into_iter())
+                .map(|item| {
+                    (
+                        format!("{} {}", item.name, item.detail).to_lowercase(),
+                        item,
+                    )
+                })
+                .collect();
             self.mode = Mode::Open {
                 items,
                 selected,
                 error: None,
-                find: Some(String::new()),
+                find: Some(Find {
+                    text: String::new(),
+                    all,
+                }),
             };
             return;
         }

@@ -108,7 +108,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
         } => overlay::open(
             frame,
             (area, &app.theme),
-            (items, find.as_deref()),
+            (items, find.as_ref().map(|f| f.text.as_str())),
             *selected,
             error.as_deref(),
         ),
