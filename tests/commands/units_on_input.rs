@@ -231,6 +231,19 @@ fn batch_cells_take_units_and_statcast_columns_keep_theirs() {
         String::from_utf8_lossy(&output.stderr).contains("launch_speed = \"fast\": not a number"),
         "{output:?}"
     );
+    // Out of range, a Statcast column's value and range are in its unit.
+    let output = homerun(
+        dir.path(),
+        &["fly", "--batch", "-"],
+        "launch_speed,launch_angle\n98,95\n",
+    );
+    assert!(
+        String::from_utf8_lossy(&output.stderr).contains(
+            "line 2: launch.angle = 95 ° (1.65806 rad): must be a finite number in (-π/2, π/2) rad, \
+             that is (-90, 90) ° (from launch_speed = 98 mph, launch_angle = 95 °)"
+        ),
+        "{output:?}"
+    );
 }
 
 /// Issue 28, item 1: what you see is what you type. Under imperial a bare

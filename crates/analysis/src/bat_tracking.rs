@@ -5,9 +5,10 @@
 //! `launch_angle`, the spray) put through the paper's impact, solving for
 //! what tracking does not measure:
 //! - the undercut E, always;
-//! - the swing angle ψ where the row has no `attack_angle`; where it has
-//!   one, the bat's speed at the contact point instead (the contact off
-//!   the sweet spot: one measurement more needs one unknown more);
+//! - the bat's speed at the contact (a contact off the sweet spot), at
+//!   the measured `attack_angle` or, without one, at the prior swing angle;
+//!   only a ball faster than the sweet spot gives at the prior has its
+//!   swing angle ψ solved instead, at the sweet spot;
 //! - the bat's direction where the row has no `attack_direction` and has
 //!   a spray, taken as the launch direction.
 //!
@@ -22,14 +23,16 @@
 //! same point to within an inch, where the speed differs by ~3 % (an inch
 //! in ~30 in of radius about the hands). So V̂_B0 = `bat_speed`, unscaled.
 //!
-//! **The two swings.** For a given launch angle the exit speed, as a
-//! function of ψ (the undercut following to keep the angle), rises to a
-//! most and falls again: a measured speed below that most is given by two
-//! swings, one swung flatter and meeting the ball below its centre, one
-//! swung steeper and meeting it above. The solve takes the one whose ψ is
-//! nearer the scene's `bat.swing_angle` (the paper's optimum, 0.1594 rad =
-//! 9.1°, near MLB's mean attack angle of about 10°), or the measured
-//! attack angle's.
+//! **Which swing.** A shortfall of exit speed could be the swing's
+//! obliquity or a contact off the sweet spot; 2024's tracking measures
+//! neither. Solving ψ first put all of it into obliquity, and so into spin
+//! (line drives at ψ ≈ −10° and 3,300 rpm against Trackman's 1,850); with ψ
+//! at the prior, the scene's `bat.swing_angle` (the paper's optimum,
+//! 0.1594 rad = 9.1°, near MLB's mean attack angle of about 10°), the spin
+//! follows the measured within 8–19 % (docs/bat-tracking.md, "Which
+//! swing"). Where ψ is solved, a speed below its most is given by two
+//! swings, one flatter and meeting the ball below its centre, one steeper
+//! meeting it above: the solve takes the one nearer the prior.
 
 use model::impact::{Impact3d, Regime};
 use model::scene::{Hand, Scene};
@@ -123,15 +126,15 @@ pub enum Unreached {
     /// give at the measured launch angle, whatever the swing angle.
     #[error("exit speed above the model's reach at this launch angle")]
     TooFast { shortfall: f64 },
-    /// Below the least any swing angle in the range searched gives.
-    #[error("exit speed below what any swing angle from -0.6 to 1.0 rad gives")]
+    /// Below the least the swing angles or contact speeds searched give.
+    #[error("exit speed below the model's least at this launch angle")]
     TooSlow { shortfall: f64 },
     /// No undercut gives the launch angle.
     #[error("launch angle out of reach: no undercut gives it")]
     Angle,
-    /// The bat's speed at the contact would have to leave 0.3–2 × the
-    /// sweet spot's (with a measured attack angle).
-    #[error("the bat's speed at the contact would be outside 0.3-2 x bat_speed")]
+    /// No bat speed at the contact in the range searched gives the exit
+    /// speed, though the range passes above and below it.
+    #[error("no bat speed at the contact gives the exit speed")]
     BatSpeed,
     /// The Newton iteration did not reach the launch to 0.1 mph and 0.1°.
     #[error("the solve did not converge")]
@@ -176,39 +179,19 @@ pub fn solve(base: &Scene, swing: &TrackedSwing) -> SwingAnswer {
     let collision_efficiency =
         collision_efficiency(swing.launch_speed, pitch_speed, swing.bat_speed);
     let problem = Problem::new(base, swing);
-    let solved = match problem.solve() {
-        // Slower than any swing angle gives at the sweet spot's speed: the
-        // ball met the bat off its sweet spot (toward the hands, or a bunt),
-        // where the bat moves slower. The swing angle is held at the prior
-        // and the bat's speed at the contact solved instead (0.02 to 1 times
-        // the sweet spot's), as a measured attack angle has it solved.
-        Err(Unreached::TooSlow { shortfall }) if problem.second == Second::SwingAngle => {
-            let off = Problem {
-                second: Second::ContactSpeed,
-                contact_speeds: OFF_SWEET_SPOT_SPEEDS,
-                ..problem
-            };
-            // A slow bat turns the ball less: its direction may lie far
-            // from the spray's, so where the spray's fails the start is
-            // tried from bats turned either way (with a free direction).
-            let turns: &[f64] = match off.free_direction {
-                true => &[0.0, -0.2, 0.2, -0.4, 0.4],
-                false => &[0.0],
-            };
-            let mut found = turns.iter().map(|turn| {
-                let mut from = off;
-                from.scene.bat.direction += turn;
-                from.solve()
-            });
-            found
-                .find_map(Result::ok)
-                .map(|solved| SolvedSwing {
-                    off_sweet_spot: true,
-                    ..solved
-                })
-                .ok_or(Unreached::TooSlow { shortfall })
-        }
-        solved => solved,
+    let solved = match problem.second {
+        Second::ContactSpeed => problem.solve(),
+        // No measured attack angle: the swing angle is held at the prior
+        // and a ball slower than the sweet spot gives there met the bat off
+        // it, where the bat moves slower (0.02 to 1 times the sweet spot's
+        // speed, down to a bunt's nearly still barrel). Only a ball faster
+        // than that, or one the prior cannot give, has its swing angle
+        // solved, at the sweet spot, nearest the prior. Solving ψ first
+        // would put every shortfall of a real collision's efficiency into
+        // the swing's obliquity, and with it into spin: line drives at
+        // ψ ≈ −10° and 3,300 rpm against 1,850 measured
+        // (docs/bat-tracking.md, "Which swing").
+        Second::SwingAngle => problem.off_sweet_spot().or_else(|_| problem.solve()),
     };
     SwingAnswer {
         collision_efficiency,
@@ -290,6 +273,35 @@ impl Problem {
         self.scene.reach()
     }
 
+    /// At the prior swing angle, the bat's speed at the contact solved
+    /// (slower than the sweet spot's); marked off the sweet spot.
+    fn off_sweet_spot(&self) -> Result<SolvedSwing, Unreached> {
+        let off = Problem {
+            second: Second::ContactSpeed,
+            contact_speeds: OFF_SWEET_SPOT_SPEEDS,
+            ..*self
+        };
+        // A slow bat turns the ball less: its direction may lie far from
+        // the spray's, so where the spray's fails the start is tried from
+        // bats turned either way (with a free direction). A ball faster than
+        // the sweet spot gives is not reached by turning.
+        let turns: &[f64] = match off.free_direction {
+            true => &[0.0, -0.2, 0.2, -0.4, 0.4],
+            false => &[0.0],
+        };
+        let mut failed = Unreached::NoConvergence;
+        for turn in turns {
+            let mut from = off;
+            from.scene.bat.direction += turn;
+            match from.solve() {
+                Ok(solved) => return Ok(solved),
+                Err(why @ Unreached::TooFast { .. }) => return Err(why),
+                Err(why) => failed = why,
+            }
+        }
+        Err(failed)
+    }
+
     fn solve(&self) -> Result<SolvedSwing, Unreached> {
         let direction = self.scene.bat.direction;
         // Newton's method from the prior swing, the undercut set to give
@@ -300,7 +312,9 @@ impl Problem {
             Second::SwingAngle => self
                 .undercut_for_angle(self.prior, direction, None)
                 .and_then(|(e, _)| self.newton([e, self.prior, direction])),
-            Second::ContactSpeed => None,
+            Second::ContactSpeed => self
+                .contact_speed_guess(direction)
+                .and_then(|(e, v)| self.newton([e, v, direction])),
         };
         let x = match quick {
             Some(x) => x,
@@ -317,14 +331,16 @@ impl Problem {
         };
         let impact = self.impact(x);
         let scene = self.at(x);
+        // The most this swing gives: centred, at the sweet spot.
         let mut centred = scene;
         centred.bat.undercut = 0.0;
+        centred.bat.speed = self.scene.bat.speed;
         Ok(SolvedSwing {
             scene,
             regime: impact.regime,
             launch: ImpactLaunch::of(&impact),
             max_exit_speed: Impact3d::with_pitch(&centred, self.pitch).launch_speed(),
-            off_sweet_spot: false,
+            off_sweet_spot: self.second == Second::ContactSpeed,
         })
     }
 
@@ -452,6 +468,18 @@ impl Problem {
         })
     }
 
+    /// A start for E and V̂_B0: the exit speed is near linear in the bat's
+    /// (EV = q·V_pitch + (1 + q)·V_bat), with q taken where the bat has
+    /// the sweet spot's speed.
+    fn contact_speed_guess(&self, direction: f64) -> Option<(f64, f64)> {
+        let (sweet, pitch) = (self.scene.bat.speed, self.scene.pitch.speed);
+        let (_, exit) = self.undercut_for_angle(sweet, direction, None)?;
+        let q = collision_efficiency(exit, pitch, sweet);
+        let v = (self.target[0] - q * pitch) / (1.0 + q);
+        let (e, _) = self.undercut_for_angle(v, direction, None)?;
+        Some((e, v))
+    }
+
     /// E and V̂_B0 at the measured ψ: the exit speed rises with the bat's.
     fn contact_speed_start(&self, direction: f64) -> Result<[f64; 3], Unreached> {
         let measured = self.scene.bat.speed;
@@ -472,7 +500,8 @@ impl Problem {
         // so the bracket is the first pair of neighbours, both reached,
         // across which the exit speed passes the measured one.
         const STEPS: usize = 8;
-        let (mut previous, mut reached, mut bracket) = (None, false, None);
+        let (mut previous, mut bracket) = (None, None);
+        let (mut least, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
         for i in 0..=STEPS {
             let v = low + (high - low) * i as f64 / STEPS as f64;
             let g = speed_less_target(v);
@@ -480,7 +509,7 @@ impl Problem {
                 previous = None;
                 continue;
             }
-            reached = true;
+            (least, most) = (least.min(g), most.max(g));
             if let Some((pv, pg)) = previous
                 && pg <= 0.0
                 && g >= 0.0
@@ -491,7 +520,11 @@ impl Problem {
             previous = Some((v, g));
         }
         let Some(bracket) = bracket else {
-            return Err(if reached {
+            return Err(if most < 0.0 {
+                Unreached::TooFast { shortfall: -most }
+            } else if least > 0.0 {
+                Unreached::TooSlow { shortfall: -least }
+            } else if least.is_finite() {
                 Unreached::BatSpeed
             } else {
                 Unreached::Angle
@@ -618,189 +651,10 @@ impl Problem {
     }
 }
 
-/// A root of g between a and b (g(a) ≤ 0 ≤ g(b) or the reverse), by the
-/// Illinois variant of regula falsi, to `tolerance` in the argument.
-fn illinois(
-    mut g: impl FnMut(f64) -> f64,
-    ((mut a, mut ga), (mut b, mut gb)): ((f64, f64), (f64, f64)),
-    tolerance: f64,
-) -> f64 {
-    let mut side = 0;
-    for _ in 0..100 {
-        if ga == 0.0 {
-            return a;
-        }
-        if gb == 0.0 {
-            return b;
-        }
-        let c = (a * gb - b * ga) / (gb - ga);
-        let gc = g(c);
-        if gc.is_nan() {
-            // Outside where g is defined: bisect instead.
-            let m = 0.5 * (a + b);
-            let gm = g(m);
-            if gm.is_nan() {
-                return c;
-            }
-            if (gm > 0.0) == (gb > 0.0) {
-                (b, gb) = (m, gm);
-            } else {
-                (a, ga) = (m, gm);
-            }
-            continue;
-        }
-        if (gc > 0.0) == (gb > 0.0) {
-            (b, gb) = (c, gc);
-            if side == 1 {
-                ga *= 0.5;
-            }
-            side = 1;
-        } else {
-            (a, ga) = (c, gc);
-            if side == -1 {
-                gb *= 0.5;
-            }
-            side = -1;
-        }
-        if (b - a).abs() < tolerance || gc == 0.0 {
-            return c;
-        }
-    }
-    0.5 * (a + b)
-}
-
-/// The most of `f` on [a, b] and where: a golden-section search, 32
-/// narrowings (to 2e-7 of the interval: the most is flat there, to 1e-13
-/// of itself).
-fn golden_max(mut f: impl FnMut(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
-    let ratio = (5f64.sqrt() - 1.0) / 2.0;
-    let mut c = b - ratio * (b - a);
-    let mut d = a + ratio * (b - a);
-    let (mut fc, mut fd) = (f(c), f(d));
-    for _ in 0..32 {
-        if fc > fd {
-            (b, d, fd) = (d, c, fc);
-            c = b - ratio * (b - a);
-            fc = f(c);
-        } else {
-            (a, c, fc) = (c, d, fd);
-            d = a + ratio * (b - a);
-            fd = f(d);
-        }
-    }
-    if fc > fd { (c, fc) } else { (d, fd) }
-}
-
-/// `end`, or the first point from it toward `inner` (halving the way)
-/// where `f` is defined, and f there.
-fn defined_toward(f: impl Fn(f64) -> f64, end: f64, inner: f64) -> (f64, f64) {
-    let mut x = end;
-    for _ in 0..30 {
-        let value = f(x);
-        if !value.is_nan() {
-            return (x, value);
-        }
-        x = 0.5 * (x + inner);
-    }
-    (inner, f(inner))
-}
-
-/// The `quantile` (0 to 1) of `values` (not empty) by the nearest rank.
-pub fn quantile(values: &[f64], quantile: f64) -> f64 {
-    let mut sorted = values.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    sorted[(quantile * (sorted.len() - 1) as f64).round() as usize]
-}
-
-/// The most the scene's bat gives this row's pitch, as a collision
-/// efficiency: the bat meeting the ball centred (E = 0) and head-on, its
-/// velocity straight against the pitch's (ψ = γ, the bat's direction
-/// against the pitch's path), at the row's bat speed, with the row's pitch
-/// spin and the scene's bodies.
-pub fn ceiling_efficiency(base: &Scene, swing: &TrackedSwing) -> f64 {
-    let mut scene = *base;
-    scene.pitch.spin = swing.pitch_spin.unwrap_or(base.pitch.spin);
-    scene.bat.speed = swing.bat_speed;
-    scene.bat.hand = swing.hand;
-    scene.bat.tilt = 0.0;
-    scene.bat.undercut = 0.0;
-    scene.bat.swing_angle = swing.pitch.descent_angle();
-    scene.bat.direction = -swing.pitch.lateral_angle();
-    let exit = Impact3d::with_pitch(&scene, swing.pitch.velocity).launch_speed();
-    collision_efficiency(exit, swing.pitch.speed(), swing.bat_speed)
-}
-
-/// `calibrate --impact`'s fit: the bat's effective mass M_B for which a
-/// row's q exceeds its own ceiling ([`ceiling_efficiency`]: its pitch, its
-/// bat speed, Eq. 19's e* at its approach) on only 1 − `quantile` of the
-/// rows, so that the model's ceiling is the measured one row by row.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
-pub struct ImpactFit {
-    pub rows: usize,
-    pub quantile: f64,
-    /// The data's q at the quantile.
-    pub data: f64,
-    /// The scene's M_B (kg), the model's ceiling at the quantile with it,
-    /// and the share of rows above their ceiling.
-    pub effective_mass_before: f64,
-    pub ceiling_before: f64,
-    pub above_before: f64,
-    /// The fitted M_B (kg), and the same with it.
-    pub effective_mass: f64,
-    pub ceiling_after: f64,
-    pub above_after: f64,
-}
-
-/// The range of M_B searched (kg).
-pub const EFFECTIVE_MASSES: (f64, f64) = (0.2, 5.0);
-
-/// Fits M_B by bisection (each ceiling rises with M_B: a heavier bat gives
-/// back more of the ball's momentum); `None` without rows.
-pub fn fit_effective_mass(base: &Scene, swings: &[TrackedSwing], at: f64) -> Option<ImpactFit> {
-    if swings.is_empty() {
-        return None;
-    }
-    let data: Vec<f64> = swings
-        .iter()
-        .map(|s| collision_efficiency(s.launch_speed, s.pitch.speed(), s.bat_speed))
-        .collect();
-    let ceilings = |mass: f64| -> Vec<f64> {
-        let mut scene = *base;
-        scene.bat.effective_mass = mass;
-        swings
-            .iter()
-            .map(|s| ceiling_efficiency(&scene, s))
-            .collect()
-    };
-    let excess =
-        |ceilings: &[f64]| -> Vec<f64> { data.iter().zip(ceilings).map(|(q, c)| q - c).collect() };
-    let above = |ceilings: &[f64]| {
-        let above = data.iter().zip(ceilings).filter(|(q, c)| q > c).count();
-        above as f64 / data.len() as f64
-    };
-    let (mut low, mut high) = EFFECTIVE_MASSES;
-    for _ in 0..50 {
-        let middle = 0.5 * (low + high);
-        if quantile(&excess(&ceilings(middle)), at) > 0.0 {
-            low = middle;
-        } else {
-            high = middle;
-        }
-    }
-    let effective_mass = 0.5 * (low + high);
-    let (before, after) = (ceilings(base.bat.effective_mass), ceilings(effective_mass));
-    Some(ImpactFit {
-        rows: swings.len(),
-        quantile: at,
-        data: quantile(&data, at),
-        effective_mass_before: base.bat.effective_mass,
-        ceiling_before: quantile(&before, at),
-        above_before: above(&before),
-        effective_mass,
-        ceiling_after: quantile(&after, at),
-        above_after: above(&after),
-    })
-}
-
+mod ceiling;
+mod search;
 #[cfg(test)]
 mod tests;
+
+pub use ceiling::{EFFECTIVE_MASSES, ImpactFit, ceiling_efficiency, fit_effective_mass, quantile};
+use search::{defined_toward, golden_max, illinois};

@@ -6,12 +6,12 @@ use crate::Scene;
 use crate::analysis::savant::RowLaunch;
 use crate::model::aero::UnknownModel;
 use crate::model::keys::{
-    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, InputBatch, InputError, Key, LAUNCH_KEYS, TEXT_KEYS,
+    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, InputBatch, InputError, Key, LAUNCH_KEYS, TEXT_KEYS, Typed,
 };
 use crate::model::park::GivenWeather;
 use crate::model::scene::UnknownHand;
 use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
-use crate::units::{Quantity, UnitSystem};
+use crate::units::{Quantity, UnitSystem, significant};
 
 use super::own_launch::SwingLaunches;
 use super::read::Fields;
@@ -647,7 +647,32 @@ fn read_cells(
         Some(swings) => swings.validate(scene, header.launch_only.then_some(park)),
         None => scene.validate(),
     };
-    if let Err(e) = valid {
+    if let Err(mut e) = valid {
+        // Out of range from a column in mph, ° or rpm: shown in that unit
+        // too, as `--set` shows a value typed with one.
+        if let InputError::OutOfRange {
+            key,
+            value,
+            bounds,
+            unit: si,
+            typed: typed @ None,
+        } = &mut e
+            && let Some(quantity) = header.columns.iter().find_map(|column| match column {
+                Column::Launch(i, unit) if LAUNCH_COLUMNS[*i].0 == *key => unit.quantity(),
+                _ => None,
+            })
+        {
+            let shown = quantity.unit(UnitSystem::Imperial, si);
+            *typed = Some(Box::new(Typed {
+                text: format!(
+                    "{} {} ({} {si})",
+                    significant(shown.show(*value)),
+                    shown.symbol,
+                    significant(*value)
+                ),
+                suggestion: format!(", that is {} {}", bounds.shown_in(shown), shown.symbol),
+            }));
+        }
         let from = if converted {
             let read: Vec<String> = header
                 .columns

@@ -234,12 +234,12 @@ impl RowSwing {
     /// The model's own q at E = 0 for the solved swing.
     pub(super) fn model_efficiency(&self) -> Option<f64> {
         let tracked = self.tracked.ok()?;
-        // q is the sweet spot's: a contact off it has none to compare.
-        let solved = self.solved().filter(|s| !s.off_sweet_spot)?;
+        // The most the swing gives is the sweet spot's, solved on or off it.
+        let solved = self.solved()?;
         Some(collision_efficiency(
             solved.max_exit_speed,
             tracked.pitch.speed(),
-            solved.scene.bat.speed,
+            tracked.bat_speed,
         ))
     }
 }
@@ -471,13 +471,11 @@ impl SwingTally {
                 data[0], data[1]
             );
         }
-        // The model's q is the sweet spot's: none when every solved row is
-        // off it.
-        if !self.model_efficiency.is_empty() {
+        if solved > 0 {
             let model = percentiles(&self.model_efficiency, &[0.5, 0.99]);
             let _ = write!(
                 line,
-                ", median {:.3}, 99th {:.3} (model at E = 0, solved rows at the sweet spot)",
+                ", median {:.3}, 99th {:.3} (model: each solved swing at E = 0, at the sweet spot)",
                 model[0], model[1],
             );
         }

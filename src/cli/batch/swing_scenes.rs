@@ -108,9 +108,18 @@ fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
     let speed = |v: f64| shown.value(Quantity::Speed, v, 1);
     let angle = |a: f64| shown.angle_and_degrees(a, 3, 1);
     let size = |e: f64| shown.value_to(Quantity::Size, e, if shown.is_si() { 4 } else { 2 });
+    // Off the sweet spot, the bat's speed where it met the ball.
+    let contact = match solved.off_sweet_spot {
+        true => format!(
+            ", bat {} of {} at the contact",
+            speed(solved.scene.bat.speed),
+            speed(tracked.bat_speed)
+        ),
+        false => String::new(),
+    };
     let description = format!(
-        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}, {}, q {:.3}; here {} at {} (E \
-         for the paper's pitch path)",
+        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}{contact}, {}, q {:.3}; here {} at \
+         {} (E for the paper's pitch path)",
         // "Ohtani, Shohei" as "Shohei Ohtani": found by either name.
         cell("player_name").map_or(String::from("?"), |n| match n.split_once(", ") {
             Some((last, first)) => format!("{first} {last}"),
