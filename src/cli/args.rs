@@ -193,7 +193,8 @@ pub enum Command {
     /// reads them (a Savant export: hit_distance_sc).
     Calibrate {
         /// The CSV (`-` for stdin): launches and hit_distance_sc (ft); hang_time (s)
-        /// and apex (ft) fit the lift too.
+        /// or apex (ft) fit the lift, else the distances below and above the
+        /// median launch angle do.
         file: String,
         #[command(flatten)]
         scene: SceneArgs,
@@ -214,6 +215,9 @@ pub enum Command {
         /// or save a factor that ended at its bound.
         #[arg(long, requires = "save")]
         force: bool,
+        /// Fit the drag alone (model.drag_scale), the lift left as it is.
+        #[arg(long, conflicts_with = "impact")]
+        drag_only: bool,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,

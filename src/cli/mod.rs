@@ -107,6 +107,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         by,
         save,
         force,
+        drag_only,
         json,
         impact,
     } = command
@@ -123,9 +124,14 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
             force: *force,
         });
         let text = match by {
-            Some(by) => batch::calibrate::run_by(setup, file, by, *json, Shown(cli.units))?,
+            Some(by) => {
+                batch::calibrate::run_by(setup, file, by, !drag_only, *json, Shown(cli.units))?
+            }
             None if *impact => batch::calibrate_impact::run(&setup, file, save, *json)?,
-            None => batch::calibrate::run(&setup, file, save, *json, Shown(cli.units))?,
+            None => {
+                let shown = Shown(cli.units);
+                batch::calibrate::run(&setup, file, save, !drag_only, *json, shown)?
+            }
         };
         print!("{text}");
         return Ok(ExitCode::SUCCESS);

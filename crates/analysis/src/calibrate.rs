@@ -9,15 +9,20 @@
 //! The drag factor is the root of median(model − measured distance) = 0 in
 //! k_D (monotone: more drag, shorter); with a second measured quantity the
 //! two factors solve the two medians together (Newton's method, its
-//! Jacobian by differences). Each trial flies every row (in parallel).
+//! Jacobian by differences). Without one, the distances by launch angle
+//! fit both ([`bands`]). Each trial flies every row (in parallel).
 //!
 //! The uncertainty is the median's own: its standard error, 1.2533·σ/√n
 //! with σ = 1.4826·(median absolute deviation) (both exact for normal
 //! errors), carried to the factors through the slopes of the medians.
 
+mod bands;
+
+pub use bands::{BAND_EDGES, band_of};
+
 use rayon::prelude::*;
 
-use model::flight::FlightOptions;
+use model::flight::{FlightOptions, FlightSummary};
 use model::launch::SceneFlight;
 use model::scene::Scene;
 
@@ -120,7 +125,7 @@ impl Errors {
     }
 
     /// The median's standard error, 1.2533·1.4826·spread/√n.
-    fn standard_error(&self) -> f64 {
+    pub(crate) fn standard_error(&self) -> f64 {
         1.2533 * 1.4826 * self.spread / (self.rows.max(1) as f64).sqrt()
     }
 }
@@ -129,9 +134,15 @@ impl Errors {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Fit {
     pub drag_scale: Estimate,
-    /// `None`: no hang time or apex was measured, so lift was not fitted
-    /// (left as it was).
+    /// `None`: lift was not fitted (left as it was).
     pub lift_scale: Option<Estimate>,
+    /// What fitted the lift beside the distances.
+    pub lift_from: Option<LiftFrom>,
+    /// The correlation of the two factors' errors (−1 to 1): near ±1 the
+    /// measurements fix a combination of them rather than each.
+    pub correlation: Option<f64>,
+    /// Fitted by launch-angle band: each band's distance errors.
+    pub bands: Option<bands::Bands>,
     /// Distance errors (m) before (at the scenes' own factors) and after.
     pub before: Errors,
     pub after: Errors,
@@ -180,11 +191,27 @@ const LIFT_RANGE: (f64, f64) = (0.0, 3.0);
 /// The factors are wanted to this: far inside their uncertainty.
 const TOLERANCE: f64 = 1e-5;
 
-/// Which second quantity constrains the lift.
-#[derive(Clone, Copy)]
-enum Second {
+/// What fits the lift beside the distances' median.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LiftFrom {
     HangTime,
     Apex,
+    /// The distances' medians by launch-angle band ([`bands`]).
+    Bands,
+}
+
+/// The row flown at factors (k_D, k_L) on its scene's own, if it lands.
+fn flown(
+    row: &Measured,
+    (drag, lift): (f64, f64),
+    options: &FlightOptions,
+) -> Option<FlightSummary> {
+    let mut scene = row.scene;
+    scene.drag_scale *= drag;
+    scene.lift_scale *= lift;
+    let summary = SceneFlight::new(&scene, &scene.batted_ball()).fly(options);
+    summary.landed.then_some(summary)
 }
 
 /// The model's errors at factors (k_D, k_L) (each scene's own factors
@@ -192,23 +219,19 @@ enum Second {
 fn errors(
     rows: &[Measured],
     (drag, lift): (f64, f64),
-    second: Option<Second>,
+    second: Option<LiftFrom>,
     options: &FlightOptions,
 ) -> (Vec<f64>, Vec<f64>) {
     let flown: Vec<(Option<f64>, Option<f64>)> = rows
         .par_iter()
         .map(|row| {
-            let mut scene = row.scene;
-            scene.drag_scale *= drag;
-            scene.lift_scale *= lift;
-            let summary = SceneFlight::new(&scene, &scene.batted_ball()).fly(options);
-            if !summary.landed {
+            let Some(summary) = flown(row, (drag, lift), options) else {
                 return (None, None);
-            }
+            };
             let measured = match second {
-                Some(Second::HangTime) => row.hang_time.map(|t| summary.flight_time - t),
-                Some(Second::Apex) => row.apex.map(|a| summary.apex - a),
-                None => None,
+                Some(LiftFrom::HangTime) => row.hang_time.map(|t| summary.flight_time - t),
+                Some(LiftFrom::Apex) => row.apex.map(|a| summary.apex - a),
+                Some(LiftFrom::Bands) | None => None,
             };
             (Some(summary.range - row.distance), measured)
         })
@@ -233,17 +256,21 @@ pub fn median(mut values: Vec<f64>) -> f64 {
     }
 }
 
-/// Fits `model.drag_scale` to the distances, and `model.lift_scale` too
-/// where at least a third of the rows measure the hang time (else the
-/// apex). The factors found multiply each scene's own.
-pub fn fit(rows: &[Measured], options: &FlightOptions) -> Result<Fit, FitError> {
+/// Fits `model.drag_scale` to the distances, and with `lift`
+/// `model.lift_scale` too: from the hang times where at least a third of
+/// the rows measure them (else the apexes), else from the distances by
+/// launch-angle band. The factors found multiply each scene's own.
+pub fn fit(rows: &[Measured], options: &FlightOptions, lift: bool) -> Result<Fit, FitError> {
     let count = |f: fn(&Measured) -> bool| rows.iter().filter(|r| f(r)).count();
-    let second = if 3 * count(|r| r.hang_time.is_some()) >= rows.len() && !rows.is_empty() {
-        Some(Second::HangTime)
-    } else if 3 * count(|r| r.apex.is_some()) >= rows.len() && !rows.is_empty() {
-        Some(Second::Apex)
-    } else {
+    let second = if !lift || rows.is_empty() {
         None
+    } else if 3 * count(|r| r.hang_time.is_some()) >= rows.len() {
+        Some(LiftFrom::HangTime)
+    } else if 3 * count(|r| r.apex.is_some()) >= rows.len() {
+        Some(LiftFrom::Apex)
+    } else {
+        let drag_only = fit(rows, options, false)?;
+        return bands::fit(rows, options, drag_only);
     };
     let mut trials = 0;
     let mut at = |k: (f64, f64)| {
@@ -334,6 +361,7 @@ pub fn fit(rows: &[Measured], options: &FlightOptions) -> Result<Fit, FitError> 
     let h = 1e-3;
     let (moved, moved_second) = at((drag + h, lift));
     let distance_per_drag = (median(moved) - after.median) / h;
+    let mut correlation = None;
     let (drag_scale, lift_scale) = match (second, second_after) {
         (Some(_), Some(second_after)) => {
             let (lifted, lifted_second) = at((drag, lift + h));
@@ -351,6 +379,9 @@ pub fn fit(rows: &[Measured], options: &FlightOptions) -> Result<Fit, FitError> 
             // independent of the other's.
             let drag_se = (j[1][1] * s1).hypot(j[0][1] * s2) / det.abs();
             let lift_se = (j[1][0] * s1).hypot(j[0][0] * s2) / det.abs();
+            let covariance =
+                -(j[1][1] * j[1][0] * s1 * s1 + j[0][1] * j[0][0] * s2 * s2) / (det * det);
+            correlation = Some(covariance / (drag_se * lift_se));
             (
                 Estimate {
                     value: drag,
@@ -373,6 +404,9 @@ pub fn fit(rows: &[Measured], options: &FlightOptions) -> Result<Fit, FitError> 
     Ok(Fit {
         drag_scale,
         lift_scale,
+        lift_from: second,
+        correlation,
+        bands: None,
         before,
         after,
         second_before,
@@ -426,7 +460,7 @@ mod tests {
         for row in &mut rows {
             row.hang_time = None;
         }
-        let fit = fit(&rows, &options()).unwrap();
+        let fit = fit(&rows, &options(), false).unwrap();
         assert!((fit.drag_scale.value - 1.07).abs() < 1e-4, "{fit:?}");
         assert!(fit.lift_scale.is_none());
         assert!(fit.before.median > 0.0, "unscaled flies further");
@@ -435,11 +469,39 @@ mod tests {
 
     #[test]
     fn drag_and_lift_are_found_together_from_hang_times() {
-        let fit = fit(&made_with(0.95, 1.1), &options()).unwrap();
+        let fit = fit(&made_with(0.95, 1.1), &options(), true).unwrap();
         assert!((fit.drag_scale.value - 0.95).abs() < 1e-3, "{fit:?}");
         let lift = fit.lift_scale.unwrap();
         assert!((lift.value - 1.1).abs() < 1e-3, "{fit:?}");
         assert!(fit.after.median.abs() < 1e-3);
         assert!(fit.second_after.unwrap().median.abs() < 1e-3);
+    }
+
+    /// Without hang times, the distances by launch-angle band find both
+    /// (the 24 flights span four bands, 20° to 43°), and no misfit is left.
+    #[test]
+    fn drag_and_lift_are_found_together_from_distances_by_band() {
+        let mut rows = made_with(0.95, 1.1);
+        for row in &mut rows {
+            row.hang_time = None;
+        }
+        let fit = fit(&rows, &options(), true).unwrap();
+        assert_eq!(fit.lift_from, Some(LiftFrom::Bands));
+        assert!((fit.drag_scale.value - 0.95).abs() < 1e-3, "{fit:?}");
+        assert!(
+            (fit.lift_scale.unwrap().value - 1.1).abs() < 1e-3,
+            "{fit:?}"
+        );
+        let bands = fit.bands.unwrap();
+        assert_eq!(bands.after.iter().filter(|b| b.rows > 0).count(), 4);
+        assert!(
+            bands.after.iter().all(|b| b.median.abs() < 0.01),
+            "{bands:?}"
+        );
+        assert!(bands.misfit < 0.1, "{bands:?}");
+        // A band is from its edge up: 30° (an ulp off in radians) is 30–35°.
+        assert_eq!(band_of(30f64.to_radians()), Some(3));
+        assert_eq!(band_of(9.99f64.to_radians()), None);
+        assert_eq!(band_of(80f64.to_radians()), Some(5));
     }
 }

@@ -1,7 +1,7 @@
 //! `homerun calibrate FILE [--save NAME]`: the rows of a CSV read as
 //! `fly --batch` reads them (a Savant export as it comes), each launch
-//! completed as it completes them, and the factors on C_D (and C_L, given
-//! hang times or apexes) fitted to the measured distances
+//! completed as it completes them, and the factors on C_D and C_L fitted
+//! to the measured distances, and hang times or apexes where measured
 //! ([`crate::analysis::calibrate`]).
 
 use std::io::{self, BufRead};
@@ -13,7 +13,7 @@ use super::pieces::PIECE_ROWS;
 use super::read::{MAX_RECORD_BYTES, Records};
 use super::rows::{Header, Job, Row};
 use super::savant_columns::{SavantColumn, Setup};
-use crate::analysis::calibrate::{self, Errors, Fit, Measured};
+use crate::analysis::calibrate::{self, Errors, Fit, LiftFrom, Measured};
 use crate::analysis::precision::Purpose;
 use crate::analysis::savant;
 use crate::cli::UsageError;
@@ -67,6 +67,7 @@ pub(in crate::cli) fn run(
     setup: &Setup,
     source: &str,
     save: Option<Save>,
+    lift: bool,
     json: bool,
     shown: Shown,
 ) -> Result<String, UsageError> {
@@ -76,7 +77,7 @@ pub(in crate::cli) fn run(
     };
     let read = read_source(source, save.as_ref(), |input| read(setup, input))?;
     let options = Purpose::Readout.flight_options();
-    let fit = calibrate::fit(&read.measured, &options).map_err(|e| failed(e.to_string()))?;
+    let fit = calibrate::fit(&read.measured, &options, lift).map_err(|e| failed(e.to_string()))?;
 
     let at_bounds: Vec<String> = fit
         .at_bounds()
@@ -152,6 +153,7 @@ pub(in crate::cli) fn run_by(
     mut setup: Setup,
     source: &str,
     by: &str,
+    lift: bool,
     json: bool,
     shown: Shown,
 ) -> Result<String, UsageError> {
@@ -187,7 +189,8 @@ pub(in crate::cli) fn run_by(
             fits.push(serde_json::json!({ "group": group, "rows": measured.len() }));
             continue;
         }
-        let fit = calibrate::fit(measured, &options).map_err(|e| failed(format!("{name}: {e}")))?;
+        let fit =
+            calibrate::fit(measured, &options, lift).map_err(|e| failed(format!("{name}: {e}")))?;
         let lift = fit.lift_scale.map_or(String::new(), |l| {
             format!("  model.lift_scale = {:.4} ± {:.4}", l.value, l.uncertainty)
         });
@@ -422,14 +425,63 @@ fn text(
         ),
         (
             "lift",
-            match fit.lift_scale {
-                Some(l) => format!("model.lift_scale = {:.4} ± {:.4}", l.value, l.uncertainty),
-                None => "not fitted: no hang_time or apex column measures it".to_owned(),
+            match (fit.lift_scale, fit.lift_from) {
+                (Some(l), Some(from)) => format!(
+                    "model.lift_scale = {:.4} ± {:.4}, from {}; correlation with the drag {:+.2}",
+                    l.value,
+                    l.uncertainty,
+                    match from {
+                        LiftFrom::HangTime => "the hang times",
+                        LiftFrom::Apex => "the apexes",
+                        LiftFrom::Bands => "the distances by launch-angle band",
+                    },
+                    fit.correlation.unwrap_or(0.0)
+                ),
+                _ => "not fitted (--drag-only)".to_owned(),
             },
         ),
         ("before", format!("distance {}", errors(&fit.before, &d))),
         ("after", format!("distance {}", errors(&fit.after, &d))),
     ];
+    if let Some(bands) = &fit.bands {
+        let signed = |m: f64| format!("{}{}", if m >= 0.0 { "+" } else { "-" }, d(m.abs()));
+        let with_rows = bands.lower_edges.iter().enumerate();
+        for (k, edge) in with_rows.filter(|(k, _)| bands.after[*k].rows > 0) {
+            let name = match bands.lower_edges.get(k + 1) {
+                Some(next) => format!("{edge}–{next}°"),
+                None => format!("{edge}°+"),
+            };
+            let (before, after) = (bands.before[k], bands.after[k]);
+            lines.push((
+                if lines
+                    .last()
+                    .is_some_and(|l| l.0 == "bands" || l.0.is_empty())
+                {
+                    ""
+                } else {
+                    "bands"
+                },
+                format!(
+                    "{name:<7} median {} → {} ({} rows)",
+                    signed(before.median),
+                    signed(after.median),
+                    after.rows
+                ),
+            ));
+        }
+        lines.push((
+            "misfit",
+            format!(
+                "χ²/dof = {:.1} over the bands (about 1 for noise alone; {})",
+                bands.misfit,
+                if bands.misfit > 1.0 {
+                    "the ± are scaled by its root"
+                } else {
+                    "the ± are the medians' own"
+                }
+            ),
+        ));
+    }
     if let (Some(before), Some(after)) = (fit.second_before, fit.second_after) {
         let unit: &dyn Fn(f64) -> String = if read.measured.iter().any(|m| m.hang_time.is_some()) {
             &seconds

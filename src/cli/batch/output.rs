@@ -11,6 +11,7 @@ use serde::Serialize;
 use super::flights::RowFlight;
 use super::rows::Job;
 use super::savant_columns::{Setup, quoted};
+use crate::analysis::calibrate::{BAND_EDGES, band_of};
 use crate::cli::shown::Shown;
 use crate::model::clearing::Clearing;
 use crate::preset::escape_cut;
@@ -401,18 +402,10 @@ pub(super) struct Tally {
     pub differences: Vec<(f64, f64)>,
 }
 
-/// The launch-angle bands (°) of the summary's table: the model's error
-/// is looked at by band, as docs/accuracy.md does (a tilt by launch angle
-/// shows there, not in one median).
-const BANDS: [(f64, f64); 7] = [
-    (f64::NEG_INFINITY, 10.0),
-    (10.0, 20.0),
-    (20.0, 25.0),
-    (25.0, 30.0),
-    (30.0, 35.0),
-    (35.0, 50.0),
-    (50.0, f64::INFINITY),
-];
+/// The summary's table looks at the model's error by launch-angle band, as
+/// docs/accuracy.md does (a tilt by launch angle shows there, not in one
+/// median): below 10°, then `calibrate`'s bands of balls in the air.
+const BANDS: usize = BAND_EDGES.len() + 1;
 
 /// One band's rows, median difference and median |difference| (m).
 #[derive(Serialize)]
@@ -476,25 +469,21 @@ impl Tally {
 }
 
 impl Tally {
-    /// The differences by launch-angle band ([`BANDS`]), in SI.
+    /// The differences by launch-angle band, in SI.
     pub(super) fn bands(&self) -> Vec<Band> {
-        BANDS
-            .iter()
-            .map(|&(from, to)| {
+        (0..BANDS)
+            .map(|band| {
+                // Band 0 is below the first edge, band k from edge k − 1.
+                let in_band = |angle: f64| band_of(angle).map_or(0, |b| b + 1) == band;
                 let mut signed: Vec<f64> = (self.differences.iter())
-                    // To a millionth of a degree: an export's whole degrees
-                    // come back from radians an ulp off (30° as 29.999…).
-                    .filter(|(angle, _)| {
-                        let degrees = (angle.to_degrees() * 1e6).round() / 1e6;
-                        (from..to).contains(&degrees)
-                    })
+                    .filter(|(angle, _)| in_band(*angle))
                     .map(|d| d.1)
                     .collect();
                 let mut absolute: Vec<f64> = signed.iter().map(|d| d.abs()).collect();
                 let any = !signed.is_empty();
                 Band {
-                    from: from.is_finite().then_some(from),
-                    to: to.is_finite().then_some(to),
+                    from: band.checked_sub(1).map(|k| BAND_EDGES[k]),
+                    to: BAND_EDGES.get(band).copied(),
                     rows: signed.len(),
                     median: any.then(|| median(&mut signed)),
                     median_abs: any.then(|| median(&mut absolute)),
