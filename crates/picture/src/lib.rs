@@ -15,7 +15,7 @@ mod trajectory;
 
 pub use bench::bench_svg;
 pub use figure::{figure_svg, table_figure_svg, table_figure_svg_now};
-pub use park::{park_svg, park_svg_in};
+pub use park::park_svg_in;
 pub use surface::{SurfacePicture, surface_svg, surface_svg_in};
 pub use trajectory::{
     FlightPath, MAX_STRETCH, TrajectoryPicture, trajectory_svg, trajectory_svg_in,

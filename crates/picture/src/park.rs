@@ -15,11 +15,6 @@ const TITLE: u32 = 40;
 const LABELS: u32 = 48;
 const MARGIN: u32 = 14;
 
-/// The park's outline as SVG, in metres.
-pub fn park_svg(park: &Park) -> Result<String, PictureError> {
-    park_svg_in(park, UnitSystem::Si)
-}
-
 /// The park's outline as SVG, its distances and walls in `system`'s unit
 /// (m or ft).
 pub fn park_svg_in(park: &Park, system: UnitSystem) -> Result<String, PictureError> {

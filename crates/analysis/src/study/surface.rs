@@ -145,20 +145,6 @@ impl Surface {
     }
 }
 
-/// What happens with `scene`'s swing replaced by (E, ψ).
-pub fn outcome_at(
-    scene: &Scene,
-    undercut: f64,
-    swing_angle: f64,
-    options: impl Into<FlightOptions>,
-) -> CellOutcome {
-    if undercut.abs() >= scene.reach() {
-        return CellOutcome::BatMisses;
-    }
-    let flight = model::simulate(&scene.with_swing(undercut, swing_angle), options).flight;
-    CellOutcome::of_flight(flight.landed, flight.range)
-}
-
 /// The most integration steps a sweep's optimisations may take together
 /// (about 3 s on one core), shared by its points: each point's optimiser
 /// gets the smaller of an even share of what is left and its own

@@ -278,19 +278,6 @@ impl Flight {
         )
     }
 
-    /// d/dt of the state (x, y, v_x, v_y) at the launch spin.
-    #[inline]
-    pub fn derivative(&self, state: &State<4>) -> State<4> {
-        self.derivative_at(0.0, state, None)
-    }
-
-    /// d/dt of the state at time `t`, on a given piece of the drag curve
-    /// (or the one its Reynolds number lies on).
-    #[inline(always)]
-    pub fn derivative_at(&self, t: f64, state: &State<4>, piece: Option<usize>) -> State<4> {
-        self.derivative_with((&self.drag, &self.lift), t, state, piece, true)
-    }
-
     /// The piece of the drag curve the ball is on at launch, or about to
     /// enter: at a kink, the one the Reynolds number is moving into.
     pub fn drag_piece(&self, state: &State<4>) -> usize {
