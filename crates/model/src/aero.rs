@@ -227,10 +227,6 @@ impl Sawicki2003Drag {
     pub fn recovery<R: Real>(exponential: R) -> R {
         R::splat(DRAG_FLOOR + RECOVERY) - R::splat(RECOVERY) * exponential
     }
-
-    /// C_D on the subcritical piece (0) and on the floor (2).
-    pub const SUBCRITICAL: f64 = SUBCRITICAL_DRAG;
-    pub const FLOOR: f64 = DRAG_FLOOR;
 }
 
 impl DragCurve for Sawicki2003Drag {

@@ -6,7 +6,7 @@
 
 use plotters::prelude::*;
 
-use super::{FONT, PictureError, draw_legend, drawn, house_style, series_color};
+use super::{FONT, PictureError, draw_legend, draw_title, drawn, house_style, series_color};
 use analysis::bench::TrajectoryRow;
 
 /// The smallest error drawn (m): a row that hit the reference exactly is
@@ -82,12 +82,12 @@ pub fn bench_svg(rows: &[TrajectoryRow]) -> Result<String, PictureError> {
         let root = SVGBackend::with_string(&mut svg, (960, 640)).into_drawing_area();
         root.fill(&WHITE).map_err(drawn)?;
         let (top, body) = root.split_vertically(52);
-        top.draw(&Text::new(
+        draw_title(
+            &top,
             "Work–precision: one trajectory (the Table II fastball's launch)",
             (12, 8),
-            (FONT, 17).into_font().style(FontStyle::Bold),
-        ))
-        .map_err(drawn)?;
+            17,
+        )?;
         top.draw(&Text::new(
             format!(
                 "range error against Purpose::Reference; each point one tolerance or step; errors below {ERROR_FLOOR:.0e} m drawn at {ERROR_FLOOR:.0e} m"

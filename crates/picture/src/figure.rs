@@ -11,8 +11,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::surface::{SurfacePicture, surface_svg};
 use super::{
-    FONT, Labels, MARK, NOW, PictureError, chars_in, draw_legend, drawn, emptiest_corner,
-    house_style, padded, series_color, sig, tick_label, wrapped,
+    FONT, Labels, MARK, NOW, PictureError, chars_in, draw_legend, draw_title, drawn,
+    emptiest_corner, house_style, padded, series_color, sig, tick_label, wrapped,
 };
 use analysis::figures::curves::{
     self, axis_title, current_value, marked_points, panels, x_column, y_title,
@@ -131,12 +131,7 @@ pub fn table_figure_svg_now(
         let (body, bottom) = rest.split_vertically(PANEL_HEIGHT * prefixes.len() as u32);
         let mut y = 8;
         for line in title {
-            top.draw(&Text::new(
-                line,
-                (12, y),
-                (FONT, 17).into_font().style(FontStyle::Bold),
-            ))
-            .map_err(drawn)?;
+            draw_title(&top, &line, (12, y), 17)?;
             y += LINE as i32 + 4;
         }
         // The conditions without the preset's name, which the line above gives.

@@ -15,7 +15,7 @@ mod trajectory;
 
 pub use bench::bench_svg;
 pub use figure::{figure_svg, table_figure_svg, table_figure_svg_now};
-pub use park::{park_svg, park_svg_in};
+pub use park::park_svg_in;
 pub use surface::{SurfacePicture, surface_svg, surface_svg_in};
 pub use trajectory::{
     FlightPath, MAX_STRETCH, TrajectoryPicture, trajectory_svg, trajectory_svg_in,
@@ -72,8 +72,9 @@ impl Scale {
 
 use plotters::chart::{ChartContext, MeshStyle, SeriesLabelPosition};
 use plotters::coord::CoordTranslate;
+use plotters::coord::Shift;
 use plotters::coord::ranged1d::Ranged;
-use plotters::prelude::DrawingBackend;
+use plotters::prelude::{DrawingArea, DrawingBackend, FontStyle, IntoFont, Text};
 use plotters::style::RGBColor;
 use plotters::style::{Color, WHITE};
 
@@ -90,6 +91,18 @@ fn drawn<E: std::fmt::Display>(error: E) -> PictureError {
 
 /// The font family every text asks for: the viewer's own sans-serif.
 const FONT: &str = "sans-serif";
+
+/// A line of a picture's title, in bold `size`-point type at `at` (pixels
+/// from `area`'s top left).
+fn draw_title<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    line: &str,
+    at: (i32, i32),
+    size: u32,
+) -> Result<(), PictureError> {
+    let font = (FONT, size).into_font().style(FontStyle::Bold);
+    area.draw(&Text::new(line, at, font)).map_err(drawn)
+}
 
 /// Every chart's legend alike, at `position`: a white box over the plot,
 /// lightly bordered.

@@ -5,8 +5,8 @@
 use plotters::prelude::*;
 
 use super::{
-    FONT, NOW, PictureError, Scale, UnitSystem, draw_legend, drawn, house_style, series_color,
-    tick_label,
+    FONT, NOW, PictureError, Scale, UnitSystem, draw_legend, draw_title, drawn, house_style,
+    series_color, tick_label,
 };
 use model::park::{FOUL_LINE, Park};
 
@@ -14,11 +14,6 @@ const SIZE: u32 = 820;
 const TITLE: u32 = 40;
 const LABELS: u32 = 48;
 const MARGIN: u32 = 14;
-
-/// The park's outline as SVG, in metres.
-pub fn park_svg(park: &Park) -> Result<String, PictureError> {
-    park_svg_in(park, UnitSystem::Si)
-}
 
 /// The park's outline as SVG, its distances and walls in `system`'s unit
 /// (m or ft).
@@ -55,12 +50,7 @@ pub fn park_svg_in(park: &Park, system: UnitSystem) -> Result<String, PictureErr
         let root = SVGBackend::with_string(&mut svg, (SIZE, height)).into_drawing_area();
         root.fill(&WHITE).map_err(drawn)?;
         let (top, body) = root.split_vertically(TITLE);
-        top.draw(&Text::new(
-            title,
-            (12, 12),
-            (FONT, 16).into_font().style(FontStyle::Bold),
-        ))
-        .map_err(drawn)?;
+        draw_title(&top, &title, (12, 12), 16)?;
         let mut chart = ChartBuilder::on(&body)
             .margin(MARGIN)
             .x_label_area_size(LABELS)

@@ -9,7 +9,8 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::{
-    FONT, Labels, MARK, NOW, PictureError, Scale, UnitSystem, drawn, house_style, sig, tick_label,
+    FONT, Labels, MARK, NOW, PictureError, Scale, UnitSystem, draw_title, drawn, house_style, sig,
+    tick_label,
 };
 use analysis::figures::SurfaceFigure;
 use analysis::study::{CellOutcome, Surface};
@@ -164,12 +165,7 @@ pub fn surface_svg_in(
         let root = SVGBackend::with_string(&mut svg, (WIDTH, HEIGHT)).into_drawing_area();
         root.fill(&WHITE).map_err(drawn)?;
         let (top, body) = root.split_vertically(52);
-        top.draw(&Text::new(
-            picture.title.clone(),
-            (12, 8),
-            (FONT, 17).into_font().style(FontStyle::Bold),
-        ))
-        .map_err(drawn)?;
+        draw_title(&top, &picture.title, (12, 8), 17)?;
         top.draw(&Text::new(
             picture.conditions.clone(),
             (12, 30),

@@ -8,8 +8,8 @@
 use plotters::prelude::*;
 
 use super::{
-    FONT, NOW, PictureError, Scale, UnitSystem, draw_legend, drawn, emptiest_corner, house_style,
-    series_color, tick_label,
+    FONT, NOW, PictureError, Scale, UnitSystem, draw_legend, draw_title, drawn, emptiest_corner,
+    house_style, series_color, tick_label,
 };
 use analysis::figures::trimmed;
 use preset::Fence;
@@ -146,12 +146,7 @@ fn drawn_in(picture: &TrajectoryPicture, unit: &str) -> Result<String, PictureEr
             top_view(&below, picture, unit)?;
         }
         let (top, body) = side.split_vertically(TITLE);
-        top.draw(&Text::new(
-            title,
-            (12, 12),
-            (FONT, 17).into_font().style(FontStyle::Bold),
-        ))
-        .map_err(drawn)?;
+        draw_title(&top, &title, (12, 12), 17)?;
         let mut chart = ChartBuilder::on(&body)
             .margin(MARGIN)
             .x_label_area_size(X_LABELS)

@@ -76,8 +76,7 @@ fn create_temporary(target: &Path) -> io::Result<(PathBuf, fs::File)> {
 /// or it is a link in `/dev` or `/proc`, which are the system's
 /// (`/dev/stdout` leads to whatever stdout is, a file included).
 pub fn is_special(target: &Path) -> bool {
-    let system = (target.starts_with("/dev") || target.starts_with("/proc"))
-        && fs::symlink_metadata(target).is_ok_and(|m| m.file_type().is_symlink());
+    let system = (target.starts_with("/dev") || target.starts_with("/proc")) && target.is_symlink();
     fs::metadata(target).is_ok_and(|m| !m.is_dir() && (system || !m.is_file()))
 }
 
@@ -101,7 +100,7 @@ fn folder(path: &Path) -> &Path {
 /// leads out of its folder is an error naming where it leads: writing
 /// through it could replace any file the user can write.
 pub fn resolved(target: &Path) -> io::Result<PathBuf> {
-    let is_link = fs::symlink_metadata(target).is_ok_and(|m| m.file_type().is_symlink());
+    let is_link = target.is_symlink();
     if !is_link {
         return Ok(target.to_path_buf());
     }
@@ -184,12 +183,7 @@ mod tests {
         fs::write(&file, "old").unwrap();
         std::os::unix::fs::symlink(&file, &link).unwrap();
         write(&link, b"new").unwrap();
-        assert!(
-            fs::symlink_metadata(&link)
-                .unwrap()
-                .file_type()
-                .is_symlink()
-        );
+        assert!(link.is_symlink());
         assert_eq!(fs::read_to_string(&file).unwrap(), "new");
         assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2, "no temporary");
     }
@@ -208,12 +202,7 @@ mod tests {
         write(&dir.path().join("out.svg"), b"<svg/>").unwrap();
         assert_eq!(fs::read_to_string(&victim).unwrap(), "keep me");
         assert_eq!(fs::read(dir.path().join("out.svg")).unwrap(), b"<svg/>");
-        assert!(
-            fs::symlink_metadata(&planted)
-                .unwrap()
-                .file_type()
-                .is_symlink()
-        );
+        assert!(planted.is_symlink());
         // The temporary's names are not guessable: two in a row differ.
         let (a, _) = create_temporary(&dir.path().join("out.svg")).unwrap();
         let (b, _) = create_temporary(&dir.path().join("out.svg")).unwrap();
@@ -262,12 +251,7 @@ mod tests {
             assert!(message.contains("outside its folder"), "{message}");
         }
         assert_eq!(fs::read_to_string(&victim).unwrap(), "keep me");
-        assert!(
-            fs::symlink_metadata(&link)
-                .unwrap()
-                .file_type()
-                .is_symlink()
-        );
+        assert!(link.is_symlink());
         assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1, "no temporary");
     }
 

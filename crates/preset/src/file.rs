@@ -155,13 +155,11 @@ fn check_file(path: &Path, name: &str, metadata: &fs::Metadata) -> Result<(), Pr
 /// The error for `path`, which is not a regular file (`metadata`, after
 /// links): what it is, and where a symlink there leads.
 fn not_a_file(path: &Path, name: &str, metadata: &fs::Metadata) -> PresetError {
-    let link = fs::symlink_metadata(path)
-        .is_ok_and(|m| m.file_type().is_symlink())
-        .then(|| {
-            fs::canonicalize(path)
-                .or_else(|_| fs::read_link(path))
-                .map_or_else(|_| "?".to_owned(), |target| shown(&target))
-        });
+    let link = path.is_symlink().then(|| {
+        fs::canonicalize(path)
+            .or_else(|_| fs::read_link(path))
+            .map_or_else(|_| "?".to_owned(), |target| shown(&target))
+    });
     PresetError::NotAFile {
         path: name.to_owned(),
         kind: FileKind::of(metadata.file_type()),

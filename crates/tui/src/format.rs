@@ -6,12 +6,6 @@
 use model::keys::{InputError, Key, number_text};
 use units::{Quantity, UnitSystem};
 
-/// A value as the inputs pane shows it in SI: enough digits for a thousandth
-/// of the key's step, trailing zeros trimmed.
-pub fn format_value(key: &Key, value: f64) -> String {
-    shown_value(key, value, UnitSystem::Si)
-}
-
 /// The key's nudge step in the unit shown: its own in SI, else rounded to
 /// 1, 2 or 5 in the shown unit (1 mph, 100 rpm, 0.5°), as
 /// `sensitivity::nudge_in` nudges.
@@ -180,7 +174,7 @@ mod tests {
         assert_eq!(shown("ball.gyration_radius", 0.0231), "0.91");
         // SI as it always was: a thousandth of the step.
         assert_eq!(
-            format_value(Scene::key("bat.undercut").unwrap(), 0.0265),
+            shown_value(Scene::key("bat.undercut").unwrap(), 0.0265, UnitSystem::Si),
             "0.0265"
         );
         let scene = Scene::default();

@@ -5,7 +5,7 @@
 //! ([`crate::analysis::calibrate`]).
 
 use std::io::{self, BufRead};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
 
@@ -71,10 +71,7 @@ pub(in crate::cli) fn run(
     json: bool,
     shown: Shown,
 ) -> Result<String, UsageError> {
-    let failed = |message: String| UsageError::Calibrate {
-        input: escape_cut(source, 200),
-        message,
-    };
+    let failed = |message| failed(source, message);
     let read = read_source(source, save.as_ref(), |input| read(setup, input))?;
     let options = Purpose::Readout.flight_options();
     let fit = calibrate::fit(&read.measured, &options, lift).map_err(|e| failed(e.to_string()))?;
@@ -86,46 +83,31 @@ pub(in crate::cli) fn run(
             format!("{key} = {value:.4} ended at the end of [{low}, {high}] searched")
         })
         .collect();
-    let saved = match save {
-        Some(Save { name, dir, force }) => {
-            let dir = dir.ok_or_else(|| failed(format!("--save: {}", crate::preset::NO_FOLDER)))?;
-            if !at_bounds.is_empty() && !force {
-                return Err(UsageError::CalibrateSave {
-                    name: escape_cut(name, 64),
-                    message: format!(
-                        "{}: the measurements pull {} further than the model can follow; not saved (--force to save anyway)",
-                        at_bounds.join(", "),
-                        if at_bounds.len() == 1 { "it" } else { "them" }
-                    ),
-                });
-            }
-            let mut preset = Preset {
-                name: name.to_owned(),
-                description: format!(
-                    "{}, calibrated on {} ({} rows): model.drag_scale = {:.4} ± {:.4}{}",
-                    setup.base.name,
-                    escape_cut(source, 80),
-                    fit.after.rows,
-                    fit.drag_scale.value,
-                    fit.drag_scale.uncertainty,
-                    fit.lift_scale.map_or(String::new(), |l| format!(
-                        ", model.lift_scale = {:.4} ± {:.4}",
-                        l.value, l.uncertainty
-                    ))
-                ),
-                scene: setup.base.scene,
-                fence: setup.base.fence,
-                source: Source::Bundled,
-            };
-            preset.scene.drag_scale *= fit.drag_scale.value;
-            if let Some(lift) = fit.lift_scale {
-                preset.scene.lift_scale *= lift.value;
-            }
-            preset.scene.validate()?;
-            Some(preset.save(dir, force)?)
+    let refusal = (!at_bounds.is_empty()).then(|| {
+        format!(
+            "{}: the measurements pull {} further than the model can follow; not saved (--force to save anyway)",
+            at_bounds.join(", "),
+            if at_bounds.len() == 1 { "it" } else { "them" }
+        )
+    });
+    let description = format!(
+        "{}, calibrated on {} ({} rows): model.drag_scale = {:.4} ± {:.4}{}",
+        setup.base.name,
+        escape_cut(source, 80),
+        fit.after.rows,
+        fit.drag_scale.value,
+        fit.drag_scale.uncertainty,
+        fit.lift_scale.map_or(String::new(), |l| format!(
+            ", model.lift_scale = {:.4} ± {:.4}",
+            l.value, l.uncertainty
+        ))
+    );
+    let saved = save_fitted(save, (setup, source), refusal, description, |scene| {
+        scene.drag_scale *= fit.drag_scale.value;
+        if let Some(lift) = fit.lift_scale {
+            scene.lift_scale *= lift.value;
         }
-        None => None,
-    };
+    })?;
     if json {
         let mut value = serde_json::json!({
             "rows": read.rows,
@@ -157,10 +139,7 @@ pub(in crate::cli) fn run_by(
     json: bool,
     shown: Shown,
 ) -> Result<String, UsageError> {
-    let failed = |message: String| UsageError::Calibrate {
-        input: escape_cut(source, 200),
-        message,
-    };
+    let failed = |message| failed(source, message);
     let month = by == "month";
     setup.keep = vec![if month { "game_date" } else { by }.to_owned()];
     let read = read_source(source, None, |input| {
@@ -227,6 +206,47 @@ pub(in crate::cli) fn run_by(
     Ok(text)
 }
 
+/// Calibrating on `source` failed: `message` says why.
+pub(super) fn failed(source: &str, message: String) -> UsageError {
+    UsageError::Calibrate {
+        input: escape_cut(source, 200),
+        message,
+    }
+}
+
+/// `--save NAME`: the base preset, described by `description`, with
+/// `fitted` applied to its scene, saved; refused (unless forced) with
+/// `refusal` where a fitted value ended at the end of its search.
+pub(super) fn save_fitted(
+    save: Option<Save>,
+    (setup, source): (&Setup, &str),
+    refusal: Option<String>,
+    description: String,
+    fitted: impl FnOnce(&mut crate::model::scene::Scene),
+) -> Result<Option<PathBuf>, UsageError> {
+    let Some(Save { name, dir, force }) = save else {
+        return Ok(None);
+    };
+    let no_folder = || failed(source, format!("--save: {}", crate::preset::NO_FOLDER));
+    let dir = dir.ok_or_else(no_folder)?;
+    if let Some(message) = refusal.filter(|_| !force) {
+        return Err(UsageError::CalibrateSave {
+            name: escape_cut(name, 64),
+            message,
+        });
+    }
+    let mut preset = Preset {
+        name: name.to_owned(),
+        description,
+        scene: setup.base.scene,
+        fence: setup.base.fence,
+        source: Source::Bundled,
+    };
+    fitted(&mut preset.scene);
+    preset.scene.validate()?;
+    Ok(Some(preset.save(dir, force)?))
+}
+
 /// Refuses a name `--save` cannot take (before the work), then reads
 /// `source` ("-" for stdin) with `read`.
 pub(super) fn read_source<T>(
@@ -234,10 +254,7 @@ pub(super) fn read_source<T>(
     save: Option<&Save>,
     read: impl FnOnce(Box<dyn BufRead>) -> Result<T, String>,
 ) -> Result<T, UsageError> {
-    let failed = |message: String| UsageError::Calibrate {
-        input: escape_cut(source, 200),
-        message,
-    };
+    let failed = |message| failed(source, message);
     if let Some(Save {
         name,
         dir: Some(dir),

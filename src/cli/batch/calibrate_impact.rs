@@ -6,13 +6,13 @@
 
 use std::io::BufRead;
 
-use super::calibrate::{Save, read_source};
+use super::calibrate::{Save, failed, read_source, save_fitted};
 use super::read::{Fields, Lossy, Records};
 use super::rows::{Header, Row, parse_row};
 use super::savant_columns::Setup;
 use crate::analysis::bat_tracking::{self, ImpactFit, TrackedSwing};
 use crate::cli::UsageError;
-use crate::preset::{Preset, Source, escape_cut};
+use crate::preset::escape_cut;
 
 /// The quantile of q matched.
 const QUANTILE: f64 = 0.99;
@@ -24,48 +24,30 @@ pub(in crate::cli) fn run(
     save: Option<Save>,
     json: bool,
 ) -> Result<String, UsageError> {
-    let failed = |message: String| UsageError::Calibrate {
-        input: escape_cut(source, 200),
-        message,
-    };
     let swings = read_source(source, save.as_ref(), |input| read(setup, input))?;
     let base = &setup.base.scene;
     let fit = bat_tracking::fit_effective_mass(base, &swings, QUANTILE).ok_or_else(|| {
-        failed("no row has a tracked swing (bat_speed and the pitch's kinematics)".to_owned())
+        let message = "no row has a tracked swing (bat_speed and the pitch's kinematics)";
+        failed(source, message.to_owned())
     })?;
     let (low, high) = bat_tracking::EFFECTIVE_MASSES;
     let at_bound = (fit.effective_mass - low).min(high - fit.effective_mass) < 1e-6;
-    let saved = match save {
-        Some(Save { name, dir, force }) => {
-            let dir = dir.ok_or_else(|| failed(format!("--save: {}", crate::preset::NO_FOLDER)))?;
-            if at_bound && !force {
-                return Err(UsageError::CalibrateSave {
-                    name: escape_cut(name, 64),
-                    message: format!(
-                        "bat.effective_mass = {:.4} ended at the end of [{low}, {high}] searched; not saved (--force to save anyway)",
-                        fit.effective_mass
-                    ),
-                });
-            }
-            let mut preset = Preset {
-                name: name.to_owned(),
-                description: format!(
-                    "{}, its bat's effective mass fitted on {} ({} swings): bat.effective_mass = {:.4} kg",
-                    setup.base.name,
-                    escape_cut(source, 80),
-                    fit.rows,
-                    fit.effective_mass
-                ),
-                scene: setup.base.scene,
-                fence: setup.base.fence,
-                source: Source::Bundled,
-            };
-            preset.scene.bat.effective_mass = fit.effective_mass;
-            preset.scene.validate()?;
-            Some(preset.save(dir, force)?)
-        }
-        None => None,
-    };
+    let refusal = at_bound.then(|| {
+        format!(
+            "bat.effective_mass = {:.4} ended at the end of [{low}, {high}] searched; not saved (--force to save anyway)",
+            fit.effective_mass
+        )
+    });
+    let description = format!(
+        "{}, its bat's effective mass fitted on {} ({} swings): bat.effective_mass = {:.4} kg",
+        setup.base.name,
+        escape_cut(source, 80),
+        fit.rows,
+        fit.effective_mass
+    );
+    let saved = save_fitted(save, (setup, source), refusal, description, |scene| {
+        scene.bat.effective_mass = fit.effective_mass;
+    })?;
     if json {
         let mut value = serde_json::json!({ "impact": fit, "at_bound": at_bound });
         if let Some(path) = &saved {

@@ -145,20 +145,6 @@ impl Surface {
     }
 }
 
-/// What happens with `scene`'s swing replaced by (E, ψ).
-pub fn outcome_at(
-    scene: &Scene,
-    undercut: f64,
-    swing_angle: f64,
-    options: impl Into<FlightOptions>,
-) -> CellOutcome {
-    if undercut.abs() >= scene.reach() {
-        return CellOutcome::BatMisses;
-    }
-    let flight = model::simulate(&scene.with_swing(undercut, swing_angle), options).flight;
-    CellOutcome::of_flight(flight.landed, flight.range)
-}
-
 /// The most integration steps a sweep's optimisations may take together
 /// (about 3 s on one core), shared by its points: each point's optimiser
 /// gets the smaller of an even share of what is left and its own
@@ -460,6 +446,7 @@ impl Grid {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::precision::Purpose;
 
     #[test]
     fn a_surface_s_chunks_come_back_in_the_cells_order() {
@@ -471,7 +458,7 @@ mod tests {
         let chunks = surface_chunks_within(
             &scene,
             grid,
-            crate::precision::Purpose::Surface,
+            Purpose::Surface,
             u64::MAX,
             &tick,
             &|first, outcomes| (first, outcomes.to_vec()),
@@ -481,32 +468,14 @@ mod tests {
         let firsts: Vec<usize> = chunks.iter().map(|(first, _)| *first).collect();
         assert_eq!(firsts, (0..9).map(|c| c * CHUNK).collect::<Vec<_>>());
         let cells: Vec<CellOutcome> = chunks.into_iter().flat_map(|(_, o)| o).collect();
-        let whole = surface_within(
-            &scene,
-            grid,
-            crate::precision::Purpose::Surface,
-            u64::MAX,
-            &tick,
-        )
-        .expect("within the budget");
+        let whole = surface_within(&scene, grid, Purpose::Surface, u64::MAX, &tick)
+            .expect("within the budget");
         assert_eq!(cells, whole.outcomes());
         // Over the budget, both give up alike.
         let refused = |steps| {
-            let chunks = surface_chunks_within(
-                &scene,
-                grid,
-                crate::precision::Purpose::Surface,
-                steps,
-                &tick,
-                &|_, _| (),
-            );
-            let whole = surface_within(
-                &scene,
-                grid,
-                crate::precision::Purpose::Surface,
-                steps,
-                &tick,
-            );
+            let chunks =
+                surface_chunks_within(&scene, grid, Purpose::Surface, steps, &tick, &|_, _| ());
+            let whole = surface_within(&scene, grid, Purpose::Surface, steps, &tick);
             (chunks.err(), whole.err())
         };
         let (chunks, whole) = refused(100);

@@ -229,32 +229,15 @@ impl Flight {
     /// for batted backspin).
     #[inline]
     pub fn acceleration(&self, velocity: Vector2<f64>) -> Vector2<f64> {
-        self.acceleration_on(velocity, None)
-    }
-
-    /// As [`Flight::acceleration`], with C_D taken from the given piece of
-    /// the drag curve (continued past its ends) instead of the piece the
-    /// Reynolds number lies on.
-    #[inline]
-    pub fn acceleration_on(&self, velocity: Vector2<f64>, piece: Option<usize>) -> Vector2<f64> {
-        self.acceleration_at(0.0, velocity, piece)
-    }
-
-    /// As [`Flight::acceleration_on`], at time `t` after launch (which
-    /// matters only when the spin decays).
-    #[inline]
-    pub fn acceleration_at(
-        &self,
-        t: f64,
-        velocity: Vector2<f64>,
-        piece: Option<usize>,
-    ) -> Vector2<f64> {
-        let a = self.acceleration_with((&self.drag, &self.lift), t, velocity, piece);
+        let a = self.acceleration_with((&self.drag, &self.lift), 0.0, velocity, None);
         Vector2::new(a.0, a.1)
     }
 
-    /// As [`Flight::acceleration_at`], with the drag and lift models given
-    /// as their own types (the integration's, compiled for each pair).
+    /// As [`Flight::acceleration`], at time `t` after launch (which matters
+    /// only when the spin decays), on the given piece of the drag curve
+    /// (continued past its ends) or else the one the Reynolds number lies
+    /// on, with the drag and lift models given as their own types (the
+    /// integration's, compiled for each pair).
     #[inline(always)]
     pub fn acceleration_with(
         &self,
@@ -276,30 +259,6 @@ impl Flight {
             t,
             (velocity.x, velocity.y),
         )
-    }
-
-    /// d/dt of the state (x, y, v_x, v_y) at the launch spin.
-    #[inline]
-    pub fn derivative(&self, state: &State<4>) -> State<4> {
-        self.derivative_at(0.0, state, None)
-    }
-
-    /// d/dt of the state at time `t`, on a given piece of the drag curve
-    /// (or the one its Reynolds number lies on).
-    #[inline(always)]
-    pub fn derivative_at(&self, t: f64, state: &State<4>, piece: Option<usize>) -> State<4> {
-        self.derivative_with((&self.drag, &self.lift), t, state, piece, true)
-    }
-
-    /// The piece of the drag curve the ball is on at launch, or about to
-    /// enter: at a kink, the one the Reynolds number is moving into.
-    pub fn drag_piece(&self, state: &State<4>) -> usize {
-        let velocity = velocity(state);
-        let rel = self.relative_wind(velocity);
-        let re = rel.norm() * self.reynolds_per_speed;
-        // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters.
-        let rising = || -rel.dot(&self.acceleration(velocity)) >= 0.0;
-        super::piece_entered(self.drag.kinks(), re, rising)
     }
 }
 
@@ -381,7 +340,12 @@ impl Dynamics<4> for Flight {
     }
 
     fn drag_piece_at(&self, state: &State<4>, _in_wind: bool) -> usize {
-        self.drag_piece(state)
+        let velocity = velocity(state);
+        let rel = self.relative_wind(velocity);
+        let re = rel.norm() * self.reynolds_per_speed;
+        // d|V_r|/dt = V_r·(−a)/|V_r|: only its sign matters.
+        let rising = || -rel.dot(&self.acceleration(velocity)) >= 0.0;
+        super::piece_entered(self.drag.kinks(), re, rising)
     }
 
     fn wind_height(&self) -> Option<f64> {

@@ -166,12 +166,6 @@ impl Flight3d {
         if in_wind { self.wind } else { Vector3::zeros() }
     }
 
-    /// Whether height `y` is in the wind: at or above the wind's height.
-    #[inline]
-    pub fn in_wind_at(&self, y: f64) -> bool {
-        y >= self.wind_height
-    }
-
     /// |ω(t)| and r_b·|ω(t)|, decayed as ω₀·e^(−t/τ) if a decay is set.
     #[inline]
     fn spin_at(&self, t: f64) -> (f64, f64) {
@@ -345,7 +339,9 @@ impl Dynamics<6> for Flight3d {
     }
 
     fn drag_coefficient(&self, t: f64, state: &State<6>) -> f64 {
-        self.drag_coefficient_at(t, velocity(state), self.in_wind_at(state[HEIGHT]))
+        // In the wind at or above its height.
+        let in_wind = state[HEIGHT] >= self.wind_height;
+        self.drag_coefficient_at(t, velocity(state), in_wind)
     }
 }
 

@@ -7,8 +7,10 @@ use super::{Bounds, Key};
 use crate::atmosphere::Atmosphere;
 use crate::scene::SceneKind;
 
+/// A key: its name, symbol, unit, description, bounds and their reason,
+/// nudge step, then how it is read and written (see `access!`).
 macro_rules! key {
-    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $why:literal, $step:expr, $($field:ident).+) => {
+    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $why:literal, $step:expr, $($access:tt)+) => {
         Key {
             name: $name,
             symbol: $symbol,
@@ -17,65 +19,51 @@ macro_rules! key {
             bounds: $bounds,
             bounds_reason: $why,
             step: $step,
-            get: |s| s.$($field).+,
-            set: |s, v| s.$($field).+ = v,
-        }
-    };
-    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $why:literal, $step:expr, get: $get:expr, set: $set:expr) => {
-        Key {
-            name: $name,
-            symbol: $symbol,
-            unit: $unit,
-            description: $desc,
-            bounds: $bounds,
-            bounds_reason: $why,
-            step: $step,
-            get: $get,
-            set: $set,
+            get: access!(get $($access)+),
+            set: access!(set $($access)+),
         }
     };
 }
 
-/// A key of the weather: reads the atmosphere in force (the standard one
-/// while ρ and ν are given), and writing it derives ρ and ν.
-macro_rules! atmosphere_key {
-    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $why:literal, $step:expr, $field:ident) => {
-        key!(
-            $name,
-            $symbol,
-            $unit,
-            $desc,
-            $bounds,
-            $why,
-            $step,
-            get: |s| s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD).$field,
-            set: |s, v| {
-                let mut atmosphere = s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD);
-                atmosphere.$field = v;
-                s.environment.set_atmosphere(atmosphere)
-            }
-        )
+/// A key's reader (`get`) or writer (`set`): given as `get: …, set: …`, or
+/// a field of the scene (`pitch.speed`), of the weather or of the launch.
+macro_rules! access {
+    (get get: $get:expr, set: $set:expr) => {
+        $get
     };
-}
-
-/// A key of the launch: reads the launch in force (the swing's impact's,
-/// on a swing scene), and writing it makes the scene a batted ball.
-macro_rules! launch_key {
-    ($name:literal, $symbol:literal, $unit:literal, $desc:literal, $bounds:expr, $why:literal, $step:expr, $field:ident) => {
-        key!(
-            $name,
-            $symbol,
-            $unit,
-            $desc,
-            $bounds,
-            $why,
-            $step,
-            get: |s| s.batted_ball().$field,
-            set: |s, v| {
-                s.launch.$field = Some(v);
-                s.set_kind(SceneKind::BattedBall);
-            }
-        )
+    (set get: $get:expr, set: $set:expr) => {
+        $set
+    };
+    // A key of the weather, `atmosphere(field)`: reads the atmosphere in
+    // force (the standard one while ρ and ν are given), and writing it
+    // derives ρ and ν.
+    (get atmosphere($field:ident)) => {
+        |s| s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD).$field
+    };
+    (set atmosphere($field:ident)) => {
+        |s, v| {
+            let mut atmosphere = s.environment.atmosphere().unwrap_or(Atmosphere::STANDARD);
+            atmosphere.$field = v;
+            s.environment.set_atmosphere(atmosphere)
+        }
+    };
+    // A key of the launch, `launch(field)`: reads the launch in force (the
+    // swing's impact's, on a swing scene), and writing it makes the scene a
+    // batted ball.
+    (get launch($field:ident)) => {
+        |s| s.batted_ball().$field
+    };
+    (set launch($field:ident)) => {
+        |s, v| {
+            s.launch.$field = Some(v);
+            s.set_kind(SceneKind::BattedBall);
+        }
+    };
+    (get $($field:ident).+) => {
+        |s| s.$($field).+
+    };
+    (set $($field:ident).+) => {
+        |s, v| s.$($field).+ = v
     };
 }
 
@@ -310,7 +298,7 @@ pub const EXTENDED_KEYS: &[Key] = &[
         1.0,
         spin_decay
     ),
-    atmosphere_key!(
+    key!(
         "environment.temperature",
         "T",
         "°C",
@@ -318,9 +306,9 @@ pub const EXTENDED_KEYS: &[Key] = &[
         Bounds::closed(-50.0, 60.0),
         "From colder than any game (−50 °C) to above the hottest air recorded (56.7 °C); Sutherland's law and the vapour-pressure fit hold there.",
         1.0,
-        temperature
+        atmosphere(temperature)
     ),
-    atmosphere_key!(
+    key!(
         "environment.elevation",
         "h",
         "m",
@@ -328,9 +316,9 @@ pub const EXTENDED_KEYS: &[Key] = &[
         Bounds::closed(-500.0, 5000.0),
         "From the Dead Sea shore (−430 m) to above the highest cities (El Alto, 4150 m); the e^(−βh) pressure law stays within a few per cent of the standard atmosphere's there.",
         10.0,
-        elevation
+        atmosphere(elevation)
     ),
-    atmosphere_key!(
+    key!(
         "environment.pressure",
         "p",
         "hPa",
@@ -338,9 +326,9 @@ pub const EXTENDED_KEYS: &[Key] = &[
         Bounds::closed(870.0, 1085.0),
         "Sea-level-corrected, as weather reports give it: from the lowest ever recorded (870 hPa, typhoon Tip) to the highest (1084.8 hPa, Siberia).",
         1.0,
-        pressure
+        atmosphere(pressure)
     ),
-    atmosphere_key!(
+    key!(
         "environment.humidity",
         "RH",
         "%",
@@ -348,7 +336,7 @@ pub const EXTENDED_KEYS: &[Key] = &[
         Bounds::closed(0.0, 100.0),
         "A relative humidity, by definition.",
         5.0,
-        humidity
+        atmosphere(humidity)
     ),
     key!(
         "bat.tilt",
@@ -378,7 +366,7 @@ pub const EXTENDED_KEYS: &[Key] = &[
 /// swing scene gives the impact's. Kept apart from [`KEYS`], which are the
 /// swing scene's rows in the explorer.
 pub const LAUNCH_KEYS: &[Key] = &[
-    launch_key!(
+    key!(
         "launch.speed",
         "V̂_bf",
         "m/s",
@@ -386,9 +374,9 @@ pub const LAUNCH_KEYS: &[Key] = &[
         Bounds::positive(100.0),
         "Above 0: a ball at rest does not fly. Up to 100 m/s, about Mach 0.3, where air stops behaving as incompressible (no drag model here knows compressibility) and nearly twice the fastest batted ball measured (122 mph, 54.6 m/s).",
         0.5,
-        speed
+        launch(speed)
     ),
-    launch_key!(
+    key!(
         "launch.angle",
         "ζ",
         "rad",
@@ -396,9 +384,9 @@ pub const LAUNCH_KEYS: &[Key] = &[
         Bounds::open(-FRAC_PI_2, FRAC_PI_2),
         "Open at ±π/2: straight up or down is no batted ball to carry, and past it the ball leaves backwards.",
         0.01,
-        angle
+        launch(angle)
     ),
-    launch_key!(
+    key!(
         "launch.spin",
         "ω_bf",
         "rad/s",
@@ -406,9 +394,9 @@ pub const LAUNCH_KEYS: &[Key] = &[
         Bounds::closed(-1000.0, 1000.0),
         "As the pitch's spin: the impact's spins reach ~1000 rad/s at the cusps of Fig. 5, and at 1000 rad/s (9550 rpm) the spin parameter passes 1 at 37 m/s, beyond the data both lift fits rest on.",
         10.0,
-        spin
+        launch(spin)
     ),
-    launch_key!(
+    key!(
         "launch.direction",
         "φ",
         "rad",
@@ -416,9 +404,9 @@ pub const LAUNCH_KEYS: &[Key] = &[
         Bounds::open(-FRAC_PI_2, FRAC_PI_2),
         "Open at ±π/2, as the angle: a ball leaving square to the centre-field line or behind it is a foul tip, not a batted ball to carry; fair territory is ±π/4.",
         0.01,
-        direction
+        launch(direction)
     ),
-    launch_key!(
+    key!(
         "launch.sidespin",
         "ω_s",
         "rad/s",
@@ -426,7 +414,7 @@ pub const LAUNCH_KEYS: &[Key] = &[
         Bounds::closed(-1000.0, 1000.0),
         "As the backspin: the two together make the spin vector, and ~3000 rpm is as much as batted balls are estimated to carry.",
         10.0,
-        sidespin
+        launch(sidespin)
     ),
 ];
 

@@ -217,46 +217,27 @@ pub(super) fn phase_chart(
         app.theme.dim,
     );
     // Each line's name at its top, where the chart leaves room.
-    let top = |p: f64| (p, y.hi);
-    let at = |p: f64, name| [(top(p), name)];
-    chart::labels(
-        frame,
-        graph,
-        (&x, &y),
-        Marker::Braille,
-        &at(impact.compression_impulse(), "p_c"),
-        app.theme.compression,
-    );
-    if let Some(ps) = impact.stick_impulse() {
+    let label = |frame: &mut Frame, at: (f64, f64), name: &str, style: Style| {
         chart::labels(
             frame,
             graph,
             (&x, &y),
             Marker::Braille,
-            &at(ps, "p_s"),
-            app.theme.stick,
+            &[(at, name)],
+            style,
         );
+    };
+    let compression = impact.compression_impulse();
+    label(frame, (compression, y.hi), "p_c", app.theme.compression);
+    if let Some(ps) = impact.stick_impulse() {
+        label(frame, (ps, y.hi), "p_s", app.theme.stick);
     }
-    chart::labels(
-        frame,
-        graph,
-        (&x, &y),
-        Marker::Braille,
-        // At the foot of its line: the curves end at its top.
-        &[((pf, y.lo), "p_f")],
-        app.theme.dim,
-    );
+    // At the foot of its line: the curves end at its top.
+    label(frame, (pf, y.lo), "p_f", app.theme.dim);
     // Each curve's name at its end, in its colour.
     for (curve, points) in curves.iter().zip(&points) {
         if let Some(&end) = points.last() {
-            chart::labels(
-                frame,
-                graph,
-                (&x, &y),
-                Marker::Braille,
-                &[(end, curve.name)],
-                curve.style,
-            );
+            label(frame, end, curve.name, curve.style);
         }
     }
 }
