@@ -143,6 +143,8 @@ pub struct Fit {
     pub correlation: Option<f64>,
     /// Fitted by launch-angle band: each band's distance errors.
     pub bands: Option<bands::Bands>,
+    /// Why the lift was not fitted, when it was not.
+    pub why_no_lift: Option<&'static str>,
     /// Distance errors (m) before (at the scenes' own factors) and after.
     pub before: Errors,
     pub after: Errors,
@@ -407,6 +409,7 @@ pub fn fit(rows: &[Measured], options: &FlightOptions, lift: bool) -> Result<Fit
         lift_from: second,
         correlation,
         bands: None,
+        why_no_lift: second.is_none().then_some("--drag-only"),
         before,
         after,
         second_before,
@@ -503,5 +506,13 @@ mod tests {
         assert_eq!(band_of(30f64.to_radians()), Some(3));
         assert_eq!(band_of(9.99f64.to_radians()), None);
         assert_eq!(band_of(80f64.to_radians()), Some(5));
+        // Within one band the distances cannot part the two: the drag
+        // alone, and why.
+        let one_band: Vec<Measured> = (rows.into_iter())
+            .filter(|r| band_of(r.scene.launch.angle.unwrap()) == Some(2))
+            .collect();
+        let alone = super::fit(&one_band, &options(), true).unwrap();
+        assert!(alone.lift_scale.is_none() && alone.drag_scale.uncertainty.is_finite());
+        assert!(alone.why_no_lift.unwrap().contains("fewer than three"));
     }
 }

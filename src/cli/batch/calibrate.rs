@@ -454,7 +454,7 @@ fn text(
                     },
                     fit.correlation.unwrap_or(0.0)
                 ),
-                _ => "not fitted (--drag-only)".to_owned(),
+                _ => format!("not fitted: {}", fit.why_no_lift.unwrap_or("--drag-only")),
             },
         ),
         ("before", format!("distance {}", errors(&fit.before, &d))),

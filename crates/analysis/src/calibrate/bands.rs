@@ -24,6 +24,10 @@ use model::flight::FlightOptions;
 /// 10° a distance is where the ball was fielded, and no row is used.
 pub const BAND_EDGES: [f64; 6] = [10.0, 20.0, 25.0, 30.0, 35.0, 50.0];
 
+/// Why the lift was not fitted from too few bands.
+const FEW_BANDS: &str = "the distances fill fewer than three launch-angle bands that part drag \
+     from lift (a hang_time or apex column would fit it)";
+
 /// The distance errors (m) in each band, before and after the fit.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Bands {
@@ -89,6 +93,13 @@ pub(super) fn fit(
         se if se > 0.0 => 1.0 / se,
         _ => 0.0,
     });
+    // Two factors need three bands at least, one left to judge the fit.
+    if weights.iter().filter(|w| **w > 0.0).count() < 3 {
+        return Ok(Fit {
+            why_no_lift: Some(FEW_BANDS),
+            ..drag_only
+        });
+    }
     let h = 1e-3;
     let mut k = (drag_only.drag_scale.value, 1.0);
     let mut here = residuals(&start, &weights);
@@ -125,6 +136,12 @@ pub(super) fn fit(
     let det = a * c - b * b;
     let scale = misfit.max(1.0);
     let (drag_variance, lift_variance) = (scale * c / det, scale * a / det);
+    if !(det > 0.0 && drag_variance.is_finite() && lift_variance.is_finite()) {
+        return Ok(Fit {
+            why_no_lift: Some(FEW_BANDS),
+            ..drag_only
+        });
+    }
     let distance_errors = super::errors(rows, k, None, options).0;
     Ok(Fit {
         drag_scale: Estimate {
@@ -147,6 +164,7 @@ pub(super) fn fit(
         after: Errors::of(&distance_errors),
         second_before: None,
         second_after: None,
+        why_no_lift: None,
         trials: trials + 1,
     })
 }
