@@ -49,9 +49,6 @@ pub(super) fn run(cli: &Cli, command: &Command) -> Option<Result<ExitCode, Usage
         return Some(run_batch(cli, &batch, |setup| {
             setup.solve_swings = true;
             setup.swing_columns = true;
-            // The impact's launch direction is the spray (the solve's third
-            // equation), so the flight is not re-aimed.
-            setup.spray = crate::analysis::savant::Spray::Launch;
         }));
     }
     None

@@ -246,8 +246,12 @@ impl RowSwing {
 
 /// Solves the row's swing (when it has a tracked one) and, solved, gives
 /// its flight the impact's launch: the measured speed and angle, and the
-/// impact's direction, backspin and sidespin (nothing estimated). A row
-/// not solved keeps what `fly --batch` makes of it.
+/// impact's backspin and sidespin (nothing estimated). The impact launches
+/// toward the spray (the solve's third equation); the flight is then aimed,
+/// as `fly --batch` aims every row, so that it lands on the spray, since
+/// the hit coordinates are where the ball came down and the impact's
+/// sidespin curves it (3.3° apart at the median on April 2024). A row not
+/// solved keeps what `fly --batch` makes of it.
 pub(super) fn solve_row(job: &mut Job) {
     let launch = job.scene.launch;
     let measured = (
@@ -267,7 +271,7 @@ pub(super) fn solve_row(job: &mut Job) {
         (given.spin, given.sidespin) = (Some(out.spin), Some(out.sidespin));
         given.direction = Some(out.direction);
         job.launch = RowLaunch {
-            spray: None,
+            spray: job.launch.spray,
             side: job.launch.side,
             estimate_backspin: false,
             estimate_sidespin: false,
