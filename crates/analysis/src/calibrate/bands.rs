@@ -4,8 +4,7 @@
 //! the air that `fly --batch --summary` prints (10–20°, 20–25°, 25–30°,
 //! 30–35°, 35–50°, 50°+). The factors minimise χ² = Σ (median_b / σ_b)²,
 //! each band's median error weighted by its own standard error
-//! (Gauss–Newton, the Jacobian by differences, from the drag fitted alone
-//! and the lift as it is).
+//! (Nelder–Mead from the drag fitted alone and the lift as it is).
 //!
 //! Where two factors cannot flatten the bands, χ² per degree of freedom
 //! is far above 1: the misfit is the model's, not noise. The
@@ -15,10 +14,9 @@
 
 use rayon::prelude::*;
 
-use super::{
-    DRAG_RANGE, Errors, Estimate, Fit, FitError, LIFT_RANGE, LiftFrom, Measured, TOLERANCE, flown,
-};
+use super::{DRAG_RANGE, Errors, Estimate, Fit, FitError, LIFT_RANGE, LiftFrom, Measured, flown};
 use model::flight::FlightOptions;
+use numerics::nelder_mead::{NelderMead, Point, Settings, Status};
 
 /// The bands' lower edges (degrees); the last band is open above. Below
 /// 10° a distance is where the ball was fielded, and no row is used.
@@ -100,35 +98,58 @@ pub(super) fn fit(
             ..drag_only
         });
     }
-    let h = 1e-3;
-    let mut k = (drag_only.drag_scale.value, 1.0);
-    let mut here = residuals(&start, &weights);
-    let mut jacobian = Vec::new();
-    for _ in 0..12 {
-        let by_drag = residuals(&at((k.0 + h, k.1)), &weights);
-        let by_lift = residuals(&at((k.0, k.1 + h)), &weights);
-        jacobian = (here.iter().zip(by_drag.iter().zip(&by_lift)))
-            .map(|(r, (d, l))| [(d - r) / h, (l - r) / h])
-            .collect();
-        // The normal equations JᵀJ δ = −Jᵀr.
-        let (a, b, c) = normal(&jacobian);
-        let g = (jacobian.iter().zip(&here))
-            .fold([0.0, 0.0], |g, (j, r)| [g[0] + j[0] * r, g[1] + j[1] * r]);
-        let det = a * c - b * b;
-        if det == 0.0 {
-            break;
-        }
-        let step = ((c * g[0] - b * g[1]) / det, (a * g[1] - b * g[0]) / det);
-        k = (
-            (k.0 - step.0).clamp(DRAG_RANGE.0, DRAG_RANGE.1),
-            (k.1 - step.1).clamp(LIFT_RANGE.0, LIFT_RANGE.1),
-        );
-        here = residuals(&at(k), &weights);
-        if step.0.abs() < TOLERANCE && step.1.abs() < TOLERANCE {
+    let chi2 = |k: (f64, f64), at: &mut dyn FnMut((f64, f64)) -> [Errors; 6]| {
+        residuals(&at(k), &weights)
+            .iter()
+            .map(|r| r * r)
+            .sum::<f64>()
+    };
+    // Nelder–Mead, not Newton's method: a median moves in steps as rows
+    // cross it, so slopes by differences are noise at small steps (the
+    // same file five times over gave another answer).
+    let within = |p: &Point<2>| {
+        (DRAG_RANGE.0..=DRAG_RANGE.1).contains(&p[0])
+            && (LIFT_RANGE.0..=LIFT_RANGE.1).contains(&p[1])
+    };
+    let mut cost = |p: &Point<2>| match within(p) {
+        true => chi2((p[0], p[1]), &mut at),
+        false => f64::INFINITY,
+    };
+    // To 1e-3 in each factor, a twentieth of what the bands determine,
+    // and 0.1 in χ² (its misfit is tens to hundreds a band).
+    let settings = Settings {
+        tolerance_x: 1e-3,
+        tolerance_cost: 0.1,
+        max_restarts: 1,
+        initial_size: 0.03,
+    };
+    let start = Point::<2>::new(drag_only.drag_scale.value, 1.0);
+    let mut search = NelderMead::<2, 3>::new(start, settings, &mut cost);
+    for _ in 0..200 {
+        if search.step(&mut cost) == Status::Converged {
             break;
         }
     }
+    let best = search.best().point;
+    let k = (best[0], best[1]);
+    // The slopes by central differences over 1 %, wide enough to average
+    // over the medians' steps.
+    let h = 0.01;
+    let slope = |dk: (f64, f64), at: &mut dyn FnMut((f64, f64)) -> [Errors; 6]| {
+        let up = residuals(&at((k.0 + dk.0, k.1 + dk.1)), &weights);
+        let down = residuals(&at((k.0 - dk.0, k.1 - dk.1)), &weights);
+        (up.iter().zip(&down))
+            .map(|(u, d)| (u - d) / (2.0 * h))
+            .collect::<Vec<f64>>()
+    };
+    let (by_drag, by_lift) = (slope((h, 0.0), &mut at), slope((0.0, h), &mut at));
+    let jacobian: Vec<[f64; 2]> = by_drag
+        .iter()
+        .zip(&by_lift)
+        .map(|(d, l)| [*d, *l])
+        .collect();
     let after = at(k);
+    let here = residuals(&after, &weights);
     let degrees_of_freedom = here.len().saturating_sub(2).max(1);
     let misfit = here.iter().map(|r| r * r).sum::<f64>() / degrees_of_freedom as f64;
     // The covariance (JᵀJ)⁻¹, scaled by the misfit where it exceeds 1.
