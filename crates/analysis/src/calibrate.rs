@@ -502,6 +502,15 @@ mod tests {
             "{bands:?}"
         );
         assert!(bands.misfit < 0.1, "{bands:?}");
+        // The same rows three times over are the same measurement.
+        let thrice: Vec<Measured> = rows.iter().cycle().take(3 * rows.len()).copied().collect();
+        let again = super::fit(&thrice, &options(), true).unwrap();
+        assert!((again.drag_scale.value - fit.drag_scale.value).abs() < 1e-3);
+        let lifts = (
+            again.lift_scale.unwrap().value,
+            fit.lift_scale.unwrap().value,
+        );
+        assert!((lifts.0 - lifts.1).abs() < 2e-3, "{lifts:?}");
         // A band is from its edge up: 30° (an ulp off in radians) is 30–35°.
         assert_eq!(band_of(30f64.to_radians()), Some(3));
         assert_eq!(band_of(9.99f64.to_radians()), None);
