@@ -104,6 +104,16 @@ fn solved_rows_give_back_their_measured_launch() {
             let q = (measured_speed - bat) / (pitch + bat);
             let given = line["impact"]["collision_efficiency"].as_f64().unwrap();
             assert!((given - q).abs() < 1e-12, "{given} {q}");
+            // The flight lands on the spray (the hit coordinates are where
+            // it came down), its launch aimed from the impact's.
+            let (x, y) = (
+                row["hc_x"].parse::<f64>().unwrap(),
+                row["hc_y"].parse::<f64>().unwrap(),
+            );
+            let spray = ((x - 125.42) / (198.27 - y)).atan();
+            let landed = line["flight"]["direction"].as_f64().unwrap();
+            assert!((landed - spray).abs() < 1e-4, "{landed} {spray}");
+            assert_eq!(line["direction_from"], "landing");
         } else {
             let reason = line["reason"].as_str().unwrap();
             assert!(!reason.is_empty());
