@@ -86,7 +86,7 @@ fn solved_rows_give_back_their_measured_launch() {
     let out = json_lines(&out);
     let rows = sample();
     assert_eq!(out.len(), rows.len());
-    let mut solved = 0;
+    let (mut solved, mut landing) = (0, 0);
     for (row, line) in rows.iter().zip(&out) {
         let measured_speed = row["launch_speed"].parse::<f64>().unwrap() * MPH;
         let measured_angle = row["launch_angle"].parse::<f64>().unwrap().to_radians();
@@ -112,8 +112,10 @@ fn solved_rows_give_back_their_measured_launch() {
             );
             let spray = ((x - 125.42) / (198.27 - y)).atan();
             let landed = line["flight"]["direction"].as_f64().unwrap();
-            assert!((landed - spray).abs() < 1e-4, "{landed} {spray}");
-            assert_eq!(line["direction_from"], "landing");
+            if line["direction_from"] == "landing" {
+                assert!((landed - spray).abs() < 1e-4, "{landed} {spray}");
+                landing += 1;
+            }
         } else {
             let reason = line["reason"].as_str().unwrap();
             assert!(!reason.is_empty());
@@ -122,11 +124,14 @@ fn solved_rows_give_back_their_measured_launch() {
             assert!(line["flight"]["range"].as_f64().is_some());
         }
     }
+    // All but a popup at 83° (fielded where no flight of it lands) land on
+    // their spray.
+    assert_eq!(landing, 30);
     // 31 of the 35: three too fast for the paper's bat, one bunt too slow;
-    // 29 at the prior swing angle, off the sweet spot, two faster than it.
+    // 27 at the prior swing angle, off the sweet spot, four faster than it.
     assert_eq!(solved, 31, "{err}");
     assert!(
-        err.contains("swings: solved 31 of 35 tracked (88.6 %, 29 of them off the sweet spot)"),
+        err.contains("swings: solved 31 of 35 tracked (88.6 %, 27 of them off the sweet spot)"),
         "{err}"
     );
 }
@@ -314,7 +319,15 @@ fn agrees_with_the_python_reference(file: &str, reference: &str) -> (usize, usiz
         }
         solved += 1;
         off += usize::from(cells["swing_angle"] == "0.1594");
-        // They agree to 1e-13 m, 4e-12 rad, 1e-8 rad/s and 1.3e-10 m/s.
+        // Toward the launch direction homerun aimed (reference/swing_solve.py
+        // --aimed), they agree to 4e-13 m, 3e-12 rad, 1.1e-8 rad/s and
+        // 1.4e-10 m/s.
+        near(
+            &cells,
+            "target_direction",
+            &rust["launch"]["direction"],
+            1e-9,
+        );
         near(&cells, "undercut", &rust["impact"]["undercut"], 1e-11);
         near(&cells, "swing_angle", &rust["swing"]["angle"], 1e-9);
         near(&cells, "contact_speed", &rust["swing"]["speed"], 1e-8);
@@ -332,7 +345,7 @@ fn the_python_reference_agrees() {
     let reference = "tests/data/swing_solve_reference.csv";
     assert_eq!(
         agrees_with_the_python_reference(SAMPLE, reference),
-        (31, 29)
+        (31, 27)
     );
 }
 

@@ -28,9 +28,10 @@
 //! neither. Solving ψ first put all of it into obliquity, and so into spin
 //! (line drives at ψ ≈ −10° and 3,300 rpm against Trackman's 1,850); with ψ
 //! at the prior, the scene's `bat.swing_angle` (the paper's optimum,
-//! 0.1594 rad = 9.1°, near MLB's mean attack angle of about 10°), the spin
-//! follows the measured within 8–19 % (docs/bat-tracking.md, "Which
-//! swing"). Where ψ is solved, a speed below its most is given by two
+//! 0.1594 rad = 9.1°, near MLB's mean attack angle of about 10°), it is a
+//! fifth below the measured from 10° to 50° (docs/bat-tracking.md, "Which
+//! swing"). The bat's direction is solved so that the ball lands on the
+//! spray ([`solve_landing`]). Where ψ is solved, a speed below its most is given by two
 //! swings, one flatter and meeting the ball below its centre, one steeper
 //! meeting it above: the solve takes the one nearer the prior.
 
@@ -329,19 +330,24 @@ impl Problem {
                 }
             }
         };
+        Ok(self.solved_at(x))
+    }
+
+    /// The solved swing at x.
+    fn solved_at(&self, x: [f64; 3]) -> SolvedSwing {
         let impact = self.impact(x);
         let scene = self.at(x);
         // The most this swing gives: centred, at the sweet spot.
         let mut centred = scene;
         centred.bat.undercut = 0.0;
         centred.bat.speed = self.scene.bat.speed;
-        Ok(SolvedSwing {
+        SolvedSwing {
             scene,
             regime: impact.regime,
             launch: ImpactLaunch::of(&impact),
             max_exit_speed: Impact3d::with_pitch(&centred, self.pitch).launch_speed(),
             off_sweet_spot: self.second == Second::ContactSpeed,
-        })
+        }
     }
 
     /// The undercut that gives the launch angle for this second unknown and
@@ -652,9 +658,11 @@ impl Problem {
 }
 
 mod ceiling;
+mod landing;
 mod search;
 #[cfg(test)]
 mod tests;
 
 pub use ceiling::{EFFECTIVE_MASSES, ImpactFit, ceiling_efficiency, fit_effective_mass, quantile};
+pub use landing::solve_landing;
 use search::{defined_toward, golden_max, illinois};

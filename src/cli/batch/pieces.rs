@@ -167,7 +167,9 @@ impl Piece {
             }
         }
         if setup.solve_swings {
-            self.jobs.iter_mut().for_each(solve_row);
+            self.jobs
+                .iter_mut()
+                .for_each(|job| solve_row(job, setup.spray));
         }
         fly_chunk(&self.jobs, setup, &mut self.scratch, &mut self.flown);
         let csv = CsvLine {

@@ -16,7 +16,8 @@ use super::savant_columns::quoted;
 use crate::analysis::bat_tracking::{
     self, SolvedSwing, SwingAnswer, TrackedSwing, collision_efficiency,
 };
-use crate::analysis::savant::RowLaunch;
+use crate::analysis::precision::Purpose;
+use crate::analysis::savant::{DirectionFrom, RowLaunch, Spray};
 use crate::model::scene::Hand;
 use crate::model::spin_estimate::Side;
 use crate::model::tracked_pitch::{PitchFit, topspin};
@@ -209,6 +210,9 @@ impl SwingCells {
 pub(super) struct RowSwing {
     pub tracked: Result<TrackedSwing, &'static str>,
     pub answer: Option<SwingAnswer>,
+    /// Where a solved swing's launch direction came from (its flight is
+    /// launched along the impact's, not aimed again).
+    pub direction_from: Option<DirectionFrom>,
 }
 
 impl RowSwing {
@@ -245,14 +249,13 @@ impl RowSwing {
 }
 
 /// Solves the row's swing (when it has a tracked one) and, solved, gives
-/// its flight the impact's launch: the measured speed and angle, and the
-/// impact's backspin and sidespin (nothing estimated). The impact launches
-/// toward the spray (the solve's third equation); the flight is then aimed,
-/// as `fly --batch` aims every row, so that it lands on the spray, since
-/// the hit coordinates are where the ball came down and the impact's
-/// sidespin curves it (3.3° apart at the median on April 2024). A row not
-/// solved keeps what `fly --batch` makes of it.
-pub(super) fn solve_row(job: &mut Job) {
+/// its flight the impact's launch: the measured speed and angle, the
+/// impact's direction, backspin and sidespin (nothing estimated). With
+/// `spray` the landing (the default), the impact is solved toward the
+/// direction whose flight lands on the spray
+/// ([`bat_tracking::solve_landing`]); taken as the launch direction, toward
+/// the spray itself. A row not solved keeps what `fly --batch` makes of it.
+pub(super) fn solve_row(job: &mut Job, spray: Spray) {
     let launch = job.scene.launch;
     let measured = (
         launch.speed.unwrap_or(f64::NAN),
@@ -261,9 +264,19 @@ pub(super) fn solve_row(job: &mut Job) {
     let tracked = job
         .tracked
         .swing(measured, job.launch.spray, job.launch.side);
-    let answer = tracked
-        .ok()
-        .map(|swing| bat_tracking::solve(&job.scene, &swing));
+    let options = Purpose::Solve.flight_options();
+    let solved = tracked.ok().map(|swing| match spray {
+        Spray::Landing => bat_tracking::solve_landing(&job.scene, &swing, &options),
+        Spray::Launch => {
+            let given = if swing.spray.is_some() && swing.attack_direction.is_none() {
+                DirectionFrom::Spray
+            } else {
+                DirectionFrom::Scene
+            };
+            (bat_tracking::solve(&job.scene, &swing), given)
+        }
+    });
+    let (answer, direction_from) = (solved.map(|s| s.0), solved.map(|s| s.1));
     if let Some(solved) = answer.as_ref().and_then(|a| a.solved.as_ref().ok()) {
         let given = &mut job.scene.launch;
         let out = solved.launch;
@@ -271,13 +284,18 @@ pub(super) fn solve_row(job: &mut Job) {
         (given.spin, given.sidespin) = (Some(out.spin), Some(out.sidespin));
         given.direction = Some(out.direction);
         job.launch = RowLaunch {
-            spray: job.launch.spray,
+            spray: None,
             side: job.launch.side,
             estimate_backspin: false,
             estimate_sidespin: false,
         };
     }
-    job.swing = Some(RowSwing { tracked, answer });
+    let solved = answer.is_some_and(|a| a.solved.is_ok());
+    job.swing = Some(RowSwing {
+        tracked,
+        answer,
+        direction_from: direction_from.filter(|_| solved),
+    });
 }
 
 /// The swing's CSV columns, after `line` (`hit --batch`).

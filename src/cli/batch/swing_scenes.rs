@@ -66,7 +66,8 @@ fn read(setup: &mut Setup, input: impl BufRead, shown: Shown) -> Result<Swings, 
             eprintln!("homerun: line {line}: {reason}; skipped");
         }
     })?;
-    jobs.par_iter_mut().for_each(solve_row);
+    jobs.par_iter_mut()
+        .for_each(|job| solve_row(job, setup.spray));
     let tracked = (jobs.iter())
         .filter(|j| j.swing.is_some_and(|s| s.tracked.is_ok()))
         .count();
