@@ -415,3 +415,19 @@ fn rows_too_slow_for_the_sweet_spot_are_solved_off_it_as_the_reference_solves_th
         "{err}"
     );
 }
+
+/// Under --units imperial the swings' closing line gives the undercut in
+/// inches: the sample's 23.5 mm median is 0.93 in.
+#[test]
+fn the_swings_line_speaks_the_units_asked_for() {
+    let (_, _, si) = run_homerun(&["hit", "--batch", SAMPLE], None);
+    assert!(
+        si.contains("undercut median 23.5 mm (quartiles 6.1, 33.0)"),
+        "{si}"
+    );
+    let (_, _, imperial) = run_homerun(&["hit", "--batch", SAMPLE, "--units", "imperial"], None);
+    assert!(
+        imperial.contains("undercut median 0.93 in (quartiles 0.24, 1.30)"),
+        "{imperial}"
+    );
+}

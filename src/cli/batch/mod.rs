@@ -213,7 +213,7 @@ pub(super) fn batch(
     }
     outcome.empty = records.empty;
     summary.without_speed = outcome.without_launch;
-    if let Some(line) = summary.line(&header.savant_used(), outcome.flown, setup) {
+    if let Some(line) = summary.line(&header.savant_used(), outcome.flown, setup, shown) {
         sinks.note(&line);
     }
     if outcome.empty > 0 {

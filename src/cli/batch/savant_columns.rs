@@ -5,6 +5,7 @@
 
 use crate::analysis::savant::{DirectionFrom, Spray, spray_angle};
 use crate::cli::UsageError;
+use crate::cli::shown::Shown;
 use crate::model::park::{self, GivenWeather};
 use crate::model::spin_estimate::Side;
 use crate::preset::parks::Parks;
@@ -330,9 +331,15 @@ impl Summary {
 
     /// "read launch_speed, …; spin estimated (Nathan's relation) on 239 of
     /// 239 rows; …": the line's text, if there is anything to say.
-    pub(super) fn line(&self, used: &[&str], flown: usize, setup: &Setup) -> Option<String> {
+    pub(super) fn line(
+        &self,
+        used: &[&str],
+        flown: usize,
+        setup: &Setup,
+        shown: Shown,
+    ) -> Option<String> {
         let mut parts = Vec::new();
-        parts.extend(self.swings.line());
+        parts.extend(self.swings.line(shown));
         if !used.is_empty() {
             parts.push(format!("read {}", used.join(", ")));
         }

@@ -18,6 +18,7 @@ use crate::analysis::bat_tracking::{
 };
 use crate::analysis::precision::Purpose;
 use crate::analysis::savant::{DirectionFrom, RowLaunch, Spray};
+use crate::cli::shown::Shown;
 use crate::model::scene::Hand;
 use crate::model::spin_estimate::Side;
 use crate::model::tracked_pitch::{PitchFit, topspin};
@@ -473,7 +474,7 @@ impl SwingTally {
     /// 99th percentile 0.235 (data), 0.207 (model at E = 0); undercut
     /// median 18.7 mm (IQR −4.8 to 31.7); not solved: …", or `None`
     /// without swings.
-    pub(super) fn line(&self) -> Option<String> {
+    pub(super) fn line(&self, shown: Shown) -> Option<String> {
         let tracked = self.data_efficiency.len();
         let untracked: usize = self.untracked.values().sum();
         if tracked + untracked == 0 {
@@ -503,12 +504,17 @@ impl SwingTally {
         }
         if solved > 0 {
             let e = percentiles(&self.undercuts, &[0.25, 0.5, 0.75]);
+            // In mm, or under --units imperial in inches.
+            let (scale, unit, decimals) = match shown.is_si() {
+                true => (1e3, "mm", 1),
+                false => (1.0 / 0.0254, "in", 2),
+            };
             let _ = write!(
                 line,
-                "; undercut median {:.1} mm (quartiles {:.1}, {:.1})",
-                e[1] * 1e3,
-                e[0] * 1e3,
-                e[2] * 1e3
+                "; undercut median {:.decimals$} {unit} (quartiles {:.decimals$}, {:.decimals$})",
+                e[1] * scale,
+                e[0] * scale,
+                e[2] * scale
             );
         }
         let reasons: Vec<String> = (self.unsolved.iter().map(|(why, n)| format!("{n} {why}")))
