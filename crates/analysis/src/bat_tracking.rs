@@ -36,7 +36,7 @@
 //! meeting it above: the solve takes the one nearer the prior.
 
 use model::impact::{Impact3d, Regime};
-use model::scene::{Hand, Scene};
+use model::scene::{GivenLaunch, Hand, Scene};
 use model::tracked_pitch::PitchAtPlate;
 use nalgebra::{Matrix3, Vector3};
 
@@ -61,6 +61,14 @@ pub struct TrackedSwing {
     pub launch_speed: f64,
     pub launch_angle: f64,
     pub spray: Option<f64>,
+}
+
+impl TrackedSwing {
+    /// The spray, where the bat's direction is solved from it (no measured
+    /// attack direction).
+    pub fn spray_to_solve(&self) -> Option<f64> {
+        self.spray.filter(|_| self.attack_direction.is_none())
+    }
 }
 
 /// The collision efficiency q = (EV − V_bat)/(V_pitch + V_bat): the
@@ -108,6 +116,17 @@ pub struct ImpactLaunch {
 }
 
 impl ImpactLaunch {
+    /// As a scene's launch: every part given.
+    pub fn given(&self) -> GivenLaunch {
+        GivenLaunch {
+            speed: Some(self.speed),
+            angle: Some(self.angle),
+            spin: Some(self.spin),
+            direction: Some(self.direction),
+            sidespin: Some(self.sidespin),
+        }
+    }
+
     fn of(impact: &Impact3d) -> ImpactLaunch {
         ImpactLaunch {
             speed: impact.launch_speed(),
@@ -243,7 +262,7 @@ impl Problem {
             scene,
             pitch: swing.pitch.velocity,
             second,
-            free_direction: swing.attack_direction.is_none() && swing.spray.is_some(),
+            free_direction: swing.spray_to_solve().is_some(),
             target: [
                 swing.launch_speed,
                 swing.launch_angle,

@@ -269,21 +269,16 @@ pub(super) fn solve_row(job: &mut Job, spray: Spray) {
     let solved = tracked.ok().map(|swing| match spray {
         Spray::Landing => bat_tracking::solve_landing(&job.scene, &swing, &options),
         Spray::Launch => {
-            let given = if swing.spray.is_some() && swing.attack_direction.is_none() {
-                DirectionFrom::Spray
-            } else {
-                DirectionFrom::Scene
+            let given = match swing.spray_to_solve() {
+                Some(_) => DirectionFrom::Spray,
+                None => DirectionFrom::Scene,
             };
             (bat_tracking::solve(&job.scene, &swing), given)
         }
     });
     let (answer, direction_from) = (solved.map(|s| s.0), solved.map(|s| s.1));
     if let Some(solved) = answer.as_ref().and_then(|a| a.solved.as_ref().ok()) {
-        let given = &mut job.scene.launch;
-        let out = solved.launch;
-        (given.speed, given.angle) = (Some(out.speed), Some(out.angle));
-        (given.spin, given.sidespin) = (Some(out.spin), Some(out.sidespin));
-        given.direction = Some(out.direction);
+        job.scene.launch = solved.launch.given();
         job.launch = RowLaunch {
             spray: None,
             side: job.launch.side,

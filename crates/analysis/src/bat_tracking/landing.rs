@@ -37,7 +37,7 @@ pub fn solve_landing(
     options: &FlightOptions,
 ) -> (SwingAnswer, DirectionFrom) {
     let mut answer = solve(base, swing);
-    let Some(bearing) = swing.spray.filter(|_| swing.attack_direction.is_none()) else {
+    let Some(bearing) = swing.spray_to_solve() else {
         return (answer, DirectionFrom::Scene);
     };
     // The launch direction d is a root of aimed(d) − d: the aim turns the
@@ -81,12 +81,8 @@ fn landing_launch(
     bearing: f64,
     options: &FlightOptions,
 ) -> Option<f64> {
-    let out = solved.launch;
     let mut scene = *base;
-    let launch = &mut scene.launch;
-    (launch.speed, launch.angle) = (Some(out.speed), Some(out.angle));
-    (launch.spin, launch.sidespin) = (Some(out.spin), Some(out.sidespin));
-    launch.direction = Some(out.direction);
+    scene.launch = solved.launch.given();
     let row = RowLaunch {
         spray: Some(bearing),
         side: None,
