@@ -16,6 +16,7 @@ use crate::preset::escape_cut;
 pub(super) mod calibrate;
 pub(super) mod calibrate_impact;
 mod flights;
+mod launch_columns;
 mod output;
 mod own_launch;
 mod pieces;
@@ -25,6 +26,7 @@ mod savant_columns;
 mod swing_columns;
 pub(super) mod swing_scenes;
 
+use launch_columns::LAUNCH_COLUMNS;
 pub use read::MAX_RECORD_BYTES;
 use read::{Fields, Lossy, Records, Stop};
 pub(super) use rows::columns_help;

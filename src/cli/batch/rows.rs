@@ -6,79 +6,19 @@ use crate::Scene;
 use crate::analysis::savant::RowLaunch;
 use crate::model::aero::UnknownModel;
 use crate::model::keys::{
-    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, InputBatch, InputError, Key, LAUNCH_KEYS, TEXT_KEYS, Typed,
+    AIR_KEYS, ATMOSPHERE_KEYS, DRAG_KEY, InputBatch, InputError, Key, LAUNCH_KEYS, TEXT_KEYS,
+    out_of_range_shown,
 };
 use crate::model::park::GivenWeather;
 use crate::model::scene::UnknownHand;
 use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem, significant};
 
+use super::launch_columns::{LAUNCH_COLUMNS, Unit};
 use super::own_launch::SwingLaunches;
 use super::read::Fields;
 use super::savant_columns::{SavantCells, SavantColumn, Setup};
 use super::swing_columns::{RowSwing, SwingCells, SwingColumn};
-
-/// How a column's values become a launch value in SI.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Unit {
-    Si,
-    /// Statcast's `launch_speed`: mph, exactly 0.44704 m/s.
-    Mph,
-    /// Statcast's `launch_angle`: degrees.
-    Degrees,
-    /// `spin_rpm`: revolutions per minute, 2π/60 rad/s.
-    Rpm,
-}
-
-impl Unit {
-    /// The explorer's and `--units`' conversion, so that 103 mph is the
-    /// same launch to the last bit wherever it is typed.
-    pub(super) fn to_si(self, value: f64) -> f64 {
-        match self.quantity() {
-            None => value,
-            Some(quantity) => quantity.unit(UnitSystem::Imperial, "").read(value),
-        }
-    }
-
-    fn quantity(self) -> Option<Quantity> {
-        match self {
-            Unit::Si => None,
-            Unit::Mph => Some(Quantity::Speed),
-            Unit::Degrees => Some(Quantity::Angle),
-            Unit::Rpm => Some(Quantity::Spin),
-        }
-    }
-
-    pub(super) fn name(self) -> &'static str {
-        match self {
-            Unit::Si => "",
-            Unit::Mph => "mph",
-            Unit::Degrees => "°",
-            Unit::Rpm => "rpm",
-        }
-    }
-}
-
-/// The launch keys and the other names their columns may have, with units.
-pub(super) const LAUNCH_COLUMNS: [(&str, &[(&str, Unit)]); 3] = [
-    (
-        "launch.speed",
-        &[
-            ("launch.speed", Unit::Si),
-            ("launch_speed", Unit::Mph),
-            // Statcast's older and Trackman's files (the 2018 set).
-            ("exit_speed", Unit::Mph),
-        ],
-    ),
-    (
-        "launch.angle",
-        &[("launch.angle", Unit::Si), ("launch_angle", Unit::Degrees)],
-    ),
-    (
-        "launch.spin",
-        &[("launch.spin", Unit::Si), ("spin_rpm", Unit::Rpm)],
-    ),
-];
 
 /// `fly --batch`'s long help: the columns read, made from
 /// [`LAUNCH_COLUMNS`] and the keys, so that it cannot fall behind them.
@@ -654,24 +594,17 @@ fn read_cells(
             key,
             value,
             bounds,
-            unit: si,
-            typed: typed @ None,
-        } = &mut e
+            unit,
+            typed: None,
+        } = e
             && let Some(quantity) = header.columns.iter().find_map(|column| match column {
-                Column::Launch(i, unit) if LAUNCH_COLUMNS[*i].0 == *key => unit.quantity(),
+                Column::Launch(i, unit) if LAUNCH_COLUMNS[*i].0 == key => unit.quantity(),
                 _ => None,
             })
         {
-            let shown = quantity.unit(UnitSystem::Imperial, si);
-            *typed = Some(Box::new(Typed {
-                text: format!(
-                    "{} {} ({} {si})",
-                    significant(shown.show(*value)),
-                    shown.symbol,
-                    significant(*value)
-                ),
-                suggestion: format!(", that is {} {}", bounds.shown_in(shown), shown.symbol),
-            }));
+            let shown = quantity.unit(UnitSystem::Imperial, unit);
+            let typed = significant(shown.show(value));
+            e = out_of_range_shown((key, quantity, unit, bounds), value, &typed, shown);
         }
         let from = if converted {
             let read: Vec<String> = header

@@ -2,6 +2,7 @@
 //! `fly` and against themselves flown alone: the same records, lines,
 //! numbers and digits.
 
+use super::launch_columns::Unit;
 use super::*;
 use crate::Scene;
 use crate::numerics::xorshift::uniform;

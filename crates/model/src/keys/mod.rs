@@ -23,7 +23,7 @@ pub use table::{
     AIR_KEYS, ATMOSPHERE_KEYS, CALIBRATION_KEYS, DRAG_KEY, EXTENDED_KEYS, HAND_KEY, KEYS,
     LAUNCH_KEYS, LIFT_KEY, SWING_3D_KEYS, TEXT_KEYS, all_keys, swing_keys,
 };
-pub use typed::{Typed, read_in_system, read_typed};
+pub use typed::{Typed, out_of_range_shown, read_in_system, read_typed};
 
 /// A closed or half-open interval of accepted values.
 #[derive(Clone, Copy, Debug, PartialEq)]

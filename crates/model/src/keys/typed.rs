@@ -59,7 +59,7 @@ pub fn read_in_system(
     text: &str,
     system: UnitSystem,
 ) -> Result<f64, InputError> {
-    let (name, quantity, unit, bounds) = spec;
+    let (_, quantity, unit, bounds) = spec;
     let shown = quantity.unit(system, unit);
     if shown.is_identity() {
         return read_typed(spec, text);
@@ -72,21 +72,32 @@ pub fn read_in_system(
     if bounds.contains(si) {
         return Ok(si);
     }
-    Err(InputError::OutOfRange {
+    Err(out_of_range_shown(spec, si, &typed_text(text), shown))
+}
+
+/// The refusal of `si`, given as `typed` in `shown` (the unit a bare
+/// number is in): the value in both units, and the range in `shown`'s
+/// too ("95 ° (1.65806 rad): … (-π/2, π/2) rad, that is (-90, 90) °").
+pub fn out_of_range_shown(
+    (name, _, unit, bounds): (&'static str, Quantity, &'static str, Bounds),
+    si: f64,
+    typed: &str,
+    shown: Unit,
+) -> InputError {
+    InputError::OutOfRange {
         key: name,
         value: si,
         bounds,
         unit,
         typed: Some(Box::new(Typed {
             text: format!(
-                "{} {} ({} {unit})",
-                typed_text(text),
+                "{typed} {} ({} {unit})",
                 shown.symbol,
                 units::significant(si)
             ),
             suggestion: format!(", that is {} {}", bounds.shown_in(shown), shown.symbol),
         })),
-    })
+    }
 }
 
 /// The number `text` is, if it is a bare number (no unit after it).
