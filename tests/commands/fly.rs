@@ -616,3 +616,57 @@ fn a_batted_balls_figure_names_its_launch_not_a_pitch_and_bat() {
         "{si}\n{imperial}"
     );
 }
+
+/// A Statcast row's flight starts where the bat met the pitch: at its
+/// height over the plate (`plate_z`, ft), exactly as that height given as
+/// the contact height. `--set environment.contact_height` holds for every
+/// row instead, and a `plate_z` no ball can be hit at leaves the preset's
+/// height and says so.
+#[test]
+fn a_row_flies_from_its_pitchs_height_at_the_plate() {
+    let dir = tempfile::tempdir().unwrap();
+    let head = "stand,home_team,hc_x,hc_y,launch_speed,launch_angle";
+    let rows = ["R,KC,109.13,107.39,100.2,14", "L,SEA,140.95,103.29,95.0,28"];
+    let heights_ft = [1.5, 3.1];
+    let table = |column: &str, cells: [String; 2]| {
+        format!(
+            "{head},{column}\n{},{}\n{},{}\n",
+            rows[0], cells[0], rows[1], cells[1]
+        )
+    };
+    let ranges = |input: &str, args: &[&str]| -> (Vec<f64>, String) {
+        let (status, out, err) = batch(dir.path(), input, &[&["--json"], args].concat());
+        assert_eq!(status, Some(0), "{err}");
+        let ranges = out
+            .lines()
+            .map(|l| {
+                serde_json::from_str::<Value>(l).unwrap()["flight"]["range"]
+                    .as_f64()
+                    .unwrap()
+            })
+            .collect();
+        (ranges, err)
+    };
+    let (from_pitch, err) = ranges(&table("plate_z", heights_ft.map(|h| h.to_string())), &[]);
+    assert!(err.contains("(plate_z) on 2 rows"), "{err}");
+    let metres = heights_ft.map(|h| (h * 0.3048).to_string());
+    let (given, _) = ranges(&table("environment.contact_height", metres), &[]);
+    assert_eq!(from_pitch, given);
+    // The preset's 1 m (3.28 ft): the low pitch's ball, hit 1.78 ft lower,
+    // comes down sooner; the high one's, 0.18 ft lower, a little sooner.
+    let no_plate = format!("{head}\n{}\n{}\n", rows[0], rows[1]);
+    let (preset, _) = ranges(&no_plate, &[]);
+    assert!(from_pitch[0] < preset[0] - 0.5, "{from_pitch:?} {preset:?}");
+    assert!(from_pitch[1] < preset[1] && from_pitch[1] > preset[1] - 0.5);
+    let set = ["--set", "environment.contact_height=1.2"];
+    let (over, err) = ranges(&table("plate_z", heights_ft.map(|h| h.to_string())), &set);
+    assert_eq!(over, ranges(&no_plate, &set).0);
+    assert!(!err.contains("plate_z) on"), "{err}");
+    let unusable = table("plate_z", ["-0.4".into(), "high".into()]);
+    let (ranges_unusable, err) = ranges(&unusable, &[]);
+    assert_eq!(ranges_unusable, preset);
+    assert!(
+        err.contains("2 rows whose plate_z is no contact height"),
+        "{err}"
+    );
+}

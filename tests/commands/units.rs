@@ -383,7 +383,34 @@ fn a_savant_batch_prints_its_units_and_one_summary() {
         (band(row).1.unwrap() - median).abs() <= 0.06,
         "{row}: {median}"
     );
-    let counted: usize = lines[at + 3..].iter().map(|l| band(l).0).sum();
+    let kinds = at
+        + lines[at..]
+            .iter()
+            .position(|l| l.starts_with("by kind"))
+            .unwrap();
+    let counted: usize = lines[at + 3..kinds].iter().map(|l| band(l).0).sum();
     assert_eq!(counted, rows.len());
     assert_eq!(rows.len(), 245);
+    // Issue 26's table by kind: every row of this file is a home run, so
+    // its home-run line holds every row at 10° and up, and its verdict is
+    // the summary's 169 that clear.
+    let mut homers: Vec<f64> = (rows.iter().filter(|(a, _)| *a >= 10.0))
+        .map(|r| r.1)
+        .collect();
+    homers.sort_by(f64::total_cmp);
+    let n = homers.len();
+    let median = (homers[(n - 1) / 2] + homers[n / 2]) / 2.0;
+    let row = lines[kinds..]
+        .iter()
+        .find(|l| l.starts_with("home runs "))
+        .unwrap();
+    assert_eq!(band(row).0, n);
+    assert!(
+        (band(row).1.unwrap() - median).abs() <= 0.06,
+        "{row}: {median}"
+    );
+    assert_eq!(
+        lines.last().unwrap(),
+        &"home runs that clear the fence they are judged at: 169 of 248 (68.1 %)"
+    );
 }

@@ -16,6 +16,7 @@ use crate::preset::escape_cut;
 pub(super) mod calibrate;
 pub(super) mod calibrate_impact;
 mod flights;
+mod kinds;
 mod launch_columns;
 mod output;
 mod own_launch;
@@ -239,14 +240,30 @@ pub(super) fn batch(
     let line = tally.line(outcome.flown, skipped, &at, shown);
     if setup.summary_to_stdout {
         // On request, the error by launch-angle band too (JSON in SI).
+        // And by kind of ball, where the export names them.
         let bands = !tally.differences.is_empty();
-        let line = match (json, bands) {
-            (true, true) => {
-                serde_json::json!({ "summary": line, "bands": tally.bands() }).to_string()
+        let kinds = tally.kinds.any();
+        let line = if json {
+            let mut summary = serde_json::json!({ "summary": line });
+            if bands {
+                summary["bands"] = serde_json::json!(tally.bands());
             }
-            (true, false) => serde_json::json!({ "summary": line }).to_string(),
-            (false, true) => format!("{line}\n{}", tally.band_table(shown)),
-            (false, false) => line,
+            if kinds {
+                summary["kinds"] = serde_json::json!(tally.kinds.rows());
+                if let Some((clear, of)) = tally.kinds.home_runs_clearing() {
+                    summary["home_runs"] = serde_json::json!({ "clear": clear, "of": of });
+                }
+            }
+            summary.to_string()
+        } else {
+            let mut text = line;
+            if bands {
+                text = format!("{text}\n{}", tally.band_table(shown));
+            }
+            if kinds {
+                text = format!("{text}\n{}", tally.kinds.table(shown));
+            }
+            text
         };
         let _ = writeln!(sinks.out, "{line}");
         let _ = sinks.out.flush();

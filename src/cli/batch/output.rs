@@ -9,6 +9,7 @@ use std::io::Write as _;
 use serde::Serialize;
 
 use super::flights::RowFlight;
+use super::kinds::KindTally;
 use super::rows::Job;
 use super::savant_columns::{Setup, quoted};
 use crate::analysis::calibrate::{BAND_EDGES, band_of};
@@ -400,6 +401,8 @@ pub(super) struct Tally {
     pub outcomes: [usize; 4],
     /// Launch angle (rad) and model − Statcast (m), one a row that has both.
     pub differences: Vec<(f64, f64)>,
+    /// The same by kind of ball, and the home runs' verdicts.
+    pub kinds: KindTally,
 }
 
 /// The summary's table looks at the model's error by launch-angle band, as
@@ -429,8 +432,9 @@ impl Tally {
         };
         self.outcomes[at] += 1;
         let angle = flown.launch.angle;
-        self.differences
-            .extend(difference(job, flown).map(|d| (angle, d)));
+        let difference = difference(job, flown);
+        self.differences.extend(difference.map(|d| (angle, d)));
+        self.kinds.count(job.called, angle, difference, at == 0);
     }
 
     pub(super) fn add(&mut self, other: &Tally) {
@@ -438,6 +442,7 @@ impl Tally {
             *total += n;
         }
         self.differences.extend_from_slice(&other.differences);
+        self.kinds.add(&other.kinds);
     }
 
     /// "flown 248 rows, skipped 0; at their parks 169 clear, 39 off the
@@ -526,7 +531,7 @@ impl Tally {
 }
 
 /// The median of `values` (not empty), sorting them.
-fn median(values: &mut [f64]) -> f64 {
+pub(super) fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
     let n = values.len();
     if n % 2 == 1 {

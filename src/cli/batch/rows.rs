@@ -14,6 +14,7 @@ use crate::model::scene::UnknownHand;
 use crate::preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use crate::units::{Quantity, UnitSystem, significant};
 
+use super::kinds::Called;
 use super::launch_columns::{LAUNCH_COLUMNS, Unit};
 use super::own_launch::SwingLaunches;
 use super::read::Fields;
@@ -53,6 +54,15 @@ pub(in crate::cli) fn columns_help() -> String {
             (
                 "exit_direction",
                 "the launch direction measured at the bat (°, + toward right field)",
+            ),
+            (
+                "plate_z",
+                "the pitch's height over the plate (ft): the contact height, unless \
+                 environment.contact_height is given",
+            ),
+            (
+                "bb_type, events",
+                "Savant's kind of ball and the play: --summary's table by kind (home runs by events)",
             ),
             (
                 "hang_time, apex",
@@ -101,6 +111,15 @@ fn launch_key(index: usize) -> &'static Key {
         [index]
 }
 
+/// `environment.contact_height`, which a row's `plate_z` sets.
+fn contact_height_key() -> &'static Key {
+    static KEY: std::sync::OnceLock<&'static Key> = std::sync::OnceLock::new();
+    KEY.get_or_init(|| Scene::key(CONTACT_HEIGHT).expect("the contact height's key"))
+}
+
+/// The key `plate_z` gives.
+pub(super) const CONTACT_HEIGHT: &str = "environment.contact_height";
+
 /// What one input column is.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Column {
@@ -140,6 +159,8 @@ pub(super) struct Header {
     direction_given: bool,
     /// A column gives a hit coordinate.
     pub(super) hit_coordinates: bool,
+    /// A column gives `environment.contact_height`: `plate_z` then does not.
+    contact_height_given: bool,
 }
 
 /// An input column's key as a row sets it.
@@ -214,6 +235,7 @@ impl Header {
         });
         let is = |column: SavantColumn| columns.contains(&Column::Savant(column));
         let hit_coordinates = is(SavantColumn::HcX) || is(SavantColumn::HcY);
+        let contact_height_given = columns.contains(&Column::Input(CONTACT_HEIGHT));
         Ok(Header {
             direction_given: columns.contains(&Column::Input("launch.direction"))
                 || columns.contains(&Column::Savant(SavantColumn::ExitDirection)),
@@ -226,6 +248,7 @@ impl Header {
             speed,
             launch_only,
             hit_coordinates,
+            contact_height_given,
         })
     }
 
@@ -360,6 +383,23 @@ pub(super) struct Job {
     pub(super) swing: Option<RowSwing>,
     /// The air keys given, by `--set` and by the row: a park keeps them.
     pub(super) given: GivenWeather,
+    /// Where its contact height came from.
+    pub(super) contact: ContactFrom,
+    /// What Savant called it, for the summary.
+    pub(super) called: Called,
+}
+
+/// Where a row's flight starts from.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(super) enum ContactFrom {
+    /// The preset's (or `--set`'s, or a column's) contact height.
+    #[default]
+    Given,
+    /// The pitch's height at the plate, `plate_z`.
+    Pitch,
+    /// A `plate_z` that is no height (below the ground, or not a number):
+    /// the given contact height instead.
+    PitchUnusable,
 }
 
 /// What a row turned out to be.
@@ -454,6 +494,8 @@ pub(super) fn parse_row(
         tracked: SwingCells::default(),
         swing: None,
         given: setup.given,
+        contact: ContactFrom::Given,
+        called: Called::default(),
     });
     let job = jobs.last_mut().expect("a job just pushed");
     if let Err(reason) = read_cells(header, setup, &fields, swings, job) {
@@ -579,6 +621,21 @@ fn read_cells(
     if let Some(direction) = savant.direction {
         scene.launch.direction = Some(direction);
     }
+    // The flight starts where the bat met the pitch: at the pitch's
+    // height over the plate, unless the contact height is given (by
+    // `--set` or a column) for every row.
+    let mut contact = ContactFrom::Given;
+    let contact_given = header.contact_height_given || setup.contact_height_given;
+    if let Some(read) = savant.plate_height.filter(|_| !contact_given) {
+        let key = contact_height_key();
+        contact = match read.filter(|&height| key.bounds.contains(height)) {
+            Some(height) => {
+                (key.set)(scene, height);
+                ContactFrom::Pitch
+            }
+            None => ContactFrom::PitchUnusable,
+        };
+    }
     let park = setup.park.or(savant.park);
     if let Some(index) = park {
         super::super::ground::to_park(scene, &setup.parks.parks[index], *given);
@@ -634,6 +691,8 @@ fn read_cells(
         estimate_sidespin: !spin_given && !sidespin_given,
     };
     job.park = park;
+    job.contact = contact;
+    job.called = savant.called;
     job.tracked = tracked;
     job.spray_at_plate = savant.at_plate() && !header.direction_given;
     (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);

@@ -11,7 +11,8 @@ use crate::model::spin_estimate::Side;
 use crate::preset::parks::Parks;
 use crate::preset::{Preset, cut, escape_cut};
 
-use super::rows::{Header, Job, measure};
+use super::kinds::{Called, Kind};
+use super::rows::{ContactFrom, Header, Job, measure};
 use super::swing_columns::SwingTally;
 use crate::units::Quantity;
 
@@ -37,12 +38,19 @@ pub(super) enum SavantColumn {
     /// field, as Trackman's "Direction"): Statcast's older and Trackman's
     /// files have it where Savant's exports have the hit coordinates.
     ExitDirection,
+    /// The pitch's height as it crosses the front of the plate (ft): where
+    /// the bat met it, so the height the flight starts from.
+    PlateZ,
+    /// Savant's kind of ball and the play's result: only counted, for the
+    /// summary's table by kind.
+    BbType,
+    Events,
 }
 
 impl SavantColumn {
     /// Each column's names, lower case (a header's are matched in either
     /// case); the first is the one named in messages.
-    pub(super) const ALL: [(&'static str, SavantColumn); 9] = [
+    pub(super) const ALL: [(&'static str, SavantColumn); 12] = [
         ("hc_x", SavantColumn::HcX),
         ("hc_y", SavantColumn::HcY),
         ("stand", SavantColumn::Stand),
@@ -53,6 +61,9 @@ impl SavantColumn {
         ("hang_time", SavantColumn::HangTime),
         ("apex", SavantColumn::Apex),
         ("exit_direction", SavantColumn::ExitDirection),
+        ("plate_z", SavantColumn::PlateZ),
+        ("bb_type", SavantColumn::BbType),
+        ("events", SavantColumn::Events),
     ];
 
     pub(super) fn of(name: &str) -> Option<SavantColumn> {
@@ -84,6 +95,9 @@ pub(in crate::cli) struct Setup<'a> {
     /// is estimated.
     pub spin_given: bool,
     pub sidespin_given: bool,
+    /// Whether `--set` gave `environment.contact_height`: then no row's
+    /// `plate_z` replaces it.
+    pub contact_height_given: bool,
     pub spray: Spray,
     /// `--own-air`: each park counted in its own air (a flight per park).
     pub own_air: bool,
@@ -123,6 +137,7 @@ impl<'a> Setup<'a> {
             .collect();
         setup.spin_given = keys.contains(&"launch.spin");
         setup.sidespin_given = keys.contains(&"launch.sidespin");
+        setup.contact_height_given = keys.contains(&super::rows::CONTACT_HEIGHT);
         if let Some(code) = park {
             let named = super::super::parks::lookup(code, parks)?;
             let found = parks
@@ -144,6 +159,7 @@ impl<'a> Setup<'a> {
             given: GivenWeather::default(),
             spin_given: false,
             sidespin_given: false,
+            contact_height_given: false,
             spray: Spray::Landing,
             own_air: false,
             all_parks: false,
@@ -178,6 +194,11 @@ pub(super) struct SavantCells {
     pub apex: Option<f64>,
     /// The launch direction (rad).
     pub direction: Option<f64>,
+    /// The pitch's height at the plate (m), as read; `None` where the
+    /// cell cannot be read (an empty cell is never read).
+    pub plate_height: Option<Option<f64>>,
+    /// What Savant called the ball.
+    pub called: Called,
 }
 
 impl SavantCells {
@@ -202,6 +223,11 @@ impl SavantCells {
             SavantColumn::HangTime => self.hang_time = measure(value, Quantity::Unchanged, |s| s),
             SavantColumn::Apex => self.apex = feet(),
             SavantColumn::ExitDirection => self.direction = Some(number()?.to_radians()),
+            // The contact's height, only where it can be one (read_cells);
+            // one that cannot be read leaves the preset's, as a missing one.
+            SavantColumn::PlateZ => self.plate_height = Some(feet()),
+            SavantColumn::BbType => self.called.kind = Kind::of(value),
+            SavantColumn::Events => self.called.home_run = value.eq_ignore_ascii_case("home_run"),
             SavantColumn::Stand => {
                 self.side = Some(match value {
                     "R" | "r" => Side::Right,
@@ -273,6 +299,10 @@ pub(super) struct Summary {
     pub at_generic: usize,
     /// Rows skipped for having no launch speed.
     pub without_speed: usize,
+    /// Rows flown from the pitch's height, and those whose `plate_z` was
+    /// no height (flown from the preset's).
+    pub from_plate: usize,
+    pub plate_unusable: usize,
     /// The rows' swings, when they are solved.
     pub swings: SwingTally,
 }
@@ -298,6 +328,8 @@ impl Summary {
         }
         self.at_generic += other.at_generic;
         self.without_speed += other.without_speed;
+        self.from_plate += other.from_plate;
+        self.plate_unusable += other.plate_unusable;
         self.swings.add(&other.swings);
     }
 
@@ -322,6 +354,8 @@ impl Summary {
         } else if header.hit_coordinates {
             self.without_spray += 1;
         }
+        self.from_plate += usize::from(job.contact == ContactFrom::Pitch);
+        self.plate_unusable += usize::from(job.contact == ContactFrom::PitchUnusable);
         match job.park {
             Some(index) => self.at_park[index] += 1,
             None => self.at_generic += 1,
@@ -381,6 +415,20 @@ impl Summary {
                  direction) flown toward the preset's direction",
                 self.at_plate,
                 if self.at_plate == 1 { "" } else { "s" }
+            ));
+        }
+        if self.from_plate > 0 {
+            parts.push(format!(
+                "flown from the pitch's height at the plate (plate_z) on {} rows",
+                self.from_plate
+            ));
+        }
+        if self.plate_unusable > 0 {
+            parts.push(format!(
+                "{} row{} whose plate_z is no contact height (below the ground, past 10 m, \
+                 or not a number) flown from the preset's",
+                self.plate_unusable,
+                if self.plate_unusable == 1 { "" } else { "s" }
             ));
         }
         let parks = self.at_park.iter().filter(|&&n| n > 0).count();
