@@ -141,12 +141,18 @@ impl KindTally {
     /// The table in the units shown, and the home runs' verdict.
     pub(super) fn table(&self, shown: Shown) -> String {
         let unit = shown.unit(Quantity::Distance);
-        let mut table = format!(
-            "by kind of ball (bb_type; home runs by events), launched at 10° or more, model − \
-             hit_distance_sc ({}):\n{:<13} {:>7} {:>8} {:>10}\n",
-            unit.symbol, "kind", "rows", "median", "median |d|"
-        );
-        for row in self.rows() {
+        let rows = self.rows();
+        // Without distances there is no error to show, only the verdicts.
+        let mut table = if rows.is_empty() {
+            String::new()
+        } else {
+            format!(
+                "by kind of ball (bb_type; home runs by events), launched at 10° or more, model − \
+                 hit_distance_sc ({}):\n{:<13} {:>7} {:>8} {:>10}\n",
+                unit.symbol, "kind", "rows", "median", "median |d|"
+            )
+        };
+        for row in rows {
             let show = |m: Option<f64>| m.map_or(0.0, |m| unit.show(m));
             let _ = writeln!(
                 table,
@@ -206,5 +212,12 @@ mod tests {
             (2, Some(-1.0), Some(3.0))
         );
         assert_eq!(tally.home_runs_clearing(), Some((1, 2)));
+        // Without distances, only the verdict.
+        let mut verdict = KindTally::default();
+        verdict.count(homer, 0.5, None, true);
+        assert_eq!(
+            verdict.table(Shown(crate::units::UnitSystem::Si)),
+            "home runs that clear the fence they are judged at: 1 of 1 (100.0 %)"
+        );
     }
 }
