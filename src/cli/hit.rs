@@ -67,6 +67,11 @@ pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
     }
     let bat = &scene.bat;
     let stick = match impact.stick_impulse() {
+        // A contact that grips then springs back (bat.tangential_restitution).
+        Some(p) if bat.tangential_restitution > 0.0 => format!(
+            "slip halts at p_s = {p:.4} N·s (stick), then springs back (e_T = {})",
+            bat.tangential_restitution
+        ),
         Some(p) => format!("slip halts at p_s = {p:.4} N·s (stick)"),
         None => "slips until separation".to_owned(),
     };

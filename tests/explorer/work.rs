@@ -122,11 +122,12 @@ fn every_key_is_offered_and_the_weather_derives_the_air() {
     }
     assert!(app.fields.contains(&Field::Drag) && app.fields.contains(&Field::Lift));
     assert!(app.fields.contains(&Field::Hand));
-    // Each group is listed once, the swing beyond the paper's plane last.
+    // Each group is listed once, the swing beyond the paper's plane and
+    // the contact beyond its rigid rolling last.
     let headers = app.input_lines().iter().filter(|l| l.is_none()).count();
     assert_eq!(
-        headers, 6,
-        "pitch, bat, ball, environment, model, 3-D swing"
+        headers, 7,
+        "pitch, bat, ball, environment, model, 3-D swing, contact"
     );
 
     select(&mut app, "environment.temperature");
@@ -265,7 +266,8 @@ fn b_flies_the_swings_launch_on_its_own_and_back() {
             "ball",
             "environment",
             "model",
-            "3-D swing"
+            "3-D swing",
+            "contact"
         ]
     );
     assert!(screen(&app).contains("swing · "));

@@ -388,7 +388,7 @@ fn reference_rows() -> (Vec<&'static str>, Vec<Vec<&'static str>>) {
 fn an_independent_implementation_agrees_on_varied_3d_impacts() {
     let (names, rows) = reference_rows();
     assert!(rows.len() >= 30, "{} rows", rows.len());
-    let (mut stuck, mut slid) = (0, 0);
+    let (mut stuck, mut slid, mut gripped) = (0, 0, 0);
     let mut worst: f64 = 0.0;
     for fields in rows {
         let row = Row {
@@ -416,8 +416,15 @@ fn an_independent_implementation_agrees_on_varied_3d_impacts() {
         scene
             .set_text("pitch.spin", row.text("pitch_spin"))
             .unwrap();
+        scene
+            .set_text(
+                "bat.tangential_restitution",
+                row.text("tangential_restitution"),
+            )
+            .unwrap();
         scene.validate().unwrap();
         let impact = Impact3d::new(&scene);
+        gripped += usize::from(scene.bat.tangential_restitution > 0.0);
         let case = row.fields.join(",");
         let regime = match impact.regime {
             Regime::Stick => "stick",
@@ -461,6 +468,7 @@ fn an_independent_implementation_agrees_on_varied_3d_impacts() {
         }
     }
     assert!(stuck >= 10 && slid >= 5, "{stuck} stuck, {slid} slid");
+    assert!(gripped >= 10, "{gripped} gripping");
     eprintln!("worst scaled disagreement with reference/impact3d.py: {worst:.1e}");
 }
 

@@ -7,6 +7,7 @@ mod aero;
 mod common;
 mod figures;
 mod flight3d;
+mod grip;
 mod hard_cases;
 mod impact3d;
 mod lockstep;

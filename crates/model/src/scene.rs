@@ -131,6 +131,16 @@ pub struct Bat {
     /// Which side of the plate the batter stands on.
     #[serde(default)]
     pub hand: Hand,
+    /// e_T, the tangential restitution of a contact that grips: the slip it
+    /// halted springs back e_T-fold before the ball leaves (Cross, Am. J.
+    /// Phys. 70, 482 (2002); docs/bat-tracking.md). 0 is the paper's rigid
+    /// rolling.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub tangential_restitution: f64,
+}
+
+fn is_zero(value: &f64) -> bool {
+    *value == 0.0
 }
 
 impl Bat {
@@ -354,6 +364,7 @@ impl Default for Scene {
                 tilt: 0.0,
                 direction: 0.0,
                 hand: Hand::Right,
+                tangential_restitution: 0.0,
             },
             ball: Ball {
                 mass: 0.145,

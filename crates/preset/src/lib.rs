@@ -316,9 +316,13 @@ impl Preset {
                 .zip(given)
                 .any(|(k, v)| k.name == name && v.is_some()),
         };
-        // A calibration factor is written only when it scales (1: as published).
+        // A calibration factor is written only when it scales (1: as
+        // published), the tangential restitution only when the contact
+        // springs back (0: the paper's rolling).
         let unscaled = |k: &Key| {
-            CALIBRATION_KEYS.iter().any(|c| c.name == k.name) && (k.get)(&self.scene) == 1.0
+            let value = (k.get)(&self.scene);
+            (CALIBRATION_KEYS.iter().any(|c| c.name == k.name) && value == 1.0)
+                || (k.name == "bat.tangential_restitution" && value == 0.0)
         };
         let keys: Vec<&Key> = all_keys()
             .filter(|k| !skipped.contains(&k.name) && !unscaled(k))

@@ -65,6 +65,10 @@ pub enum Field {
 /// The inputs pane's group of the swing in three dimensions.
 const SWING_3D: &str = "3-D swing";
 
+/// The inputs pane's group of the contact beyond the paper's rigid rolling
+/// (`bat.tangential_restitution`), listed last.
+const GRIP: &str = "contact";
+
 impl Field {
     /// The group it is listed under in the inputs pane.
     pub fn group(self) -> &'static str {
@@ -73,6 +77,7 @@ impl Field {
             // The swing beyond the paper's plane, on its own after the
             // paper's inputs (as docs/swing-3d.md describes it).
             Field::Key(k) if SWING_3D_KEYS.contains(&input_key(k).name) => SWING_3D,
+            Field::Key(k) if input_key(k).name == "bat.tangential_restitution" => GRIP,
             Field::Key(k) => input_key(k).name.split('.').next().unwrap_or(""),
             Field::Drag | Field::Lift => "model",
             Field::Hand => SWING_3D,

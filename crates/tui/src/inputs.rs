@@ -53,6 +53,7 @@ pub fn input_words(name: &str) -> &'static str {
         "bat.gyration_radius" | "ball.gyration_radius" => "gyration",
         "bat.tilt" => "bat tilt",
         "bat.direction" => "bat aim",
+        "bat.tangential_restitution" => "grip",
         "environment.wind" => "wind",
         "environment.wind_direction" => "wind aim",
         "environment.wind_height" => "wind base",

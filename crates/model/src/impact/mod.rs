@@ -99,6 +99,25 @@ fn normal_phase(pair_mass: f64, approach: f64) -> (f64, f64, f64) {
     (restitution, compression, compression * (1.0 + restitution))
 }
 
+/// The tangential impulse a contact that grips gives back once its slip
+/// has halted (N·s): e_T times the `halting` impulse, as a tangentially
+/// compliant ball springs back (R. Cross, "Grip-slip behavior of a bouncing
+/// ball", Am. J. Phys. 70, 1093 (2002); its tangential coefficient of
+/// restitution: the contact's slip leaves reversed, −e_T·s(0)), but no more
+/// than friction can pass over the rest of the contact, μ·(p_f − p_s) =
+/// `friction_left`. Spread evenly over p_s..p_f, the friction it needs
+/// never exceeds μ·dp. 0 without grip (e_T = 0): the paper's rolling, to
+/// the bit.
+fn release(tangential_restitution: f64, halting: f64, friction_left: f64) -> f64 {
+    if tangential_restitution > 0.0 {
+        (tangential_restitution * halting)
+            .min(friction_left)
+            .max(0.0)
+    } else {
+        0.0
+    }
+}
+
 /// A stop of the collision step by step: a phase's name and its normal
 /// impulse p.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -69,6 +69,11 @@ pub struct Impact {
     /// p_s, impulse at which slip halts (Eq. 17); infinite without friction.
     pub slip_halt_impulse: f64,
     pub regime: Regime,
+    /// The tangential impulse a gripping contact gives back after the slip
+    /// halts (N·s, ≥ 0): e_T times the one that halted it, no more than
+    /// friction allows over the rest of the contact ([`super::release`]);
+    /// 0 for the paper's rolling.
+    pub release_impulse: f64,
     /// Pre-impact states (flight frame).
     pub ball_velocity_before: Vector2<f64>,
     pub ball_spin_before: f64,
@@ -200,6 +205,16 @@ impl Impact {
             Regime::Slip
         };
 
+        let release_impulse = match regime {
+            // |p1(p_s)| = μ·p_s, the impulse that halted the slip.
+            Regime::Stick => super::release(
+                bat.tangential_restitution,
+                scene.bat.friction * slip_halt_impulse,
+                scene.bat.friction * (separation_impulse - slip_halt_impulse),
+            ),
+            Regime::Slip => 0.0,
+        };
+
         let mut impact = Impact {
             normal_angle,
             descent_angle,
@@ -213,6 +228,7 @@ impl Impact {
             separation_impulse,
             slip_halt_impulse,
             regime,
+            release_impulse,
             ball_velocity_before,
             ball_spin_before,
             bat_velocity_before,
@@ -245,12 +261,19 @@ impl Impact {
 
     /// The tangential impulse p1 on the ball when the normal impulse is p
     /// (Eq. 14 integrated; Eq. 21 at p = p_f): friction −μ·s opposes the slip
-    /// until p_s, after which the contact sticks and p1 stays put.
+    /// until p_s, after which the contact sticks and p1 stays put; a contact
+    /// that grips (e_T > 0) gives its release back evenly over p_s..p_f.
     pub fn tangential_impulse(&self, impulse: f64) -> f64 {
         if self.slip_sign() == 0.0 {
             return 0.0;
         }
-        -self.friction * self.slip_sign() * impulse.min(self.slip_halt_impulse)
+        let rolled = -self.friction * self.slip_sign() * impulse.min(self.slip_halt_impulse);
+        if self.release_impulse > 0.0 && impulse > self.slip_halt_impulse {
+            let (ps, pf) = (self.slip_halt_impulse, self.separation_impulse);
+            rolled - self.slip_sign() * self.release_impulse * ((impulse - ps) / (pf - ps)).min(1.0)
+        } else {
+            rolled
+        }
     }
 
     /// The state of both bodies at normal impulse p, 0 ≤ p ≤ p_f (Eq. 7–8, 15).

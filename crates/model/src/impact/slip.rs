@@ -117,6 +117,13 @@ impl Slip {
         (a.max(b).max(low), (a + b).min(high))
     }
 
+    /// Bounds on p_s (normal impulse), without integrating: equal where
+    /// the slip starts along n1 or n2. Only for a sliding slip.
+    pub fn halt_impulse_bounds(&self) -> (f64, f64) {
+        let (low, high) = self.halt_bounds();
+        (low * self.scale(), high * self.scale())
+    }
+
     /// p_s, the normal impulse at which the slip halts: 0 without slip,
     /// infinite without friction (Eq. 17 in the plane).
     pub fn halt_impulse(&self) -> f64 {

@@ -89,6 +89,13 @@ pub struct Impact3d {
     pub compression_impulse: f64,
     pub separation_impulse: f64,
     pub regime: Regime,
+    /// The tangential impulse (n1, n2) a gripping contact gives back after
+    /// its slip halts, along the impulse that halted it ([`super::release`]);
+    /// zero for the paper's rolling.
+    pub release: Vector2<f64>,
+    /// p_s where a release needed it exactly (friction capped it); else
+    /// worked out when a state before separation asks for it.
+    release_from: Option<f64>,
     /// Pre-impact states (flight frame); the bat's roll about n2.
     pub ball_velocity_before: Vector3<f64>,
     pub ball_spin_before: Vector3<f64>,
@@ -160,6 +167,32 @@ impl Impact3d {
         } else {
             Regime::Slip
         };
+        // The impulse that halted the slip is m·diag(β1, β_a)⁻¹·(0 − s(0)).
+        let (release, release_from) = match regime {
+            Regime::Stick
+                if initial_slip != Vector2::zeros() && bat.tangential_restitution > 0.0 =>
+            {
+                let halting = Vector2::new(
+                    -pair_mass * initial_slip.x / beta1,
+                    -pair_mass * initial_slip.y / beta_axial,
+                );
+                // Friction's room over p_s..p_f, from p_s's bounds where
+                // they show it does not bind (no integration), else exact.
+                let wanted = bat.tangential_restitution * halting.norm();
+                let room = |halt: f64| bat.friction * (separation_impulse - halt);
+                let (_, latest) = slip.halt_impulse_bounds();
+                let (left, from) = if wanted <= room(latest) {
+                    (room(latest), None)
+                } else {
+                    let halt = slip.halt_impulse();
+                    (room(halt), Some(halt))
+                };
+                let release = halting.normalize()
+                    * super::release(bat.tangential_restitution, halting.norm(), left);
+                (release, from)
+            }
+            _ => (Vector2::zeros(), None),
+        };
         let before = Contact3d {
             impulse: 0.0,
             tangential_impulse: Vector2::zeros(),
@@ -182,6 +215,8 @@ impl Impact3d {
             compression_impulse,
             separation_impulse,
             regime,
+            release,
+            release_from,
             ball_velocity_before,
             ball_spin_before,
             bat_velocity_before,
@@ -195,15 +230,36 @@ impl Impact3d {
 
     /// The state of both bodies at normal impulse p, 0 ≤ p ≤ p_f.
     pub fn at(&self, impulse: f64) -> Contact3d {
-        let slip = self.slip.at(impulse);
+        let mut slip = self.slip.at(impulse);
         // ds = m⁻¹·diag(β1, β_a)·dp_t, so the tangential impulse so far is
         // read off the slip lost (exactly 0 without friction).
         let s0 = self.initial_slip;
         let m = self.bodies.pair_mass;
-        let tangential = Vector2::new(
+        let mut tangential = Vector2::new(
             m * (slip.x - s0.x) / self.bodies.beta1,
             m * (slip.y - s0.y) / self.bodies.beta_axial,
         );
+        // A gripping contact's release, evenly over p_s..p_f: the slip
+        // springs back, to −e_T·s(0) at separation where friction allows.
+        let pf = self.separation_impulse;
+        let fraction = if self.release == Vector2::zeros() {
+            None
+        } else if impulse >= pf {
+            Some(1.0)
+        } else {
+            let ps = self
+                .release_from
+                .unwrap_or_else(|| self.slip.halt_impulse());
+            (impulse > ps).then(|| (impulse - ps) / (pf - ps))
+        };
+        if let Some(fraction) = fraction {
+            let given = self.release * fraction;
+            tangential += given;
+            slip += Vector2::new(
+                self.bodies.beta1 * given.x / m,
+                self.bodies.beta_axial * given.y / m,
+            );
+        }
         let (p1, p2) = (tangential.x, tangential.y);
         let f = &self.frame;
         let on_ball = f.to_flight(p1, p2, impulse);
