@@ -18,7 +18,7 @@ use super::kinds::Called;
 use super::launch_columns::{LAUNCH_COLUMNS, Unit};
 use super::own_launch::SwingLaunches;
 use super::read::Fields;
-use super::savant_columns::{SavantCells, SavantColumn, Setup};
+use super::savant_columns::{CONTACT_HEIGHT, ContactFrom, SavantCells, SavantColumn, Setup};
 use super::swing_columns::{RowSwing, SwingCells, SwingColumn};
 
 /// `fly --batch`'s long help: the columns read, made from
@@ -110,15 +110,6 @@ fn launch_key(index: usize) -> &'static Key {
     KEYS.get_or_init(|| LAUNCH_COLUMNS.map(|(name, _)| Scene::key(name).expect("a launch key")))
         [index]
 }
-
-/// `environment.contact_height`, which a row's `plate_z` sets.
-fn contact_height_key() -> &'static Key {
-    static KEY: std::sync::OnceLock<&'static Key> = std::sync::OnceLock::new();
-    KEY.get_or_init(|| Scene::key(CONTACT_HEIGHT).expect("the contact height's key"))
-}
-
-/// The key `plate_z` gives.
-pub(super) const CONTACT_HEIGHT: &str = "environment.contact_height";
 
 /// What one input column is.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -389,19 +380,6 @@ pub(super) struct Job {
     pub(super) called: Called,
 }
 
-/// Where a row's flight starts from.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(super) enum ContactFrom {
-    /// The preset's (or `--set`'s, or a column's) contact height.
-    #[default]
-    Given,
-    /// The pitch's height at the plate, `plate_z`.
-    Pitch,
-    /// A `plate_z` that is no height (below the ground, or not a number):
-    /// the given contact height instead.
-    PitchUnusable,
-}
-
 /// What a row turned out to be.
 pub(super) enum Row {
     /// Ready to fly: pushed onto the jobs [`parse_row`] was given.
@@ -621,21 +599,10 @@ fn read_cells(
     if let Some(direction) = savant.direction {
         scene.launch.direction = Some(direction);
     }
-    // The flight starts where the bat met the pitch: at the pitch's
-    // height over the plate, unless the contact height is given (by
-    // `--set` or a column) for every row.
-    let mut contact = ContactFrom::Given;
-    let contact_given = header.contact_height_given || setup.contact_height_given;
-    if let Some(read) = savant.plate_height.filter(|_| !contact_given) {
-        let key = contact_height_key();
-        contact = match read.filter(|&height| key.bounds.contains(height)) {
-            Some(height) => {
-                (key.set)(scene, height);
-                ContactFrom::Pitch
-            }
-            None => ContactFrom::PitchUnusable,
-        };
-    }
+    let contact = savant.start_at_pitch(
+        scene,
+        header.contact_height_given || setup.contact_height_given,
+    );
     let park = setup.park.or(savant.park);
     if let Some(index) = park {
         super::super::ground::to_park(scene, &setup.parks.parks[index], *given);

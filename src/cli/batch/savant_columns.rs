@@ -3,16 +3,18 @@
 //! park, Statcast's distance), what every row shares (the parks, the
 //! command line's choices), and the one summary line said at the end.
 
+use crate::Scene;
 use crate::analysis::savant::{DirectionFrom, Spray, spray_angle};
 use crate::cli::UsageError;
 use crate::cli::shown::Shown;
+use crate::model::keys::Key;
 use crate::model::park::{self, GivenWeather};
 use crate::model::spin_estimate::Side;
 use crate::preset::parks::Parks;
 use crate::preset::{Preset, cut, escape_cut};
 
 use super::kinds::{Called, Kind};
-use super::rows::{ContactFrom, Header, Job, measure};
+use super::rows::{Header, Job, measure};
 use super::swing_columns::SwingTally;
 use crate::units::Quantity;
 
@@ -137,7 +139,7 @@ impl<'a> Setup<'a> {
             .collect();
         setup.spin_given = keys.contains(&"launch.spin");
         setup.sidespin_given = keys.contains(&"launch.sidespin");
-        setup.contact_height_given = keys.contains(&super::rows::CONTACT_HEIGHT);
+        setup.contact_height_given = keys.contains(&CONTACT_HEIGHT);
         if let Some(code) = park {
             let named = super::super::parks::lookup(code, parks)?;
             let found = parks
@@ -177,6 +179,28 @@ impl<'a> Setup<'a> {
     pub(super) fn park_of(&self, code: &str) -> Option<usize> {
         self.parks.parks.iter().position(|p| p.answers_to(code))
     }
+}
+
+/// The key `plate_z` gives.
+pub(super) const CONTACT_HEIGHT: &str = "environment.contact_height";
+
+/// `environment.contact_height`, looked up once.
+fn contact_height_key() -> &'static Key {
+    static KEY: std::sync::OnceLock<&'static Key> = std::sync::OnceLock::new();
+    KEY.get_or_init(|| Scene::key(CONTACT_HEIGHT).expect("the contact height's key"))
+}
+
+/// Where a row's flight starts from.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(super) enum ContactFrom {
+    /// The preset's (or `--set`'s, or a column's) contact height.
+    #[default]
+    Given,
+    /// The pitch's height at the plate, `plate_z`.
+    Pitch,
+    /// A `plate_z` that is no height (below the ground, or not a number):
+    /// the given contact height instead.
+    PitchUnusable,
 }
 
 /// What a row's Savant cells say.
@@ -251,6 +275,23 @@ impl SavantCells {
             }
         }
         Ok(())
+    }
+
+    /// Starts the row's flight where the bat met the pitch: at the pitch's
+    /// height over the plate (`plate_z`), unless the contact height is
+    /// `given` (by `--set` or a column) for every row.
+    pub(super) fn start_at_pitch(&self, scene: &mut Scene, given: bool) -> ContactFrom {
+        let Some(read) = self.plate_height.filter(|_| !given) else {
+            return ContactFrom::Given;
+        };
+        let key = contact_height_key();
+        match read.filter(|&height| key.bounds.contains(height)) {
+            Some(height) => {
+                (key.set)(scene, height);
+                ContactFrom::Pitch
+            }
+            None => ContactFrom::PitchUnusable,
+        }
     }
 
     /// The spray angle (rad), if the row has both hit coordinates and they
