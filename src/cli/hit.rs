@@ -47,6 +47,10 @@ pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
             "launch_sidespin": impact.launch_sidespin(),
             "launch_gyrospin": impact.launch_gyrospin(),
         });
+        // A contact that grips: what it gave back after the slip halted.
+        if scene.bat.tangential_restitution > 0.0 {
+            impact_json["release_impulse"] = serde_json::json!(impact.release_impulse());
+        }
         if let Some(spatial) = impact.spatial() {
             impact_json["initial_slip"] = serde_json::json!({
                 "across": spatial.initial_slip.x,

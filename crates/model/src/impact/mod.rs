@@ -209,7 +209,7 @@ launches_by_its_own_methods!(Collision);
 /// A scene's collision: the paper's planar one for a level bat square to
 /// the pitch (bit for bit the paper's numbers), the 3-D one otherwise.
 // Unboxed, and so Copy: one is made per swing, in the optimiser's loop too,
-// where a box would allocate each time; 552 bytes on the stack cost less.
+// where a box would allocate each time; 584 bytes on the stack cost less.
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Collision {
@@ -284,6 +284,14 @@ impl Collision {
     /// p_s if slip halts before separation.
     pub fn stick_impulse(&self) -> Option<f64> {
         either!(self, i => i.stick_impulse())
+    }
+    /// The tangential impulse a gripping contact gives back after p_s (N·s;
+    /// 0 for the paper's rolling).
+    pub fn release_impulse(&self) -> f64 {
+        match self {
+            Collision::Planar(i) => i.release_impulse,
+            Collision::Spatial(i) => i.release.norm(),
+        }
     }
     pub fn stops(&self) -> Vec<Stop> {
         either!(self, i => i.stops())
