@@ -122,11 +122,14 @@ fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'sta
     // From p_s on the contact sticks (at p_s itself the slip's last
     // trace still has a direction, which means nothing).
     let stuck = impact.regime == Regime::Stick && cursor >= impact.slip_halt_impulse();
+    let grips = impact.release != nalgebra::Vector2::zeros();
     let now = match impact.at(cursor).slip_angle().filter(|_| !stuck) {
         Some(angle) => format!("{:.1}°", angle.to_degrees()),
+        None if grips && cursor > impact.slip_halt_impulse() => "springing back".to_owned(),
         None => "stuck".to_owned(),
     };
     let end = match impact.regime {
+        Regime::Stick if grips => Span::styled("sticks, springs back", app.theme.stick),
         Regime::Stick => Span::styled("sticks", app.theme.stick),
         Regime::Slip => Span::raw("slips to p_f"),
     };

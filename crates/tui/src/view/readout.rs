@@ -154,6 +154,8 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 "e* {:.4}  {}  θ {}{}",
                 impact.restitution(),
                 match impact.regime() {
+                    // It sticks, then springs back (bat.tangential_restitution).
+                    Regime::Stick if impact.release_impulse() > 0.0 => "grip",
                     Regime::Stick => "stick",
                     Regime::Slip => "slip",
                 },
