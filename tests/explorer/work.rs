@@ -502,3 +502,21 @@ fn b_keeps_the_range_on_every_preset() {
         assert!(same(back, range), "{name}: {range} then back {back}");
     }
 }
+
+/// The contact that grips, as a teacher turns it: a nudge of `grip e_T`
+/// spins the fastball more than rolling does, and the readout says so.
+#[test]
+fn a_nudge_of_grip_springs_the_contact_back() {
+    let mut app = app(80, 24, None);
+    let rolled = app.flown.launch.spin;
+    assert!(screen(&app).contains(" stick "), "{}", screen(&app));
+    select(&mut app, "bat.tangential_restitution");
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Char('l'));
+    }
+    assert!((app.scene.bat.tangential_restitution - 0.2).abs() < 1e-12);
+    // 0.2 of the spin the halting impulse gave (391.8 rad/s): +78.4 rad/s.
+    let gained = app.flown.launch.spin - rolled;
+    assert!((gained - 78.4).abs() < 0.1, "{gained}");
+    assert!(screen(&app).contains(" grip "), "{}", screen(&app));
+}
