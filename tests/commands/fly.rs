@@ -670,3 +670,20 @@ fn a_row_flies_from_its_pitchs_height_at_the_plate() {
         "{err}"
     );
 }
+
+/// A ball fouled back over the catcher (Trackman's direction past ±90°,
+/// 88 rows of the 2018 set) flies, and lands foul, behind the plate.
+#[test]
+fn a_ball_fouled_back_flies_and_lands_foul() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = "LAUNCH_ANGLE,EXIT_SPEED,EXIT_DIRECTION\n60.6,64.5,107.7\n4.1,59.1,162.2\n";
+    let (status, out, err) = batch(dir.path(), input, &["--json"]);
+    assert_eq!(status, Some(0), "{err}");
+    for line in out.lines() {
+        let row: Value = serde_json::from_str(line).unwrap();
+        assert_eq!(row["fence"]["outcome"], "foul", "{line}");
+        let bearing = row["flight"]["direction"].as_f64().unwrap();
+        assert!(bearing.abs() > std::f64::consts::FRAC_PI_2, "{line}");
+    }
+    assert_eq!(out.lines().count(), 2);
+}

@@ -411,8 +411,8 @@ pub const LAUNCH_KEYS: &[Key] = &[
         "φ",
         "rad",
         "launch direction: 0 centre field, positive toward right field (fair within ±π/4)",
-        Bounds::open(-FRAC_PI_2, FRAC_PI_2),
-        "Open at ±π/2, as the angle: a ball leaving square to the centre-field line or behind it is a foul tip, not a batted ball to carry; fair territory is ±π/4.",
+        Bounds::closed(-PI, PI),
+        "Any way round: fair territory is ±π/4, and a ball fouled back over the catcher (|φ| > π/2, as Trackman measures some) still flies; ±π is straight back.",
         0.01,
         launch(direction)
     ),
