@@ -14,7 +14,8 @@
 //!
 //! The uncertainty is the median's own: its standard error, 1.2533·σ/√n
 //! with σ = 1.4826·(median absolute deviation) (both exact for normal
-//! errors), carried to the factors through the slopes of the medians.
+//! errors), carried to the factors through the slopes of the medians
+//! (each the mean rate of the rows about its median, [`median_slope`]).
 
 mod bands;
 
@@ -258,6 +259,28 @@ pub fn median(mut values: Vec<f64>) -> f64 {
     }
 }
 
+/// How fast the median of `base` moves as each row moves to `moved` over a
+/// step `h` of a factor: the mean rate of the rows in the middle fifth of
+/// `base` (the median follows the rows about it). The difference of the two
+/// medians would be the rate of the one row that happens to be the median,
+/// which a row more or less changes by tens of per cent. Rows paired by
+/// index; if a row lands at one factor and not the other, the medians'
+/// difference.
+fn median_slope(base: &[f64], moved: &[f64], h: f64) -> f64 {
+    if base.len() != moved.len() || base.is_empty() {
+        return (median(moved.to_vec()) - median(base.to_vec())) / h;
+    }
+    let mut order: Vec<usize> = (0..base.len()).collect();
+    order.sort_by(|&a, &b| base[a].total_cmp(&base[b]));
+    let n = order.len();
+    let middle = &order[2 * n / 5..(3 * n).div_ceil(5).max(2 * n / 5 + 1)];
+    middle
+        .iter()
+        .map(|&i| (moved[i] - base[i]) / h)
+        .sum::<f64>()
+        / middle.len() as f64
+}
+
 /// Fits `model.drag_scale` to the distances, and with `lift`
 /// `model.lift_scale` too: from the hang times where at least a third of
 /// the rows measure them (else the apexes), else from the distances by
@@ -361,18 +384,18 @@ pub fn fit(rows: &[Measured], options: &FlightOptions, lift: bool) -> Result<Fit
     let second_after = second.map(|_| Errors::of(&second_after));
     // How the medians move with the factors, at the fit.
     let h = 1e-3;
+    let (base, base_second) = at((drag, lift));
     let (moved, moved_second) = at((drag + h, lift));
-    let distance_per_drag = (median(moved) - after.median) / h;
+    let distance_per_drag = median_slope(&base, &moved, h);
     let mut correlation = None;
     let (drag_scale, lift_scale) = match (second, second_after) {
         (Some(_), Some(second_after)) => {
             let (lifted, lifted_second) = at((drag, lift + h));
-            let second_median = second_after.median;
             let j = [
-                [distance_per_drag, (median(lifted) - after.median) / h],
+                [distance_per_drag, median_slope(&base, &lifted, h)],
                 [
-                    (median(moved_second) - second_median) / h,
-                    (median(lifted_second) - second_median) / h,
+                    median_slope(&base_second, &moved_second, h),
+                    median_slope(&base_second, &lifted_second, h),
                 ],
             ];
             let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
@@ -455,6 +478,27 @@ mod tests {
                 }
             })
             .collect()
+    }
+
+    #[test]
+    fn the_medians_slope_is_its_neighbours_not_one_rows() {
+        // 101 rows each moving at rate 1 but the median row, at 50: the
+        // median's own difference follows that one row, the slope the rows
+        // about it (the middle fifth, rows 40 to 60: (20 + 50)/21).
+        let h = 1e-3;
+        let base: Vec<f64> = (0..101).map(f64::from).collect();
+        let moved: Vec<f64> = (0..101)
+            .map(|i| f64::from(i) + h * if i == 50 { 50.0 } else { 1.0 })
+            .collect();
+        let one_row = (median(moved.clone()) - median(base.clone())) / h;
+        assert!((one_row - 50.0).abs() < 1e-6, "{one_row}");
+        let slope = median_slope(&base, &moved, h);
+        assert!((slope - 70.0 / 21.0).abs() < 1e-6, "{slope}");
+        // Rows lost between the two: the medians' difference.
+        assert_eq!(
+            median_slope(&base, &moved[1..], h),
+            (median(moved[1..].to_vec()) - 50.0) / h
+        );
     }
 
     #[test]
