@@ -9,36 +9,19 @@
 //! (2012): "the scattered spin is nearly independent of the incident
 //! spin").
 
-use crate::common;
+use crate::impact3d;
 
 use homerun::Scene;
 use homerun::model::impact::{Impact, Impact3d, Regime};
-use homerun::model::scene::Hand;
 use proptest::prelude::*;
 
+/// The 3-D impact's random scenes (tests/physics/impact3d.rs), each with a
+/// grip drawn from 0 to 1.
 fn scenes() -> impl Strategy<Value = Scene> {
-    (
-        (-1.0..1.0f64, -1.0..1.0f64, any::<bool>()),
-        (-0.0715..0.0715f64, -0.5..0.8f64, 0.05..1.0f64),
-        (15.0..60.0f64, -600.0..600.0f64, 10.0..50.0f64),
-        0.0..=1.0f64,
-    )
-        .prop_map(
-            |((tilt, direction, left), swing, (pitch_speed, pitch_spin, bat_speed), grip)| {
-                let mut s = common::impact_scene(
-                    (pitch_speed, pitch_spin),
-                    (bat_speed, 0.0),
-                    swing,
-                    (0.8, 0.145),
-                );
-                s.bat.tilt = tilt;
-                s.bat.direction = direction;
-                s.bat.hand = if left { Hand::Left } else { Hand::Right };
-                s.bat.tangential_restitution = grip;
-                s
-            },
-        )
-        .prop_filter("valid", |s| s.validate().is_ok())
+    (impact3d::scenes(), 0.0..=1.0f64).prop_map(|(mut scene, grip)| {
+        scene.bat.tangential_restitution = grip;
+        scene
+    })
 }
 
 proptest! {

@@ -286,7 +286,7 @@ fn range_of(name: &str) -> std::ops::RangeInclusive<f64> {
     min..=key.bounds.max
 }
 
-fn scenes() -> impl Strategy<Value = Scene> {
+pub(crate) fn scenes() -> impl Strategy<Value = Scene> {
     (
         (
             range_of("bat.tilt"),

@@ -10,7 +10,7 @@ use serde::Serialize;
 use crate::cli::shown::Shown;
 use crate::units::Quantity;
 
-use super::output::median;
+use super::output::medians;
 
 /// A batted ball's kind, as Savant's `bb_type` names it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -76,8 +76,8 @@ pub(super) struct KindTally {
 pub(super) struct KindRow {
     kind: &'static str,
     rows: usize,
-    median: Option<f64>,
-    median_abs: Option<f64>,
+    median: f64,
+    median_abs: f64,
 }
 
 impl KindTally {
@@ -121,13 +121,12 @@ impl KindTally {
         (ROWS.iter().zip(&self.differences))
             .filter(|(_, d)| !d.is_empty())
             .map(|(kind, differences)| {
-                let mut signed = differences.clone();
-                let mut absolute: Vec<f64> = signed.iter().map(|d| d.abs()).collect();
+                let (median, median_abs) = medians(&mut differences.clone());
                 KindRow {
                     kind,
-                    rows: signed.len(),
-                    median: Some(median(&mut signed)),
-                    median_abs: Some(median(&mut absolute)),
+                    rows: differences.len(),
+                    median,
+                    median_abs,
                 }
             })
             .collect()
@@ -153,14 +152,13 @@ impl KindTally {
             )
         };
         for row in rows {
-            let show = |m: Option<f64>| m.map_or(0.0, |m| unit.show(m));
             let _ = writeln!(
                 table,
                 "{:<13} {:>7} {:>+8.1} {:>10.1}",
                 row.kind,
                 row.rows,
-                show(row.median),
-                show(row.median_abs)
+                unit.show(row.median),
+                unit.show(row.median_abs)
             );
         }
         if let Some((clear, of)) = self.home_runs_clearing() {
@@ -209,7 +207,7 @@ mod tests {
         assert_eq!(kinds, ["line drives", "fly balls", "home runs"]);
         assert_eq!(
             (rows[0].rows, rows[0].median, rows[0].median_abs),
-            (2, Some(-1.0), Some(3.0))
+            (2, -1.0, 3.0)
         );
         assert_eq!(tally.home_runs_clearing(), Some((1, 2)));
         // Without distances, only the verdict.

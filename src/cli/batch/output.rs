@@ -456,9 +456,8 @@ impl Tally {
         );
         if !self.differences.is_empty() {
             let mut signed: Vec<f64> = self.differences.iter().map(|d| d.1).collect();
-            let mut absolute: Vec<f64> = signed.iter().map(|d| d.abs()).collect();
             let unit = shown.unit(Quantity::Distance);
-            let (median, typical) = (median(&mut signed), median(&mut absolute));
+            let (median, typical) = medians(&mut signed);
             let _ = write!(
                 line,
                 "; against hit_distance_sc ({} rows): median difference {:+.1} {}, median |difference| {:.1} {}",
@@ -484,14 +483,13 @@ impl Tally {
                     .filter(|(angle, _)| in_band(*angle))
                     .map(|d| d.1)
                     .collect();
-                let mut absolute: Vec<f64> = signed.iter().map(|d| d.abs()).collect();
-                let any = !signed.is_empty();
+                let both = (!signed.is_empty()).then(|| medians(&mut signed));
                 Band {
                     from: band.checked_sub(1).map(|k| BAND_EDGES[k]),
                     to: BAND_EDGES.get(band).copied(),
                     rows: signed.len(),
-                    median: any.then(|| median(&mut signed)),
-                    median_abs: any.then(|| median(&mut absolute)),
+                    median: both.map(|m| m.0),
+                    median_abs: both.map(|m| m.1),
                 }
             })
             .collect()
@@ -530,8 +528,15 @@ impl Tally {
     }
 }
 
+/// The median of `differences` (not empty) and the median of their sizes,
+/// sorting them.
+pub(super) fn medians(differences: &mut [f64]) -> (f64, f64) {
+    let mut sizes: Vec<f64> = differences.iter().map(|d| d.abs()).collect();
+    (median(differences), median(&mut sizes))
+}
+
 /// The median of `values` (not empty), sorting them.
-pub(super) fn median(values: &mut [f64]) -> f64 {
+fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
     let n = values.len();
     if n % 2 == 1 {

@@ -209,8 +209,8 @@ impl Impact {
             // |p1(p_s)| = μ·p_s, the impulse that halted the slip.
             Regime::Stick => super::release(
                 bat.tangential_restitution,
-                scene.bat.friction * slip_halt_impulse,
-                scene.bat.friction * (separation_impulse - slip_halt_impulse),
+                bat.friction * slip_halt_impulse,
+                bat.friction * (separation_impulse - slip_halt_impulse),
             ),
             Regime::Slip => 0.0,
         };
