@@ -222,8 +222,9 @@ pub enum Command {
         #[arg(long)]
         json: bool,
         /// Fit the impact instead: the bat's effective mass (bat.effective_mass) for
-        /// which the model's most q = (EV - V_bat)/(V_pitch + V_bat) at the 99th
-        /// percentile of the file's tracked swings is the data's (docs/bat-tracking.md).
+        /// which only 1 % of the file's tracked swings beat the model's most
+        /// q = (EV - V_bat)/(V_pitch + V_bat) at their own pitch and bat speed; then
+        /// the two compared by approach speed (docs/bat-tracking.md).
         #[arg(long, conflicts_with = "by")]
         impact: bool,
     },

@@ -127,7 +127,10 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
             Some(by) => {
                 batch::calibrate::run_by(setup, file, by, !drag_only, *json, Shown(cli.units))?
             }
-            None if *impact => batch::calibrate_impact::run(&setup, file, save, *json)?,
+            None if *impact => {
+                let shown = Shown(cli.units);
+                batch::calibrate_impact::run(&setup, file, save, *json, shown)?
+            }
             None => {
                 let shown = Shown(cli.units);
                 batch::calibrate::run(&setup, file, save, !drag_only, *json, shown)?

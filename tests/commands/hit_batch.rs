@@ -363,6 +363,20 @@ fn calibrating_the_impact_fits_the_bat_s_effective_mass() {
     assert_eq!(fit["above_after"].as_f64().unwrap(), 0.0);
     let mass = fit["effective_mass"].as_f64().unwrap();
     assert!((mass - 0.9457).abs() < 1e-3, "{mass}");
+    // By approach speed: five groups of seven rows, slowest first, each
+    // ceiling raised by the heavier bat, and Eq. (19)'s e* lowering the
+    // ceiling from the slowest group to the fastest.
+    let bands = fit["by_approach"].as_array().unwrap();
+    assert_eq!(bands.len(), 5);
+    let number = |band: &Value, key: &str| band[key].as_f64().unwrap();
+    for band in bands {
+        assert_eq!(band["rows"], 7, "{band}");
+        assert!(number(band, "ceiling_after") > number(band, "ceiling_before") + 0.02);
+    }
+    for pair in bands.windows(2) {
+        assert!(number(&pair[0], "fastest") <= number(&pair[1], "slowest"));
+    }
+    assert!(number(&bands[0], "ceiling_after") > number(&bands[4], "ceiling_after") + 0.015);
     // Saved, the preset carries it.
     let presets = tempfile::tempdir().unwrap();
     let dir = presets.path().to_str().unwrap();

@@ -682,6 +682,9 @@ mod search;
 #[cfg(test)]
 mod tests;
 
-pub use ceiling::{EFFECTIVE_MASSES, ImpactFit, ceiling_efficiency, fit_effective_mass, quantile};
+pub use ceiling::{
+    APPROACH_BANDS, ApproachBand, EFFECTIVE_MASSES, ImpactFit, ceiling_efficiency,
+    fit_effective_mass, quantile,
+};
 pub use landing::solve_landing;
 use search::{defined_toward, golden_max, illinois};

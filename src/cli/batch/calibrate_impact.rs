@@ -12,7 +12,9 @@ use super::rows::{Header, Row, parse_row};
 use super::savant_columns::Setup;
 use crate::analysis::bat_tracking::{self, ImpactFit, TrackedSwing};
 use crate::cli::UsageError;
+use crate::cli::shown::Shown;
 use crate::preset::escape_cut;
+use crate::units::Quantity;
 
 /// The quantile of q matched.
 const QUANTILE: f64 = 0.99;
@@ -23,6 +25,7 @@ pub(in crate::cli) fn run(
     source: &str,
     save: Option<Save>,
     json: bool,
+    shown: Shown,
 ) -> Result<String, UsageError> {
     let swings = read_source(source, save.as_ref(), |input| read(setup, input))?;
     let base = &setup.base.scene;
@@ -55,10 +58,10 @@ pub(in crate::cli) fn run(
         }
         return Ok(super::super::pretty(&value));
     }
-    Ok(text(&fit, saved.as_deref()))
+    Ok(text(&fit, saved.as_deref(), shown))
 }
 
-fn text(fit: &ImpactFit, saved: Option<&std::path::Path>) -> String {
+fn text(fit: &ImpactFit, saved: Option<&std::path::Path>, shown: Shown) -> String {
     let percent = |share: f64| share * 100.0;
     let mut text = format!(
         "{} tracked swings; q = (EV - V_bat)/(V_pitch + V_bat), {:.0}th percentile {:.4} (data)\n\
@@ -77,6 +80,30 @@ fn text(fit: &ImpactFit, saved: Option<&std::path::Path>) -> String {
         percent(fit.quantile),
         fit.ceiling_after,
     );
+    text += &format!(
+        "by approach speed (V_pitch + V_bat), the data's q at its {:.0}th percentile against the\n\
+         model's median ceiling, each in a fifth of the rows:\n\
+         {:>20}  {:>6}  {:>6}  {:>10}  {:>10}  {:>7}\n",
+        percent(fit.quantile),
+        shown.head("approach", Quantity::Speed, "m/s"),
+        "rows",
+        "data",
+        format!("{:.4} kg", fit.effective_mass_before),
+        format!("{:.4} kg", fit.effective_mass),
+        "above",
+    );
+    for band in fit.by_approach.iter().filter(|band| band.rows > 0) {
+        let speed = |si: f64| format!("{:.1}", shown.convert(Quantity::Speed, si));
+        text += &format!(
+            "{:>20}  {:>6}  {:>6.4}  {:>10.4}  {:>10.4}  {:>5.1} %\n",
+            format!("{} to {}", speed(band.slowest), speed(band.fastest)),
+            band.rows,
+            band.data,
+            band.ceiling_before,
+            band.ceiling_after,
+            percent(band.above_after),
+        );
+    }
     if let Some(path) = saved {
         text += &format!("saved {}\n", path.display());
     }

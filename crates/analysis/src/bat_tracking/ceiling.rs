@@ -49,6 +49,72 @@ pub struct ImpactFit {
     pub effective_mass: f64,
     pub ceiling_after: f64,
     pub above_after: f64,
+    /// The same, row by row, in five groups of rows by approach speed.
+    pub by_approach: [ApproachBand; APPROACH_BANDS],
+}
+
+/// How many groups of rows by approach speed [`ImpactFit`] compares.
+pub const APPROACH_BANDS: usize = 5;
+
+/// One group of rows by approach speed, V_pitch + V_bat at the plate:
+/// Eq. (19)'s e*, so the model's ceiling, falls as it rises. Within a group
+/// the ceiling is nearly one number, so its median against the data's q at
+/// the quantile says whether the model's ceiling is the measured one at
+/// that speed; over all rows the two quantiles mix different speeds
+/// (docs/bat-tracking.md).
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct ApproachBand {
+    /// The group's approach speeds (m/s), from its slowest row to its
+    /// fastest, and its rows.
+    pub slowest: f64,
+    pub fastest: f64,
+    pub rows: usize,
+    /// The data's q at the quantile, in the group.
+    pub data: f64,
+    /// The median ceiling in the group with the scene's M_B and with the
+    /// fitted one, and the group's share of rows above their fitted
+    /// ceiling.
+    pub ceiling_before: f64,
+    pub ceiling_after: f64,
+    pub above_after: f64,
+}
+
+/// The rows' approach speeds cut into [`APPROACH_BANDS`] groups of as many
+/// rows (the last takes the remainder), each compared as [`ApproachBand`]
+/// says.
+fn by_approach(
+    swings: &[TrackedSwing],
+    (data, before, after): (&[f64], &[f64], &[f64]),
+    at: f64,
+) -> [ApproachBand; APPROACH_BANDS] {
+    let approach = |k: usize| swings[k].pitch.speed() + swings[k].bat_speed;
+    let mut order: Vec<usize> = (0..swings.len()).collect();
+    order.sort_by(|&a, &b| approach(a).total_cmp(&approach(b)));
+    let mut bands = [ApproachBand::default(); APPROACH_BANDS];
+    let size = swings.len() / APPROACH_BANDS;
+    for (band, slot) in bands.iter_mut().enumerate() {
+        let end = if band + 1 == APPROACH_BANDS {
+            swings.len()
+        } else {
+            (band + 1) * size
+        };
+        let rows = &order[band * size..end];
+        if rows.is_empty() {
+            continue;
+        }
+        let pick = |values: &[f64]| rows.iter().map(|&k| values[k]).collect::<Vec<_>>();
+        let above = rows.iter().filter(|&&k| data[k] > after[k]).count();
+        *slot = ApproachBand {
+            slowest: approach(rows[0]),
+            fastest: approach(rows[rows.len() - 1]),
+            rows: rows.len(),
+            data: quantile(&pick(data), at),
+            ceiling_before: quantile(&pick(before), 0.5),
+            ceiling_after: quantile(&pick(after), 0.5),
+            above_after: above as f64 / rows.len() as f64,
+        };
+    }
+    bands
 }
 
 /// The range of M_B searched (kg).
@@ -99,5 +165,6 @@ pub fn fit_effective_mass(base: &Scene, swings: &[TrackedSwing], at: f64) -> Opt
         effective_mass,
         ceiling_after: quantile(&after, at),
         above_after: above(&after),
+        by_approach: by_approach(swings, (&data, &before, &after), at),
     })
 }

@@ -165,6 +165,47 @@ fn the_fitted_mass_leaves_one_row_in_a_hundred_above_its_ceiling() {
     );
 }
 
+/// Rows at five bat speeds, each group's fastest ball exactly at its
+/// ceiling with a 0.9 kg bat: the fit finds that bat, and then in each group
+/// by approach speed the median ceiling is the group's 99th percentile of
+/// q, though the ceilings fall by Eq. (19)'s e* from group to group.
+#[test]
+fn by_approach_speed_the_fitted_ceiling_is_each_group_s_top() {
+    let mut heavy = Scene::default();
+    heavy.bat.effective_mass = 0.9;
+    let swings: Vec<TrackedSwing> = [24.0, 27.0, 30.0, 33.0, 36.0]
+        .into_iter()
+        .flat_map(|bat_speed| {
+            let (mut swing, _) = measured(0.0, 0.1, 0.0, Hand::Right);
+            swing.bat_speed = bat_speed;
+            let top = ceiling_efficiency(&heavy, &swing);
+            (0..100).map(move |k| {
+                let q = top - 0.1 * k as f64 / 99.0;
+                TrackedSwing {
+                    launch_speed: q * (swing.pitch.speed() + bat_speed) + bat_speed,
+                    ..swing
+                }
+            })
+        })
+        .collect();
+    let fit = fit_effective_mass(&Scene::default(), &swings, 0.99).unwrap();
+    assert!((fit.effective_mass - 0.9).abs() < 0.01, "{fit:?}");
+    let bands = fit.by_approach;
+    assert_eq!(bands.iter().map(|b| b.rows).sum::<usize>(), 500);
+    for band in bands {
+        assert_eq!(band.rows, 100, "{band:?}");
+        assert!((band.ceiling_after - band.data).abs() < 0.002, "{band:?}");
+        assert!(band.ceiling_before < band.data - 0.01, "{band:?}");
+    }
+    for pair in bands.windows(2) {
+        assert!(pair[0].fastest < pair[1].slowest, "{pair:?}");
+        assert!(
+            pair[1].ceiling_after < pair[0].ceiling_after - 0.004,
+            "{pair:?}"
+        );
+    }
+}
+
 /// A ball slower than the prior swing angle gives at the sweet spot is
 /// solved off the sweet spot: a swing at 60 % of the tracked bat speed
 /// (a contact toward the hands) is found again at the prior swing angle,
