@@ -218,6 +218,15 @@ pub enum Command {
         /// Fit the drag alone (model.drag_scale), the lift left as it is.
         #[arg(long, conflicts_with = "impact")]
         drag_only: bool,
+        /// Where each row's spin comes from (as `fly --batch --spin`): the
+        /// flights fitted are the ones that command flies.
+        #[arg(
+            long,
+            value_name = "FROM",
+            default_value = "nathan",
+            conflicts_with = "impact"
+        )]
+        spin: SpinArg,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,

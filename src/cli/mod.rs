@@ -110,6 +110,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         drag_only,
         json,
         impact,
+        spin,
     } = command
     {
         let dir = checked_presets_dir(cli)?;
@@ -118,6 +119,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
         let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
         setup.spray = (*spray).into();
+        setup.solve_swings = *spin == args::SpinArg::Swing;
         let save = save.as_deref().map(|name| batch::calibrate::Save {
             name,
             dir: dir.as_deref(),

@@ -244,3 +244,58 @@ fn a_trackman_file_with_hang_times_fits_drag_and_lift() {
         72.895 * 0.3048
     );
 }
+
+/// `calibrate --spin swing` fits the flights `fly --batch --spin swing`
+/// flies: each row with a solved swing launched by its impact, the others by
+/// Nathan's relation. On the committed bat-tracking sample its count of
+/// rows from the swing and its error before the fit are those of `fly`'s
+/// rows in the air (10° and up, with a distance, landing on the spray).
+#[test]
+fn calibrating_with_the_swing_s_spin_fits_the_flights_fly_gives() {
+    let dir = tempfile::tempdir().unwrap();
+    let sample = "tests/data/savant_swings.csv";
+    let (status, out, err) = homerun(
+        dir.path(),
+        &["calibrate", sample, "--spin", "swing", "--json"],
+    );
+    assert_eq!(status, Some(0), "{err}");
+    let calibrated: Value = serde_json::from_str(&out).unwrap();
+    let (status, out, err) = homerun(
+        dir.path(),
+        &["fly", "--batch", sample, "--spin", "swing", "--json"],
+    );
+    assert_eq!(status, Some(0), "{err}");
+    let rows: Vec<Value> = out
+        .lines()
+        .map(|l| serde_json::from_str::<Value>(l).unwrap())
+        .filter(|r| r["launch"]["angle"].as_f64().unwrap() >= 10f64.to_radians())
+        .filter(|r| r["statcast"]["difference"].is_number())
+        // A ball fielded where no flight of its comes down is no flight's
+        // length: left out of a fit.
+        .filter(|r| r["direction_from"] != "spray_unsolved")
+        .collect();
+    let from_swing = rows.iter().filter(|r| r["spin_estimated"] == false).count();
+    assert_eq!(calibrated["measured"], rows.len());
+    assert_eq!(calibrated["spin_from_swing"], from_swing);
+    assert!(from_swing > 10 && from_swing < rows.len(), "{from_swing}");
+    let mut errors: Vec<f64> = (rows.iter())
+        .map(|r| r["statcast"]["difference"].as_f64().unwrap())
+        .collect();
+    errors.sort_by(f64::total_cmp);
+    let n = errors.len();
+    let median = if n % 2 == 1 {
+        errors[n / 2]
+    } else {
+        0.5 * (errors[n / 2 - 1] + errors[n / 2])
+    };
+    let before = calibrated["fit"]["before"]["median"].as_f64().unwrap();
+    assert!((before - median).abs() < 1e-3, "{before} {median}");
+    // Nathan's relation on the same file fits other flights.
+    let (_, out, _) = homerun(dir.path(), &["calibrate", sample, "--json"]);
+    let nathan: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(nathan["spin_from_swing"], Value::Null);
+    assert_ne!(
+        nathan["fit"]["before"]["median"],
+        calibrated["fit"]["before"]["median"]
+    );
+}

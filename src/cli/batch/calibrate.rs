@@ -27,6 +27,9 @@ struct Read {
     measured: Vec<Measured>,
     /// Each measured row's group (`--by`'s cell; empty without `--by`).
     groups: Vec<String>,
+    /// With `--spin swing`: the measured rows launched by their solved
+    /// swing's impact (the others by Nathan's relation).
+    spin_from_swing: Option<usize>,
     rows: usize,
     without_distance: usize,
     /// Rows launched below [`LOWEST_FLIGHT`]: a grounder's distance is
@@ -91,10 +94,15 @@ pub(in crate::cli) fn run(
         )
     });
     let description = format!(
-        "{}, calibrated on {} ({} rows): model.drag_scale = {:.4} ± {:.4}{}",
+        "{}, calibrated on {} ({} rows{}): model.drag_scale = {:.4} ± {:.4}{}",
         setup.base.name,
         escape_cut(source, 80),
         fit.after.rows,
+        if setup.solve_swings {
+            ", each with its solved swing's spin"
+        } else {
+            ""
+        },
         fit.drag_scale.value,
         fit.drag_scale.uncertainty,
         fit.lift_scale.map_or(String::new(), |l| format!(
@@ -117,6 +125,7 @@ pub(in crate::cli) fn run(
             "implausible": read.implausible,
             "without_spray": read.without_spray,
             "skipped": read.skipped,
+            "spin_from_swing": read.spin_from_swing,
             "fit": fit,
             "at_bound": fit.at_bounds().iter().map(|b| b.0).collect::<Vec<_>>(),
         });
@@ -281,8 +290,13 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
         None => return Err("the input is empty".to_owned()),
     };
     header.keep(&setup.keep)?;
+    if setup.solve_swings {
+        header
+            .read_swings()
+            .map_err(|e| format!("line 1 (the header): {e}"))?;
+    }
     let (mut skipped, mut rows) = (0, 0);
-    let jobs = super::parse_all(&mut records, &header, setup, |row| match row {
+    let mut jobs = super::parse_all(&mut records, &header, setup, |row| match row {
         None => skipped += 1,
         Some(Row::Job) => rows += 1,
         Some(Row::Bad { .. } | Row::NoLaunch) => {
@@ -302,20 +316,32 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
     let without_spray = (jobs.iter())
         .filter(|j| sprayed && j.statcast.is_some() && j.launch.spray.is_none() && flies(j))
         .count();
-    let wanted: Vec<&Job> = jobs
-        .iter()
-        .filter(|job| (!sprayed || job.launch.spray.is_some()) && job.statcast.is_some())
-        .filter(flies)
-        .filter(|job| match plausible(job) {
-            Ok(()) => true,
-            Err(why) => {
-                implausible += 1;
-                if implausible <= NAMED_IMPLAUSIBLE {
-                    eprintln!("line {}: {why}; skipped", job.line);
+    let wanted: Vec<bool> = (jobs.iter())
+        .map(|job| {
+            let fit = (!sprayed || job.launch.spray.is_some()) && job.statcast.is_some();
+            fit && flies(&job)
+                && match plausible(job) {
+                    Ok(()) => true,
+                    Err(why) => {
+                        implausible += 1;
+                        if implausible <= NAMED_IMPLAUSIBLE {
+                            eprintln!("line {}: {why}; skipped", job.line);
+                        }
+                        false
+                    }
                 }
-                false
-            }
         })
+        .collect();
+    // `--spin swing`: a row with a solved swing is launched as its impact
+    // sends the ball (the spin, and the direction that lands on the spray),
+    // as `fly --batch --spin swing` launches it; the others as above.
+    if setup.solve_swings {
+        (jobs.par_iter_mut().zip(&wanted))
+            .filter(|(_, wanted)| **wanted)
+            .for_each(|(job, _)| super::swing_columns::solve_row(job, setup.spray));
+    }
+    let wanted: Vec<&Job> = (jobs.iter().zip(wanted))
+        .filter_map(|(job, wanted)| wanted.then_some(job))
         .collect();
     if implausible > NAMED_IMPLAUSIBLE {
         eprintln!(
@@ -323,7 +349,7 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
             implausible - NAMED_IMPLAUSIBLE
         );
     }
-    let launched: Vec<Option<(Measured, String)>> = wanted
+    let launched: Vec<Option<(Measured, String, bool)>> = wanted
         .par_chunks(PIECE_ROWS)
         .flat_map_iter(|piece| {
             let rows = piece.iter().map(|job| (&job.scene, &job.launch));
@@ -331,7 +357,11 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
             piece.iter().zip(launched).map(|(job, launched)| {
                 // A ball fielded where no flight comes down says nothing
                 // of the flight's length.
-                if launched.direction_from == savant::DirectionFrom::SprayUnsolved {
+                let swing = job.swing.as_ref().filter(|s| s.solved().is_some());
+                let from = swing.map_or(launched.direction_from, |s| {
+                    s.direction_from.unwrap_or(launched.direction_from)
+                });
+                if from == savant::DirectionFrom::SprayUnsolved {
                     return None;
                 }
                 launched.scene.validate().ok()?;
@@ -341,17 +371,23 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
                     hang_time: job.hang_time,
                     apex: job.apex,
                 };
-                Some((measured, job.kept.first().cloned().unwrap_or_default()))
+                let group = job.kept.first().cloned().unwrap_or_default();
+                Some((measured, group, swing.is_some()))
             })
         })
         .collect();
     let without_distance = jobs.iter().filter(|j| j.statcast.is_none()).count();
-    let (measured, groups): (Vec<Measured>, Vec<String>) = launched.into_iter().flatten().unzip();
+    let launched: Vec<_> = launched.into_iter().flatten().collect();
+    let spin_from_swing =
+        (setup.solve_swings).then(|| launched.iter().filter(|(_, _, swing)| *swing).count());
+    let (measured, groups): (Vec<Measured>, Vec<String>) =
+        launched.into_iter().map(|(m, g, _)| (m, g)).unzip();
     skipped +=
         jobs.len() - without_distance - grounders - without_spray - implausible - measured.len();
     Ok(Read {
         measured,
         groups,
+        spin_from_swing,
         rows,
         without_distance,
         grounders,
@@ -415,24 +451,31 @@ fn text(
         )
     };
     let seconds = |s: f64| format!("{s:.2} s");
-    let mut lines = vec![
-        (
-            "rows",
-            format!(
-                "{} of {} read: {} without a distance, {} launched below 10° (a grounder's distance is where it was fielded), {} without hit coordinates, {}{} skipped",
-                read.measured.len(),
-                read.rows,
-                read.without_distance,
-                read.grounders,
-                read.without_spray,
-                if read.implausible > 0 {
-                    format!("{} outside the plausible ranges, ", read.implausible)
-                } else {
-                    String::new()
-                },
-                read.skipped
-            ),
+    let mut lines = vec![(
+        "rows",
+        format!(
+            "{} of {} read: {} without a distance, {} launched below 10° (a grounder's distance is where it was fielded), {} without hit coordinates, {}{} skipped",
+            read.measured.len(),
+            read.rows,
+            read.without_distance,
+            read.grounders,
+            read.without_spray,
+            if read.implausible > 0 {
+                format!("{} outside the plausible ranges, ", read.implausible)
+            } else {
+                String::new()
+            },
+            read.skipped
         ),
+    )];
+    if let Some(from_swing) = read.spin_from_swing {
+        let spin = format!(
+            "the swing's impact on {from_swing} rows (solved from bat tracking), Nathan's relation on {}",
+            read.measured.len() - from_swing
+        );
+        lines.push(("spin", spin));
+    }
+    lines.extend([
         (
             "drag",
             format!(
@@ -459,7 +502,7 @@ fn text(
         ),
         ("before", format!("distance {}", errors(&fit.before, &d))),
         ("after", format!("distance {}", errors(&fit.after, &d))),
-    ];
+    ]);
     if let Some(bands) = &fit.bands {
         let signed = |m: f64| format!("{}{}", if m >= 0.0 { "+" } else { "-" }, d(m.abs()));
         let with_rows = bands.lower_edges.iter().enumerate();
