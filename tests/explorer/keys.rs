@@ -523,6 +523,12 @@ fn a_savant_files_swings_open_first_in_the_picker() {
     let names: Vec<&str> = items.iter().map(|i| i.name.as_str()).collect();
     assert_eq!(names[..3], ["Turang 04-03", "Correa 04-03", "fastball"]);
     assert!(items[0].detail.starts_with("line 4, 2024-04-03"));
+    // Its title says what it offers.
+    assert!(
+        screen(&app).contains(" Open a swing (2) or a preset (/ finds) "),
+        "{}",
+        screen(&app)
+    );
     key(&mut app, KeyCode::Enter);
     assert!(matches!(app.mode, Mode::Normal));
     assert_eq!(app.preset_name, "Turang 04-03");
@@ -539,6 +545,8 @@ fn a_savant_files_swings_open_first_in_the_picker() {
     let mut plain = crate::tui_support::app(80, 24, None);
     plain.offer_swings(Vec::new());
     assert!(matches!(plain.mode, Mode::Normal));
+    key(&mut plain, KeyCode::Char('o'));
+    assert!(screen(&plain).contains(" Open preset (/ finds) "));
 }
 
 /// `/` in the picker finds: each word typed must be in an item's name or

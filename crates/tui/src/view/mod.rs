@@ -109,6 +109,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
             frame,
             (area, &app.theme),
             (items, find.as_ref().map(|f| f.text.as_str())),
+            app.swings.len(),
             *selected,
             error.as_deref(),
         ),

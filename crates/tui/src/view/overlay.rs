@@ -81,6 +81,7 @@ pub fn open(
     frame: &mut Frame,
     (area, theme): (Rect, &Theme),
     (items, find): (&[PickItem], Option<&str>),
+    swings: usize,
     selected: usize,
     error: Option<&str>,
 ) {
@@ -93,6 +94,8 @@ pub fn open(
             escape_text(find),
             items.len()
         ),
+        // `tui --savant`: the file's swings come first, then the presets.
+        None if swings > 0 => format!(" Open a swing ({swings}) or a preset (/ finds) "),
         None => " Open preset (/ finds) ".to_owned(),
     };
     let block = Block::bordered().title(Span::styled(title, theme.title));
