@@ -445,3 +445,88 @@ fn the_swings_line_speaks_the_units_asked_for() {
         "{imperial}"
     );
 }
+
+/// `hit --batch --summary`: the swings by measured launch angle, each
+/// band's counts and medians those of its rows (below 10°, then
+/// `calibrate`'s bands), and the undercut rising with the launch angle as
+/// docs/bat-tracking.md finds on April 2024.
+#[test]
+fn the_summary_gives_the_swings_by_launch_angle() {
+    let (code, out, err) = run_homerun(
+        &[
+            "hit",
+            "--batch",
+            SAMPLE,
+            "--summary",
+            "--json",
+            "--keep",
+            "launch_angle",
+        ],
+        None,
+    );
+    assert_eq!(code, Some(0), "{err}");
+    let lines = json_lines(&out);
+    let (summary, rows) = lines.split_last().unwrap();
+    let bands = summary["swings"].as_array().unwrap();
+    assert_eq!(bands.len(), 7);
+    let edges = [10.0, 20.0, 25.0, 30.0, 35.0, 50.0];
+    let band_of = |row: &Value| {
+        let degrees: f64 = row["kept"]["launch_angle"]
+            .as_str()
+            .unwrap()
+            .parse()
+            .unwrap();
+        edges.iter().filter(|&&edge| degrees >= edge).count()
+    };
+    let median = |mut values: Vec<f64>| {
+        values.sort_by(f64::total_cmp);
+        let n = values.len();
+        (values[(n - 1) / 2] + values[n / 2]) / 2.0
+    };
+    let (mut tracked, mut solved) = (0, 0);
+    for (k, band) in bands.iter().enumerate() {
+        let in_band: Vec<&Value> = rows.iter().filter(|r| band_of(r) == k).collect();
+        let solved_here: Vec<&Value> = in_band
+            .iter()
+            .copied()
+            .filter(|r| r["solved"] == true)
+            .collect();
+        assert_eq!(band["tracked"], in_band.len(), "{band}");
+        assert_eq!(band["solved"], solved_here.len(), "{band}");
+        tracked += in_band.len();
+        solved += solved_here.len();
+        if solved_here.is_empty() {
+            assert_eq!(band["undercut"], Value::Null);
+            continue;
+        }
+        let undercut = median(
+            solved_here
+                .iter()
+                .map(|r| r["impact"]["undercut"].as_f64().unwrap())
+                .collect(),
+        );
+        assert!(
+            (band["undercut"].as_f64().unwrap() - undercut).abs() < 1e-12,
+            "{band}"
+        );
+        let spin = median(
+            (solved_here.iter())
+                .map(|r| {
+                    let l = &r["launch"];
+                    let part = |key: &str| l[key].as_f64().unwrap().powi(2);
+                    (part("spin") + part("sidespin") + part("gyrospin")).sqrt()
+                })
+                .collect(),
+        );
+        assert!(
+            (band["spin"].as_f64().unwrap() - spin).abs() < 1e-9,
+            "{band}"
+        );
+    }
+    assert_eq!((tracked, solved), (35, 31));
+    // Met lower on the ball for a higher launch: the median undercut of
+    // the popups (50°+) is above the line drives' (10–20°), which is above
+    // the topped balls' (below 10°).
+    let undercut = |k: usize| bands[k]["undercut"].as_f64().unwrap();
+    assert!(undercut(6) > undercut(1) + 0.02 && undercut(1) > undercut(0) + 0.01);
+}

@@ -24,6 +24,7 @@ mod pieces;
 mod read;
 mod rows;
 mod savant_columns;
+mod swing_bands;
 mod swing_columns;
 pub(super) mod swing_scenes;
 
@@ -243,6 +244,8 @@ pub(super) fn batch(
         // And by kind of ball, where the export names them.
         let bands = !tally.differences.is_empty();
         let kinds = tally.kinds.any();
+        let swing_bands = &summary.swings.bands;
+        let swings = swing_bands.any();
         let line = if json {
             let mut summary = serde_json::json!({ "summary": line });
             if bands {
@@ -254,6 +257,9 @@ pub(super) fn batch(
                     summary["home_runs"] = serde_json::json!({ "clear": clear, "of": of });
                 }
             }
+            if swings {
+                summary["swings"] = serde_json::json!(swing_bands.rows());
+            }
             summary.to_string()
         } else {
             let mut text = line;
@@ -262,6 +268,9 @@ pub(super) fn batch(
             }
             if kinds {
                 text = format!("{text}\n{}", tally.kinds.table(shown));
+            }
+            if swings {
+                text = format!("{text}\n{}", swing_bands.table(shown));
             }
             text
         };

@@ -536,7 +536,7 @@ pub(super) fn medians(differences: &mut [f64]) -> (f64, f64) {
 }
 
 /// The median of `values` (not empty), sorting them.
-fn median(values: &mut [f64]) -> f64 {
+pub(super) fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
     let n = values.len();
     if n % 2 == 1 {

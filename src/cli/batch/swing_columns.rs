@@ -13,6 +13,7 @@ use serde::Serialize;
 use super::output::CsvLine;
 use super::rows::{Column, Header, Job};
 use super::savant_columns::quoted;
+use super::swing_bands::SwingBands;
 use crate::analysis::bat_tracking::{
     self, SolvedSwing, SwingAnswer, TrackedSwing, collision_efficiency,
 };
@@ -425,11 +426,14 @@ pub(super) struct SwingTally {
     pub undercuts: Vec<f64>,
     /// Solved rows whose contact is off the sweet spot.
     pub off_sweet_spot: usize,
+    /// The same by launch angle, for `--summary`.
+    pub bands: SwingBands,
 }
 
 impl SwingTally {
     pub(super) fn count(&mut self, job: &Job) {
         let Some(swing) = &job.swing else { return };
+        self.bands.count(swing);
         match &swing.tracked {
             Err(why) => *self.untracked.entry(why).or_default() += 1,
             Ok(_) => {
@@ -463,6 +467,7 @@ impl SwingTally {
             .extend_from_slice(&other.model_efficiency);
         self.undercuts.extend_from_slice(&other.undercuts);
         self.off_sweet_spot += other.off_sweet_spot;
+        self.bands.add(&other.bands);
     }
 
     /// "swings: solved 16627 of 17436 tracked (95.4 %); q median 0.132,
