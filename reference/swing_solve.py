@@ -17,6 +17,8 @@ Written apart from the Rust solve:
     Statcast's (x, y, z) made the flight frame's (z, x, y);
   - the pitch's spin rate * cos(spin_axis) (topspin positive), else the
     preset's -200 rad/s; the bat speed bat_speed in mph, unscaled;
+  - the bat's tilt swing_path_tilt where the row has it, else MLB's league
+    average swing path tilt, 32 degrees (MLB glossary, Swing Path (Tilt));
   - the three equations solved by scipy.optimize.root (Powell's hybrid)
     from a fan of starts, in the Rust solve's order: first off the sweet
     spot (solve_off: psi held at the preset's 0.1594, the prior, and the
@@ -46,6 +48,7 @@ from model import R_BALL, R_BAT
 FT = 0.3048
 MPH = 0.44704
 PRIOR = 0.1594
+LEAGUE_TILT = math.radians(32.0)
 PRESET_SPIN = -200.0
 SWING_ANGLES = (-0.6, 1.0)
 
@@ -66,9 +69,11 @@ def case_of(row, x):
     if rate not in ("NA", "") and axis not in ("NA", ""):
         spin = float(rate) * 2 * math.pi / 60 * math.cos(math.radians(float(axis)))
     velocity = at_plate(row)
+    tilt = row.get("swing_path_tilt", "NA")
+    tilt = LEAGUE_TILT if tilt in ("NA", "") else math.radians(float(tilt))
     return dict(
         hand="left" if row["stand"] == "L" else "right",
-        tilt=0.0, direction=direction, undercut=undercut, swing_angle=swing_angle,
+        tilt=tilt, direction=direction, undercut=undercut, swing_angle=swing_angle,
         friction=0.5, pitch_speed=float(np.linalg.norm(velocity)), pitch_spin=spin,
         pitch_velocity=velocity, bat_speed=float(row["bat_speed"]) * MPH, bat_spin=0.0,
     )

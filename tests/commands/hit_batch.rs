@@ -128,10 +128,11 @@ fn solved_rows_give_back_their_measured_launch() {
     // their spray.
     assert_eq!(landing, 30);
     // 31 of the 35: three too fast for the paper's bat, one bunt too slow;
-    // 27 at the prior swing angle, off the sweet spot, four faster than it.
+    // 25 at the prior swing angle (and the league's tilt), off the sweet
+    // spot, six faster than it.
     assert_eq!(solved, 31, "{err}");
     assert!(
-        err.contains("swings: solved 31 of 35 tracked (88.6 %, 27 of them off the sweet spot)"),
+        err.contains("swings: solved 31 of 35 tracked (88.6 %, 25 of them off the sweet spot)"),
         "{err}"
     );
 }
@@ -345,7 +346,7 @@ fn the_python_reference_agrees() {
     let reference = "tests/data/swing_solve_reference.csv";
     assert_eq!(
         agrees_with_the_python_reference(SAMPLE, reference),
-        (31, 27)
+        (31, 25)
     );
 }
 
@@ -431,17 +432,17 @@ fn rows_too_slow_for_the_sweet_spot_are_solved_off_it_as_the_reference_solves_th
 }
 
 /// Under --units imperial the swings' closing line gives the undercut in
-/// inches: the sample's 23.5 mm median is 0.93 in.
+/// inches: the sample's 27.6 mm median is 1.09 in.
 #[test]
 fn the_swings_line_speaks_the_units_asked_for() {
     let (_, _, si) = run_homerun(&["hit", "--batch", SAMPLE], None);
     assert!(
-        si.contains("undercut median 23.5 mm (quartiles 6.1, 33.0)"),
+        si.contains("undercut median 27.6 mm (quartiles 7.4, 38.9)"),
         "{si}"
     );
     let (_, _, imperial) = run_homerun(&["hit", "--batch", SAMPLE, "--units", "imperial"], None);
     assert!(
-        imperial.contains("undercut median 0.93 in (quartiles 0.24, 1.30)"),
+        imperial.contains("undercut median 1.09 in (quartiles 0.29, 1.53)"),
         "{imperial}"
     );
 }
@@ -529,4 +530,51 @@ fn the_summary_gives_the_swings_by_launch_angle() {
     // the topped balls' (below 10°).
     let undercut = |k: usize| bands[k]["undercut"].as_f64().unwrap();
     assert!(undercut(6) > undercut(1) + 0.02 && undercut(1) > undercut(0) + 0.01);
+}
+
+/// Without `swing_path_tilt` (2024's exports) a swing is solved at MLB's
+/// league-average tilt, 32°; `--set bat.tilt`, a `bat.tilt` column or the
+/// row's own `swing_path_tilt` holds instead, and each gives back the
+/// measured launch.
+#[test]
+fn a_swing_without_its_tilt_takes_the_league_s() {
+    let rows = sample();
+    let row: Vec<String> = as_given(&rows[0]);
+    let tilt_of = |lines: &[Value]| lines[0]["swing"]["tilt"].as_f64().unwrap();
+    let (code, lines, err) = hit_batch(&narrow(std::slice::from_ref(&row)));
+    assert_eq!(code, Some(0), "{err}");
+    assert!((tilt_of(&lines) - 32f64.to_radians()).abs() < 1e-12);
+    let league = lines[0]["impact"]["undercut"].as_f64().unwrap();
+    // Given on the command line.
+    let (_, out, _) = run_homerun(
+        &["hit", "--batch", "-", "--json", "--set", "bat.tilt=0.1"],
+        Some(&narrow(std::slice::from_ref(&row))),
+    );
+    let lines = json_lines(&out);
+    assert!((tilt_of(&lines) - 0.1).abs() < 1e-12);
+    // Given by a column: the key's, or Savant's own (degrees).
+    for (column, cell, tilt) in [
+        ("bat.tilt", "0.2", 0.2),
+        ("swing_path_tilt", "25", 25f64.to_radians()),
+    ] {
+        let text = narrow(std::slice::from_ref(&row));
+        let mut lines = text.lines();
+        let input = format!(
+            "{},{column}\n{},{cell}\n",
+            lines.next().unwrap(),
+            lines.next().unwrap()
+        );
+        let (code, lines, err) = hit_batch(&input);
+        assert_eq!(code, Some(0), "{err}");
+        assert!((tilt_of(&lines) - tilt).abs() < 1e-12, "{column}");
+        let launch = &lines[0]["launch"];
+        let measured = rows[0]["launch_speed"].parse::<f64>().unwrap() * MPH;
+        assert!((launch["speed"].as_f64().unwrap() - measured).abs() < 1e-6);
+        // Another tilt, another contact for the same launch.
+        let undercut = lines[0]["impact"]["undercut"].as_f64().unwrap();
+        assert!(
+            (undercut - league).abs() > 1e-4,
+            "{column}: {undercut} {league}"
+        );
+    }
 }

@@ -40,6 +40,12 @@ use model::scene::{GivenLaunch, Hand, Scene};
 use model::tracked_pitch::PitchAtPlate;
 use nalgebra::{Matrix3, Vector3};
 
+/// The swing path's tilt (rad) a tracked row without `swing_path_tilt` is
+/// solved at: MLB's league average, "about 32°" (MLB glossary, Swing Path
+/// (Tilt); 20° to 50° by hitter). The presets' level bat (`bat.tilt` = 0)
+/// is the paper's plane, not a measured swing.
+pub const LEAGUE_SWING_PATH_TILT: f64 = 32.0 * std::f64::consts::PI / 180.0;
+
 /// One tracked swing, in SI and the flight frame's conventions.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TrackedSwing {
@@ -520,6 +526,16 @@ impl Problem {
             }
             None => f64::NAN,
         };
+        // The exit speed rises with the bat's: a ball faster than the
+        // sweet spot gives is told there, in one solve for the angle, not
+        // nine (a tenth of the rows, with the bat at the league's tilt).
+        if let Some((_, fastest)) = self.undercut_for_angle(high, direction, None)
+            && fastest < self.target[0]
+        {
+            return Err(Unreached::TooFast {
+                shortfall: self.target[0] - fastest,
+            });
+        }
         // On a grid: at the slowest contacts no undercut may give the
         // angle (a bat nearly at rest sends the ball back along the pitch),
         // so the bracket is the first pair of neighbours, both reached,

@@ -4,6 +4,7 @@
 
 pub mod nelder_mead;
 pub mod ode;
+pub mod quadrature;
 pub mod real;
 pub mod roots;
 // For the tests of every crate above.

@@ -336,9 +336,10 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
     // sends the ball (the spin, and the direction that lands on the spray),
     // as `fly --batch --spin swing` launches it; the others as above.
     if setup.solve_swings {
+        let tilt = setup.tilt_prior(&header);
         (jobs.par_iter_mut().zip(&wanted))
             .filter(|(_, wanted)| **wanted)
-            .for_each(|(job, _)| super::swing_columns::solve_row(job, setup.spray));
+            .for_each(|(job, _)| super::swing_columns::solve_row(job, setup.spray, tilt));
     }
     let wanted: Vec<&Job> = (jobs.iter().zip(wanted))
         .filter_map(|(job, wanted)| wanted.then_some(job))

@@ -169,7 +169,7 @@ impl Piece {
         if setup.solve_swings {
             self.jobs
                 .iter_mut()
-                .for_each(|job| solve_row(job, setup.spray));
+                .for_each(|job| solve_row(job, setup.spray, setup.tilt_prior(header)));
         }
         fly_chunk(&self.jobs, setup, &mut self.scratch, &mut self.flown);
         let csv = CsvLine {

@@ -152,6 +152,9 @@ pub(super) struct Header {
     pub(super) hit_coordinates: bool,
     /// A column gives `environment.contact_height`: `plate_z` then does not.
     contact_height_given: bool,
+    /// A column gives `bat.tilt`: the league's tilt then does not
+    /// ([`super::Setup::tilt_prior`]).
+    pub(super) tilt_given: bool,
 }
 
 /// An input column's key as a row sets it.
@@ -227,6 +230,7 @@ impl Header {
         let is = |column: SavantColumn| columns.contains(&Column::Savant(column));
         let hit_coordinates = is(SavantColumn::HcX) || is(SavantColumn::HcY);
         let contact_height_given = columns.contains(&Column::Input(CONTACT_HEIGHT));
+        let tilt_given = columns.contains(&Column::Input("bat.tilt"));
         Ok(Header {
             direction_given: columns.contains(&Column::Input("launch.direction"))
                 || columns.contains(&Column::Savant(SavantColumn::ExitDirection)),
@@ -240,6 +244,7 @@ impl Header {
             launch_only,
             hit_coordinates,
             contact_height_given,
+            tilt_given,
         })
     }
 

@@ -4,6 +4,7 @@
 //! command line's choices), and the one summary line said at the end.
 
 use crate::Scene;
+use crate::analysis::bat_tracking;
 use crate::analysis::savant::{DirectionFrom, Spray, spray_angle};
 use crate::cli::UsageError;
 use crate::cli::shown::Shown;
@@ -100,6 +101,9 @@ pub(in crate::cli) struct Setup<'a> {
     /// Whether `--set` gave `environment.contact_height`: then no row's
     /// `plate_z` replaces it.
     pub contact_height_given: bool,
+    /// Whether `--set` gave `bat.tilt`: then a tracked row without
+    /// `swing_path_tilt` is solved at it, not at the league's.
+    pub tilt_given: bool,
     pub spray: Spray,
     /// `--own-air`: each park counted in its own air (a flight per park).
     pub own_air: bool,
@@ -140,6 +144,7 @@ impl<'a> Setup<'a> {
         setup.spin_given = keys.contains(&"launch.spin");
         setup.sidespin_given = keys.contains(&"launch.sidespin");
         setup.contact_height_given = keys.contains(&CONTACT_HEIGHT);
+        setup.tilt_given = keys.contains(&"bat.tilt");
         if let Some(code) = park {
             let named = super::super::parks::lookup(code, parks)?;
             let found = parks
@@ -152,6 +157,14 @@ impl<'a> Setup<'a> {
         Ok(setup)
     }
 
+    /// The bat's tilt a tracked row without `swing_path_tilt` is solved
+    /// at: MLB's league average ([`bat_tracking::LEAGUE_SWING_PATH_TILT`]),
+    /// unless `--set bat.tilt` or a `bat.tilt` column gives one (`None`:
+    /// the row's scene's).
+    pub(super) fn tilt_prior(&self, header: &Header) -> Option<f64> {
+        (!self.tilt_given && !header.tilt_given).then_some(bat_tracking::LEAGUE_SWING_PATH_TILT)
+    }
+
     pub fn new(base: &'a Preset, parks: &'a Parks) -> Setup<'a> {
         Setup {
             base,
@@ -162,6 +175,7 @@ impl<'a> Setup<'a> {
             spin_given: false,
             sidespin_given: false,
             contact_height_given: false,
+            tilt_given: false,
             spray: Spray::Landing,
             own_air: false,
             all_parks: false,

@@ -257,7 +257,9 @@ impl RowSwing {
 /// direction whose flight lands on the spray
 /// ([`bat_tracking::solve_landing`]); taken as the launch direction, toward
 /// the spray itself. A row not solved keeps what `fly --batch` makes of it.
-pub(super) fn solve_row(job: &mut Job, spray: Spray) {
+/// `tilt_prior` ([`super::Setup::tilt_prior`]) is the bat's tilt where a
+/// tracked row measured none.
+pub(super) fn solve_row(job: &mut Job, spray: Spray, tilt_prior: Option<f64>) {
     let launch = job.scene.launch;
     let measured = (
         launch.speed.unwrap_or(f64::NAN),
@@ -266,6 +268,11 @@ pub(super) fn solve_row(job: &mut Job, spray: Spray) {
     let tracked = job
         .tracked
         .swing(measured, job.launch.spray, job.launch.side);
+    if let (Ok(swing), Some(prior)) = (&tracked, tilt_prior)
+        && swing.tilt.is_none()
+    {
+        job.scene.bat.tilt = prior;
+    }
     let options = Purpose::Solve.flight_options();
     let solved = tracked.ok().map(|swing| match spray {
         Spray::Landing => bat_tracking::solve_landing(&job.scene, &swing, &options),
@@ -296,7 +303,7 @@ pub(super) fn solve_row(job: &mut Job, spray: Spray) {
 }
 
 /// The swing's CSV columns, after `line` (`hit --batch`).
-pub(super) const CSV_COLUMNS: [(&str, Quantity); 14] = [
+pub(super) const CSV_COLUMNS: [(&str, Quantity); 15] = [
     ("solved", Quantity::Unchanged),
     ("reason", Quantity::Unchanged),
     ("shortfall", Quantity::Speed),
@@ -305,6 +312,7 @@ pub(super) const CSV_COLUMNS: [(&str, Quantity); 14] = [
     ("swing.speed", Quantity::Speed),
     ("swing.angle", Quantity::Angle),
     ("swing.direction", Quantity::Angle),
+    ("swing.tilt", Quantity::Angle),
     ("impact.undercut", Quantity::Size),
     ("impact.regime", Quantity::Unchanged),
     ("impact.collision_efficiency", Quantity::Unchanged),
@@ -336,6 +344,7 @@ pub(super) fn write_csv(csv: &CsvLine, out: &mut Vec<u8>, job: &Job) {
     csv.number(out, Quantity::Speed, bat.map(|b| b.speed), 4);
     csv.number(out, Quantity::Angle, bat.map(|b| b.swing_angle), 6);
     csv.number(out, Quantity::Angle, bat.map(|b| b.direction), 6);
+    csv.number(out, Quantity::Angle, bat.map(|b| b.tilt), 6);
     csv.number(out, Quantity::Size, bat.map(|b| b.undercut), 6);
     if let Some(solved) = solved {
         out.extend_from_slice(solved.regime.name().as_bytes());
@@ -368,6 +377,9 @@ pub(super) struct SwingJson {
     angle: f64,
     direction: f64,
     speed: f64,
+    /// The bat's tilt the swing was solved at: `swing_path_tilt`, or the
+    /// league's where the row has none.
+    tilt: f64,
 }
 
 /// The swing's parts of a row's JSON line (all `None` unless swings are
@@ -406,6 +418,7 @@ pub(super) fn json_parts(job: &Job) -> JsonParts<'static> {
         swing: solved.map(|s| SwingJson {
             angle: s.scene.bat.swing_angle,
             direction: s.scene.bat.direction,
+            tilt: s.scene.bat.tilt,
             speed: s.scene.bat.speed,
         }),
         gyrospin: solved.map(|s| s.launch.gyrospin),

@@ -66,8 +66,9 @@ fn read(setup: &mut Setup, input: impl BufRead, shown: Shown) -> Result<Swings, 
             eprintln!("homerun: line {line}: {reason}; skipped");
         }
     })?;
+    let tilt = setup.tilt_prior(&header);
     jobs.par_iter_mut()
-        .for_each(|job| solve_row(job, setup.spray));
+        .for_each(|job| solve_row(job, setup.spray, tilt));
     let tracked = (jobs.iter())
         .filter(|j| j.swing.is_some_and(|s| s.tracked.is_ok()))
         .count();

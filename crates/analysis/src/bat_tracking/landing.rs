@@ -97,13 +97,27 @@ fn landing_launch(
 }
 
 /// The impact solved again toward `toward`'s direction, by Newton's method
-/// from `from` (the same kind of solve: off the sweet spot or not).
+/// from `from` (the same kind of solve: off the sweet spot or not). A
+/// swing angle solved at the sweet spot is first tried off it at the
+/// prior, as [`solve`] tries it: near the edge between the two, turning the
+/// bat can bring the prior's reach back over the ball's speed.
 fn again(
     base: &Scene,
     toward: &TrackedSwing,
     from: &SolvedSwing,
 ) -> Result<SolvedSwing, Unreached> {
     let mut problem = Problem::new(base, toward);
+    let bat = from.scene.bat;
+    if !from.off_sweet_spot && problem.second == Second::SwingAngle {
+        let off = Problem {
+            second: Second::ContactSpeed,
+            contact_speeds: OFF_SWEET_SPOT_SPEEDS,
+            ..problem
+        };
+        if let Some(x) = off.newton([bat.undercut, bat.speed, bat.direction]) {
+            return Ok(off.solved_at(x));
+        }
+    }
     if from.off_sweet_spot && problem.second == Second::SwingAngle {
         problem = Problem {
             second: Second::ContactSpeed,
@@ -111,7 +125,6 @@ fn again(
             ..problem
         };
     }
-    let bat = from.scene.bat;
     let second = match problem.second {
         Second::SwingAngle => bat.swing_angle,
         Second::ContactSpeed => bat.speed,
