@@ -236,6 +236,23 @@ fn bad_input_is_named() {
         err.contains(r#"line 2: bat_speed = "fast": expected a number from 0 to 150; skipped"#),
         "{err}"
     );
+    // A tilt past the bat's (bat.tilt's ±60°) is named, not solved.
+    let text = narrow(&[as_given(&rows[0]), as_given(&rows[1])]);
+    let mut lines = text.lines();
+    let input = format!(
+        "{},swing_path_tilt\n{},70\n{},32\n",
+        lines.next().unwrap(),
+        lines.next().unwrap(),
+        lines.next().unwrap()
+    );
+    let (code, out, err) = hit_batch(&input);
+    assert_eq!((code, out.len()), (Some(1), 1));
+    assert!(
+        err.contains(
+            r#"line 2: swing_path_tilt = "70": expected a number from -60 to 60; skipped"#
+        ),
+        "{err}"
+    );
 }
 
 #[test]

@@ -41,16 +41,19 @@ pub(super) enum SwingColumn {
     SpinAxis,
 }
 
-/// Each column: its name, and the values it accepts (in its own unit).
+/// Each column: its name, and the values it accepts (in its own unit): the
+/// angles those of the keys they become (`bat.swing_angle` ±90°,
+/// `bat.direction` and `bat.tilt` ±60°), so that a row past them is named,
+/// not solved outside what the model takes.
 const COLUMNS: [(&str, SwingColumn, (f64, f64)); 12] = [
     ("bat_speed", SwingColumn::BatSpeed, (0.0, 150.0)),
     ("attack_angle", SwingColumn::AttackAngle, (-90.0, 90.0)),
     (
         "attack_direction",
         SwingColumn::AttackDirection,
-        (-90.0, 90.0),
+        (-60.0, 60.0),
     ),
-    ("swing_path_tilt", SwingColumn::SwingPathTilt, (-90.0, 90.0)),
+    ("swing_path_tilt", SwingColumn::SwingPathTilt, (-60.0, 60.0)),
     ("vx0", SwingColumn::Velocity(0), (-100.0, 100.0)),
     ("vy0", SwingColumn::Velocity(1), (-250.0, 0.0)),
     ("vz0", SwingColumn::Velocity(2), (-100.0, 100.0)),
