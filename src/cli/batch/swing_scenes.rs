@@ -120,8 +120,8 @@ fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
         false => String::new(),
     };
     let description = format!(
-        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}{contact}, {}, q {:.3}; here {} at \
-         {} (E for the paper's pitch path)",
+        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}, tilt {}{contact}, {}, q {:.3}; here \
+         {} at {} (E for the paper's pitch path)",
         // "Ohtani, Shohei" as "Shohei Ohtani": found by either name.
         cell("player_name").map_or(String::from("?"), |n| match n.split_once(", ") {
             Some((last, first)) => format!("{first} {last}"),
@@ -133,6 +133,8 @@ fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
         angle(tracked.launch_angle),
         size(scene.bat.undercut),
         angle(solved.scene.bat.swing_angle),
+        // The row's swing_path_tilt, or the league's.
+        angle(solved.scene.bat.tilt),
         solved.regime.name(),
         crate::analysis::bat_tracking::collision_efficiency(
             tracked.launch_speed,
