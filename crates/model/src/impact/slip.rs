@@ -22,8 +22,8 @@
 //! dP/dT = √(â·e^(−2rT) + b̂·e^(−2T))
 //! ```
 //!
-//! which is integrated with the crate's Dormand–Prince pair, the event
-//! P = P_f found on its continuous extension. The slip halts at
+//! which is integrated by adaptive Gauss–Legendre quadrature
+//! (`numerics::quadrature`), the T where P = P_f by Newton's method. The slip halts at
 //! P_s = P(∞); the contact then sticks, since the normal and tangential
 //! directions do not couple (the stick coefficient μ̄ = 0, as in the plane).
 
@@ -208,11 +208,11 @@ impl Slip {
 
     /// P from 0 until it reaches `target` (then T there) or to the halt
     /// (then P there, which is P_s), by Gauss–Legendre quadrature of dP/dT,
-    /// a smooth integrand of two exponentials: tens of evaluations where the ODE pair took some 350
-    /// steps of six (a tilted bat's slip has both parts, and the 3-D solve
-    /// of its swings spent most of its time here; docs/speed.md). The T at
-    /// which P reaches `target` by Newton's method, each P the last plus
-    /// the piece between.
+    /// a smooth integrand of two exponentials: tens of evaluations where
+    /// the ODE pair took some 350 steps of six (a tilted bat's slip has
+    /// both parts, and the 3-D solve of its swings spent most of its time
+    /// here; docs/speed.md). The T at which P reaches `target` by Newton's
+    /// method, each P the last plus the piece between.
     fn integrate_to(&self, target: f64) -> (Option<f64>, f64) {
         let slope = |t: f64| self.slope(t);
         let between = |a: f64, b: f64| quadrature::integrate(&slope, a, b, QUADRATURE_TOLERANCE);
