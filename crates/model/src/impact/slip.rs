@@ -23,9 +23,10 @@
 //! ```
 //!
 //! which is integrated by adaptive Gauss–Legendre quadrature
-//! (`numerics::quadrature`), the T where P = P_f by Newton's method. The slip halts at
-//! P_s = P(∞); the contact then sticks, since the normal and tangential
-//! directions do not couple (the stick coefficient μ̄ = 0, as in the plane).
+//! (`numerics::quadrature`), the T where P = P_f by Newton's method. The
+//! slip halts at P_s = P(∞); the contact then sticks, since the normal and
+//! tangential directions do not couple (the stick coefficient μ̄ = 0, as in
+//! the plane).
 
 use nalgebra::Vector2;
 
