@@ -86,9 +86,10 @@ pub enum Command {
         #[arg(long)]
         json: bool,
         /// A Savant export with bat tracking (`-` for stdin): each row's undercut,
-        /// swing angle and bat direction solved so that the paper's impact gives
-        /// its measured launch, then flown as `fly --batch` flies it
-        /// (docs/bat-tracking.md).
+        /// bat speed at the contact (or swing angle) and bat direction solved so
+        /// that the paper's impact gives its measured launch, the bat tilted by the
+        /// row's swing_path_tilt or the league's 32°, then flown as `fly --batch`
+        /// flies it (docs/bat-tracking.md).
         #[arg(long, value_name = "FILE")]
         batch: Option<String>,
         /// With --batch: the park every row is taken to, as `fly --park` [default:
