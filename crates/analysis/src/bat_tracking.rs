@@ -299,14 +299,20 @@ impl Problem {
         self.scene.reach()
     }
 
-    /// At the prior swing angle, the bat's speed at the contact solved
-    /// (slower than the sweet spot's); marked off the sweet spot.
-    fn off_sweet_spot(&self) -> Result<SolvedSwing, Unreached> {
-        let off = Problem {
+    /// The same equations at the prior swing angle, the bat's speed at the
+    /// contact the second unknown (from a bunt's to the sweet spot's).
+    fn off_the_sweet_spot(&self) -> Problem {
+        Problem {
             second: Second::ContactSpeed,
             contact_speeds: OFF_SWEET_SPOT_SPEEDS,
             ..*self
-        };
+        }
+    }
+
+    /// At the prior swing angle, the bat's speed at the contact solved
+    /// (slower than the sweet spot's); marked off the sweet spot.
+    fn off_sweet_spot(&self) -> Result<SolvedSwing, Unreached> {
+        let off = self.off_the_sweet_spot();
         // A slow bat turns the ball less: its direction may lie far from
         // the spray's, so where the spray's fails the start is tried from
         // bats turned either way (with a free direction). A ball faster than

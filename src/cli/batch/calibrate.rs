@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
 
+use super::output::band_name;
 use super::pieces::PIECE_ROWS;
 use super::read::{MAX_RECORD_BYTES, Records};
 use super::rows::{Header, Job, Row};
@@ -60,7 +61,7 @@ const NAMED_IMPLAUSIBLE: usize = 20;
 /// before anyone fields it, and `hit_distance_sc` is where it was fielded).
 /// A whole export, grounders and all, then calibrates as its balls in the
 /// air do.
-const LOWEST_FLIGHT: f64 = 10.0 * std::f64::consts::PI / 180.0;
+pub(super) const LOWEST_FLIGHT: f64 = 10.0 * std::f64::consts::PI / 180.0;
 
 /// Groups with fewer rows are named, not fitted.
 const FEWEST_IN_GROUP: usize = 10;
@@ -508,10 +509,7 @@ fn text(
         let signed = |m: f64| format!("{}{}", if m >= 0.0 { "+" } else { "-" }, d(m.abs()));
         let with_rows = bands.lower_edges.iter().enumerate();
         for (k, edge) in with_rows.filter(|(k, _)| bands.after[*k].rows > 0) {
-            let name = match bands.lower_edges.get(k + 1) {
-                Some(next) => format!("{edge}–{next}°"),
-                None => format!("{edge}°+"),
-            };
+            let name = band_name((Some(*edge), bands.lower_edges.get(k + 1).copied()));
             let (before, after) = (bands.before[k], bands.after[k]);
             lines.push((
                 if lines

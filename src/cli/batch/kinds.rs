@@ -10,6 +10,9 @@ use serde::Serialize;
 use crate::cli::shown::Shown;
 use crate::units::Quantity;
 
+// The launch angle from which a ball's distance is a flight's, as
+// `calibrate` takes it: below, a grounder's distance is where it was fielded.
+use super::calibrate::LOWEST_FLIGHT;
 use super::output::medians;
 
 /// A batted ball's kind, as Savant's `bb_type` names it.
@@ -57,11 +60,6 @@ const ROWS: [&str; 5] = [
     "home runs",
 ];
 
-/// The launch angle (rad) from which a ball's distance is a flight's, as
-/// `calibrate` takes it: below, a grounder's distance is where it was
-/// fielded.
-const IN_THE_AIR: f64 = 10.0 * std::f64::consts::PI / 180.0;
-
 /// Model − Statcast by kind (balls launched at 10° or more), and how many
 /// home runs clear the fence they are judged at.
 #[derive(Clone, Debug, Default)]
@@ -92,7 +90,7 @@ impl KindTally {
             self.home_runs += 1;
             self.home_runs_clear += usize::from(clears);
         }
-        let Some(difference) = difference.filter(|_| angle >= IN_THE_AIR) else {
+        let Some(difference) = difference.filter(|_| angle >= LOWEST_FLIGHT) else {
             return;
         };
         if let Some(kind) = called.kind {

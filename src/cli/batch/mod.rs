@@ -222,10 +222,7 @@ pub(super) fn batch(
     }
     if outcome.empty > 0 {
         let n = outcome.empty;
-        sinks.note(&format!(
-            "{n} empty line{} skipped",
-            if n == 1 { "" } else { "s" }
-        ));
+        sinks.note(&format!("{n} empty line{} skipped", plural(n)));
     }
     // One summary at the end: on stderr, or after the rows with --summary.
     let air = if setup.own_air {
@@ -287,6 +284,11 @@ pub(super) fn batch(
         ));
     }
     Ok(outcome)
+}
+
+/// "s" after a count other than one: "1 row", "2 rows".
+fn plural(count: usize) -> &'static str {
+    if count == 1 { "" } else { "s" }
 }
 
 /// Every remaining record of `records` parsed into jobs, as `calibrate`
@@ -363,7 +365,7 @@ fn announce(header: &Header, setup: &Setup, sinks: &mut Sinks) {
         sinks.note(&format!(
             "ignored {} column{} that {} no input: {}{more}",
             ignored.len(),
-            if ignored.len() == 1 { "" } else { "s" },
+            plural(ignored.len()),
             if ignored.len() == 1 { "is" } else { "are" },
             shown.join(", ")
         ));
@@ -389,7 +391,7 @@ fn announce(header: &Header, setup: &Setup, sinks: &mut Sinks) {
         let source = if from_rows {
             format!(
                 "each row's {key} comes from its own swing (column{} {})",
-                if swing_columns.len() == 1 { "" } else { "s" },
+                plural(swing_columns.len()),
                 swing_columns.join(", ")
             )
         } else {

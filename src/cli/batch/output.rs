@@ -10,6 +10,7 @@ use serde::Serialize;
 
 use super::flights::RowFlight;
 use super::kinds::KindTally;
+use super::plural;
 use super::rows::Job;
 use super::savant_columns::{Setup, quoted};
 use crate::analysis::calibrate::{BAND_EDGES, band_of};
@@ -408,7 +409,32 @@ pub(super) struct Tally {
 /// The summary's table looks at the model's error by launch-angle band, as
 /// docs/accuracy.md does (a tilt by launch angle shows there, not in one
 /// median): below 10°, then `calibrate`'s bands of balls in the air.
-const BANDS: usize = BAND_EDGES.len() + 1;
+pub(super) const BANDS: usize = BAND_EDGES.len() + 1;
+
+/// The summary's band of a launch angle (rad): 0 below the first edge,
+/// band k from edge k − 1.
+pub(super) fn band_index(angle: f64) -> usize {
+    band_of(angle).map_or(0, |b| b + 1)
+}
+
+/// Band `band`'s launch angles (°): from (none for the lowest) up to (none
+/// for the highest).
+pub(super) fn band_bounds(band: usize) -> (Option<f64>, Option<f64>) {
+    (
+        band.checked_sub(1).map(|k| BAND_EDGES[k]),
+        BAND_EDGES.get(band).copied(),
+    )
+}
+
+/// A band's name in a table: "< 10°", "10–20°", "50°+".
+pub(super) fn band_name((from, to): (Option<f64>, Option<f64>)) -> String {
+    match (from, to) {
+        (None, Some(to)) => format!("< {to}°"),
+        (Some(from), None) => format!("{from}°+"),
+        (Some(from), Some(to)) => format!("{from}–{to}°"),
+        (None, None) => String::from("all"),
+    }
+}
 
 /// One band's rows, median difference and median |difference| (m).
 #[derive(Serialize)]
@@ -452,7 +478,7 @@ impl Tally {
         let [clear, wall, short, foul] = self.outcomes;
         let mut line = format!(
             "summary: flown {flown} row{}, skipped {skipped}; {at}: {clear} clear, {wall} off the wall, {short} short, {foul} foul",
-            if flown == 1 { "" } else { "s" }
+            plural(flown)
         );
         if !self.differences.is_empty() {
             let mut signed: Vec<f64> = self.differences.iter().map(|d| d.1).collect();
@@ -477,16 +503,15 @@ impl Tally {
     pub(super) fn bands(&self) -> Vec<Band> {
         (0..BANDS)
             .map(|band| {
-                // Band 0 is below the first edge, band k from edge k − 1.
-                let in_band = |angle: f64| band_of(angle).map_or(0, |b| b + 1) == band;
                 let mut signed: Vec<f64> = (self.differences.iter())
-                    .filter(|(angle, _)| in_band(*angle))
+                    .filter(|(angle, _)| band_index(*angle) == band)
                     .map(|d| d.1)
                     .collect();
                 let both = (!signed.is_empty()).then(|| medians(&mut signed));
+                let (from, to) = band_bounds(band);
                 Band {
-                    from: band.checked_sub(1).map(|k| BAND_EDGES[k]),
-                    to: BAND_EDGES.get(band).copied(),
+                    from,
+                    to,
                     rows: signed.len(),
                     median: both.map(|m| m.0),
                     median_abs: both.map(|m| m.1),
@@ -504,12 +529,7 @@ impl Tally {
             unit.symbol, "angle", "rows", "median", "median |d|"
         );
         for band in self.bands() {
-            let name = match (band.from, band.to) {
-                (None, Some(to)) => format!("< {to}°"),
-                (Some(from), None) => format!("{from}°+"),
-                (Some(from), Some(to)) => format!("{from}–{to}°"),
-                (None, None) => String::from("all"),
-            };
+            let name = band_name((band.from, band.to));
             let show = |m: Option<f64>, sign: bool| match m {
                 Some(m) if sign => format!("{:+.1}", unit.show(m)),
                 Some(m) => format!("{:.1}", unit.show(m)),

@@ -17,6 +17,7 @@ use crate::units::{Quantity, UnitSystem, significant};
 use super::kinds::Called;
 use super::launch_columns::{LAUNCH_COLUMNS, Unit};
 use super::own_launch::SwingLaunches;
+use super::plural;
 use super::read::Fields;
 use super::savant_columns::{CONTACT_HEIGHT, ContactFrom, SavantCells, SavantColumn, Setup};
 use super::swing_columns::{RowSwing, SwingCells, SwingColumn};
@@ -454,7 +455,7 @@ pub(super) fn parse_row(
         return bad(format!(
             "{} field{} where the header has {}",
             fields.len(),
-            if fields.len() == 1 { "" } else { "s" },
+            plural(fields.len()),
             header.columns.len()
         ));
     }

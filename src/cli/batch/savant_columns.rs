@@ -15,6 +15,7 @@ use crate::preset::parks::Parks;
 use crate::preset::{Preset, cut, escape_cut};
 
 use super::kinds::{Called, Kind};
+use super::plural;
 use super::rows::{Header, Job, measure};
 use super::swing_columns::SwingTally;
 use crate::units::Quantity;
@@ -455,7 +456,7 @@ impl Summary {
                 "{} row{} whose spray no flight lands on (a grounder or popup fielded where it \
                  never came down) flown toward the spray (direction_from = spray_unsolved)",
                 self.unsolved,
-                if self.unsolved == 1 { "" } else { "s" }
+                plural(self.unsolved)
             ));
         }
         if self.without_spray > 0 {
@@ -469,7 +470,7 @@ impl Summary {
                 "{} row{} with a spray at the plate (hit coordinates 125.42, 198.27: no \
                  direction) flown toward the preset's direction",
                 self.at_plate,
-                if self.at_plate == 1 { "" } else { "s" }
+                plural(self.at_plate)
             ));
         }
         if self.from_plate > 0 {
@@ -483,7 +484,7 @@ impl Summary {
                 "{} row{} whose plate_z is no contact height (below the ground, past 10 m, \
                  or not a number) flown from the preset's",
                 self.plate_unusable,
-                if self.plate_unusable == 1 { "" } else { "s" }
+                plural(self.plate_unusable)
             ));
         }
         let parks = self.at_park.iter().filter(|&&n| n > 0).count();
@@ -498,10 +499,7 @@ impl Summary {
             } else {
                 "each in the standard air at its elevation"
             };
-            parts.push(format!(
-                "{parks} park{} from {how}, {air}",
-                if parks == 1 { "" } else { "s" }
-            ));
+            parts.push(format!("{parks} park{} from {how}, {air}", plural(parks)));
         }
         if self.at_generic > 0 && parks > 0 {
             parts.push(format!("{} rows at the generic fence", self.at_generic));
@@ -510,7 +508,7 @@ impl Summary {
             parts.push(format!(
                 "skipped {} row{} without a launch speed (not batted balls)",
                 self.without_speed,
-                if self.without_speed == 1 { "" } else { "s" }
+                plural(self.without_speed)
             ));
         }
         (!parts.is_empty()).then(|| parts.join("; "))

@@ -7,14 +7,10 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
-use super::output::median;
+use super::output::{BANDS, band_bounds, band_index, band_name, median};
 use super::swing_columns::RowSwing;
-use crate::analysis::calibrate::{BAND_EDGES, band_of};
 use crate::cli::shown::Shown;
 use crate::units::Quantity;
-
-/// The summary's bands: below 10°, then `calibrate`'s bands.
-const BANDS: usize = BAND_EDGES.len() + 1;
 
 /// One solved swing, as the table needs it.
 #[derive(Clone, Copy, Debug)]
@@ -52,15 +48,10 @@ pub(super) struct SwingBand {
     spin: Option<f64>,
 }
 
-/// The band of a launch angle (rad): 0 below the first edge.
-fn band(angle: f64) -> usize {
-    band_of(angle).map_or(0, |b| b + 1)
-}
-
 impl SwingBands {
     pub(super) fn count(&mut self, swing: &RowSwing) {
         let Ok(tracked) = &swing.tracked else { return };
-        let band = band(tracked.launch_angle);
+        let band = band_index(tracked.launch_angle);
         self.tracked[band] += 1;
         if let Some(solved) = swing.solved() {
             let launch = solved.launch;
@@ -94,9 +85,10 @@ impl SwingBands {
                     let mut values: Vec<f64> = solved.iter().map(|s| part(s)).collect();
                     (!values.is_empty()).then(|| median(&mut values))
                 };
+                let (from, to) = band_bounds(band);
                 SwingBand {
-                    from: band.checked_sub(1).map(|k| BAND_EDGES[k]),
-                    to: BAND_EDGES.get(band).copied(),
+                    from,
+                    to,
                     tracked: self.tracked[band],
                     solved: solved.len(),
                     undercut: middle(|s| s.undercut),
@@ -128,12 +120,7 @@ impl SwingBands {
             format!("spin ({})", spin.symbol),
         );
         for band in self.rows().iter().filter(|b| b.tracked > 0) {
-            let name = match (band.from, band.to) {
-                (None, Some(to)) => format!("< {to}°"),
-                (Some(from), None) => format!("{from}°+"),
-                (Some(from), Some(to)) => format!("{from}–{to}°"),
-                (None, None) => String::from("all"),
-            };
+            let name = band_name((band.from, band.to));
             let show =
                 |value: Option<f64>, text: &dyn Fn(f64) -> String| value.map_or("-".into(), text);
             let _ = writeln!(

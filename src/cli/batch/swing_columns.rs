@@ -11,6 +11,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::output::CsvLine;
+use super::plural;
 use super::rows::{Column, Header, Job};
 use super::savant_columns::quoted;
 use super::swing_bands::SwingBands;
@@ -127,7 +128,7 @@ impl Header {
              kinematics (vx0, vy0, vz0, ax, ay, az) and the launch (launch_speed, launch_angle), \
              as a Baseball Savant export since 2024 has them",
             missing.join(", "),
-            if missing.len() == 1 { "" } else { "s" }
+            plural(missing.len())
         ))
     }
 }

@@ -9,10 +9,7 @@
 //! those few degrees moves the sidespin by ~220 rpm at the median (900 at
 //! the 90th percentile), the carry by up to a few metres.
 
-use super::{
-    OFF_SWEET_SPOT_SPEEDS, Problem, Second, SolvedSwing, SwingAnswer, TrackedSwing, Unreached,
-    solve,
-};
+use super::{Problem, Second, SolvedSwing, SwingAnswer, TrackedSwing, Unreached, solve};
 use crate::savant::{self, DirectionFrom, RowLaunch, Spray};
 use model::flight::FlightOptions;
 use model::scene::Scene;
@@ -106,30 +103,23 @@ fn again(
     toward: &TrackedSwing,
     from: &SolvedSwing,
 ) -> Result<SolvedSwing, Unreached> {
-    let mut problem = Problem::new(base, toward);
+    let problem = Problem::new(base, toward);
     let bat = from.scene.bat;
-    if !from.off_sweet_spot && problem.second == Second::SwingAngle {
-        let off = Problem {
-            second: Second::ContactSpeed,
-            contact_speeds: OFF_SWEET_SPOT_SPEEDS,
-            ..problem
-        };
-        if let Some(x) = off.newton([bat.undercut, bat.speed, bat.direction]) {
-            return Ok(off.solved_at(x));
-        }
-    }
-    if from.off_sweet_spot && problem.second == Second::SwingAngle {
-        problem = Problem {
-            second: Second::ContactSpeed,
-            contact_speeds: OFF_SWEET_SPOT_SPEEDS,
-            ..problem
-        };
-    }
-    let second = match problem.second {
-        Second::SwingAngle => bat.swing_angle,
-        Second::ContactSpeed => bat.speed,
+    let newton = |problem: &Problem, second: f64| {
+        problem
+            .newton([bat.undercut, second, bat.direction])
+            .map(|x| problem.solved_at(x))
     };
-    let x = problem.newton([bat.undercut, second, bat.direction]);
-    x.map(|x| problem.solved_at(x))
-        .ok_or(Unreached::NoConvergence)
+    let solved = match problem.second {
+        // Without a measured attack angle, off the sweet spot at the prior
+        // first; a swing angle solved at the sweet spot only after it.
+        Second::SwingAngle => {
+            newton(&problem.off_the_sweet_spot(), bat.speed).or_else(|| match from.off_sweet_spot {
+                true => None,
+                false => newton(&problem, bat.swing_angle),
+            })
+        }
+        Second::ContactSpeed => newton(&problem, bat.speed),
+    };
+    solved.ok_or(Unreached::NoConvergence)
 }
