@@ -547,6 +547,10 @@ fn the_summary_gives_the_swings_by_launch_angle() {
     // the topped balls' (below 10°).
     let undercut = |k: usize| bands[k]["undercut"].as_f64().unwrap();
     assert!(undercut(6) > undercut(1) + 0.02 && undercut(1) > undercut(0) + 0.01);
+    // In text the table ends the output: its last band, no blank line.
+    let (_, out, _) = run_homerun(&["hit", "--batch", SAMPLE, "--summary"], None);
+    let last = out.lines().last().unwrap();
+    assert!(last.starts_with("50°+ ") && !out.ends_with("\n\n"), "{out}");
 }
 
 /// Without `swing_path_tilt` (2024's exports) a swing is solved at MLB's

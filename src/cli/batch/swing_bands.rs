@@ -137,6 +137,8 @@ impl SwingBands {
                 show(band.spin, &|w| format!("{:.0}", spin.show(w))),
             );
         }
+        // The summary puts the line breaks between its tables.
+        table.pop();
         table
     }
 }
