@@ -359,11 +359,9 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
             piece.iter().zip(launched).map(|(job, launched)| {
                 // A ball fielded where no flight comes down says nothing
                 // of the flight's length.
-                let swing = job.swing.as_ref().filter(|s| s.solved().is_some());
-                let from = swing.map_or(launched.direction_from, |s| {
-                    s.direction_from.unwrap_or(launched.direction_from)
-                });
-                if from == savant::DirectionFrom::SprayUnsolved {
+                if job.direction_from(launched.direction_from)
+                    == savant::DirectionFrom::SprayUnsolved
+                {
                     return None;
                 }
                 launched.scene.validate().ok()?;
@@ -374,7 +372,7 @@ fn read(setup: &Setup, input: impl BufRead) -> Result<Read, String> {
                     apex: job.apex,
                 };
                 let group = job.kept.first().cloned().unwrap_or_default();
-                Some((measured, group, swing.is_some()))
+                Some((measured, group, job.swing_solved()))
             })
         })
         .collect();

@@ -217,10 +217,7 @@ fn ready<'f>(
         flight,
         launch,
         flights: launched.flights,
-        // A solved swing's direction is its impact's (bat_tracking::solve_landing).
-        direction_from: (job.swing.as_ref())
-            .and_then(|s| s.direction_from)
-            .unwrap_or(launched.direction_from),
+        direction_from: job.direction_from(launched.direction_from),
         own,
     })
 }

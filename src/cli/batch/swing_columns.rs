@@ -221,6 +221,22 @@ pub(super) struct RowSwing {
     pub direction_from: Option<DirectionFrom>,
 }
 
+impl Job {
+    /// Where the row's launch direction came from: a solved swing's, its
+    /// impact's ([`bat_tracking::solve_landing`]); else `launched`, how the
+    /// row's launch was completed.
+    pub(super) fn direction_from(&self, launched: DirectionFrom) -> DirectionFrom {
+        (self.swing.as_ref())
+            .and_then(|s| s.direction_from)
+            .unwrap_or(launched)
+    }
+
+    /// Whether the row flies its solved swing's launch.
+    pub(super) fn swing_solved(&self) -> bool {
+        (self.swing.as_ref()).is_some_and(|s| s.solved().is_some())
+    }
+}
+
 impl RowSwing {
     /// The solved swing, if any.
     pub(super) fn solved(&self) -> Option<&SolvedSwing> {
