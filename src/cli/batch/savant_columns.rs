@@ -399,8 +399,7 @@ impl Summary {
     ) {
         self.estimated += usize::from(job.launch.estimates_spin());
         // A solved swing's direction is the impact's (aimed at the spray).
-        let swung = job.swing.as_ref().is_some_and(|s| s.solved().is_some());
-        if swung {
+        if job.swing_solved() {
         } else if job.launch.spray.is_some() {
             self.sprayed += 1;
             self.solve_flights += flights;
