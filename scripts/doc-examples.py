@@ -81,6 +81,9 @@ def screens(path, shots):
             continue
         # The second line: the first (the tab bar) may end short of the edge.
         same_size = [s for s in shots if len(s) == len(body) and len(s[1]) == len(body[1])]
+        if not same_size:
+            print(f"{path}: a screen of {len(body)} lines that no snapshot has; left as it is")
+            continue
         best = max(same_size, key=lambda s: difflib.SequenceMatcher(None, "\n".join(s), "\n".join(body)).ratio())
         blocks[k] = lines[0] + "\n" + "\n".join(best) + "\n"
         changed += 1

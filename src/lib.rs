@@ -16,6 +16,7 @@
 pub mod cli;
 
 pub use analysis;
+pub use batch;
 pub use model;
 pub use numerics;
 pub use picture;

@@ -96,9 +96,18 @@ pub enum Command {
         /// each row's home_team].
         #[arg(long, value_name = "PARK", requires = "batch")]
         park: Option<String>,
-        /// With --batch: write the closing summary on stdout after the rows.
+        /// With --batch: add the summary's tables to its lines on stderr.
         #[arg(long, requires = "batch")]
         summary: bool,
+        /// With --batch: read the file's COLUMN as NAME (a column name that
+        /// --batch --help lists, or a key of `homerun keys`), e.g. --column
+        /// launch_speed=EV; repeatable.
+        #[arg(long, value_name = "NAME=COLUMN", requires = "batch")]
+        column: Vec<String>,
+        /// With --batch: also write the summary as JSON to FILE (atomically),
+        /// its numbers in the units of --units.
+        #[arg(long, value_name = "FILE", requires = "batch")]
+        summary_file: Option<PathBuf>,
         /// With --batch: copy these input columns into the output, after the others.
         #[arg(long, value_name = "COLS", requires = "batch")]
         keep: Option<String>,
@@ -126,7 +135,7 @@ pub enum Command {
         #[command(flatten)]
         scene: SceneArgs,
         /// A CSV of launches, one flight per row (`-` for stdin); `--help` lists the columns read.
-        #[arg(long, value_name = "FILE", long_help = super::batch::columns_help())]
+        #[arg(long, value_name = "FILE", long_help = batch::columns_help())]
         batch: Option<String>,
         /// Print JSON instead of text (with --batch: one JSON object per line).
         #[arg(long)]
@@ -156,11 +165,21 @@ pub enum Command {
         /// parks line says so.
         #[arg(long, conflicts_with = "batch")]
         one_flight: bool,
-        /// With --batch: write the closing summary (rows flown and skipped, outcomes,
-        /// the error against hit_distance_sc) on stdout after the rows, not stderr,
-        /// followed by that error's medians by launch-angle band.
+        /// With --batch: add the summary's tables to its lines on stderr: the
+        /// error against hit_distance_sc by launch-angle band and by kind of
+        /// ball, and the swings by launch angle (stdout holds only the rows).
         #[arg(long, requires = "batch")]
         summary: bool,
+        /// With --batch: read the file's COLUMN as NAME (a column name that
+        /// --batch --help lists, or a key of `homerun keys`), e.g. --column
+        /// launch_speed=EV; repeatable.
+        #[arg(long, value_name = "NAME=COLUMN", requires = "batch")]
+        column: Vec<String>,
+        /// With --batch: also write the summary as JSON to FILE (atomically),
+        /// its numbers in the units of --units.
+        #[arg(long, value_name = "FILE", requires = "batch")]
+        summary_file: Option<PathBuf>,
+
         /// With --batch: copy these input columns into the output, after the
         /// others (comma-separated, e.g. player_name,game_date,events).
         #[arg(long, value_name = "COLS", requires = "batch")]
@@ -206,9 +225,14 @@ pub enum Command {
         #[arg(long, value_name = "WHAT", default_value = "landing")]
         spray: SprayArg,
         /// Fit each group of rows apart, one line a group: by a column's value
-        /// (game_year, home_team, …), or `month` (game_date's year and month).
-        #[arg(long, value_name = "COLUMN", conflicts_with = "save")]
+        /// (home_team, …), `month` (game_date's year and month, from
+        /// YYYY-MM-DD or M/D/YYYY) or `season` (game_year or season). With
+        /// --save NAME, one preset a group: NAME-<group>.
+        #[arg(long, value_name = "COLUMN")]
         by: Option<String>,
+        /// Read the file's COLUMN as NAME (as fly --batch --column); repeatable.
+        #[arg(long, value_name = "NAME=COLUMN")]
+        column: Vec<String>,
         /// Save the preset with the factors found as NAME in the presets folder.
         #[arg(long, value_name = "NAME")]
         save: Option<String>,

@@ -1,57 +1,76 @@
 //! `fly --batch` and `hit --batch` from their command lines: the setup
-//! each makes, then [`super::batch::run`].
+//! each makes, the input opened, the rows to stdout and the summary to
+//! stderr (and `--summary-file`), on the pipeline of [`batch`].
 
-use std::io::IsTerminal as _;
+use std::io::{IsTerminal as _, Write as _};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
-use super::shown::Shown;
-use super::{
-    Cli, Command, SceneArgs, SpinArg, UsageError, batch, checked_presets_dir, parks_dir, scene,
-};
-use crate::preset;
+use super::progress::{self, Work};
+use super::{Cli, Command, SceneArgs, SpinArg, UsageError, checked_presets_dir, parks_dir, scene};
+use crate::preset::{self, escape_cut};
+use batch::{Format, Setup, Shown};
 
 /// Runs `command` if it is a batch: `None` if it is not.
 pub(super) fn run(cli: &Cli, command: &Command) -> Option<Result<ExitCode, UsageError>> {
-    if let Command::Fly {
-        scene,
-        batch: Some(source),
-        json,
-        park,
-        keep,
-        spray,
-        own_air,
-        summary,
-        all_parks,
-        spin,
-        ..
-    } = command
-    {
-        let batch = BatchArgs::new(scene, source, (park, keep), *summary, *json);
-        return Some(run_batch(cli, &batch, |setup| {
-            setup.spray = (*spray).into();
-            // A batch flies each row once (a season in about a second); a
-            // park's own air is a flight a park, asked for.
-            setup.own_air = *own_air;
-            setup.all_parks = *all_parks;
-            setup.solve_swings = *spin == SpinArg::Swing;
-        }));
+    match command {
+        Command::Fly {
+            scene,
+            batch: Some(source),
+            json,
+            park,
+            keep,
+            spray,
+            own_air,
+            summary,
+            all_parks,
+            spin,
+            column,
+            summary_file,
+            ..
+        } => {
+            let args = BatchArgs {
+                scene,
+                source,
+                park: park.as_deref(),
+                keep: keep.as_deref(),
+                column,
+                summary: (*summary, summary_file.as_ref()),
+                json: *json,
+            };
+            Some(run_batch(cli, &args, |setup| {
+                setup.spray = (*spray).into();
+                setup.own_air = *own_air;
+                setup.all_parks = *all_parks;
+                setup.solve_swings = *spin == SpinArg::Swing;
+            }))
+        }
+        Command::Hit {
+            scene,
+            batch: Some(source),
+            json,
+            park,
+            keep,
+            summary,
+            column,
+            summary_file,
+        } => {
+            let args = BatchArgs {
+                scene,
+                source,
+                park: park.as_deref(),
+                keep: keep.as_deref(),
+                column,
+                summary: (*summary, summary_file.as_ref()),
+                json: *json,
+            };
+            Some(run_batch(cli, &args, |setup| {
+                setup.solve_swings = true;
+                setup.swing_columns = true;
+            }))
+        }
+        _ => None,
     }
-    if let Command::Hit {
-        scene,
-        batch: Some(source),
-        json,
-        park,
-        keep,
-        summary,
-    } = command
-    {
-        let batch = BatchArgs::new(scene, source, (park, keep), *summary, *json);
-        return Some(run_batch(cli, &batch, |setup| {
-            setup.solve_swings = true;
-            setup.swing_columns = true;
-        }));
-    }
-    None
 }
 
 /// What `fly --batch` and `hit --batch` share on their command lines.
@@ -60,47 +79,64 @@ struct BatchArgs<'a> {
     source: &'a str,
     park: Option<&'a str>,
     keep: Option<&'a str>,
-    summary: bool,
+    column: &'a [String],
+    /// `--summary` (the tables too) and `--summary-file`.
+    summary: (bool, Option<&'a PathBuf>),
     json: bool,
 }
 
-impl<'a> BatchArgs<'a> {
-    fn new(
-        scene: &'a SceneArgs,
-        source: &'a str,
-        (park, keep): (&'a Option<String>, &'a Option<String>),
-        summary: bool,
-        json: bool,
-    ) -> BatchArgs<'a> {
-        BatchArgs {
-            scene,
-            source,
-            park: park.as_deref(),
-            keep: keep.as_deref(),
-            summary,
-            json,
-        }
+/// The setup a command line gives: `--set`'s keys, `--park`'s park and
+/// `--column`'s mapping.
+pub(super) fn setup<'a>(
+    preset: &'a preset::Preset,
+    parks: &'a preset::parks::Parks,
+    (set, park, column): (&[String], Option<&str>, &[String]),
+) -> Result<Setup<'a>, UsageError> {
+    let mut setup = Setup::new(preset, parks);
+    setup.given(set);
+    if let Some(code) = park {
+        let named = super::parks::lookup(code, parks)?;
+        setup.park = parks.parks.iter().position(|p| std::ptr::eq(p, named));
+    }
+    for mapping in column {
+        let Some((name, column)) = mapping.split_once('=') else {
+            return Err(UsageError::Column {
+                mapping: escape_cut(mapping, 80),
+            });
+        };
+        setup
+            .mapping
+            .push((name.trim().to_owned(), column.trim().to_owned()));
+    }
+    Ok(setup)
+}
+
+/// `message` about `source`, as a batch's refusal.
+fn refused(source: &str, message: String) -> UsageError {
+    UsageError::Batch {
+        input: escape_cut(source, 200),
+        message,
     }
 }
 
-/// Runs a batch over `batch.source`, its setup made as the command line
+/// Runs a batch over `args.source`, its setup made as the command line
 /// says and then as `choose` sets it.
 fn run_batch(
     cli: &Cli,
-    batch: &BatchArgs,
-    choose: impl FnOnce(&mut batch::Setup),
+    args: &BatchArgs,
+    choose: impl FnOnce(&mut Setup),
 ) -> Result<ExitCode, UsageError> {
-    let preset = batch
+    let preset = args
         .scene
         .resolve(checked_presets_dir(cli)?.as_deref(), cli.units)?;
-    scene::check_path("--batch", batch.source)?;
+    scene::check_path("--batch", args.source)?;
+    if let Some(path) = args.summary.1 {
+        super::svg_file::check(path)?;
+    }
     let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
-    let mut setup = batch::Setup::for_command(&preset, &parks, &batch.scene.set, batch.park)?;
-    setup.summary_to_stdout = batch.summary;
-    if let Some(keep) = batch.keep {
-        setup.keep = keep
-            .split(',')
-            .map(|c| c.trim().to_owned())
+    let mut setup = setup(&preset, &parks, (&args.scene.set, args.park, args.column))?;
+    if let Some(keep) = args.keep {
+        setup.keep = (keep.split(',').map(|c| c.trim().to_owned()))
             .filter(|c| !c.is_empty())
             .collect();
     }
@@ -110,16 +146,41 @@ fn run_batch(
     let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
     let mut err = std::io::stderr().lock();
     let erase = err.is_terminal();
-    let outcome = batch::run(
-        &setup,
-        batch.source,
-        batch.json,
-        Shown(cli.units),
-        &mut batch::Sinks {
-            out: &mut out,
-            err: &mut err,
-            erase,
+    let mut note = |message: &str| {
+        let erase = if erase { "\r\x1b[K" } else { "" };
+        let _ = writeln!(err, "{erase}homerun: {message}");
+    };
+    let input = batch::open(args.source).map_err(|e| refused(args.source, e))?;
+    let shown = Shown(cli.units);
+    let format = Format {
+        json: args.json,
+        shown,
+    };
+    let work = Work {
+        what: if setup.swing_columns {
+            "hit --batch"
+        } else {
+            "fly --batch"
         },
-    )?;
+        steps: Some((progress::UNCOUNTED, "rows")),
+    };
+    let (outcome, tally) = progress::run(work, |p| {
+        let tick = || p.tick();
+        batch::fly_rows(&setup, input, format, &mut out, &mut note, &tick)
+    })
+    .map_err(|e| refused(args.source, e))?;
+    for line in tally.lines(&setup, shown) {
+        note(&line);
+    }
+    if args.summary.0 {
+        for table in tally.tables(shown) {
+            let _ = writeln!(std::io::stderr(), "{table}");
+        }
+    }
+    if let Some(path) = args.summary.1 {
+        let text = super::pretty(&tally.json(shown));
+        crate::preset::atomic_file::write(path, text.as_bytes())
+            .map_err(|e| refused(&path.display().to_string(), e.to_string()))?;
+    }
     Ok(ExitCode::from(outcome.exit_status()))
 }

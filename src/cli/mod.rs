@@ -3,9 +3,10 @@
 //! One file per command group; every table goes through [`table`].
 
 mod args;
-mod batch;
 mod batch_run;
 mod bench;
+mod calibrate;
+mod calibrate_impact;
 mod figure;
 mod fly;
 mod ground;
@@ -15,7 +16,8 @@ mod parks;
 mod presets;
 mod progress;
 mod scene;
-mod shown;
+pub(crate) use crate::analysis::shown;
+use shown::Shown;
 mod surface;
 mod svg_file;
 mod table;
@@ -31,7 +33,6 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use crate::preset::{self, Preset};
-use shown::Shown;
 
 pub use crate::preset::FIELD_KEYS;
 pub use optimize::MAX_STEPS;
@@ -45,13 +46,15 @@ pub use usage::{Parsed, error_line, parse};
 pub fn savant_swings(cli: &Cli, preset: &Preset, file: &str) -> Result<Vec<Preset>, UsageError> {
     scene::check_path("--savant", file)?;
     let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
-    let mut setup = batch::Setup::for_command(preset, &parks, &[], None)?;
+    let mut setup = batch_run::setup(preset, &parks, (&[], None, &[]))?;
     let failed = |message: String| UsageError::Savant {
         input: crate::preset::escape_cut(file, 200),
         message,
     };
+    let input = batch::open(file).map_err(failed)?;
+    let note = &mut |m: &str| eprintln!("homerun: {m}");
     let swings =
-        batch::swing_scenes::solved_swings(&mut setup, file, Shown(cli.units)).map_err(failed)?;
+        batch::swings::solved_swings(&mut setup, input, Shown(cli.units), note).map_err(failed)?;
     if swings.presets.is_empty() {
         return Err(failed(format!(
             "no swing solved in {} rows ({} tracked but not solved)",
@@ -105,6 +108,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         park,
         spray,
         by,
+        column,
         save,
         force,
         drag_only,
@@ -117,29 +121,40 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         let preset = scene.resolve(dir.as_deref(), cli.units)?;
         scene::check_path("calibrate", file)?;
         let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
-        let mut setup = batch::Setup::for_command(&preset, &parks, &scene.set, park.as_deref())?;
+        let mut setup = batch_run::setup(&preset, &parks, (&scene.set, park.as_deref(), column))?;
         setup.spray = (*spray).into();
-        setup.solve_swings = *spin == args::SpinArg::Swing;
-        let save = save.as_deref().map(|name| batch::calibrate::Save {
+        // The impact's fit reads bat tracking, as a swing's solve does.
+        setup.solve_swings = *spin == args::SpinArg::Swing || *impact;
+        let save = save.as_deref().map(|name| calibrate::Save {
             name,
             dir: dir.as_deref(),
             force: *force,
         });
-        let text = match by {
-            Some(by) => {
-                batch::calibrate::run_by(setup, file, by, !drag_only, *json, Shown(cli.units))?
-            }
-            None if *impact => {
-                let shown = Shown(cli.units);
-                batch::calibrate_impact::run(&setup, file, save, *json, shown)?
-            }
-            None => {
-                let shown = Shown(cli.units);
-                batch::calibrate::run(&setup, file, save, !drag_only, *json, shown)?
-            }
+        let shown = Shown(cli.units);
+        let text = match impact {
+            true => calibrate_impact::run(&setup, file, save, *json, shown)?,
+            false => calibrate::run(
+                &mut setup,
+                file,
+                (save, by.as_deref()),
+                !drag_only,
+                *json,
+                shown,
+            )?,
         };
-        print!("{text}");
-        return Ok(ExitCode::SUCCESS);
+        let mut stdout = std::io::stdout().lock();
+        // Groups' names are the file's: to a terminal, their controls escaped.
+        let text = match std::io::IsTerminal::is_terminal(&stdout) {
+            true => preset::json_for_terminal(&text).into_owned(),
+            false => text,
+        };
+        return match stdout
+            .write_all(text.as_bytes())
+            .and_then(|()| stdout.flush())
+        {
+            Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
+            _ => Ok(ExitCode::SUCCESS),
+        };
     }
     let svg = svg_target(command);
     // A folder that cannot take the file is refused before any work.

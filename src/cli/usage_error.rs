@@ -117,6 +117,8 @@ pub enum UsageError {
     LaunchSwept(&'static str),
     #[error("--batch {input}: {message}")]
     Batch { input: String, message: String },
+    #[error("--column {mapping}: expected NAME=COLUMN (e.g. launch_speed=EV)")]
+    Column { mapping: String },
     /// `calibrate FILE`'s file could not be read or fitted (named as given).
     #[error("calibrate {input}: {message}")]
     Calibrate { input: String, message: String },

@@ -191,12 +191,13 @@ fn calibrate_by_month_fits_each_month_as_its_rows_alone() {
     let alone: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(groups[2]["fit"]["drag_scale"], alone["fit"]["drag_scale"]);
     assert_eq!(groups[2]["rows"], alone["measured"]);
-    // --by with --save is refused: a group's factor is no preset's.
-    let (status, _, err) = homerun(
+    // --by with --save saves a preset a group, each fitted on its rows.
+    let (status, out, err) = homerun(
         dir.path(),
         &["calibrate", file, "--by", "month", "--save", "x"],
     );
-    assert_eq!(status, Some(2), "{err}");
+    assert_eq!(status, Some(0), "{err}");
+    assert!(out.contains("saved"), "{out}");
     // A column the file lacks is named.
     let (status, _, err) = homerun(dir.path(), &["calibrate", file, "--by", "nope"]);
     assert_eq!(status, Some(2), "{err}");

@@ -343,7 +343,17 @@ fn fly_and_the_same_launch_in_a_batch_print_the_same_numbers() {
     for launch in &launches {
         input += &(launch.map(|v| v.to_string()).join(",") + "\n");
     }
-    let (status, out, err) = batch(dir.path(), &input, &["--preset", "fly-ball"]);
+    // At no park a batch row is judged only at a fence given (the preset's
+    // [field] is the explorer's), here the one `fly` judges at.
+    let fence = [
+        "--set",
+        "field.fence_distance=121.9",
+        "--set",
+        "field.fence_height=3",
+    ];
+    let mut args = vec!["--preset", "fly-ball"];
+    args.extend(fence);
+    let (status, out, err) = batch(dir.path(), &input, &args);
     assert_eq!(status, Some(0), "{err}");
     for (launch, row) in launches.iter().zip(out.lines().skip(1)) {
         let sets: Vec<String> = keys
@@ -441,7 +451,9 @@ fn statcast_columns_are_converted_and_other_columns_ignored() {
     let si: Value = serde_json::from_str(out.trim()).unwrap();
     assert_eq!(statcast["launch"], si["launch"]);
     assert_eq!(statcast["flight"], si["flight"]);
-    assert_eq!(statcast["clears_fence"], true);
+    // At no park and no fence given: no verdict but a foul call.
+    assert_eq!(statcast["clears_fence"], Value::Null);
+    assert_eq!(statcast["fence"]["outcome"], "no_park");
     // Any other key as a column: no air, no lift, a vacuum parabola's carry.
     let input = "launch.speed,launch.angle,launch.spin,environment.air_density,model.lift\n\
                  40,0.6,300,0,none\n";

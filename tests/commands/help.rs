@@ -112,7 +112,7 @@ fn fly_help_lists_the_columns_the_batch_reads() {
     for statcast in ["launch_speed", "launch_angle", "spin_rpm"] {
         assert!(names.contains(&statcast), "{statcast} not in {names:?}");
     }
-    assert_eq!(columns.len(), 7, "{columns:?}");
+    assert_eq!(columns.len(), 10, "{columns:?}");
     let text = help(&["fly", "--help"]);
     assert!(text.contains("any other key of `homerun keys`"), "{text}");
     // Each column is read, in the unit the help gives.
@@ -129,8 +129,15 @@ fn fly_help_lists_the_columns_the_batch_reads() {
             "rpm" => std::f64::consts::PI / 30.0,
             other => panic!("{column}: unit {other}"),
         };
+        // The other launch value every row needs, given for every row.
+        let other = match key.as_str() {
+            "launch.speed" => vec!["--set", "launch.angle=0.3"],
+            "launch.angle" => vec!["--set", "launch.speed=30"],
+            _ => vec!["--set", "launch.angle=0.3", "--set", "launch.speed=30"],
+        };
         let output = homerun()
             .args(["fly", "--preset", "fly-ball", "--batch", "-"])
+            .args(&other)
             .write_stdin(format!("{column}\n{given}\n"))
             .output()
             .unwrap();

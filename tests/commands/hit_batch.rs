@@ -470,12 +470,15 @@ fn the_swings_line_speaks_the_units_asked_for() {
 /// docs/bat-tracking.md finds on April 2024.
 #[test]
 fn the_summary_gives_the_swings_by_launch_angle() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("summary.json");
     let (code, out, err) = run_homerun(
         &[
             "hit",
             "--batch",
             SAMPLE,
-            "--summary",
+            "--summary-file",
+            file.to_str().unwrap(),
             "--json",
             "--keep",
             "launch_angle",
@@ -483,8 +486,8 @@ fn the_summary_gives_the_swings_by_launch_angle() {
         None,
     );
     assert_eq!(code, Some(0), "{err}");
-    let lines = json_lines(&out);
-    let (summary, rows) = lines.split_last().unwrap();
+    let rows = json_lines(&out);
+    let summary: Value = serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
     let bands = summary["swings"].as_array().unwrap();
     assert_eq!(bands.len(), 7);
     let edges = [10.0, 20.0, 25.0, 30.0, 35.0, 50.0];
@@ -547,10 +550,10 @@ fn the_summary_gives_the_swings_by_launch_angle() {
     // the topped balls' (below 10°).
     let undercut = |k: usize| bands[k]["undercut"].as_f64().unwrap();
     assert!(undercut(6) > undercut(1) + 0.02 && undercut(1) > undercut(0) + 0.01);
-    // In text the table ends the output: its last band, no blank line.
-    let (_, out, _) = run_homerun(&["hit", "--batch", SAMPLE, "--summary"], None);
-    let last = out.lines().last().unwrap();
-    assert!(last.starts_with("50°+ ") && !out.ends_with("\n\n"), "{out}");
+    // In text the table ends stderr: its last band, no blank line.
+    let (_, _, err) = run_homerun(&["hit", "--batch", SAMPLE, "--summary"], None);
+    let last = err.lines().last().unwrap();
+    assert!(last.starts_with("50°+ ") && !err.ends_with("\n\n"), "{err}");
 }
 
 /// Without `swing_path_tilt` (2024's exports) a swing is solved at MLB's

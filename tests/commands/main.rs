@@ -16,6 +16,7 @@ mod hostile_files;
 mod optimize_park;
 mod parks;
 mod pictures;
+mod pipeline;
 mod presets_by_name;
 mod readme;
 mod start_up;

@@ -82,7 +82,8 @@ fn the_user_folders_come_from_the_environment_alone() {
     let rows = data.path().join("rows.csv");
     std::fs::write(
         &rows,
-        "launch_speed,launch_angle,hit_distance_sc\n105,28,400\n104,30,395\n106,27,405\n",
+        "launch_speed,launch_angle,hit_distance_sc\n105,28,400\n104,30,395\n106,27,405\n\
+         101,25,380\n99,31,370\n108,26,420\n103,29,398\n100,33,385\n107,24,404\n102,27,392\n",
     )
     .unwrap();
     let rows = rows.to_str().unwrap();

@@ -420,7 +420,10 @@ fn batch(presets: &Path, input: &str) -> (Option<i32>, String, String) {
 #[test]
 fn f7_every_record_line_is_counted() {
     let dir = tempfile::tempdir().unwrap();
-    let (status, out, err) = batch(dir.path(), "launch_speed,des\n \n\t\n\"\"\n100,x\n\n");
+    let (status, out, err) = batch(
+        dir.path(),
+        "launch_speed,launch_angle\n \n\t\n\"\"\n100,30\n\n",
+    );
     assert_eq!(status, Some(1), "{err}");
     assert_eq!(out.lines().count(), 2, "{out}");
     for line in 2..=4 {
@@ -436,8 +439,17 @@ fn f7_every_record_line_is_counted() {
         err.ends_with("homerun: 3 of 4 rows failed and were skipped (exit status 1)\n"),
         "{err}"
     );
-    // With one column, a line of spaces is a row whose launch is empty.
-    let (status, _, err) = batch(dir.path(), "launch_speed\n \n100\n");
+    // With one column (the angle given for every row), a line of spaces is
+    // a row whose launch is empty.
+    let output = common::assert_command()
+        .args(["fly", "--batch", "-", "--set", "launch.angle=0.4"])
+        .write_stdin("launch_speed\n \n100\n")
+        .output()
+        .unwrap();
+    let (status, err) = (
+        output.status.code(),
+        String::from_utf8(output.stderr).unwrap(),
+    );
     assert_eq!(status, Some(0), "{err}");
     assert!(
         err.contains("skipped 1 row without a launch speed (not batted balls)"),
@@ -517,7 +529,7 @@ fn f8_the_batch_notice_names_each_rows_own_swing_when_columns_change_it() {
     assert_eq!(status, Some(0), "{err}");
     assert!(
         err.contains(
-            "no launch.speed or launch_speed or exit_speed column: each row's launch.speed comes from its own swing (column bat.speed)"
+            "no launch.speed column: each row's launch.speed comes from its own swing (column bat.speed)"
         ) && !err.contains("every row takes"),
         "{err}"
     );
@@ -528,10 +540,12 @@ fn f8_the_batch_notice_names_each_rows_own_swing_when_columns_change_it() {
         .map(|l| l.split(',').nth(1).unwrap().parse().unwrap())
         .collect();
     assert!(speeds[1] > speeds[0] + 4.0, "{out}");
-    // Without such a column, every row takes the preset's swing's launch.
-    let (_, _, err) = batch(dir.path(), "launch.angle\n0.3\n");
+    // Without such a column every row would take the preset's one swing's
+    // launch, which no one means (issue 35): refused, naming the columns.
+    let (status, out, err) = batch(dir.path(), "launch.angle\n0.3\n");
+    assert_eq!((status, out.as_str()), (Some(2), ""));
     assert!(
-        err.contains("no launch.speed or launch_speed or exit_speed column: every row takes preset fastball's launch.speed = 44.29906800990522"),
+        err.contains("no launch speed column (looked for launch_speed, exit_speed"),
         "{err}"
     );
 }

@@ -335,23 +335,27 @@ fn a_savant_batch_prints_its_units_and_one_summary() {
         summary[0]
     );
     assert!(summary[0].ends_with(" ft"), "{}", summary[0]);
+    // stdout holds the rows alone; the summary and its tables go to stderr.
     let (out, err) = run(&["fly", "--park", "BOS", "--summary", "--batch", file]);
-    assert!(!err.contains("summary:"), "{err}");
-    let at = out.lines().position(|l| l.starts_with("summary:")).unwrap();
-    let lines: Vec<&str> = out.lines().collect();
-    let last = lines[at];
-    assert!(last.starts_with("summary: flown 248 rows"), "{last}");
-    assert!(last.ends_with(" m"), "{last}");
+    assert!(!out.contains("summary:"), "{out}");
+    let rows_out: Vec<&str> = out.lines().collect();
+    let lines: Vec<&str> = err.lines().collect();
+    let summary = lines.iter().find(|l| l.contains("summary: flown")).unwrap();
+    assert!(
+        summary.starts_with("homerun: summary: flown 248 rows"),
+        "{summary}"
+    );
+    assert!(summary.ends_with(" m"), "{summary}");
     // Issue 26, item 4: then the error by launch-angle band, each band's
     // median the median of its rows' `difference`.
-    assert_eq!(
-        lines[at + 1],
-        "by launch angle, model − hit_distance_sc (m):"
-    );
-    let header: Vec<&str> = lines[0].split(',').collect();
+    let at = (lines.iter())
+        .position(|l| *l == "by launch angle, model − hit_distance_sc (m):")
+        .unwrap()
+        - 1;
+    let header: Vec<&str> = rows_out[0].split(',').collect();
     let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
     let (angle, difference) = (column("launch.angle"), column("difference"));
-    let rows: Vec<(f64, f64)> = (lines[1..at].iter())
+    let rows: Vec<(f64, f64)> = (rows_out[1..].iter())
         .map(|l| l.split(',').collect::<Vec<&str>>())
         .filter(|cells| !cells[difference].is_empty())
         .map(|cells| {

@@ -225,7 +225,11 @@ fn batch_cells_take_units_and_statcast_columns_keep_theirs() {
     // (issue 26): the same launch either way; a word is still no number.
     let units = flown("launch_speed,launch_angle,spin_rpm\n103mph,28deg,2500rpm\n");
     assert_eq!(units[0], statcast[0]);
-    let output = homerun(dir.path(), &["fly", "--batch", "-"], "launch_speed\nfast\n");
+    let output = homerun(
+        dir.path(),
+        &["fly", "--batch", "-"],
+        "launch_speed,launch_angle\nfast,30\n",
+    );
     assert_eq!(output.status.code(), Some(1));
     assert!(
         String::from_utf8_lossy(&output.stderr).contains("launch_speed = \"fast\": not a number"),

@@ -500,9 +500,15 @@ impl Problem {
                 return Ok([undercut, psi, direction]);
             }
         }
-        Err(Unreached::TooSlow {
-            shortfall: speed - least,
-        })
+        // No end of the range defined (a steep swing tilted as steeply): no
+        // speed is told short, only the angle unreached (never an infinite
+        // shortfall).
+        match least.is_finite() {
+            true => Err(Unreached::TooSlow {
+                shortfall: speed - least,
+            }),
+            false => Err(Unreached::Angle),
+        }
     }
 
     /// A start for E and V̂_B0: the exit speed is near linear in the bat's

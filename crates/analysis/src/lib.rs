@@ -16,4 +16,5 @@ pub mod paper;
 pub mod precision;
 pub mod savant;
 pub mod sensitivity;
+pub mod shown;
 pub mod study;

@@ -5,6 +5,7 @@
 pub mod nelder_mead;
 pub mod ode;
 pub mod quadrature;
+pub mod quantile;
 pub mod real;
 pub mod roots;
 // For the tests of every crate above.

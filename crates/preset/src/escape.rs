@@ -52,6 +52,25 @@ fn cut_pieces(text: &str, max: usize, escape: fn(char) -> bool) -> String {
     out
 }
 
+/// JSON text for a terminal: each character [`needs_escape`] names, which
+/// serde_json writes as it is (DEL, C1, bidi and zero-width controls; C0
+/// it escapes already), written as its `\uXXXX` escape instead, which
+/// JSON reads back as the same character: the value is unchanged.
+pub fn json_for_terminal(json: &str) -> std::borrow::Cow<'_, str> {
+    if !json.chars().any(needs_escape) {
+        return json.into();
+    }
+    let mut out = String::with_capacity(json.len() + 16);
+    for c in json.chars() {
+        match needs_escape(c) && c != '\n' {
+            // Every such character lies in the Basic Multilingual Plane.
+            true => out += &format!("\\u{:04x}", c as u32),
+            false => out.push(c),
+        }
+    }
+    out.into()
+}
+
 /// Whether `c` is escaped: a control character (C0, DEL, C1), a
 /// bidirectional control (U+061C, U+200E/F, U+202A–E, U+2066–9), a line or
 /// paragraph separator, or an invisible format character (zero-width
@@ -80,6 +99,15 @@ mod tests {
         // Nothing escaped: the caller quotes it with its own escapes.
         assert_eq!(cut("a\x1bb", 80), "a\x1bb");
         assert_eq!(escape_cut("a\x1bb", 80), "a\\u{1b}b");
+    }
+
+    #[test]
+    fn json_for_a_terminal_escapes_what_it_must_and_reads_back_the_same() {
+        let json = "{\"a\":\"x\u{9b}31m\u{202e}\u{7f}\u{200b}y\"}\n";
+        let escaped = json_for_terminal(json);
+        assert_eq!(escaped, "{\"a\":\"x\\u009b31m\\u202e\\u007f\\u200by\"}\n");
+        assert!(!escaped.chars().any(|c| needs_escape(c) && c != '\n'));
+        assert_eq!(json_for_terminal("{\"a\":1}"), "{\"a\":1}");
     }
 
     #[test]

@@ -15,7 +15,9 @@ mod field;
 mod file;
 pub mod parks;
 
-pub use escape::{cut, escape_cut, escape_for_terminal, escape_text, needs_escape};
+pub use escape::{
+    cut, escape_cut, escape_for_terminal, escape_text, json_for_terminal, needs_escape,
+};
 pub use field::{FIELD_KEYS, FieldKey};
 pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};

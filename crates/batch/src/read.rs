@@ -5,7 +5,60 @@
 //! Python's `csv` module counts them (`reader.line_num`): each `\r\n`, `\n`
 //! or `\r`, inside quotes too.
 
-use std::io::{self, BufRead};
+use std::io::{self, BufRead, Read as _};
+
+/// Opens `source` (`-` for stdin) to be read as it comes: gzip (a
+/// `.csv.gz`, pybaseball's cache, or gzip on stdin, known by its magic
+/// bytes) decompressed on the way, a byte-order mark dropped however the
+/// bytes arrive, and formats that are no CSV refused by name.
+pub fn open(source: &str) -> Result<Box<dyn BufRead>, String> {
+    let input: Box<dyn io::Read> = match source {
+        "-" => Box::new(io::stdin().lock()),
+        path => Box::new(std::fs::File::open(path).map_err(|e| e.to_string())?),
+    };
+    let (first, rest) = peek(input, 4)?;
+    let input = Box::new(io::Cursor::new(first.clone()).chain(rest));
+    let input: Box<dyn io::Read> = match first.as_slice() {
+        [0x1f, 0x8b, ..] => Box::new(flate2::read::MultiGzDecoder::new(input)),
+        b"PAR1" => {
+            return Err(
+                "a Parquet file, not CSV text: write it as CSV first (pandas: \
+                        pd.read_parquet(f).to_csv(\"out.csv\", index=False))"
+                    .to_owned(),
+            );
+        }
+        [0x50, 0x4b, 3, 4] => {
+            return Err("a zip archive, not CSV text: unzip it first".to_owned());
+        }
+        _ => input,
+    };
+    let (first, rest) = peek(input, 3)?;
+    let input: Box<dyn io::Read> = match first.as_slice() {
+        b"\xef\xbb\xbf" => rest,
+        _ => Box::new(io::Cursor::new(first).chain(rest)),
+    };
+    Ok(Box::new(io::BufReader::with_capacity(
+        MAX_RECORD_BYTES,
+        input,
+    )))
+}
+
+/// The first `n` bytes of `input` (fewer at its end), however few each read
+/// gives (a pipe may give one at a time), and the input after them.
+fn peek(mut input: Box<dyn io::Read>, n: usize) -> Result<(Vec<u8>, Box<dyn io::Read>), String> {
+    let mut first = vec![0; n];
+    let mut got = 0;
+    while got < n {
+        match input.read(&mut first[got..]) {
+            Ok(0) => break,
+            Ok(read) => got += read,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(format!("reading the input: {e}")),
+        }
+    }
+    first.truncate(got);
+    Ok((first, input))
+}
 
 /// The longest record read, in bytes as they come: a 90-column Statcast
 /// row is ~1 KB. A longer one is skipped, read to its end without keeping
@@ -13,7 +66,7 @@ use std::io::{self, BufRead};
 pub const MAX_RECORD_BYTES: usize = 64 * 1024;
 
 /// Why reading stopped before the end.
-pub(super) enum Stop {
+pub enum Stop {
     Io(io::Error),
     /// A NUL byte on this line: binary data, not CSV text.
     Binary(usize),
@@ -33,13 +86,13 @@ impl std::fmt::Display for Stop {
 /// A record read: the line it starts on, and whether it was too long (its
 /// fields then not kept).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) struct Read {
+pub struct Read {
     pub line: usize,
     pub too_long: bool,
 }
 
 /// Reads records, keeping at most [`MAX_RECORD_BYTES`] of one.
-pub(super) struct Records<R> {
+pub struct Records<R> {
     input: R,
     core: csv_core::Reader,
     /// Line ends read so far, and whether the last byte read was a `\r`
@@ -59,7 +112,7 @@ pub(super) struct Records<R> {
 }
 
 impl<R: BufRead> Records<R> {
-    pub(super) fn new(input: R) -> Self {
+    pub fn new(input: R) -> Self {
         Records {
             input,
             core: csv_core::Reader::new(),
@@ -76,7 +129,7 @@ impl<R: BufRead> Records<R> {
     /// ends (from the record's start) to `ends`; `None` at the end. With
     /// `read_past_long` false, a record too long is given up at once (the
     /// header: nothing useful follows, and a line-less input may not end).
-    pub(super) fn next(
+    pub fn next(
         &mut self,
         bytes: &mut Vec<u8>,
         ends: &mut Vec<usize>,
@@ -182,21 +235,21 @@ fn count(lines: &mut usize, after_cr: &mut bool, bytes: &[u8]) -> Result<(), usi
 /// A record's fields as text: each a slice of the record where it is
 /// UTF-8, else as `String::from_utf8_lossy` makes it.
 #[derive(Clone, Copy)]
-pub(super) struct Fields<'a> {
+pub struct Fields<'a> {
     text: &'a str,
     ends: &'a [usize],
 }
 
 /// Where [`Fields::of`] rebuilds a record that is not UTF-8, reused.
 #[derive(Default)]
-pub(super) struct Lossy {
+pub struct Lossy {
     text: String,
     ends: Vec<usize>,
 }
 
 impl<'a> Fields<'a> {
     /// The fields of a record of `bytes` ending at `ends`.
-    pub(super) fn of(bytes: &'a [u8], ends: &'a [usize], lossy: &'a mut Lossy) -> Fields<'a> {
+    pub fn of(bytes: &'a [u8], ends: &'a [usize], lossy: &'a mut Lossy) -> Fields<'a> {
         if let Ok(text) = std::str::from_utf8(bytes)
             && ends.iter().all(|&end| text.is_char_boundary(end))
         {
@@ -216,16 +269,16 @@ impl<'a> Fields<'a> {
         }
     }
 
-    pub(super) fn len(&self) -> usize {
+    pub fn len(&self) -> usize {
         self.ends.len()
     }
 
-    pub(super) fn get(&self, index: usize) -> &'a str {
+    pub fn get(&self, index: usize) -> &'a str {
         let start = if index == 0 { 0 } else { self.ends[index - 1] };
         &self.text[start..self.ends[index]]
     }
 
-    pub(super) fn iter(&self) -> impl Iterator<Item = &'a str> + '_ {
+    pub fn iter(&self) -> impl Iterator<Item = &'a str> + '_ {
         (0..self.len()).map(|i| self.get(i))
     }
 }

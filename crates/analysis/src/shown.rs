@@ -1,12 +1,12 @@
-//! Numbers as the command line prints them, in the units `--units` asks for.
-//! The conversions themselves are [`crate::units`]'; here is only how a
+//! Numbers as the frontends print them, in the units `--units` asks for.
+//! The conversions themselves are [`units`]'; here is only how a
 //! converted value is written. In SI every helper writes exactly what the
 //! commands wrote before `--units` existed.
 
-use crate::analysis::landing;
-use crate::model::flight::FlightSummary;
-use crate::model::keys::{Bounds, Key};
-use crate::units::{Quantity, Unit, UnitSystem};
+use crate::landing;
+use model::flight::FlightSummary;
+use model::keys::{Bounds, Key};
+use units::{Quantity, Unit, UnitSystem};
 
 /// The unit system text is printed in.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -172,12 +172,12 @@ fn spaced(symbol: &str) -> String {
 
 // A converted value, short: at most three decimals, no trailing zeros
 // (223.694, 90, -58); the figures write theirs so too.
-pub use crate::analysis::figures::short;
+pub use crate::figures::short;
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::scene::Scene;
+    use model::scene::Scene;
 
     const SI: Shown = Shown(UnitSystem::Si);
     const IMPERIAL: Shown = Shown(UnitSystem::Imperial);

@@ -4,30 +4,27 @@
 //! rows is the data's ([`bat_tracking::fit_effective_mass`];
 //! docs/bat-tracking.md).
 
-use std::io::BufRead;
-
 use super::calibrate::{Save, failed, read_source, save_fitted};
-use super::read::{Fields, Lossy, Records};
-use super::rows::{Header, Row, parse_row};
-use super::savant_columns::Setup;
-use crate::analysis::bat_tracking::{self, ImpactFit, TrackedSwing};
+use crate::analysis::bat_tracking::{self, ImpactFit};
 use crate::cli::UsageError;
-use crate::cli::shown::Shown;
 use crate::preset::escape_cut;
 use crate::units::Quantity;
+use batch::{Setup, Shown};
 
 /// The quantile of q matched.
 const QUANTILE: f64 = 0.99;
 
 /// Runs the fit on `source` ("-" for stdin): the text (or JSON) to print.
-pub(in crate::cli) fn run(
+pub(super) fn run(
     setup: &Setup,
     source: &str,
     save: Option<Save>,
     json: bool,
     shown: Shown,
 ) -> Result<String, UsageError> {
-    let swings = read_source(source, save.as_ref(), |input| read(setup, input))?;
+    let (swings, outcome) = read_source(source, save.as_ref(), |input| {
+        batch::calibrate::tracked_swings(setup, input, &mut |m| eprintln!("homerun: {m}"))
+    })?;
     let base = &setup.base.scene;
     let fit = bat_tracking::fit_effective_mass(base, &swings, QUANTILE).ok_or_else(|| {
         let message = "no row has a tracked swing (bat_speed and the pitch's kinematics)";
@@ -52,13 +49,23 @@ pub(in crate::cli) fn run(
         scene.bat.effective_mass = fit.effective_mass;
     })?;
     if json {
-        let mut value = serde_json::json!({ "impact": fit, "at_bound": at_bound });
+        let mut value = serde_json::json!({ "impact": fit, "at_bound": at_bound,
+            "failed": outcome.failed, "without_launch": outcome.without_launch });
         if let Some(path) = &saved {
             value["saved"] = path.display().to_string().into();
         }
-        return Ok(super::super::pretty(&value));
+        return Ok(super::pretty(&value));
     }
-    Ok(text(&fit, saved.as_deref(), shown))
+    let mut text = text(&fit, saved.as_deref(), shown);
+    if outcome.failed + outcome.without_launch > 0 {
+        text += &format!(
+            "skipped {} rows: {} failed (named above), {} without a launch speed\n",
+            outcome.failed + outcome.without_launch,
+            outcome.failed,
+            outcome.without_launch
+        );
+    }
+    Ok(text)
 }
 
 fn text(fit: &ImpactFit, saved: Option<&std::path::Path>, shown: Shown) -> String {
@@ -108,56 +115,4 @@ fn text(fit: &ImpactFit, saved: Option<&std::path::Path>, shown: Shown) -> Strin
         text += &format!("saved {}\n", path.display());
     }
     text
-}
-
-/// Every row's tracked swing (rows without one, or bad, are left out).
-fn read(setup: &Setup, input: impl BufRead) -> Result<Vec<TrackedSwing>, String> {
-    let mut records = Records::new(input);
-    let (mut bytes, mut ends) = (Vec::new(), Vec::new());
-    let mut lossy = Lossy::default();
-    let mut header = match records.next(&mut bytes, &mut ends, false) {
-        Ok(Some(_)) => {
-            let names = Fields::of(&bytes, &ends, &mut lossy)
-                .iter()
-                .map(|n| n.trim_start_matches('\u{feff}').to_owned())
-                .collect();
-            Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?
-        }
-        Ok(None) => return Err("the input is empty".to_owned()),
-        Err(stop) => return Err(stop.to_string()),
-    };
-    header
-        .read_swings()
-        .map_err(|e| format!("line 1 (the header): {e}"))?;
-    let mut jobs = Vec::new();
-    let mut swings = Vec::new();
-    loop {
-        bytes.clear();
-        ends.clear();
-        let read = match records.next(&mut bytes, &mut ends, true) {
-            Ok(Some(read)) => read,
-            Ok(None) => break,
-            Err(stop) => return Err(stop.to_string()),
-        };
-        if read.too_long {
-            continue;
-        }
-        let fields = Fields::of(&bytes, &ends, &mut lossy);
-        jobs.clear();
-        if let Row::Job = parse_row(&header, setup, (read.line, fields), None, &mut jobs) {
-            let job = &jobs[0];
-            let launch = job.scene.launch;
-            let measured = (
-                launch.speed.unwrap_or(f64::NAN),
-                launch.angle.unwrap_or(f64::NAN),
-            );
-            if let Ok(swing) = job
-                .tracked
-                .swing(measured, job.launch.spray, job.launch.side)
-            {
-                swings.push(swing);
-            }
-        }
-    }
-    Ok(swings)
 }

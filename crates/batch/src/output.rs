@@ -3,21 +3,17 @@
 //! (serde's).
 
 use std::collections::BTreeMap;
-use std::fmt::Write as _;
 use std::io::Write as _;
 
 use serde::Serialize;
 
-use super::flights::RowFlight;
-use super::kinds::KindTally;
-use super::plural;
-use super::rows::Job;
-use super::savant_columns::{Setup, quoted};
-use crate::analysis::calibrate::{BAND_EDGES, band_of};
-use crate::cli::shown::Shown;
-use crate::model::clearing::Clearing;
-use crate::preset::escape_cut;
-use crate::units::Quantity;
+use crate::flights::{RowFlight, Scratch};
+use crate::row::Job;
+use crate::setup::{Setup, quoted};
+use analysis::shown::Shown;
+use model::clearing::Clearing;
+use preset::escape_cut;
+use units::Quantity;
 
 /// The output's columns, in order: then [`STATCAST_COLUMNS`] when the input
 /// has Statcast's distance, then `--keep`'s.
@@ -73,8 +69,8 @@ const STATCAST_COLUMNS: [(&str, Quantity); 2] = [
 ];
 
 /// The CSV header line.
-pub(super) fn csv_header(statcast: bool, setup: &Setup, shown: Shown) -> String {
-    let swing = super::swing_columns::CSV_COLUMNS
+pub(crate) fn csv_header(statcast: bool, setup: &Setup, shown: Shown) -> String {
+    let swing = crate::swing::CSV_COLUMNS
         .iter()
         .copied()
         .filter(|_| setup.swing_columns);
@@ -101,30 +97,78 @@ pub(super) fn csv_header(statcast: bool, setup: &Setup, shown: Shown) -> String 
             ));
         }
     }
-    names.extend(setup.keep.iter().map(|n| quoted(n)));
+    for kept in &setup.keep {
+        // A kept column named as one of the output's own is told apart.
+        let name = match names.iter().any(|n| n == kept) {
+            true => format!("kept.{kept}"),
+            false => kept.clone(),
+        };
+        names.push(quoted(&name));
+    }
     names.join(",") + "\n"
 }
 
-/// The `park` of a row at no park.
+/// The `park` of a row at the preset's own fence (`[field]`, `field.*`),
+/// and of a row at no park and no fence: no verdict is given there.
 const GENERIC: &str = "generic";
+const NO_PARK: &str = "none";
 
-/// The row's park code, or "generic".
+/// The row's park code, "generic" or "none".
 fn park_code<'a>(job: &Job, setup: &Setup<'a>) -> &'a str {
-    job.park
-        .map_or(GENERIC, |i| setup.parks.parks[i].code.as_str())
+    match job.park {
+        Some(i) => setup.parks.parks[i].code.as_str(),
+        None if job.fence_given => GENERIC,
+        None => NO_PARK,
+    }
 }
 
-/// The model's range less Statcast's distance (m), if both are known.
-fn difference(job: &Job, flown: &RowFlight) -> Option<f64> {
-    let flight = &flown.flight;
-    job.statcast
-        .filter(|_| flight.landed)
-        .map(|measured| flight.range - measured)
+/// The row's outcome: at no park and no fence only a foul ball is called.
+fn outcome_name(job: &Job, clearing: &Clearing) -> &'static str {
+    match clearing.outcome {
+        model::clearing::Outcome::Foul => clearing.outcome.name(),
+        _ if !job.fence_known() => "no_park",
+        outcome => outcome.name(),
+    }
+}
+
+/// What the output prints of a row.
+#[derive(Clone, Copy)]
+pub(crate) struct Printed {
+    pub shown: Shown,
+    /// The `difference` column (range less Statcast's) is printed.
+    pub statcast: bool,
+    pub json: bool,
+}
+
+/// Appends the row's CSV or JSON line.
+pub(crate) fn write_row(
+    out: &mut Vec<u8>,
+    (job, flown): (&Job, &RowFlight),
+    scratch: &Scratch,
+    setup: &Setup,
+    printed: Printed,
+) {
+    let parks = setup.parks.parks.len();
+    let judged = match setup.all_parks {
+        true => &scratch.clearings[flown.cleared_from..][..parks],
+        false => &[],
+    };
+    if printed.json {
+        let cleared = &scratch.cleared[flown.cleared_from..][..parks];
+        json_line(out, (job, flown), (cleared, judged), setup, printed.shown);
+    } else {
+        let csv = CsvLine {
+            setup,
+            shown: printed.shown,
+            statcast: printed.statcast,
+        };
+        csv.write(out, job, flown, judged);
+    }
 }
 
 /// Writes a row's CSV line: its numbers, in the units shown, to the
 /// decimals `fly --batch` has always printed.
-pub(super) struct CsvLine<'a> {
+pub(crate) struct CsvLine<'a> {
     pub setup: &'a Setup<'a>,
     pub shown: Shown,
     pub statcast: bool,
@@ -133,7 +177,7 @@ pub(super) struct CsvLine<'a> {
 impl CsvLine<'_> {
     /// A number of `quantity` to `si_decimals` in SI (about as fine in
     /// the other system), and its comma; nothing for none.
-    pub(super) fn number(
+    pub(crate) fn number(
         &self,
         out: &mut Vec<u8>,
         quantity: Quantity,
@@ -160,7 +204,7 @@ impl CsvLine<'_> {
     }
 
     /// `judged`: with `--all-parks`, the row at each park, else empty.
-    pub(super) fn write(
+    pub(crate) fn write(
         &self,
         out: &mut Vec<u8>,
         job: &Job,
@@ -173,7 +217,7 @@ impl CsvLine<'_> {
         };
         let _ = write!(out, "{},", job.line);
         if self.setup.swing_columns {
-            super::swing_columns::write_csv(self, out, job);
+            crate::swing::write_csv(self, out, job);
         }
         number(out, Quantity::Speed, Some(launch.speed), 4);
         number(out, Quantity::Angle, Some(launch.angle), 6);
@@ -187,15 +231,21 @@ impl CsvLine<'_> {
         number(out, Quantity::Distance, Some(flight.apex), 3);
         number(out, Quantity::Angle, Some(flight.landing_angle), 4);
         let park = job.park.map(|i| self.setup.code_fields[i].as_str());
+        let known = job.fence_known();
         let _ = write!(
             out,
             "{},{},{},{},",
             flight.landed,
-            flown.clearing.clears(),
-            park.unwrap_or(GENERIC),
-            flown.clearing.outcome.name()
+            if known {
+                flown.clearing.clears().to_string()
+            } else {
+                String::new()
+            },
+            park.unwrap_or(park_code(job, self.setup)),
+            outcome_name(job, &flown.clearing)
         );
-        number(out, Quantity::Distance, flown.clearing.margin, 3);
+        let margin = flown.clearing.margin.filter(|_| known);
+        number(out, Quantity::Distance, margin, 3);
         let _ = write!(
             out,
             "{},{},{}",
@@ -204,7 +254,7 @@ impl CsvLine<'_> {
             flown.direction_from.name()
         );
         if self.statcast {
-            for value in [job.statcast, difference(job, flown)] {
+            for value in [job.statcast, flown.difference(job)] {
                 out.push(b',');
                 number(out, Quantity::Distance, value, 2);
                 out.pop();
@@ -235,7 +285,7 @@ struct JsonLine<'a> {
     /// With `--all-parks`: the row at each park.
     #[serde(skip_serializing_if = "Option::is_none")]
     all_parks: Option<Vec<AtParkJson<'a>>>,
-    clears_fence: bool,
+    clears_fence: Option<bool>,
     direction_from: &'static str,
     fence: FenceJson<'a>,
     flight: FlightJson,
@@ -303,7 +353,7 @@ struct LaunchJson {
     spin: f64,
 }
 
-use super::swing_columns::{ImpactJson, PitchJson, SwingJson};
+use crate::swing::{ImpactJson, PitchJson, SwingJson};
 
 #[derive(Serialize)]
 struct ParksJson<'a> {
@@ -318,15 +368,16 @@ struct StatcastJson {
 }
 
 /// Appends a row's JSON line.
-pub(super) fn json_line(
+fn json_line(
     out: &mut Vec<u8>,
-    job: &Job,
-    flown: &RowFlight,
+    (job, flown): (&Job, &RowFlight),
     (cleared, judged): (&[bool], &[Clearing]),
     setup: &Setup,
+    shown: Shown,
 ) {
+    let known = job.fence_known();
     let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.clearing);
-    let swing = super::swing_columns::json_parts(job);
+    let swing = crate::swing::json_parts(job);
     let parks = setup.parks.parks.iter().zip(cleared);
     let line = JsonLine {
         all_parks: setup.all_parks.then(|| {
@@ -338,14 +389,14 @@ pub(super) fn json_line(
                 })
                 .collect()
         }),
-        clears_fence: fence.clears(),
+        clears_fence: known.then(|| fence.clears()),
         fence: FenceJson {
             direction: fence.direction,
-            distance: fence.wall.map(|w| w.distance),
-            height: fence.wall.map(|w| w.height),
-            height_at_fence: fence.height_at_fence,
-            margin: fence.margin,
-            outcome: fence.outcome.name(),
+            distance: fence.wall.filter(|_| known).map(|w| w.distance),
+            height: fence.wall.filter(|_| known).map(|w| w.height),
+            height_at_fence: fence.height_at_fence.filter(|_| known),
+            margin: fence.margin.filter(|_| known),
+            outcome: outcome_name(job, fence),
             park: park_code(job, setup),
         },
         flight: FlightJson {
@@ -384,185 +435,69 @@ pub(super) fn json_line(
         spin_estimated: job.launch.estimates_spin(),
         direction_from: flown.direction_from.name(),
         statcast: job.statcast.map(|distance| StatcastJson {
-            difference: difference(job, flown),
+            difference: flown.difference(job),
             distance,
         }),
     };
     // Into a Vec, serde_json cannot fail.
-    let _ = serde_json::to_writer(&mut *out, &line);
+    let start = out.len();
+    if shown.is_si() {
+        let _ = serde_json::to_writer(&mut *out, &line);
+    } else {
+        let mut value = serde_json::to_value(&line).unwrap_or_default();
+        in_units(&mut value, shown);
+        let _ = serde_json::to_writer(&mut *out, &value);
+    }
+    // To a terminal, the kept cells' controls and bidi characters as JSON
+    // escapes (the same values).
+    if setup.escape_kept {
+        let text = String::from_utf8_lossy(&out[start..]).into_owned();
+        if let std::borrow::Cow::Owned(escaped) = preset::json_for_terminal(&text) {
+            out.truncate(start);
+            out.extend_from_slice(escaped.as_bytes());
+        }
+    }
     out.push(b'\n');
 }
 
-/// What a batch's rows came to, for the one summary at its end: the
-/// outcomes at each row's park, and the model's range less Statcast's
-/// distance where the row has one.
-#[derive(Clone, Debug, Default)]
-pub(super) struct Tally {
-    /// Clears, off the wall, short, foul.
-    pub outcomes: [usize; 4],
-    /// Launch angle (rad) and model − Statcast (m), one a row that has both.
-    pub differences: Vec<(f64, f64)>,
-    /// The same by kind of ball, and the home runs' verdicts.
-    pub kinds: KindTally,
-}
-
-/// The summary's table looks at the model's error by launch-angle band, as
-/// docs/accuracy.md does (a tilt by launch angle shows there, not in one
-/// median): below 10°, then `calibrate`'s bands of balls in the air.
-pub(super) const BANDS: usize = BAND_EDGES.len() + 1;
-
-/// The summary's band of a launch angle (rad): 0 below the first edge,
-/// band k from edge k − 1.
-pub(super) fn band_index(angle: f64) -> usize {
-    band_of(angle).map_or(0, |b| b + 1)
-}
-
-/// Band `band`'s launch angles (°): from (none for the lowest) up to (none
-/// for the highest).
-pub(super) fn band_bounds(band: usize) -> (Option<f64>, Option<f64>) {
-    (
-        band.checked_sub(1).map(|k| BAND_EDGES[k]),
-        BAND_EDGES.get(band).copied(),
-    )
-}
-
-/// A band's name in a table: "< 10°", "10–20°", "50°+".
-pub(super) fn band_name((from, to): (Option<f64>, Option<f64>)) -> String {
-    match (from, to) {
-        (None, Some(to)) => format!("< {to}°"),
-        (Some(from), None) => format!("{from}°+"),
-        (Some(from), Some(to)) => format!("{from}–{to}°"),
-        (None, None) => String::from("all"),
-    }
-}
-
-/// One band's rows, median difference and median |difference| (m).
-#[derive(Serialize)]
-pub(super) struct Band {
-    /// From this launch angle (°, none for the lowest band) up to `to`.
-    from: Option<f64>,
-    to: Option<f64>,
-    rows: usize,
-    median: Option<f64>,
-    median_abs: Option<f64>,
-}
-
-impl Tally {
-    pub(super) fn count(&mut self, job: &Job, flown: &RowFlight) {
-        use crate::model::clearing::Outcome;
-        let at = match flown.clearing.outcome {
-            Outcome::Clears => 0,
-            Outcome::OffTheWall => 1,
-            Outcome::Short => 2,
-            Outcome::Foul => 3,
-        };
-        self.outcomes[at] += 1;
-        let angle = flown.launch.angle;
-        let difference = difference(job, flown);
-        self.differences.extend(difference.map(|d| (angle, d)));
-        self.kinds.count(job.called, angle, difference, at == 0);
-    }
-
-    pub(super) fn add(&mut self, other: &Tally) {
-        for (total, n) in self.outcomes.iter_mut().zip(other.outcomes) {
-            *total += n;
+/// What each JSON key that has a unit measures.
+fn quantity_of(key: &str) -> Option<Quantity> {
+    Some(match key {
+        "speed" | "max_exit_speed" | "shortfall" => Quantity::Speed,
+        "angle" | "direction" | "landing_angle" | "descent_angle" | "tilt" => Quantity::Angle,
+        "spin" | "sidespin" | "gyrospin" => Quantity::Spin,
+        "range" | "apex" | "distance" | "height" | "height_at_fence" | "margin" | "difference" => {
+            Quantity::Distance
         }
-        self.differences.extend_from_slice(&other.differences);
-        self.kinds.add(&other.kinds);
-    }
-
-    /// "flown 248 rows, skipped 0; at their parks 169 clear, 39 off the
-    /// wall, 37 short, 3 foul; against hit_distance_sc (248 rows): median
-    /// difference +1.3 ft, median |difference| 9.8 ft", in the units shown.
-    pub(super) fn line(&self, flown: usize, skipped: usize, at: &str, shown: Shown) -> String {
-        let [clear, wall, short, foul] = self.outcomes;
-        let mut line = format!(
-            "summary: flown {flown} row{}, skipped {skipped}; {at}: {clear} clear, {wall} off the wall, {short} short, {foul} foul",
-            plural(flown)
-        );
-        if !self.differences.is_empty() {
-            let mut signed: Vec<f64> = self.differences.iter().map(|d| d.1).collect();
-            let unit = shown.unit(Quantity::Distance);
-            let (median, typical) = medians(&mut signed);
-            let _ = write!(
-                line,
-                "; against hit_distance_sc ({} rows): median difference {:+.1} {}, median |difference| {:.1} {}",
-                signed.len(),
-                unit.show(median),
-                unit.symbol,
-                unit.show(typical),
-                unit.symbol
-            );
-        }
-        line
-    }
+        "undercut" => Quantity::Size,
+        _ => return None,
+    })
 }
 
-impl Tally {
-    /// The differences by launch-angle band, in SI.
-    pub(super) fn bands(&self) -> Vec<Band> {
-        (0..BANDS)
-            .map(|band| {
-                let mut signed: Vec<f64> = (self.differences.iter())
-                    .filter(|(angle, _)| band_index(*angle) == band)
-                    .map(|d| d.1)
-                    .collect();
-                let both = (!signed.is_empty()).then(|| medians(&mut signed));
-                let (from, to) = band_bounds(band);
-                Band {
-                    from,
-                    to,
-                    rows: signed.len(),
-                    median: both.map(|m| m.0),
-                    median_abs: both.map(|m| m.1),
+/// A JSON line's numbers in the units shown, each key named with its unit
+/// (`range_ft`), as the CSV's columns are.
+fn in_units(value: &mut serde_json::Value, shown: Shown) {
+    match value {
+        serde_json::Value::Object(map) => {
+            let taken = std::mem::take(map);
+            for (key, mut inner) in taken {
+                match (quantity_of(&key), inner.as_f64()) {
+                    (Some(quantity), Some(si)) => {
+                        let converted = shown.convert(quantity, si);
+                        map.insert(shown.csv_key(&key, quantity), converted.into());
+                    }
+                    (Some(quantity), None) if inner.is_null() => {
+                        map.insert(shown.csv_key(&key, quantity), inner);
+                    }
+                    _ => {
+                        in_units(&mut inner, shown);
+                        map.insert(key, inner);
+                    }
                 }
-            })
-            .collect()
-    }
-
-    /// The bands as a small table, in the units shown: a header, then a
-    /// line a band ("10–20°  4,512  +17.8 ft  19.3 ft").
-    pub(super) fn band_table(&self, shown: Shown) -> String {
-        let unit = shown.unit(Quantity::Distance);
-        let mut table = format!(
-            "by launch angle, model − hit_distance_sc ({}):\n{:<8} {:>7} {:>8} {:>10}\n",
-            unit.symbol, "angle", "rows", "median", "median |d|"
-        );
-        for band in self.bands() {
-            let name = band_name((band.from, band.to));
-            let show = |m: Option<f64>, sign: bool| match m {
-                Some(m) if sign => format!("{:+.1}", unit.show(m)),
-                Some(m) => format!("{:.1}", unit.show(m)),
-                None => String::from("-"),
-            };
-            let _ = writeln!(
-                table,
-                "{name:<8} {:>7} {:>8} {:>10}",
-                band.rows,
-                show(band.median, true),
-                show(band.median_abs, false)
-            );
+            }
         }
-        table.pop();
-        table
-    }
-}
-
-/// The median of `differences` (not empty) and the median of their sizes,
-/// sorting them.
-pub(super) fn medians(differences: &mut [f64]) -> (f64, f64) {
-    let mut sizes: Vec<f64> = differences.iter().map(|d| d.abs()).collect();
-    (median(differences), median(&mut sizes))
-}
-
-/// The median of `values` (not empty), sorting them.
-pub(super) fn median(values: &mut [f64]) -> f64 {
-    values.sort_by(f64::total_cmp);
-    let n = values.len();
-    if n % 2 == 1 {
-        values[n / 2]
-    } else {
-        (values[n / 2 - 1] + values[n / 2]) / 2.0
+        serde_json::Value::Array(items) => items.iter_mut().for_each(|v| in_units(v, shown)),
+        _ => {}
     }
 }
 

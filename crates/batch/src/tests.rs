@@ -2,11 +2,18 @@
 //! `fly` and against themselves flown alone: the same records, lines,
 //! numbers and digits.
 
-use super::launch_columns::Unit;
+use std::io;
+
+use super::columns::Unit;
+use super::read::{Fields, Lossy, Records, Stop};
 use super::*;
-use crate::Scene;
-use crate::numerics::xorshift::uniform;
-use crate::units::Quantity;
+use analysis::precision::Purpose;
+use model::clearing::Clearing;
+use model::flight::FlightSummary;
+use model::launch::{self, BattedBall};
+use model::scene::Scene;
+use numerics::xorshift::uniform;
+use units::Quantity;
 
 /// A record's line and fields (`None` if too long).
 type Got = (usize, Option<Vec<String>>);
@@ -130,22 +137,18 @@ fn a_header_too_long_is_given_up_without_reading_on() {
         }
     }
     let mut endless = Endless(0);
-    let mut sinks = Sinks {
-        out: &mut Vec::new(),
-        err: &mut Vec::new(),
-        erase: false,
-    };
     let reader = io::BufReader::with_capacity(4096, &mut endless);
-    let fastball = crate::preset::load("fastball", None).unwrap();
-    let parks = crate::preset::parks::all(None).unwrap();
+    let fastball = preset::load("fastball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
     let setup = Setup::new(&fastball, &parks);
-    let work = Work {
-        what: "test",
-        steps: None,
-    };
-    let refused = progress::run(work, |p| {
-        batch(&setup, reader, false, Shown::default(), &mut sinks, p)
-    });
+    let refused = fly_rows(
+        &setup,
+        reader,
+        Format::default(),
+        &mut Vec::new(),
+        &mut |_| {},
+        &|| {},
+    );
     assert!(refused.unwrap_err().contains("longer than 64 KiB"));
     assert!(
         endless.0 <= MAX_RECORD_BYTES + 4096,
@@ -168,25 +171,45 @@ fn statcast_units_convert_exactly() {
 
 /// Runs the batch on `input`: (stdout, stderr, outcome).
 fn run(setup: &Setup, input: &str, json: bool, shown: Shown) -> (String, String, Outcome) {
-    let (mut out, mut err) = (Vec::new(), Vec::new());
-    let mut sinks = Sinks {
-        out: &mut out,
-        err: &mut err,
-        erase: false,
-    };
-    let work = Work {
-        what: "test",
-        steps: None,
-    };
-    let outcome = progress::run(work, |p| {
-        batch(setup, input.as_bytes(), json, shown, &mut sinks, p)
-    })
-    .unwrap();
-    (
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-        outcome,
+    let (mut out, mut err) = (Vec::new(), String::new());
+    let mut note = |m: &str| err += &format!("homerun: {m}\n");
+    let (outcome, tally) = fly_rows(
+        setup,
+        input.as_bytes(),
+        Format { json, shown },
+        &mut out,
+        &mut note,
+        &|| {},
     )
+    .unwrap();
+    for line in tally.lines(setup, shown) {
+        note(&line);
+    }
+    (String::from_utf8(out).unwrap(), err, outcome)
+}
+
+/// A row flown alone, as `fly` flies it: at the readout's precision,
+/// judged at `fence` and at every park's fence on the same flight.
+struct Alone {
+    launch: BattedBall,
+    flight: FlightSummary,
+    clearing: Clearing,
+    parks_cleared: usize,
+}
+
+fn alone(scene: &Scene, fence: &model::park::Fence, parks: &[&model::park::Fence]) -> Alone {
+    let options = Purpose::Readout.flight_options();
+    let (flight, launch, _) = launch::scene_start(scene);
+    let fences: Vec<_> = std::iter::once(fence)
+        .chain(parks.iter().copied())
+        .collect();
+    let (summary, clearings) = flight.judge(&options, &fences);
+    Alone {
+        launch,
+        flight: summary,
+        clearing: clearings[0],
+        parks_cleared: clearings[1..].iter().filter(|c| c.clears()).count(),
+    }
 }
 
 /// A number as the batch printed it before: `format!`.
@@ -201,13 +224,13 @@ fn number(shown: Shown, quantity: Quantity, si: f64, si_decimals: usize) -> Stri
 fn fly_line(
     line: usize,
     scene: &Scene,
-    (code, fence): (&str, &crate::model::park::Fence),
+    (code, fence): (&str, &model::park::Fence),
     setup: &Setup,
     shown: Shown,
     statcast: Option<f64>,
 ) -> String {
-    use crate::units::Quantity::*;
-    let flown = super::super::ground::FlownToFence::new(scene, fence, &setup.fences, None);
+    use units::Quantity::*;
+    let flown = alone(scene, fence, &setup.fences);
     let (launch, flight) = (&flown.launch, &flown.flight);
     let distance = |m: Option<f64>, d| m.map_or(String::new(), |m| number(shown, Distance, m, d));
     let mut text = format!(
@@ -223,10 +246,10 @@ fn fly_line(
         number(shown, Distance, flight.apex, 3),
         number(shown, Angle, flight.landing_angle, 4),
         flight.landed,
-        flown.clears_fence(),
+        flown.clearing.clears(),
         flown.clearing.outcome.name(),
         distance(flown.clearing.margin, 3),
-        flown.parks_cleared(),
+        flown.parks_cleared,
     );
     if let Some(measured) = statcast {
         let difference = flight.landed.then_some(flight.range - measured);
@@ -290,7 +313,7 @@ const LAUNCH_KEYS: [&str; 5] = [
 /// `scene` with a launch, as `--set` gives it.
 fn launched(scene: &Scene, launch: &[f64; 5]) -> Scene {
     let mut scene = *scene;
-    let mut batch = crate::model::keys::InputBatch::new();
+    let mut batch = model::keys::InputBatch::new();
     for (key, value) in LAUNCH_KEYS.iter().zip(launch) {
         batch.set_text(&mut scene, key, &value.to_string()).unwrap();
     }
@@ -301,12 +324,10 @@ fn launched(scene: &Scene, launch: &[f64; 5]) -> Scene {
 /// rounding boundary of its printed millimetre: the launch speed moved by
 /// Newton's method onto the boundary.
 fn on_rounding_boundaries(base: &Scene, rows: usize, setup: &Setup) -> Vec<[f64; 5]> {
-    let fence = crate::model::park::Fence::uniform(121.92, 3.0);
+    let fence = model::park::Fence::uniform(121.92, 3.0);
     let range = |launch: &[f64; 5]| {
         let scene = launched(base, launch);
-        super::super::ground::FlownToFence::new(&scene, &fence, &setup.fences, None)
-            .flight
-            .range
+        alone(&scene, &fence, &setup.fences).flight.range
     };
     let mut found = Vec::new();
     for mut launch in launches(rows, false, 0x5eed_0018) {
@@ -326,11 +347,14 @@ fn on_rounding_boundaries(base: &Scene, rows: usize, setup: &Setup) -> Vec<[f64;
 
 #[test]
 fn batch_rows_print_what_fly_prints_digit_for_digit() {
-    let preset = crate::preset::load("fly-ball", None).unwrap();
-    let parks = crate::preset::parks::all(None).unwrap();
-    let setup = Setup::new(&preset, &parks);
-    let generic = crate::preset::Fence::generic().uniform();
-    let imperial = Shown(crate::units::UnitSystem::Imperial);
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
+    let mut setup = Setup::new(&preset, &parks);
+    // The preset's fence given as --set gives it: rows at no park are
+    // judged there, as `fly` judges them.
+    setup.given(&["field.fence_distance=121.9".to_owned()]);
+    let generic = preset::Fence::generic().uniform();
+    let imperial = Shown(units::UnitSystem::Imperial);
     let boundary = on_rounding_boundaries(&preset.scene, 300, &setup);
     let cases = [
         (launches(1500, false, 1), Shown::default()),
@@ -349,7 +373,7 @@ fn batch_rows_print_what_fly_prints_digit_for_digit() {
             want.push('\n');
         }
         let (out, err, outcome) = run(&setup, &input, false, shown);
-        assert_eq!(outcome.flown, rows.len(), "{err}");
+        assert_eq!(outcome.answered, rows.len(), "{err}");
         let got = out.split_once('\n').unwrap().1;
         for (got, want) in got.lines().zip(want.lines()) {
             assert_eq!(got, want);
@@ -360,8 +384,8 @@ fn batch_rows_print_what_fly_prints_digit_for_digit() {
 
 #[test]
 fn savant_rows_at_their_parks_print_what_fly_prints_there() {
-    let preset = crate::preset::load("fly-ball", None).unwrap();
-    let parks = crate::preset::parks::all(None).unwrap();
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
     let setup = Setup::new(&preset, &parks);
     let codes = ["BOS", "COL", "NYY", "SF", "HOU"];
     let mut input =
@@ -376,7 +400,7 @@ fn savant_rows_at_their_parks_print_what_fly_prints_there() {
         );
         let park = parks.parks.iter().find(|p| p.code == code).unwrap();
         let mut scene = launched(&preset.scene, launch);
-        super::super::ground::to_park(&mut scene, park, Default::default());
+        model::park::GivenWeather::default().park_air(&mut scene.environment, park.elevation);
         let statcast = Some(measured * 0.3048);
         want += &fly_line(
             i + 2,
@@ -399,11 +423,14 @@ fn savant_rows_at_their_parks_print_what_fly_prints_there() {
 
 #[test]
 fn hostile_cells_fail_in_line_order_between_rows_that_fly() {
-    let preset = crate::preset::load("fly-ball", None).unwrap();
-    let parks = crate::preset::parks::all(None).unwrap();
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
     let mut setup = Setup::new(&preset, &parks);
+    // The preset's fence given as --set gives it: rows at no park are
+    // judged there, as `fly` judges them.
+    setup.given(&["field.fence_distance=121.9".to_owned()]);
     setup.keep = vec!["des".to_owned()];
-    let generic = crate::preset::Fence::generic().uniform();
+    let generic = preset::Fence::generic().uniform();
     // Good rows between bad ones, across pieces (hundreds of rows).
     let bad = [
         "abc,0.5,200,x",
@@ -496,8 +523,8 @@ fn outputs(setup: &Setup, input: &str) -> Vec<(usize, String, String)> {
 /// that of the same row flown alone.
 #[test]
 fn every_row_gives_what_it_gives_alone_whatever_its_neighbours() {
-    let preset = crate::preset::load("fly-ball", None).unwrap();
-    let parks = crate::preset::parks::all(None).unwrap();
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
     let setup = Setup::new(&preset, &parks);
     let mut next = uniform(0x00c0_ffee);
     let launch = |rows: &[[f64; 5]], cells: usize| -> Vec<String> {
@@ -561,12 +588,12 @@ fn every_row_gives_what_it_gives_alone_whatever_its_neighbours() {
 /// flies toward the preset's direction, said in one line.
 #[test]
 fn a_spray_at_the_plate_is_named_and_the_row_flies() {
-    let preset = crate::preset::load("fly-ball", None).unwrap();
-    let parks = crate::preset::parks::all(None).unwrap();
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
     let setup = Setup::new(&preset, &parks);
     let input = "launch_speed,launch_angle,hc_x,hc_y\n100,28,125.42,198.27\n100,28,100,100\n";
     let (out, err, outcome) = run(&setup, input, false, Shown::default());
-    assert_eq!((outcome.flown, outcome.failed), (2, 0), "{err}");
+    assert_eq!((outcome.answered, outcome.failed), (2, 0), "{err}");
     assert!(!err.contains("NaN") && !out.contains("NaN"), "{err}");
     assert!(err.contains("1 row with a spray at the plate"), "{err}");
 }
@@ -575,8 +602,8 @@ fn a_spray_at_the_plate_is_named_and_the_row_flies() {
 /// a file or pipe as read.
 #[test]
 fn kept_cells_are_escaped_for_a_terminal_only() {
-    let preset = crate::preset::load("fly-ball", None).unwrap();
-    let parks = crate::preset::parks::all(None).unwrap();
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
     let mut setup = Setup::new(&preset, &parks);
     setup.keep = vec!["des".to_owned()];
     let input = "launch.speed,launch.angle,des\n45,0.5,\"a\x1b[2Jb\"\n";
@@ -607,8 +634,8 @@ fn rounds_are_sized_by_rows_and_parks() {
 /// units as `--set` does.
 #[test]
 fn missing_values_units_and_compared_columns() {
-    let preset = crate::preset::load("fly-ball", None).unwrap();
-    let parks = crate::preset::parks::all(None).unwrap();
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
     let setup = Setup::new(&preset, &parks);
     let input = "launch_speed,launch_angle,hc_x,hc_y,hit_distance_sc\n\
                  100,28,NA,NaN,400\n\
@@ -618,7 +645,7 @@ fn missing_values_units_and_compared_columns() {
                  44.704m/s,28,,,140m\n";
     let (out, err, outcome) = run(&setup, input, false, Shown::default());
     assert_eq!(
-        (outcome.flown, outcome.failed, outcome.without_launch),
+        (outcome.answered, outcome.failed, outcome.without_launch),
         (4, 0, 1),
         "{err}"
     );

@@ -13,15 +13,15 @@
 //! such a row's scene needs no validation past its launch, as
 //! [`Scene::validate_changed_launch`] validates it.
 
-use crate::Scene;
-use crate::model::keys::{InputError, LAUNCH_KEYS};
-use crate::model::scene::{GivenLaunch, SceneKind};
+use model::keys::{InputError, LAUNCH_KEYS};
+use model::scene::Scene;
+use model::scene::{GivenLaunch, SceneKind};
 
 /// Scenes (their launch cleared) known valid, with their swing's launch
 /// (`None` where some of it is out of its bounds).
 /// A piece's rows share one or a few (one a park, with `home_team`).
 #[derive(Default)]
-pub(super) struct SwingLaunches {
+pub(crate) struct SwingLaunches {
     known: Vec<(Scene, Option<[f64; 5]>)>,
     /// The same, for rows whose scene but its launch is their park's (or
     /// the preset's, at no park): known by the park, not compared whole.
@@ -38,7 +38,7 @@ impl SwingLaunches {
     /// given the launch values it leaves to the swing. With `by_park`, the
     /// scene but its launch is known to be the one every row at that park
     /// has (the header's columns give nothing else: [`super::rows::Header`]).
-    pub(super) fn validate(
+    pub(crate) fn validate(
         &mut self,
         scene: &mut Scene,
         by_park: Option<Option<usize>>,
@@ -148,7 +148,7 @@ mod tests {
                 // the others' from it), to the bit what its own swing gives.
                 assert!(filled.launch.is_complete(), "{k}");
                 let (a, b) = (alone.batted_ball(), filled.batted_ball());
-                let bits = |l: crate::model::launch::BattedBall| {
+                let bits = |l: model::launch::BattedBall| {
                     [l.speed, l.angle, l.spin, l.direction, l.sidespin].map(f64::to_bits)
                 };
                 assert_eq!(bits(a), bits(b), "{given:?}");
@@ -165,8 +165,8 @@ mod tests {
         // Rows whose scene but the launch is their park's (in its air):
         // known by the park, each row is validated and filled as when its
         // swing is compared whole, and as alone, error for error.
-        let parks = crate::preset::parks::all(None).unwrap();
-        let given = crate::model::park::GivenWeather::default();
+        let parks = preset::parks::all(None).unwrap();
+        let given = model::park::GivenWeather::default();
         let (mut by_park, mut whole) = (SwingLaunches::default(), SwingLaunches::default());
         let launches = [
             vec![("launch.speed", 40.0), ("launch.angle", 0.4)],

@@ -5,89 +5,24 @@
 //! units (mph, degrees, ft/s, ft/s², rpm) and made a
 //! [`TrackedSwing`] with the row's launch, spray and side.
 
-use std::collections::BTreeMap;
-use std::fmt::Write as _;
-
 use serde::Serialize;
 
-use super::output::CsvLine;
-use super::plural;
-use super::rows::{Column, Header, Job};
-use super::savant_columns::quoted;
-use super::swing_bands::SwingBands;
-use crate::analysis::bat_tracking::{
-    self, SolvedSwing, SwingAnswer, TrackedSwing, collision_efficiency,
-};
-use crate::analysis::precision::Purpose;
-use crate::analysis::savant::{DirectionFrom, RowLaunch, Spray};
-use crate::cli::shown::Shown;
-use crate::model::scene::Hand;
-use crate::model::spin_estimate::Side;
-use crate::model::tracked_pitch::{PitchFit, topspin};
-use crate::preset::cut;
-use crate::units::{Quantity, UnitSystem};
-
-/// A bat-tracking or pitch-tracking column.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum SwingColumn {
-    BatSpeed,
-    AttackAngle,
-    AttackDirection,
-    SwingPathTilt,
-    /// vx0, vy0, vz0 (ft/s) by index.
-    Velocity(usize),
-    /// ax, ay, az (ft/s²) by index.
-    Acceleration(usize),
-    SpinRate,
-    SpinAxis,
-}
-
-/// Each column: its name, and the values it accepts (in its own unit): the
-/// angles those of the keys they become (`bat.swing_angle` ±90°,
-/// `bat.direction` and `bat.tilt` ±60°), so that a row past them is named,
-/// not solved outside what the model takes.
-const COLUMNS: [(&str, SwingColumn, (f64, f64)); 12] = [
-    ("bat_speed", SwingColumn::BatSpeed, (0.0, 150.0)),
-    ("attack_angle", SwingColumn::AttackAngle, (-90.0, 90.0)),
-    (
-        "attack_direction",
-        SwingColumn::AttackDirection,
-        (-60.0, 60.0),
-    ),
-    ("swing_path_tilt", SwingColumn::SwingPathTilt, (-60.0, 60.0)),
-    ("vx0", SwingColumn::Velocity(0), (-100.0, 100.0)),
-    ("vy0", SwingColumn::Velocity(1), (-250.0, 0.0)),
-    ("vz0", SwingColumn::Velocity(2), (-100.0, 100.0)),
-    ("ax", SwingColumn::Acceleration(0), (-100.0, 100.0)),
-    ("ay", SwingColumn::Acceleration(1), (-100.0, 100.0)),
-    ("az", SwingColumn::Acceleration(2), (-100.0, 100.0)),
-    ("release_spin_rate", SwingColumn::SpinRate, (0.0, 5000.0)),
-    ("spin_axis", SwingColumn::SpinAxis, (0.0, 360.0)),
-];
-
-/// The columns a row needs for its swing to be solved.
-pub(super) const NEEDED: [&str; 7] = ["bat_speed", "vx0", "vy0", "vz0", "ax", "ay", "az"];
-
-impl SwingColumn {
-    pub(super) fn of(name: &str) -> Option<SwingColumn> {
-        COLUMNS
-            .iter()
-            .find(|(n, ..)| *n == name)
-            .map(|(_, c, _)| *c)
-    }
-
-    fn entry(self) -> (&'static str, (f64, f64)) {
-        let (name, _, range) = COLUMNS
-            .iter()
-            .find(|(_, c, _)| *c == self)
-            .expect("every column listed");
-        (name, *range)
-    }
-}
+use crate::columns::SwingColumn;
+use crate::output::CsvLine;
+use crate::row::Job;
+use crate::setup::quoted;
+use analysis::bat_tracking::{self, SolvedSwing, SwingAnswer, TrackedSwing, collision_efficiency};
+use analysis::precision::Purpose;
+use analysis::savant::{DirectionFrom, RowLaunch, Spray};
+use model::scene::Hand;
+use model::spin_estimate::Side;
+use model::tracked_pitch::{PitchFit, topspin};
+use preset::cut;
+use units::{Quantity, UnitSystem};
 
 /// What a row's tracking cells say, in their own units.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(super) struct SwingCells {
+pub(crate) struct SwingCells {
     pub bat_speed: Option<f64>,
     pub attack_angle: Option<f64>,
     pub attack_direction: Option<f64>,
@@ -98,51 +33,20 @@ pub(super) struct SwingCells {
     pub spin_axis: Option<f64>,
 }
 
-impl Header {
-    /// Reads bat and pitch tracking's columns too (when swings are solved:
-    /// `fly --batch` alone ignores them); the header must have those a
-    /// swing needs, and the launch's speed and angle.
-    pub(super) fn read_swings(&mut self) -> Result<(), String> {
-        for (i, name) in self.names.iter().enumerate() {
-            if let (Column::Ignored, Some(column)) = (self.columns[i], SwingColumn::of(name)) {
-                self.columns[i] = Column::Swing(column);
-                self.read.push(i);
-            }
-        }
-        self.read.sort_unstable();
-        let mut missing: Vec<&str> = NEEDED
-            .iter()
-            .copied()
-            .filter(|needed| !self.names.iter().any(|name| name == needed))
-            .collect();
-        for (index, name) in [(0, "launch_speed"), (1, "launch_angle")] {
-            if !self.has_launch(index) {
-                missing.push(name);
-            }
-        }
-        if missing.is_empty() {
-            return Ok(());
-        }
-        Err(format!(
-            "no {} column{}: a swing is solved from bat tracking (bat_speed), the pitch's \
-             kinematics (vx0, vy0, vz0, ax, ay, az) and the launch (launch_speed, launch_angle), \
-             as a Baseball Savant export since 2024 has them",
-            missing.join(", "),
-            plural(missing.len())
-        ))
-    }
-}
-
 /// Why a row with a launch has no swing to solve.
-pub(super) const NO_BAT_SPEED: &str = "no bat_speed (the swing was not tracked)";
-pub(super) const NO_PITCH: &str = "no pitch kinematics (vx0, vy0, vz0, ax, ay, az)";
-pub(super) const PITCH_SHORT: &str = "the pitch's kinematics never reach the plate";
+pub(crate) const NO_BAT_SPEED: &str = "no bat_speed (the swing was not tracked)";
+pub(crate) const NO_PITCH: &str = "no pitch kinematics (vx0, vy0, vz0, ax, ay, az)";
+pub(crate) const PITCH_SHORT: &str = "the pitch's kinematics never reach the plate";
 
 impl SwingCells {
     /// Reads one (trimmed, non-empty) cell: a number in the column's range,
     /// or the reason naming the field, the value and the range.
-    pub(super) fn read(&mut self, column: SwingColumn, value: &str) -> Result<(), String> {
-        let (name, (low, high)) = column.entry();
+    pub(crate) fn read(
+        &mut self,
+        (column, (low, high)): (SwingColumn, (f64, f64)),
+        value: &str,
+    ) -> Result<(), String> {
+        let name = crate::columns::name_of(crate::columns::Becomes::Swing(column, (low, high)));
         let number = value
             .parse::<f64>()
             .ok()
@@ -169,7 +73,7 @@ impl SwingCells {
 
     /// The row's tracked swing in SI, given its measured launch (m/s,
     /// rad), spray (rad) and side; or why it has none.
-    pub(super) fn swing(
+    pub(crate) fn swing(
         &self,
         (launch_speed, launch_angle): (f64, f64),
         spray: Option<f64>,
@@ -213,7 +117,7 @@ impl SwingCells {
 /// A row's swing: the tracked one (or why it has none) and the solve's
 /// answer.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct RowSwing {
+pub(crate) struct RowSwing {
     pub tracked: Result<TrackedSwing, &'static str>,
     pub answer: Option<SwingAnswer>,
     /// Where a solved swing's launch direction came from (its flight is
@@ -225,26 +129,37 @@ impl Job {
     /// Where the row's launch direction came from: a solved swing's, its
     /// impact's ([`bat_tracking::solve_landing`]); else `launched`, how the
     /// row's launch was completed.
-    pub(super) fn direction_from(&self, launched: DirectionFrom) -> DirectionFrom {
+    pub(crate) fn direction_from(&self, launched: DirectionFrom) -> DirectionFrom {
         (self.swing.as_ref())
             .and_then(|s| s.direction_from)
             .unwrap_or(launched)
     }
 
+    /// The row's tracked swing, with its measured launch, spray and side;
+    /// or why it has none.
+    pub(crate) fn tracked_swing(&self) -> Result<TrackedSwing, &'static str> {
+        let launch = self.scene.launch;
+        let measured = (
+            launch.speed.unwrap_or(f64::NAN),
+            launch.angle.unwrap_or(f64::NAN),
+        );
+        (self.tracked).swing(measured, self.launch.spray, self.launch.side)
+    }
+
     /// Whether the row flies its solved swing's launch.
-    pub(super) fn swing_solved(&self) -> bool {
+    pub(crate) fn swing_solved(&self) -> bool {
         (self.swing.as_ref()).is_some_and(|s| s.solved().is_some())
     }
 }
 
 impl RowSwing {
     /// The solved swing, if any.
-    pub(super) fn solved(&self) -> Option<&SolvedSwing> {
+    pub(crate) fn solved(&self) -> Option<&SolvedSwing> {
         self.answer.as_ref().and_then(|a| a.solved.as_ref().ok())
     }
 
     /// Why the row has no solved swing.
-    pub(super) fn reason(&self) -> Option<String> {
+    pub(crate) fn reason(&self) -> Option<String> {
         match (&self.tracked, &self.answer) {
             (Err(why), _) => Some((*why).to_owned()),
             (Ok(_), Some(answer)) => answer.solved.err().map(|e| e.to_string()),
@@ -253,12 +168,12 @@ impl RowSwing {
     }
 
     /// The model's missing exit speed (m/s), where speed is the trouble.
-    pub(super) fn shortfall(&self) -> Option<f64> {
+    pub(crate) fn shortfall(&self) -> Option<f64> {
         self.answer?.solved.err()?.shortfall()
     }
 
     /// The model's own q at E = 0 for the solved swing.
-    pub(super) fn model_efficiency(&self) -> Option<f64> {
+    pub(crate) fn model_efficiency(&self) -> Option<f64> {
         let tracked = self.tracked.ok()?;
         // The most the swing gives is the sweet spot's, solved on or off it.
         let solved = self.solved()?;
@@ -279,15 +194,8 @@ impl RowSwing {
 /// the spray itself. A row not solved keeps what `fly --batch` makes of it.
 /// `tilt_prior` ([`super::Setup::tilt_prior`]) is the bat's tilt where a
 /// tracked row measured none.
-pub(super) fn solve_row(job: &mut Job, spray: Spray, tilt_prior: Option<f64>) {
-    let launch = job.scene.launch;
-    let measured = (
-        launch.speed.unwrap_or(f64::NAN),
-        launch.angle.unwrap_or(f64::NAN),
-    );
-    let tracked = job
-        .tracked
-        .swing(measured, job.launch.spray, job.launch.side);
+pub(crate) fn solve_row(job: &mut Job, spray: Spray, tilt_prior: Option<f64>) {
+    let tracked = job.tracked_swing();
     if let (Ok(swing), Some(prior)) = (&tracked, tilt_prior)
         && swing.tilt.is_none()
     {
@@ -323,7 +231,7 @@ pub(super) fn solve_row(job: &mut Job, spray: Spray, tilt_prior: Option<f64>) {
 }
 
 /// The swing's CSV columns, after `line` (`hit --batch`).
-pub(super) const CSV_COLUMNS: [(&str, Quantity); 15] = [
+pub(crate) const CSV_COLUMNS: [(&str, Quantity); 15] = [
     ("solved", Quantity::Unchanged),
     ("reason", Quantity::Unchanged),
     ("shortfall", Quantity::Speed),
@@ -342,7 +250,7 @@ pub(super) const CSV_COLUMNS: [(&str, Quantity); 15] = [
 ];
 
 /// Writes a row's swing columns (each with its comma).
-pub(super) fn write_csv(csv: &CsvLine, out: &mut Vec<u8>, job: &Job) {
+pub(crate) fn write_csv(csv: &CsvLine, out: &mut Vec<u8>, job: &Job) {
     let Some(swing) = &job.swing else {
         out.extend_from_slice(&[b','; CSV_COLUMNS.len()]);
         return;
@@ -378,7 +286,7 @@ pub(super) fn write_csv(csv: &CsvLine, out: &mut Vec<u8>, job: &Job) {
 }
 
 #[derive(Serialize)]
-pub(super) struct ImpactJson<'a> {
+pub(crate) struct ImpactJson<'a> {
     collision_efficiency: Option<f64>,
     max_exit_speed: Option<f64>,
     regime: Option<&'a str>,
@@ -387,13 +295,13 @@ pub(super) struct ImpactJson<'a> {
 }
 
 #[derive(Serialize)]
-pub(super) struct PitchJson {
+pub(crate) struct PitchJson {
     descent_angle: f64,
     speed: f64,
 }
 
 #[derive(Serialize)]
-pub(super) struct SwingJson {
+pub(crate) struct SwingJson {
     angle: f64,
     direction: f64,
     speed: f64,
@@ -405,7 +313,7 @@ pub(super) struct SwingJson {
 /// The swing's parts of a row's JSON line (all `None` unless swings are
 /// printed).
 #[derive(Default)]
-pub(super) struct JsonParts<'a> {
+pub(crate) struct JsonParts<'a> {
     pub impact: Option<ImpactJson<'a>>,
     pub pitch: Option<PitchJson>,
     pub reason: Option<String>,
@@ -415,7 +323,7 @@ pub(super) struct JsonParts<'a> {
     pub gyrospin: Option<f64>,
 }
 
-pub(super) fn json_parts(job: &Job) -> JsonParts<'static> {
+pub(crate) fn json_parts(job: &Job) -> JsonParts<'static> {
     let Some(swing) = &job.swing else {
         return JsonParts::default();
     };
@@ -443,127 +351,4 @@ pub(super) fn json_parts(job: &Job) -> JsonParts<'static> {
         }),
         gyrospin: solved.map(|s| s.launch.gyrospin),
     }
-}
-
-/// What the rows' swings came to, for the batch's summary line.
-#[derive(Clone, Debug, Default)]
-pub(super) struct SwingTally {
-    /// Rows without a tracked swing, by reason.
-    pub untracked: BTreeMap<&'static str, usize>,
-    /// Tracked rows not solved, by reason.
-    pub unsolved: BTreeMap<String, usize>,
-    /// q from the data on every tracked row; the model's at E = 0 and the
-    /// undercut (m) on each solved one.
-    pub data_efficiency: Vec<f64>,
-    pub model_efficiency: Vec<f64>,
-    pub undercuts: Vec<f64>,
-    /// Solved rows whose contact is off the sweet spot.
-    pub off_sweet_spot: usize,
-    /// The same by launch angle, for `--summary`.
-    pub bands: SwingBands,
-}
-
-impl SwingTally {
-    pub(super) fn count(&mut self, job: &Job) {
-        let Some(swing) = &job.swing else { return };
-        self.bands.count(swing);
-        match &swing.tracked {
-            Err(why) => *self.untracked.entry(why).or_default() += 1,
-            Ok(_) => {
-                let answer = swing.answer.expect("a tracked swing is answered");
-                self.data_efficiency.push(answer.collision_efficiency);
-                match swing.solved() {
-                    Some(solved) => {
-                        self.model_efficiency.extend(swing.model_efficiency());
-                        self.undercuts.push(solved.scene.bat.undercut);
-                        self.off_sweet_spot += usize::from(solved.off_sweet_spot);
-                    }
-                    None => {
-                        let reason = swing.reason().unwrap_or_default();
-                        *self.unsolved.entry(reason).or_default() += 1;
-                    }
-                }
-            }
-        }
-    }
-
-    pub(super) fn add(&mut self, other: &SwingTally) {
-        for (why, n) in &other.untracked {
-            *self.untracked.entry(why).or_default() += n;
-        }
-        for (why, n) in &other.unsolved {
-            *self.unsolved.entry(why.clone()).or_default() += n;
-        }
-        self.data_efficiency
-            .extend_from_slice(&other.data_efficiency);
-        self.model_efficiency
-            .extend_from_slice(&other.model_efficiency);
-        self.undercuts.extend_from_slice(&other.undercuts);
-        self.off_sweet_spot += other.off_sweet_spot;
-        self.bands.add(&other.bands);
-    }
-
-    /// "swings: solved 16627 of 17436 tracked (95.4 %); q median 0.132,
-    /// 99th percentile 0.235 (data), 0.207 (model at E = 0); undercut
-    /// median 18.7 mm (IQR −4.8 to 31.7); not solved: …", or `None`
-    /// without swings.
-    pub(super) fn line(&self, shown: Shown) -> Option<String> {
-        let tracked = self.data_efficiency.len();
-        let untracked: usize = self.untracked.values().sum();
-        if tracked + untracked == 0 {
-            return None;
-        }
-        let solved = self.undercuts.len();
-        let mut line = format!(
-            "swings: solved {solved} of {tracked} tracked ({:.1} %, {} of them off the sweet spot)",
-            100.0 * solved as f64 / tracked.max(1) as f64,
-            self.off_sweet_spot
-        );
-        if tracked > 0 {
-            let data = percentiles(&self.data_efficiency, &[0.5, 0.99]);
-            let _ = write!(
-                line,
-                "; q median {:.3}, 99th percentile {:.3} (data)",
-                data[0], data[1]
-            );
-        }
-        if solved > 0 {
-            let model = percentiles(&self.model_efficiency, &[0.5, 0.99]);
-            let _ = write!(
-                line,
-                ", median {:.3}, 99th {:.3} (model: each solved swing at E = 0, at the sweet spot)",
-                model[0], model[1],
-            );
-        }
-        if solved > 0 {
-            let e = percentiles(&self.undercuts, &[0.25, 0.5, 0.75]);
-            // In mm, or under --units imperial in inches.
-            let (scale, unit, decimals) = match shown.is_si() {
-                true => (1e3, "mm", 1),
-                false => (1.0 / 0.0254, "in", 2),
-            };
-            let _ = write!(
-                line,
-                "; undercut median {:.decimals$} {unit} (quartiles {:.decimals$}, {:.decimals$})",
-                e[1] * scale,
-                e[0] * scale,
-                e[2] * scale
-            );
-        }
-        let reasons: Vec<String> = (self.unsolved.iter().map(|(why, n)| format!("{n} {why}")))
-            .chain(self.untracked.iter().map(|(why, n)| format!("{n} {why}")))
-            .collect();
-        if !reasons.is_empty() {
-            let _ = write!(line, "; not solved: {}", reasons.join(", "));
-        }
-        Some(line)
-    }
-}
-
-/// The `quantiles` of `values` (not empty), by the nearest rank.
-pub(super) fn percentiles(values: &[f64], quantiles: &[f64]) -> Vec<f64> {
-    quantiles
-        .iter()
-        .map(|&q| bat_tracking::quantile(values, q))
-        .collect()
 }

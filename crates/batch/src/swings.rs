@@ -3,83 +3,74 @@
 //! the explorer opens, so that a teacher can step through the impact of a
 //! real swing.
 
-use std::io::{self, BufRead};
+use std::io::BufRead;
 
-use rayon::prelude::*;
-
-use super::read::{MAX_RECORD_BYTES, Records};
-use super::rows::{Header, Job, Row};
-use super::savant_columns::Setup;
-use super::swing_columns::solve_row;
-use crate::cli::shown::Shown;
-use crate::model::launch::scene_start;
-use crate::model::scene::{GivenLaunch, Scene, SceneKind};
-use crate::preset::{Preset, Source, escape_cut};
-use crate::units::Quantity;
+use crate::header::Header;
+use crate::pieces::{Piece, Stage, stream};
+use crate::read::Records;
+use crate::row::Job;
+use crate::setup::Setup;
+use analysis::shown::Shown;
+use model::launch::scene_start;
+use model::scene::{GivenLaunch, Scene, SceneKind};
+use preset::{Preset, Source, escape_cut};
+use units::Quantity;
 
 /// The columns that name a swing in the picker, where the file has them.
 const NAMING: [&str; 2] = ["player_name", "game_date"];
 
 /// What `solved_swings` found: the solved swings as presets, in the
 /// file's order, and how many tracked rows were not solved.
-pub(in crate::cli) struct Swings {
+pub struct Swings {
     pub presets: Vec<Preset>,
     pub rows: usize,
     pub unsolved: usize,
 }
 
-/// Reads `source` ("-" for stdin) and solves each row's swing.
-pub(in crate::cli) fn solved_swings(
+/// Reads `input` and solves each row's swing: the solved ones as presets
+/// for the explorer, bad rows named to `note`.
+pub fn solved_swings(
     setup: &mut Setup,
-    source: &str,
+    input: impl BufRead,
     shown: Shown,
+    note: &mut dyn FnMut(&str),
 ) -> Result<Swings, String> {
     setup.solve_swings = true;
-    if source == "-" {
-        read(setup, io::stdin().lock(), shown)
-    } else {
-        let file = std::fs::File::open(source).map_err(|e| e.to_string())?;
-        read(
-            setup,
-            io::BufReader::with_capacity(MAX_RECORD_BYTES, file),
-            shown,
-        )
-    }
-}
-
-fn read(setup: &mut Setup, input: impl BufRead, shown: Shown) -> Result<Swings, String> {
     let mut records = Records::new(input);
-    let names = super::read_header(&mut records)?.ok_or("the input is empty")?;
+    let names = crate::read_header(&mut records)?.ok_or("the input is empty")?;
     setup.keep = (NAMING.iter())
         .filter(|n| names.iter().any(|m| m.trim() == **n))
         .map(|n| (*n).to_owned())
         .collect();
-    let mut header = Header::new(names).map_err(|e| format!("line 1 (the header): {e}"))?;
-    header.keep(&setup.keep)?;
-    header
-        .read_swings()
-        .map_err(|e| format!("line 1 (the header): {e}"))?;
-    let mut rows = 0;
-    let mut jobs = super::parse_all(&mut records, &header, setup, |row| {
-        rows += 1;
-        if let Some(Row::Bad { line, reason }) = row {
-            eprintln!("homerun: line {line}: {reason}; skipped");
-        }
-    })?;
-    let tilt = setup.tilt_prior(&header);
-    jobs.par_iter_mut()
-        .for_each(|job| solve_row(job, setup.spray, tilt));
-    let tracked = (jobs.iter())
-        .filter(|j| j.swing.is_some_and(|s| s.tracked.is_ok()))
-        .count();
-    let presets: Vec<Preset> = jobs
-        .iter()
-        .filter_map(|job| swing_preset(job, &setup.keep, shown))
-        .collect();
+    let header = Header::new(names, setup)?;
+    let setup = &*setup;
+    let finish = |piece: &mut Piece<(Vec<Preset>, usize)>| {
+        let (presets, tracked) = &mut piece.made;
+        presets.clear();
+        *tracked = (piece.jobs.iter())
+            .filter(|j| j.swing.is_some_and(|s| s.tracked.is_ok()))
+            .count();
+        presets.extend((piece.jobs.iter()).filter_map(|job| swing_preset(job, &setup.keep, shown)));
+        piece.answered = piece.jobs.len();
+    };
+    let (mut presets, mut tracked) = (Vec::new(), 0);
+    let take = |piece: &mut Piece<(Vec<Preset>, usize)>| {
+        presets.append(&mut piece.made.0);
+        tracked += piece.made.1;
+        Ok(true)
+    };
+    let outcome = stream(
+        (setup, &header),
+        &mut records,
+        Stage::Solved,
+        finish,
+        take,
+        note,
+    )?;
     Ok(Swings {
         unsolved: tracked - presets.len(),
         presets,
-        rows,
+        rows: outcome.answered + outcome.failed + outcome.without_launch,
     })
 }
 
@@ -136,7 +127,7 @@ fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
         // The row's swing_path_tilt, or the league's.
         angle(solved.scene.bat.tilt),
         solved.regime.name(),
-        crate::analysis::bat_tracking::collision_efficiency(
+        analysis::bat_tracking::collision_efficiency(
             tracked.launch_speed,
             tracked.pitch.speed(),
             tracked.bat_speed
@@ -195,11 +186,16 @@ mod tests {
     /// tracked speed) launches close to what Statcast measured.
     #[test]
     fn a_savant_files_swings_open_as_scenes_near_their_measured_launch() {
-        let preset = crate::preset::load("fastball", None).unwrap();
-        let parks = crate::preset::parks::all(None).unwrap();
+        let preset = preset::load("fastball", None).unwrap();
+        let parks = preset::parks::all(None).unwrap();
         let mut setup = Setup::new(&preset, &parks);
-        let swings =
-            solved_swings(&mut setup, "tests/data/savant_swings.csv", Shown::default()).unwrap();
+        let swings = solved_swings(
+            &mut setup,
+            crate::open("../../tests/data/savant_swings.csv").unwrap(),
+            Shown::default(),
+            &mut |_| {},
+        )
+        .unwrap();
         assert_eq!(
             (swings.rows, swings.presets.len(), swings.unsolved),
             (35, 31, 4)
@@ -246,14 +242,15 @@ mod tests {
     /// the file lacks (here its `game_date`, renamed away).
     #[test]
     fn a_swing_is_named_by_its_batter_without_a_date() {
-        let text = std::fs::read_to_string("tests/data/savant_swings.csv").unwrap();
+        let text = std::fs::read_to_string("../../tests/data/savant_swings.csv").unwrap();
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("no-date.csv");
         std::fs::write(&path, text.replacen("game_date", "day", 1)).unwrap();
-        let preset = crate::preset::load("fastball", None).unwrap();
-        let parks = crate::preset::parks::all(None).unwrap();
+        let preset = preset::load("fastball", None).unwrap();
+        let parks = preset::parks::all(None).unwrap();
         let mut setup = Setup::new(&preset, &parks);
-        let swings = solved_swings(&mut setup, path.to_str().unwrap(), Shown::default()).unwrap();
+        let input = crate::open(path.to_str().unwrap()).unwrap();
+        let swings = solved_swings(&mut setup, input, Shown::default(), &mut |_| {}).unwrap();
         assert_eq!(swings.presets[0].name, "Henderson");
         assert!(
             swings.presets[0]

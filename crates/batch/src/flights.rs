@@ -4,20 +4,20 @@
 //! and at every park. Every row's answer is its own ([`many::judge_many`]):
 //! what `fly` gives that row alone, bit for bit, whatever its neighbours.
 
-use super::rows::Job;
-use super::savant_columns::Setup;
-use crate::Scene;
-use crate::analysis::precision::Purpose;
-use crate::analysis::savant;
-use crate::model::clearing::{Clearing, Crossing, Landing};
-use crate::model::flight::{FlightOptions, FlightSummary};
-use crate::model::launch::{self, BattedBall, SceneFlight};
-use crate::model::many;
-use crate::model::park::{self, GivenWeather};
+use crate::row::Job;
+use crate::setup::Setup;
+use analysis::precision::Purpose;
+use analysis::savant;
+use model::clearing::{Clearing, Crossing, Landing};
+use model::flight::{FlightOptions, FlightSummary};
+use model::launch::{self, BattedBall, SceneFlight};
+use model::many;
+use model::park::{self, GivenWeather};
+use model::scene::Scene;
 
 /// A row's flight, as the output needs it.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct RowFlight {
+pub(crate) struct RowFlight {
     pub launch: BattedBall,
     pub flight: FlightSummary,
     /// At the row's own fence (its park's, or the generic one).
@@ -31,9 +31,19 @@ pub(super) struct RowFlight {
     pub direction_from: savant::DirectionFrom,
 }
 
+impl RowFlight {
+    /// The model's range less Statcast's distance (m), if both are known.
+    pub(crate) fn difference(&self, job: &Job) -> Option<f64> {
+        let flight = &self.flight;
+        (job.statcast)
+            .filter(|_| flight.landed)
+            .map(|measured| flight.range - measured)
+    }
+}
+
 /// What flying a piece reuses from row to row.
 #[derive(Default)]
-pub(super) struct Scratch {
+pub(crate) struct Scratch {
     /// Each row's crossings of its fences: its own, then each park's.
     crossings: Vec<Option<Crossing>>,
     summaries: Vec<FlightSummary>,
@@ -56,7 +66,7 @@ struct Ready<'f> {
 }
 
 /// Flies `jobs` into `out`, in order (a reason where a row cannot fly).
-pub(super) fn fly_chunk(
+pub(crate) fn fly_chunk(
     jobs: &[Job],
     setup: &Setup,
     scratch: &mut Scratch,
@@ -66,7 +76,7 @@ pub(super) fn fly_chunk(
     scratch.cleared.clear();
     scratch.clearings.clear();
     // The generic fences of the piece (one, unless rows give field.*).
-    let mut generic: Vec<(crate::preset::Fence, park::Fence)> = Vec::new();
+    let mut generic: Vec<(preset::Fence, park::Fence)> = Vec::new();
     for job in jobs.iter().filter(|j| j.park.is_none()) {
         if !generic.iter().any(|(f, _)| *f == job.fence) {
             generic.push((job.fence, job.fence.uniform()));

@@ -1,0 +1,341 @@
+//! `calibrate`'s sinks: the measured flights its fits take (each launch
+//! completed as `fly --batch` completes it, or launched by its solved
+//! swing with `--spin swing`), grouped by a column with `--by`; and the
+//! tracked swings of `calibrate --impact`. Read on the one path, bad rows
+//! named and counted as every command names them.
+
+use std::io::BufRead;
+
+use analysis::bat_tracking::TrackedSwing;
+use analysis::calibrate::{self, Measured};
+use analysis::precision::Purpose;
+use analysis::savant;
+
+use crate::columns::SavantColumn;
+use crate::pieces::{Outcome, Piece, Stage, stream};
+use crate::read::Records;
+use crate::row::Job;
+use crate::setup::Setup;
+use crate::swing::solve_row;
+use crate::tally::LOWEST_FLIGHT;
+use crate::{header_of, plural};
+
+/// A group's rows fewer than this are named, not fitted: the same minimum
+/// for every fit, grouped or not.
+pub const FEWEST_ROWS: usize = 10;
+
+/// What was read: the measured rows, and the others counted.
+#[derive(Debug, Default)]
+pub struct Measurements {
+    pub measured: Vec<Measured>,
+    /// Each measured row's group (`--by`'s; empty without it).
+    pub groups: Vec<String>,
+    /// With `--spin swing`: the rows launched by their solved swing.
+    pub spin_from_swing: Option<usize>,
+    pub rows: usize,
+    pub without_distance: usize,
+    /// Launched below [`LOWEST_FLIGHT`]: a grounder's distance is where it
+    /// was fielded.
+    pub grounders: usize,
+    /// With a measurement outside its plausible range (each named).
+    pub implausible: usize,
+    /// The header has hit coordinates but the row none.
+    pub without_spray: usize,
+    /// Fielded where no flight comes down (a spray no direction lands on).
+    pub unlanded: usize,
+    pub outcome: Outcome,
+}
+
+/// What `--by` groups on: a column's cell, the month of its date, or the
+/// season (`season` or `game_year`, or the year of its date).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum By {
+    Column(String),
+    Month,
+    Season,
+}
+
+impl By {
+    pub fn of(name: &str) -> By {
+        match name {
+            "month" => By::Month,
+            "season" | "game_year" | "year" => By::Season,
+            column => By::Column(column.to_owned()),
+        }
+    }
+
+    /// The header column it reads, of `names`.
+    fn column<'a>(&'a self, names: &[String]) -> Result<&'a str, String> {
+        let candidates: &[&str] = match self {
+            By::Column(name) if names.iter().any(|n| n == name) => return Ok(name),
+            By::Column(name) => {
+                return Err(format!(
+                    "--by {}: no column of that name in the header",
+                    preset::escape_cut(name, 80)
+                ));
+            }
+            By::Month => &["game_date", "Date"],
+            By::Season => &["game_year", "season", "game_date", "Date"],
+        };
+        (candidates.iter().copied())
+            .find(|c| names.iter().any(|n| n == c))
+            .ok_or_else(|| format!("--by: no column {} in the header", candidates.join(" or ")))
+    }
+
+    /// A row's group from its cell: a date as YYYY-MM (or YYYY), from ISO
+    /// `2024-05-03` or US `5/3/2024`; a year as it is.
+    fn group(&self, cell: &str) -> Result<String, String> {
+        let cell = cell.trim();
+        let date = |cell: &str| -> Option<(u32, u32)> {
+            let numbers: Vec<&str> = cell.split(['-', '/', ' ', 'T']).collect();
+            let number = |i: usize| numbers.get(i)?.parse::<u32>().ok();
+            let (year, month) = match cell.contains('-') {
+                true => (number(0)?, number(1)?),
+                false => (number(2)?, number(0)?),
+            };
+            ((1800..=2200).contains(&year) && (1..=12).contains(&month)).then_some((year, month))
+        };
+        let unreadable = || {
+            format!(
+                "--by: date {:?} is neither YYYY-MM-DD nor M/D/YYYY",
+                preset::cut(cell, 40)
+            )
+        };
+        match self {
+            By::Column(_) => Ok(cell.to_owned()),
+            By::Month => date(cell)
+                .map(|(y, m)| format!("{y}-{m:02}"))
+                .ok_or_else(unreadable),
+            By::Season if cell.len() == 4 => cell
+                .parse::<u32>()
+                .map(|y| y.to_string())
+                .map_err(|_| unreadable()),
+            By::Season => date(cell)
+                .map(|(y, _)| y.to_string())
+                .ok_or_else(unreadable),
+        }
+    }
+}
+
+/// What a piece measured.
+#[derive(Default)]
+struct Made {
+    measured: Vec<(Measured, String, bool)>,
+    counts: Measurements,
+    /// Rows left out for an implausible measurement: (line, why).
+    implausible: Vec<(usize, String)>,
+    /// Rows read whole that failed here (named with the others).
+    late_failed: usize,
+}
+
+/// Reads every row of `input` into a measured flight (with `by`, its
+/// group), the launches completed on the pool as `fly --batch` completes
+/// them.
+pub fn measured(
+    setup: &mut Setup,
+    input: impl BufRead,
+    by: Option<&By>,
+    note: &mut dyn FnMut(&str),
+) -> Result<Measurements, String> {
+    let mut records = Records::new(input);
+    let names = crate::read_header(&mut records)?.ok_or("the input is empty")?;
+    if let Some(by) = by {
+        setup.keep = vec![by.column(&names)?.to_owned()];
+    }
+    let header = crate::header::Header::new(names, setup)?;
+    let sprayed = header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY);
+    let tilt = setup.tilt_prior(&header);
+    let setup = &*setup;
+    let options = Purpose::Solve.flight_options();
+    let finish = |piece: &mut Piece<Made>| {
+        let made = &mut piece.made;
+        *made = Made::default();
+        let mut wanted = Vec::new();
+        for job in &mut piece.jobs {
+            let counts = &mut made.counts;
+            counts.rows += 1;
+            let group = match by.map(|by| by.group(job.kept.first().map_or("", |c| c))) {
+                Some(Err(why)) => {
+                    piece.failed.push((job.line, why));
+                    made.late_failed += 1;
+                    continue;
+                }
+                Some(Ok(group)) => group,
+                None => String::new(),
+            };
+            let flies = job.scene.batted_ball().angle >= LOWEST_FLIGHT;
+            if job.statcast.is_none() {
+                counts.without_distance += 1;
+            } else if !flies {
+                counts.grounders += 1;
+            } else if sprayed && job.launch.spray.is_none() {
+                counts.without_spray += 1;
+            } else if let Err(why) = plausible(job) {
+                counts.implausible += 1;
+                made.implausible.push((job.line, why));
+            } else {
+                // `--spin swing`: launched as its impact sends the ball.
+                if setup.solve_swings {
+                    solve_row(job, setup.spray, tilt);
+                }
+                wanted.push((job as &Job, group));
+            }
+        }
+        let rows = wanted.iter().map(|(job, _)| (&job.scene, &job.launch));
+        let launched = savant::launch_many(rows, setup.spray, &options);
+        for ((job, group), launched) in wanted.into_iter().zip(launched) {
+            // A ball fielded where no flight comes down says nothing of the
+            // flight's length.
+            let from = job.direction_from(launched.direction_from);
+            if from == savant::DirectionFrom::SprayUnsolved {
+                made.counts.unlanded += 1;
+                continue;
+            }
+            if let Err(e) = launched.scene.validate() {
+                piece.failed.push((job.line, e.to_string()));
+                made.late_failed += 1;
+                continue;
+            }
+            let measured = Measured {
+                scene: launched.scene,
+                distance: job.statcast.expect("a distance"),
+                hang_time: job.hang_time,
+                apex: job.apex,
+            };
+            made.measured.push((measured, group, job.swing_solved()));
+        }
+        piece.answered = made.measured.len();
+    };
+    let mut read = Measurements::default();
+    let mut implausible = Vec::new();
+    let take = |piece: &mut Piece<Made>| {
+        let made = &mut piece.made;
+        let counts = &made.counts;
+        // Every record is a row: read whole, or failed as it was read.
+        read.rows += counts.rows + piece.without_launch + piece.failed.len() - made.late_failed;
+        read.without_distance += counts.without_distance;
+        read.grounders += counts.grounders;
+        read.without_spray += counts.without_spray;
+        read.implausible += counts.implausible;
+        read.unlanded += counts.unlanded;
+        implausible.append(&mut made.implausible);
+        for (measured, group, from_swing) in made.measured.drain(..) {
+            read.measured.push(measured);
+            read.groups.push(group);
+            *read.spin_from_swing.get_or_insert(0) += usize::from(from_swing);
+        }
+        Ok(true)
+    };
+    read.outcome = stream(
+        (setup, &header),
+        &mut records,
+        Stage::Parsed,
+        finish,
+        take,
+        note,
+    )?;
+    for (line, why) in implausible.iter().take(NAMED_IMPLAUSIBLE) {
+        note(&format!("line {line}: {why}; left out of the fit"));
+    }
+    if implausible.len() > NAMED_IMPLAUSIBLE {
+        note(&format!(
+            "{} more row{} with a measurement outside its range; left out of the fit",
+            implausible.len() - NAMED_IMPLAUSIBLE,
+            plural(implausible.len() - NAMED_IMPLAUSIBLE)
+        ));
+    }
+    read.spin_from_swing = setup
+        .solve_swings
+        .then_some(read.spin_from_swing.unwrap_or(0));
+    Ok(read)
+}
+
+/// The most rows named one by one as implausible; the rest are counted.
+const NAMED_IMPLAUSIBLE: usize = 20;
+
+/// Every row's tracked swing (`calibrate --impact`): rows without one are
+/// counted, bad rows named.
+pub fn tracked_swings(
+    setup: &Setup,
+    input: impl BufRead,
+    note: &mut dyn FnMut(&str),
+) -> Result<(Vec<TrackedSwing>, Outcome), String> {
+    let mut records = Records::new(input);
+    let header = header_of(&mut records, setup)?;
+    let finish = |piece: &mut Piece<Vec<TrackedSwing>>| {
+        piece.made.clear();
+        let swings = piece.jobs.iter().map(|job| job.tracked_swing().ok());
+        piece.made.extend(swings.flatten());
+        piece.answered = piece.made.len();
+    };
+    let mut swings = Vec::new();
+    let take = |piece: &mut Piece<Vec<TrackedSwing>>| {
+        swings.append(&mut piece.made);
+        Ok(true)
+    };
+    let outcome = stream(
+        (setup, &header),
+        &mut records,
+        Stage::Parsed,
+        finish,
+        take,
+        note,
+    )?;
+    Ok((swings, outcome))
+}
+
+/// Refuses a row whose measurements are not plausible
+/// ([`calibrate::implausible`]): the column, its value and the range
+/// accepted, in the CSV's units.
+fn plausible(job: &Job) -> Result<(), String> {
+    let Some(distance) = job.statcast else {
+        return Ok(());
+    };
+    let Some((range, value)) = calibrate::implausible(distance, job.hang_time, job.apex) else {
+        return Ok(());
+    };
+    // Savant's feet, for messages about its columns.
+    const FEET_PER_METRE: f64 = 1.0 / 0.3048;
+    let (column, unit, scale) = if range == calibrate::HANG_TIME {
+        ("hang_time", "s", 1.0)
+    } else if range == calibrate::APEX {
+        ("apex", "ft", FEET_PER_METRE)
+    } else {
+        ("hit_distance_sc", "ft", FEET_PER_METRE)
+    };
+    let number = |v: f64| match v.abs() >= 1e6 {
+        true => format!("{v:.3e}"),
+        false => {
+            let text = format!("{v:.2}");
+            text.trim_end_matches('0').trim_end_matches('.').to_owned()
+        }
+    };
+    Err(format!(
+        "{column} = {} {unit}: outside (0, {}] {unit} ({})",
+        number(value * scale),
+        number((range.high * scale * 10.0).round() / 10.0),
+        range.why
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn months_and_seasons_read_iso_and_us_dates_and_refuse_others() {
+        assert_eq!(By::Month.group("2024-05-03").unwrap(), "2024-05");
+        assert_eq!(By::Month.group("10/1/2022").unwrap(), "2022-10");
+        assert_eq!(By::Month.group("5/3/2022 12:00").unwrap(), "2022-05");
+        assert_eq!(By::Season.group("2025").unwrap(), "2025");
+        assert_eq!(By::Season.group("4/30/2024").unwrap(), "2024");
+        assert!(By::Month.group("10/1/20").is_err());
+        assert!(
+            By::Month
+                .group("yesterday")
+                .unwrap_err()
+                .contains("\"yesterday\"")
+        );
+        assert_eq!(By::of("game_year"), By::Season);
+    }
+}

@@ -1,0 +1,196 @@
+//! homerun's batch pipeline: a CSV of launches, or a Baseball Savant
+//! export as it comes, read once and taken down one staged path: the
+//! columns ([`columns`]: one table), the header ([`header`]), records read
+//! bounded ([`read`]), each row made a scene ([`row`]), its swing solved
+//! ([`swing`]), flown ([`flights`]) in pieces on the thread pool
+//! ([`pieces`]), and given to a sink: the rows as CSV or JSON and the
+//! summary ([`fly_rows`]), the measured flights `calibrate` fits
+//! ([`calibrate`]), the tracked swings of `calibrate --impact`, the swings
+//! the explorer opens ([`swings`]). Each row's answer is its own, bit for
+//! bit, whatever its neighbours.
+//!
+//! Arrows point down: this crate imports the core (numerics, units,
+//! model, preset, analysis) and is imported by the frontends.
+
+use std::io::{self, BufRead, Write};
+
+use preset::escape_cut;
+
+pub mod calibrate;
+pub mod columns;
+mod flights;
+pub mod header;
+mod kinds;
+mod output;
+mod own_launch;
+mod pieces;
+mod read;
+mod row;
+mod setup;
+mod summary;
+mod swing;
+pub mod swings;
+mod tally;
+
+pub use analysis::shown::Shown;
+pub use header::{Header, columns_help};
+pub use pieces::Outcome;
+pub use read::{MAX_RECORD_BYTES, open};
+pub use setup::{Setup, quoted};
+pub use summary::band_name;
+pub use tally::Tally;
+
+use pieces::Stage;
+use read::Records;
+
+/// How rows are printed.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Format {
+    pub json: bool,
+    pub shown: Shown,
+}
+
+/// Flies every row of `input` (`fly --batch`, `hit --batch`), writing each
+/// row's answer to `out` in order and naming bad rows to `note`; the
+/// outcome and the rows' tally for the summary. `Err` for an input that
+/// cannot be a batch (its header), or output that cannot be written.
+pub fn fly_rows(
+    setup: &Setup,
+    input: impl BufRead,
+    format: Format,
+    out: &mut dyn Write,
+    note: &mut dyn FnMut(&str),
+    tick: &(dyn Fn() + Sync),
+) -> Result<(Outcome, Tally), String> {
+    let mut records = Records::new(input);
+    let Some(names) = read_header(&mut records)? else {
+        // The header of no rows: a reader of the output still finds columns.
+        let line = output::csv_header(false, setup, format.shown);
+        if !format.json {
+            let _ = out.write_all(line.as_bytes()).and_then(|()| out.flush());
+        }
+        note("the input is empty: no rows to fly");
+        return Ok((Outcome::default(), Tally::new(setup, None)));
+    };
+    let header = Header::new(names, setup)?;
+    let statcast = header.has(columns::SavantColumn::Distance);
+    let written = |r: io::Result<()>| match r {
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(false),
+        Err(e) => Err(format!("writing the output: {e}")),
+        Ok(()) => Ok(true),
+    };
+    if !format.json {
+        let line = output::csv_header(statcast, setup, format.shown);
+        if !written(out.write_all(line.as_bytes()))? {
+            return Ok((Outcome::default(), Tally::new(setup, Some(&header))));
+        }
+    }
+    announce(&header, setup, note);
+    let mut tally = Tally::new(setup, Some(&header));
+    let printed = output::Printed {
+        shown: format.shown,
+        statcast,
+        json: format.json,
+    };
+    let finish = |piece: &mut pieces::Piece<(Vec<u8>, Tally)>| {
+        let (bytes, piece_tally) = &mut piece.made;
+        bytes.clear();
+        *piece_tally = Tally::new(setup, Some(&header));
+        for (job, flown) in piece.jobs.iter().zip(&piece.flown) {
+            let Ok(flown) = flown else { continue };
+            output::write_row(bytes, (job, flown), &piece.scratch, setup, printed);
+            piece_tally.count(job, flown);
+            piece.answered += 1;
+            tick();
+        }
+    };
+    let take = |piece: &mut pieces::Piece<(Vec<u8>, Tally)>| {
+        tally.add(&piece.made.1);
+        written(out.write_all(&piece.made.0).and_then(|()| out.flush()))
+    };
+    let outcome = pieces::stream(
+        (setup, &header),
+        &mut records,
+        Stage::Flown,
+        finish,
+        take,
+        note,
+    )?;
+    tally.close(&outcome);
+    Ok((outcome, tally))
+}
+
+/// "s" after a count other than one: "1 row", "2 rows".
+pub(crate) fn plural(count: usize) -> &'static str {
+    if count == 1 { "" } else { "s" }
+}
+
+/// The header's names (a byte-order mark dropped), `None` for an empty
+/// input, or why the input is no CSV of launches.
+pub(crate) fn read_header<R: BufRead>(
+    records: &mut Records<R>,
+) -> Result<Option<Vec<String>>, String> {
+    let (mut bytes, mut ends) = (Vec::new(), Vec::new());
+    match records.next(&mut bytes, &mut ends, false) {
+        Ok(None) => Ok(None),
+        Ok(Some(read)) if read.too_long => Err(format!(
+            "line {} (the header): longer than {} KiB: not a CSV of launches",
+            read.line,
+            MAX_RECORD_BYTES / 1024
+        )),
+        Ok(Some(_)) => {
+            let mut lossy = read::Lossy::default();
+            let fields = read::Fields::of(&bytes, &ends, &mut lossy);
+            Ok(Some(fields.iter().map(str::to_owned).collect()))
+        }
+        Err(stop) => Err(stop.to_string()),
+    }
+}
+
+/// The header of `records`, checked against `setup`; refused when empty.
+pub(crate) fn header_of<R: BufRead>(
+    records: &mut Records<R>,
+    setup: &Setup,
+) -> Result<Header, String> {
+    let names = read_header(records)?.ok_or("the input is empty")?;
+    Header::new(names, setup)
+}
+
+/// One note for the columns ignored and the launch values the rows take
+/// from elsewhere than a column.
+fn announce(header: &Header, setup: &Setup, note: &mut dyn FnMut(&str)) {
+    let ignored = header.ignored();
+    if !ignored.is_empty() {
+        let shown: Vec<String> = ignored.iter().take(8).map(|n| escape_cut(n, 40)).collect();
+        let more = match ignored.len() > 8 {
+            true => format!(", … ({} in all)", ignored.len()),
+            false => String::new(),
+        };
+        note(&format!(
+            "ignored {} column{} that {} no input: {}{more}",
+            ignored.len(),
+            plural(ignored.len()),
+            if ignored.len() == 1 { "is" } else { "are" },
+            shown.join(", ")
+        ));
+    }
+    let swing_columns = header.swing_columns();
+    for (index, key) in columns::LAUNCH_KEYS.iter().enumerate() {
+        // Without a spin column the spin is estimated (said at the end).
+        if header.has_launch(index) || (index == 2 && !setup.gave(key)) {
+            continue;
+        }
+        let source = match setup.gave(key) {
+            true => format!("every row takes --set {key}"),
+            false => format!(
+                "each row's {key} comes from its own swing (column{} {})",
+                plural(swing_columns.len()),
+                swing_columns.join(", ")
+            ),
+        };
+        note(&format!("no {key} column: {source}"));
+    }
+}
+
+#[cfg(test)]
+mod tests;

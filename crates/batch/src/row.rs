@@ -1,0 +1,490 @@
+//! A batch's row made a scene to fly, or the reason it cannot be one:
+//! each cell read as its column says ([`crate::columns`]).
+
+use analysis::savant::{RowLaunch, spray_angle};
+use model::aero::UnknownModel;
+use model::keys::{InputBatch, InputError, Key, out_of_range_shown};
+use model::park::GivenWeather;
+use model::scene::{Scene, UnknownHand};
+use model::spin_estimate::Side;
+use preset::{FIELD_KEYS, Fence, cut, escape_cut};
+use units::{Quantity, UnitSystem, significant};
+
+use crate::columns::{Column, LAUNCH_KEYS, SavantColumn, Unit};
+use crate::header::{Header, launch_key};
+use crate::kinds::{Called, Kind};
+use crate::own_launch::SwingLaunches;
+use crate::read::Fields;
+use crate::swing::{RowSwing, SwingCells};
+use crate::{Setup, plural};
+
+/// Exactly 0.3048 m to the foot (Statcast's distances are in feet).
+const METRES_PER_FOOT: f64 = 0.3048;
+
+/// One row, ready to fly.
+pub(crate) struct Job {
+    pub(crate) line: usize,
+    /// Its speed, angle and any spin and direction it gave; the rest is
+    /// `launch`'s to fill in.
+    pub(crate) scene: Scene,
+    pub(crate) launch: RowLaunch,
+    /// The generic fence (the preset's, or the row's `field.*`), used when
+    /// the row is at no park.
+    pub(crate) fence: Fence,
+    /// The index of the row's park, if it is at one.
+    pub(crate) park: Option<usize>,
+    /// A fence was given (the preset's `[field]`, `field.*` by --set or a
+    /// column): a row at no park is judged there.
+    pub(crate) fence_given: bool,
+    /// Statcast's distance (m).
+    pub(crate) statcast: Option<f64>,
+    /// Measured hang time (s) and apex (m), for `calibrate`.
+    pub(crate) hang_time: Option<f64>,
+    pub(crate) apex: Option<f64>,
+    /// The `--keep` cells, as read.
+    pub(crate) kept: Vec<String>,
+    /// Its hit coordinates are the plate's: it has no spray.
+    pub(crate) spray_at_plate: bool,
+    /// Its tracking cells, and (when swings are solved) its swing.
+    pub(crate) tracked: SwingCells,
+    pub(crate) swing: Option<RowSwing>,
+    /// The air keys given, by `--set` and by the row: a park keeps them.
+    pub(crate) given: GivenWeather,
+    /// Where its contact height came from.
+    pub(crate) contact: ContactFrom,
+    /// What Savant called it, for the summary.
+    pub(crate) called: Called,
+}
+
+impl Job {
+    /// Whether the row has a fence to be judged at: its park's, or one
+    /// given. Else only a foul ball is called (no generic wall stands in).
+    pub(crate) fn fence_known(&self) -> bool {
+        self.park.is_some() || self.fence_given
+    }
+}
+
+/// What a row turned out to be.
+pub(crate) enum Row {
+    /// Ready to fly: pushed onto the jobs [`parse_row`] was given.
+    Job,
+    Bad {
+        line: usize,
+        reason: String,
+    },
+    /// Every launch column empty, or no launch speed (in a Statcast export:
+    /// a pitch not put in play): skipped and counted, not a failure.
+    NoLaunch,
+}
+
+/// [`InputBatch::set_key_text`], a plain decimal in the key's bounds read
+/// without the general reader (units, errors): the same value, set alike.
+/// A key neither of the air nor of the weather (`air` false) changes
+/// nothing of the batch, and is set at once.
+fn set_number(
+    batch: &mut InputBatch,
+    scene: &mut Scene,
+    (key, air): (&'static Key, bool),
+    text: &str,
+) -> Result<(), InputError> {
+    match text.parse::<f64>().ok() {
+        Some(value) if key.bounds.contains(value) && !air => {
+            (key.set)(scene, value);
+            Ok(())
+        }
+        Some(value) if key.bounds.contains(value) => batch.set_key(scene, key, value),
+        _ => batch.set_key_text(scene, key, text),
+    }
+}
+
+/// A missing value: the empty cell, Savant's `null` (its 2019 layout), R's
+/// `NA`, pandas' `NaN`.
+fn is_missing(value: &str) -> bool {
+    ["", "null", "na", "nan"]
+        .iter()
+        .any(|missing| value.eq_ignore_ascii_case(missing))
+}
+
+/// A measured cell of `quantity`: a bare number in the column's own unit
+/// (`bare` makes it SI), or a number with a unit as `--set` takes it
+/// (`103mph`, `460ft`, `140m`); `None` if it is neither, or not finite.
+pub(crate) fn measure(text: &str, quantity: Quantity, bare: impl Fn(f64) -> f64) -> Option<f64> {
+    let reading = units::read_typed(text, quantity, quantity.si_symbol()).ok()?;
+    let si = match reading.unit {
+        Some(_) => reading.si,
+        None => bare(reading.number),
+    };
+    si.is_finite().then_some(si)
+}
+
+/// The row on `line`, its `fields` as read; with `swings`, the launch
+/// values it leaves to its swing filled in where its swing is known (see
+/// [`SwingLaunches`]). A row that flies is pushed onto `jobs`, built there
+/// (a job holds a scene: moving it cost more than reading its cells).
+pub(crate) fn parse_row(
+    header: &Header,
+    setup: &Setup,
+    (line, fields): (usize, Fields),
+    swings: Option<&mut SwingLaunches>,
+    jobs: &mut Vec<Job>,
+) -> Row {
+    let bad = |reason: String| Row::Bad { line, reason };
+    if fields.len() != header.columns.len() {
+        return bad(format!(
+            "{} field{} where the header has {}",
+            fields.len(),
+            plural(fields.len()),
+            header.columns.len()
+        ));
+    }
+    let no_speed = header.speed.is_some_and(|i| cell(&fields, i).is_empty());
+    let launch = &header.launch;
+    if no_speed || (!launch.is_empty() && launch.iter().all(|&i| cell(&fields, i).is_empty())) {
+        return Row::NoLaunch;
+    }
+    jobs.push(Job {
+        line,
+        scene: setup.base.scene,
+        launch: RowLaunch::default(),
+        fence: setup.base.fence.unwrap_or(Fence::generic()),
+        park: None,
+        // The presets' [field] is the explorer's drawing, no park's wall.
+        fence_given: FIELD_KEYS.iter().any(|k| setup.gave(k.name)),
+        statcast: None,
+        hang_time: None,
+        apex: None,
+        kept: Vec::new(),
+        spray_at_plate: false,
+        tracked: SwingCells::default(),
+        swing: None,
+        given: setup.given,
+        contact: ContactFrom::Given,
+        called: Called::default(),
+    });
+    let job = jobs.last_mut().expect("a job just pushed");
+    if let Err(reason) = read_cells(header, setup, &fields, swings, job) {
+        jobs.pop();
+        return bad(reason);
+    }
+    job.kept = header
+        .keep
+        .iter()
+        .map(|&i| fields.get(i).to_owned())
+        .collect();
+    Row::Job
+}
+
+/// Cell `i` of a row, trimmed, "" where missing.
+fn cell<'a>(fields: &Fields<'a>, i: usize) -> &'a str {
+    let value = fields.get(i).trim();
+    if is_missing(value) { "" } else { value }
+}
+
+/// Sets `job` (the preset's scene and fence) as the row's cells say, and
+/// validates its scene; or the reason the row cannot fly.
+fn read_cells(
+    header: &Header,
+    setup: &Setup,
+    fields: &Fields,
+    swings: Option<&mut SwingLaunches>,
+    job: &mut Job,
+) -> Result<(), String> {
+    let cell = |i: usize| cell(fields, i);
+    let Job {
+        scene,
+        fence,
+        given,
+        fence_given,
+        ..
+    } = job;
+    let mut savant = SavantCells::default();
+    let mut tracked = SwingCells::default();
+    let (mut spin_given, mut sidespin_given) =
+        (setup.gave("launch.spin"), setup.gave("launch.sidespin"));
+    // One row is one source: ρ beside the weather is refused.
+    let mut batch = InputBatch::new();
+    // Statcast's columns read in their units, named only if the row fails.
+    let mut converted = false;
+    for &i in &header.read {
+        let (column, name) = (&header.columns[i], &header.names[i]);
+        let value = cell(i);
+        let number = || {
+            value.parse::<f64>().map_err(|_| {
+                format!(
+                    "{} = {:?}: not a number",
+                    escape_cut(name, 80),
+                    cut(value, 80)
+                )
+            })
+        };
+        let done = match *column {
+            Column::Ignored => Ok(()),
+            // No spin: the estimate's.
+            Column::Launch(2, _) if value.is_empty() => Ok(()),
+            Column::Launch(index, _) if value.is_empty() => {
+                Err(format!("{} is empty", LAUNCH_KEYS[index]))
+            }
+            _ if value.is_empty() => Ok(()), // the preset's value
+            Column::Savant(column) => savant.read(column, value, setup),
+            Column::Swing(column, range) => tracked.read((column, range), value),
+            // A launch.* cell as `--set` takes it (`103mph`).
+            Column::Launch(index, Unit::Si) => {
+                spin_given |= index == 2;
+                set_number(&mut batch, scene, (launch_key(index), false), value)
+                    .map_err(|e| e.to_string())
+            }
+            // Statcast's own columns: a bare number in their unit, or one
+            // with its unit (a launch key: nothing of the batch's, set at
+            // once; checked with the scene).
+            Column::Launch(index, unit) => {
+                let quantity = unit.quantity().expect("Statcast's columns have units");
+                let si = match measure(value, quantity, |v| unit.to_si(v)) {
+                    Some(si) => Ok(si),
+                    None => number().map(|v| unit.to_si(v)),
+                };
+                si.map(|si| {
+                    converted = true;
+                    spin_given |= index == 2;
+                    (launch_key(index).set)(scene, si);
+                })
+            }
+            // The whole value is parsed; only the error's copy is cut.
+            Column::Input(_) => {
+                let input = header.inputs[i].expect("an input column's key");
+                if input.air {
+                    given.note(input.name);
+                }
+                sidespin_given |= input.name == "launch.sidespin";
+                match input.numeric {
+                    Some(key) => set_number(&mut batch, scene, (key, input.air), value),
+                    None => batch.set_text(scene, input.name, value),
+                }
+                .map_err(|e| match e {
+                    InputError::NotANumber { key, text } => InputError::NotANumber {
+                        key,
+                        text: cut(&text, 80),
+                    },
+                    InputError::UnknownModel(model) => InputError::UnknownModel(UnknownModel {
+                        text: cut(&model.text, 80),
+                        ..model
+                    }),
+                    InputError::UnknownHand(hand) => InputError::UnknownHand(UnknownHand {
+                        text: cut(&hand.text, 80),
+                    }),
+                    e => e,
+                })
+                .map_err(|e| e.to_string())
+            }
+            Column::Field(index) => {
+                let key = &FIELD_KEYS[index];
+                *fence_given = true;
+                key.read(value)
+                    .map(|v| (key.set)(fence, v))
+                    .map_err(|e| e.to_string())
+            }
+        };
+        done?;
+    }
+    if let Some(direction) = savant.direction {
+        scene.launch.direction = Some(direction);
+    }
+    let contact = savant.start_at_pitch(
+        scene,
+        header.contact_height_given || setup.gave(CONTACT_HEIGHT),
+    );
+    let park = setup.park.or(savant.park);
+    if let Some(index) = park {
+        given.park_air(&mut scene.environment, setup.parks.parks[index].elevation);
+    }
+    let valid = match swings {
+        Some(swings) => swings.validate(scene, header.launch_only.then_some(park)),
+        None => scene.validate(),
+    };
+    if let Err(mut e) = valid {
+        // Out of range from a column in mph, ° or rpm: shown in that unit
+        // too, as `--set` shows a value typed with one.
+        if let InputError::OutOfRange {
+            key,
+            value,
+            bounds,
+            unit,
+            typed: None,
+        } = e
+            && let Some(quantity) = header.columns.iter().find_map(|column| match column {
+                Column::Launch(i, unit) if LAUNCH_KEYS[*i] == key => unit.quantity(),
+                _ => None,
+            })
+        {
+            let shown = quantity.unit(UnitSystem::Imperial, unit);
+            let typed = significant(shown.show(value));
+            e = out_of_range_shown((key, quantity, unit, bounds), value, &typed, shown);
+        }
+        let from = if converted {
+            let read: Vec<String> = header
+                .columns
+                .iter()
+                .zip(&header.names)
+                .enumerate()
+                .filter_map(|(i, (column, name))| match column {
+                    Column::Launch(_, unit) if *unit != Unit::Si && !cell(i).is_empty() => Some(
+                        format!("{name} = {} {}", escape_cut(cell(i), 80), unit.name()),
+                    ),
+                    _ => None,
+                })
+                .collect();
+            format!(" (from {})", read.join(", "))
+        } else {
+            String::new()
+        };
+        return Err(format!("{e}{from}"));
+    }
+    job.launch = RowLaunch {
+        spray: savant.spray().filter(|_| !header.direction_given),
+        side: savant.side,
+        // A row that gives its backspin has its spin: only a row without
+        // one is filled, both parts (a sidespin given is kept).
+        estimate_backspin: !spin_given,
+        estimate_sidespin: !spin_given && !sidespin_given,
+    };
+    job.park = park;
+    job.contact = contact;
+    job.called = savant.called;
+    job.tracked = tracked;
+    job.spray_at_plate = savant.at_plate() && !header.direction_given;
+    (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);
+    Ok(())
+}
+
+/// The key `plate_z` gives.
+pub(crate) const CONTACT_HEIGHT: &str = "environment.contact_height";
+
+/// `environment.contact_height`, looked up once.
+fn contact_height_key() -> &'static Key {
+    static KEY: std::sync::OnceLock<&'static Key> = std::sync::OnceLock::new();
+    KEY.get_or_init(|| Scene::key(CONTACT_HEIGHT).expect("the contact height's key"))
+}
+
+/// Where a row's flight starts from.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) enum ContactFrom {
+    /// The preset's (or `--set`'s, or a column's) contact height.
+    #[default]
+    Given,
+    /// The pitch's height at the plate, `plate_z`.
+    Pitch,
+    /// A `plate_z` that is no height (below the ground, or not a number):
+    /// the given contact height instead.
+    PitchUnusable,
+}
+
+/// What a row's Savant cells say.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct SavantCells {
+    pub hc_x: Option<f64>,
+    pub hc_y: Option<f64>,
+    pub side: Option<Side>,
+    /// The index of the row's park in the list.
+    pub park: Option<usize>,
+    /// Statcast's distance (m).
+    pub distance: Option<f64>,
+    /// Hang time (s) and apex (m).
+    pub hang_time: Option<f64>,
+    pub apex: Option<f64>,
+    /// The launch direction (rad).
+    pub direction: Option<f64>,
+    /// The pitch's height at the plate (m), as read; `None` where the
+    /// cell cannot be read (an empty cell is never read).
+    pub plate_height: Option<Option<f64>>,
+    /// What Savant called the ball.
+    pub called: Called,
+}
+
+impl SavantCells {
+    /// Reads one (trimmed, non-empty, not "null") cell.
+    pub(crate) fn read(
+        &mut self,
+        column: SavantColumn,
+        value: &str,
+        setup: &Setup,
+    ) -> Result<(), String> {
+        let number = || {
+            (value.parse::<f64>().ok())
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| {
+                    format!(
+                        "{} = {:?}: not a number",
+                        crate::columns::name_of(crate::columns::Becomes::Savant(column)),
+                        cut(value, 80)
+                    )
+                })
+        };
+        // Measurements, only compared: one that cannot be read is missing.
+        let feet = || measure(value, Quantity::Distance, |ft| ft * METRES_PER_FOOT);
+        match column {
+            SavantColumn::HcX => self.hc_x = Some(number()?),
+            SavantColumn::HcY => self.hc_y = Some(number()?),
+            SavantColumn::Distance => self.distance = feet(),
+            SavantColumn::HangTime => self.hang_time = measure(value, Quantity::Unchanged, |s| s),
+            SavantColumn::Apex => self.apex = feet(),
+            SavantColumn::ExitDirection => self.direction = Some(number()?.to_radians()),
+            // The contact's height, only where it can be one (read_cells);
+            // one that cannot be read leaves the preset's, as a missing one.
+            SavantColumn::PlateZ => self.plate_height = Some(feet()),
+            SavantColumn::BbType => self.called.kind = Kind::of(value),
+            SavantColumn::Events => self.called.home_run = value.eq_ignore_ascii_case("home_run"),
+            SavantColumn::Stand => {
+                // Savant's R and L, Trackman's Right and Left.
+                self.side = Some(match value.to_ascii_lowercase().as_str() {
+                    "r" | "right" => Side::Right,
+                    "l" | "left" => Side::Left,
+                    _ => {
+                        return Err(format!(
+                            "stand = {:?}: expected R or L (the batter's side)",
+                            cut(value, 80)
+                        ));
+                    }
+                });
+            }
+            SavantColumn::HomeTeam => {
+                let park = setup.park_of(value);
+                self.park = Some(park.ok_or_else(|| {
+                    format!(
+                        "home_team = {:?}: no park has that code (`homerun parks` lists them)",
+                        escape_cut(value, 20)
+                    )
+                })?);
+            }
+        }
+        Ok(())
+    }
+
+    /// Starts the row's flight where the bat met the pitch: at the pitch's
+    /// height over the plate (`plate_z`), unless the contact height is
+    /// `given` (by `--set` or a column) for every row.
+    pub(crate) fn start_at_pitch(&self, scene: &mut Scene, given: bool) -> ContactFrom {
+        let Some(read) = self.plate_height.filter(|_| !given) else {
+            return ContactFrom::Given;
+        };
+        let key = contact_height_key();
+        match read.filter(|&height| key.bounds.contains(height)) {
+            Some(height) => {
+                (key.set)(scene, height);
+                ContactFrom::Pitch
+            }
+            None => ContactFrom::PitchUnusable,
+        }
+    }
+
+    /// The spray angle (rad), if the row has both hit coordinates and they
+    /// are not the plate's own (which gives no direction).
+    pub(crate) fn spray(&self) -> Option<f64> {
+        Some(spray_angle(self.hc_x?, self.hc_y?)).filter(|angle| !angle.is_nan())
+    }
+
+    /// Whether the hit coordinates are exactly the plate's.
+    pub(crate) fn at_plate(&self) -> bool {
+        self.hc_x
+            .zip(self.hc_y)
+            .is_some_and(|(x, y)| spray_angle(x, y).is_nan())
+    }
+}

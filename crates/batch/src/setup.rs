@@ -1,0 +1,122 @@
+//! What every row of a batch shares: the preset, the parks, and what the
+//! command line chose.
+
+use analysis::bat_tracking;
+use analysis::savant::Spray;
+use model::park::{self, GivenWeather};
+use preset::Preset;
+use preset::parks::Parks;
+
+use crate::header::Header;
+
+/// What every row of a batch shares.
+pub struct Setup<'a> {
+    pub base: &'a Preset,
+    /// Every park: a row's `home_team` is looked up here, and every flight
+    /// is judged at each of their fences.
+    pub parks: &'a Parks,
+    /// The parks' fences, in `parks`' order.
+    pub fences: Vec<&'a park::Fence>,
+    /// `--park`: the index of the park every row is taken to.
+    pub park: Option<usize>,
+    /// The keys `--set` gave (the one record of "was this given?" for the
+    /// command line; a row's own columns are the header's).
+    pub given_keys: Vec<String>,
+    /// The air keys among them: a park does not replace them.
+    pub given: GivenWeather,
+    /// `--column NAME=COLUMN`: the file's COLUMN read as NAME.
+    pub mapping: Vec<(String, String)>,
+    pub spray: Spray,
+    /// `--own-air`: each park counted in its own air (a flight per park).
+    pub own_air: bool,
+    /// `--all-parks`: each park's outcome and margin on every row.
+    pub all_parks: bool,
+    /// `--keep`'s column names.
+    pub keep: Vec<String>,
+    /// Solve each row's swing from bat tracking and fly the impact's
+    /// launch where it is solved (`hit --batch`, `--spin swing`).
+    pub solve_swings: bool,
+    /// Print the swing's columns (`hit --batch`).
+    pub swing_columns: bool,
+    /// Whether the output goes to a terminal: the kept cells' control
+    /// characters are then escaped, in CSV and JSON alike.
+    pub escape_kept: bool,
+    /// Each park's code as a CSV field, for every row's `park` column.
+    pub(crate) code_fields: Vec<String>,
+}
+
+impl<'a> Setup<'a> {
+    pub fn new(base: &'a Preset, parks: &'a Parks) -> Setup<'a> {
+        Setup {
+            base,
+            parks,
+            fences: parks.parks.iter().map(|p| &p.fence).collect(),
+            park: None,
+            given_keys: Vec::new(),
+            given: GivenWeather::default(),
+            mapping: Vec::new(),
+            spray: Spray::Landing,
+            own_air: false,
+            all_parks: false,
+            keep: Vec::new(),
+            solve_swings: false,
+            swing_columns: false,
+            escape_kept: false,
+            code_fields: parks.parks.iter().map(|p| quoted(&p.code)).collect(),
+        }
+    }
+
+    /// Notes `--set`'s assignments: their keys, and the air among them.
+    pub fn given(&mut self, assignments: &[String]) {
+        for (key, _) in assignments.iter().filter_map(|a| a.split_once('=')) {
+            self.given.note(key.trim());
+            self.given_keys.push(key.trim().to_owned());
+        }
+    }
+
+    /// Whether `--set` gave `key`.
+    pub(crate) fn gave(&self, key: &str) -> bool {
+        self.given_keys.iter().any(|k| k == key)
+    }
+
+    /// The bat's tilt a tracked row without `swing_path_tilt` is solved
+    /// at: MLB's league average ([`bat_tracking::LEAGUE_SWING_PATH_TILT`]),
+    /// unless `--set bat.tilt` or a `bat.tilt` column gives one (`None`:
+    /// the row's scene's).
+    pub(crate) fn tilt_prior(&self, header: &Header) -> Option<f64> {
+        (!self.gave("bat.tilt") && !header.tilt_given)
+            .then_some(bat_tracking::LEAGUE_SWING_PATH_TILT)
+    }
+
+    /// The index of the first park that answers to `code` (any case).
+    pub(crate) fn park_of(&self, code: &str) -> Option<usize> {
+        self.parks.parks.iter().position(|p| p.answers_to(code))
+    }
+}
+
+/// A field for CSV output, quoted as RFC 4180 asks when it holds a comma, a
+/// quote or a line break (and when it starts or ends with a space, which
+/// some readers would trim).
+pub fn quoted(field: &str) -> String {
+    let special = field.contains([',', '"', '\n', '\r']);
+    if special || field.starts_with(' ') || field.ends_with(' ') {
+        format!("\"{}\"", field.replace('"', "\"\""))
+    } else {
+        field.to_owned()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kept_fields_are_quoted_as_rfc_4180_asks() {
+        assert_eq!(quoted("Target Field"), "Target Field");
+        assert_eq!(quoted("homers, to left"), "\"homers, to left\"");
+        assert_eq!(quoted("say \"hi\""), "\"say \"\"hi\"\"\"");
+        assert_eq!(quoted("two\nlines"), "\"two\nlines\"");
+        assert_eq!(quoted("trailing "), "\"trailing \"");
+        assert_eq!(quoted(""), "");
+    }
+}

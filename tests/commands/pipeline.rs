@@ -1,0 +1,357 @@
+//! The Savant pipeline never answers silently wrong (issue 35): a launch
+//! no column gives is refused with the names nearest, `--column` maps a
+//! column, stdout holds rows only, JSON follows --units, a row at no park
+//! gets no verdict, dates of either form group by month, gzip and Parquet
+//! are told by their bytes, and a repeated column is refused.
+
+use std::io::Write as _;
+use std::process::Stdio;
+
+use super::common::command;
+
+/// The committed sample of 2019 home runs (real Savant rows).
+const HOME_RUNS: &str = "tests/data/savant_home_runs.csv";
+
+/// Runs `homerun args` with `stdin` piped in: (stdout, stderr, status).
+fn run(args: &[&str], stdin: &[u8]) -> (String, String, i32) {
+    let mut child = command()
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut input = child.stdin.take().unwrap();
+    let _ = input.write_all(stdin);
+    drop(input);
+    let out = child.wait_with_output().unwrap();
+    (
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+        out.status.code().unwrap_or(-1),
+    )
+}
+
+fn sample() -> String {
+    std::fs::read_to_string(HOME_RUNS).unwrap()
+}
+
+#[test]
+fn a_file_without_a_launch_column_is_refused_with_the_names_nearest() {
+    for renamed in ["exit_velo", "ExitVelo", "EV"] {
+        let text = sample().replacen("\"launch_speed\"", &format!("\"{renamed}\""), 1);
+        let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+        assert_eq!(status, 2, "{err}");
+        assert!(out.is_empty(), "{out}");
+        assert!(err.contains("no launch speed column"), "{err}");
+        assert!(err.contains("launch_speed"), "{err}");
+        assert!(
+            err.contains("did you mean") && err.contains(&format!("`{renamed}`")),
+            "{err}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err}");
+        // Mapped, the same rows fly as the original file's.
+        let mapped = format!("launch_speed={renamed}");
+        let (out, _, status) = run(
+            &["fly", "--batch", "-", "--column", &mapped],
+            text.as_bytes(),
+        );
+        let (want, _, _) = run(&["fly", "--batch", HOME_RUNS], b"");
+        assert_eq!((status, out), (0, want));
+    }
+    // Names in another case or spacing are the same column.
+    let text = sample().replacen("\"launch_speed\"", "\"Launch Speed\"", 1);
+    let (out, _, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert_eq!(
+        (status, out),
+        (0, run(&["fly", "--batch", HOME_RUNS], b"").0)
+    );
+    // --set gives the key for every row: taken.
+    let text = "launch_speed\n100\n101\n";
+    let (_, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert_eq!(status, 2, "{err}");
+    let (out, err, status) = run(
+        &["fly", "--batch", "-", "--set", "launch.angle=30deg"],
+        text.as_bytes(),
+    );
+    assert_eq!(status, 0, "{err}");
+    assert_eq!(out.lines().count(), 3);
+    // A mapping that names no column is one line.
+    let (_, err, status) = run(
+        &["fly", "--batch", HOME_RUNS, "--column", "launch_speed=EV"],
+        b"",
+    );
+    assert_eq!(status, 2);
+    assert!(err.contains("no column `EV`"), "{err}");
+}
+
+#[test]
+fn a_repeated_column_of_any_kind_is_refused_naming_both() {
+    let header = "launch_speed,launch_angle,bat_speed,vx0,vy0,vz0,ax,ay,az,bat_speed\n";
+    let (_, err, status) = run(&["hit", "--batch", "-"], header.as_bytes());
+    assert_eq!(status, 2, "{err}");
+    assert!(
+        err.contains("`bat_speed` and `bat_speed` both give bat_speed"),
+        "{err}"
+    );
+    let (_, err, status) = run(
+        &["fly", "--batch", "-"],
+        b"launch_speed,exit_speed,launch_angle\n",
+    );
+    assert_eq!(status, 2);
+    assert!(err.contains("`launch_speed` and `exit_speed`"), "{err}");
+}
+
+#[test]
+fn stdout_holds_rows_only_and_the_summary_goes_to_stderr_or_its_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("summary.json");
+    let args = [
+        "fly",
+        "--batch",
+        HOME_RUNS,
+        "--summary",
+        "--units",
+        "imperial",
+    ];
+    let mut with_file: Vec<&str> = args.to_vec();
+    with_file.extend(["--summary-file", file.to_str().unwrap()]);
+    let (out, err, status) = run(&with_file, b"");
+    assert_eq!(status, 0, "{err}");
+    let rows: Vec<&str> = out.lines().collect();
+    // A header, then one row a line, each numbered: nothing else.
+    assert!(rows[0].starts_with("line,"));
+    assert!(
+        rows[1..]
+            .iter()
+            .all(|r| r.split(',').next().unwrap().parse::<usize>().is_ok())
+    );
+    assert!(
+        err.contains("by launch angle, model − hit_distance_sc (ft)"),
+        "{err}"
+    );
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    assert_eq!(summary["rows"].as_u64().unwrap() as usize, rows.len() - 1);
+    // Its numbers in feet, named so.
+    let median = summary["difference"]["median_ft"].as_f64().unwrap();
+    assert!(
+        err.contains(&format!("median difference {median:+.1} ft")),
+        "{err}"
+    );
+    // JSON rows too.
+    let (out, _, _) = run(&["fly", "--batch", HOME_RUNS, "--json", "--summary"], b"");
+    assert!(out.lines().all(|l| {
+        let row: serde_json::Value = serde_json::from_str(l).unwrap();
+        row.get("line").is_some()
+    }));
+}
+
+#[test]
+fn json_follows_units_with_the_unit_in_each_key() {
+    let (si, _, _) = run(&["fly", "--batch", HOME_RUNS, "--json"], b"");
+    let (imperial, _, _) = run(
+        &["fly", "--batch", HOME_RUNS, "--json", "--units", "imperial"],
+        b"",
+    );
+    let first = |text: &str| -> serde_json::Value {
+        serde_json::from_str(text.lines().next().unwrap()).unwrap()
+    };
+    let (si, imperial) = (first(&si), first(&imperial));
+    let range = si["flight"]["range"].as_f64().unwrap();
+    assert_eq!(
+        imperial["flight"]["range_ft"].as_f64().unwrap(),
+        range / 0.3048
+    );
+    let speed = si["launch"]["speed"].as_f64().unwrap();
+    let mph = imperial["launch"]["speed_mph"].as_f64().unwrap();
+    assert!((mph - speed / 0.44704).abs() < 1e-9, "{mph}");
+    assert!(imperial["flight"].get("range").is_none());
+    assert_eq!(imperial["line"], si["line"]);
+}
+
+#[test]
+fn a_row_at_no_park_gets_no_verdict_and_the_summary_says_so() {
+    let text = "launch_speed,launch_angle\n110,28\n";
+    let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    let header: Vec<&str> = out.lines().next().unwrap().split(',').collect();
+    let row: Vec<&str> = out.lines().nth(1).unwrap().split(',').collect();
+    let cell = |name: &str| row[header.iter().position(|h| *h == name).unwrap()];
+    assert_eq!(
+        (
+            cell("clears_fence"),
+            cell("park"),
+            cell("outcome"),
+            cell("margin")
+        ),
+        ("", "none", "no_park", "")
+    );
+    assert!(err.contains("at no park"), "{err}");
+    // With --park the same row is judged there.
+    let (out, _, _) = run(&["fly", "--batch", "-", "--park", "COL"], text.as_bytes());
+    assert!(out.lines().nth(1).unwrap().contains(",COL,"), "{out}");
+}
+
+#[test]
+fn a_kept_column_named_as_an_output_column_is_not_repeated() {
+    let text = "line,launch_speed,launch_angle\nfirst,100,30\n";
+    let (out, _, status) = run(&["fly", "--batch", "-", "--keep", "line"], text.as_bytes());
+    assert_eq!(status, 0);
+    let header: Vec<&str> = out.lines().next().unwrap().split(',').collect();
+    assert_eq!(header.iter().filter(|h| **h == "line").count(), 1);
+    assert_eq!(header.last(), Some(&"kept.line"));
+    assert!(out.lines().nth(1).unwrap().ends_with(",first"));
+}
+
+#[test]
+fn gzip_reads_as_it_comes_and_parquet_is_named() {
+    let text = sample();
+    let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());
+    gz.write_all(text.as_bytes()).unwrap();
+    let gz = gz.finish().unwrap();
+    let (out, err, status) = run(&["fly", "--batch", "-"], &gz);
+    assert_eq!(status, 0, "{err}");
+    assert_eq!(out, run(&["fly", "--batch", HOME_RUNS], b"").0);
+    let (out, err, status) = run(&["fly", "--batch", "-"], b"PAR1\x15\x04\x15\x10");
+    assert_eq!((status, out.as_str()), (2, ""));
+    assert!(err.contains("a Parquet file, not CSV text"), "{err}");
+}
+
+#[test]
+fn a_byte_order_mark_split_across_reads_is_dropped_whole() {
+    // The BOM's first byte alone, then the rest with a quoted first name.
+    let mut child = command()
+        .args(["fly", "--batch", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut input = child.stdin.take().unwrap();
+    input.write_all(b"\xef").unwrap();
+    input.flush().unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    input
+        .write_all(b"\xbb\xbf\"launch_speed\",launch_angle\n100,30\n")
+        .unwrap();
+    drop(input);
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(!err.contains("ignored"), "{err}");
+    let row = String::from_utf8_lossy(&out.stdout);
+    // 100 mph, as launch_speed gives it.
+    assert!(
+        row.lines().nth(1).unwrap().starts_with("2,44.7040,"),
+        "{row}"
+    );
+}
+
+#[test]
+fn calibrate_by_month_reads_either_date_and_saves_a_preset_a_group() {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().to_str().unwrap();
+    // The sample's ISO dates written as M/D/YYYY.
+    let us: Vec<String> = (sample().lines())
+        .map(|line| match line.split_once("\",") {
+            Some((date, rest)) if date.starts_with("\"20") => {
+                let parts: Vec<u32> = date[1..].split('-').map(|p| p.parse().unwrap()).collect();
+                format!("\"{}/{}/{}\",{rest}", parts[1], parts[2], parts[0])
+            }
+            _ => line.to_owned(),
+        })
+        .collect();
+    let us = us.join("\n");
+    assert!(us.contains("\"7/24/2019\""));
+    let file = dir.path().join("us.csv");
+    std::fs::write(&file, &us).unwrap();
+    let out = command()
+        .args([
+            "--presets-dir",
+            presets,
+            "calibrate",
+            file.to_str().unwrap(),
+        ])
+        .args(["--by", "month", "--drag-only", "--save", "hr"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // Each month a group, each fitted one saved as a preset of its own; a
+    // month too small is named, and the others still fitted.
+    let fitted: Vec<&str> = (text.lines().skip(1))
+        .filter(|l| l.contains("saved"))
+        .map(|l| l.split_whitespace().next().unwrap())
+        .collect();
+    assert!(fitted.len() >= 3, "{text}");
+    for month in &fitted {
+        assert!(month.starts_with("2019-"), "{text}");
+        assert!(
+            dir.path().join(format!("hr-{month}.toml")).exists(),
+            "{text}"
+        );
+    }
+    // A date in neither form is named.
+    std::fs::write(&file, us.replacen("\"7/24/2019\"", "\"yesterday\"", 1)).unwrap();
+    let out = command()
+        .args(["calibrate", file.to_str().unwrap(), "--by", "month"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("\"yesterday\" is neither YYYY-MM-DD nor M/D/YYYY"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_fit_needs_ten_rows_grouped_or_not() {
+    let text: String = sample().lines().take(6).collect::<Vec<_>>().join("\n");
+    let (_, err, status) = run(&["calibrate", "-"], text.as_bytes());
+    assert_eq!(status, 2);
+    assert!(err.contains("too few to fit (at least 10"), "{err}");
+}
+
+/// Rows in range never give inf or NaN (issue 38, item 6): a swing as steep
+/// as its tilt (attack_angle = swing_path_tilt = −60°) is told unsolved
+/// without an infinite shortfall, and a pitch barely moving (vy0 =
+/// −1e-300 ft/s) is refused with its range, not taken at 98,933 m/s.
+#[test]
+fn in_range_rows_give_no_inf_or_nan() {
+    let text = std::fs::read_to_string("tests/data/savant_swings.csv").unwrap();
+    let mut lines = text.lines();
+    let mut steep = format!("{},attack_angle,swing_path_tilt\n", lines.next().unwrap());
+    for line in lines {
+        steep += &format!("{line},-60,-60\n");
+    }
+    let (out, err, status) = run(&["hit", "--batch", "-", "--json"], steep.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    for line in out.lines() {
+        let row: serde_json::Value = serde_json::from_str(line).unwrap();
+        assert!(row["solved"].is_boolean(), "{row}");
+        if let Some(shortfall) = row.get("shortfall") {
+            assert!(shortfall.as_f64().is_some_and(f64::is_finite), "{row}");
+        }
+        assert!(!line.contains("inf") && !line.contains("NaN"), "{line}");
+    }
+    // The row's own vy0 renamed away, a new one at the end.
+    let header = text
+        .lines()
+        .next()
+        .unwrap()
+        .replacen(",vy0,", ",vy0_measured,", 1);
+    let row = text.lines().nth(1).unwrap();
+    let input = format!("{header},vy0\n{row},-1e-300\n");
+    let (_, err, status) = run(&["hit", "--batch", "-"], input.as_bytes());
+    assert_eq!(status, 1, "{err}");
+    assert!(
+        err.contains("vy0 = \"-1e-300\": expected a number from -250 to -20"),
+        "{err}"
+    );
+}
