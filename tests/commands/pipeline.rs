@@ -355,3 +355,33 @@ fn in_range_rows_give_no_inf_or_nan() {
         "{err}"
     );
 }
+
+/// Every ball in play with a launch speed and angle gets an answer (issue
+/// 35, item 7): Statcast's straight up and straight down (±90°, three rows
+/// of June–September 2024) fly, land near the plate, and the run exits 0.
+#[test]
+fn straight_up_and_straight_down_are_answered() {
+    let text = "launch_speed,launch_angle,hc_x,hc_y,stand,home_team\n\
+                80,90,120,190,R,BOS\n70,-90,,,L,NYY\n80,89.99,120,190,R,BOS\n";
+    let (out, err, status) = run(&["fly", "--batch", "-", "--json"], text.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    let rows: Vec<serde_json::Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(rows.len(), 3);
+    for row in &rows {
+        assert_eq!(row["flight"]["landed"], true, "{row}");
+        assert_eq!(row["fence"]["outcome"], "foul", "{row}");
+    }
+    let range = |k: usize| rows[k]["flight"]["range"].as_f64().unwrap();
+    // Straight down it meets the ground at once; straight up it comes down
+    // as 89.99° does, a stride away.
+    assert!(range(1) < 0.01, "{}", range(1));
+    assert!(
+        (range(0) - range(2)).abs() < 0.1,
+        "{} {}",
+        range(0),
+        range(2)
+    );
+}

@@ -157,7 +157,7 @@ fn keys_gives_ranges_and_values_in_the_units_shown() {
         "{speed:?}"
     );
     assert!((100.0 / MPH - 223.694).abs() < 5e-4);
-    assert_eq!(line("launch.angle")[2..5], ["°", "(-90,", "90)"]);
+    assert_eq!(line("launch.angle")[2..5], ["°", "[-90,", "90]"]);
     assert_eq!(
         line("environment.temperature")[2..6],
         ["°F", "[-58,", "140]", "59"]

@@ -243,8 +243,8 @@ fn batch_cells_take_units_and_statcast_columns_keep_theirs() {
     );
     assert!(
         String::from_utf8_lossy(&output.stderr).contains(
-            "line 2: launch.angle = 95 ° (1.65806 rad): must be a finite number in (-π/2, π/2) rad, \
-             that is (-90, 90) ° (from launch_speed = 98 mph, launch_angle = 95 °)"
+            "line 2: launch.angle = 95 ° (1.65806 rad): must be a finite number in [-π/2, π/2] rad, \
+             that is [-90, 90] ° (from launch_speed = 98 mph, launch_angle = 95 °)"
         ),
         "{output:?}"
     );

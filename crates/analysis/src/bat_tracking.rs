@@ -573,7 +573,11 @@ impl Problem {
             previous = Some((v, g));
         }
         let Some(bracket) = bracket else {
-            return Err(if most < 0.0 {
+            // No contact speed gives the angle at all: no speed is told
+            // short (never an infinite shortfall).
+            return Err(if !most.is_finite() {
+                Unreached::Angle
+            } else if most < 0.0 {
                 Unreached::TooFast { shortfall: -most }
             } else if least > 0.0 {
                 Unreached::TooSlow { shortfall: -least }

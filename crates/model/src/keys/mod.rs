@@ -53,14 +53,6 @@ impl Bounds {
             max_exclusive: false,
         }
     }
-    const fn open(min: f64, max: f64) -> Self {
-        Bounds {
-            min,
-            max,
-            min_exclusive: true,
-            max_exclusive: true,
-        }
-    }
     /// `value` of key `key` (in `unit`) if it is inside, else the error
     /// that names the key, the value and the range.
     pub fn check(

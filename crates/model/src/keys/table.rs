@@ -391,8 +391,8 @@ pub const LAUNCH_KEYS: &[Key] = &[
         "ζ",
         "rad",
         "launch angle above the horizontal",
-        Bounds::open(-FRAC_PI_2, FRAC_PI_2),
-        "Open at ±π/2: straight up or down is no batted ball to carry, and past it the ball leaves backwards.",
+        Bounds::closed(-FRAC_PI_2, FRAC_PI_2),
+        "Straight up or down at most: Statcast records ±90° (a ball popped straight up, one driven into the plate), and past it the ball leaves backwards.",
         0.01,
         launch(angle)
     ),
