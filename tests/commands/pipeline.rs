@@ -385,3 +385,20 @@ fn straight_up_and_straight_down_are_answered() {
         range(2)
     );
 }
+
+/// A header after blank lines is named by its own line, and a distance no
+/// field has (1e308 ft) is missing, never 309 digits (issue 38).
+#[test]
+fn the_header_is_named_by_its_line_and_an_absurd_distance_is_missing() {
+    let (_, err, status) = run(&["fly", "--batch", "-"], b"\n\nlaunch_speed,pitch\n100,3\n");
+    assert_eq!(status, 2);
+    assert!(
+        err.contains("line 3 (the header): no launch angle column"),
+        "{err}"
+    );
+    let text = "launch_speed,launch_angle,hit_distance_sc\n100,30,1e308\n";
+    let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    let row = out.lines().nth(1).unwrap();
+    assert!(row.ends_with(",,") && row.len() < 200, "{row}");
+}

@@ -138,11 +138,11 @@ pub fn measured(
     note: &mut dyn FnMut(&str),
 ) -> Result<Measurements, String> {
     let mut records = Records::new(input);
-    let names = crate::read_header(&mut records)?.ok_or("the input is empty")?;
+    let (names, line) = crate::read_header(&mut records)?.ok_or("the input is empty")?;
     if let Some(by) = by {
         setup.keep = vec![by.column(&names)?.to_owned()];
     }
-    let header = crate::header::Header::new(names, setup)?;
+    let header = crate::header::Header::new((names, line), setup)?;
     let sprayed = header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY);
     let tilt = setup.tilt_prior(&header);
     let setup = &*setup;

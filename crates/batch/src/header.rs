@@ -104,16 +104,17 @@ pub struct Header {
     pub(crate) contact_height_given: bool,
     /// A column gives `bat.tilt`: the league's tilt then does not.
     pub(crate) tilt_given: bool,
+    /// "line 3 (the header)": where the header is, for its messages.
+    pub(crate) line: String,
 }
-
-/// What the header's line is called in messages.
-const LINE: &str = "line 1 (the header)";
 
 impl Header {
     /// The header of `names` (a byte-order mark dropped), each column read
     /// as `mapping` (`--column NAME=COLUMN`) says, or as the table does.
     /// With `swings`, bat and pitch tracking's columns are read too.
-    pub fn new(names: Vec<String>, setup: &Setup) -> Result<Header, String> {
+    pub fn new((names, line): (Vec<String>, usize), setup: &Setup) -> Result<Header, String> {
+        // Blank lines before it are counted: the header is named by its own.
+        let line = format!("line {line} (the header)");
         let names: Vec<String> = names.into_iter().map(|n| n.trim().to_owned()).collect();
         for (name, column) in &setup.mapping {
             if !names.iter().any(|n| n == column) {
@@ -147,7 +148,7 @@ impl Header {
             if let Some(what) = what {
                 if let Some((_, first)) = given.iter().find(|(w, _)| *w == what) {
                     return Err(format!(
-                        "{LINE}: columns `{}` and `{}` both give {what}; keep one (or map one \
+                        "{line}: columns `{}` and `{}` both give {what}; keep one (or map one \
                          with --column)",
                         escape_cut(first, 80),
                         escape_cut(name, 80)
@@ -165,7 +166,7 @@ impl Header {
             has(Column::Savant(SavantColumn::HcX)) || has(Column::Savant(SavantColumn::HcY));
         if direction_given && hit_coordinates && has(Column::Input("launch.direction")) {
             return Err(format!(
-                "{LINE}: columns launch.direction and hc_x/hc_y both give launch.direction; keep one"
+                "{line}: columns launch.direction and hc_x/hc_y both give launch.direction; keep one"
             ));
         }
         let inputs = (columns.iter())
@@ -194,6 +195,7 @@ impl Header {
         });
         let mut header = Header {
             contact_height_given: has(Column::Input("environment.contact_height")),
+            line,
             tilt_given: has(Column::Input("bat.tilt")),
             names,
             columns,
@@ -230,8 +232,9 @@ impl Header {
     fn check(&self, setup: &Setup) -> Result<(), String> {
         if !self.columns.iter().any(|c| !matches!(c, Column::Ignored)) {
             return Err(format!(
-                "{LINE}: no column is an input (launch_speed, launch_angle, launch.*, or a key \
+                "{}: no column is an input (launch_speed, launch_angle, launch.*, or a key \
                  of `homerun keys`); columns separated by commas? first column: `{}`",
+                self.line,
                 escape_cut(self.names.first().map_or("", String::as_str), 80)
             ));
         }
@@ -275,7 +278,8 @@ impl Header {
                 ),
             };
             return Err(format!(
-                "{LINE}: no launch {} column (looked for {}){near}; or --set {}=VALUE for every row",
+                "{}: no launch {} column (looked for {}){near}; or --set {}=VALUE for every row",
+                self.line,
                 (missing.iter().map(|&i| ["speed", "angle"][i]))
                     .collect::<Vec<_>>()
                     .join(" or "),
@@ -294,10 +298,11 @@ impl Header {
                 .collect();
             if !missing.is_empty() {
                 return Err(format!(
-                    "{LINE}: no {} column{}: a swing is solved from bat tracking (bat_speed), \
+                    "{}: no {} column{}: a swing is solved from bat tracking (bat_speed), \
                      the pitch's kinematics (vx0, vy0, vz0, ax, ay, az) and the launch \
                      (launch_speed, launch_angle), as a Baseball Savant export since 2024 has \
                      them",
+                    self.line,
                     missing.join(", "),
                     plural(missing.len())
                 ));

@@ -129,7 +129,7 @@ pub(crate) fn plural(count: usize) -> &'static str {
 /// input, or why the input is no CSV of launches.
 pub(crate) fn read_header<R: BufRead>(
     records: &mut Records<R>,
-) -> Result<Option<Vec<String>>, String> {
+) -> Result<Option<(Vec<String>, usize)>, String> {
     let (mut bytes, mut ends) = (Vec::new(), Vec::new());
     match records.next(&mut bytes, &mut ends, false) {
         Ok(None) => Ok(None),
@@ -138,10 +138,13 @@ pub(crate) fn read_header<R: BufRead>(
             read.line,
             MAX_RECORD_BYTES / 1024
         )),
-        Ok(Some(_)) => {
+        Ok(Some(read)) => {
             let mut lossy = read::Lossy::default();
             let fields = read::Fields::of(&bytes, &ends, &mut lossy);
-            Ok(Some(fields.iter().map(str::to_owned).collect()))
+            Ok(Some((
+                fields.iter().map(str::to_owned).collect(),
+                read.line,
+            )))
         }
         Err(stop) => Err(stop.to_string()),
     }
@@ -152,8 +155,7 @@ pub(crate) fn header_of<R: BufRead>(
     records: &mut Records<R>,
     setup: &Setup,
 ) -> Result<Header, String> {
-    let names = read_header(records)?.ok_or("the input is empty")?;
-    Header::new(names, setup)
+    Header::new(read_header(records)?.ok_or("the input is empty")?, setup)
 }
 
 /// One note for the columns ignored and the launch values the rows take

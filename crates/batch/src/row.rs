@@ -423,7 +423,9 @@ impl SavantCells {
         match column {
             SavantColumn::HcX => self.hc_x = Some(number()?),
             SavantColumn::HcY => self.hc_y = Some(number()?),
-            SavantColumn::Distance => self.distance = feet(),
+            // A distance past 10 km is no batted ball's (1e308 would print
+            // 309 digits): missing, as one that cannot be read.
+            SavantColumn::Distance => self.distance = feet().filter(|m| m.abs() <= 1e4),
             SavantColumn::HangTime => self.hang_time = measure(value, Quantity::Unchanged, |s| s),
             SavantColumn::Apex => self.apex = feet(),
             SavantColumn::ExitDirection => self.direction = Some(number()?.to_radians()),

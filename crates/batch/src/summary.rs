@@ -143,13 +143,14 @@ impl Tally {
             true => "in its own air",
             false => "in the scene's air",
         };
-        let no_fence = setup.park.is_none() && self.at_park.iter().all(|&n| n == 0);
+        // No row had a fence to be judged at.
+        let no_fence = self.outcomes.iter().sum::<usize>() == 0 && self.at_no_park > 0;
         match setup.park {
             Some(i) => format!(
                 "at {} ({air})",
                 preset::escape_cut(&setup.parks.parks[i].code, 20)
             ),
-            None if no_fence && setup.base.fence.is_none() => String::from(
+            None if no_fence => String::from(
                 "at no park (no home_team, no --park: no fence to judge; foul balls still called)",
             ),
             None => format!("at each row's park ({air})"),

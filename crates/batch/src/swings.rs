@@ -37,12 +37,12 @@ pub fn solved_swings(
 ) -> Result<Swings, String> {
     setup.solve_swings = true;
     let mut records = Records::new(input);
-    let names = crate::read_header(&mut records)?.ok_or("the input is empty")?;
+    let (names, line) = crate::read_header(&mut records)?.ok_or("the input is empty")?;
     setup.keep = (NAMING.iter())
         .filter(|n| names.iter().any(|m| m.trim() == **n))
         .map(|n| (*n).to_owned())
         .collect();
-    let header = Header::new(names, setup)?;
+    let header = Header::new((names, line), setup)?;
     let setup = &*setup;
     let finish = |piece: &mut Piece<(Vec<Preset>, usize)>| {
         let (presets, tracked) = &mut piece.made;
