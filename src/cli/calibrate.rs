@@ -55,9 +55,7 @@ pub fn run(
     for (group, measured) in &groups {
         let name = escape_cut(if group.is_empty() { "(empty)" } else { group }, 24);
         let fit = match measured.len() {
-            n if n < FEWEST_ROWS => {
-                Err(format!("{n} rows: too few to fit (at least {FEWEST_ROWS})"))
-            }
+            n if n < FEWEST_ROWS => Err(format!("too few to fit (at least {FEWEST_ROWS})")),
             _ => calibrate::fit(measured, &options, lift).map_err(|e| e.to_string()),
         };
         let fit = match fit {
