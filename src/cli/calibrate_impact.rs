@@ -59,8 +59,13 @@ pub(super) fn run(
     let mut text = text(&fit, saved.as_deref(), shown);
     if outcome.failed + outcome.without_launch > 0 {
         text += &format!(
-            "skipped {} rows: {} failed (named above), {} without a launch speed\n",
+            "skipped {} row{}: {} failed (named above), {} without a launch speed\n",
             outcome.failed + outcome.without_launch,
+            if outcome.failed + outcome.without_launch == 1 {
+                ""
+            } else {
+                "s"
+            },
             outcome.failed,
             outcome.without_launch
         );

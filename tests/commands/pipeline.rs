@@ -402,3 +402,23 @@ fn the_header_is_named_by_its_line_and_an_absurd_distance_is_missing() {
     let row = out.lines().nth(1).unwrap();
     assert!(row.ends_with(",,") && row.len() < 200, "{row}");
 }
+
+/// `calibrate --impact` names and counts the rows it skips, as every
+/// command does (issue 38, item 5): a row too short, a cell no number.
+#[test]
+fn calibrate_impact_names_the_rows_it_skips() {
+    let mut text = std::fs::read_to_string("tests/data/savant_swings.csv").unwrap();
+    let rows = text.lines().count();
+    text += "1,2,3\n";
+    let (out, err, status) = run(&["calibrate", "--impact", "-"], text.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    let line = rows + 1;
+    assert!(
+        err.contains(&format!("line {line}: 3 fields where the header has")),
+        "{err}"
+    );
+    assert!(
+        out.contains("skipped 1 row: 1 failed (named above)"),
+        "{out}"
+    );
+}
