@@ -138,8 +138,9 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
                 batch::calibrate::run(&setup, file, save, !drag_only, *json, shown)?
             }
         };
-        print!("{text}");
-        return Ok(ExitCode::SUCCESS);
+        // Written as every command's output is: a full disk or a closed
+        // pipe is an error line or a quiet end, never print!'s panic.
+        return write_stdout(&[text]);
     }
     let svg = svg_target(command);
     // A folder that cannot take the file is refused before any work.
@@ -152,6 +153,12 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         eprintln!("wrote {}", svg_file::shown(path));
         return Ok(ExitCode::SUCCESS);
     }
+    write_stdout(&pieces)
+}
+
+/// Writes a command's output to stdout, one piece after another: a write
+/// that fails is an error (exit 2), a closed pipe (`| head`) a quiet end.
+fn write_stdout(pieces: &[String]) -> Result<ExitCode, UsageError> {
     let mut stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
     let written = (pieces.iter()).try_for_each(|piece| stdout.write_all(piece.as_bytes()));
     match written.and_then(|()| stdout.flush()) {

@@ -24,6 +24,7 @@ mod stress_pass;
 mod tui_support;
 mod units;
 mod units_on_input;
+mod write_errors;
 
 mod flights;
 mod refusals;
