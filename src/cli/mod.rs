@@ -6,6 +6,7 @@ mod args;
 mod batch;
 mod batch_run;
 mod bench;
+mod config_folder;
 mod figure;
 mod fly;
 mod ground;
@@ -67,14 +68,16 @@ pub fn savant_swings(cli: &Cli, preset: &Preset, file: &str) -> Result<Vec<Prese
     Ok(swings.presets)
 }
 
-/// The user's preset folder: `--presets-dir` or the XDG default.
+/// The user's preset folder: `--presets-dir`, or the XDG default when it
+/// can be used (else a warning, and the bundled presets only).
 pub fn presets_dir(cli: &Cli) -> Option<PathBuf> {
-    cli.presets_dir.clone().or_else(preset::user_dir)
+    (cli.presets_dir.clone()).or_else(|| config_folder::usable(config_folder::Folder::Presets))
 }
 
-/// The user's parks folder: `--parks-dir` or the XDG default.
+/// The user's parks folder: `--parks-dir`, or the XDG default when it can
+/// be used (else a warning, and the bundled parks only).
 pub fn parks_dir(cli: &Cli) -> Option<PathBuf> {
-    cli.parks_dir.clone().or_else(preset::parks::user_dir)
+    (cli.parks_dir.clone()).or_else(|| config_folder::usable(config_folder::Folder::Parks))
 }
 
 /// The explorer's preset and folder, checked as every command's are.
@@ -114,6 +117,16 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
     } = command
     {
         let dir = checked_presets_dir(cli)?;
+        // A save that cannot be made is refused before the fit, not after.
+        if let Some(name) = save
+            && dir.is_none()
+            && let Some(message) = config_folder::unusable_presets_folder()
+        {
+            return Err(UsageError::CalibrateSave {
+                name: crate::preset::escape_cut(name, 200),
+                message,
+            });
+        }
         let preset = scene.resolve(dir.as_deref(), cli.units)?;
         scene::check_path("calibrate", file)?;
         let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;

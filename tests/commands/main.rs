@@ -8,6 +8,7 @@ mod calibrate;
 mod cli;
 #[path = "../common/mod.rs"]
 mod common;
+mod config_folder;
 mod fly;
 mod help;
 mod hit_batch;
