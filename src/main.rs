@@ -34,7 +34,7 @@ fn main() -> ExitCode {
             savant,
             theme,
         } => explore(&cli, (preset, savant.as_deref()), theme.or(cli.theme))
-            .map(|()| ExitCode::SUCCESS),
+            .map(|ending| ExitCode::from(ending.exit_status())),
         command => cli::run(&cli, command),
     };
     match result {
@@ -57,7 +57,7 @@ fn explore(
     cli: &Cli,
     (preset, savant): (&str, Option<&str>),
     background: Option<homerun::tui::theme::Background>,
-) -> Result<(), cli::UsageError> {
+) -> Result<homerun::tui::Ending, cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
     let swings = match savant {
         Some(file) => cli::savant_swings(cli, &preset, file)?,

@@ -96,7 +96,7 @@ fn an_unreadable_home_leaves_the_bundled_presets() {
     let dir = tempfile::tempdir().unwrap();
     let home = dir.path().join("home");
     std::fs::create_dir(&home).unwrap();
-    std::fs::set_permissions(&home, std::fs::Permissions::from_mode(0)).unwrap();
+    std::fs::set_permissions(&home, std::fs::Permissions::from_mode(0o000)).unwrap();
     if std::fs::read_dir(&home).is_err() {
         bundled_only_with_a_warning(&[("HOME", &home)], &home);
     }
