@@ -18,6 +18,7 @@ mod tui_support;
 
 mod keys;
 mod mouse;
+mod picker_find;
 mod work;
 
 use homerun::tui::app::{input_count, input_key};
