@@ -1,3 +1,4 @@
+use std::io::IsTerminal;
 use std::process::ExitCode;
 
 use homerun::cli::{self, Cli, Command, Parsed};
@@ -59,6 +60,12 @@ fn explore(
     background: Option<homerun::tui::theme::Background>,
 ) -> Result<homerun::tui::Ending, cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
+    // Before the file's swings are read and solved, which can take long:
+    // without a terminal they would be for nothing (`tui --savant -` with
+    // the file piped in has its terminal taken by the file).
+    if !(std::io::stdin().is_terminal() && std::io::stdout().is_terminal()) {
+        return Err(homerun::tui::TuiError::NoTerminal.into());
+    }
     let swings = match savant {
         Some(file) => cli::savant_swings(cli, &preset, file)?,
         None => Vec::new(),

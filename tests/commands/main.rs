@@ -14,6 +14,7 @@ mod help;
 mod hit_batch;
 mod hit_json;
 mod hostile_files;
+mod inf_and_no_terminal;
 mod optimize_park;
 mod parks;
 mod pictures;

@@ -306,6 +306,35 @@ fn running(pid: u32) -> bool {
         .unwrap_or(false)
 }
 
+/// Issue 27 item 5: `tui --savant FILE` solves the file's swings before
+/// the explorer opens and says how many; a file without bat tracking is
+/// refused in one line naming it. In a terminal: without one, issue 38
+/// refuses before the file is read.
+#[test]
+fn tui_savant_solves_the_files_swings_and_refuses_a_file_without_them() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
+    let swings = format!("{data}savant_swings.csv");
+    let mut session = Session::start(&["tui", "--savant", &swings], 100, 30);
+    session.wait_for("Open a swing (31)");
+    session.press("\u{1b}");
+    // Apart from the Esc, or the two read as Alt-q.
+    thread::sleep(Duration::from_millis(300));
+    session.press("q");
+    assert_eq!(session.exit_code(), 0);
+    let written = String::from_utf8_lossy(&session.bytes.lock().unwrap()).into_owned();
+    assert!(
+        written.contains("homerun: 31 swings solved of 35 rows (4 tracked but not solved)"),
+        "{written}"
+    );
+    let home_runs = format!("{data}savant_home_runs.csv");
+    let mut session = Session::start(&["tui", "--savant", &home_runs], 100, 30);
+    assert_eq!(session.exit_code(), 2);
+    let written = String::from_utf8_lossy(&session.bytes.lock().unwrap()).into_owned();
+    let expected = format!("homerun: tui --savant {home_runs}: line 1 (the header): no bat_speed");
+    assert!(written.starts_with(&expected), "{written}");
+    assert_eq!(written.lines().count(), 1, "{written}");
+}
+
 #[test]
 fn a_fifo_among_the_presets_leaves_the_picker_and_q_working() {
     // Reading a FIFO would block until a writer came: the picker must list
