@@ -44,9 +44,12 @@ fn main() -> ExitCode {
     }
 }
 
-/// One line on stderr, `homerun: …`, and exit status 2.
+/// One line on stderr, `homerun: …`, and exit status 2 (said even where
+/// stderr cannot take the line: eprintln! would panic, exit 101).
 fn refuse(error: &cli::UsageError) -> ExitCode {
-    eprintln!("homerun: {}", cli::error_line(&error.to_string()));
+    use std::io::Write as _;
+    let line = format!("homerun: {}\n", cli::error_line(&error.to_string()));
+    let _ = std::io::stderr().write_all(line.as_bytes());
     ExitCode::from(2)
 }
 

@@ -5,6 +5,7 @@
 //! and parks. A folder given with `--presets-dir` or `--parks-dir` was
 //! asked for by name, and stays an error where it cannot be used.
 
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::Once;
 
@@ -52,7 +53,9 @@ pub(super) fn usable(folder: Folder) -> Option<PathBuf> {
         Some(why) => {
             folder.warned().call_once(|| {
                 let noun = folder.noun();
-                eprintln!(
+                // Never a panic where stderr cannot take it (eprintln!'s).
+                let _ = writeln!(
+                    std::io::stderr(),
                     "homerun: warning: your {noun} folder cannot be used ({why}); going on with the bundled {noun} only"
                 );
             });

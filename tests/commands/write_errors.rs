@@ -87,3 +87,19 @@ fn calibrate_save_then_a_full_disk_keeps_the_preset_and_says_so() {
     assert!(stderr.contains("writing the output"), "{stderr}");
     assert!(dir.path().join("fitted.toml").is_file());
 }
+
+/// A refusal where stderr cannot take its line: still exit 2, not a
+/// panic's 101.
+#[test]
+fn a_refusal_into_a_full_stderr_is_still_exit_2() {
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let output = common::command()
+        .args(["fly", "--set", "launch.sped=40"])
+        .stderr(Stdio::from(full))
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+}
