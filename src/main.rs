@@ -1,3 +1,4 @@
+use std::io::IsTerminal;
 use std::process::ExitCode;
 
 use homerun::cli::{self, Cli, Command, Parsed};
@@ -34,7 +35,7 @@ fn main() -> ExitCode {
             savant,
             theme,
         } => explore(&cli, (preset, savant.as_deref()), theme.or(cli.theme))
-            .map(|()| ExitCode::SUCCESS),
+            .map(|ending| ExitCode::from(ending.exit_status())),
         command => cli::run(&cli, command),
     };
     match result {
@@ -43,9 +44,12 @@ fn main() -> ExitCode {
     }
 }
 
-/// One line on stderr, `homerun: …`, and exit status 2.
+/// One line on stderr, `homerun: …`, and exit status 2 (said even where
+/// stderr cannot take the line: eprintln! would panic, exit 101).
 fn refuse(error: &cli::UsageError) -> ExitCode {
-    eprintln!("homerun: {}", cli::error_line(&error.to_string()));
+    use std::io::Write as _;
+    let line = format!("homerun: {}\n", cli::error_line(&error.to_string()));
+    let _ = std::io::stderr().write_all(line.as_bytes());
     ExitCode::from(2)
 }
 
@@ -57,8 +61,14 @@ fn explore(
     cli: &Cli,
     (preset, savant): (&str, Option<&str>),
     background: Option<homerun::tui::theme::Background>,
-) -> Result<(), cli::UsageError> {
+) -> Result<homerun::tui::Ending, cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
+    // Before the file's swings are read and solved, which can take long:
+    // without a terminal they would be for nothing (`tui --savant -` with
+    // the file piped in has its terminal taken by the file).
+    if !(std::io::stdin().is_terminal() && std::io::stdout().is_terminal()) {
+        return Err(homerun::tui::TuiError::NoTerminal.into());
+    }
     let swings = match savant {
         Some(file) => cli::savant_swings(cli, &preset, file)?,
         None => Vec::new(),

@@ -7,6 +7,7 @@ mod batch_run;
 mod bench;
 mod calibrate;
 mod calibrate_impact;
+mod config_folder;
 mod figure;
 mod fly;
 mod ground;
@@ -70,14 +71,16 @@ pub fn savant_swings(cli: &Cli, preset: &Preset, file: &str) -> Result<Vec<Prese
     Ok(swings.presets)
 }
 
-/// The user's preset folder: `--presets-dir` or the XDG default.
+/// The user's preset folder: `--presets-dir`, or the XDG default when it
+/// can be used (else a warning, and the bundled presets only).
 pub fn presets_dir(cli: &Cli) -> Option<PathBuf> {
-    cli.presets_dir.clone().or_else(preset::user_dir)
+    (cli.presets_dir.clone()).or_else(|| config_folder::usable(config_folder::Folder::Presets))
 }
 
-/// The user's parks folder: `--parks-dir` or the XDG default.
+/// The user's parks folder: `--parks-dir`, or the XDG default when it can
+/// be used (else a warning, and the bundled parks only).
 pub fn parks_dir(cli: &Cli) -> Option<PathBuf> {
-    cli.parks_dir.clone().or_else(preset::parks::user_dir)
+    (cli.parks_dir.clone()).or_else(|| config_folder::usable(config_folder::Folder::Parks))
 }
 
 /// The explorer's preset and folder, checked as every command's are.
@@ -118,6 +121,16 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
     } = command
     {
         let dir = checked_presets_dir(cli)?;
+        // A save that cannot be made is refused before the fit, not after.
+        if let Some(name) = save
+            && dir.is_none()
+            && let Some(message) = config_folder::unusable_presets_folder()
+        {
+            return Err(UsageError::CalibrateSave {
+                name: crate::preset::escape_cut(name, 200),
+                message,
+            });
+        }
         let preset = scene.resolve(dir.as_deref(), cli.units)?;
         scene::check_path("calibrate", file)?;
         let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
@@ -142,19 +155,14 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
                 shown,
             )?,
         };
-        let mut stdout = std::io::stdout().lock();
         // Groups' names are the file's: to a terminal, their controls escaped.
-        let text = match std::io::IsTerminal::is_terminal(&stdout) {
+        let text = match std::io::IsTerminal::is_terminal(&std::io::stdout()) {
             true => preset::json_for_terminal(&text).into_owned(),
             false => text,
         };
-        return match stdout
-            .write_all(text.as_bytes())
-            .and_then(|()| stdout.flush())
-        {
-            Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(UsageError::Output(e)),
-            _ => Ok(ExitCode::SUCCESS),
-        };
+        // Written as every command's output is: a full disk or a closed
+        // pipe is an error line or a quiet end, never print!'s panic.
+        return write_stdout(&[text]);
     }
     let svg = svg_target(command);
     // A folder that cannot take the file is refused before any work.
@@ -167,6 +175,12 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         eprintln!("wrote {}", svg_file::shown(path));
         return Ok(ExitCode::SUCCESS);
     }
+    write_stdout(&pieces)
+}
+
+/// Writes a command's output to stdout, one piece after another: a write
+/// that fails is an error (exit 2), a closed pipe (`| head`) a quiet end.
+fn write_stdout(pieces: &[String]) -> Result<ExitCode, UsageError> {
     let mut stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
     let written = (pieces.iter()).try_for_each(|piece| stdout.write_all(piece.as_bytes()));
     match written.and_then(|()| stdout.flush()) {

@@ -8,11 +8,13 @@ mod calibrate;
 mod cli;
 #[path = "../common/mod.rs"]
 mod common;
+mod config_folder;
 mod fly;
 mod help;
 mod hit_batch;
 mod hit_json;
 mod hostile_files;
+mod inf_and_no_terminal;
 mod optimize_park;
 mod parks;
 mod pictures;
@@ -25,6 +27,7 @@ mod stress_pass;
 mod tui_support;
 mod units;
 mod units_on_input;
+mod write_errors;
 
 mod flights;
 mod refusals;

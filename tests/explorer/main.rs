@@ -10,6 +10,7 @@ mod tui_parks;
 mod tui_polish;
 mod tui_pty;
 mod tui_render;
+mod tui_signals;
 mod tui_words;
 
 #[path = "../tui_support/mod.rs"]
@@ -17,6 +18,7 @@ mod tui_support;
 
 mod keys;
 mod mouse;
+mod picker_find;
 mod work;
 
 use homerun::tui::app::{input_count, input_key};

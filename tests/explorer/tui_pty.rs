@@ -10,18 +10,18 @@ use std::time::{Duration, Instant};
 
 use portable_pty::{CommandBuilder, PtySize, native_pty_system};
 
-struct Session {
-    screen: Arc<Mutex<vt100::Parser>>,
+pub(crate) struct Session {
+    pub(crate) screen: Arc<Mutex<vt100::Parser>>,
     /// Everything the explorer wrote.
     bytes: Arc<Mutex<Vec<u8>>>,
     reader: Option<thread::JoinHandle<()>>,
     writer: Box<dyn Write + Send>,
-    child: Box<dyn portable_pty::Child + Send + Sync>,
-    _master: Box<dyn portable_pty::MasterPty + Send>,
+    pub(crate) child: Box<dyn portable_pty::Child + Send + Sync>,
+    pub(crate) master: Box<dyn portable_pty::MasterPty + Send>,
 }
 
 impl Session {
-    fn start(args: &[&str], cols: u16, rows: u16) -> Session {
+    pub(crate) fn start(args: &[&str], cols: u16, rows: u16) -> Session {
         Session::start_with(args, cols, rows, &[])
     }
 
@@ -73,24 +73,24 @@ impl Session {
             reader: Some(reader),
             writer,
             child,
-            _master: pair.master,
+            master: pair.master,
         }
     }
 
-    fn contents(&self) -> String {
+    pub(crate) fn contents(&self) -> String {
         self.screen.lock().unwrap().screen().contents()
     }
 
     /// Waits (up to a generous bound, so a broken build fails rather than
     /// hangs) until the screen shows `text`.
-    fn wait_for(&self, text: &str) -> String {
+    pub(crate) fn wait_for(&self, text: &str) -> String {
         self.wait_for_all(&[text])
     }
 
     /// The first screen that shows every one of `texts` at once: a frame
     /// caught half written (the terminal reads while the explorer draws)
     /// can show one and not yet another.
-    fn wait_for_all(&self, texts: &[&str]) -> String {
+    pub(crate) fn wait_for_all(&self, texts: &[&str]) -> String {
         let start = Instant::now();
         loop {
             let contents = self.contents();
@@ -105,12 +105,12 @@ impl Session {
         }
     }
 
-    fn press(&mut self, keys: &str) {
+    pub(crate) fn press(&mut self, keys: &str) {
         self.writer.write_all(keys.as_bytes()).unwrap();
         self.writer.flush().unwrap();
     }
 
-    fn exit_code(&mut self) -> u32 {
+    pub(crate) fn exit_code(&mut self) -> u32 {
         let start = Instant::now();
         loop {
             if let Some(status) = self.child.try_wait().unwrap() {
@@ -193,7 +193,7 @@ fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
 }
 
 #[test]
-fn sigterm_restores_the_terminal_and_exits() {
+fn sigterm_restores_the_terminal_and_exits_143() {
     let mut session = Session::start(&[], 100, 30);
     session.wait_for("Trajectory");
     let pid = session.child.process_id().unwrap();
@@ -202,7 +202,8 @@ fn sigterm_restores_the_terminal_and_exits() {
         .status()
         .unwrap();
     assert!(status.success());
-    assert_eq!(session.exit_code(), 0);
+    // 128 + 15, as a shell reports a process SIGTERM ended.
+    assert_eq!(session.exit_code(), 143);
     // The alternate screen is left: the normal screen is back (empty here).
     let screen = session.contents();
     assert!(!screen.contains("Trajectory"), "{screen}");
@@ -303,6 +304,35 @@ fn running(pid: u32) -> bool {
                 .map(|(_, rest)| !rest.starts_with('Z'))
         })
         .unwrap_or(false)
+}
+
+/// Issue 27 item 5: `tui --savant FILE` solves the file's swings before
+/// the explorer opens and says how many; a file without bat tracking is
+/// refused in one line naming it. In a terminal: without one, issue 38
+/// refuses before the file is read.
+#[test]
+fn tui_savant_solves_the_files_swings_and_refuses_a_file_without_them() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
+    let swings = format!("{data}savant_swings.csv");
+    let mut session = Session::start(&["tui", "--savant", &swings], 100, 30);
+    session.wait_for("Open a swing (31)");
+    session.press("\u{1b}");
+    // Apart from the Esc, or the two read as Alt-q.
+    thread::sleep(Duration::from_millis(300));
+    session.press("q");
+    assert_eq!(session.exit_code(), 0);
+    let written = String::from_utf8_lossy(&session.bytes.lock().unwrap()).into_owned();
+    assert!(
+        written.contains("homerun: 31 swings solved of 35 rows (4 tracked but not solved)"),
+        "{written}"
+    );
+    let home_runs = format!("{data}savant_home_runs.csv");
+    let mut session = Session::start(&["tui", "--savant", &home_runs], 100, 30);
+    assert_eq!(session.exit_code(), 2);
+    let written = String::from_utf8_lossy(&session.bytes.lock().unwrap()).into_owned();
+    let expected = format!("homerun: tui --savant {home_runs}: line 1 (the header): no bat_speed");
+    assert!(written.starts_with(&expected), "{written}");
+    assert_eq!(written.lines().count(), 1, "{written}");
 }
 
 #[test]

@@ -205,7 +205,7 @@ mod tests {
         let speed = Scene::key("pitch.speed").unwrap();
         assert_eq!(IMPERIAL.bounds(speed), "(0, 223.693] mph");
         let angle = Scene::key("launch.angle").unwrap();
-        assert_eq!(IMPERIAL.bounds(angle), "(-90, 90)°");
+        assert_eq!(IMPERIAL.bounds(angle), "[-90, 90]°");
         assert_eq!(IMPERIAL.csv_key("x", Quantity::Distance), "x_ft");
         assert_eq!(IMPERIAL.csv_key("time", Quantity::Unchanged), "time");
         assert_eq!(IMPERIAL.head("E", Quantity::Size, "m"), "E (in)".to_owned());

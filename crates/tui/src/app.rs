@@ -2,6 +2,7 @@
 //! place the state changes. Drawing only reads it.
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use ratatui::crossterm::event::{Event, KeyEvent, KeyEventKind};
 use ratatui::layout::Rect;
@@ -12,6 +13,8 @@ mod export;
 mod field;
 pub use field::{AtParks, ParkList};
 mod figures;
+mod find;
+pub use find::{Find, Searchable};
 mod impact;
 pub use impact::impact_stops;
 mod margin;
@@ -124,15 +127,6 @@ pub struct PickItem {
     pub preset: Option<Preset>,
 }
 
-/// A find being typed in the picker: its text, and the whole list it
-/// filters, each item with its name and description in lower case (read
-/// once, when `/` starts it, not at every key).
-#[derive(Debug)]
-pub struct Find {
-    pub text: String,
-    pub all: Vec<(String, PickItem)>,
-}
-
 /// What the keyboard is talking to.
 #[derive(Debug)]
 pub enum Mode {
@@ -158,7 +152,7 @@ pub enum Mode {
     /// the items are those whose name and description hold each of its
     /// words, and `find` is being typed while it is `Some`.
     Open {
-        items: Vec<PickItem>,
+        items: Vec<Arc<PickItem>>,
         selected: usize,
         error: Option<String>,
         find: Option<Find>,
@@ -217,7 +211,7 @@ pub struct App {
     pub fence: Option<Fence>,
     pub presets_dir: Option<PathBuf>,
     /// Swings of a Savant export (`tui --savant`), first in the picker.
-    pub swings: Vec<Preset>,
+    pub swings: Arc<Searchable>,
     pub fields: Vec<Field>,
     pub selected: usize,
     pub mode: Mode,
@@ -331,7 +325,7 @@ impl App {
             scene: preset.scene,
             fence: preset.fence,
             presets_dir,
-            swings: Vec::new(),
+            swings: Arc::default(),
             fields,
             selected,
             mode: Mode::Normal,

@@ -72,7 +72,7 @@ pub fn read_value(key: &Key, text: &str, system: UnitSystem) -> Result<f64, Inpu
 }
 
 /// A key's accepted range in the unit shown, with the unit: "(0, 100] m/s",
-/// "(0, 223.693] mph", "(-90, 90) °".
+/// "(0, 223.693] mph", "[-90, 90] °".
 pub fn shown_bounds(key: &Key, system: UnitSystem) -> String {
     let (range, symbol) = (shown_range(key, system), key.unit_in(system).symbol);
     if symbol.is_empty() {
@@ -158,7 +158,7 @@ mod tests {
         let error = scene.validate().unwrap_err();
         assert_eq!(
             error_text(&error, imperial),
-            "launch.angle = 95 °: must be a finite number in (-90, 90) °"
+            "launch.angle = 95 °: must be a finite number in [-90, 90] °"
         );
         // SI keeps the library's text.
         assert_eq!(error_text(&error, UnitSystem::Si), error.to_string());

@@ -15,24 +15,27 @@ pub mod inputs;
 pub mod keymap;
 pub mod layout;
 pub mod margin;
+mod signals;
 pub mod theme;
 pub mod view;
 pub mod worker;
 
 use std::io::{self, IsTerminal, Write};
 use std::path::PathBuf;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, TryRecvError};
 use std::time::Duration;
 
-use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture, Event};
+use ratatui::crossterm::event::{
+    self, DisableMouseCapture, EnableMouseCapture, Event, KeyCode, KeyEventKind, KeyModifiers,
+};
 use ratatui::crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
 use ratatui::crossterm::{execute, queue};
 use ratatui::layout::Rect;
 
 use app::App;
 use preset::Preset;
+pub use signals::Ending;
+use signals::Signals;
 use theme::{Background, ColorMode, Theme};
 use worker::Worker;
 
@@ -101,7 +104,8 @@ impl Drop for Restore {
 }
 
 /// Runs the explorer on `preset` until the user quits or a signal (TERM,
-/// HUP, INT) asks it to stop; the terminal is restored either way. Its
+/// HUP, INT, QUIT, …: see `signals`) asks it to stop, and says which; the
+/// terminal is restored either way, and given back while suspended. Its
 /// colours are for `background` (else the one `COLORFGBG` names), none
 /// under `NO_COLOR`. `m`/`M` go through the bundled parks and the user's
 /// from `parks_dir`.
@@ -110,15 +114,11 @@ pub fn run(
     (presets_dir, parks_dir): (Option<PathBuf>, Option<PathBuf>),
     units: units::UnitSystem,
     background: Option<Background>,
-) -> Result<(), TuiError> {
+) -> Result<Ending, TuiError> {
     if !(io::stdin().is_terminal() && io::stdout().is_terminal()) {
         return Err(TuiError::NoTerminal);
     }
-    let stop = Arc::new(AtomicBool::new(false));
-    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
-    for signal in [SIGTERM, SIGHUP, SIGINT] {
-        signal_hook::flag::register(signal, Arc::clone(&stop))?;
-    }
+    let signals = Signals::catch()?;
     let mut terminal = ratatui::try_init()?;
     let _restore = Restore;
     // Clicks and the wheel (see `app/mouse.rs`); Shift-drag still selects text.
@@ -140,7 +140,13 @@ pub fn run(
     let worker = Worker::spawn();
     watch_for_hang_up()?;
 
-    while !app.quit && !stop.load(Ordering::Relaxed) {
+    while !app.quit {
+        if let Some(ending) = signals.ending() {
+            return Ok(ending);
+        }
+        if signals.answer(&mut terminal)? {
+            app.dirty = true;
+        }
         if let Some(job) = app.take_job() {
             worker.submit(job);
         }
@@ -167,6 +173,10 @@ pub fn run(
             // costs one recomputation per frame, not one per repeat.
             loop {
                 let event: Event = event::read()?;
+                if is_ctrl_z(&event) {
+                    signals::suspend_self()?;
+                    break;
+                }
                 app.handle(&event);
                 if app.quit || !event::poll(Duration::ZERO)? {
                     break;
@@ -178,7 +188,14 @@ pub fn run(
         drain(&worker.figures, |report| app.apply_figure(report))?;
         drain(&worker.margins, |report| app.apply_margin(report))?;
     }
-    Ok(())
+    Ok(Ending::Quit)
+}
+
+/// Ctrl-Z, which raw mode delivers as a key: it suspends, as in a shell.
+fn is_ctrl_z(event: &Event) -> bool {
+    matches!(event, Event::Key(key) if key.code == KeyCode::Char('z')
+        && key.modifiers.contains(KeyModifiers::CONTROL)
+        && key.kind == KeyEventKind::Press)
 }
 
 /// Takes in every result waiting on `reports`. A thread that is gone (it

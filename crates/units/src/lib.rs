@@ -312,6 +312,11 @@ pub fn significant(value: f64) -> String {
     if magnitude == 0.0 {
         return "0".to_owned();
     }
+    if !value.is_finite() {
+        // inf, -inf, NaN as Rust writes them: the exponent form below
+        // would make "infe".
+        return value.to_string();
+    }
     if !(1e-6..1e9).contains(&magnitude) {
         // 1.42278e301, 1e-300: the mantissa to six digits, trimmed.
         let text = format!("{value:.5e}");
@@ -375,6 +380,10 @@ mod tests {
         assert_eq!(significant(-0.0), "0");
         assert_eq!(significant(1e-300), "1e-300");
         assert_eq!(significant(-1.422_784_810_126_582_3e301), "-1.42278e301");
+        // Issue 38: inf was "infe" ("launch.speed = inf mph (infe m/s)").
+        assert_eq!(significant(f64::INFINITY), "inf");
+        assert_eq!(significant(f64::NEG_INFINITY), "-inf");
+        assert_eq!(significant(f64::NAN), "NaN");
     }
 
     #[test]

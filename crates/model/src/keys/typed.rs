@@ -77,7 +77,7 @@ pub fn read_in_system(
 
 /// The refusal of `si`, given as `typed` in `shown` (the unit a bare
 /// number is in): the value in both units, and the range in `shown`'s
-/// too ("95 ° (1.65806 rad): … (-π/2, π/2) rad, that is (-90, 90) °").
+/// too ("95 ° (1.65806 rad): … [-π/2, π/2] rad, that is [-90, 90] °").
 pub fn out_of_range_shown(
     (name, _, unit, bounds): (&'static str, Quantity, &'static str, Bounds),
     si: f64,

@@ -2,11 +2,12 @@
 //! and the picker's keys.
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use ratatui::crossterm::event::KeyEvent;
 use ratatui_textarea::TextArea;
 
-use super::{App, Find, Mode, PickItem};
+use super::{App, Find, Mode, PickItem, Searchable};
 use crate::keymap::Action;
 use preset::{self, Preset, PresetError, Source};
 
@@ -105,7 +106,16 @@ impl App {
         if swings.is_empty() {
             return;
         }
-        self.swings = swings;
+        let items = (swings.into_iter())
+            .map(|p| {
+                Arc::new(PickItem {
+                    name: p.name.clone(),
+                    detail: p.description.clone(),
+                    preset: Some(p),
+                })
+            })
+            .collect();
+        self.swings = Arc::new(Searchable::new(items));
         self.open_picker();
         if let Mode::Open { selected, .. } = &mut self.mode {
             *selected = 0;
@@ -126,52 +136,50 @@ impl App {
         };
     }
 
-    /// Everything the picker offers: the swings, then the presets.
-    fn pick_items(&self) -> Vec<PickItem> {
-        let swings = self.swings.iter().map(|p| PickItem {
-            name: p.name.clone(),
-            detail: p.description.clone(),
-            preset: Some(p.clone()),
-        });
-        swings
-            .chain(
-                preset::list(self.presets_dir.as_deref())
-                    .into_iter()
-                    .map(|entry| match entry {
-                        Ok(p) => PickItem {
-                            name: p.name.clone(),
-                            detail: match &p.source {
-                                Source::Bundled
-                                    if preset::user_file(&p.name, self.presets_dir.as_deref())
-                                        .is_some() =>
-                                {
-                                    format!(
-                                        "{} (bundled; hidden by yours of that name)",
-                                        p.description
-                                    )
-                                }
-                                Source::Bundled => format!("{} (bundled)", p.description),
-                                Source::File(_) if preset::is_bundled(&p.name) => {
-                                    format!("{} (yours; hides the bundled one)", p.description)
-                                }
-                                Source::File(_) => p.description.clone(),
-                            },
-                            preset: Some(p),
-                        },
-                        Err(e) => PickItem {
-                            name: broken_name(&e),
-                            detail: format!("broken: {e}"),
-                            preset: None,
-                        },
-                    }),
-            )
+    /// Everything the picker offers: the swings, then the presets (shared:
+    /// a list of thousands of swings copies none).
+    fn pick_items(&self) -> Vec<Arc<PickItem>> {
+        let mut items = self.swings.items().to_vec();
+        items.extend(self.preset_items());
+        items
+    }
+
+    /// The presets, as the picker offers them.
+    fn preset_items(&self) -> Vec<Arc<PickItem>> {
+        preset::list(self.presets_dir.as_deref())
+            .into_iter()
+            .map(|entry| match entry {
+                Ok(p) => PickItem {
+                    name: p.name.clone(),
+                    detail: match &p.source {
+                        Source::Bundled
+                            if preset::user_file(&p.name, self.presets_dir.as_deref())
+                                .is_some() =>
+                        {
+                            format!("{} (bundled; hidden by yours of that name)", p.description)
+                        }
+                        Source::Bundled => format!("{} (bundled)", p.description),
+                        Source::File(_) if preset::is_bundled(&p.name) => {
+                            format!("{} (yours; hides the bundled one)", p.description)
+                        }
+                        Source::File(_) => p.description.clone(),
+                    },
+                    preset: Some(p),
+                },
+                Err(e) => PickItem {
+                    name: broken_name(&e),
+                    detail: format!("broken: {e}"),
+                    preset: None,
+                },
+            })
+            .map(Arc::new)
             .collect()
     }
 
     pub(super) fn open_key(
         &mut self,
         (key, action): (KeyEvent, Option<Action>),
-        items: Vec<PickItem>,
+        mut items: Vec<Arc<PickItem>>,
         (selected, find): (usize, Option<Find>),
         error: Option<String>,
     ) {
@@ -189,21 +197,12 @@ impl App {
                     };
                     return;
                 }
-                KeyCode::Backspace => {
-                    find.text.pop();
-                }
+                KeyCode::Backspace => find.pop(&mut items),
                 KeyCode::Char(c) if !key.modifiers.contains(KeyModifiers::CONTROL) => {
-                    find.text.push(c)
+                    find.push(c, &mut items)
                 }
                 _ => {}
             }
-            let words: Vec<String> = (find.text.split_whitespace())
-                .map(str::to_lowercase)
-                .collect();
-            let items = (find.all.iter())
-                .filter(|(text, _)| words.iter().all(|w| text.contains(w.as_str())))
-                .map(|(_, item)| item.clone())
-                .collect();
             self.mode = Mode::Open {
                 items,
                 selected: 0,
@@ -213,22 +212,13 @@ impl App {
             return;
         }
         if key.code == KeyCode::Char('/') {
-            let all = (self.pick_items().into_iter())
-                .map(|item| {
-                    (
-                        format!("{} {}", item.name, item.detail).to_lowercase(),
-                        item,
-                    )
-                })
-                .collect();
+            let presets = Searchable::new(self.preset_items());
+            let (find, items) = Find::new(Arc::clone(&self.swings), presets);
             self.mode = Mode::Open {
                 items,
-                selected,
+                selected: 0,
                 error: None,
-                find: Some(Find {
-                    text: String::new(),
-                    all,
-                }),
+                find: Some(find),
             };
             return;
         }

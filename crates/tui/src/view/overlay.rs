@@ -1,6 +1,8 @@
 //! Pop-ups over the panes: help, the save prompt, the preset picker and
 //! the park list.
 
+use std::sync::Arc;
+
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Flex, Layout, Rect};
 use ratatui::text::{Line, Span};
@@ -80,7 +82,7 @@ pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Op
 pub fn open(
     frame: &mut Frame,
     (area, theme): (Rect, &Theme),
-    (items, find): (&[PickItem], Option<&str>),
+    (items, find): (&[Arc<PickItem>], Option<&str>),
     swings: usize,
     selected: usize,
     error: Option<&str>,
@@ -125,10 +127,7 @@ pub fn open(
                 detail_width,
                 1,
             );
-            let mut spans = vec![Span::styled(
-                format!("{:<14}", escape_text(&item.name)),
-                Theme::strong(style),
-            )];
+            let mut spans = vec![Span::styled(name_cell(&item.name), Theme::strong(style))];
             spans.extend(detail.into_iter().flat_map(|l| l.spans));
             ListItem::new(Line::from(spans))
         })
@@ -152,6 +151,35 @@ pub fn open(
         )),
     };
     frame.render_widget(line.wrap(Wrap { trim: true }), message);
+}
+
+/// A picker row's name in its 14 columns, escaped, a blank after it: a
+/// longer one (a Savant row's long `game_date`) is cut with "…" rather
+/// than push the description off the row.
+fn name_cell(name: &str) -> String {
+    use unicode_width::UnicodeWidthChar;
+    const COLUMNS: usize = 14;
+    let name = escape_text(name);
+    let width = |c: char| c.width().unwrap_or(0);
+    let mut cell = String::new();
+    let mut used = 0;
+    if name.chars().map(width).sum::<usize>() < COLUMNS {
+        cell.push_str(&name);
+        used = name.chars().map(width).sum();
+    } else {
+        // Room for the "…" and the blank.
+        for c in name.chars() {
+            if used + width(c) > COLUMNS - 2 {
+                break;
+            }
+            cell.push(c);
+            used += width(c);
+        }
+        cell.push('…');
+        used += 1;
+    }
+    cell.extend(std::iter::repeat_n(' ', COLUMNS - used));
+    cell
 }
 
 /// The park list (`/`): what is typed, then the parks that answer to it

@@ -1,0 +1,216 @@
+//! The picker's find (`/`): the items whose name and description hold
+//! every word typed, in any case.
+//!
+//! Each key costs one pass over the items still found, never one over all
+//! of them per word: a character typed can only narrow the list (the word
+//! it extends or starts must now be held too, and the other words already
+//! are), so only the word it touched is looked for, and only among the
+//! items found; a Backspace puts back what that character took out. A
+//! 1000-character query on 200,000 swings is as quick a key as a short one
+//! (docs/speed.md). Queries and items are lower-cased a character at a
+//! time, so that a word's lower case is its start's lower case extended.
+
+use std::sync::Arc;
+
+use memchr::memmem;
+
+use super::PickItem;
+
+/// Items a find can choose from, each with its name and description in
+/// lower case, one after another (one buffer: a key's pass reads memory in
+/// order). A Savant file's swings are made so once, when they are offered,
+/// so that `/` costs nothing on 200,000 of them.
+#[derive(Debug, Default)]
+pub struct Searchable {
+    items: Vec<Arc<PickItem>>,
+    texts: String,
+    /// Item `i`'s text ends at `ends[i]`.
+    ends: Vec<usize>,
+}
+
+impl Searchable {
+    pub fn new(items: Vec<Arc<PickItem>>) -> Searchable {
+        let mut texts = String::new();
+        let mut ends = Vec::with_capacity(items.len());
+        for item in &items {
+            push_lower_case(&mut texts, &item.name);
+            texts.push(' ');
+            push_lower_case(&mut texts, &item.detail);
+            ends.push(texts.len());
+        }
+        Searchable { items, texts, ends }
+    }
+
+    pub fn len(&self) -> usize {
+        self.items.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.items.is_empty()
+    }
+
+    pub fn items(&self) -> &[Arc<PickItem>] {
+        &self.items
+    }
+
+    fn text_of(&self, i: usize) -> &[u8] {
+        let start = if i == 0 { 0 } else { self.ends[i - 1] };
+        &self.texts.as_bytes()[start..self.ends[i]]
+    }
+}
+
+/// A find being typed in the picker.
+#[derive(Debug)]
+pub struct Find {
+    pub text: String,
+    /// What the find chooses from: the swings, then the presets (listed
+    /// again at each `/`: the user's folder may have changed).
+    swings: Arc<Searchable>,
+    presets: Searchable,
+    /// The indices of the items found, ascending: a swing's in `swings`,
+    /// a preset's after them.
+    found: Vec<u32>,
+    /// For each character of `text`, the items it took out of `found`.
+    removed: Vec<Vec<u32>>,
+    /// How many times an item's text was searched, for the tests of the
+    /// work a key does.
+    searches: u64,
+}
+
+impl Find {
+    /// A find over `swings` and `presets`, nothing typed yet, and the items
+    /// it finds: all of them.
+    pub fn new(swings: Arc<Searchable>, presets: Searchable) -> (Find, Vec<Arc<PickItem>>) {
+        let items: Vec<Arc<PickItem>> = (swings.items().iter().chain(presets.items()))
+            .cloned()
+            .collect();
+        // The picker lists swings and presets: never near 4 billion.
+        let found = (0..items.len()).map(|i| i as u32).collect();
+        let find = Find {
+            text: String::new(),
+            swings,
+            presets,
+            found,
+            removed: Vec::new(),
+            searches: 0,
+        };
+        (find, items)
+    }
+
+    /// Item `i`'s text in lower case.
+    fn text_of(&self, i: u32) -> &[u8] {
+        let i = i as usize;
+        match i.checked_sub(self.swings.len()) {
+            None => self.swings.text_of(i),
+            Some(preset) => self.presets.text_of(preset),
+        }
+    }
+
+    /// Item `i`.
+    fn item(&self, i: u32) -> &Arc<PickItem> {
+        let i = i as usize;
+        match i.checked_sub(self.swings.len()) {
+            None => &self.swings.items[i],
+            Some(preset) => &self.presets.items[preset],
+        }
+    }
+
+    /// Types `c`: the items found (`found`, as the picker lists them) keep
+    /// those that hold the word it ends.
+    pub fn push(&mut self, c: char, found: &mut Vec<Arc<PickItem>>) {
+        self.text.push(c);
+        if c.is_whitespace() {
+            // No word changed.
+            self.removed.push(Vec::new());
+            return;
+        }
+        let mut word = String::new();
+        push_lower_case(
+            &mut word,
+            self.text.split_whitespace().last().unwrap_or_default(),
+        );
+        let finder = memmem::Finder::new(word.as_bytes());
+        let mut held = Vec::with_capacity(self.found.len());
+        let mut removed = Vec::new();
+        for &i in &self.found {
+            let holds = finder.find(self.text_of(i)).is_some();
+            if !holds {
+                removed.push(i);
+            }
+            held.push(holds);
+        }
+        self.searches += self.found.len() as u64;
+        if !removed.is_empty() {
+            let mut keep = held.iter();
+            self.found.retain(|_| *keep.next().unwrap_or(&true));
+            let mut keep = held.iter();
+            found.retain(|_| *keep.next().unwrap_or(&true));
+        }
+        self.removed.push(removed);
+    }
+
+    /// Erases the last character typed, if any: the items it had taken out
+    /// of `found` are found again, in their places.
+    pub fn pop(&mut self, found: &mut Vec<Arc<PickItem>>) {
+        if self.text.pop().is_none() {
+            return;
+        }
+        let back = self.removed.pop().unwrap_or_default();
+        if back.is_empty() {
+            return;
+        }
+        // Both ascending: merged, the list keeps the picker's order. The
+        // items found move; only those put back are shared anew.
+        let mut indices = Vec::with_capacity(self.found.len() + back.len());
+        let mut items = Vec::with_capacity(indices.capacity());
+        let old = std::mem::take(found);
+        let mut kept = self.found.iter().copied().zip(old).peekable();
+        let mut back = back.into_iter().peekable();
+        loop {
+            let from_kept = match (kept.peek(), back.peek()) {
+                (Some((k, _)), Some(b)) => k < b,
+                (Some(_), None) => true,
+                (None, Some(_)) => false,
+                (None, None) => break,
+            };
+            let (index, item) = match from_kept {
+                true => kept.next().expect("peeked"),
+                false => {
+                    let index = back.next().expect("peeked");
+                    (index, Arc::clone(self.item(index)))
+                }
+            };
+            indices.push(index);
+            items.push(item);
+        }
+        self.found = indices;
+        *found = items;
+    }
+
+    /// How many times an item's text has been searched since `/`.
+    pub fn searches(&self) -> u64 {
+        self.searches
+    }
+}
+
+/// Appends `text` in lower case a character at a time (no final-sigma
+/// rule, which would make a word's lower case change as it is typed); runs
+/// of ASCII in one go, as most of a Savant file's text is.
+fn push_lower_case(out: &mut String, text: &str) {
+    let mut rest = text;
+    while !rest.is_empty() {
+        let ascii = rest
+            .bytes()
+            .position(|b| !b.is_ascii())
+            .unwrap_or(rest.len());
+        let start = out.len();
+        out.push_str(&rest[..ascii]);
+        out[start..].make_ascii_lowercase();
+        rest = &rest[ascii..];
+        let mut chars = rest.chars();
+        if let Some(c) = chars.next() {
+            out.extend(c.to_lowercase());
+        }
+        rest = chars.as_str();
+    }
+}
