@@ -120,8 +120,8 @@ impl<R: BufRead> Records<R> {
             after_cr: false,
             empty: 0,
             started: false,
-            out: vec![0; MAX_RECORD_BYTES + 1],
-            ends: vec![0; MAX_RECORD_BYTES + 2],
+            out: vec![0; MAX_RECORD_BYTES + 2],
+            ends: vec![0; MAX_RECORD_BYTES + 3],
         }
     }
 
@@ -167,22 +167,28 @@ impl<R: BufRead> Records<R> {
         let (mut taken, mut too_long) = (0, false);
         loop {
             let available = fill(&mut self.input)?;
-            // Never more than the record may hold: the output fits `out`.
+            // Never more than the record may hold, and its line end: the
+            // output fits `out`.
             let room = if too_long {
                 self.out.len()
             } else {
-                MAX_RECORD_BYTES + 1 - taken
+                MAX_RECORD_BYTES + 2 - taken
             };
             let input = &available[..available.len().min(room)];
             let (result, read, written, ended) =
                 self.core.read_record(input, &mut self.out, &mut self.ends);
             count(&mut self.lines, &mut self.after_cr, &input[..read]).map_err(Stop::Binary)?;
+            // A record's size is its own: the line end it ended on is not.
+            let line_end = matches!(result, csv_core::ReadRecordResult::Record)
+                && input[..read]
+                    .last()
+                    .is_some_and(|b| matches!(b, b'\n' | b'\r'));
             self.input.consume(read);
             taken += read;
             if !too_long {
                 bytes.extend_from_slice(&self.out[..written]);
                 ends.extend_from_slice(&self.ends[..ended]);
-                if taken > MAX_RECORD_BYTES {
+                if taken - usize::from(line_end) > MAX_RECORD_BYTES {
                     too_long = true;
                     bytes.truncate(start);
                     ends.truncate(first_end);

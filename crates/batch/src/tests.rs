@@ -108,6 +108,17 @@ fn a_long_record_is_read_to_its_end_quotes_and_all() {
     let text = format!("h,i\n1,\"{cell}\"\n2,3\n");
     let (got, _) = records(text.as_bytes(), 1000);
     assert_eq!(got[1], row(2, &["1", &cell]));
+    // Exactly at the cap, it is kept with a line end of either kind and
+    // without one (its line end is not its own); a byte more is too long.
+    let cell = "z".repeat(MAX_RECORD_BYTES);
+    for end in ["\n", "\r\n", "\r", ""] {
+        for capacity in [1, 4096] {
+            let (got, _) = records(format!("h\n{cell}{end}").as_bytes(), capacity);
+            assert_eq!(got[1], row(2, &[&cell]), "{end:?} {capacity}");
+            let (got, _) = records(format!("h\n{cell}z{end}").as_bytes(), capacity);
+            assert_eq!(got[1], (2, None), "{end:?} {capacity}");
+        }
+    }
     // A NUL byte stops reading, on its line.
     let mut records = Records::new(&b"a\nb\r\nc\0"[..]);
     let (mut bytes, mut ends) = (Vec::new(), Vec::new());
