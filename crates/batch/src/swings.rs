@@ -67,6 +67,9 @@ pub fn solved_swings(
         take,
         note,
     )?;
+    // Held while the explorer runs: no room past the swings (a million of
+    // them ~0.75 GB, the preset and its description each).
+    presets.shrink_to_fit();
     Ok(Swings {
         unsolved: tracked - presets.len(),
         presets,
