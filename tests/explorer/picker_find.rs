@@ -160,7 +160,7 @@ fn a_long_name_leaves_the_description_in_view() {
     let mut swing = preset::load("fastball", None).unwrap();
     swing.name = format!("Turang {}", "2024-04-03".repeat(8));
     swing.description = "line 4: measured 78.5 mph at 32.0°".to_owned();
-    app.offer_swings(vec![swing]);
+    app.offer_swings(vec![swing.clone()]);
     let shown = screen(&app);
     let row = (shown.lines())
         .find(|l| l.contains("Turang"))
@@ -171,4 +171,11 @@ fn a_long_name_leaves_the_description_in_view() {
     key(&mut app, KeyCode::Char('/'));
     typed(&mut app, "04-032024");
     assert_eq!(found(&app).0.len(), 1);
+    // Loaded, the swing has its whole name and description (its picker
+    // item keeps them, not a second copy in its preset).
+    key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Normal));
+    assert_eq!(app.preset_name, swing.name);
+    assert_eq!(app.description, swing.description);
 }

@@ -106,11 +106,14 @@ impl App {
         if swings.is_empty() {
             return;
         }
+        // A swing's name and description are kept in its item alone (a
+        // Savant file's swings can be hundreds of thousands): `loadable`
+        // gives them back to the preset loaded.
         let items = (swings.into_iter())
-            .map(|p| {
+            .map(|mut p| {
                 Arc::new(PickItem {
-                    name: p.name.clone(),
-                    detail: p.description.clone(),
+                    name: std::mem::take(&mut p.name),
+                    detail: std::mem::take(&mut p.description),
                     preset: Some(p),
                 })
             })
@@ -230,7 +233,7 @@ impl App {
             // g and G: the top and the bottom of the list, as in the inputs.
             Some(Action::First) => (0, None),
             Some(Action::Last) => (last, None),
-            Some(Action::Confirm) => match items.get(selected).and_then(|i| i.preset.clone()) {
+            Some(Action::Confirm) => match items.get(selected).and_then(|i| loadable(i)) {
                 Some(preset) => {
                     self.load(preset);
                     return;
@@ -253,6 +256,17 @@ impl App {
             find: None,
         };
     }
+}
+
+/// The preset `item` loads: a swing's with its name and description,
+/// which its item keeps (see `offer_swings`).
+fn loadable(item: &PickItem) -> Option<Preset> {
+    let mut preset = item.preset.clone()?;
+    if preset.name.is_empty() {
+        preset.name.clone_from(&item.name);
+        preset.description.clone_from(&item.detail);
+    }
+    Some(preset)
 }
 
 /// A short name for a broken preset: its file's stem, if the error has one.
