@@ -701,6 +701,7 @@ impl Problem {
 mod ceiling;
 mod landing;
 mod search;
+mod season;
 #[cfg(test)]
 mod tests;
 
@@ -710,3 +711,4 @@ pub use ceiling::{
 };
 pub use landing::solve_landing;
 use search::{defined_toward, golden_max, illinois};
+pub use season::{SEASON_BATS, SeasonBat, season_bat, season_scene};
