@@ -711,6 +711,7 @@ impl Problem {
 mod ceiling;
 mod landing;
 mod search;
+mod season;
 #[cfg(test)]
 mod tests;
 
@@ -720,3 +721,4 @@ pub use ceiling::{
 };
 pub use landing::solve_landing;
 use search::{defined_toward, golden_max, illinois};
+pub use season::{SEASON_BATS, SeasonBat, season_bat, season_scene};
