@@ -53,13 +53,17 @@ fn retype(app: &mut homerun::tui::app::App, text: &str) {
     key(app, KeyCode::Enter);
 }
 
-/// The reason a typed value was refused, the editor still open.
+/// The reason a typed value was refused: the editor closed (so that it
+/// swallows no later key), the reason shown as an error message.
 fn edit_error(app: &homerun::tui::app::App) -> &str {
-    match &app.mode {
-        Mode::Edit {
-            error: Some(error), ..
-        } => error,
-        other => panic!("still editing with an error, not {other:?}"),
+    assert!(
+        matches!(app.mode, Mode::Normal),
+        "the editor closes after a refusal, not {:?}",
+        app.mode
+    );
+    match &app.message {
+        Some((error, true)) => error,
+        other => panic!("an error message, not {other:?}"),
     }
 }
 
@@ -71,8 +75,15 @@ fn typed_values_are_parsed_validated_and_kept_or_refused() {
     let error = edit_error(&app);
     assert!(error.contains("not a number"), "{error}");
     assert_eq!(app.scene.bat.speed, 30.0);
-    key(&mut app, KeyCode::Esc);
-    assert!(matches!(app.mode, Mode::Normal));
+    // The next key acts on the panes: j moves down, it is not typed.
+    let selected = app.selected;
+    key(&mut app, KeyCode::Char('j'));
+    assert_eq!(
+        app.selected,
+        selected + 1,
+        "j after a refusal moves the selection"
+    );
+    key(&mut app, KeyCode::Char('k'));
     assert_eq!(app.scene.bat.speed, 30.0);
     retype(&mut app, "35");
     assert!(matches!(app.mode, Mode::Normal));
@@ -443,16 +454,10 @@ fn u_shows_and_takes_every_value_in_baseball_units() {
     key(&mut app, KeyCode::Enter);
     typed(&mut app, "300");
     key(&mut app, KeyCode::Enter);
-    match &app.mode {
-        Mode::Edit {
-            error: Some(error), ..
-        } => assert_eq!(
-            error,
-            "pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph"
-        ),
-        other => panic!("an error, not {other:?}"),
-    }
-    key(&mut app, KeyCode::Esc);
+    assert_eq!(
+        edit_error(&app),
+        "pitch.speed = 300 mph: must be a finite number in (0, 223.693] mph"
+    );
     settle(&mut app);
     // Δ is in feet for the imperial nudge: what pressing l does.
     let k = input_index("pitch.speed");

@@ -224,6 +224,12 @@ fn m_picks_a_park_and_the_readout_judges_the_ball_there() {
     assert_eq!((at.cleared, at.of), (cleared, 30));
     assert!(screen(&app).contains(&format!("clears {cleared} of 30 parks")));
     key(&mut app, KeyCode::Char('m'));
+    // The park brings its air; `a` takes the air before, in which `flight`
+    // above flew.
+    assert!(app.in_park_air());
+    key(&mut app, KeyCode::Char('a'));
+    settle(&mut app);
+    assert!(!app.in_park_air());
     let first = &park::bundled()[0];
     assert_eq!(app.park, Some(0));
     assert_eq!(app.field_fence().unwrap(), first.fence);

@@ -149,6 +149,7 @@ fn the_field_shades_the_wall_by_its_height_and_the_monster_stands_out() {
         settle(&mut app);
         key(&mut app, KeyCode::Char('5'));
         pick(&mut app, "BOS");
+        settle(&mut app);
         let pane = homerun::tui::layout::layout(app.size, app.tab, true)
             .field
             .unwrap();
@@ -262,7 +263,20 @@ fn a_flies_the_scene_in_the_parks_own_air_and_a_again_brings_back_the_air_before
             .is_some_and(|(m, error)| *error && m.contains("pick a park"))
     );
 
+    // Choosing a park brings its air (as `fly --park` flies in it), and
+    // says so; `a` goes back to the air before, and `a` again to the park's.
     pick(&mut app, "COL");
+    settle(&mut app);
+    assert!(app.in_park_air());
+    let (message, error) = app.message.clone().unwrap();
+    assert!(
+        !error && message.contains("COL") && message.contains("in its air at 1580 m"),
+        "{message}"
+    );
+    key(&mut app, KeyCode::Char('a'));
+    settle(&mut app);
+    assert!(!app.in_park_air());
+    assert_eq!(app.scene.environment.air(), before);
     key(&mut app, KeyCode::Char('a'));
     settle(&mut app);
     let coors = park::find(park::bundled(), "COL").unwrap().elevation;
@@ -335,10 +349,9 @@ fn the_park_views_never_panic_at_odd_sizes() {
         let mut app = app(w, h, None);
         set_and_settle(&mut app, "bat.tilt", "0.5");
         set_and_settle(&mut app, "bat.direction", "-0.3");
+        // The park brings its air.
         pick(&mut app, "HOU");
-        for k in ['c', 'a'] {
-            key(&mut app, KeyCode::Char(k));
-        }
+        key(&mut app, KeyCode::Char('c'));
         settle(&mut app);
         for tab in ['1', '2', '3', '4', '5'] {
             key(&mut app, KeyCode::Char(tab));

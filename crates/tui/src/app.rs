@@ -294,6 +294,22 @@ impl App {
         format!("{value:.2} {unit}")
     }
 
+    /// What a class should hear about a landing that is no hit to the
+    /// field: a ball behind the plate (a negative range) is "backwards",
+    /// one landing outside the foul lines (±45°) "foul"; None for a fair
+    /// ball.
+    pub fn landing_call(flight: &model::flight::FlightSummary) -> Option<&'static str> {
+        if !flight.landed {
+            None
+        } else if flight.range < 0.0 {
+            Some("backwards")
+        } else if flight.direction.abs() > std::f64::consts::FRAC_PI_4 {
+            Some("foul")
+        } else {
+            None
+        }
+    }
+
     /// The unit a quantity is shown in.
     pub fn unit(&self, quantity: Quantity) -> Unit {
         quantity.in_system(self.units)

@@ -198,3 +198,29 @@ mod tests {
         }
     }
 }
+
+/// A difference with its sign and `decimals` decimals, "+0.00" rather than
+/// "-0.00" for one that rounds to nothing (a class reads "-0.00" as a
+/// loss).
+pub fn signed(value: f64, decimals: usize) -> String {
+    let text = format!("{value:+.decimals$}");
+    if text.starts_with('-') && text[1..].chars().all(|c| c == '0' || c == '.') {
+        format!("+{}", &text[1..])
+    } else {
+        text
+    }
+}
+
+#[cfg(test)]
+mod signed_tests {
+    use super::signed;
+
+    #[test]
+    fn a_difference_that_rounds_to_nothing_is_positive_zero() {
+        assert_eq!(signed(-0.001, 2), "+0.00");
+        assert_eq!(signed(-0.0, 4), "+0.0000");
+        assert_eq!(signed(-0.006, 2), "-0.01");
+        assert_eq!(signed(0.004, 2), "+0.00");
+        assert_eq!(signed(-95.0, 0), "-95");
+    }
+}

@@ -1,6 +1,6 @@
 //! Changing one input: a nudge by its step (the same nudge the Δ column
-//! measures), or a typed value in the unit shown, refused in place with
-//! the reason.
+//! measures), or a typed value in the unit shown, refused with the
+//! reason shown under the list and the old value kept.
 
 use ratatui::crossterm::event::KeyEvent;
 use ratatui_textarea::TextArea;
@@ -108,14 +108,10 @@ impl App {
                         self.inputs_changed = true;
                         self.message = None;
                     }
-                    Err(e) => {
-                        self.mode = Mode::Edit {
-                            field,
-                            text,
-                            error: Some(error_text(&e, self.units)),
-                            initial,
-                        }
-                    }
+                    // The box closes, so that the next keys act on the
+                    // panes again (an open box swallowed them); the
+                    // reason stays under the list until the next key.
+                    Err(e) => self.message = Some((error_text(&e, self.units), true)),
                 }
             }
             _ => {

@@ -222,8 +222,13 @@ impl App {
         self.judge_fences();
         self.refresh_margin(true);
         self.dirty = true;
-        // In the park's air, the new park's (or, with none, the air before).
+        // A park brings its air, as `fly --park` flies in it: a class at
+        // Coors should not fly at sea level until it finds `a`. With no
+        // park, the air from before.
         let was_in_air = self.in_park_air();
+        if park.is_some() && !was_in_air {
+            self.air_before_park = Some(self.scene.environment.air());
+        }
         let air = self.follow_park_air();
         let mut text = match (self.chosen_park(), self.park) {
             (Some(p), Some(k)) => {
@@ -234,7 +239,7 @@ impl App {
                         format!(", yours from {}", f.to_string_lossy())
                     });
                 let what = match &air {
-                    Some(Ok(at)) => format!("in its air at {at}"),
+                    Some(Ok(at)) => format!("in its air at {at} (a: the air before)"),
                     _ => "its fence drawn (m/M: the next)".to_owned(),
                 };
                 format!(

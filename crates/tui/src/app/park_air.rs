@@ -2,8 +2,9 @@
 //! atmosphere at its elevation, as `fly --park CODE --own-air` flies each
 //! park (the same [`GivenWeather::park_air`]; the explorer gives no
 //! weather of its own, so all four are the standard atmosphere's but the
-//! elevation). While on, the air follows the park as `m`/`M` pick another;
-//! `a` again, or no park, brings back the air from before. The weather
+//! elevation). A park chosen brings its air; while on, the air follows
+//! the park as `m`/`M` pick another; `a`, or no park, brings back the air
+//! from before, and `a` again the park's. The weather
 //! inputs show the park's air, and can be typed over until the next park.
 
 use super::*;

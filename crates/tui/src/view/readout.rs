@@ -7,6 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
 use crate::app::App;
+use crate::format::signed;
 use analysis::figures::trimmed;
 use analysis::landing::fence_text;
 use analysis::optimum::Status;
@@ -28,8 +29,12 @@ fn launch_text(app: &App, launch: &BattedBall, sign: bool) -> String {
     let angle = launch.angle.to_degrees();
     if sign {
         format!(
-            "{v:+.2} {}  {w:+.spin_decimals$} {}  {angle:+.2}°",
-            speed.symbol, spin.symbol
+            "{} {}  {} {}  {}°",
+            signed(v, 2),
+            speed.symbol,
+            signed(w, spin_decimals),
+            spin.symbol,
+            signed(angle, 2)
         )
     } else {
         format!(
@@ -44,9 +49,9 @@ fn launch_text(app: &App, launch: &BattedBall, sign: bool) -> String {
 fn angle_text(app: &App, radians: f64, sign: bool) -> String {
     match (app.units, sign) {
         (UnitSystem::Si, false) => format!("{radians:.4}"),
-        (UnitSystem::Si, true) => format!("{radians:+.4}"),
+        (UnitSystem::Si, true) => signed(radians, 4),
         (UnitSystem::Imperial, false) => format!("{:.2}°", radians.to_degrees()),
-        (UnitSystem::Imperial, true) => format!("{:+.2}°", radians.to_degrees()),
+        (UnitSystem::Imperial, true) => format!("{}°", signed(radians.to_degrees(), 2)),
     }
 }
 
@@ -58,7 +63,7 @@ fn undercut_text(app: &App, metres: f64, sign: bool) -> String {
         UnitSystem::Imperial => (app.unit(Quantity::Size).show(metres), "in", 3),
     };
     if sign {
-        format!("{value:+.decimals$} {unit}")
+        format!("{} {unit}", signed(value, decimals))
     } else {
         format!("{value:.decimals$} {unit}")
     }
@@ -129,8 +134,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             // (the end of the drawn path).
             if flight.landed {
                 Span::raw(format!(
-                    "range {}  {:.2} s  apex\u{a0}{:.1} {u}",
+                    "range {}{}  {:.2} s  apex\u{a0}{:.1} {u}",
                     app.range_text(flight.range),
+                    App::landing_call(flight).map_or(String::new(), |c| format!(" {c}")),
                     flight.flight_time,
                     d(flight.apex)
                 ))
@@ -224,13 +230,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         };
         let launch = pinned(launch_text(app, &difference, true));
         let range = if flight.landed && was_flight.landed {
-            format!("{:+.2} {u}", d(flight.range - was_flight.range))
+            format!("{} {u}", signed(d(flight.range - was_flight.range), 2))
         } else {
             "— (not both land)".to_owned()
         };
         let flight = pinned(format!(
-            "range {range}  apex {:+.1} {u}",
-            d(flight.apex - was_flight.apex)
+            "range {range}  apex {} {u}",
+            signed(d(flight.apex - was_flight.apex), 1)
         ));
         let short = (inner.height as usize) < lines.len() + 5;
         if short {
@@ -314,7 +320,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
                 }
             }
             let range = if flight.landed {
-                format!("{:+.2} {u}", d(flight.range - o.best.range))
+                format!("{} {u}", signed(d(flight.range - o.best.range), 2))
             } else {
                 "—".to_owned()
             };
@@ -349,7 +355,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     if let Some(fence) = app.fence.filter(|_| app.park.is_none()) {
         // Whether it clears, in the command line's words.
         let unit = app.unit(Quantity::Distance);
-        let text = fence_text(fence.distance, fence.height, app.fence_height, unit);
+        let mut text = fence_text(fence.distance, fence.height, app.fence_height, unit);
+        // "falls short" undersells a ball hit behind the plate or foul.
+        if let Some(call) = App::landing_call(flight)
+            && let Some((fence, _)) = text.split_once(": ")
+        {
+            text = format!("{fence}: {call}, no home run");
+        }
         lines.push(Line::from(vec![label("fence"), Span::raw(text)]));
     }
     if let Some(at) = &app.at_parks {

@@ -74,8 +74,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let legend = Line::from(legend);
     let numbers = if flight.landed {
         format!(
-            "{}, apex {:.1} {unit} ",
+            "{}{}, apex {:.1} {unit} ",
             app.range_text(flight.range),
+            crate::app::App::landing_call(flight).map_or(String::new(), |c| format!(" {c}")),
             k * flight.apex
         )
     } else {
