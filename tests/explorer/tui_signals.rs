@@ -4,10 +4,11 @@
 //! (SIGCONT) takes it again and redraws; every catchable signal that ends
 //! the explorer restores the terminal first, and the exit status is 128 +
 //! the signal.
-#![allow(unsafe_code)] // libc: the pseudo-terminal's modes, read by tcgetattr.
-
+use std::os::unix::fs::OpenOptionsExt as _;
 use std::thread;
 use std::time::{Duration, Instant};
+
+use rustix::termios::LocalModes;
 
 use crate::tui_pty::Session;
 
@@ -36,21 +37,22 @@ const THE_EXPLORERS: TerminalState = TerminalState {
 };
 
 fn state(session: &Session) -> TerminalState {
-    let fd = session.master.as_raw_fd().expect("a unix pty");
-    // SAFETY: tcgetattr fills a termios we own, from a descriptor the
-    // master holds open for the session's life.
-    let local = unsafe {
-        let mut modes: libc::termios = std::mem::zeroed();
-        assert_eq!(libc::tcgetattr(fd, &mut modes), 0);
-        modes.c_lflag
-    };
+    // The line's modes, read on the terminal's own side (the pair shares
+    // them), opened without becoming this process's controlling terminal.
+    let tty = session.master.tty_name().expect("a unix pty");
+    let tty = std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NOCTTY)
+        .open(tty)
+        .unwrap();
+    let local = rustix::termios::tcgetattr(&tty).unwrap().local_modes;
     let parser = session.screen.lock().unwrap();
     let screen = parser.screen();
     TerminalState {
         alternate_screen: screen.alternate_screen(),
         mouse_reporting: screen.mouse_protocol_mode() != vt100::MouseProtocolMode::None,
         cursor_hidden: screen.hide_cursor(),
-        cooked: local & libc::ICANON != 0 && local & libc::ECHO != 0,
+        cooked: local.contains(LocalModes::ICANON | LocalModes::ECHO),
     }
 }
 
