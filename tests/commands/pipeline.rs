@@ -14,22 +14,8 @@ const HOME_RUNS: &str = "tests/data/savant_home_runs.csv";
 
 /// Runs `homerun args` with `stdin` piped in: (stdout, stderr, status).
 fn run(args: &[&str], stdin: &[u8]) -> (String, String, i32) {
-    let mut child = command()
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut input = child.stdin.take().unwrap();
-    let _ = input.write_all(stdin);
-    drop(input);
-    let out = child.wait_with_output().unwrap();
-    (
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-        out.status.code().unwrap_or(-1),
-    )
+    let (status, out, err) = super::common::run_with_stdin(args, Some(stdin));
+    (out, err, status.unwrap_or(-1))
 }
 
 fn sample() -> String {

@@ -102,6 +102,11 @@ impl Row<'_> {
 /// Runs the binary with `args` (and `input` on stdin): exit status, stdout
 /// and stderr.
 pub fn run_homerun(args: &[&str], input: Option<&str>) -> (Option<i32>, String, String) {
+    run_with_stdin(args, input.map(str::as_bytes))
+}
+
+/// [`run_homerun`] with any bytes on stdin (gzip, a BOM, binary data).
+pub fn run_with_stdin(args: &[&str], input: Option<&[u8]>) -> (Option<i32>, String, String) {
     let mut command = assert_command();
     command.args(args);
     if let Some(input) = input {
