@@ -260,6 +260,14 @@ pub fn entry_of(name: &str) -> Option<&'static Entry> {
         .find(|e| e.names.iter().any(|n| folded(n) == name))
 }
 
+/// The table's entry for launch value `index` (its names and unit).
+pub fn launch_entry(index: usize) -> Option<(&'static Entry, Unit)> {
+    TABLE.iter().find_map(|e| match e.becomes {
+        Becomes::Launch(i, unit) if i == index => Some((e, unit)),
+        _ => None,
+    })
+}
+
 /// The first name of the entry that becomes `becomes`.
 pub fn name_of(becomes: Becomes) -> &'static str {
     TABLE

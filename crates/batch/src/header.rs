@@ -20,11 +20,8 @@ pub fn columns_help() -> String {
     for (index, key) in LAUNCH_KEYS.iter().enumerate() {
         let si = Scene::key(key).map_or("", |k| k.unit);
         rows.push(((*key).to_owned(), format!("{key} in {si}")));
-        let entry = TABLE
-            .iter()
-            .find(|e| matches!(e.becomes, columns::Becomes::Launch(i, _) if i == index));
-        if let Some(entry) = entry {
-            let unit = launch_unit(index).name();
+        if let Some((entry, unit)) = columns::launch_entry(index) {
+            let unit = unit.name();
             rows.extend(
                 entry
                     .names
@@ -255,10 +252,7 @@ impl Header {
             let mut looked = Vec::new();
             let mut wanted = Vec::new();
             for &i in &missing {
-                let entry = TABLE
-                    .iter()
-                    .find(|e| e.becomes == columns::Becomes::Launch(i, launch_unit(i)));
-                let names = entry.map_or(&[][..], |e| e.names);
+                let names = columns::launch_entry(i).map_or(&[][..], |(e, _)| e.names);
                 looked.push(format!("{} or {}", names.join(", "), LAUNCH_KEYS[i]));
                 wanted.extend(names.iter().copied());
             }
@@ -353,9 +347,4 @@ impl Header {
             .map(|(n, _)| n.as_str())
             .collect()
     }
-}
-
-/// The unit of the table's Statcast column for launch value `index`.
-fn launch_unit(index: usize) -> Unit {
-    [Unit::Mph, Unit::Degrees, Unit::Rpm][index]
 }
