@@ -116,7 +116,7 @@ pub fn fly_rows(
         take,
         note,
     )?;
-    tally.close(&outcome);
+    tally.close(&outcome, &header);
     Ok((outcome, tally))
 }
 

@@ -116,11 +116,9 @@ const NAMED_HOME_RUNS: usize = 20;
 
 impl Tally {
     pub(crate) fn new(setup: &Setup, header: Option<&Header>) -> Tally {
+        // Each piece keeps one: the header's names wait for the close.
         Tally {
             at_park: vec![0; setup.parks.parks.len()],
-            used: header.map_or(Vec::new(), |h| {
-                h.savant_used().into_iter().map(str::to_owned).collect()
-            }),
             hit_coordinates: header.is_some_and(|h| h.hit_coordinates),
             ..Tally::default()
         }
@@ -268,11 +266,16 @@ impl Tally {
         }
     }
 
-    /// Takes the batch's closing counts.
-    pub(crate) fn close(&mut self, outcome: &Outcome) {
+    /// Takes the batch's closing counts, and the Savant columns it read.
+    pub(crate) fn close(&mut self, outcome: &Outcome, header: &Header) {
         self.answered = outcome.answered;
         self.failed = outcome.failed;
         self.without_speed = outcome.without_launch;
         self.empty = outcome.empty;
+        self.used = header
+            .savant_used()
+            .into_iter()
+            .map(str::to_owned)
+            .collect();
     }
 }
