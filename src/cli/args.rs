@@ -153,17 +153,15 @@ pub enum Command {
         /// an `all_parks` list of {park, outcome, margin} (SI).
         #[arg(long)]
         all_parks: bool,
-        /// With --batch: judge each row at each park in that park's own air (the
-        /// standard air at its elevation, the weather given kept), a flight a
-        /// park: ~30x the work. Without it a batch judges each row's one flight,
-        /// in the scene's air, at every park (the summary says so). A lone
-        /// `fly` always judges each park in its own air, unless --one-flight.
-        #[arg(long, conflicts_with = "one_flight")]
+        /// Each park in its own air: the default, kept so that older
+        /// command lines still run.
+        #[arg(long, hide = true, conflicts_with = "one_flight")]
         own_air: bool,
-        /// Count (and list) the parks on this one flight, in its air (--park's, or
-        /// the scene's) instead of a flight a park in each park's own air; the
-        /// parks line says so.
-        #[arg(long, conflicts_with = "batch")]
+        /// Judge every park on the one flight, in its air (--park's, each
+        /// row's park's, or the scene's), instead of each park in its own air
+        /// (the standard air at its elevation, the weather given kept); the
+        /// parks line and a batch's summary say so.
+        #[arg(long)]
         one_flight: bool,
         /// With --batch: add the summary's tables to its lines on stderr: the
         /// error against hit_distance_sc by launch-angle band and by kind of

@@ -21,7 +21,7 @@ pub(super) fn run(cli: &Cli, command: &Command) -> Option<Result<ExitCode, Usage
             park,
             keep,
             spray,
-            own_air,
+            one_flight,
             summary,
             all_parks,
             spin,
@@ -40,7 +40,7 @@ pub(super) fn run(cli: &Cli, command: &Command) -> Option<Result<ExitCode, Usage
             };
             Some(run_batch(cli, &args, |setup| {
                 setup.spray = (*spray).into();
-                setup.own_air = *own_air;
+                setup.one_flight = *one_flight;
                 setup.all_parks = *all_parks;
                 setup.solve_swings = *spin == SpinArg::Swing;
             }))

@@ -362,8 +362,8 @@ fn fly_and_the_same_launch_in_a_batch_print_the_same_numbers() {
             .flat_map(|(k, v)| ["--set".to_owned(), format!("launch.{k}={v}")])
             .collect();
         let fly = homerun(dir.path())
-            // A batch judges a row's one flight at every park, as --one-flight.
-            .args(["fly", "--preset", "fly-ball", "--json", "--one-flight"])
+            // A batch judges each park in its own air, as a lone fly does.
+            .args(["fly", "--preset", "fly-ball", "--json"])
             .args(&sets)
             .output()
             .unwrap();

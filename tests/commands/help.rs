@@ -253,7 +253,7 @@ fn a_command_built_alone_is_the_command_built_whole() {
         vec!["keys", "--units", "furlongs"],
         vec!["fly", "--keep", "a"],
         vec!["fly", "--spray", "sideways", "--batch", "x.csv"],
-        vec!["fly", "--one-flight", "--batch", "x.csv"],
+        vec!["fly", "--one-flight", "--own-air"],
         vec!["surface", "--json", "--csv"],
         vec!["surface", "--grid"],
         vec!["trajectory", "--samples", "x"],

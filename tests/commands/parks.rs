@@ -418,10 +418,9 @@ fn a_park_is_judged_in_its_own_air_everywhere() {
 
 /// Issue 28, item 12: `fly --batch --all-parks` gives each row's outcome
 /// and margin at every park: two CSV columns a park (the margin's unit in
-/// its name outside SI), or a JSON `all_parks` list. By default the row's
-/// one flight in the scene's air is judged at every park, so that the
-/// columns count to `parks_cleared`; `--own-air` flies each park in its own
-/// air.
+/// its name outside SI), or a JSON `all_parks` list. Each park is judged
+/// in its own air, and the columns count to `parks_cleared` (issue 35,
+/// item 4); `--one-flight` judges every park on the row's one flight.
 #[test]
 fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
     let run = |args: &[&str]| {
@@ -476,11 +475,24 @@ fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
     // Without --all-parks, no such key or columns.
     let plain = run(&["fly", "--json", "--batch", file]);
     assert!(!plain.contains("all_parks"));
-    // --own-air: each park in its own air, as the lone fly judges it.
-    let own = run(&["fly", "--all-parks", "--own-air", "--batch", file]);
-    let header: Vec<&str> = own.lines().next().unwrap().split(',').collect();
-    let first: Vec<&str> = own.lines().nth(1).unwrap().split(',').collect();
+    // --one-flight: every park on the row's one flight, in its park's air.
+    let one = run(&["fly", "--all-parks", "--one-flight", "--batch", file]);
+    let header: Vec<&str> = one.lines().next().unwrap().split(',').collect();
+    let first: Vec<&str> = one.lines().nth(1).unwrap().split(',').collect();
     let bos = header.iter().position(|h| *h == "BOS_margin").unwrap();
-    let shared: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
-    assert_ne!(first[bos], shared[bos], "Fenway's own air moves the margin");
+    let own: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
+    assert_ne!(first[bos], own[bos], "Fenway's own air moves the margin");
+    // The count without --all-parks, settled mostly from the one flight,
+    // is the count of every park flown.
+    let plain = run(&["fly", "--batch", file]);
+    let count = |text: &str| -> Vec<String> {
+        let mut lines = text.lines();
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let at = header.iter().position(|h| *h == "parks_cleared").unwrap();
+        lines
+            .map(|l| l.split(',').nth(at).unwrap().to_owned())
+            .collect()
+    };
+    assert_eq!(count(&plain), count(&csv));
+    assert_ne!(count(&one), count(&csv), "the air moves some counts");
 }

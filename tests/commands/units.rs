@@ -311,14 +311,7 @@ fn a_savant_batch_prints_its_units_and_one_summary() {
     };
     let file = "tests/data/savant_home_runs.csv";
     let (out, err) = run(&[
-        "fly",
-        "--units",
-        "imperial",
-        "--park",
-        "BOS",
-        "--own-air",
-        "--batch",
-        file,
+        "fly", "--units", "imperial", "--park", "BOS", "--batch", file,
     ]);
     let mut lines = out.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
@@ -329,7 +322,7 @@ fn a_savant_batch_prints_its_units_and_one_summary() {
     assert_eq!(summary.len(), 1, "{err}");
     assert!(
         summary[0].starts_with(
-            "homerun: summary: flown 248 rows, skipped 0; at BOS (in its own air): 169 clear, 39 off the wall, 37 short, 3 foul; against hit_distance_sc (245 rows): median difference "
+            "homerun: summary: flown 248 rows, skipped 0; at BOS (in its air; parks_cleared: each park in its own air): 169 clear, 39 off the wall, 37 short, 3 foul; against hit_distance_sc (245 rows): median difference "
         ),
         "{}",
         summary[0]

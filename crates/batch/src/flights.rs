@@ -4,6 +4,7 @@
 //! and at every park. Every row's answer is its own ([`many::judge_many`]):
 //! what `fly` gives that row alone, bit for bit, whatever its neighbours.
 
+use crate::park_air;
 use crate::row::Job;
 use crate::setup::Setup;
 use analysis::precision::Purpose;
@@ -12,7 +13,7 @@ use model::clearing::{Clearing, Crossing, Landing};
 use model::flight::{FlightOptions, FlightSummary};
 use model::launch::{self, BattedBall, SceneFlight};
 use model::many;
-use model::park::{self, GivenWeather};
+use model::park;
 use model::scene::Scene;
 
 /// A row's flight, as the output needs it.
@@ -52,6 +53,7 @@ pub(crate) struct Scratch {
     /// With `--all-parks`, for each row flown, its judgement at each park
     /// (beside `cleared`: from the same `cleared_from`).
     pub clearings: Vec<Clearing>,
+    airs: park_air::ParkAirs,
 }
 
 /// A row ready to fly: its launch complete and checked, and the fence it
@@ -98,8 +100,10 @@ pub(crate) fn fly_chunk(
     let ready: Vec<Result<Ready, String>> = (jobs.iter().zip(launched))
         .map(|(job, launched)| ready(job, launched, own(job)))
         .collect();
-    // With --own-air each park is judged on a flight in its own air.
-    let parks: &[&park::Fence] = if setup.own_air { &[] } else { &setup.fences };
+    // The one flight crosses every park's fence: it is each park's
+    // verdict in its own air where a change of air cannot move it
+    // ([`park_air::settled`]); the other parks are flown in their air.
+    let parks: &[&park::Fence] = &setup.fences;
     let options = Purpose::Readout.flight_options();
     let flying: Vec<&Ready> = ready.iter().flatten().collect();
     fly_all(
@@ -111,6 +115,8 @@ pub(crate) fn fly_chunk(
     );
     let width = parks.len() + 1;
     let mut flown = 0;
+    let mut in_own_air: Vec<(usize, SceneFlight)> = Vec::new();
+    let mut pending = Vec::new();
     for (job, ready) in jobs.iter().zip(&ready) {
         let ready = match ready {
             Ok(ready) => ready,
@@ -124,25 +130,43 @@ pub(crate) fn fly_chunk(
         flown += 1;
         let landing = Landing::of(&summary);
         let clearing = Clearing::judge_landed(ready.own, crossings[0], &summary, landing);
-        let from = scratch.cleared.len();
-        if setup.all_parks && !setup.own_air {
-            let judged = parks.iter().zip(&crossings[1..]);
-            scratch.clearings.extend(judged.map(|(fence, crossing)| {
+        let from = scratch.clearings.len();
+        let judged = parks.iter().zip(&crossings[1..]);
+        scratch.clearings.extend(
+            judged.map(|(fence, crossing)| {
                 Clearing::judge_landed(fence, *crossing, &summary, landing)
-            }));
-        }
-        // A ball clears a park's wall only where it crosses it.
-        let at_parks = parks.iter().zip(&crossings[1..]).map(|(fence, crossing)| {
-            crossing.is_some()
-                && Clearing::judge_landed(fence, *crossing, &summary, landing).clears()
-        });
-        scratch.cleared.extend(at_parks);
-        if setup.own_air {
-            for park in &setup.parks.parks {
-                let there = own_air_clearing(ready, park, job.given, &options);
-                scratch.cleared.push(there.clears());
-                if setup.all_parks {
-                    scratch.clearings.push(there);
+            }),
+        );
+        if !setup.one_flight {
+            let own = &ready.scene.environment;
+            let airs = scratch.airs.of(own, job.given, &setup.parks.parks);
+            if park_air::settles(&ready.scene) && !setup.all_parks {
+                pending.push(park_air::Pending {
+                    scene: ready.scene,
+                    launch_direction: ready.launch.direction,
+                    airs: airs.to_vec(),
+                    from,
+                    flights: vec![park_air::Reference {
+                        density: own.air_density,
+                        flight: summary,
+                        clearings: scratch.clearings[from..]
+                            .iter()
+                            .copied()
+                            .map(Some)
+                            .collect(),
+                    }],
+                });
+            } else {
+                // Flown in every park's air but its own (`--all-parks`
+                // prints the margins too).
+                for (k, air) in airs
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, air)| **air != own.air())
+                {
+                    let mut there = ready.scene;
+                    there.environment.set_air(*air);
+                    in_own_air.push((from + k, launch::scene_start(&there).0));
                 }
             }
         }
@@ -150,12 +174,44 @@ pub(crate) fn fly_chunk(
             launch: ready.launch,
             flight: summary,
             clearing,
-            parks_cleared: scratch.cleared[from..].iter().filter(|&&c| c).count(),
+            parks_cleared: 0,
             cleared_from: from,
             flights: ready.flights,
             direction_from: ready.direction_from,
         }));
     }
+    fly_in_own_air(&in_own_air, setup, &options, &mut scratch.clearings);
+    park_air::settle(pending, parks, &options, &mut scratch.clearings);
+    scratch
+        .cleared
+        .extend(scratch.clearings.iter().map(Clearing::clears));
+    let count = setup.parks.parks.len();
+    for row in out.iter_mut().flatten() {
+        let cleared = &scratch.cleared[row.cleared_from..][..count];
+        row.parks_cleared = cleared.iter().filter(|&&c| c).count();
+    }
+}
+
+/// Flies each `(slot, flight)` to its park's fence (the slot's place among
+/// a row's parks) and judges it there, into `clearings[slot]`.
+fn fly_in_own_air(
+    flights: &[(usize, SceneFlight)],
+    setup: &Setup,
+    options: &FlightOptions,
+    clearings: &mut [Clearing],
+) {
+    let count = setup.fences.len();
+    let fence_of = |slot: usize| std::slice::from_ref(&setup.fences[slot % count]);
+    many::judge_many(
+        flights
+            .iter()
+            .map(|(slot, flight)| (*flight, fence_of(*slot))),
+        options,
+        |index, summary, crossing| {
+            let slot = flights[index].0;
+            clearings[slot] = Clearing::judge(fence_of(slot)[0], crossing[0], &summary);
+        },
+    );
 }
 
 /// Flies each row once to the ground, noting where it crosses its own fence
@@ -230,20 +286,4 @@ fn ready<'f>(
         direction_from: job.direction_from(launched.direction_from),
         own,
     })
-}
-
-/// The row at `park`'s wall on a flight of its own in that park's air (as
-/// `fly --own-air` flies it).
-fn own_air_clearing(
-    ready: &Ready,
-    park: &park::Park,
-    given: GivenWeather,
-    options: &FlightOptions,
-) -> Clearing {
-    let mut there = ready.scene;
-    given.park_air(&mut there.environment, park.elevation);
-    let (flight, _, _) = launch::scene_start(&there);
-    let mut crossing = [None];
-    let flown = flight.fly_to_fences(options, &[&park.fence], &mut crossing);
-    Clearing::judge(&park.fence, crossing[0], &flown)
 }

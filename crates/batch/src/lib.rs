@@ -23,6 +23,7 @@ pub mod header;
 mod kinds;
 mod output;
 mod own_launch;
+mod park_air;
 mod pieces;
 mod read;
 mod row;

@@ -217,10 +217,13 @@ impl<T> Piece<T> {
                     &round.ends[ends.clone()],
                     &mut self.lossy,
                 );
-                // With --own-air each park's flight takes the launch its
-                // swing gives in that park's air: left to it.
-                let swings = (!setup.own_air).then_some(&mut self.swings);
-                parse_row(header, setup, (line, fields), swings, &mut self.jobs)
+                parse_row(
+                    header,
+                    setup,
+                    (line, fields),
+                    &mut self.swings,
+                    &mut self.jobs,
+                )
             };
             match row {
                 Row::Job => {}

@@ -117,15 +117,16 @@ pub(crate) fn measure(text: &str, quantity: Quantity, bare: impl Fn(f64) -> f64)
     si.is_finite().then_some(si)
 }
 
-/// The row on `line`, its `fields` as read; with `swings`, the launch
-/// values it leaves to its swing filled in where its swing is known (see
-/// [`SwingLaunches`]). A row that flies is pushed onto `jobs`, built there
+/// The row on `line`, its `fields` as read, the launch values it leaves
+/// to its swing filled in where its swing is known (see [`SwingLaunches`]:
+/// its swing in the row's own air, where it was hit, as its measured
+/// values were; each park then flies that launch in the park's air). A row that flies is pushed onto `jobs`, built there
 /// (a job holds a scene: moving it cost more than reading its cells).
 pub(crate) fn parse_row(
     header: &Header,
     setup: &Setup,
     (line, fields): (usize, Fields),
-    swings: Option<&mut SwingLaunches>,
+    swings: &mut SwingLaunches,
     jobs: &mut Vec<Job>,
 ) -> Row {
     let bad = |reason: String| Row::Bad { line, reason };
@@ -186,7 +187,7 @@ fn read_cells(
     header: &Header,
     setup: &Setup,
     fields: &Fields,
-    swings: Option<&mut SwingLaunches>,
+    swings: &mut SwingLaunches,
     job: &mut Job,
 ) -> Result<(), String> {
     let cell = |i: usize| cell(fields, i);
@@ -296,10 +297,7 @@ fn read_cells(
     if let Some(index) = park {
         given.park_air(&mut scene.environment, setup.parks.parks[index].elevation);
     }
-    let valid = match swings {
-        Some(swings) => swings.validate(scene, header.launch_only.then_some(park)),
-        None => scene.validate(),
-    };
+    let valid = swings.validate(scene, header.launch_only.then_some(park));
     if let Err(mut e) = valid {
         // Out of range from a column in mph, ° or rpm: shown in that unit
         // too, as `--set` shows a value typed with one.

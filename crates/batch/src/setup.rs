@@ -27,8 +27,9 @@ pub struct Setup<'a> {
     /// `--column NAME=COLUMN`: the file's COLUMN read as NAME.
     pub mapping: Vec<(String, String)>,
     pub spray: Spray,
-    /// `--own-air`: each park counted in its own air (a flight per park).
-    pub own_air: bool,
+    /// `--one-flight`: every park judged on the row's one flight, in its
+    /// own air, instead of each park in the park's air.
+    pub one_flight: bool,
     /// `--all-parks`: each park's outcome and margin on every row.
     pub all_parks: bool,
     /// `--keep`'s column names.
@@ -56,7 +57,7 @@ impl<'a> Setup<'a> {
             given: GivenWeather::default(),
             mapping: Vec::new(),
             spray: Spray::Landing,
-            own_air: false,
+            one_flight: false,
             all_parks: false,
             keep: Vec::new(),
             solve_swings: false,

@@ -139,9 +139,9 @@ impl Tally {
 
     /// Where the rows were judged, for the outcome line.
     fn judged_at(&self, setup: &Setup) -> String {
-        let air = match setup.own_air {
-            true => "in its own air",
-            false => "in the scene's air",
+        let air = match setup.one_flight {
+            false => "in its air; parks_cleared: each park in its own air",
+            true => "in its air; parks_cleared: on that one flight (--one-flight)",
         };
         // No row had a fence to be judged at.
         let no_fence = self.outcomes.iter().sum::<usize>() == 0 && self.at_no_park > 0;

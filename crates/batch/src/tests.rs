@@ -200,7 +200,8 @@ fn run(setup: &Setup, input: &str, json: bool, shown: Shown) -> (String, String,
 }
 
 /// A row flown alone, as `fly` flies it: at the readout's precision,
-/// judged at `fence` and at every park's fence on the same flight.
+/// judged at `fence`, and at every park's fence on a flight in that
+/// park's air (the standard air at its elevation: no weather given).
 struct Alone {
     launch: BattedBall,
     flight: FlightSummary,
@@ -208,18 +209,21 @@ struct Alone {
     parks_cleared: usize,
 }
 
-fn alone(scene: &Scene, fence: &model::park::Fence, parks: &[&model::park::Fence]) -> Alone {
+fn alone(scene: &Scene, fence: &model::park::Fence, parks: &[model::park::Park]) -> Alone {
     let options = Purpose::Readout.flight_options();
     let (flight, launch, _) = launch::scene_start(scene);
-    let fences: Vec<_> = std::iter::once(fence)
-        .chain(parks.iter().copied())
-        .collect();
-    let (summary, clearings) = flight.judge(&options, &fences);
+    let (summary, clearings) = flight.judge(&options, &[fence]);
+    let at_park = |park: &model::park::Park| {
+        let mut there = *scene;
+        model::park::GivenWeather::default().park_air(&mut there.environment, park.elevation);
+        let (flight, _, _) = launch::scene_start(&there);
+        flight.judge(&options, &[&park.fence]).1[0].clears()
+    };
     Alone {
         launch,
         flight: summary,
         clearing: clearings[0],
-        parks_cleared: clearings[1..].iter().filter(|c| c.clears()).count(),
+        parks_cleared: parks.iter().filter(|park| at_park(park)).count(),
     }
 }
 
@@ -241,7 +245,7 @@ fn fly_line(
     statcast: Option<f64>,
 ) -> String {
     use units::Quantity::*;
-    let flown = alone(scene, fence, &setup.fences);
+    let flown = alone(scene, fence, &setup.parks.parks);
     let (launch, flight) = (&flown.launch, &flown.flight);
     let distance = |m: Option<f64>, d| m.map_or(String::new(), |m| number(shown, Distance, m, d));
     let mut text = format!(
@@ -334,11 +338,11 @@ fn launched(scene: &Scene, launch: &[f64; 5]) -> Scene {
 /// Launches whose range, as `fly` flies them, lies within ~1e-9 m of a
 /// rounding boundary of its printed millimetre: the launch speed moved by
 /// Newton's method onto the boundary.
-fn on_rounding_boundaries(base: &Scene, rows: usize, setup: &Setup) -> Vec<[f64; 5]> {
+fn on_rounding_boundaries(base: &Scene, rows: usize) -> Vec<[f64; 5]> {
     let fence = model::park::Fence::uniform(121.92, 3.0);
     let range = |launch: &[f64; 5]| {
         let scene = launched(base, launch);
-        alone(&scene, &fence, &setup.fences).flight.range
+        alone(&scene, &fence, &[]).flight.range
     };
     let mut found = Vec::new();
     for mut launch in launches(rows, false, 0x5eed_0018) {
@@ -366,7 +370,7 @@ fn batch_rows_print_what_fly_prints_digit_for_digit() {
     setup.given(&["field.fence_distance=121.9".to_owned()]);
     let generic = preset::Fence::generic().uniform();
     let imperial = Shown(units::UnitSystem::Imperial);
-    let boundary = on_rounding_boundaries(&preset.scene, 300, &setup);
+    let boundary = on_rounding_boundaries(&preset.scene, 300);
     let cases = [
         (launches(1500, false, 1), Shown::default()),
         (launches(1500, true, 2), Shown::default()),
@@ -672,4 +676,75 @@ fn missing_values_units_and_compared_columns() {
     assert_eq!(rows[1][19], "140.21");
     assert_eq!(rows[2][19], "");
     assert_eq!(rows[3][19], "140.00");
+}
+
+/// Each park judges a row on a flight in its own air: the parks a row
+/// clears, settled from the row's own flight where the air cannot move
+/// the verdict, are those it clears flown in every park's air
+/// (`--all-parks` flies them all), and not those of its one flight.
+#[test]
+fn each_park_counts_a_row_in_its_own_air_as_a_flight_there_would() {
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
+    let codes = ["BOS", "COL", "NYY", "AZ", "HOU", "SEA"];
+    let mut next = uniform(11);
+    let mut input = String::from(
+        "launch.speed,launch.angle,launch.spin,launch.direction,launch.sidespin,home_team\n",
+    );
+    // Fly balls near the walls: 95-115 mph, 20-40°, pulled, hooked and
+    // sliced to the foul poles.
+    for i in 0..900 {
+        let launch = [
+            42.5 + 9.0 * next(),
+            0.35 + 0.35 * next(),
+            150.0 + 250.0 * next(),
+            1.6 * next() - 0.8,
+            400.0 * next() - 200.0,
+        ];
+        let cells: Vec<String> = launch.iter().map(f64::to_string).collect();
+        input += &format!("{},{}\n", cells.join(","), codes[i % codes.len()]);
+    }
+    let counts = |set: &dyn Fn(&mut Setup)| -> Vec<usize> {
+        let mut setup = Setup::new(&preset, &parks);
+        set(&mut setup);
+        let (out, _, _) = run(&setup, &input, false, Shown::default());
+        let mut lines = out.lines();
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let at = header.iter().position(|h| *h == "parks_cleared").unwrap();
+        lines
+            .map(|line| line.split(',').nth(at).unwrap().parse().unwrap())
+            .collect()
+    };
+    let settled = counts(&|_| {});
+    let flown = counts(&|setup| setup.all_parks = true);
+    let one_flight = counts(&|setup| setup.one_flight = true);
+    assert_eq!(settled.len(), 900);
+    assert_eq!(settled, flown);
+    // The rows reach the walls, some parks but not all, and the air moves
+    // the count of many.
+    let between = settled.iter().filter(|&&n| n > 0 && n < 30).count();
+    assert!(between > 200, "{between} rows clear some parks but not all");
+    let moved = settled
+        .iter()
+        .zip(&one_flight)
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(moved > 50, "the air moved {moved} counts");
+    // And a row alone, each park flown in its air, counts the same.
+    let setup = Setup::new(&preset, &parks);
+    for (line, want) in input.lines().skip(1).zip(&settled).step_by(37) {
+        let cells: Vec<f64> = line
+            .split(',')
+            .take(5)
+            .map(|c| c.parse().unwrap())
+            .collect();
+        let code = line.rsplit(',').next().unwrap();
+        let park = parks.parks.iter().find(|p| p.code == code).unwrap();
+        let mut scene = launched(&preset.scene, &cells.try_into().unwrap());
+        model::park::GivenWeather::default().park_air(&mut scene.environment, park.elevation);
+        assert_eq!(
+            alone(&scene, &park.fence, &setup.parks.parks).parks_cleared,
+            *want
+        );
+    }
 }

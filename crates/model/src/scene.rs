@@ -287,6 +287,14 @@ impl Environment {
         self.kinematic_viscosity = atmosphere.kinematic_viscosity();
     }
 
+    /// Takes `air` whole, as another environment's [`Environment::air`]
+    /// gave it (ρ and ν with the weather they came from, if any).
+    pub fn set_air(&mut self, air: Air) {
+        self.atmosphere = air.atmosphere;
+        self.air_density = air.density;
+        self.kinematic_viscosity = air.kinematic_viscosity;
+    }
+
     /// Gives ρ: no atmosphere derives the air any more, and ν keeps the
     /// value it had.
     pub fn set_air_density(&mut self, air_density: f64) {

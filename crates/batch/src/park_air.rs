@@ -1,0 +1,314 @@
+//! Each park's verdict on a row in that park's own air (the standard air
+//! at its elevation, the weather given kept): what `fly --park` gives the
+//! row there alone. A flight a park would cost 30 flights a row. Instead
+//! the row's one flight, in its own air, which crosses every park's fence
+//! on the way ([`super::flights`]), settles each park where no change of
+//! air as small as the one between the two can move the verdict; only the
+//! rest are flown, each in its park's air, as `fly` flies it.
+//!
+//! A park its own flight cannot settle is flown in that park's air, to
+//! every park's fence: that flight then settles the parks whose air is
+//! near its own (the 29 parks but Coors Field lie within 4 % of each
+//! other's density; Coors is 15–20 % thinner than any). Each round flies,
+//! for every row with a park unsettled, the park farthest in density from
+//! the flights it has; a round settles at least the park it flies.
+//!
+//! How far a flight moves with the air is bounded by measurement: every
+//! row of a season of Statcast (124,551 balls in play) flown in each of
+//! the 30 parks' air against its own (docs/parks.md, "Each park in its own
+//! air"). The bounds below are several times the largest change seen, and
+//! hold only where the air acts through its density alone: a drag without
+//! a Reynolds number (Nathan's or a constant C_D) and a launch that does
+//! not come out of an impact in that air. Any other row is flown in every
+//! park's air.
+
+use model::aero::DragModel;
+use model::atmosphere::Air;
+use model::clearing::{Clearing, Landing};
+use model::flight::{FlightOptions, FlightSummary};
+use model::launch;
+use model::many;
+use model::park::{Fence, GivenWeather, Park};
+use model::scene::{Environment, Scene, SceneKind};
+
+/// A flight's height where it crosses a wall moves by at most this times
+/// r·d·max(1, tan θ), for a relative change r in the air's density, a wall
+/// d away and a ball that lands at θ below the horizontal: a steeper ball
+/// meets a wall moved along its track higher or lower (seen: 0.62 at most,
+/// 0.27 in the median).
+const HEIGHT_PER_DENSITY: f64 = 1.5;
+
+/// Its range moves by at most this times r·range (seen: 0.86 at most where
+/// it lands past 70 m, 0.33 in the median; 1.6 for a popup).
+const RANGE_PER_DENSITY: f64 = 2.0;
+
+/// Its direction, where it crosses a wall or lands, by at most this times
+/// r·hook, the hook being how far the sidespin turned it from its launch
+/// direction: the Magnus force that turns it scales with the density.
+const TURN_PER_DENSITY: f64 = 2.0;
+
+/// And by no less than this (rad, 0.5°).
+const LEAST_TURN: f64 = 0.5 * std::f64::consts::PI / 180.0;
+
+/// Each park's air for a row in its own air with its weather given:
+/// worked out once for all the rows that share them (a piece's rows share
+/// one a park, or a few).
+#[derive(Default)]
+pub(crate) struct ParkAirs {
+    known: Vec<(Air, GivenWeather, Vec<Air>)>,
+}
+
+/// More airs than this known: the rows give their own weather, and the
+/// list starts again.
+const MOST_AIRS: usize = 64;
+
+impl ParkAirs {
+    /// Each of `parks`' air, in order, for a row in `own` air that gave
+    /// the weather `given` ([`GivenWeather::park_air`]).
+    pub(crate) fn of(&mut self, own: &Environment, given: GivenWeather, parks: &[Park]) -> &[Air] {
+        let air = own.air();
+        let found = (self.known.iter()).position(|(known, was, _)| *known == air && *was == given);
+        let index = found.unwrap_or_else(|| {
+            if self.known.len() == MOST_AIRS {
+                self.known.clear();
+            }
+            let airs = parks.iter().map(|park| {
+                let mut there = *own;
+                given.park_air(&mut there, park.elevation);
+                there.air()
+            });
+            self.known.push((air, given, airs.collect()));
+            self.known.len() - 1
+        });
+        &self.known[index].2
+    }
+}
+
+/// A row whose verdicts at the parks are being settled.
+pub(crate) struct Pending {
+    /// The row's scene, its launch complete ([`settles`]).
+    pub scene: Scene,
+    pub launch_direction: f64,
+    /// Each park's air.
+    pub airs: Vec<Air>,
+    /// Where its parks' verdicts are, one a park, in the clearings.
+    pub from: usize,
+    /// Its flights so far: its own first.
+    pub flights: Vec<Reference>,
+}
+
+/// A row's flight in one air, judged at every park.
+pub(crate) struct Reference {
+    pub density: f64,
+    pub flight: FlightSummary,
+    /// At each park it was judged at (the row's own: every park).
+    pub clearings: Vec<Option<Clearing>>,
+}
+
+/// Settles every park of every row of `rows` in rounds (see above): each
+/// park's verdict into `clearings[row.from + park]`, from a flight whose
+/// air settles it.
+pub(crate) fn settle(
+    mut rows: Vec<Pending>,
+    parks: &[&Fence],
+    options: &FlightOptions,
+    clearings: &mut [Clearing],
+) {
+    let mut done: Vec<bool> = vec![false; rows.len() * parks.len()];
+    for round_number in 0.. {
+        let last = round_number == REFERENCE_ROUNDS;
+        let mut round: Vec<(usize, usize)> = Vec::new();
+        // Each row's parks unsettled, for the round's flights to judge.
+        let mut open: Vec<Vec<usize>> = Vec::new();
+        for (index, row) in rows.iter().enumerate() {
+            let done = &mut done[index * parks.len()..][..parks.len()];
+            let mut farthest: Option<(usize, f64)> = None;
+            for (park, fence) in parks.iter().enumerate() {
+                if done[park] {
+                    continue;
+                }
+                let density = row.airs[park].density;
+                let change = |flight: &Reference| density_change(flight.density, density);
+                let by = row.flights.iter().find_map(|flight| {
+                    let judged = flight.clearings[park]?;
+                    let launched = (row.launch_direction, &flight.flight);
+                    settled(&judged, launched, fence, change(flight)).then_some(judged)
+                });
+                match by {
+                    Some(judged) => {
+                        clearings[row.from + park] = judged;
+                        done[park] = true;
+                    }
+                    None if last => round.push((index, park)),
+                    None => {
+                        let nearest = row.flights.iter().map(change).fold(f64::INFINITY, f64::min);
+                        if farthest.is_none_or(|(_, far)| nearest > far) {
+                            farthest = Some((park, nearest));
+                        }
+                    }
+                }
+            }
+            if let Some((park, _)) = farthest {
+                round.push((index, park));
+                open.push((0..parks.len()).filter(|&k| !done[k]).collect());
+            }
+        }
+        if round.is_empty() {
+            return;
+        }
+        let air_of = |&(index, park): &(usize, usize)| {
+            let mut there: Scene = rows[index].scene;
+            there.environment.set_air(rows[index].airs[park]);
+            launch::scene_start(&there).0
+        };
+        if last {
+            // Each park left flown in its air to its own fence alone.
+            let flights = round
+                .iter()
+                .map(|pair| (air_of(pair), std::slice::from_ref(&parks[pair.1])));
+            many::judge_many(flights, options, |flown, flight, crossing| {
+                let (index, park) = round[flown];
+                clearings[rows[index].from + park] =
+                    Clearing::judge(parks[park], crossing[0], &flight);
+            });
+            return;
+        }
+        let fences: Vec<Vec<&Fence>> = (open.iter())
+            .map(|open| open.iter().map(|&k| parks[k]).collect())
+            .collect();
+        let flights: Vec<_> = (round.iter().zip(&fences))
+            .map(|(pair, fences)| (air_of(pair), fences.as_slice()))
+            .collect();
+        many::judge_many(flights, options, |flown, flight, crossings| {
+            let (index, park) = round[flown];
+            let landing = Landing::of(&flight);
+            let mut judged = vec![None; parks.len()];
+            for (&k, crossing) in open[flown].iter().zip(crossings) {
+                judged[k] = Some(Clearing::judge_landed(
+                    parks[k], *crossing, &flight, landing,
+                ));
+            }
+            let row = &mut rows[index];
+            row.flights.push(Reference {
+                density: row.airs[park].density,
+                flight,
+                clearings: judged,
+            });
+        });
+    }
+}
+
+/// Rounds of flights to every fence before the parks left are flown each
+/// to its own fence.
+const REFERENCE_ROUNDS: usize = 2;
+
+/// Whether `scene`'s flight depends on its air only through the density,
+/// its launch fixed whatever the air: then [`settled`] may answer for it.
+pub(crate) fn settles(scene: &Scene) -> bool {
+    let drag_without_reynolds = matches!(scene.drag, DragModel::Nathan | DragModel::Constant);
+    let launch_given = scene.kind == SceneKind::BattedBall && scene.launch.is_complete();
+    drag_without_reynolds && launch_given
+}
+
+/// The relative change in density from `own` to `there` (kg/m³).
+pub(crate) fn density_change(own: f64, there: f64) -> f64 {
+    ((there - own) / own).abs()
+}
+
+/// Whether the row's own flight (launched toward `launch_direction`,
+/// `flight`, judged at `fence` as `home`) gives its verdict there in an air
+/// whose density differs from its own by the fraction `change`: false
+/// where that air could move the verdict, and the park must be flown in
+/// its own air.
+pub(crate) fn settled(
+    home: &Clearing,
+    (launch_direction, flight): (f64, &FlightSummary),
+    fence: &Fence,
+    change: f64,
+) -> bool {
+    if change == 0.0 {
+        return true;
+    }
+    if !flight.landed {
+        return false;
+    }
+    let reach = flight.range.abs() * (1.0 + RANGE_PER_DENSITY * change);
+    if home.height_at_fence.is_none() && reach < fence.nearest() {
+        // Short of every wall of the park, whatever the air.
+        return true;
+    }
+    let hook = (home.direction - launch_direction)
+        .abs()
+        .max((flight.direction - launch_direction).abs());
+    let turn = (TURN_PER_DENSITY * change * hook).max(LEAST_TURN);
+    let window = Window::of(fence, home.direction - turn, home.direction + turn);
+    let Some(fair) = window.fair else {
+        // Foul in every direction the ball could take.
+        return true;
+    };
+    // A flight that comes down before the wall, continued down its
+    // landing line: a falling ball's track only steepens, so the line is
+    // as high as it could be at the wall.
+    let continued = |distance: f64| -(distance - flight.range.abs()) * flight.landing_angle.tan();
+    let slope = flight.landing_angle.tan().abs().max(1.0);
+    let band = HEIGHT_PER_DENSITY * change * fair.farthest * slope;
+    match home.height_at_fence {
+        None => reach < fair.nearest || continued(fair.nearest).max(0.0) + band < fair.lowest,
+        Some(height) => {
+            // The wall moved: the ball meets it nearer or farther, as high
+            // as the track's steepest slope allows.
+            let band = band + slope * (fair.farthest - fair.nearest);
+            if home.clears() {
+                window.all_fair && height - fair.tallest > band
+            } else {
+                height + band < fair.lowest
+            }
+        }
+    }
+}
+
+/// The walls of a fence over a window of directions.
+struct Window {
+    /// Over its fair part, if it has one.
+    fair: Option<Walls>,
+    all_fair: bool,
+}
+
+#[derive(Clone, Copy)]
+struct Walls {
+    nearest: f64,
+    farthest: f64,
+    lowest: f64,
+    tallest: f64,
+}
+
+impl Window {
+    /// The fence from direction `from` to `to` (rad): at both ends and at
+    /// every point between, where it bends (it is straight between them).
+    fn of(fence: &Fence, from: f64, to: f64) -> Window {
+        let ends = [fence.at(from), fence.at(to)];
+        let all_fair = ends.iter().all(Option::is_some);
+        let inside = (fence.points().iter())
+            .filter(|p| p.direction > from && p.direction < to)
+            .map(|p| (p.distance, p.height));
+        let mut fair: Option<Walls> = None;
+        for (distance, height) in ends
+            .into_iter()
+            .flatten()
+            .map(|w| (w.distance, w.height))
+            .chain(inside)
+        {
+            let walls = fair.get_or_insert(Walls {
+                nearest: distance,
+                farthest: distance,
+                lowest: height,
+                tallest: height,
+            });
+            walls.nearest = walls.nearest.min(distance);
+            walls.farthest = walls.farthest.max(distance);
+            walls.lowest = walls.lowest.min(height);
+            walls.tallest = walls.tallest.max(height);
+        }
+        Window { fair, all_fair }
+    }
+}
