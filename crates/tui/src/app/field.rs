@@ -9,8 +9,10 @@ use ratatui::layout::Rect;
 use super::*;
 use crate::format::on_step;
 use crate::layout::FieldMap;
+use model::clearing::Clearing;
 use model::frame::direction_of;
-use model::park;
+use model::many;
+use model::park::{self, GivenWeather};
 use preset::parks::Parks;
 use preset::{escape_cut, escape_for_terminal};
 
@@ -109,23 +111,21 @@ impl App {
         self.fence.map(|f| (f.distance, f.height))
     }
 
-    /// The current flight judged at the preset's fence (`fence_height`),
-    /// at the 30 bundled parks (the count, in the scene's own air, as
-    /// `fly`'s) and at the park chosen, which may be a user's: one flight
-    /// for all of them.
+    /// The current flight judged at the preset's fence (`fence_height`)
+    /// and at the park chosen, which may be a user's: one flight for both;
+    /// and the count of the 30 bundled parks, each on a flight in its own
+    /// air, as `fly --preset` counts them (the standard air at each park's
+    /// elevation: the explorer gives no weather of its own to keep).
     pub(super) fn judge_fences(&mut self) {
         let parks = park::bundled();
         let generic = self
             .fence
             .map(|f| park::Fence::uniform(f.distance, f.height));
         let chosen = self.chosen_park().map(|p| &p.fence);
-        let fences: Vec<&park::Fence> = generic
-            .iter()
-            .chain(parks.iter().map(|p| &p.fence))
-            .chain(chosen)
-            .collect();
+        let fences: Vec<&park::Fence> = generic.iter().chain(chosen).collect();
+        let options = Purpose::Readout.flight_options();
         let (flight, _, _) = scene_start(&self.scene);
-        let (_, mut clearings) = flight.judge(&Purpose::Readout.flight_options(), &fences);
+        let (_, mut clearings) = flight.judge(&options, &fences);
         let here = if chosen.is_some() {
             clearings.pop()
         } else {
@@ -136,8 +136,20 @@ impl App {
         } else {
             None
         };
+        let walls: Vec<&park::Fence> = parks.iter().map(|p| &p.fence).collect();
+        let in_own_air: Vec<_> = (parks.iter().zip(&walls))
+            .map(|(park, wall)| {
+                let mut there = self.scene;
+                GivenWeather::default().park_air(&mut there.environment, park.elevation);
+                (scene_start(&there).0, std::slice::from_ref(wall))
+            })
+            .collect();
+        let mut cleared = 0;
+        many::judge_many(in_own_air, &options, |k, flight, crossing| {
+            cleared += usize::from(Clearing::judge(walls[k], crossing[0], &flight).clears());
+        });
         self.at_parks = Some(AtParks {
-            cleared: clearings.iter().filter(|c| c.clears()).count(),
+            cleared,
             of: parks.len(),
             here,
         });
