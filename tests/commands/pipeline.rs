@@ -158,7 +158,9 @@ fn json_follows_units_with_the_unit_in_each_key() {
 
 #[test]
 fn a_row_at_no_park_gets_no_verdict_and_the_summary_says_so() {
-    let text = "launch_speed,launch_angle\n110,28\n";
+    // The second row lands foul (hc_x, hc_y: 60° right of centre): called
+    // foul at no park, and counted so.
+    let text = "launch_speed,launch_angle,hc_x,hc_y\n110,28,,\n90,40,225.42,140.54\n";
     let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
     assert_eq!(status, 0, "{err}");
     let header: Vec<&str> = out.lines().next().unwrap().split(',').collect();
@@ -173,7 +175,13 @@ fn a_row_at_no_park_gets_no_verdict_and_the_summary_says_so() {
         ),
         ("", "none", "no_park", "")
     );
-    assert!(err.contains("at no park"), "{err}");
+    let foul: Vec<&str> = out.lines().nth(2).unwrap().split(',').collect();
+    let at = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    assert_eq!((foul[at("park")], foul[at("outcome")]), ("none", "foul"));
+    assert!(
+        err.contains("0 clear, 0 off the wall, 0 short, 1 foul, 1 at no park"),
+        "{err}"
+    );
     // With --park the same row is judged there.
     let (out, _, _) = run(&["fly", "--batch", "-", "--park", "COL"], text.as_bytes());
     assert!(out.lines().nth(1).unwrap().contains(",COL,"), "{out}");

@@ -144,7 +144,7 @@ impl Tally {
             true => "in its air; parks_cleared: on that one flight (--one-flight)",
         };
         // No row had a fence to be judged at.
-        let no_fence = self.outcomes.iter().sum::<usize>() == 0 && self.at_no_park > 0;
+        let no_fence = self.outcomes[..3].iter().sum::<usize>() == 0 && self.at_no_park > 0;
         match setup.park {
             Some(i) => format!(
                 "at {} ({air})",

@@ -150,7 +150,8 @@ impl Tally {
             Verdict::Short => 2,
             Verdict::Foul => 3,
         };
-        if job.fence_known() {
+        // A foul ball is called with no fence to judge at.
+        if job.fence_known() || at == 3 {
             self.outcomes[at] += 1;
         }
         let angle = flown.launch.angle;
