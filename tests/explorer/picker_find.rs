@@ -10,8 +10,11 @@ use ratatui::crossterm::event::KeyCode;
 
 use crate::tui_support::{app, key, screen, typed};
 
-const BATTERS: [&str; 4] = [
+// Judge's and Ohtani's text are searched as they are, ASCII case aside
+// (their ° is its own lower case); Acuña's and the Greek's are lower-cased.
+const BATTERS: [&str; 5] = [
     "Aaron Judge",
+    "RONALD ACUÑA",
     "Shohei Ohtani",
     "Ἀλέξανδρος ΣΩΣΙΑΣ",
     "Juan Soto",
@@ -134,6 +137,7 @@ fn the_find_finds_what_a_find_by_words_finds_at_every_key() {
         ("2 mph", 6),
         ("σωσιας 04-0", 11),
         ("ΣΩΣ fast", 20),
+        ("acuñ ACUÑA 1°", 9),
         ("  ball bundled", 5),
         ("x", 40),
     ] {

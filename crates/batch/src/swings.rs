@@ -53,9 +53,9 @@ pub fn solved_swings(
         presets.extend((piece.jobs.iter()).filter_map(|job| swing_preset(job, &setup.keep, shown)));
         piece.answered = piece.jobs.len();
     };
-    let (mut presets, mut tracked) = (Vec::new(), 0);
+    let (mut pieces, mut tracked) = (Vec::new(), 0);
     let take = |piece: &mut Piece<(Vec<Preset>, usize)>| {
-        presets.append(&mut piece.made.0);
+        pieces.push(std::mem::take(&mut piece.made.0));
         tracked += piece.made.1;
         Ok(true)
     };
@@ -67,9 +67,13 @@ pub fn solved_swings(
         take,
         note,
     )?;
-    // Held while the explorer runs: no room past the swings (a million of
-    // them ~0.75 GB, the preset and its description each).
-    presets.shrink_to_fit();
+    // Held while the explorer runs: no room past the swings, and never
+    // twice (a list grown by doubling, then shrunk, would hold a million
+    // swings' 440 MB three times over).
+    let mut presets = Vec::with_capacity(pieces.iter().map(Vec::len).sum());
+    for piece in pieces {
+        presets.extend(piece);
+    }
     Ok(Swings {
         unsolved: tracked - presets.len(),
         presets,

@@ -9,23 +9,37 @@
 //! 1000-character query on 200,000 swings is as quick a key as a short one
 //! (docs/speed.md). Queries and items are lower-cased a character at a
 //! time, so that a word's lower case is its start's lower case extended.
+//! An item whose only upper case is ASCII's (a Savant file's swings,
+//! nearly all: ψ and ° are their own lower case) is searched as it is,
+//! ASCII case aside, which is its lower case searched: no copy of its text
+//! is held (a million swings' ~270 MB).
 
 use std::sync::Arc;
 
+use aho_corasick::AhoCorasick;
 use memchr::memmem;
 
 use super::PickItem;
 
-/// Items a find can choose from, each with its name and description in
-/// lower case, one after another (one buffer: a key's pass reads memory in
-/// order). A Savant file's swings are made so once, when they are offered,
-/// so that `/` costs nothing on 200,000 of them.
+/// Items a find can choose from, and the name and description in lower
+/// case of each item with an upper case outside ASCII, one after another. A Savant
+/// file's swings are made so once, when they are offered, so that `/`
+/// costs nothing on 200,000 of them.
 #[derive(Debug, Default)]
 pub struct Searchable {
     items: Vec<Arc<PickItem>>,
     texts: String,
-    /// Item `i`'s text ends at `ends[i]`.
+    /// Item `i`'s text in lower case ends at `ends[i]` (it starts where
+    /// the one before ends): empty for an item lower-cased as ASCII is.
     ends: Vec<usize>,
+}
+
+/// An item's text as a find searches it.
+enum Text<'a> {
+    /// Its name and description as they are, lower-cased as ASCII is.
+    AsIs(&'a str, &'a str),
+    /// Both in lower case, a space between.
+    Lower(&'a [u8]),
 }
 
 impl Searchable {
@@ -33,9 +47,11 @@ impl Searchable {
         let mut texts = String::new();
         let mut ends = Vec::with_capacity(items.len());
         for item in &items {
-            push_lower_case(&mut texts, &item.name);
-            texts.push(' ');
-            push_lower_case(&mut texts, &item.detail);
+            if !(lowers_as_ascii(&item.name) && lowers_as_ascii(&item.detail)) {
+                push_lower_case(&mut texts, &item.name);
+                texts.push(' ');
+                push_lower_case(&mut texts, &item.detail);
+            }
             ends.push(texts.len());
         }
         Searchable { items, texts, ends }
@@ -53,9 +69,12 @@ impl Searchable {
         &self.items
     }
 
-    fn text_of(&self, i: usize) -> &[u8] {
+    fn text_of(&self, i: usize) -> Text<'_> {
         let start = if i == 0 { 0 } else { self.ends[i - 1] };
-        &self.texts.as_bytes()[start..self.ends[i]]
+        match start == self.ends[i] {
+            true => Text::AsIs(&self.items[i].name, &self.items[i].detail),
+            false => Text::Lower(&self.texts.as_bytes()[start..self.ends[i]]),
+        }
     }
 }
 
@@ -97,8 +116,8 @@ impl Find {
         (find, items)
     }
 
-    /// Item `i`'s text in lower case.
-    fn text_of(&self, i: u32) -> &[u8] {
+    /// Item `i`'s text.
+    fn text_of(&self, i: u32) -> Text<'_> {
         let i = i as usize;
         match i.checked_sub(self.swings.len()) {
             None => self.swings.text_of(i),
@@ -130,10 +149,20 @@ impl Find {
             self.text.split_whitespace().last().unwrap_or_default(),
         );
         let finder = memmem::Finder::new(word.as_bytes());
+        // The word in any ASCII case: in a text whose only upper case is
+        // ASCII's, the lower-case word's matches are those in its lower
+        // case.
+        let any_case = AhoCorasick::builder()
+            .ascii_case_insensitive(true)
+            .build([word.as_bytes()])
+            .expect("one word is a small automaton");
         let mut held = Vec::with_capacity(self.found.len());
         let mut removed = Vec::new();
         for &i in &self.found {
-            let holds = finder.find(self.text_of(i)).is_some();
+            let holds = match self.text_of(i) {
+                Text::AsIs(name, detail) => any_case.is_match(name) || any_case.is_match(detail),
+                Text::Lower(text) => finder.find(text).is_some(),
+            };
             if !holds {
                 removed.push(i);
             }
@@ -191,6 +220,13 @@ impl Find {
     pub fn searches(&self) -> u64 {
         self.searches
     }
+}
+
+/// Whether `text`'s lower case is its ASCII lower case: every other
+/// character its own lower case.
+fn lowers_as_ascii(text: &str) -> bool {
+    text.chars()
+        .all(|c| c.is_ascii() || c.to_lowercase().eq([c]))
 }
 
 /// Appends `text` in lower case a character at a time (no final-sigma

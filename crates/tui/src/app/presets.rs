@@ -109,15 +109,23 @@ impl App {
         // A swing's name and description are kept in its item alone (a
         // Savant file's swings can be hundreds of thousands): `loadable`
         // gives them back to the preset loaded.
-        let items = (swings.into_iter())
-            .map(|mut p| {
-                Arc::new(PickItem {
-                    name: std::mem::take(&mut p.name),
-                    detail: std::mem::take(&mut p.description),
-                    preset: Some(p),
-                })
+        let item = |mut p: Preset| {
+            Arc::new(PickItem {
+                name: std::mem::take(&mut p.name),
+                detail: std::mem::take(&mut p.description),
+                preset: Some(p),
             })
-            .collect();
+        };
+        // Moved a block at a time from the end, the list given back as it
+        // goes: a million swings held twice would pass 1 GB.
+        let mut swings = swings;
+        let mut items = Vec::with_capacity(swings.len());
+        while !swings.is_empty() {
+            let from = swings.len().saturating_sub(1 << 12);
+            items.extend(swings.drain(from..).rev().map(item));
+            swings.shrink_to_fit();
+        }
+        items.reverse();
         self.swings = Arc::new(Searchable::new(items));
         self.open_picker();
         if let Mode::Open { selected, .. } = &mut self.mode {
