@@ -64,7 +64,8 @@ fn watch_for_hang_up() -> io::Result<()> {
             loop {
                 std::thread::sleep(Duration::from_millis(250));
                 if terminal_hung_up() {
-                    std::process::exit(0);
+                    // As a hang-up signal ends a program: 128 + SIGHUP.
+                    std::process::exit(128 + libc::SIGHUP);
                 }
             }
         })
@@ -72,19 +73,21 @@ fn watch_for_hang_up() -> io::Result<()> {
 }
 
 /// Whether standard input's terminal has hung up: Linux's `poll(2)` reports
-/// POLLHUP on a TTY whose other end is gone. Written with libc because
-/// crossterm only reports keys, and keeps polling the dead TTY.
+/// POLLHUP on a TTY whose other end is gone (crossterm only reports keys,
+/// and keeps polling the dead TTY).
 #[cfg(unix)]
-#[allow(unsafe_code)] // std and crossterm cannot ask a TTY whether it hung up.
 fn terminal_hung_up() -> bool {
-    let mut stdin = libc::pollfd {
-        fd: libc::STDIN_FILENO,
-        events: libc::POLLIN,
-        revents: 0,
+    use rustix::event::{PollFd, PollFlags, Timespec, poll};
+    use std::os::fd::AsFd as _;
+    let stdin = io::stdin();
+    let stdin = stdin.as_fd();
+    let mut fds = [PollFd::new(&stdin, PollFlags::IN)];
+    let now = Timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
     };
-    // SAFETY: one valid pollfd, a zero timeout; no memory is shared.
-    let ready = unsafe { libc::poll(&mut stdin, 1, 0) };
-    ready > 0 && stdin.revents & (libc::POLLHUP | libc::POLLERR | libc::POLLNVAL) != 0
+    let gone = PollFlags::HUP | PollFlags::ERR | PollFlags::NVAL;
+    matches!(poll(&mut fds, Some(&now)), Ok(n) if n > 0) && fds[0].revents().intersects(gone)
 }
 
 #[cfg(not(unix))]
