@@ -191,3 +191,33 @@ fn a_2024_row_takes_the_2024_bat_unless_one_is_given() {
     assert!((launch(&season) - 94.2 * MPH).abs() < 1e-6);
     assert!((launch(&paper) - 94.2 * MPH).abs() < 1e-6);
 }
+
+/// tests/data/savant_2025_popup.csv: line 16 of
+/// statcast-2025-bat-tracking-three-hitters.csv (Altuve, 2025-04-02: 56.7
+/// mph at 80°, attack angle 5.2°, tilt 39.5°). No undercut within 0.97 of
+/// the reach and no contact speed from 0.3 to 2 times `bat_speed` gives
+/// more than 53° at its measured swing; the solve's start from a jump
+/// across the elevation's wrap ended in "did not converge", and is now
+/// named for what it is.
+#[test]
+fn a_2025_popup_past_the_impacts_reach_is_named_so() {
+    let (code, out, err) = run_homerun(
+        &[
+            "hit",
+            "--batch",
+            "tests/data/savant_2025_popup.csv",
+            "--json",
+        ],
+        None,
+    );
+    assert_eq!(code, Some(0), "{err}");
+    let line = &json_lines(&out)[0];
+    assert_eq!(line["solved"], false);
+    assert_eq!(
+        line["reason"],
+        "launch angle out of reach: no undercut gives it"
+    );
+    // A 2025 row: the preset's bat (the program knows no 2025 bat).
+    assert_eq!(line["impact"]["bat"], "preset");
+    assert!(err.contains("1 launch angle out of reach"), "{err}");
+}
