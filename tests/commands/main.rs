@@ -23,6 +23,7 @@ mod presets_by_name;
 mod readme;
 mod start_up;
 mod stress_pass;
+mod swing_found;
 #[path = "../tui_support/mod.rs"]
 mod tui_support;
 mod units;

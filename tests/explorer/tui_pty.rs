@@ -315,7 +315,9 @@ fn tui_savant_solves_the_files_swings_and_refuses_a_file_without_them() {
     let data = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
     let swings = format!("{data}savant_swings.csv");
     let mut session = Session::start(&["tui", "--savant", &swings], 100, 30);
-    session.wait_for("Open a swing (31)");
+    // 33 of the 35 with the 2024 bat (the rows' season; 31 with the
+    // paper's).
+    session.wait_for("Open a swing (33)");
     session.press("\u{1b}");
     // Apart from the Esc, or the two read as Alt-q.
     thread::sleep(Duration::from_millis(300));
@@ -323,7 +325,7 @@ fn tui_savant_solves_the_files_swings_and_refuses_a_file_without_them() {
     assert_eq!(session.exit_code(), 0);
     let written = String::from_utf8_lossy(&session.bytes.lock().unwrap()).into_owned();
     assert!(
-        written.contains("homerun: 31 swings solved of 35 rows (4 tracked but not solved)"),
+        written.contains("homerun: 33 swings solved of 35 rows (2 tracked but not solved)"),
         "{written}"
     );
     let home_runs = format!("{data}savant_home_runs.csv");

@@ -226,6 +226,7 @@ pub fn solve(base: &Scene, swing: &TrackedSwing) -> SwingAnswer {
 }
 
 mod ceiling;
+mod found;
 mod landing;
 mod problem;
 mod search;
@@ -237,6 +238,7 @@ pub use ceiling::{
     APPROACH_BANDS, ApproachBand, EFFECTIVE_MASSES, ImpactFit, ceiling_efficiency,
     fit_effective_mass, quantile,
 };
+pub use found::{Found, How, savant_squared_up};
 pub use landing::solve_landing;
 use problem::{Problem, Second};
 use search::{defined_toward, golden_max, illinois};

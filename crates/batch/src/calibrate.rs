@@ -86,15 +86,7 @@ impl By {
     /// `2024-05-03` or US `5/3/2024`; a year as it is.
     fn group(&self, cell: &str) -> Result<String, String> {
         let cell = cell.trim();
-        let date = |cell: &str| -> Option<(u32, u32)> {
-            let numbers: Vec<&str> = cell.split(['-', '/', ' ', 'T']).collect();
-            let number = |i: usize| numbers.get(i)?.parse::<u32>().ok();
-            let (year, month) = match cell.contains('-') {
-                true => (number(0)?, number(1)?),
-                false => (number(2)?, number(0)?),
-            };
-            ((1800..=2200).contains(&year) && (1..=12).contains(&month)).then_some((year, month))
-        };
+        let date = crate::dates::year_month;
         let unreadable = || {
             format!(
                 "--by: date {:?} is neither YYYY-MM-DD nor M/D/YYYY",
@@ -144,7 +136,7 @@ pub fn measured(
     }
     let header = crate::header::Header::new((names, line), setup)?;
     let sprayed = header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY);
-    let tilt = setup.tilt_prior(&header);
+    let priors = setup.priors(&header);
     let setup = &*setup;
     let options = Purpose::Solve.flight_options();
     let finish = |piece: &mut Piece<Made>| {
@@ -176,7 +168,7 @@ pub fn measured(
             } else {
                 // `--spin swing`: launched as its impact sends the ball.
                 if setup.solve_swings {
-                    solve_row(job, setup.spray, tilt);
+                    solve_row(job, setup.spray, priors);
                 }
                 wanted.push((job as &Job, group));
             }

@@ -90,6 +90,12 @@ pub enum SwingColumn {
     Acceleration(usize),
     SpinRate,
     SpinAxis,
+    /// The pitch's speed at release (mph): Savant's squared-up.
+    ReleaseSpeed,
+    /// The season (a year), or the date whose year is the season: the
+    /// tracked swing's bat ([`analysis::bat_tracking::season_bat`]).
+    Season,
+    Date,
 }
 
 /// What a column of the table becomes.
@@ -235,6 +241,21 @@ pub const TABLE: &[Entry] = &[
         "the pitch's spin (rpm), with spin_axis (°): the pitch's backspin at the bat",
     ),
     entry(&["spin_axis"], Swing(W::SpinAxis, (0.0, 360.0)), ""),
+    entry(
+        &["release_speed"],
+        Swing(W::ReleaseSpeed, (0.0, 150.0)),
+        "the pitch's speed at release (mph): Savant's squared-up, beside the model's",
+    ),
+    entry(
+        &["game_year", "season"],
+        Swing(W::Season, (1800.0, 2200.0)),
+        "the season: a tracked swing is solved with its season's bat where known",
+    ),
+    entry(
+        &["game_date", "Date"],
+        Swing(W::Date, (1800.0, 2200.0)),
+        "the date (YYYY-MM-DD or M/D/YYYY): its year the season, without game_year",
+    ),
 ];
 
 /// The columns a row needs for its swing to be solved.

@@ -18,6 +18,7 @@ use preset::escape_cut;
 
 pub mod calibrate;
 pub mod columns;
+mod dates;
 mod flights;
 pub mod header;
 mod kinds;

@@ -463,13 +463,14 @@ fn json_line(
 /// What each JSON key that has a unit measures.
 fn quantity_of(key: &str) -> Option<Quantity> {
     Some(match key {
-        "speed" | "max_exit_speed" | "shortfall" => Quantity::Speed,
+        "speed" | "max_exit_speed" | "shortfall" | "bat_speed" | "contact_speed" => Quantity::Speed,
         "angle" | "direction" | "landing_angle" | "descent_angle" | "tilt" => Quantity::Angle,
         "spin" | "sidespin" | "gyrospin" => Quantity::Spin,
         "range" | "apex" | "distance" | "height" | "height_at_fence" | "margin" | "difference" => {
             Quantity::Distance
         }
         "undercut" => Quantity::Size,
+        "effective_mass" => Quantity::Mass,
         _ => return None,
     })
 }

@@ -232,8 +232,8 @@ impl<T> Piece<T> {
             }
         }
         if stage >= Stage::Solved && setup.solve_swings {
-            let tilt = setup.tilt_prior(header);
-            (self.jobs.iter_mut()).for_each(|job| solve_row(job, setup.spray, tilt));
+            let priors = setup.priors(header);
+            (self.jobs.iter_mut()).for_each(|job| solve_row(job, setup.spray, priors));
         }
         if stage == Stage::Flown {
             fly_chunk(&self.jobs, setup, &mut self.scratch, &mut self.flown);

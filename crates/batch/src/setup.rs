@@ -4,9 +4,10 @@
 use analysis::bat_tracking;
 use analysis::savant::Spray;
 use model::park::{self, GivenWeather};
-use preset::Preset;
 use preset::parks::Parks;
+use preset::{Preset, Source};
 
+use crate::columns::Column;
 use crate::header::Header;
 
 /// What every row of a batch shares.
@@ -89,10 +90,34 @@ impl<'a> Setup<'a> {
             .then_some(bat_tracking::LEAGUE_SWING_PATH_TILT)
     }
 
+    /// What a tracked row is solved at where it does not say: the tilt
+    /// ([`Setup::tilt_prior`]), and whether its season's bat replaces the
+    /// preset's. It does unless `--set` or a column gives
+    /// `bat.effective_mass`, or the preset is the user's own (a file, as
+    /// `calibrate --impact --save` writes): a bundled preset's bat is the
+    /// paper's, of 1998.
+    pub(crate) fn priors(&self, header: &Header) -> Priors {
+        let bat_given = self.gave("bat.effective_mass")
+            || (header.columns).contains(&Column::Input("bat.effective_mass"));
+        Priors {
+            tilt: self.tilt_prior(header),
+            season_bats: !bat_given && self.base.source == Source::Bundled,
+        }
+    }
+
     /// The index of the first park that answers to `code` (any case).
     pub(crate) fn park_of(&self, code: &str) -> Option<usize> {
         self.parks.parks.iter().position(|p| p.answers_to(code))
     }
+}
+
+/// A tracked row's priors ([`Setup::priors`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Priors {
+    /// The bat's tilt where the row measured none (`None`: the scene's).
+    pub tilt: Option<f64>,
+    /// The row's season picks its bat where the program knows one.
+    pub season_bats: bool,
 }
 
 /// A field for CSV output, quoted as RFC 4180 asks when it holds a comma, a

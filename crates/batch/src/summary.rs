@@ -254,6 +254,11 @@ impl Tally {
                 e[1], e[0], e[2]
             );
         }
+        let _ = write!(
+            line,
+            "; bat: {}",
+            crate::swing::bats_named(&swings.bats).join(", ")
+        );
         let reasons: Vec<String> = (swings.unsolved.iter().map(|(why, n)| format!("{n} {why}")))
             .chain(swings.untracked.iter().map(|(why, n)| format!("{n} {why}")))
             .collect();
@@ -444,6 +449,9 @@ impl Tally {
                 })
                 .collect();
             value["swings"] = json!(bands);
+        }
+        if !self.swings.bats.is_empty() {
+            value["bats"] = crate::swing::bats_json(&self.swings.bats);
         }
         value
     }

@@ -118,8 +118,8 @@ fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
         false => String::new(),
     };
     let description = format!(
-        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}, tilt {}{contact}, {}, q {:.3}; here \
-         {} at {} (E for the paper's pitch path)",
+        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}, tilt {}{contact}, {}, q {:.3}, {}; \
+         here {} at {} (E for the paper's pitch path)",
         // "Ohtani, Shohei" as "Shohei Ohtani": found by either name.
         cell("player_name").map_or(String::from("?"), |n| match n.split_once(", ") {
             Some((last, first)) => format!("{first} {last}"),
@@ -139,6 +139,14 @@ fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
             tracked.pitch.speed(),
             tracked.bat_speed
         ),
+        // The bat solved with: its season's, or the preset's.
+        match swing.bat {
+            Some(bat) => format!(
+                "the {} bat (M_B {:.3} kg)",
+                bat.season, swing.effective_mass
+            ),
+            None => format!("the preset's bat (M_B {:.3} kg)", swing.effective_mass),
+        },
         speed(here.speed),
         angle(here.angle),
     );
@@ -203,10 +211,19 @@ mod tests {
             &mut |_| {},
         )
         .unwrap();
+        // With the 2024 bat (M_B 0.8843 kg) two of the three too fast for
+        // the paper's bat are solved; the bunt too slow and one still too
+        // fast are not.
         assert_eq!(
             (swings.rows, swings.presets.len(), swings.unsolved),
-            (35, 31, 4)
+            (35, 33, 2)
         );
+        assert!(
+            (swings.presets[0].description).contains("the 2024 bat (M_B 0.884 kg)"),
+            "{}",
+            swings.presets[0].description
+        );
+        assert_eq!(swings.presets[0].scene.bat.effective_mass, 0.8843);
         let first = &swings.presets[0];
         assert_eq!(first.name, "Hender… 04-03");
         assert!(

@@ -65,6 +65,9 @@ pub(crate) struct Swings {
     pub model_efficiency: Quantiles,
     pub off_sweet_spot: usize,
     pub bands: [SwingBand; BANDS],
+    /// Tracked rows by the bat they were solved with: its season, or
+    /// `None` for the preset's (with its M_B, kg, as bits).
+    pub bats: BTreeMap<(Option<i32>, u64), usize>,
 }
 
 /// The batch's one tally.
@@ -192,6 +195,8 @@ impl Tally {
             }
             Ok(tracked) => tracked,
         };
+        let bat = (swing.bat.map(|b| b.season), swing.effective_mass.to_bits());
+        *swings.bats.entry(bat).or_default() += 1;
         let answer = swing.answer.expect("a tracked swing is answered");
         swings.data_efficiency.push(answer.collision_efficiency);
         let band = &mut swings.bands[band_index(tracked.launch_angle)];
@@ -252,6 +257,9 @@ impl Tally {
         let (mine, theirs) = (&mut self.swings, &other.swings);
         for (why, n) in &theirs.untracked {
             *mine.untracked.entry(why).or_default() += n;
+        }
+        for (bat, n) in &theirs.bats {
+            *mine.bats.entry(*bat).or_default() += n;
         }
         for (why, n) in &theirs.unsolved {
             *mine.unsolved.entry(why.clone()).or_default() += n;

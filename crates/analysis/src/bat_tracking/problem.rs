@@ -4,6 +4,10 @@
 
 use super::*;
 
+/// A start whose launch angle misses the target by more than this (rad)
+/// is no root of the angle's equation ([`Problem::named`]).
+const ROOT_ANGLE: f64 = 1e-6;
+
 /// The second unknown beside E.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Second {
@@ -136,11 +140,27 @@ impl Problem {
                 };
                 match self.newton(start) {
                     Some(x) => x,
-                    None => self.aim(start)?,
+                    None => self.aim(start).map_err(|why| self.named(start, why))?,
                 }
             }
         };
         Ok(self.solved_at(x))
+    }
+
+    /// Why a solve from `start` failed, named: a start whose launch angle
+    /// is not the measured one came from a bracket across the elevation's
+    /// wrap at ±180° (a ball sent back and down on one side, forward on the
+    /// other), a jump and not a root, so no undercut gives the angle there.
+    /// 2025's popups at their measured attack angle ended so: none of eight
+    /// scanned reaches its angle at any undercut within 0.97 of the reach
+    /// and any contact speed from 0.3 to 2 times `bat_speed`.
+    fn named(&self, start: [f64; 3], why: Unreached) -> Unreached {
+        match why {
+            Unreached::NoConvergence if self.residual(start).y.abs() > ROOT_ANGLE => {
+                Unreached::Angle
+            }
+            why => why,
+        }
     }
 
     /// The solved swing at x.
