@@ -138,8 +138,10 @@ fn walk(app: &mut App, scene: &str, found: &mut Vec<String>) {
         look(app, &format!("impact step {step}"));
     }
     key(app, KeyCode::Char('1'));
-    // Every input's description, selected in turn.
+    // Every input's description, selected in turn (g is the first input,
+    // k the preset's row above it).
     key(app, KeyCode::Char('g'));
+    key(app, KeyCode::Char('k'));
     for row in 0..app.fields.len() {
         look(app, &format!("input {row}"));
         key(app, KeyCode::Char('j'));
@@ -148,9 +150,15 @@ fn walk(app: &mut App, scene: &str, found: &mut Vec<String>) {
     key(app, KeyCode::Char('?'));
     look(app, "help");
     assert!(
-        screen(app).contains("any key closes this help"),
+        screen(app).contains("any other key closes"),
         "{scene}: the help's closing line"
     );
+    key(app, KeyCode::Tab);
+    look(app, "glossary");
+    for _ in 0..40 {
+        key(app, KeyCode::Char('j'));
+    }
+    look(app, "glossary, scrolled");
     key(app, KeyCode::Esc);
     key(app, KeyCode::Char('o'));
     look(app, "preset picker");
@@ -406,4 +414,120 @@ fn the_impact_chart_names_its_curves_and_keeps_p_f_inside() {
             assert!(chart.contains(name), "{preset}: {name}\n{shown}");
         }
     }
+}
+
+/// Issue 36, item 1: `?` then Tab shows the glossary, which says in words
+/// what the readout's symbols are, and scrolls to its last entry at 80×24.
+#[test]
+fn the_help_has_a_glossary_of_the_symbols_on_screen() {
+    use homerun::tui::app::Mode;
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('?'));
+    assert!(screen(&app).contains("Tab: glossary of symbols"));
+    key(&mut app, KeyCode::Tab);
+    let first = screen(&app);
+    assert!(first.contains("Glossary"), "{first}");
+    assert!(first.contains("pitch speed: the ball's speed"), "{first}");
+    // Scrolled to its end, the last entries show; the first has gone.
+    for _ in 0..200 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    let last = screen(&app);
+    assert!(last.contains("drag crisis"), "{last}");
+    assert!(last.contains("the trajectory's apex"), "{last}");
+    assert!(!last.contains("pitch speed: the ball's speed"), "{last}");
+    // Tab back to the keys, and any other key closes.
+    key(&mut app, KeyCode::Tab);
+    assert!(matches!(
+        app.mode,
+        Mode::Help {
+            glossary: false,
+            scroll: 0
+        }
+    ));
+    key(&mut app, KeyCode::Char('x'));
+    assert!(matches!(app.mode, Mode::Normal));
+}
+
+/// Issue 36, item 1: each stop of the impact's step-through says what the
+/// contact is doing, under the chart at 80×24.
+#[test]
+fn each_impact_stop_says_what_is_happening() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('3'));
+    let mut seen = Vec::new();
+    for _ in 0..6 {
+        let text = screen(&app);
+        let phase = [
+            "Contact begins",
+            "Slip halts",
+            "Compression:",
+            "Maximum compression",
+            "Restitution",
+            "Separation",
+        ]
+        .into_iter()
+        .find(|p| text.contains(p));
+        seen.push(phase.unwrap_or("none"));
+        key(&mut app, KeyCode::Char('.'));
+    }
+    assert_eq!(
+        seen,
+        [
+            "Contact begins",
+            "Slip halts",
+            "Compression:",
+            "Maximum compression",
+            "Restitution",
+            "Separation"
+        ]
+    );
+}
+
+/// Issue 36, item 12: `g` selects the first input, as the help says, not
+/// the preset's row above it.
+#[test]
+fn g_selects_the_first_input() {
+    use homerun::tui::app::Field;
+    let mut app = app(80, 24, None);
+    key(&mut app, KeyCode::Char('G'));
+    key(&mut app, KeyCode::Char('g'));
+    assert!(matches!(app.fields[app.selected], Field::Key(_)));
+    assert_eq!(app.selected, 1);
+}
+
+/// Issue 36, item 3: on a Table II preset the readout shows the paper's
+/// optimum under ours (26.5 mm beside 27.27), at 80×24 too; with the bat
+/// changed the row is no longer the paper's, and the line goes.
+#[test]
+fn the_paper_optimum_stands_under_ours_on_table_two_presets() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let text = screen(&app);
+    assert!(
+        text.contains("optimum  E 27.27 mm  ψ 0.1744  134.79 m"),
+        "{text}"
+    );
+    assert!(
+        text.contains("Table II E 26.50 mm  ψ 0.1594  134.80 m"),
+        "{text}"
+    );
+    // A swing moved off the paper's (E, ψ) is still Table II's scene.
+    key(&mut app, KeyCode::Char('r'));
+    settle(&mut app);
+    assert!(screen(&app).contains("Table II E 26.50 mm"));
+    set_and_settle(&mut app, "bat.speed", "31");
+    assert!(!screen(&app).contains("Table II"), "{}", screen(&app));
+    // The glossary says why the two differ, and answers the curve ball's
+    // "1.26 m/s higher".
+    key(&mut app, KeyCode::Char('?'));
+    key(&mut app, KeyCode::Tab);
+    for _ in 0..40 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    let glossary = screen(&app);
+    assert!(glossary.contains("flat along a ridge"), "{glossary}");
+    assert!(glossary.contains("44.30 − 43.04"), "{glossary}");
 }

@@ -157,7 +157,12 @@ pub enum Mode {
         error: Option<String>,
         find: Option<Find>,
     },
-    Help,
+    /// The help: its keys, or (Tab) the glossary of the symbols on screen,
+    /// scrolled down by `scroll` rows (j k ↑ ↓).
+    Help {
+        glossary: bool,
+        scroll: u16,
+    },
     /// Choosing a park from the list, filtered by `query` (a code, or words
     /// of a name or a city); `selected` counts in the filtered list.
     Parks {
@@ -569,7 +574,7 @@ impl App {
                     self.act(action);
                 }
             }
-            Mode::Help => {}
+            Mode::Help { glossary, scroll } => self.help_key(action, glossary, scroll),
             Mode::Edit {
                 field,
                 text,
@@ -591,14 +596,39 @@ impl App {
         }
     }
 
+    /// In the help: Tab (or `?`) turns between the keys and the glossary,
+    /// j k ↑ ↓ scroll; any other key closes it.
+    fn help_key(&mut self, action: Option<Action>, glossary: bool, scroll: u16) {
+        let (glossary, scroll) = match action {
+            Some(Action::NextTab | Action::PreviousTab | Action::Help) => (!glossary, 0),
+            Some(Action::Down) => (glossary, scroll.saturating_add(1)),
+            Some(Action::Up) => (glossary, scroll.saturating_sub(1)),
+            _ => return,
+        };
+        self.mode = Mode::Help { glossary, scroll };
+    }
+
     /// Does what a key asks for over the panes (no pop-up open).
     fn act(&mut self, action: Action) {
         match action {
             Action::Quit | Action::Interrupt => self.quit = true,
-            Action::Help => self.mode = Mode::Help,
+            Action::Help => {
+                self.mode = Mode::Help {
+                    glossary: false,
+                    scroll: 0,
+                }
+            }
             Action::Down => self.selected = (self.selected + 1).min(self.fields.len() - 1),
             Action::Up => self.selected = self.selected.saturating_sub(1),
-            Action::First => self.selected = 0,
+            // The first input, past the preset's row (Enter there opens
+            // the picker; k reaches it).
+            Action::First => {
+                self.selected = self
+                    .fields
+                    .iter()
+                    .position(|f| !matches!(f, Field::Preset))
+                    .unwrap_or(0)
+            }
             Action::Last => self.selected = self.fields.len() - 1,
             Action::Raise(step) => self.nudge(step.factor()),
             Action::Lower(step) => self.nudge(-step.factor()),

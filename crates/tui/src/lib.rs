@@ -11,6 +11,7 @@
 
 pub mod app;
 pub mod format;
+pub mod glossary;
 pub mod inputs;
 pub mod keymap;
 pub mod layout;

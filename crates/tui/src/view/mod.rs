@@ -11,6 +11,8 @@ mod impact3d;
 mod inputs;
 mod margin_map;
 mod overlay;
+mod paper_line;
+mod phase_words;
 mod readout;
 mod trajectory;
 mod words;
@@ -98,7 +100,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
     }
     status_line(frame, panes.status, app);
     match &app.mode {
-        Mode::Help => overlay::help(frame, area, &app.theme),
+        Mode::Help { glossary, scroll } => overlay::help(frame, area, app, (*glossary, *scroll)),
         Mode::Save { text, error, .. } => overlay::save(frame, area, app, text, error.as_deref()),
         Mode::Open {
             items,

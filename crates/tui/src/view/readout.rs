@@ -46,7 +46,7 @@ fn launch_text(app: &App, launch: &BattedBall, sign: bool) -> String {
 
 /// An angle in the units shown: "0.3791 rad" or "21.72°"; `sign` for a
 /// difference.
-fn angle_text(app: &App, radians: f64, sign: bool) -> String {
+pub(super) fn angle_text(app: &App, radians: f64, sign: bool) -> String {
     match (app.units, sign) {
         (UnitSystem::Si, false) => format!("{radians:.4}"),
         (UnitSystem::Si, true) => signed(radians, 4),
@@ -57,7 +57,7 @@ fn angle_text(app: &App, radians: f64, sign: bool) -> String {
 
 /// An undercut in the units shown: "27.27 mm" or "1.074 in"; `sign` for a
 /// difference.
-fn undercut_text(app: &App, metres: f64, sign: bool) -> String {
+pub(super) fn undercut_text(app: &App, metres: f64, sign: bool) -> String {
     let (value, unit, decimals) = match app.units {
         UnitSystem::Si => (metres * 1e3, "mm", 2),
         UnitSystem::Imperial => (app.unit(Quantity::Size).show(metres), "in", 3),
@@ -337,6 +337,19 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             label("optimum"),
             Span::styled("searching…", app.theme.busy),
         ])),
+    }
+    // The paper's optimum under ours, on a Table II preset; at 80×24 in
+    // the impulses' row (tab 3 shows them).
+    if let (Some(paper), Some(k)) = (super::paper_line::line(app), labelled(&lines, "optimum")) {
+        if (inner.height as usize) < lines.len() + 3 {
+            lines.retain(|l| {
+                l.spans
+                    .first()
+                    .is_none_or(|s| s.content.trim() != "impulse")
+            });
+        }
+        let k = labelled(&lines, "optimum").unwrap_or(k);
+        lines.insert(k + 1, paper);
     }
     let landing = Line::from(vec![
         label("landing"),
