@@ -270,6 +270,9 @@ pub struct App {
     pub pin: Option<Pin>,
     /// The paper's figure chosen on the figures tab, and as computed.
     pub figure_number: u32,
+    /// The figure's panel shown where not all fit (`v`), counted modulo
+    /// its panels.
+    pub figure_panel: usize,
     pub figure: Option<FigureState>,
     /// Bumped whenever the figure shown must change; older ones are dropped.
     pub figure_generation: u64,
@@ -375,6 +378,7 @@ impl App {
             optimum_gains: vec![None; input_count()],
             pin: None,
             figure_number: 8,
+            figure_panel: 0,
             figure: None,
             figure_generation: 0,
             figure_for: None,
@@ -690,6 +694,7 @@ impl App {
             Action::PreviousStop => self.impact_stop = self.impact_stop.saturating_sub(1),
             Action::Export => self.export(),
             Action::NextFigure => self.step_figure(true),
+            Action::NextPanel => self.figure_panel = self.figure_panel.wrapping_add(1),
             Action::PreviousFigure => self.step_figure(false),
             // The message is cleared already.
             Action::Close => {}

@@ -71,6 +71,8 @@ pub enum Action {
     PreviousStop,
     NextFigure,
     PreviousFigure,
+    /// The figure's next panel, where not all fit (Figs. 8–12 at 80×24).
+    NextPanel,
     Save,
     Open,
     /// Write the chart in view as SVG.
@@ -263,8 +265,12 @@ pub const KEYMAP: &[Row] = &[
         "flight / surface / impact / figures / field",
     ),
     row(
-        &[ch('f', NextFigure), ch('F', PreviousFigure)],
-        "next / previous figure (Figs. 3–6, 8–14)",
+        &[
+            ch('f', NextFigure),
+            ch('F', PreviousFigure),
+            ch('v', NextPanel),
+        ],
+        "next / previous figure (Figs. 3–6, 8–14) / next panel",
     ),
     row(
         &[
@@ -296,7 +302,10 @@ pub const KEYMAP: &[Row] = &[
 
 /// What the mouse does, for the help (the app handles it in `app/mouse.rs`).
 pub const MOUSE: &[(&str, &str)] = &[
-    ("click", "surface: set (E, ψ) · field: aim · input: select"),
+    (
+        "click",
+        "tab · surface: set (E, ψ) · field: aim · input: select",
+    ),
     ("wheel", "over an input: nudge it (up raises)"),
     (
         "Shift-drag",
@@ -422,7 +431,7 @@ mod tests {
                 "p P",
                 "m M / c a",
                 "Tab  1 2 3 4 5",
-                "f F",
+                "f F v",
                 ", .",
                 "s o",
                 "x",

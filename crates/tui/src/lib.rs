@@ -16,6 +16,7 @@ pub mod inputs;
 pub mod keymap;
 pub mod layout;
 pub mod margin;
+pub mod palette;
 mod signals;
 pub mod theme;
 pub mod view;

@@ -29,7 +29,7 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
 /// scrolled by `scroll` rows where it is taller than the screen.
 pub fn help(frame: &mut Frame, area: Rect, app: &App, (glossary, scroll): (bool, u16)) {
     let theme = &app.theme;
-    let width: u16 = if glossary { 76 } else { 68 };
+    let width: u16 = 76;
     let lines = if glossary {
         glossary_lines(app, width.min(area.width).saturating_sub(2))
     } else {
