@@ -14,7 +14,7 @@ fn the_help_has_a_glossary_of_the_symbols_on_screen() {
     let mut app = app(80, 24, None);
     settle(&mut app);
     key(&mut app, KeyCode::Char('?'));
-    assert!(screen(&app).contains("Tab: glossary of symbols"));
+    assert!(screen(&app).contains("Tab: glossary · j k scroll"));
     key(&mut app, KeyCode::Tab);
     let first = screen(&app);
     assert!(first.contains("Glossary"), "{first}");
@@ -168,4 +168,59 @@ fn the_no_colour_legend_shows_the_contours_dots() {
     settle(&mut coloured);
     key(&mut coloured, KeyCode::Char('2'));
     assert!(screen(&coloured).contains("· ── 122 m (fence)"));
+}
+
+/// Issue 36, item 4: text cut short under the inputs says so ("i: read
+/// all"), and `i` shows it whole: a wind's direction, a refused unit.
+#[test]
+fn i_shows_the_words_the_panes_cut_short() {
+    use homerun::tui::app::{Field, Mode, input_key};
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    select(&mut app, "bat.direction");
+    let Field::Key(k) = app.fields[app.selected] else {
+        panic!("an input");
+    };
+    let description = input_key(k).description;
+    let text = screen(&app);
+    assert!(text.contains("i: read all"), "{text}");
+    // The description's last words are past the rows under the list.
+    let tail: String = description
+        .split_whitespace()
+        .rev()
+        .take(3)
+        .collect::<Vec<_>>()
+        .into_iter()
+        .rev()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(!text.contains(&tail), "{tail}\n{text}");
+    key(&mut app, KeyCode::Char('i'));
+    assert!(matches!(app.mode, Mode::Detail { .. }));
+    let whole = screen(&app);
+    assert!(whole.contains("In full"), "{whole}");
+    assert!(
+        whole.split('\n').any(|row| row.contains(&tail))
+            || whole.replace(" │\"\n\"│ ", " ").contains(&tail),
+        "{tail}\n{whole}"
+    );
+    key(&mut app, KeyCode::Char('q'));
+    assert!(matches!(app.mode, Mode::Normal));
+    assert!(!app.quit, "a key closes the pane, not the app");
+
+    // A unit refused under imperial: the message, whole.
+    key(&mut app, KeyCode::Char('u'));
+    select(&mut app, "pitch.speed");
+    key(&mut app, KeyCode::Enter);
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "2500rpm");
+    key(&mut app, KeyCode::Enter);
+    let message = app.message.clone().expect("refused").0;
+    key(&mut app, KeyCode::Char('i'));
+    let whole = screen(&app);
+    assert!(whole.contains("Message"), "{whole}");
+    let last_word = message.split_whitespace().last().unwrap();
+    assert!(whole.contains(last_word), "{message}\n{whole}");
 }

@@ -14,6 +14,7 @@ mod field;
 pub use field::{AtParks, ParkList};
 mod figures;
 mod find;
+mod reading;
 pub use find::{Find, Searchable};
 mod impact;
 pub use impact::impact_stops;
@@ -161,6 +162,11 @@ pub enum Mode {
     /// scrolled down by `scroll` rows (j k ↑ ↓).
     Help {
         glossary: bool,
+        scroll: u16,
+    },
+    /// The words cut short on the panes, whole (`i`): the selected input,
+    /// the message, the figure's notes, the models; scrolled by `scroll`.
+    Detail {
         scroll: u16,
     },
     /// Choosing a park from the list, filtered by `query` (a code, or words
@@ -571,14 +577,18 @@ impl App {
         self.dirty = true;
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal => {
-                // A message lasts until the next key (which may set a new one).
-                self.message = None;
-                self.export_message = None;
+                // A message lasts until the next key (which may set a new
+                // one), save `i`, which shows it whole.
+                if action != Some(Action::Detail) {
+                    self.message = None;
+                    self.export_message = None;
+                }
                 if let Some(action) = action {
                     self.act(action);
                 }
             }
             Mode::Help { glossary, scroll } => self.help_key(action, glossary, scroll),
+            Mode::Detail { scroll } => self.detail_key(action, scroll),
             Mode::Edit {
                 field,
                 text,
@@ -600,22 +610,11 @@ impl App {
         }
     }
 
-    /// In the help: Tab (or `?`) turns between the keys and the glossary,
-    /// j k ↑ ↓ scroll; any other key closes it.
-    fn help_key(&mut self, action: Option<Action>, glossary: bool, scroll: u16) {
-        let (glossary, scroll) = match action {
-            Some(Action::NextTab | Action::PreviousTab | Action::Help) => (!glossary, 0),
-            Some(Action::Down) => (glossary, scroll.saturating_add(1)),
-            Some(Action::Up) => (glossary, scroll.saturating_sub(1)),
-            _ => return,
-        };
-        self.mode = Mode::Help { glossary, scroll };
-    }
-
     /// Does what a key asks for over the panes (no pop-up open).
     fn act(&mut self, action: Action) {
         match action {
             Action::Quit | Action::Interrupt => self.quit = true,
+            Action::Detail => self.mode = Mode::Detail { scroll: 0 },
             Action::Help => {
                 self.mode = Mode::Help {
                     glossary: false,
@@ -650,18 +649,7 @@ impl App {
             Action::ToOptimum => self.reset_to_optimum(),
             Action::Units => self.toggle_units(),
             Action::Scene => self.switch_scene(),
-            Action::Pin => {
-                self.pin = Some(Pin {
-                    scene: self.scene,
-                    flown: self.flown,
-                    path: self.path.clone(),
-                    ground: self.ground.clone(),
-                });
-                self.message = Some((
-                    "pinned: the trajectory and readout compare with it (P clears)".into(),
-                    false,
-                ));
-            }
+            Action::Pin => self.pin_scene(),
             Action::Unpin => self.pin = None,
             Action::NextPark | Action::PreviousPark => {
                 self.cycle_park(action == Action::NextPark);

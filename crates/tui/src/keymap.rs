@@ -77,6 +77,8 @@ pub enum Action {
     Open,
     /// Write the chart in view as SVG.
     Export,
+    /// The words cut short on screen, whole, in a pane that scrolls.
+    Detail,
     Help,
     Quit,
     /// Ctrl-C: quits from anywhere, even a prompt.
@@ -270,7 +272,7 @@ pub const KEYMAP: &[Row] = &[
             ch('F', PreviousFigure),
             ch('v', NextPanel),
         ],
-        "next / previous figure (Figs. 3–6, 8–14) / next panel",
+        "next / prev. figure (3–6, 8–14) / next panel",
     ),
     row(
         &[
@@ -289,6 +291,10 @@ pub const KEYMAP: &[Row] = &[
         &[ch('x', Export)],
         "write the chart in view to ./homerun-*-N.svg",
     ),
+    row(
+        &[ch('i', Detail)],
+        "the input, message, figure notes in full",
+    ),
     row(&[key(Esc, Close)], "close a pop-up, clear the message"),
     row(&[ch('?', Help)], "this help"),
     row(
@@ -304,7 +310,7 @@ pub const KEYMAP: &[Row] = &[
 pub const MOUSE: &[(&str, &str)] = &[
     (
         "click",
-        "tab · surface: set (E, ψ) · field: aim · input: select",
+        "tab · surface: (E, ψ) · field: aim · input: select",
     ),
     ("wheel", "over an input: nudge it (up raises)"),
     (
@@ -435,6 +441,7 @@ mod tests {
                 ", .",
                 "s o",
                 "x",
+                "i",
                 "Esc",
                 "?",
                 "q  Ctrl-C",

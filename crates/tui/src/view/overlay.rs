@@ -29,7 +29,8 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
 /// scrolled by `scroll` rows where it is taller than the screen.
 pub fn help(frame: &mut Frame, area: Rect, app: &App, (glossary, scroll): (bool, u16)) {
     let theme = &app.theme;
-    let width: u16 = 76;
+    // The keys' page leaves the selected input in view at 80×24.
+    let width: u16 = if glossary { 76 } else { 68 };
     let lines = if glossary {
         glossary_lines(app, width.min(area.width).saturating_sub(2))
     } else {
@@ -56,7 +57,7 @@ pub fn help(frame: &mut Frame, area: Rect, app: &App, (glossary, scroll): (bool,
     } else {
         (
             " Keys ",
-            " Tab: glossary of symbols · any other key closes ",
+            " Tab: glossary · j k scroll · any other key closes ",
         )
     };
     frame.render_widget(Clear, popup);

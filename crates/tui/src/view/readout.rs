@@ -118,6 +118,31 @@ fn air(app: &App) -> (String, String) {
 }
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let lines = lines(app, area);
+    let inner = Block::bordered().inner(area);
+    let block = Block::bordered().title(Span::styled(" Readout ", app.theme.title));
+    // Rows past the pane's foot (at 80×24 the parks and the air, at 120×40
+    // a model's description): `i` shows them all.
+    let needed: usize = lines
+        .iter()
+        .map(|l| super::words::rows_needed(&l.spans, inner.width as usize))
+        .sum();
+    let cut = needed > inner.height as usize;
+    // Long lines (a model's description) wrap rather than run off the pane.
+    frame.render_widget(
+        Paragraph::new(lines)
+            .block(block)
+            .wrap(ratatui::widgets::Wrap { trim: false }),
+        area,
+    );
+    if cut {
+        super::read_all_hint(frame, area, app);
+    }
+}
+
+/// The readout's lines for a pane of `area`: what a short pane has no room
+/// for is left out, or takes a less needed line's place.
+pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
     let flight = &app.flown.flight;
     let u = app.distance(1.0).1;
     let d = |metres: f64| app.distance(metres).0;
@@ -451,7 +476,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
     }
     // A number and its unit wrap together ("27.3 m", "50 %").
-    let lines: Vec<Line> = lines
+    let lines: Vec<Line<'static>> = lines
         .into_iter()
         .map(|line| {
             let spans = line.spans.into_iter().map(|span| {
@@ -463,14 +488,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             Line::from(spans.collect::<Vec<_>>())
         })
         .collect();
-    let block = Block::bordered().title(Span::styled(" Readout ", app.theme.title));
-    // Long lines (a model's description) wrap rather than run off the pane.
-    frame.render_widget(
-        Paragraph::new(lines)
-            .block(block)
-            .wrap(ratatui::widgets::Wrap { trim: false }),
-        area,
-    );
+    lines
 }
 
 /// Where the line labelled `name` is among `lines`.
