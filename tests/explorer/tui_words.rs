@@ -264,6 +264,12 @@ fn the_picker_jumps_and_a_name_with_spaces_is_fixed_up() {
     key(&mut app, KeyCode::Enter);
     assert!(!matches!(app.mode, Mode::Save { .. }), "saved, not refused");
     assert_eq!(app.preset_name, "class-demo");
+    // Issue 36, item 8: the user is told the name changed.
+    let (message, error) = app.message.clone().expect("a message");
+    assert!(
+        !error && message.contains("`class demo` became `class-demo`"),
+        "{message}"
+    );
     homerun::preset::load("class-demo", Some(dir.path())).unwrap();
     assert!(
         app.description.starts_with("saved from the explorer"),
