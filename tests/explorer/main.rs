@@ -11,6 +11,7 @@ mod tui_polish;
 mod tui_pty;
 mod tui_render;
 mod tui_signals;
+mod tui_teach;
 mod tui_words;
 
 #[path = "../tui_support/mod.rs"]

@@ -250,3 +250,37 @@ fn m_picks_a_park_and_the_readout_judges_the_ball_there() {
     assert_eq!(app.park, None);
     assert!(app.at_parks.unwrap().here.is_none());
 }
+
+/// Issue 36, item 12: a click on a tab's title shows that tab, at 80×24
+/// (short titles) and 200×60 (where the big layout has no tab bar, nothing
+/// to click).
+#[test]
+fn a_click_on_a_tabs_title_shows_it() {
+    use homerun::tui::layout::Tab;
+    let mut app = app(80, 24, None);
+    let bar = layout(app.size, app.tab, true).tabs.unwrap();
+    let text = screen(&app);
+    // The screen's rows as the test backend writes them, each in quotes.
+    let line = text
+        .lines()
+        .nth(bar.y as usize)
+        .unwrap()
+        .trim_start_matches('"');
+    for (tab, title) in [
+        (Tab::Impact, "3 Impact"),
+        (Tab::Field, "5 Field"),
+        (Tab::Flight, "1 Flight"),
+        (Tab::Surface, "2 Surface"),
+    ] {
+        // The title's middle, where the screen shows it.
+        let at = line.find(title).unwrap();
+        let column = line[..at].chars().count() + title.chars().count() / 2;
+        mouse(
+            &mut app,
+            MouseEventKind::Down(MouseButton::Left),
+            column as u16,
+            bar.y,
+        );
+        assert_eq!(app.tab, tab, "{title} at column {column}");
+    }
+}

@@ -7,22 +7,10 @@ use crate::tui_support;
 use homerun::analysis::precision::Purpose;
 use homerun::model::clearing::Outcome;
 use homerun::model::park;
-use homerun::tui::app::App;
 use homerun::tui::margin::{MarginCell, margin_at};
 use homerun::tui::theme::{Background, ColorMode, Theme};
 use ratatui::crossterm::event::KeyCode;
-use ratatui::layout::Rect;
 use tui_support::*;
-
-/// The explorer on the fastball with `theme`.
-fn themed(theme: Theme, w: u16, h: u16) -> App {
-    App::new(
-        homerun::preset::load("fastball", None).unwrap(),
-        None,
-        theme,
-        Rect::new(0, 0, w, h),
-    )
-}
 
 #[test]
 fn c_shows_the_margin_over_the_wall_and_c_again_the_range() {

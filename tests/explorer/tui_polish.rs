@@ -394,16 +394,6 @@ fn the_fence_reads_the_same_in_the_cli_and_the_explorer() {
     }
 }
 
-/// The explorer on the fastball with `theme`.
-fn themed(theme: homerun::tui::theme::Theme, w: u16, h: u16) -> homerun::tui::app::App {
-    homerun::tui::app::App::new(
-        homerun::preset::load("fastball", None).unwrap(),
-        None,
-        theme,
-        ratatui::layout::Rect::new(0, 0, w, h),
-    )
-}
-
 #[test]
 fn without_colour_every_cell_is_in_the_terminals_own_colours() {
     use homerun::tui::theme::{Background, ColorMode, Theme};

@@ -268,7 +268,7 @@ fn impact_of_a_3d_swing() {
         let screen = screen(&app);
         assert!(screen.contains("slip turning (4/9)"), "{screen}");
         assert!(
-            screen.contains("slip 37.1° (26.3° → 74.3°, sticks)"),
+            screen.contains("slip 37.1° (26.3° → 74.3° at p_s, sticks)"),
             "{screen}"
         );
         // The ball's line wraps at a word: its spin's unit whole (at 80×24
@@ -276,5 +276,20 @@ fn impact_of_a_3d_swing() {
         assert!(screen.contains("rad/s ") || screen.contains("rad/s\n"));
         assert!(!screen.contains("rad/│"), "{screen}");
         insta::assert_snapshot!(format!("impact3d_{w}x{h}"), screen);
+        // Issue 36, item 11: at separation |ω| (the whole spin vector)
+        // stands beside the launch line's backspin, the same number.
+        for _ in 0..5 {
+            key(&mut app, KeyCode::Char('.'));
+        }
+        let at_separation = tui_support::screen(&app);
+        let backspin = format!("backspin {:.1}", app.flown.launch.spin);
+        assert!(
+            at_separation.contains("separation (9/9)"),
+            "{at_separation}"
+        );
+        assert!(
+            at_separation.contains(&backspin),
+            "{backspin}: {at_separation}"
+        );
     }
 }

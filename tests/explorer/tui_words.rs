@@ -138,8 +138,10 @@ fn walk(app: &mut App, scene: &str, found: &mut Vec<String>) {
         look(app, &format!("impact step {step}"));
     }
     key(app, KeyCode::Char('1'));
-    // Every input's description, selected in turn.
+    // Every input's description, selected in turn (g is the first input,
+    // k the preset's row above it).
     key(app, KeyCode::Char('g'));
+    key(app, KeyCode::Char('k'));
     for row in 0..app.fields.len() {
         look(app, &format!("input {row}"));
         key(app, KeyCode::Char('j'));
@@ -148,9 +150,15 @@ fn walk(app: &mut App, scene: &str, found: &mut Vec<String>) {
     key(app, KeyCode::Char('?'));
     look(app, "help");
     assert!(
-        screen(app).contains("any key closes this help"),
+        screen(app).contains("any other key closes"),
         "{scene}: the help's closing line"
     );
+    key(app, KeyCode::Tab);
+    look(app, "glossary");
+    for _ in 0..40 {
+        key(app, KeyCode::Char('j'));
+    }
+    look(app, "glossary, scrolled");
     key(app, KeyCode::Esc);
     key(app, KeyCode::Char('o'));
     look(app, "preset picker");
@@ -256,6 +264,12 @@ fn the_picker_jumps_and_a_name_with_spaces_is_fixed_up() {
     key(&mut app, KeyCode::Enter);
     assert!(!matches!(app.mode, Mode::Save { .. }), "saved, not refused");
     assert_eq!(app.preset_name, "class-demo");
+    // Issue 36, item 8: the user is told the name changed.
+    let (message, error) = app.message.clone().expect("a message");
+    assert!(
+        !error && message.contains("`class demo` became `class-demo`"),
+        "{message}"
+    );
     homerun::preset::load("class-demo", Some(dir.path())).unwrap();
     assert!(
         app.description.starts_with("saved from the explorer"),

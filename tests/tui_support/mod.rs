@@ -25,6 +25,16 @@ pub fn app(width: u16, height: u16, presets_dir: Option<PathBuf>) -> App {
     )
 }
 
+/// The explorer on the fastball with `theme`.
+pub fn themed(theme: homerun::tui::theme::Theme, width: u16, height: u16) -> App {
+    App::new(
+        preset::load("fastball", None).unwrap(),
+        None,
+        theme,
+        Rect::new(0, 0, width, height),
+    )
+}
+
 pub fn key(app: &mut App, code: KeyCode) {
     key_with(app, code, KeyModifiers::NONE);
 }

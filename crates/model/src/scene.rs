@@ -444,16 +444,29 @@ impl Scene {
             SceneKind::Swing => "the paper's, a swing's default",
             SceneKind::BattedBall => "Nathan's, a batted ball's default",
         };
-        let source = |chosen: bool| if chosen { "chosen" } else { whose };
         let (drag, lift) = (self.drag, self.lift);
-        if self.chosen.drag == self.chosen.lift {
-            format!("drag {drag}, lift {lift} ({})", source(self.chosen.drag))
+        let (default_drag, default_lift) = self.kind.default_models();
+        // Not chosen, yet not the kind's default (a Savant swing flies
+        // Nathan's): named for whose it is, never called the default.
+        let named = |name: String| match name.as_str() {
+            "nathan" => "Nathan's",
+            "sawicki2003" => "the paper's",
+            _ => "set by the scene",
+        };
+        let drag_source = match (self.chosen.drag, drag == default_drag) {
+            (true, _) => "chosen",
+            (false, true) => whose,
+            (false, false) => named(drag.to_string()),
+        };
+        let lift_source = match (self.chosen.lift, lift == default_lift) {
+            (true, _) => "chosen",
+            (false, true) => whose,
+            (false, false) => named(lift.to_string()),
+        };
+        if drag_source == lift_source {
+            format!("drag {drag}, lift {lift} ({drag_source})")
         } else {
-            format!(
-                "drag {drag} ({}), lift {lift} ({})",
-                source(self.chosen.drag),
-                source(self.chosen.lift)
-            )
+            format!("drag {drag} ({drag_source}), lift {lift} ({lift_source})")
         }
     }
 
@@ -461,5 +474,29 @@ impl Scene {
     /// for the bat to meet the ball.
     pub fn reach(&self) -> f64 {
         self.ball.radius + self.bat.radius
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_models_are_named_for_whose_they_are() {
+        let mut scene = Scene::default();
+        assert_eq!(
+            scene.models_text(),
+            "drag sawicki2003, lift sawicki2003 (the paper's, a swing's default)"
+        );
+        // A Savant swing flies Nathan's aero without the user choosing it:
+        // not "the paper's", nor a swing's default.
+        scene.drag = DragModel::Nathan;
+        scene.lift = LiftModel::Nathan;
+        assert_eq!(scene.models_text(), "drag nathan, lift nathan (Nathan's)");
+        scene.choose_lift(LiftModel::Sawicki2003);
+        assert_eq!(
+            scene.models_text(),
+            "drag nathan (Nathan's), lift sawicki2003 (chosen)"
+        );
     }
 }

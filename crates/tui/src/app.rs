@@ -14,6 +14,7 @@ mod field;
 pub use field::{AtParks, ParkList};
 mod figures;
 mod find;
+mod reading;
 pub use find::{Find, Searchable};
 mod impact;
 pub use impact::impact_stops;
@@ -157,7 +158,17 @@ pub enum Mode {
         error: Option<String>,
         find: Option<Find>,
     },
-    Help,
+    /// The help: its keys, or (Tab) the glossary of the symbols on screen,
+    /// scrolled down by `scroll` rows (j k ↑ ↓).
+    Help {
+        glossary: bool,
+        scroll: u16,
+    },
+    /// The words cut short on the panes, whole (`i`): the selected input,
+    /// the message, the figure's notes, the models; scrolled by `scroll`.
+    Detail {
+        scroll: u16,
+    },
     /// Choosing a park from the list, filtered by `query` (a code, or words
     /// of a name or a city); `selected` counts in the filtered list.
     Parks {
@@ -265,6 +276,9 @@ pub struct App {
     pub pin: Option<Pin>,
     /// The paper's figure chosen on the figures tab, and as computed.
     pub figure_number: u32,
+    /// The figure's panel shown where not all fit (`v`), counted modulo
+    /// its panels.
+    pub figure_panel: usize,
     pub figure: Option<FigureState>,
     /// Bumped whenever the figure shown must change; older ones are dropped.
     pub figure_generation: u64,
@@ -370,6 +384,7 @@ impl App {
             optimum_gains: vec![None; input_count()],
             pin: None,
             figure_number: 8,
+            figure_panel: 0,
             figure: None,
             figure_generation: 0,
             figure_for: None,
@@ -562,14 +577,18 @@ impl App {
         self.dirty = true;
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal => {
-                // A message lasts until the next key (which may set a new one).
-                self.message = None;
-                self.export_message = None;
+                // A message lasts until the next key (which may set a new
+                // one), save `i`, which shows it whole.
+                if action != Some(Action::Detail) {
+                    self.message = None;
+                    self.export_message = None;
+                }
                 if let Some(action) = action {
                     self.act(action);
                 }
             }
-            Mode::Help => {}
+            Mode::Help { glossary, scroll } => self.help_key(action, glossary, scroll),
+            Mode::Detail { scroll } => self.detail_key(action, scroll),
             Mode::Edit {
                 field,
                 text,
@@ -595,10 +614,24 @@ impl App {
     fn act(&mut self, action: Action) {
         match action {
             Action::Quit | Action::Interrupt => self.quit = true,
-            Action::Help => self.mode = Mode::Help,
+            Action::Detail => self.mode = Mode::Detail { scroll: 0 },
+            Action::Help => {
+                self.mode = Mode::Help {
+                    glossary: false,
+                    scroll: 0,
+                }
+            }
             Action::Down => self.selected = (self.selected + 1).min(self.fields.len() - 1),
             Action::Up => self.selected = self.selected.saturating_sub(1),
-            Action::First => self.selected = 0,
+            // The first input, past the preset's row (Enter there opens
+            // the picker; k reaches it).
+            Action::First => {
+                self.selected = self
+                    .fields
+                    .iter()
+                    .position(|f| !matches!(f, Field::Preset))
+                    .unwrap_or(0)
+            }
             Action::Last => self.selected = self.fields.len() - 1,
             Action::Raise(step) => self.nudge(step.factor()),
             Action::Lower(step) => self.nudge(-step.factor()),
@@ -616,18 +649,7 @@ impl App {
             Action::ToOptimum => self.reset_to_optimum(),
             Action::Units => self.toggle_units(),
             Action::Scene => self.switch_scene(),
-            Action::Pin => {
-                self.pin = Some(Pin {
-                    scene: self.scene,
-                    flown: self.flown,
-                    path: self.path.clone(),
-                    ground: self.ground.clone(),
-                });
-                self.message = Some((
-                    "pinned: the trajectory and readout compare with it (P clears)".into(),
-                    false,
-                ));
-            }
+            Action::Pin => self.pin_scene(),
             Action::Unpin => self.pin = None,
             Action::NextPark | Action::PreviousPark => {
                 self.cycle_park(action == Action::NextPark);
@@ -660,6 +682,7 @@ impl App {
             Action::PreviousStop => self.impact_stop = self.impact_stop.saturating_sub(1),
             Action::Export => self.export(),
             Action::NextFigure => self.step_figure(true),
+            Action::NextPanel => self.figure_panel = self.figure_panel.wrapping_add(1),
             Action::PreviousFigure => self.step_figure(false),
             // The message is cleared already.
             Action::Close => {}

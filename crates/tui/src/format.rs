@@ -32,10 +32,22 @@ pub fn on_step(key: &Key, si: f64, system: UnitSystem) -> f64 {
 /// step, 94 mph for 1 mph), since the SI value rarely lands on a round
 /// number there and more digits would only show the conversion. A nudge
 /// still changes the last digit shown.
+///
+/// A value that is whole at up to three more digits (90.5 or 94.23 mph,
+/// as typed) keeps them: the rounding hides only the conversion's digits.
 pub fn shown_value(key: &Key, si: f64, system: UnitSystem) -> String {
     let unit = key.unit_in(system);
-    let finer = if unit.is_identity() { 3 } else { 0 };
-    number(unit.show(si), shown_step(key, system), finer)
+    let (value, step) = (unit.show(si), shown_step(key, system));
+    if unit.is_identity() {
+        return number(value, step, 3);
+    }
+    (0..=3)
+        .map(|finer| number(value, step, finer))
+        .find(|text| {
+            text.parse::<f64>()
+                .is_ok_and(|shown| (shown - value).abs() <= 1e-9 * value.abs().max(1.0))
+        })
+        .unwrap_or_else(|| number(value, step, 0))
 }
 
 /// An SI value of `key` in `system`, to a thousandth of the shown step: for
@@ -143,6 +155,17 @@ mod tests {
         assert_eq!(shown_step(speed, imperial), 1.0);
         assert_eq!(shown_value(speed, 42.0, imperial), "94");
         assert_eq!(shown_value(speed, 42.0 + 0.44704, imperial), "95");
+        // Typed values keep their digits (issue 36): 90.5 mph is shown and
+        // edited as 90.5, 94.23 as 94.23; a nudge keeps the half.
+        for typed in ["90.5", "94.23", "94", "101.125"] {
+            let si = read_value(speed, typed, imperial).unwrap();
+            assert_eq!(shown_value(speed, si, imperial), typed);
+        }
+        let nudged = read_value(speed, "90.5", imperial).unwrap() + 0.44704;
+        assert_eq!(shown_value(speed, nudged, imperial), "91.5");
+        // Four more digits are the conversion's: rounded to the step.
+        let si = read_value(speed, "94.2345", imperial).unwrap();
+        assert_eq!(shown_value(speed, si, imperial), "94");
         assert!((read_value(speed, "100", imperial).unwrap() - 44.704).abs() < 1e-12);
         let mut scene = Scene::default();
         scene.pitch.speed = read_value(speed, "300", imperial).unwrap();

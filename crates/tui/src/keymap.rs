@@ -71,10 +71,14 @@ pub enum Action {
     PreviousStop,
     NextFigure,
     PreviousFigure,
+    /// The figure's next panel, where not all fit (Figs. 8–12 at 80×24).
+    NextPanel,
     Save,
     Open,
     /// Write the chart in view as SVG.
     Export,
+    /// The words cut short on screen, whole, in a pane that scrolls.
+    Detail,
     Help,
     Quit,
     /// Ctrl-C: quits from anywhere, even a prompt.
@@ -263,8 +267,12 @@ pub const KEYMAP: &[Row] = &[
         "flight / surface / impact / figures / field",
     ),
     row(
-        &[ch('f', NextFigure), ch('F', PreviousFigure)],
-        "next / previous figure (Figs. 3–6, 8–14)",
+        &[
+            ch('f', NextFigure),
+            ch('F', PreviousFigure),
+            ch('v', NextPanel),
+        ],
+        "next / prev. figure (3–6, 8–14) / next panel",
     ),
     row(
         &[
@@ -283,6 +291,10 @@ pub const KEYMAP: &[Row] = &[
         &[ch('x', Export)],
         "write the chart in view to ./homerun-*-N.svg",
     ),
+    row(
+        &[ch('i', Detail)],
+        "the input, message, figure notes in full",
+    ),
     row(&[key(Esc, Close)], "close a pop-up, clear the message"),
     row(&[ch('?', Help)], "this help"),
     row(
@@ -296,7 +308,10 @@ pub const KEYMAP: &[Row] = &[
 
 /// What the mouse does, for the help (the app handles it in `app/mouse.rs`).
 pub const MOUSE: &[(&str, &str)] = &[
-    ("click", "surface: set (E, ψ) · field: aim · input: select"),
+    (
+        "click",
+        "tab · surface: (E, ψ) · field: aim · input: select",
+    ),
     ("wheel", "over an input: nudge it (up raises)"),
     (
         "Shift-drag",
@@ -422,10 +437,11 @@ mod tests {
                 "p P",
                 "m M / c a",
                 "Tab  1 2 3 4 5",
-                "f F",
+                "f F v",
                 ", .",
                 "s o",
                 "x",
+                "i",
                 "Esc",
                 "?",
                 "q  Ctrl-C",

@@ -65,6 +65,22 @@ impl Tab {
             .sum();
         long + 3 * (Tab::ALL.len() - 1) > width as usize
     }
+
+    /// The tab whose title (with the divider after it) is at column `x` of
+    /// a tab bar drawn over `bar`, as the view draws it.
+    pub fn at(bar: Rect, x: u16) -> Option<Tab> {
+        let short = Tab::short_titles(bar.width);
+        let divider = Tab::divider(bar.width).chars().count() as u16;
+        let mut left = bar.x;
+        for tab in Tab::ALL {
+            let right = left + tab.title(short).chars().count() as u16 + divider;
+            if (left..right).contains(&x) {
+                return Some(tab);
+            }
+            left = right;
+        }
+        None
+    }
 }
 
 /// A terminal cell's height over its width, about: what a chart drawn to

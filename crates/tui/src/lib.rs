@@ -11,10 +11,12 @@
 
 pub mod app;
 pub mod format;
+pub mod glossary;
 pub mod inputs;
 pub mod keymap;
 pub mod layout;
 pub mod margin;
+pub mod palette;
 mod signals;
 pub mod theme;
 pub mod view;

@@ -7,6 +7,7 @@
 use std::fmt;
 use std::str::FromStr;
 
+pub use crate::palette::{diverging, ramp};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
 
@@ -14,6 +15,9 @@ use ratatui::symbols::Marker;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ColorMode {
     TrueColor,
+    /// The 16 named colours only (TERM=xterm, linux, vt100): the rest are
+    /// drawn in the nearest of them ([`crate::palette`]).
+    Sixteen,
     /// The xterm 256-colour palette: the heatmap is quantised to its 6×6×6 cube.
     Indexed,
     /// None (`NO_COLOR`): no colour escapes at all.
@@ -28,6 +32,7 @@ impl ColorMode {
     pub fn detect() -> ColorMode {
         let var = |name| std::env::var(name).ok();
         ColorMode::from_env(var("NO_COLOR").as_deref(), var("COLORTERM").as_deref())
+            .for_term(var("TERM").as_deref())
     }
 
     /// [`ColorMode::detect`] from the variables' values.
@@ -57,6 +62,7 @@ impl ColorMode {
                 };
                 Color::Indexed(16 + 36 * level(r) + 6 * level(g) + level(b))
             }
+            ColorMode::Sixteen => crate::palette::nearest_of_sixteen((r, g, b)),
             ColorMode::NoColor => Color::Reset,
         }
     }
@@ -200,10 +206,10 @@ impl Theme {
             Background::Dark => Theme::dark(color),
             Background::Light => Theme::light(color),
         };
-        if color == ColorMode::NoColor {
-            theme.without_colour()
-        } else {
-            theme
+        match color {
+            ColorMode::NoColor => theme.without_colour(),
+            ColorMode::Sixteen => crate::palette::in_sixteen(theme),
+            _ => theme,
         }
     }
 
@@ -329,6 +335,54 @@ impl Theme {
         theme
     }
 
+    /// Every colour of the theme passed through `f` (the 16-colour
+    /// fallback), its modifiers kept.
+    pub(crate) fn map_colours(mut self, f: fn(Color) -> Color) -> Theme {
+        let map = |s: &mut Style| {
+            s.fg = s.fg.map(f);
+            s.bg = s.bg.map(f);
+        };
+        for style in [
+            &mut self.title,
+            &mut self.dim,
+            &mut self.plain,
+            &mut self.selected,
+            &mut self.error,
+            &mut self.broken,
+            &mut self.good,
+            &mut self.busy,
+            &mut self.key,
+            &mut self.stale_gain,
+            &mut self.swing,
+            &mut self.optimal,
+            &mut self.pinned,
+            &mut self.apex,
+            &mut self.landing,
+            &mut self.fence,
+            &mut self.slip,
+            &mut self.slip_along,
+            &mut self.approach,
+            &mut self.compression,
+            &mut self.stick,
+            &mut self.cursor,
+        ] {
+            map(style);
+        }
+        self.walls.iter_mut().for_each(map);
+        self.figure_curves.iter_mut().for_each(map);
+        for colour in [
+            &mut self.contour,
+            &mut self.zero_contour,
+            &mut self.no_range,
+            &mut self.not_landed,
+            &mut self.optimum_mark,
+            &mut self.swing_mark,
+        ] {
+            *colour = f(*colour);
+        }
+        self
+    }
+
     /// Whether colour is shown at all.
     pub fn colored(&self) -> bool {
         self.color != ColorMode::NoColor
@@ -444,58 +498,11 @@ pub fn margin_shade(t: f64) -> &'static str {
     GLYPHS[((t * GLYPHS.len() as f64) as usize).min(GLYPHS.len() - 1)]
 }
 
-/// The margin map's diverging ramp, t in [0, 1] with the wall's top at ½:
-/// magenta under the wall, green over it, through a light grey
-/// (ColorBrewer's PiYG, which colour-blind eyes tell apart). Both ends
-/// are dark, so that they read on a dark and a light terminal alike.
-pub fn diverging(t: f64) -> (u8, u8, u8) {
-    const STOPS: [(f64, f64, f64); 9] = [
-        (142.0, 1.0, 82.0),
-        (197.0, 27.0, 125.0),
-        (222.0, 119.0, 174.0),
-        (241.0, 182.0, 218.0),
-        (247.0, 247.0, 247.0),
-        (184.0, 225.0, 134.0),
-        (127.0, 188.0, 65.0),
-        (77.0, 146.0, 33.0),
-        (39.0, 100.0, 25.0),
-    ];
-    interpolate(&STOPS, t)
-}
-
-/// The colour at `t` in [0, 1] along evenly spaced `stops`.
-fn interpolate(stops: &[(f64, f64, f64)], t: f64) -> (u8, u8, u8) {
-    let t = if t.is_finite() {
-        t.clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let x = t * (stops.len() - 1) as f64;
-    let k = (x.floor() as usize).min(stops.len() - 2);
-    let f = x - k as f64;
-    let (a, b) = (stops[k], stops[k + 1]);
-    let mix = |p: f64, q: f64| (p + f * (q - p)).round() as u8;
-    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
-}
-
 impl From<ColorMode> for Theme {
     /// The dark theme in `color`s.
     fn from(color: ColorMode) -> Theme {
         Theme::new(Background::Dark, color)
     }
-}
-
-/// The heatmap's perceptual ramp (after viridis), t in [0, 1].
-pub fn ramp(t: f64) -> (u8, u8, u8) {
-    const STOPS: [(f64, f64, f64); 6] = [
-        (68.0, 1.0, 84.0),
-        (65.0, 68.0, 135.0),
-        (42.0, 120.0, 142.0),
-        (34.0, 168.0, 132.0),
-        (122.0, 209.0, 81.0),
-        (253.0, 231.0, 37.0),
-    ];
-    interpolate(&STOPS, t)
 }
 
 #[cfg(test)]
@@ -504,57 +511,7 @@ mod tests {
 
     /// xterm's default palette, as RGB.
     fn xterm(colour: Color) -> (u8, u8, u8) {
-        const NAMED: [(u8, u8, u8); 16] = [
-            (0, 0, 0),
-            (205, 0, 0),
-            (0, 205, 0),
-            (205, 205, 0),
-            (0, 0, 238),
-            (205, 0, 205),
-            (0, 205, 205),
-            (229, 229, 229),
-            (127, 127, 127),
-            (255, 0, 0),
-            (0, 255, 0),
-            (255, 255, 0),
-            (92, 92, 255),
-            (255, 0, 255),
-            (0, 255, 255),
-            (255, 255, 255),
-        ];
-        let index = match colour {
-            Color::Black => 0,
-            Color::Red => 1,
-            Color::Green => 2,
-            Color::Yellow => 3,
-            Color::Blue => 4,
-            Color::Magenta => 5,
-            Color::Cyan => 6,
-            Color::Gray => 7,
-            Color::DarkGray => 8,
-            Color::LightRed => 9,
-            Color::LightGreen => 10,
-            Color::LightYellow => 11,
-            Color::LightBlue => 12,
-            Color::LightMagenta => 13,
-            Color::LightCyan => 14,
-            Color::White => 15,
-            Color::Indexed(i) => i,
-            Color::Rgb(r, g, b) => return (r, g, b),
-            other => panic!("{other:?}"),
-        };
-        match index {
-            0..=15 => NAMED[index as usize],
-            16..=231 => {
-                let level = |k: u8| if k == 0 { 0 } else { 55 + 40 * k };
-                let k = index - 16;
-                (level(k / 36), level(k / 6 % 6), level(k % 6))
-            }
-            _ => {
-                let grey = 8 + 10 * (index - 232);
-                (grey, grey, grey)
-            }
-        }
+        crate::palette::xterm_rgb(colour).unwrap_or_else(|| panic!("{colour:?}"))
     }
 
     /// WCAG's contrast ratio of two colours, 1 to 21.

@@ -1,4 +1,4 @@
-//! The mouse: a click on the heatmap moves the swing there, one on the
+//! The mouse: a click on a tab shows it, one on the heatmap moves the swing there, one on the
 //! field sets the launch direction, a click on an input selects it, the wheel over an input nudges it. Where things are
 //! comes from `layout`, the same rectangles the views draw into.
 
@@ -23,7 +23,14 @@ impl App {
         let panes = layout::layout(self.size, self.tab, self.is_swing());
         match event.kind {
             MouseEventKind::Down(_) => {
-                if let Some(field) = self.input_at(panes.inputs, x, y) {
+                let on_tab = panes
+                    .tabs
+                    .filter(|bar| bar.contains(ratatui::layout::Position { x, y }))
+                    .and_then(|bar| layout::Tab::at(bar, x));
+                if let Some(tab) = on_tab {
+                    self.tab = tab;
+                    self.dirty = true;
+                } else if let Some(field) = self.input_at(panes.inputs, x, y) {
                     self.selected = field;
                     self.message = None;
                     self.dirty = true;

@@ -24,13 +24,15 @@ impl App {
             Some(Action::Close) => {}
             Some(Action::Confirm) => {
                 // A name with spaces is fixed up, not refused: "class demo"
-                // is saved as class-demo.
-                let name = text
-                    .lines()
-                    .join("")
-                    .split_whitespace()
-                    .collect::<Vec<_>>()
-                    .join("-");
+                // is saved as class-demo, and the message says so.
+                let typed = text.lines().join("");
+                let name = typed.split_whitespace().collect::<Vec<_>>().join("-");
+                let renamed = (name != typed.trim()).then(|| {
+                    format!(
+                        " (`{}` became `{name}`: names take no spaces)",
+                        typed.trim()
+                    )
+                });
                 // Taking a bundled name hides the bundled preset from
                 // `--preset NAME` and from `o`: only when asked twice.
                 // Overwriting one of the user's own: only when asked twice too.
@@ -59,7 +61,8 @@ impl App {
                         // The preset row's hint now describes the one saved.
                         self.description = self.saved_description();
                         self.preset_name = name;
-                        self.message = Some((format!("saved {}", path.display()), false));
+                        let renamed = renamed.unwrap_or_default();
+                        self.message = Some((format!("saved {}{renamed}", path.display()), false));
                     }
                     Err(e) => {
                         self.mode = Mode::Save {

@@ -175,8 +175,16 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         Constraint::Length(below.len() as u16),
     ])
     .areas(inner);
+    let caption_cut = words::rows_needed(&[Span::raw(data.title.as_str())], width) > caption.len();
     frame.render_widget(Paragraph::new(caption), heading);
     frame.render_widget(Paragraph::new(below), below_area);
+    let notes_cut = notes
+        .iter()
+        .zip(&rows)
+        .any(|(note, &rows)| words::rows_needed(note, width) > rows);
+    if caption_cut || notes_cut {
+        super::read_all_hint(frame, area, app);
+    }
 
     figure_panels::draw(frame, plot, app, data);
 }

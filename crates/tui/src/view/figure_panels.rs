@@ -1,6 +1,6 @@
 //! A figure's chart: its panels stacked over one x axis (Figs. 8–12 have
 //! three, the optimal range, E_opt and ψ_opt, shown where the pane has
-//! room; the others one), with the current input's value as a vertical
+//! room, else one at a time, `v` to the next; the others one), with the current input's value as a vertical
 //! line and the paper's marked points on the first.
 
 use ratatui::Frame;
@@ -84,7 +84,13 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
     let (x_unit, x_title) = column_unit(app, &data.columns[x]);
     let all = panels(data.number);
     let count = panels_that_fit(area.height, all.len());
-    let shown: Vec<Panel> = all[..count]
+    // Where not all fit, one at a time: the one `v` has reached.
+    let first = if count < all.len() {
+        app.figure_panel % all.len()
+    } else {
+        0
+    };
+    let shown: Vec<Panel> = all[first..first + count]
         .iter()
         .map(|prefix| panel(app, data, prefix, x_unit))
         .collect();
@@ -98,8 +104,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
     };
     // The paper's marked points (A, B, Dryden's point…), each on its curve
     // of the first panel, with a word where a short one names it.
+    let on_first = |k: usize| first + k == 0;
     let marks: Vec<((f64, f64), String)> = marked_points(data, &curves(data, all[0]))
         .into_iter()
+        .filter(|_| on_first(0))
         .map(|m| {
             let point = (x_unit.show(m.point.0), shown[0].y_unit.show(m.point.1));
             (point, short_label(&m.label))
@@ -120,6 +128,18 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
     let [legend_row, stack] =
         Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
     let mut legend = Vec::new();
+    // Which panel this is, and the key to the others.
+    if count < all.len() {
+        legend.push(Span::styled(
+            format!(
+                "panel {}/{}: {} · v next ",
+                first + 1,
+                all.len(),
+                shown[0].title
+            ),
+            app.theme.key,
+        ));
+    }
     let main = &shown[0].curves;
     if main.len() > 1 {
         for (k, curve) in main.iter().enumerate() {
@@ -178,7 +198,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
         if !now_line.is_empty() {
             datasets.push(chart::line(app.theme.swing, &now_line));
         }
-        if k == 0 {
+        if on_first(k) {
             datasets.push(chart::points(mark_marker, app.theme.apex, &mark_points));
         }
         // Only the lowest panel has the x axis and its title (each is given
@@ -192,7 +212,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
             ..AxisSpec::new(panel.title.clone(), *y)
         };
         let graph = chart::draw(frame, areas[k], datasets, (&x, &y_axis), app.theme.dim);
-        if k == 0 {
+        if on_first(k) {
             let named: Vec<((f64, f64), &str)> = marks
                 .iter()
                 .filter(|(_, text)| !text.is_empty())

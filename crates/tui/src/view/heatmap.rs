@@ -73,7 +73,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let title = match level {
         Some(d) => {
             let (d, unit) = app.distance(d);
-            format!(" Range over (E, ψ){stale} · ── {d:.0} {unit} (fence) ")
+            format!(
+                " Range over (E, ψ){stale} · {} {d:.0} {unit} (fence) ",
+                contour_key(app)
+            )
         }
         None => format!(" Range over (E, ψ){stale} "),
     };
@@ -393,6 +396,16 @@ fn draw_pixels(
                 cell.set_symbol("▀").set_fg(top).set_bg(bottom);
             }
         }
+    }
+}
+
+/// How the legend draws the contour: a line where it is drawn in colour,
+/// its dots without (NO_COLOR), as the map shows it.
+pub(super) fn contour_key(app: &App) -> String {
+    if app.theme.colored() {
+        "──".to_owned()
+    } else {
+        CONTOUR_GLYPH.repeat(2)
     }
 }
 

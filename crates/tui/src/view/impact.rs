@@ -46,11 +46,12 @@ fn planar(frame: &mut Frame, inner: Rect, app: &App, impact: &Collision, stop: S
     // Speeds in the units shown (m/s or mph); impulses stay N·s.
     let (slip_path, normal_path) = (app.theme.path(0), app.theme.path(1));
     let lines = planar_text(app, impact, stop, (slip_path.1, normal_path.1));
-    // Each line wrapped at words, never cut: up to two rows each.
+    // Each line wrapped at words, never cut: up to two rows each, and the
+    // stop's sentence first, up to four.
     let width = inner.width as usize;
-    let lines: Vec<Line> = lines
-        .iter()
-        .flat_map(|l| words::fit(&l.spans, width, 2))
+    let lines: Vec<Line> = words::fit(&stop_sentence(app, impact, stop).spans, width, 4)
+        .into_iter()
+        .chain(lines.iter().flat_map(|l| words::fit(&l.spans, width, 2)))
         .collect();
     let [chart_area, text_area] =
         Layout::vertical([Constraint::Fill(1), Constraint::Length(lines.len() as u16)])
@@ -112,6 +113,11 @@ fn planar_text(
             )),
         ]),
     ]
+}
+
+/// What is happening at the stop, in a sentence (dim, under the chart).
+pub(super) fn stop_sentence(app: &App, impact: &Collision, stop: Stop) -> Line<'static> {
+    Line::styled(super::phase_words::sentence(impact, stop), app.theme.dim)
 }
 
 /// A curve of the chart against p: what it plots of a moment (m/s), and

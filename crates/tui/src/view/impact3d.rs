@@ -14,7 +14,7 @@ use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Chart, Paragraph};
 
-use super::impact::{Curve, impulse_line, named, phase_chart};
+use super::impact::{Curve, impulse_line, named, phase_chart, stop_sentence};
 use super::{chart, words};
 use crate::app::App;
 use crate::layout::CELL_ASPECT;
@@ -55,19 +55,29 @@ pub fn draw(
         Line::from(vec![
             Span::styled("ball ", app.theme.dim),
             Span::raw(format!(
-                "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {:.1} {}",
+                "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {:.1} {}{}",
                 speed.show(v.x),
                 speed.show(v.y),
                 speed.show(v.z),
                 speed.symbol,
                 spin.show(s.ball_spin.norm()),
-                spin.symbol
+                spin.symbol,
+                spin_parts(app, impact, stop)
             )),
         ]),
     ]
     .iter()
-    // Each line wrapped at words, never cut: up to two rows each.
+    // Each line wrapped at words, never cut: up to two rows each; the
+    // stop's sentence first, up to four.
     .flat_map(|l| words::fit(&l.spans, inner.width as usize, 2))
+    .collect();
+    let lines: Vec<Line> = words::fit(
+        &stop_sentence(app, impact, stop).spans,
+        inner.width as usize,
+        4,
+    )
+    .into_iter()
+    .chain(lines)
     .collect();
     let [charts, text_area] =
         Layout::vertical([Constraint::Fill(1), Constraint::Length(lines.len() as u16)])
@@ -110,7 +120,23 @@ pub fn draw(
     frame.render_widget(Paragraph::new(lines), text_area);
 }
 
-/// "slip 38.2° (26.3° → 74.3°, sticks)": the slip's direction at the
+/// At separation, what the launch line calls spin: |ω| is the whole spin
+/// vector, the launch's backspin and sidespin are its parts about the
+/// horizontal across the flight and the vertical (the rest spins about the
+/// ball's path and bends nothing).
+fn spin_parts(app: &App, impact: &Collision, stop: Stop) -> String {
+    if stop.impulse < impact.separation_impulse() {
+        return String::new();
+    }
+    let spin = app.unit(Quantity::Spin);
+    format!(
+        " (launch: backspin\u{a0}{:.1}, sidespin\u{a0}{:.1})",
+        spin.show(impact.launch_spin()),
+        spin.show(impact.launch_sidespin())
+    )
+}
+
+/// "slip 38.2° (26.3° → 74.3° at p_s, sticks)": the slip's direction at the
 /// cursor (0° square across the bat, 90° along it), and at the start and
 /// the end of its turn: where it halts, or at separation if it never does.
 fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'static> {
@@ -136,10 +162,17 @@ fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'sta
     let mut spans = vec![
         label,
         Span::styled(now, app.theme.cursor),
+        // Where each end is, so that the last stop's 37° before the halt
+        // does not read as the 74° at it.
         Span::raw(format!(
-            " ({:.1}° → {:.1}°, ",
+            " ({:.1}° → {:.1}° at {}, ",
             first.angle.to_degrees(),
-            last.angle.to_degrees()
+            last.angle.to_degrees(),
+            if impact.regime == Regime::Stick {
+                "p_s"
+            } else {
+                "p_f"
+            }
         )),
         end,
         Span::raw(")"),

@@ -346,48 +346,51 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
     }
 
-    let about_text = match editing {
-        Some((_, Some(error))) => Paragraph::new(Line::styled(error.as_str(), app.theme.error)),
-        Some((_, None)) => Paragraph::new(Line::styled(
-            edit_help(app, app.fields[app.selected]),
-            app.theme.dim,
-        )),
-        None if app.message.is_some() => {
-            let (message, error) = app.message.as_ref().expect("checked");
-            let style = if *error {
-                app.theme.error
-            } else {
-                app.theme.good
-            };
-            Paragraph::new(Line::styled(escape_text(message), style))
-        }
-        None => {
-            let text = match app.fields[app.selected] {
-                Field::Preset => format!(
-                    "{} — h l: the previous / next preset · Enter or o: open one",
-                    escape_text(&app.description)
-                ),
-                Field::Drag => format!("model.drag (h l): {}", app.scene.drag.description()),
-                Field::Lift => format!("model.lift (h l): {}", app.scene.lift.description()),
-                Field::Hand => format!(
-                    "{HAND_KEY} (h l): {} batter, right or left",
-                    app.scene.bat.hand.description()
-                ),
-                Field::Key(k) => {
-                    let key = input_key(k);
-                    format!(
-                        "{}: {} {}, step {}",
-                        key.name,
-                        key.description,
-                        shown_bounds(key, app.units),
-                        shown_step(key, app.units)
-                    )
-                }
-            };
-            Paragraph::new(Line::styled(text, app.theme.dim))
-        }
+    let (about_words, about_style) = match editing {
+        Some((_, Some(error))) => (error.clone(), app.theme.error),
+        Some((_, None)) => (edit_help(app, app.fields[app.selected]), app.theme.dim),
+        None => match &app.message {
+            Some((message, true)) => (escape_text(message), app.theme.error),
+            Some((message, false)) => (escape_text(message), app.theme.good),
+            None => (about_selected(app), app.theme.dim),
+        },
     };
-    frame.render_widget(about_text.wrap(Wrap { trim: true }), about);
+    let cut = super::words::rows_needed(&[Span::raw(about_words.as_str())], about.width as usize)
+        > about.height as usize;
+    let about_text = Paragraph::new(Line::styled(about_words, about_style));
+    let about_text = about_text.wrap(Wrap { trim: true });
+    // Words past the rows under the list: the pane's foot says where the
+    // rest is (`i` shows it whole).
+    if cut {
+        super::read_all_hint(frame, area, app);
+    }
+    frame.render_widget(about_text, about);
+}
+
+/// What the selected input is, its range and step, in words.
+pub(super) fn about_selected(app: &App) -> String {
+    match app.fields[app.selected] {
+        Field::Preset => format!(
+            "{} — h l: the previous / next preset · Enter or o: open one",
+            escape_text(&app.description)
+        ),
+        Field::Drag => format!("model.drag (h l): {}", app.scene.drag.description()),
+        Field::Lift => format!("model.lift (h l): {}", app.scene.lift.description()),
+        Field::Hand => format!(
+            "{HAND_KEY} (h l): {} batter, right or left",
+            app.scene.bat.hand.description()
+        ),
+        Field::Key(k) => {
+            let key = input_key(k);
+            format!(
+                "{}: {} {}, step {}",
+                key.name,
+                key.description,
+                shown_bounds(key, app.units),
+                shown_step(key, app.units)
+            )
+        }
+    }
 }
 
 /// Where the pane has no Δ column (80×24), the selected input's Δ at the

@@ -65,8 +65,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     };
     let unit = app.distance(1.0).1;
     let title = format!(
-        " Margin at {} (E, ψ){stale} · ── 0 {unit} ",
-        app.margin_place()
+        " Margin at {} (E, ψ){stale} · {} 0 {unit} ",
+        app.margin_place(),
+        super::heatmap::contour_key(app)
     );
     let Some(plot) = frame_and_axes(frame, area, app, title) else {
         return;

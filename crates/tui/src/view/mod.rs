@@ -2,6 +2,7 @@
 //! Nothing here changes the state or computes physics.
 
 mod chart;
+mod detail;
 mod field;
 pub mod figure;
 mod figure_panels;
@@ -11,6 +12,8 @@ mod impact3d;
 mod inputs;
 mod margin_map;
 mod overlay;
+mod paper_line;
+mod phase_words;
 mod readout;
 mod trajectory;
 mod words;
@@ -98,7 +101,8 @@ fn draw_panes(frame: &mut Frame, app: &App) {
     }
     status_line(frame, panes.status, app);
     match &app.mode {
-        Mode::Help => overlay::help(frame, area, &app.theme),
+        Mode::Help { glossary, scroll } => overlay::help(frame, area, app, (*glossary, *scroll)),
+        Mode::Detail { scroll } => detail::draw(frame, area, app, *scroll),
         Mode::Save { text, error, .. } => overlay::save(frame, area, app, text, error.as_deref()),
         Mode::Open {
             items,
@@ -149,6 +153,19 @@ fn swing_only(frame: &mut Frame, area: Rect, (title, what): (&str, &str), theme:
             ),
         area,
     );
+}
+
+/// " i: read all " on the foot of a pane whose words are cut short: `i`
+/// shows them whole ([`detail`]).
+pub(super) fn read_all_hint(frame: &mut Frame, pane: Rect, app: &App) {
+    let hint = " i: read all ";
+    if pane.height == 0 || pane.width < hint.chars().count() as u16 + 2 {
+        return;
+    }
+    let x = pane.x + pane.width - hint.chars().count() as u16 - 1;
+    frame
+        .buffer_mut()
+        .set_string(x, pane.y + pane.height - 1, hint, app.theme.key);
 }
 
 /// Which scene is shown, what is being computed and how fresh each result

@@ -10,6 +10,7 @@ use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap}
 use ratatui_textarea::TextArea;
 
 use crate::app::{App, PickItem};
+use crate::glossary::GLOSSARY;
 use crate::keymap;
 use crate::theme::Theme;
 use preset::escape_text;
@@ -24,28 +25,84 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
     cell
 }
 
-pub fn help(frame: &mut Frame, area: Rect, theme: &Theme) {
-    let lines: Vec<Line> = keymap::help()
-        .into_iter()
-        .map(|(keys, what)| {
-            Line::from(vec![
-                Span::styled(format!("{keys:<16}"), theme.key),
-                Span::raw(what),
-            ])
-        })
-        .collect();
+/// The help: the keys, or (Tab) the glossary of the symbols on screen,
+/// scrolled by `scroll` rows where it is taller than the screen.
+pub fn help(frame: &mut Frame, area: Rect, app: &App, (glossary, scroll): (bool, u16)) {
+    let theme = &app.theme;
+    // The keys' page leaves the selected input in view at 80×24.
+    let width: u16 = if glossary { 76 } else { 68 };
+    let lines = if glossary {
+        glossary_lines(app, width.min(area.width).saturating_sub(2))
+    } else {
+        keymap::help()
+            .into_iter()
+            .map(|(keys, what)| {
+                Line::from(vec![
+                    Span::styled(format!("{keys:<16}"), theme.key),
+                    Span::raw(what),
+                ])
+            })
+            .collect()
+    };
     // The closing line on the border, so that it shows even where the keys
     // fill the screen (80×24).
-    let popup = centered(area, 68, lines.len() as u16 + 2);
+    let popup = centered(area, width, (lines.len() as u16).saturating_add(2));
+    let visible = popup.height.saturating_sub(2);
+    let scroll = scroll.min((lines.len() as u16).saturating_sub(visible));
+    let (title, bottom) = if glossary {
+        (
+            " Glossary: what each symbol means ",
+            " Tab: keys · j k scroll · any other key closes ",
+        )
+    } else {
+        (
+            " Keys ",
+            " Tab: glossary · j k scroll · any other key closes ",
+        )
+    };
     frame.render_widget(Clear, popup);
     frame.render_widget(
-        Paragraph::new(lines).block(
+        Paragraph::new(lines).scroll((scroll, 0)).block(
             Block::bordered()
-                .title(Span::styled(" Keys ", theme.title))
-                .title_bottom(Line::styled(" any key closes this help ", theme.dim)),
+                .title(Span::styled(title, theme.title))
+                .title_bottom(Line::styled(bottom, theme.dim)),
         ),
         popup,
     );
+}
+
+/// Column of the glossary's meanings: symbols stand left of it.
+const GLOSSARY_INDENT: usize = 14;
+
+/// Each symbol, then its meaning wrapped at words under a hanging indent,
+/// with its unit in the system shown and where the paper defines it.
+fn glossary_lines(app: &App, width: u16) -> Vec<Line<'static>> {
+    let text_width = (width as usize).saturating_sub(GLOSSARY_INDENT).max(10);
+    let mut lines = Vec::new();
+    for entry in GLOSSARY {
+        let unit = entry
+            .quantity
+            .map_or(String::new(), |q| format!(" [{}]", app.unit(q).symbol));
+        let text = vec![
+            Span::raw(entry.meaning),
+            Span::raw(unit),
+            Span::styled(format!(" ({})", entry.source), app.theme.dim),
+        ];
+        for (k, row) in super::words::fit(&text, text_width, 8)
+            .into_iter()
+            .enumerate()
+        {
+            let symbol = if k == 0 { entry.symbol } else { "" };
+            let pad = GLOSSARY_INDENT.saturating_sub(Span::raw(symbol).width());
+            let mut spans = vec![
+                Span::styled(symbol, app.theme.key),
+                Span::raw(" ".repeat(pad)),
+            ];
+            spans.extend(row.spans);
+            lines.push(Line::from(spans));
+        }
+    }
+    lines
 }
 
 pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Option<&str>) {

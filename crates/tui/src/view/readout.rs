@@ -46,7 +46,7 @@ fn launch_text(app: &App, launch: &BattedBall, sign: bool) -> String {
 
 /// An angle in the units shown: "0.3791 rad" or "21.72°"; `sign` for a
 /// difference.
-fn angle_text(app: &App, radians: f64, sign: bool) -> String {
+pub(super) fn angle_text(app: &App, radians: f64, sign: bool) -> String {
     match (app.units, sign) {
         (UnitSystem::Si, false) => format!("{radians:.4}"),
         (UnitSystem::Si, true) => signed(radians, 4),
@@ -57,7 +57,7 @@ fn angle_text(app: &App, radians: f64, sign: bool) -> String {
 
 /// An undercut in the units shown: "27.27 mm" or "1.074 in"; `sign` for a
 /// difference.
-fn undercut_text(app: &App, metres: f64, sign: bool) -> String {
+pub(super) fn undercut_text(app: &App, metres: f64, sign: bool) -> String {
     let (value, unit, decimals) = match app.units {
         UnitSystem::Si => (metres * 1e3, "mm", 2),
         UnitSystem::Imperial => (app.unit(Quantity::Size).show(metres), "in", 3),
@@ -118,6 +118,31 @@ fn air(app: &App) -> (String, String) {
 }
 
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+    let lines = lines(app, area);
+    let inner = Block::bordered().inner(area);
+    let block = Block::bordered().title(Span::styled(" Readout ", app.theme.title));
+    // Rows past the pane's foot (at 80×24 the parks and the air, at 120×40
+    // a model's description): `i` shows them all.
+    let needed: usize = lines
+        .iter()
+        .map(|l| super::words::rows_needed(&l.spans, inner.width as usize))
+        .sum();
+    let cut = needed > inner.height as usize;
+    // Long lines (a model's description) wrap rather than run off the pane.
+    frame.render_widget(
+        Paragraph::new(lines)
+            .block(block)
+            .wrap(ratatui::widgets::Wrap { trim: false }),
+        area,
+    );
+    if cut {
+        super::read_all_hint(frame, area, app);
+    }
+}
+
+/// The readout's lines for a pane of `area`: what a short pane has no room
+/// for is left out, or takes a less needed line's place.
+pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
     let flight = &app.flown.flight;
     let u = app.distance(1.0).1;
     let d = |metres: f64| app.distance(metres).0;
@@ -338,6 +363,19 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             Span::styled("searching…", app.theme.busy),
         ])),
     }
+    // The paper's optimum under ours, on a Table II preset; at 80×24 in
+    // the impulses' row (tab 3 shows them).
+    if let (Some(paper), Some(k)) = (super::paper_line::line(app), labelled(&lines, "optimum")) {
+        if (inner.height as usize) < lines.len() + 3 {
+            lines.retain(|l| {
+                l.spans
+                    .first()
+                    .is_none_or(|s| s.content.trim() != "impulse")
+            });
+        }
+        let k = labelled(&lines, "optimum").unwrap_or(k);
+        lines.insert(k + 1, paper);
+    }
     let landing = Line::from(vec![
         label("landing"),
         Span::raw(format!(
@@ -438,7 +476,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         }
     }
     // A number and its unit wrap together ("27.3 m", "50 %").
-    let lines: Vec<Line> = lines
+    let lines: Vec<Line<'static>> = lines
         .into_iter()
         .map(|line| {
             let spans = line.spans.into_iter().map(|span| {
@@ -450,14 +488,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             Line::from(spans.collect::<Vec<_>>())
         })
         .collect();
-    let block = Block::bordered().title(Span::styled(" Readout ", app.theme.title));
-    // Long lines (a model's description) wrap rather than run off the pane.
-    frame.render_widget(
-        Paragraph::new(lines)
-            .block(block)
-            .wrap(ratatui::widgets::Wrap { trim: false }),
-        area,
-    );
+    lines
 }
 
 /// Where the line labelled `name` is among `lines`.

@@ -1,0 +1,36 @@
+//! The paper beside ours: on a Table II preset (its pitch, bat and ball as
+//! printed, any swing), the readout's "Table II" line gives the paper's
+//! optimum under ours. The glossary (`?`, Tab) says why they differ.
+
+use ratatui::text::{Line, Span};
+
+use super::readout::{angle_text, undercut_text};
+use crate::app::App;
+use analysis::paper::{TABLE2, TableRow, table2_scene};
+
+/// The printed row whose scene this is, whatever its swing (E, ψ).
+pub fn table2_row(app: &App) -> Option<TableRow> {
+    let scene = &app.scene;
+    TABLE2.iter().find_map(|(_, _, row)| {
+        (app.is_swing() && scene.with_swing(row.undercut, row.swing_angle) == table2_scene(row))
+            .then_some(*row)
+    })
+}
+
+/// "Table II E 26.50 mm  ψ 0.1594  134.80 m": the printed optimum, in the
+/// units shown, under ours.
+pub fn line(app: &App) -> Option<Line<'static>> {
+    let row = table2_row(app)?;
+    let (range, unit) = app.distance(row.range);
+    Some(Line::from(vec![
+        Span::styled("Table II ", app.theme.dim),
+        Span::styled(
+            format!(
+                "E {}  ψ {}  {range:.2} {unit}",
+                undercut_text(app, row.undercut, false),
+                angle_text(app, row.swing_angle, false),
+            ),
+            app.theme.dim,
+        ),
+    ]))
+}

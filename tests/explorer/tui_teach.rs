@@ -1,0 +1,226 @@
+//! Issue 36, "the explorer teaches": the glossary, the impact's sentences,
+//! the paper beside ours, and figures whose panels can all be seen.
+
+use crate::tui_support;
+
+use ratatui::crossterm::event::KeyCode;
+use tui_support::*;
+
+/// Issue 36, item 1: `?` then Tab shows the glossary, which says in words
+/// what the readout's symbols are, and scrolls to its last entry at 80×24.
+#[test]
+fn the_help_has_a_glossary_of_the_symbols_on_screen() {
+    use homerun::tui::app::Mode;
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('?'));
+    assert!(screen(&app).contains("Tab: glossary · j k scroll"));
+    key(&mut app, KeyCode::Tab);
+    let first = screen(&app);
+    assert!(first.contains("Glossary"), "{first}");
+    assert!(first.contains("pitch speed: the ball's speed"), "{first}");
+    // Scrolled to its end, the last entries show; the first has gone.
+    for _ in 0..200 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    let last = screen(&app);
+    assert!(last.contains("drag crisis"), "{last}");
+    assert!(last.contains("the trajectory's apex"), "{last}");
+    assert!(!last.contains("pitch speed: the ball's speed"), "{last}");
+    // Tab back to the keys, and any other key closes.
+    key(&mut app, KeyCode::Tab);
+    assert!(matches!(
+        app.mode,
+        Mode::Help {
+            glossary: false,
+            scroll: 0
+        }
+    ));
+    key(&mut app, KeyCode::Char('x'));
+    assert!(matches!(app.mode, Mode::Normal));
+}
+
+/// Issue 36, item 1: each stop of the impact's step-through says what the
+/// contact is doing, under the chart at 80×24.
+#[test]
+fn each_impact_stop_says_what_is_happening() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('3'));
+    let mut seen = Vec::new();
+    for _ in 0..6 {
+        let text = screen(&app);
+        let phase = [
+            "Contact begins",
+            "Slip halts",
+            "Compression:",
+            "Maximum compression",
+            "Restitution",
+            "Separation",
+        ]
+        .into_iter()
+        .find(|p| text.contains(p));
+        seen.push(phase.unwrap_or("none"));
+        key(&mut app, KeyCode::Char('.'));
+    }
+    assert_eq!(
+        seen,
+        [
+            "Contact begins",
+            "Slip halts",
+            "Compression:",
+            "Maximum compression",
+            "Restitution",
+            "Separation"
+        ]
+    );
+}
+
+/// Issue 36, item 12: `g` selects the first input, as the help says, not
+/// the preset's row above it.
+#[test]
+fn g_selects_the_first_input() {
+    use homerun::tui::app::Field;
+    let mut app = app(80, 24, None);
+    key(&mut app, KeyCode::Char('G'));
+    key(&mut app, KeyCode::Char('g'));
+    assert!(matches!(app.fields[app.selected], Field::Key(_)));
+    assert_eq!(app.selected, 1);
+}
+
+/// Issue 36, item 3: on a Table II preset the readout shows the paper's
+/// optimum under ours (26.5 mm beside 27.27), at 80×24 too; with the bat
+/// changed the row is no longer the paper's, and the line goes.
+#[test]
+fn the_paper_optimum_stands_under_ours_on_table_two_presets() {
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    let text = screen(&app);
+    assert!(
+        text.contains("optimum  E 27.27 mm  ψ 0.1744  134.79 m"),
+        "{text}"
+    );
+    assert!(
+        text.contains("Table II E 26.50 mm  ψ 0.1594  134.80 m"),
+        "{text}"
+    );
+    // A swing moved off the paper's (E, ψ) is still Table II's scene.
+    key(&mut app, KeyCode::Char('r'));
+    settle(&mut app);
+    assert!(screen(&app).contains("Table II E 26.50 mm"));
+    set_and_settle(&mut app, "bat.speed", "31");
+    assert!(!screen(&app).contains("Table II"), "{}", screen(&app));
+    // The glossary says why the two differ, and answers the curve ball's
+    // "1.26 m/s higher".
+    key(&mut app, KeyCode::Char('?'));
+    key(&mut app, KeyCode::Tab);
+    for _ in 0..40 {
+        key(&mut app, KeyCode::Char('j'));
+    }
+    let glossary = screen(&app);
+    assert!(glossary.contains("flat along a ridge"), "{glossary}");
+    assert!(glossary.contains("44.30 − 43.04"), "{glossary}");
+}
+
+/// Issue 36, item 5: where Fig. 8's three panels do not fit (80×24,
+/// 120×40) it says which it shows, and `v` shows the next; at 200×60 all
+/// three stand stacked.
+#[test]
+fn a_figure_says_which_panel_it_shows_and_v_shows_the_next() {
+    for (w, h) in [(80, 24), (120, 40)] {
+        let mut app = app(w, h, None);
+        key(&mut app, KeyCode::Char('4'));
+        settle(&mut app);
+        assert_eq!(app.figure_number, 8);
+        let first = screen(&app);
+        assert!(
+            first.contains("panel 1/3: range (m) · v next"),
+            "{w}×{h}\n{first}"
+        );
+        key(&mut app, KeyCode::Char('v'));
+        let second = screen(&app);
+        assert!(second.contains("panel 2/3: E_opt (m)"), "{w}×{h}\n{second}");
+        key(&mut app, KeyCode::Char('v'));
+        assert!(screen(&app).contains("panel 3/3: ψ_opt (rad)"));
+        key(&mut app, KeyCode::Char('v'));
+        assert!(screen(&app).contains("panel 1/3"));
+    }
+    let mut app = app(200, 60, None);
+    settle(&mut app);
+    let all = screen(&app);
+    assert!(!all.contains("panel 1/3"), "{all}");
+    for title in ["range (m)", "E_opt (m)", "ψ_opt (rad)"] {
+        assert!(all.contains(title), "{title}\n{all}");
+    }
+}
+
+/// Issue 36, item 12: under NO_COLOR the heatmap's legend shows the
+/// contour as the map draws it (••), not as a line it never draws.
+#[test]
+fn the_no_colour_legend_shows_the_contours_dots() {
+    use homerun::tui::theme::{Background, ColorMode, Theme};
+    let mut app = themed(Theme::new(Background::Dark, ColorMode::NoColor), 80, 24);
+    settle(&mut app);
+    key(&mut app, KeyCode::Char('2'));
+    let text = screen(&app);
+    assert!(text.contains("· •• 122 m (fence)"), "{text}");
+    let mut coloured = app_on("fastball", 80, 24, None);
+    settle(&mut coloured);
+    key(&mut coloured, KeyCode::Char('2'));
+    assert!(screen(&coloured).contains("· ── 122 m (fence)"));
+}
+
+/// Issue 36, item 4: text cut short under the inputs says so ("i: read
+/// all"), and `i` shows it whole: a wind's direction, a refused unit.
+#[test]
+fn i_shows_the_words_the_panes_cut_short() {
+    use homerun::tui::app::{Field, Mode, input_key};
+    let mut app = app(80, 24, None);
+    settle(&mut app);
+    select(&mut app, "bat.direction");
+    let Field::Key(k) = app.fields[app.selected] else {
+        panic!("an input");
+    };
+    let description = input_key(k).description;
+    let text = screen(&app);
+    assert!(text.contains("i: read all"), "{text}");
+    // The description's last words are past the rows under the list.
+    let tail: String = description
+        .split_whitespace()
+        .rev()
+        .take(3)
+        .collect::<Vec<_>>()
+        .into_iter()
+        .rev()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(!text.contains(&tail), "{tail}\n{text}");
+    key(&mut app, KeyCode::Char('i'));
+    assert!(matches!(app.mode, Mode::Detail { .. }));
+    let whole = screen(&app);
+    assert!(whole.contains("In full"), "{whole}");
+    assert!(
+        whole.split('\n').any(|row| row.contains(&tail))
+            || whole.replace(" │\"\n\"│ ", " ").contains(&tail),
+        "{tail}\n{whole}"
+    );
+    key(&mut app, KeyCode::Char('q'));
+    assert!(matches!(app.mode, Mode::Normal));
+    assert!(!app.quit, "a key closes the pane, not the app");
+
+    // A unit refused under imperial: the message, whole.
+    key(&mut app, KeyCode::Char('u'));
+    select(&mut app, "pitch.speed");
+    key(&mut app, KeyCode::Enter);
+    for _ in 0..10 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    typed(&mut app, "2500rpm");
+    key(&mut app, KeyCode::Enter);
+    let message = app.message.clone().expect("refused").0;
+    key(&mut app, KeyCode::Char('i'));
+    let whole = screen(&app);
+    assert!(whole.contains("Message"), "{whole}");
+    let last_word = message.split_whitespace().last().unwrap();
+    assert!(whole.contains(last_word), "{message}\n{whole}");
+}
