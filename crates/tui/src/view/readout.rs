@@ -363,19 +363,6 @@ pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
             Span::styled("searching…", app.theme.busy),
         ])),
     }
-    // The paper's optimum under ours, on a Table II preset; at 80×24 in
-    // the impulses' row (tab 3 shows them).
-    if let (Some(paper), Some(k)) = (super::paper_line::line(app), labelled(&lines, "optimum")) {
-        if (inner.height as usize) < lines.len() + 3 {
-            lines.retain(|l| {
-                l.spans
-                    .first()
-                    .is_none_or(|s| s.content.trim() != "impulse")
-            });
-        }
-        let k = labelled(&lines, "optimum").unwrap_or(k);
-        lines.insert(k + 1, paper);
-    }
     let landing = Line::from(vec![
         label("landing"),
         Span::raw(format!(
@@ -420,6 +407,27 @@ pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
         let verdict = lines.remove(k);
         let after_flight = labelled(&lines, "flight").map_or(0, |f| f + 1);
         lines.insert(after_flight, verdict);
+    }
+    // The paper's optimum under ours, on a Table II preset, after the
+    // optimum and its tags; at 80×24 in the impulses' row (tab 3 shows
+    // them) and the parks' (`i` shows them), never the fence's.
+    if let Some(paper) = super::paper_line::line(app) {
+        if lines.len() + 1 > rows {
+            lines.retain(|l| {
+                l.spans
+                    .first()
+                    .is_none_or(|s| s.content.trim() != "impulse")
+            });
+        }
+        let parks_last = labelled(&lines, "parks").is_some_and(|k| k + 1 == lines.len());
+        if (lines.len() < rows || lines.len() == rows && parks_last)
+            && let Some(k) = labelled(&lines, "optimum")
+        {
+            let tags = lines
+                .get(k + 1)
+                .is_some_and(|l| l.spans.first().is_some_and(|s| s.content.trim().is_empty()));
+            lines.insert(k + 1 + usize::from(tags), paper);
+        }
     }
     // A batted ball's readout has room for the given air too, and for the
     // models in force (Nathan's unless chosen: not the swing's).
