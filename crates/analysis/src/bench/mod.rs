@@ -240,15 +240,11 @@ fn median(mut samples: Vec<f64>) -> f64 {
 /// wall clock, it does not count time spent waiting for a core that other
 /// programs hold, so it measures the code on a shared machine.
 #[cfg(unix)]
-#[allow(unsafe_code)] // std has no process CPU clock.
 fn cpu_ns() -> Option<u64> {
-    let mut now = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: clock_gettime writes one timespec to a valid pointer.
-    let status = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut now) };
-    (status == 0).then(|| now.tv_sec as u64 * 1_000_000_000 + now.tv_nsec as u64)
+    // std has no process CPU clock; rustix asks it without unsafe code.
+    let now = rustix::time::clock_gettime(rustix::time::ClockId::ProcessCPUTime);
+    let ns = u64::try_from(now.tv_sec).ok()? * 1_000_000_000;
+    Some(ns + u64::try_from(now.tv_nsec).ok()?)
 }
 
 #[cfg(not(unix))]
