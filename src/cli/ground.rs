@@ -13,7 +13,7 @@ use crate::analysis::precision::Purpose;
 use crate::model::clearing::{Clearing, Outcome};
 use crate::model::flight::FlightSummary;
 use crate::model::launch::{self, BattedBall};
-use crate::model::many::judge_many;
+use crate::model::many::judged_in_own_air;
 use crate::model::park::{self, GivenWeather, Park};
 use crate::preset::parks::Parks;
 use crate::preset::{FIELD_KEYS, Preset, escape_cut, escape_for_terminal};
@@ -116,18 +116,7 @@ impl FlownToFence {
         let (summary, mut clearings) = flight.judge(&options, &fences);
         let clearing = clearings.remove(0);
         if let Some((list, given)) = own_air {
-            // A flight per park, flown in lock-step.
-            let fences: Vec<[&park::Fence; 1]> = list.parks.iter().map(|p| [&p.fence]).collect();
-            let flights = list.parks.iter().zip(&fences).map(|(park, fence)| {
-                let mut there = *scene;
-                given.park_air(&mut there.environment, park.elevation);
-                (launch::scene_start(&there).0, &fence[..])
-            });
-            let mut judged = vec![None; fences.len()];
-            judge_many(flights, &options, |k, summary, crossings| {
-                judged[k] = Some(Clearing::judge(fences[k][0], crossings[0], &summary));
-            });
-            clearings = judged.into_iter().flatten().collect();
+            clearings = judged_in_own_air(scene, &list.parks, given, &options);
         }
         FlownToFence {
             launch,

@@ -180,7 +180,7 @@ pub(crate) fn fly_chunk(
             direction_from: ready.direction_from,
         }));
     }
-    fly_in_own_air(&in_own_air, setup, &options, &mut scratch.clearings);
+    park_air::fly_alone(&in_own_air, parks, &options, &mut scratch.clearings);
     park_air::settle(pending, parks, &options, &mut scratch.clearings);
     scratch
         .cleared
@@ -190,28 +190,6 @@ pub(crate) fn fly_chunk(
         let cleared = &scratch.cleared[row.cleared_from..][..count];
         row.parks_cleared = cleared.iter().filter(|&&c| c).count();
     }
-}
-
-/// Flies each `(slot, flight)` to its park's fence (the slot's place among
-/// a row's parks) and judges it there, into `clearings[slot]`.
-fn fly_in_own_air(
-    flights: &[(usize, SceneFlight)],
-    setup: &Setup,
-    options: &FlightOptions,
-    clearings: &mut [Clearing],
-) {
-    let count = setup.fences.len();
-    let fence_of = |slot: usize| std::slice::from_ref(&setup.fences[slot % count]);
-    many::judge_many(
-        flights
-            .iter()
-            .map(|(slot, flight)| (*flight, fence_of(*slot))),
-        options,
-        |index, summary, crossing| {
-            let slot = flights[index].0;
-            clearings[slot] = Clearing::judge(fence_of(slot)[0], crossing[0], &summary);
-        },
-    );
 }
 
 /// Flies each row once to the ground, noting where it crosses its own fence

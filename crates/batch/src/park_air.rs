@@ -14,9 +14,10 @@
 //! the flights it has; a round settles at least the park it flies.
 //!
 //! How far a flight moves with the air is bounded by measurement: every
-//! row of a season of Statcast (124,551 balls in play) flown in each of
-//! the 30 parks' air against its own (docs/parks.md, "Each park in its own
-//! air"). The bounds below are several times the largest change seen, and
+//! row of April 2024 (22,910 balls in play, five times over) flown in each
+//! of the 30 parks' air against its own (docs/parks.md, "Each park in its
+//! own air, in a batch"). The bounds below are 2.4 times the largest
+//! change seen, and
 //! hold only where the air acts through its density alone: a drag without
 //! a Reynolds number (Nathan's or a constant C_D) and a launch that does
 //! not come out of an impact in that air. Any other row is flown in every
@@ -26,7 +27,7 @@ use model::aero::DragModel;
 use model::atmosphere::Air;
 use model::clearing::{Clearing, Landing};
 use model::flight::{FlightOptions, FlightSummary};
-use model::launch;
+use model::launch::{self, SceneFlight};
 use model::many;
 use model::park::{Fence, GivenWeather, Park};
 use model::scene::{Environment, Scene, SceneKind};
@@ -163,14 +164,10 @@ pub(crate) fn settle(
         };
         if last {
             // Each park left flown in its air to its own fence alone.
-            let flights = round
-                .iter()
-                .map(|pair| (air_of(pair), std::slice::from_ref(&parks[pair.1])));
-            many::judge_many(flights, options, |flown, flight, crossing| {
-                let (index, park) = round[flown];
-                clearings[rows[index].from + park] =
-                    Clearing::judge(parks[park], crossing[0], &flight);
-            });
+            let flights: Vec<_> = (round.iter())
+                .map(|pair| (rows[pair.0].from + pair.1, air_of(pair)))
+                .collect();
+            fly_alone(&flights, parks, options, clearings);
             return;
         }
         let fences: Vec<Vec<&Fence>> = (open.iter())
@@ -198,6 +195,25 @@ pub(crate) fn settle(
     }
 }
 
+/// Flies each `(slot, flight)` to its park's fence alone (the slot's place
+/// among a row's parks, which start at a multiple of their number) and
+/// judges it there, into `clearings[slot]`.
+pub(crate) fn fly_alone(
+    flights: &[(usize, SceneFlight)],
+    parks: &[&Fence],
+    options: &FlightOptions,
+    clearings: &mut [Clearing],
+) {
+    let fence_of = |slot: usize| std::slice::from_ref(&parks[slot % parks.len()]);
+    let fenced = flights
+        .iter()
+        .map(|(slot, flight)| (*flight, fence_of(*slot)));
+    many::judge_many(fenced, options, |index, summary, crossing| {
+        let slot = flights[index].0;
+        clearings[slot] = Clearing::judge(fence_of(slot)[0], crossing[0], &summary);
+    });
+}
+
 /// Rounds of flights to every fence before the parks left are flown each
 /// to its own fence.
 const REFERENCE_ROUNDS: usize = 2;
@@ -211,7 +227,7 @@ pub(crate) fn settles(scene: &Scene) -> bool {
 }
 
 /// The relative change in density from `own` to `there` (kg/m³).
-pub(crate) fn density_change(own: f64, there: f64) -> f64 {
+fn density_change(own: f64, there: f64) -> f64 {
     ((there - own) / own).abs()
 }
 
@@ -220,7 +236,7 @@ pub(crate) fn density_change(own: f64, there: f64) -> f64 {
 /// whose density differs from its own by the fraction `change`: false
 /// where that air could move the verdict, and the park must be flown in
 /// its own air.
-pub(crate) fn settled(
+fn settled(
     home: &Clearing,
     (launch_direction, flight): (f64, &FlightSummary),
     fence: &Fence,
@@ -248,7 +264,8 @@ pub(crate) fn settled(
     };
     // A flight that comes down before the wall, continued down its
     // landing line: a falling ball's track only steepens, so the line is
-    // as high as it could be at the wall.
+    // as high as it could be at the wall (and no lower than the field
+    // where it has landed short: the band then starts from the ground).
     let continued = |distance: f64| -(distance - flight.range.abs()) * flight.landing_angle.tan();
     let slope = flight.landing_angle.tan().abs().max(1.0);
     let band = HEIGHT_PER_DENSITY * change * fair.farthest * slope;

@@ -213,17 +213,13 @@ fn alone(scene: &Scene, fence: &model::park::Fence, parks: &[model::park::Park])
     let options = Purpose::Readout.flight_options();
     let (flight, launch, _) = launch::scene_start(scene);
     let (summary, clearings) = flight.judge(&options, &[fence]);
-    let at_park = |park: &model::park::Park| {
-        let mut there = *scene;
-        model::park::GivenWeather::default().park_air(&mut there.environment, park.elevation);
-        let (flight, _, _) = launch::scene_start(&there);
-        flight.judge(&options, &[&park.fence]).1[0].clears()
-    };
+    let given = model::park::GivenWeather::default();
+    let at_parks = model::many::judged_in_own_air(scene, parks, given, &options);
     Alone {
         launch,
         flight: summary,
         clearing: clearings[0],
-        parks_cleared: parks.iter().filter(|park| at_park(park)).count(),
+        parks_cleared: at_parks.iter().filter(|c| c.clears()).count(),
     }
 }
 

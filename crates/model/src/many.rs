@@ -12,11 +12,13 @@
 //! the flights finish, each with its index in the list.
 
 use super::aero::DragModel;
+use super::clearing::Clearing;
 use super::clearing::{Crossing, planar_reach, spatial_reach, watch_planar, watch_spatial};
 use super::flight::lanes::{LaneDone, LaneJob, LaneReports, fly_lanes};
 use super::flight::{FlightOptions, FlightSummary, RangeSummary, Start};
-use super::launch::SceneFlight;
-use super::park::Fence;
+use super::launch::{self, SceneFlight};
+use super::park::{Fence, GivenWeather, Park};
+use super::scene::Scene;
 use numerics::ode::lanes::FirstSteps;
 
 /// Flies every flight of `flights`, calling `done(index, summary)` for
@@ -60,6 +62,32 @@ fn fly_groups(
             done,
         );
     }
+}
+
+/// `scene` judged at each of `parks`, in order, on a flight of its own in
+/// that park's air (the standard air at its elevation, the weather
+/// `given` kept: [`GivenWeather::park_air`]), flown in lock-step: what
+/// `fly --park` gives at each.
+pub fn judged_in_own_air(
+    scene: &Scene,
+    parks: &[Park],
+    given: GivenWeather,
+    options: &FlightOptions,
+) -> Vec<Clearing> {
+    let fences: Vec<&Fence> = parks.iter().map(|p| &p.fence).collect();
+    let flights = parks.iter().zip(&fences).map(|(park, fence)| {
+        let mut there = *scene;
+        given.park_air(&mut there.environment, park.elevation);
+        (launch::scene_start(&there).0, std::slice::from_ref(fence))
+    });
+    let mut judged = vec![None; parks.len()];
+    judge_many(flights, options, |k, summary, crossings| {
+        judged[k] = Some(Clearing::judge(fences[k], crossings[0], &summary));
+    });
+    judged
+        .into_iter()
+        .map(|c| c.expect("every park flown"))
+        .collect()
 }
 
 /// As [`fly_many`], each flight taken to its fences (`fences[k]` for the

@@ -9,7 +9,6 @@ use ratatui::layout::Rect;
 use super::*;
 use crate::format::on_step;
 use crate::layout::FieldMap;
-use model::clearing::Clearing;
 use model::frame::direction_of;
 use model::many;
 use model::park::{self, GivenWeather};
@@ -136,18 +135,9 @@ impl App {
         } else {
             None
         };
-        let walls: Vec<&park::Fence> = parks.iter().map(|p| &p.fence).collect();
-        let in_own_air: Vec<_> = (parks.iter().zip(&walls))
-            .map(|(park, wall)| {
-                let mut there = self.scene;
-                GivenWeather::default().park_air(&mut there.environment, park.elevation);
-                (scene_start(&there).0, std::slice::from_ref(wall))
-            })
-            .collect();
-        let mut cleared = 0;
-        many::judge_many(in_own_air, &options, |k, flight, crossing| {
-            cleared += usize::from(Clearing::judge(walls[k], crossing[0], &flight).clears());
-        });
+        let in_own_air =
+            many::judged_in_own_air(&self.scene, parks, GivenWeather::default(), &options);
+        let cleared = in_own_air.iter().filter(|c| c.clears()).count();
         self.at_parks = Some(AtParks {
             cleared,
             of: parks.len(),
