@@ -144,11 +144,13 @@ fn run_batch(
     let stdout = std::io::stdout().lock();
     setup.escape_kept = stdout.is_terminal();
     let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
-    let mut err = std::io::stderr().lock();
-    let erase = err.is_terminal();
+    // stderr is locked for each line only: the progress line's thread
+    // writes there too, and the run waits for it (held across the run, the
+    // lock hung every batch on a terminal that lasted past a second).
+    let erase = std::io::stderr().is_terminal();
     let mut note = |message: &str| {
         let erase = if erase { "\r\x1b[K" } else { "" };
-        let _ = writeln!(err, "{erase}homerun: {message}");
+        let _ = writeln!(std::io::stderr().lock(), "{erase}homerun: {message}");
     };
     let input = batch::open(args.source).map_err(|e| refused(args.source, e))?;
     let shown = Shown(cli.units);
