@@ -149,6 +149,7 @@ pub(crate) fn fly_chunk(
                     flights: vec![park_air::Reference {
                         density: own.air_density,
                         flight: summary,
+                        slack: 0.0,
                         clearings: scratch.clearings[from..]
                             .iter()
                             .copied()

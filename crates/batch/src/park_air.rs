@@ -23,6 +23,7 @@
 //! not come out of an impact in that air. Any other row is flown in every
 //! park's air.
 
+use analysis::precision::Purpose;
 use model::aero::DragModel;
 use model::atmosphere::Air;
 use model::clearing::{Clearing, Landing};
@@ -102,19 +103,33 @@ pub(crate) struct Pending {
 pub(crate) struct Reference {
     pub density: f64,
     pub flight: FlightSummary,
+    /// How far (m) its heights and ranges may lie from the readout's: 0
+    /// for the row's own flight, [`VERDICT_SLACK`] for one flown at the
+    /// solve's precision.
+    pub slack: f64,
     /// At each park it was judged at (the row's own: every park).
     pub clearings: Vec<Option<Clearing>>,
 }
 
+/// The flights that settle parks are flown at the solve's precision
+/// ([`Purpose::Solve`]: within 3e-5 m of the readout's in range, 1e-8 rad
+/// in direction, docs/speed.md), a third of the readout's cost, and read
+/// as if their heights and ranges could be this far (m) from the
+/// readout's: 300 times that. A verdict they cannot give so is flown again
+/// at the readout's precision, so that each park's is the one `fly --park`
+/// gives.
+pub(crate) const VERDICT_SLACK: f64 = 0.01;
+
 /// Settles every park of every row of `rows` in rounds (see above): each
 /// park's verdict into `clearings[row.from + park]`, from a flight whose
-/// air settles it.
+/// air settles it. `options` is the readout's precision.
 pub(crate) fn settle(
     mut rows: Vec<Pending>,
     parks: &[&Fence],
     options: &FlightOptions,
     clearings: &mut [Clearing],
 ) {
+    let cheap = Purpose::Solve.flight_options();
     let mut done: Vec<bool> = vec![false; rows.len() * parks.len()];
     for round_number in 0.. {
         let last = round_number == REFERENCE_ROUNDS;
@@ -133,7 +148,8 @@ pub(crate) fn settle(
                 let by = row.flights.iter().find_map(|flight| {
                     let judged = flight.clearings[park]?;
                     let launched = (row.launch_direction, &flight.flight);
-                    settled(&judged, launched, fence, change(flight)).then_some(judged)
+                    settled(&judged, launched, fence, (change(flight), flight.slack))
+                        .then_some(judged)
                 });
                 match by {
                     Some(judged) => {
@@ -163,11 +179,27 @@ pub(crate) fn settle(
             launch::scene_start(&there).0
         };
         if last {
-            // Each park left flown in its air to its own fence alone.
+            // Each park left flown in its air to its own fence alone, and
+            // again at the readout's precision where that is not sure.
             let flights: Vec<_> = (round.iter())
                 .map(|pair| (rows[pair.0].from + pair.1, air_of(pair)))
                 .collect();
-            fly_alone(&flights, parks, options, clearings);
+            let mut unsure = Vec::new();
+            let fence_of = |slot: usize| std::slice::from_ref(&parks[slot % parks.len()]);
+            let fenced = (flights.iter()).map(|(slot, flight)| (*flight, fence_of(*slot)));
+            many::judge_many(fenced, &cheap, |index, summary, crossing| {
+                let (slot, flight) = flights[index];
+                let fence = fence_of(slot)[0];
+                let judged = Clearing::judge(fence, crossing[0], &summary);
+                let launch_direction = rows[round[index].0].launch_direction;
+                let sure = (launch_direction, &summary);
+                if settled(&judged, sure, fence, (0.0, VERDICT_SLACK)) {
+                    clearings[slot] = judged;
+                } else {
+                    unsure.push((slot, flight));
+                }
+            });
+            fly_alone(&unsure, parks, options, clearings);
             return;
         }
         let fences: Vec<Vec<&Fence>> = (open.iter())
@@ -176,7 +208,7 @@ pub(crate) fn settle(
         let flights: Vec<_> = (round.iter().zip(&fences))
             .map(|(pair, fences)| (air_of(pair), fences.as_slice()))
             .collect();
-        many::judge_many(flights, options, |flown, flight, crossings| {
+        many::judge_many(flights, &cheap, |flown, flight, crossings| {
             let (index, park) = round[flown];
             let landing = Landing::of(&flight);
             let mut judged = vec![None; parks.len()];
@@ -189,6 +221,7 @@ pub(crate) fn settle(
             row.flights.push(Reference {
                 density: row.airs[park].density,
                 flight,
+                slack: VERDICT_SLACK,
                 clearings: judged,
             });
         });
@@ -233,22 +266,23 @@ fn density_change(own: f64, there: f64) -> f64 {
 
 /// Whether the row's own flight (launched toward `launch_direction`,
 /// `flight`, judged at `fence` as `home`) gives its verdict there in an air
-/// whose density differs from its own by the fraction `change`: false
-/// where that air could move the verdict, and the park must be flown in
-/// its own air.
+/// whose density differs from its own by the fraction `change`, its
+/// heights and ranges known to `slack` (m): false where that air or that
+/// slack could move the verdict, and the park must be flown in its own air
+/// (or at the readout's precision).
 fn settled(
     home: &Clearing,
     (launch_direction, flight): (f64, &FlightSummary),
     fence: &Fence,
-    change: f64,
+    (change, slack): (f64, f64),
 ) -> bool {
-    if change == 0.0 {
+    if change == 0.0 && slack == 0.0 {
         return true;
     }
     if !flight.landed {
         return false;
     }
-    let reach = flight.range.abs() * (1.0 + RANGE_PER_DENSITY * change);
+    let reach = flight.range.abs() * (1.0 + RANGE_PER_DENSITY * change) + slack;
     if home.height_at_fence.is_none() && reach < fence.nearest() {
         // Short of every wall of the park, whatever the air.
         return true;
@@ -268,7 +302,7 @@ fn settled(
     // where it has landed short: the band then starts from the ground).
     let continued = |distance: f64| -(distance - flight.range.abs()) * flight.landing_angle.tan();
     let slope = flight.landing_angle.tan().abs().max(1.0);
-    let band = HEIGHT_PER_DENSITY * change * fair.farthest * slope;
+    let band = HEIGHT_PER_DENSITY * change * fair.farthest * slope + slack;
     match home.height_at_fence {
         None => reach < fair.nearest || continued(fair.nearest).max(0.0) + band < fair.lowest,
         Some(height) => {
@@ -305,9 +339,11 @@ impl Window {
     fn of(fence: &Fence, from: f64, to: f64) -> Window {
         let ends = [fence.at(from), fence.at(to)];
         let all_fair = ends.iter().all(Option::is_some);
-        let inside = (fence.points().iter())
-            .filter(|p| p.direction > from && p.direction < to)
-            .map(|p| (p.distance, p.height));
+        // The points are in order of direction: those strictly between.
+        let points = fence.points();
+        let first = points.partition_point(|p| p.direction <= from);
+        let past = points.partition_point(|p| p.direction < to);
+        let inside = (points[first..past.max(first)].iter()).map(|p| (p.distance, p.height));
         let mut fair: Option<Walls> = None;
         for (distance, height) in ends
             .into_iter()

@@ -73,3 +73,63 @@ fn each_park_counts_a_row_in_its_own_air_as_a_flight_there_would() {
         );
     }
 }
+
+/// A ball that clears a park's wall by a micrometre in that park's air, or
+/// misses it by one, gets the verdict `fly` gives it there: the flights
+/// that settle parks fly at the solve's precision (some 1e-5 m off the
+/// readout's), and a verdict nearer than [`park_air::VERDICT_SLACK`] is
+/// flown again at the readout's.
+#[test]
+fn a_ball_on_the_top_of_a_wall_is_judged_as_it_is_alone() {
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
+    let options = Purpose::Readout.flight_options();
+    let given = model::park::GivenWeather::default();
+    let home = parks.parks.iter().find(|p| p.code == "BOS").unwrap();
+    let mut input = String::from(
+        "launch.speed,launch.angle,launch.spin,launch.direction,launch.sidespin,home_team\n",
+    );
+    let mut wanted = Vec::new();
+    for (k, code) in ["COL", "NYY", "SEA", "HOU"].iter().enumerate() {
+        let k = k as f64;
+        let index = parks.parks.iter().position(|p| p.code == *code).unwrap();
+        let launch = |speed: f64| [speed, 0.5 + 0.03 * k, 200.0, 0.3 * k - 0.45, 0.0];
+        // The ball's height over the wall there, in that park's air.
+        let margin = |speed: f64| {
+            let mut scene = launched(&preset.scene, &launch(speed));
+            given.park_air(&mut scene.environment, home.elevation);
+            model::many::judged_in_own_air(&scene, &parks.parks, given, &options)[index]
+                .margin
+                .unwrap_or(f64::NAN)
+        };
+        // Bisection on the launch speed onto the wall's top.
+        let (mut low, mut high) = (30.0, 60.0);
+        assert!(margin(low) < 0.0 && margin(high) > 0.0, "{code}");
+        while high - low > 1e-13 * high {
+            let middle = 0.5 * (low + high);
+            if margin(middle) > 0.0 {
+                high = middle;
+            } else {
+                low = middle;
+            }
+        }
+        for speed in [low, high] {
+            let over = margin(speed);
+            assert!(over.abs() < 1e-6, "{code}: {over}");
+            let cells: Vec<String> = launch(speed).iter().map(f64::to_string).collect();
+            input += &format!("{},BOS\n", cells.join(","));
+            let mut scene = launched(&preset.scene, &launch(speed));
+            given.park_air(&mut scene.environment, home.elevation);
+            wanted.push(alone(&scene, &home.fence, &parks.parks).parks_cleared);
+        }
+    }
+    let setup = Setup::new(&preset, &parks);
+    let (out, _, _) = run(&setup, &input, false, Shown::default());
+    let mut lines = out.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let at = header.iter().position(|h| *h == "parks_cleared").unwrap();
+    let counted: Vec<usize> = lines
+        .map(|line| line.split(',').nth(at).unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(counted, wanted);
+}
