@@ -114,6 +114,18 @@ impl Slip {
         (self.across * (-2.0 * self.ratio * t).exp() + self.along * (-2.0 * t).exp()).sqrt()
     }
 
+    /// dP/dT and d²P/dT² at T: with f = â·e^(−2rT) + b̂·e^(−2T) under the
+    /// root, (√f)' = f'/(2√f).
+    fn slope_and_bend(&self, t: f64) -> (f64, f64) {
+        let (across, along) = (
+            self.across * (-2.0 * self.ratio * t).exp(),
+            self.along * (-2.0 * t).exp(),
+        );
+        let slope = (across + along).sqrt();
+        let f_slope = -2.0 * (self.ratio * across + along);
+        (slope, f_slope / (2.0 * slope))
+    }
+
     /// The slip at scaled time T.
     fn at_time(&self, t: f64) -> Vector2<f64> {
         Vector2::new(
@@ -260,7 +272,11 @@ impl Slip {
             } else {
                 low = t;
             }
-            let mut next = t - miss / slope(t);
+            // Halley's step (cubic, where Newton's is quadratic): one
+            // piece fewer to integrate, from the same two exponentials.
+            let (slope_here, bend) = self.slope_and_bend(t);
+            let mut next =
+                t - 2.0 * miss * slope_here / (2.0 * slope_here * slope_here - miss * bend);
             if !(next > low && next < high) {
                 next = 0.5 * (low + high);
             }
