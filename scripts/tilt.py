@@ -236,6 +236,7 @@ def main(data):
         f"{sized[sized.band == b].m.median():,.0f} measured, "
         f"{sized[sized.band == b].e.median():,.0f} Nathan's" for b in LABELS) + " |\n")
 
+    lift_2018 = {}  # the lift factor by band that 2018's hang times ask for
     for title, (frame, keep) in seasons.items():
         frame = frame.dropna(subset=[c for c in ("launch_speed", "EXIT_SPEED") if c in frame])
         frame = frame.reset_index(drop=True)
@@ -306,6 +307,13 @@ def main(data):
               if "hc_x" in frame else []):
             rows = fly(frame, args, keep=keep)
             table(name, rows, error_ft(rows), out)
+        if lift_2018 and "hc_x" in frame:
+            # A held-out check: 2018's hang-time lift by band, on this season.
+            f = frame.copy()
+            f["model.lift_scale"] = band(f.launch_angle).map(lift_2018).astype(float).fillna(1.0)
+            rows = fly(f, keep=keep)
+            table("the lift by band that 2018's hang times ask for (Nathan's estimate)", rows,
+                  error_ft(rows), out)
         # The catch: a ball caught in the air is caught above the ground;
         # its distance, were Statcast's measured at the glove, would be
         # short of the model's landing by h / tan(landing angle).
@@ -337,6 +345,8 @@ def main(data):
                 f = f[f.measured_spin > 0] if name != "Nathan's estimate (the default)" else f
                 extra = [c for c in ("launch.spin", "launch.sidespin") if c in f]
                 k = calibrate_by_band(f, cols + extra)
+                if name == "Nathan's estimate (the default)":
+                    lift_2018.update({x: float(k[x][2]) for x in k})
                 out.append(f"| {name} | " + " | ".join(
                     f"{k[x][0]} / {k[x][2]}" if x in k else "" for x in LABELS) + " |")
             out.append("")
