@@ -147,7 +147,13 @@ def axes_table(data, out):
         n = frame.groupby("band", observed=False)[col].size()
         out.append(f"| {name} | " + " | ".join(fmt.format(m[b]) + f" ({n[b]})" for b in LABELS)
                    + " |")
-    out.append("")
+    cells = []
+    for name, frame in [("Yakkertech", y), ("Trackman", t)]:
+        low = frame[frame.band == LABELS[0]]
+        speeds = pd.cut(low.ExitSpeed, [0, 85, 95, 130], labels=["< 85", "85–95", "95+"])
+        m = low.groupby(speeds, observed=False).back.median()
+        cells.append(f"{name} " + ", ".join(f"{k} mph {v:.2f}" for k, v in m.items()))
+    out.append("\nBackspin share at 10–20° by exit speed: " + "; ".join(cells) + "\n")
     return (y.groupby("band", observed=False)["back"].median(),
             t.groupby("band", observed=False)["back"].median())
 
@@ -314,6 +320,16 @@ def main(data):
             rows = fly(f, keep=keep)
             table("the lift by band that 2018's hang times ask for (Nathan's estimate)", rows,
                   error_ft(rows), out)
+            # The same at the season's own level: the drag alone fitted by
+            # `calibrate --drag-only` (one factor on every band: a level, not a shape).
+            fit = subprocess.run([BINARY, "calibrate", "-", "--drag-only"],
+                                 input=frame.to_csv(index=False), capture_output=True, text=True,
+                                 check=True)
+            level = re.search(r"model.drag_scale = ([\d.]+)", fit.stdout + fit.stderr).group(1)
+            for name, g in [(f"the season's level (drag {level}, `calibrate --drag-only`)", frame),
+                            ("the season's level and 2018's lift by band", f)]:
+                rows = fly(g, ["--set", f"model.drag_scale={level}"], keep=keep)
+                table(name, rows, error_ft(rows), out)
         # The catch: a ball caught in the air is caught above the ground;
         # its distance, were Statcast's measured at the glove, would be
         # short of the model's landing by h / tan(landing angle).
