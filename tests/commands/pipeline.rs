@@ -125,6 +125,21 @@ fn stdout_holds_rows_only_and_the_summary_goes_to_stderr_or_its_file() {
         err.contains(&format!("median difference {median:+.1} ft")),
         "{err}"
     );
+    // At each row's park the difference is the model's error there; at
+    // --park, that park's air against where each ball was hit, and said.
+    assert!(summary["difference"].get("flown_in_air_of").is_none());
+    with_file.extend(["--park", "COL"]);
+    let (_, err, status) = run(&with_file, b"");
+    assert_eq!(status, 0, "{err}");
+    let at_coors: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    assert_eq!(at_coors["difference"]["flown_in_air_of"], "COL");
+    let thinner = at_coors["difference"]["median_ft"].as_f64().unwrap();
+    assert!(thinner > median + 10.0, "{thinner} against {median}");
+    assert!(
+        err.contains("ft (flown in COL's air, hit_distance_sc where each ball was hit)"),
+        "{err}"
+    );
     // JSON rows too.
     let (out, _, _) = run(&["fly", "--batch", HOME_RUNS, "--json", "--summary"], b"");
     assert!(out.lines().all(|l| {

@@ -327,7 +327,13 @@ fn a_savant_batch_prints_its_units_and_one_summary() {
         "{}",
         summary[0]
     );
-    assert!(summary[0].ends_with(" ft"), "{}", summary[0]);
+    // At --park the difference is another park's air against where each
+    // ball was hit (13 at Coors among them), and says so.
+    assert!(
+        summary[0].ends_with(" ft (flown in BOS's air, hit_distance_sc where each ball was hit)"),
+        "{}",
+        summary[0]
+    );
     // stdout holds the rows alone; the summary and its tables go to stderr.
     let (out, err) = run(&["fly", "--park", "BOS", "--summary", "--batch", file]);
     assert!(!out.contains("summary:"), "{out}");
@@ -338,7 +344,10 @@ fn a_savant_batch_prints_its_units_and_one_summary() {
         summary.starts_with("homerun: summary: flown 248 rows"),
         "{summary}"
     );
-    assert!(summary.ends_with(" m"), "{summary}");
+    assert!(
+        summary.ends_with(" m (flown in BOS's air, hit_distance_sc where each ball was hit)"),
+        "{summary}"
+    );
     // Issue 26, item 4: then the error by launch-angle band, each band's
     // median the median of its rows' `difference`.
     let at = (lines.iter())

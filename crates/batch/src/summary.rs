@@ -186,6 +186,15 @@ impl Tally {
                 unit.show(self.differences.median_abs()),
                 unit.symbol
             );
+            if let Some(i) = setup.park {
+                // Not the model's error: another park's air against the
+                // distance each ball went where it was hit.
+                let code = preset::escape_cut(&setup.parks.parks[i].code, 20);
+                let _ = write!(
+                    line,
+                    " (flown in {code}'s air, hit_distance_sc where each ball was hit)"
+                );
+            }
         }
         line
     }
