@@ -431,3 +431,48 @@ fn calibrate_impact_names_the_rows_it_skips() {
         "{out}"
     );
 }
+
+/// A Trackman or Yakkertech file names a college or summer team in
+/// HomeTeam and "Undefined" in BatterSide: each such ball is answered (at
+/// no park, its spin estimated as either side's average), counted and
+/// named in the summary, where every such row was refused before and the
+/// whole file gave nothing (exit 1). A side that is no side at all is
+/// still refused, naming it.
+#[test]
+fn a_league_team_and_an_undefined_side_are_answered_at_no_park() {
+    let text = "ExitSpeed,Angle,Direction,BatterSide,HomeTeam\n\
+                95,28,10,Right,LIN_POT\n\
+                95,28,10,Undefined,LIN_POT\n\
+                95,28,10,Left,BOS\n";
+    let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    let rows: Vec<Vec<&str>> = out.lines().map(|l| l.split(',').collect()).collect();
+    let column = |name: &str| rows[0].iter().position(|c| *c == name).unwrap();
+    let (park, outcome) = (column("park"), column("outcome"));
+    let shown: Vec<(&str, &str)> = rows[1..].iter().map(|r| (r[park], r[outcome])).collect();
+    assert_eq!(shown[..2], [("none", "no_park"), ("none", "no_park")]);
+    assert_eq!(shown[2].0, "BOS");
+    // The undefined side averages the two: its sidespin lies halfway.
+    let sidespin = column("launch.sidespin");
+    let spins: Vec<f64> = rows[1..]
+        .iter()
+        .map(|r| r[sidespin].parse().unwrap())
+        .collect();
+    assert!(spins[0] > spins[2] + 100.0, "{spins:?}");
+    assert!(
+        (spins[1] - 0.5 * (spins[0] + spins[2])).abs() < 0.01,
+        "{spins:?}"
+    );
+    assert!(
+        err.contains("1 row whose batter's side is given as not known"),
+        "{err}"
+    );
+    assert!(
+        err.contains("2 rows whose home_team no park answers to (LIN_POT) at no park"),
+        "{err}"
+    );
+    let nonsense = text.replace("Undefined", "X9");
+    let (_, err, status) = run(&["fly", "--batch", "-"], nonsense.as_bytes());
+    assert_eq!(status, 1, "{err}");
+    assert!(err.contains("stand = \"X9\": expected R or L"), "{err}");
+}

@@ -33,6 +33,12 @@ pub(crate) struct Job {
     pub(crate) fence: Fence,
     /// The index of the row's park, if it is at one.
     pub(crate) park: Option<usize>,
+    /// Its `home_team`, where no park answers to it (a college or summer
+    /// league's team in a Trackman file): the row is at no park, and the
+    /// summary names the code, where the row was refused before.
+    pub(crate) unknown_park: Option<String>,
+    /// Its batter's side was given as not known ([`SavantCells::side_unknown`]).
+    pub(crate) side_unknown: bool,
     /// A fence was given (the preset's `[field]`, `field.*` by --set or a
     /// column): a row at no park is judged there.
     pub(crate) fence_given: bool,
@@ -149,6 +155,8 @@ pub(crate) fn parse_row(
         launch: RowLaunch::default(),
         fence: setup.base.fence.unwrap_or(Fence::generic()),
         park: None,
+        unknown_park: None,
+        side_unknown: false,
         // The presets' [field] is the explorer's drawing, no park's wall.
         fence_given: FIELD_KEYS.iter().any(|k| setup.gave(k.name)),
         statcast: None,
@@ -196,6 +204,7 @@ fn read_cells(
         fence,
         given,
         fence_given,
+        unknown_park,
         ..
     } = job;
     let mut savant = SavantCells::default();
@@ -226,6 +235,10 @@ fn read_cells(
                 Err(format!("{} is empty", LAUNCH_KEYS[index]))
             }
             _ if value.is_empty() => Ok(()), // the preset's value
+            Column::Savant(SavantColumn::HomeTeam) if setup.park_of(value).is_none() => {
+                *unknown_park = Some(cut(value, 20));
+                Ok(())
+            }
             Column::Savant(column) => savant.read(column, value, setup),
             Column::Swing(column, range) => tracked.read((column, range), value),
             // A launch.* cell as `--set` takes it (`103mph`).
@@ -347,6 +360,7 @@ fn read_cells(
     job.park = park;
     job.contact = contact;
     job.called = savant.called;
+    job.side_unknown = savant.side_unknown;
     job.tracked = tracked;
     job.spray_at_plate = savant.at_plate() && !header.direction_given;
     (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);
@@ -381,6 +395,8 @@ pub(crate) struct SavantCells {
     pub hc_x: Option<f64>,
     pub hc_y: Option<f64>,
     pub side: Option<Side>,
+    /// The side was given as not known ("Undefined", "Switch").
+    pub side_unknown: bool,
     /// The index of the row's park in the list.
     pub park: Option<usize>,
     /// Statcast's distance (m).
@@ -437,6 +453,13 @@ impl SavantCells {
                 self.side = Some(match value.to_ascii_lowercase().as_str() {
                     "r" | "right" => Side::Right,
                     "l" | "left" => Side::Left,
+                    // Trackman's and Yakkertech's words for a side not
+                    // recorded: the estimate averages the two sides
+                    // (`Side::sign`), and the summary counts the rows.
+                    "undefined" | "unknown" | "switch" | "s" | "b" | "both" => {
+                        self.side_unknown = true;
+                        return Ok(());
+                    }
                     _ => {
                         return Err(format!(
                             "stand = {:?}: expected R or L (the batter's side)",
@@ -445,15 +468,9 @@ impl SavantCells {
                     }
                 });
             }
-            SavantColumn::HomeTeam => {
-                let park = setup.park_of(value);
-                self.park = Some(park.ok_or_else(|| {
-                    format!(
-                        "home_team = {:?}: no park has that code (`homerun parks` lists them)",
-                        escape_cut(value, 20)
-                    )
-                })?);
-            }
+            // A code no park answers to leaves the row at no park, named in
+            // the summary ([`Job::unknown_park`]).
+            SavantColumn::HomeTeam => self.park = setup.park_of(value),
         }
         Ok(())
     }

@@ -127,6 +127,23 @@ impl Tally {
         if self.at_no_park > 0 && parks > 0 {
             parts.push(format!("{} rows at no park", self.at_no_park));
         }
+        if self.side_unknown > 0 {
+            parts.push(format!(
+                "{} row{} whose batter's side is given as not known (Undefined, Switch) spin-estimated \
+                 as either side's average",
+                self.side_unknown,
+                plural(self.side_unknown)
+            ));
+        }
+        if self.at_unknown_park > 0 {
+            parts.push(format!(
+                "{} row{} whose home_team no park answers to ({}) at no park (`homerun parks` \
+                 lists the codes; --park judges every row at one)",
+                self.at_unknown_park,
+                plural(self.at_unknown_park),
+                self.unknown_codes()
+            ));
+        }
         if self.without_speed > 0 {
             parts.push(format!(
                 "skipped {} row{} without a launch speed (not batted balls)",
@@ -135,6 +152,16 @@ impl Tally {
             ));
         }
         (!parts.is_empty()).then(|| parts.join("; "))
+    }
+
+    /// "LIN_POT, Normal Cornbelters, …": the codes no park answers to.
+    fn unknown_codes(&self) -> String {
+        let named: Vec<String> = (self.unknown_parks.iter())
+            .map(|(code, _)| preset::escape_cut(code, 20))
+            .collect();
+        let shown: usize = self.unknown_parks.iter().map(|(_, n)| n).sum();
+        let more = shown < self.at_unknown_park;
+        format!("{}{}", named.join(", "), if more { ", …" } else { "" })
     }
 
     /// Where the rows were judged, for the outcome line.
@@ -149,6 +176,16 @@ impl Tally {
             Some(i) => format!(
                 "at {} ({air})",
                 preset::escape_cut(&setup.parks.parks[i].code, 20)
+            ),
+            None if no_fence && self.at_unknown_park > 0 => format!(
+                "at no park (home_team {}: no park answers to {}, no --park: no fence to judge; \
+                 foul balls still called)",
+                self.unknown_codes(),
+                if self.unknown_parks.len() > 1 {
+                    "them"
+                } else {
+                    "it"
+                }
             ),
             None if no_fence => String::from(
                 "at no park (no home_team, no --park: no fence to judge; foul balls still called)",

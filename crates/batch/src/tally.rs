@@ -87,6 +87,12 @@ pub struct Tally {
     /// Rows at each park (by index), and at no park.
     pub(crate) at_park: Vec<usize>,
     pub(crate) at_no_park: usize,
+    /// Of those, the rows whose home_team no park answers to, and the
+    /// first few such codes with their rows.
+    pub(crate) at_unknown_park: usize,
+    /// Rows whose batter's side was given as not known.
+    pub(crate) side_unknown: usize,
+    pub(crate) unknown_parks: Vec<(String, usize)>,
     /// Rows flown from the pitch's height, and those whose `plate_z` was
     /// no height.
     pub(crate) from_plate: usize,
@@ -117,6 +123,9 @@ pub struct Tally {
 /// The home runs short or foul named by line, at most.
 const NAMED_HOME_RUNS: usize = 20;
 
+/// The home_team codes no park answers to, named in the summary at most.
+const NAMED_UNKNOWN_PARKS: usize = 6;
+
 impl Tally {
     pub(crate) fn new(setup: &Setup, header: Option<&Header>) -> Tally {
         // Each piece keeps one: the header's names wait for the close.
@@ -146,6 +155,10 @@ impl Tally {
         match job.park {
             Some(index) => self.at_park[index] += 1,
             None => self.at_no_park += 1,
+        }
+        self.side_unknown += usize::from(job.side_unknown);
+        if let Some(code) = &job.unknown_park {
+            self.unknown_park(code, 1);
         }
         let at = match flown.clearing.outcome {
             Verdict::Clears => 0,
@@ -220,8 +233,27 @@ impl Tally {
         band.spin.push(spin.sqrt());
     }
 
+    /// Counts `rows` at `code`, a home_team no park answers to.
+    fn unknown_park(&mut self, code: &str, rows: usize) {
+        self.at_unknown_park += rows;
+        let known = self.unknown_parks.iter().position(|(c, _)| c == code);
+        match known {
+            Some(k) => self.unknown_parks[k].1 += rows,
+            None if self.unknown_parks.len() < NAMED_UNKNOWN_PARKS => {
+                self.unknown_parks.push((code.to_owned(), rows));
+            }
+            None => {}
+        }
+    }
+
     /// Adds another piece's tally.
     pub(crate) fn add(&mut self, other: &Tally) {
+        for (code, rows) in &other.unknown_parks {
+            self.unknown_park(code, *rows);
+        }
+        // Rows at codes past the first few named: counted all the same.
+        let named: usize = other.unknown_parks.iter().map(|(_, n)| n).sum();
+        self.at_unknown_park += other.at_unknown_park - named;
         let sums = [
             (&mut self.estimated, other.estimated),
             (&mut self.sprayed, other.sprayed),
@@ -230,6 +262,7 @@ impl Tally {
             (&mut self.without_spray, other.without_spray),
             (&mut self.at_plate, other.at_plate),
             (&mut self.at_no_park, other.at_no_park),
+            (&mut self.side_unknown, other.side_unknown),
             (&mut self.from_plate, other.from_plate),
             (&mut self.plate_unusable, other.plate_unusable),
             (&mut self.home_runs, other.home_runs),
