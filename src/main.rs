@@ -71,7 +71,7 @@ fn explore(
     }
     let swings = match savant {
         Some(file) => cli::savant_swings(cli, &preset, file)?,
-        None => Vec::new(),
+        None => homerun::preset::compact::CompactPresets::new(),
     };
     let parks = cli::parks_dir(cli);
     Ok(homerun::tui::run(

@@ -33,6 +33,7 @@ use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use crate::preset::compact::CompactPresets;
 use crate::preset::{self, Preset};
 
 pub use crate::preset::FIELD_KEYS;
@@ -44,7 +45,7 @@ pub use usage::{Parsed, error_line, parse};
 /// `tui --savant FILE`: the file's solved swings as presets for the
 /// explorer's picker (from `preset`'s ball and bat), with a note of how
 /// many were solved. None solved is refused: there would be nothing to pick.
-pub fn savant_swings(cli: &Cli, preset: &Preset, file: &str) -> Result<Vec<Preset>, UsageError> {
+pub fn savant_swings(cli: &Cli, preset: &Preset, file: &str) -> Result<CompactPresets, UsageError> {
     scene::check_path("--savant", file)?;
     let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
     let mut setup = batch_run::setup(preset, &parks, (&[], None, &[]))?;

@@ -235,7 +235,7 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
     let Mode::Open { items, .. } = &app.mode else {
         panic!("the picker is open")
     };
-    let names: Vec<&str> = items.iter().map(|i| i.name.as_str()).collect();
+    let names: Vec<&str> = items.iter().map(|i| i.name(&app.swings)).collect();
     assert_eq!(
         names,
         [
@@ -251,7 +251,7 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
     );
     let broken = &items[6];
     assert!(
-        broken.preset.is_none() && broken.detail.contains("bat.speed"),
+        broken.preset(&app.swings).is_none() && broken.detail(&app.swings).contains("bat.speed"),
         "{broken:?}"
     );
     // Enter on the broken one: its error, and the picker stays.
@@ -344,8 +344,8 @@ fn a_save_never_hides_a_bundled_preset_unless_asked_twice() {
     };
     let details: Vec<&str> = items
         .iter()
-        .filter(|i| i.name == "fastball")
-        .map(|i| i.detail.as_str())
+        .filter(|i| i.name(&app.swings) == "fastball")
+        .map(|i| i.detail(&app.swings))
         .collect();
     assert_eq!(details.len(), 2);
     assert!(details[0].ends_with("(bundled; hidden by yours of that name)"));
@@ -525,9 +525,13 @@ fn a_savant_files_swings_open_first_in_the_picker() {
         panic!("the picker is open at start")
     };
     assert_eq!(*selected, 0);
-    let names: Vec<&str> = items.iter().map(|i| i.name.as_str()).collect();
+    let names: Vec<&str> = items.iter().map(|i| i.name(&app.swings)).collect();
     assert_eq!(names[..3], ["Turang 04-03", "Correa 04-03", "fastball"]);
-    assert!(items[0].detail.starts_with("line 4, 2024-04-03"));
+    assert!(
+        items[0]
+            .detail(&app.swings)
+            .starts_with("line 4, 2024-04-03")
+    );
     // Its title says what it offers.
     assert!(
         screen(&app).contains(" Open a swing (2) or a preset (/ finds) "),
@@ -545,7 +549,7 @@ fn a_savant_files_swings_open_first_in_the_picker() {
     else {
         panic!("the picker is open")
     };
-    assert_eq!((items[0].name.as_str(), *selected), ("Turang 04-03", 0));
+    assert_eq!((items[0].name(&app.swings), *selected), ("Turang 04-03", 0));
     // No swings: nothing opens.
     let mut plain = crate::tui_support::app(80, 24, None);
     plain.offer_swings(Vec::new());
@@ -573,7 +577,9 @@ fn slash_in_the_picker_finds_by_words() {
     key(&mut app, KeyCode::Char('/'));
     typed(&mut app, "tur 04-0");
     let names = |app: &homerun::tui::app::App| match &app.mode {
-        Mode::Open { items, .. } => items.iter().map(|i| i.name.clone()).collect::<Vec<_>>(),
+        Mode::Open { items, .. } => (items.iter())
+            .map(|i| i.name(&app.swings).to_owned())
+            .collect::<Vec<_>>(),
         other => panic!("the picker, not {other:?}"),
     };
     assert_eq!(names(&app), ["Turang 04-03", "Turner 04-05"]);

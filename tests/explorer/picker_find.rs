@@ -47,7 +47,9 @@ fn found(app: &App) -> (Vec<String>, u64) {
             find: Some(find),
             ..
         } => (
-            items.iter().map(|i| i.name.clone()).collect(),
+            (items.iter())
+                .map(|i| i.name(&app.swings).to_owned())
+                .collect(),
             find.searches(),
         ),
         other => panic!("a find in the picker, not {other:?}"),
@@ -75,7 +77,12 @@ fn whole_list(app: &mut App) -> Vec<(String, String)> {
         panic!("the picker is open")
     };
     let all = (items.iter())
-        .map(|i| (i.name.clone(), i.detail.clone()))
+        .map(|i| {
+            (
+                i.name(&app.swings).to_owned(),
+                i.detail(&app.swings).to_owned(),
+            )
+        })
         .collect();
     key(app, KeyCode::Esc);
     all

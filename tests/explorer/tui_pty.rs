@@ -227,7 +227,9 @@ fn without_a_terminal_it_points_at_the_cli() {
 /// A terminal that goes away (a dropped SSH connection, a killed tmux) under
 /// a shell: the shell, not the explorer, leads the session and gets SIGHUP,
 /// and the explorer must still notice and end instead of spinning on the dead
-/// TTY (crossterm 0.29 loops forever there).
+/// TTY (crossterm 0.29 loops forever there), with 129 (128 + SIGHUP), as if
+/// the signal had reached it: its status is written by a subshell that
+/// ignores the hang-up.
 #[cfg(target_os = "linux")]
 #[test]
 fn a_terminal_that_goes_away_ends_the_explorer() {
@@ -239,9 +241,16 @@ fn a_terminal_that_goes_away_ends_the_explorer() {
             pixel_height: 0,
         })
         .unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let status = dir.path().join("status");
     let mut command = CommandBuilder::new("sh");
     // Not `exec`: the shell stays the session's leader, as in tmux or ssh.
-    command.args(["-c", "\"$0\"; echo after", env!("CARGO_BIN_EXE_homerun")]);
+    command.args([
+        "-c",
+        "( trap '' HUP; \"$0\"; echo $? > \"$1\" ); echo after",
+        env!("CARGO_BIN_EXE_homerun"),
+        status.to_str().unwrap(),
+    ]);
     command.env("TERM", "xterm-256color");
     let mut shell = pair.slave.spawn_command(command).unwrap();
     drop(pair.slave);
@@ -265,7 +274,8 @@ fn a_terminal_that_goes_away_ends_the_explorer() {
             thread::sleep(Duration::from_millis(20));
         }
     }
-    let explorer = child_named(shell.process_id().unwrap(), "homerun").expect("the explorer runs");
+    let subshell = child_named(shell.process_id().unwrap(), "sh").expect("the subshell runs");
+    let explorer = child_named(subshell, "homerun").expect("the explorer runs");
     drop(pair.master); // the terminal goes away
     let start = Instant::now();
     while running(explorer) {
@@ -279,6 +289,15 @@ fn a_terminal_that_goes_away_ends_the_explorer() {
         thread::sleep(Duration::from_millis(50));
     }
     let _ = shell.wait();
+    let start = Instant::now();
+    let written = loop {
+        match std::fs::read_to_string(&status) {
+            Ok(text) if text.ends_with('\n') => break text,
+            _ if start.elapsed() > Duration::from_secs(10) => panic!("no status written"),
+            _ => thread::sleep(Duration::from_millis(20)),
+        }
+    };
+    assert_eq!(written, "129\n");
 }
 
 /// A child of `parent` whose command name is `name`, from /proc.

@@ -13,6 +13,7 @@ use crate::setup::Setup;
 use analysis::shown::Shown;
 use model::launch::scene_start;
 use model::scene::{GivenLaunch, Scene, SceneKind};
+use preset::compact::CompactPresets;
 use preset::{Preset, Source, escape_cut};
 use units::Quantity;
 
@@ -20,9 +21,10 @@ use units::Quantity;
 const NAMING: [&str; 2] = ["player_name", "game_date"];
 
 /// What `solved_swings` found: the solved swings as presets, in the
-/// file's order, and how many tracked rows were not solved.
+/// file's order (held compactly: a million fit in a few hundred MB), and
+/// how many tracked rows were not solved.
 pub struct Swings {
-    pub presets: Vec<Preset>,
+    pub presets: CompactPresets,
     pub rows: usize,
     pub unsolved: usize,
 }
@@ -35,6 +37,28 @@ pub fn solved_swings(
     shown: Shown,
     note: &mut dyn FnMut(&str),
 ) -> Result<Swings, String> {
+    // Each preset made compact as it comes: a million swings held whole
+    // would pass 1 GB.
+    let mut presets = CompactPresets::new();
+    let (rows, tracked) = each_solved_swing(setup, input, (shown, note), &mut |p| presets.push(p))?;
+    // Held while the explorer runs: no room past the swings.
+    presets.shrink_to_fit();
+    Ok(Swings {
+        unsolved: tracked - presets.len(),
+        presets,
+        rows,
+    })
+}
+
+/// Reads `input` and solves each row's swing, giving each solved one to
+/// `take` as a preset, in the file's order; bad rows named to `note`. The
+/// rows read and how many had a tracked swing.
+fn each_solved_swing(
+    setup: &mut Setup,
+    input: impl BufRead,
+    (shown, note): (Shown, &mut dyn FnMut(&str)),
+    take: &mut dyn FnMut(&Preset),
+) -> Result<(usize, usize), String> {
     setup.solve_swings = true;
     let mut records = Records::new(input);
     let (names, line) = crate::read_header(&mut records)?.ok_or("the input is empty")?;
@@ -53,9 +77,9 @@ pub fn solved_swings(
         presets.extend((piece.jobs.iter()).filter_map(|job| swing_preset(job, &setup.keep, shown)));
         piece.answered = piece.jobs.len();
     };
-    let (mut pieces, mut tracked) = (Vec::new(), 0);
-    let take = |piece: &mut Piece<(Vec<Preset>, usize)>| {
-        pieces.push(std::mem::take(&mut piece.made.0));
+    let mut tracked = 0;
+    let take_piece = |piece: &mut Piece<(Vec<Preset>, usize)>| {
+        piece.made.0.iter().for_each(&mut *take);
         tracked += piece.made.1;
         Ok(true)
     };
@@ -64,21 +88,11 @@ pub fn solved_swings(
         &mut records,
         Stage::Solved,
         finish,
-        take,
+        take_piece,
         note,
     )?;
-    // Held while the explorer runs: no room past the swings, and never
-    // twice (a list grown by doubling, then shrunk, would hold a million
-    // swings' 440 MB three times over).
-    let mut presets = Vec::with_capacity(pieces.iter().map(Vec::len).sum());
-    for piece in pieces {
-        presets.extend(piece);
-    }
-    Ok(Swings {
-        unsolved: tracked - presets.len(),
-        presets,
-        rows: outcome.answered + outcome.failed + outcome.without_launch,
-    })
+    let rows = outcome.answered + outcome.failed + outcome.without_launch;
+    Ok((rows, tracked))
 }
 
 /// A solved row as a preset: its swing scene (the launch left to the
@@ -218,13 +232,16 @@ mod tests {
             (swings.rows, swings.presets.len(), swings.unsolved),
             (35, 33, 2)
         );
+        let presets: Vec<Preset> = (0..swings.presets.len())
+            .map(|i| swings.presets.preset(i))
+            .collect();
         assert!(
-            (swings.presets[0].description).contains("the 2024 bat (M_B 0.884 kg)"),
+            (presets[0].description).contains("the 2024 bat (M_B 0.884 kg)"),
             "{}",
-            swings.presets[0].description
+            presets[0].description
         );
-        assert_eq!(swings.presets[0].scene.bat.effective_mass, 0.8843);
-        let first = &swings.presets[0];
+        assert_eq!(presets[0].scene.bat.effective_mass, 0.8843);
+        let first = &presets[0];
         assert_eq!(first.name, "Hender… 04-03");
         assert!(
             first
@@ -234,7 +251,7 @@ mod tests {
             first.description
         );
         let mut worst = (0.0f64, 0.0f64);
-        for preset in &swings.presets {
+        for preset in &presets {
             assert_eq!(preset.scene.kind, SceneKind::Swing);
             assert!(preset.name.chars().count() <= 13, "{}", preset.name);
             preset.scene.validate().unwrap();
@@ -275,11 +292,60 @@ mod tests {
         let mut setup = Setup::new(&preset, &parks);
         let input = crate::open(path.to_str().unwrap()).unwrap();
         let swings = solved_swings(&mut setup, input, Shown::default(), &mut |_| {}).unwrap();
-        assert_eq!(swings.presets[0].name, "Henderson");
+        assert_eq!(swings.presets.name(0), "Henderson");
         assert!(
-            swings.presets[0]
-                .description
+            swings
+                .presets
+                .description(0)
                 .starts_with("Gunnar Henderson, line 2: measured")
         );
+    }
+
+    /// Each swing held compactly opens as the preset its row made, bit for
+    /// bit (scene, fence, name and description): the committed sample's,
+    /// and those of April 2024's bat-tracking file where it is at hand.
+    #[test]
+    fn a_compact_swing_opens_bit_for_bit_as_its_row_made_it() {
+        let april = "../../../shared/data/statcast-2024-04-balls-in-play.csv";
+        for file in ["../../tests/data/savant_swings.csv", april] {
+            let Ok(input) = crate::open(file) else {
+                assert_eq!(file, april, "the committed sample opens");
+                continue;
+            };
+            let preset = preset::load("fastball", None).unwrap();
+            let parks = preset::parks::all(None).unwrap();
+            let mut setup = Setup::new(&preset, &parks);
+            let mut whole = Vec::new();
+            let mut quiet = |_: &str| {};
+            let shown: (Shown, &mut dyn FnMut(&str)) = (Shown::default(), &mut quiet);
+            each_solved_swing(&mut setup, input, shown, &mut |p| whole.push(p.clone())).unwrap();
+            let swings = solved_swings(
+                &mut setup,
+                crate::open(file).unwrap(),
+                Shown::default(),
+                &mut |_| {},
+            )
+            .unwrap();
+            assert_eq!(swings.presets.len(), whole.len());
+            assert!(whole.len() >= 33, "{file}: {}", whole.len());
+            for (i, made) in whole.iter().enumerate() {
+                let opened = swings.presets.preset(i);
+                assert_eq!(
+                    format!("{opened:?}"),
+                    format!("{made:?}"),
+                    "{file} swing {i}"
+                );
+                assert_eq!(
+                    opened.scene.bat.undercut.to_bits(),
+                    made.scene.bat.undercut.to_bits()
+                );
+            }
+            // Shared by parks, hands and seasons' bats: a few dozen at most.
+            assert!(
+                swings.presets.backgrounds() <= 200,
+                "{}",
+                swings.presets.backgrounds()
+            );
+        }
     }
 }

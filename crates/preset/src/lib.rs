@@ -611,5 +611,6 @@ pub fn load(spec: &str, dir: Option<&Path>) -> Result<Preset, PresetError> {
 }
 
 pub mod atomic_file;
+pub mod compact;
 #[cfg(test)]
 mod tests;

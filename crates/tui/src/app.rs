@@ -15,7 +15,7 @@ pub use field::{AtParks, ParkList};
 mod figures;
 mod find;
 mod reading;
-pub use find::{Find, Searchable};
+pub use find::{Find, Pick, Searchable};
 mod impact;
 pub use impact::impact_stops;
 mod margin;
@@ -153,7 +153,7 @@ pub enum Mode {
     /// the items are those whose name and description hold each of its
     /// words, and `find` is being typed while it is `Some`.
     Open {
-        items: Vec<Arc<PickItem>>,
+        items: Vec<Pick>,
         selected: usize,
         error: Option<String>,
         find: Option<Find>,

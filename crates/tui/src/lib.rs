@@ -36,6 +36,7 @@ use ratatui::layout::Rect;
 
 use app::App;
 use preset::Preset;
+use preset::compact::CompactPresets;
 pub use signals::Ending;
 use signals::Signals;
 use theme::{Background, ColorMode, Theme};
@@ -115,7 +116,7 @@ impl Drop for Restore {
 /// under `NO_COLOR`. `m`/`M` go through the bundled parks and the user's
 /// from `parks_dir`.
 pub fn run(
-    (preset, swings): (Preset, Vec<Preset>),
+    (preset, swings): (Preset, CompactPresets),
     (presets_dir, parks_dir): (Option<PathBuf>, Option<PathBuf>),
     units: units::UnitSystem,
     background: Option<Background>,
@@ -141,7 +142,7 @@ pub fn run(
     );
     app.set_units(units);
     app.load_parks(parks_dir.as_deref());
-    app.offer_swings(swings);
+    app.offer_compact_swings(swings);
     let worker = Worker::spawn();
     watch_for_hang_up()?;
 

@@ -18,8 +18,47 @@ use std::sync::Arc;
 
 use aho_corasick::AhoCorasick;
 use memchr::memmem;
+use preset::Preset;
+use preset::compact::CompactPresets;
 
 use super::PickItem;
+
+/// An item the picker lists: a swing of a Savant file's (its index among
+/// them: a million swings are not a million items), or a preset.
+#[derive(Clone, Debug)]
+pub enum Pick {
+    Swing(u32),
+    Preset(Arc<PickItem>),
+}
+
+impl Pick {
+    /// Its name, a swing's from `swings`.
+    pub fn name<'a>(&'a self, swings: &'a Searchable) -> &'a str {
+        match self {
+            Pick::Swing(i) => swings.name(*i as usize),
+            Pick::Preset(item) => &item.name,
+        }
+    }
+
+    /// Its description (a broken preset's error), a swing's from `swings`.
+    pub fn detail<'a>(&'a self, swings: &'a Searchable) -> &'a str {
+        match self {
+            Pick::Swing(i) => swings.detail(*i as usize),
+            Pick::Preset(item) => &item.detail,
+        }
+    }
+
+    /// The preset it loads, if it is not broken.
+    pub fn preset(&self, swings: &Searchable) -> Option<Preset> {
+        match self {
+            Pick::Swing(i) => match &swings.items {
+                Items::Swings(list) => Some(list.preset(*i as usize)),
+                Items::Presets(_) => None,
+            },
+            Pick::Preset(item) => item.preset.clone(),
+        }
+    }
+}
 
 /// Items a find can choose from, and the name and description in lower
 /// case of each item with an upper case outside ASCII, one after another. A Savant
@@ -27,11 +66,25 @@ use super::PickItem;
 /// costs nothing on 200,000 of them.
 #[derive(Debug, Default)]
 pub struct Searchable {
-    items: Vec<Arc<PickItem>>,
+    items: Items,
     texts: String,
     /// Item `i`'s text in lower case ends at `ends[i]` (it starts where
     /// the one before ends): empty for an item lower-cased as ASCII is.
     ends: Vec<usize>,
+}
+
+/// What a [`Searchable`] holds: a Savant file's swings, compact, or
+/// presets.
+#[derive(Debug)]
+enum Items {
+    Swings(CompactPresets),
+    Presets(Vec<Arc<PickItem>>),
+}
+
+impl Default for Items {
+    fn default() -> Items {
+        Items::Presets(Vec::new())
+    }
 }
 
 /// An item's text as a find searches it.
@@ -43,36 +96,81 @@ enum Text<'a> {
 }
 
 impl Searchable {
-    pub fn new(items: Vec<Arc<PickItem>>) -> Searchable {
-        let mut texts = String::new();
-        let mut ends = Vec::with_capacity(items.len());
-        for item in &items {
-            if !(lowers_as_ascii(&item.name) && lowers_as_ascii(&item.detail)) {
-                push_lower_case(&mut texts, &item.name);
+    /// A Savant file's swings.
+    pub fn swings(swings: CompactPresets) -> Searchable {
+        Searchable::new(Items::Swings(swings))
+    }
+
+    pub fn presets(items: Vec<Arc<PickItem>>) -> Searchable {
+        Searchable::new(Items::Presets(items))
+    }
+
+    fn new(items: Items) -> Searchable {
+        let mut searchable = Searchable {
+            items,
+            texts: String::new(),
+            ends: Vec::new(),
+        };
+        let (mut texts, mut ends) = (String::new(), Vec::with_capacity(searchable.len()));
+        for i in 0..searchable.len() {
+            let (name, detail) = (searchable.name(i), searchable.detail(i));
+            if !(lowers_as_ascii(name) && lowers_as_ascii(detail)) {
+                push_lower_case(&mut texts, name);
                 texts.push(' ');
-                push_lower_case(&mut texts, &item.detail);
+                push_lower_case(&mut texts, detail);
             }
             ends.push(texts.len());
         }
-        Searchable { items, texts, ends }
+        texts.shrink_to_fit();
+        (searchable.texts, searchable.ends) = (texts, ends);
+        searchable
     }
 
     pub fn len(&self) -> usize {
-        self.items.len()
+        match &self.items {
+            Items::Swings(list) => list.len(),
+            Items::Presets(items) => items.len(),
+        }
     }
 
     pub fn is_empty(&self) -> bool {
-        self.items.is_empty()
+        self.len() == 0
     }
 
-    pub fn items(&self) -> &[Arc<PickItem>] {
-        &self.items
+    /// Item `i`'s name.
+    pub fn name(&self, i: usize) -> &str {
+        match &self.items {
+            Items::Swings(list) => list.name(i),
+            Items::Presets(items) => &items[i].name,
+        }
+    }
+
+    /// Item `i`'s description.
+    pub fn detail(&self, i: usize) -> &str {
+        match &self.items {
+            Items::Swings(list) => list.description(i),
+            Items::Presets(items) => &items[i].detail,
+        }
+    }
+
+    /// Item `i`, as the picker lists it.
+    fn pick(&self, i: usize) -> Pick {
+        match &self.items {
+            Items::Presets(items) => Pick::Preset(Arc::clone(&items[i])),
+            // Fewer than 4 billion: each took a row of a file.
+            Items::Swings(_) => Pick::Swing(i as u32),
+        }
+    }
+
+    /// Every item, as the picker lists them.
+    pub fn picks(&self) -> impl Iterator<Item = Pick> + '_ {
+        (0..self.len()).map(|i| self.pick(i))
     }
 
     fn text_of(&self, i: usize) -> Text<'_> {
         let start = if i == 0 { 0 } else { self.ends[i - 1] };
         match start == self.ends[i] {
-            true => Text::AsIs(&self.items[i].name, &self.items[i].detail),
+            true => Text::AsIs(self.name(i), self.detail(i)),
             false => Text::Lower(&self.texts.as_bytes()[start..self.ends[i]]),
         }
     }
@@ -99,10 +197,8 @@ pub struct Find {
 impl Find {
     /// A find over `swings` and `presets`, nothing typed yet, and the items
     /// it finds: all of them.
-    pub fn new(swings: Arc<Searchable>, presets: Searchable) -> (Find, Vec<Arc<PickItem>>) {
-        let items: Vec<Arc<PickItem>> = (swings.items().iter().chain(presets.items()))
-            .cloned()
-            .collect();
+    pub fn new(swings: Arc<Searchable>, presets: Searchable) -> (Find, Vec<Pick>) {
+        let items: Vec<Pick> = swings.picks().chain(presets.picks()).collect();
         // The picker lists swings and presets: never near 4 billion.
         let found = (0..items.len()).map(|i| i as u32).collect();
         let find = Find {
@@ -126,17 +222,17 @@ impl Find {
     }
 
     /// Item `i`.
-    fn item(&self, i: u32) -> &Arc<PickItem> {
+    fn item(&self, i: u32) -> Pick {
         let i = i as usize;
         match i.checked_sub(self.swings.len()) {
-            None => &self.swings.items[i],
-            Some(preset) => &self.presets.items[preset],
+            None => self.swings.pick(i),
+            Some(preset) => self.presets.pick(preset),
         }
     }
 
     /// Types `c`: the items found (`found`, as the picker lists them) keep
     /// those that hold the word it ends.
-    pub fn push(&mut self, c: char, found: &mut Vec<Arc<PickItem>>) {
+    pub fn push(&mut self, c: char, found: &mut Vec<Pick>) {
         self.text.push(c);
         if c.is_whitespace() {
             // No word changed.
@@ -180,7 +276,7 @@ impl Find {
 
     /// Erases the last character typed, if any: the items it had taken out
     /// of `found` are found again, in their places.
-    pub fn pop(&mut self, found: &mut Vec<Arc<PickItem>>) {
+    pub fn pop(&mut self, found: &mut Vec<Pick>) {
         if self.text.pop().is_none() {
             return;
         }
@@ -189,7 +285,7 @@ impl Find {
             return;
         }
         // Both ascending: merged, the list keeps the picker's order. The
-        // items found move; only those put back are shared anew.
+        // items found move; only those put back are made anew.
         let mut indices = Vec::with_capacity(self.found.len() + back.len());
         let mut items = Vec::with_capacity(indices.capacity());
         let old = std::mem::take(found);
@@ -206,7 +302,7 @@ impl Find {
                 true => kept.next().expect("peeked"),
                 false => {
                     let index = back.next().expect("peeked");
-                    (index, Arc::clone(self.item(index)))
+                    (index, self.item(index))
                 }
             };
             indices.push(index);

@@ -7,8 +7,9 @@ use std::sync::Arc;
 use ratatui::crossterm::event::KeyEvent;
 use ratatui_textarea::TextArea;
 
-use super::{App, Find, Mode, PickItem, Searchable};
+use super::{App, Find, Mode, Pick, PickItem, Searchable};
 use crate::keymap::Action;
+use preset::compact::CompactPresets;
 use preset::{self, Preset, PresetError, Source};
 
 impl App {
@@ -106,30 +107,15 @@ impl App {
     /// Offers `swings` (a Savant export's, solved) at the top of the
     /// picker, and opens it on the first of them.
     pub fn offer_swings(&mut self, swings: Vec<Preset>) {
+        self.offer_compact_swings(swings.into_iter().collect());
+    }
+
+    /// [`App::offer_swings`], for swings held compactly (`tui --savant`).
+    pub fn offer_compact_swings(&mut self, swings: CompactPresets) {
         if swings.is_empty() {
             return;
         }
-        // A swing's name and description are kept in its item alone (a
-        // Savant file's swings can be hundreds of thousands): `loadable`
-        // gives them back to the preset loaded.
-        let item = |mut p: Preset| {
-            Arc::new(PickItem {
-                name: std::mem::take(&mut p.name),
-                detail: std::mem::take(&mut p.description),
-                preset: Some(p),
-            })
-        };
-        // Moved a block at a time from the end, the list given back as it
-        // goes: a million swings held twice would pass 1 GB.
-        let mut swings = swings;
-        let mut items = Vec::with_capacity(swings.len());
-        while !swings.is_empty() {
-            let from = swings.len().saturating_sub(1 << 12);
-            items.extend(swings.drain(from..).rev().map(item));
-            swings.shrink_to_fit();
-        }
-        items.reverse();
-        self.swings = Arc::new(Searchable::new(items));
+        self.swings = Arc::new(Searchable::swings(swings));
         self.open_picker();
         if let Mode::Open { selected, .. } = &mut self.mode {
             *selected = 0;
@@ -140,7 +126,7 @@ impl App {
         let items = self.pick_items();
         let selected = items
             .iter()
-            .position(|i| i.name == self.preset_name)
+            .position(|i| i.name(&self.swings) == self.preset_name)
             .unwrap_or(0);
         self.mode = Mode::Open {
             items,
@@ -150,11 +136,11 @@ impl App {
         };
     }
 
-    /// Everything the picker offers: the swings, then the presets (shared:
-    /// a list of thousands of swings copies none).
-    fn pick_items(&self) -> Vec<Arc<PickItem>> {
-        let mut items = self.swings.items().to_vec();
-        items.extend(self.preset_items());
+    /// Everything the picker offers: the swings, then the presets (a
+    /// swing by its index: a list of thousands of swings copies none).
+    fn pick_items(&self) -> Vec<Pick> {
+        let mut items: Vec<Pick> = self.swings.picks().collect();
+        items.extend(self.preset_items().into_iter().map(Pick::Preset));
         items
     }
 
@@ -193,7 +179,7 @@ impl App {
     pub(super) fn open_key(
         &mut self,
         (key, action): (KeyEvent, Option<Action>),
-        mut items: Vec<Arc<PickItem>>,
+        mut items: Vec<Pick>,
         (selected, find): (usize, Option<Find>),
         error: Option<String>,
     ) {
@@ -226,7 +212,7 @@ impl App {
             return;
         }
         if key.code == KeyCode::Char('/') {
-            let presets = Searchable::new(self.preset_items());
+            let presets = Searchable::presets(self.preset_items());
             let (find, items) = Find::new(Arc::clone(&self.swings), presets);
             self.mode = Mode::Open {
                 items,
@@ -244,7 +230,8 @@ impl App {
             // g and G: the top and the bottom of the list, as in the inputs.
             Some(Action::First) => (0, None),
             Some(Action::Last) => (last, None),
-            Some(Action::Confirm) => match items.get(selected).and_then(|i| loadable(i)) {
+            Some(Action::Confirm) => match items.get(selected).and_then(|i| i.preset(&self.swings))
+            {
                 Some(preset) => {
                     self.load(preset);
                     return;
@@ -254,7 +241,7 @@ impl App {
                     Some(
                         items
                             .get(selected)
-                            .map_or(String::new(), |i| i.detail.clone()),
+                            .map_or(String::new(), |i| i.detail(&self.swings).to_owned()),
                     ),
                 ),
             },
@@ -267,17 +254,6 @@ impl App {
             find: None,
         };
     }
-}
-
-/// The preset `item` loads: a swing's with its name and description,
-/// which its item keeps (see `offer_swings`).
-fn loadable(item: &PickItem) -> Option<Preset> {
-    let mut preset = item.preset.clone()?;
-    if preset.name.is_empty() {
-        preset.name.clone_from(&item.name);
-        preset.description.clone_from(&item.detail);
-    }
-    Some(preset)
 }
 
 /// A short name for a broken preset: its file's stem, if the error has one.

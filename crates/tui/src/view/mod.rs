@@ -113,7 +113,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
             frame,
             (area, &app.theme),
             (items, find.as_ref().map(|f| f.text.as_str())),
-            app.swings.len(),
+            &app.swings,
             *selected,
             error.as_deref(),
         ),

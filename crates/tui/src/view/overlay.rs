@@ -1,15 +1,13 @@
 //! Pop-ups over the panes: help, the save prompt, the preset picker and
 //! the park list.
 
-use std::sync::Arc;
-
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Flex, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap};
 use ratatui_textarea::TextArea;
 
-use crate::app::{App, PickItem};
+use crate::app::{App, Pick, Searchable};
 use crate::glossary::GLOSSARY;
 use crate::keymap;
 use crate::theme::Theme;
@@ -139,8 +137,8 @@ pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Op
 pub fn open(
     frame: &mut Frame,
     (area, theme): (Rect, &Theme),
-    (items, find): (&[Arc<PickItem>], Option<&str>),
-    swings: usize,
+    (items, find): (&[Pick], Option<&str>),
+    swings: &Searchable,
     selected: usize,
     error: Option<&str>,
 ) {
@@ -154,7 +152,9 @@ pub fn open(
             items.len()
         ),
         // `tui --savant`: the file's swings come first, then the presets.
-        None if swings > 0 => format!(" Open a swing ({swings}) or a preset (/ finds) "),
+        None if !swings.is_empty() => {
+            format!(" Open a swing ({}) or a preset (/ finds) ", swings.len())
+        }
         None => " Open preset (/ finds) ".to_owned(),
     };
     let block = Block::bordered().title(Span::styled(title, theme.title));
@@ -174,17 +174,19 @@ pub fn open(
         .skip(offset)
         .take(height)
         .map(|item| {
-            let style = if item.preset.is_some() {
-                theme.plain
-            } else {
-                theme.broken
+            let style = match item {
+                Pick::Preset(item) if item.preset.is_none() => theme.broken,
+                _ => theme.plain,
             };
             let detail = super::words::fit(
-                &[Span::styled(escape_text(&item.detail), style)],
+                &[Span::styled(escape_text(item.detail(swings)), style)],
                 detail_width,
                 1,
             );
-            let mut spans = vec![Span::styled(name_cell(&item.name), Theme::strong(style))];
+            let mut spans = vec![Span::styled(
+                name_cell(item.name(swings)),
+                Theme::strong(style),
+            )];
             spans.extend(detail.into_iter().flat_map(|l| l.spans));
             ListItem::new(Line::from(spans))
         })
@@ -202,7 +204,7 @@ pub fn open(
         None => Paragraph::new(Line::styled(
             format!(
                 "{} · Enter loads · Esc cancels",
-                items.get(selected).map_or("", |i| i.detail.as_str())
+                items.get(selected).map_or("", |i| i.detail(swings))
             ),
             theme.dim,
         )),
