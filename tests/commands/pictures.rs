@@ -528,7 +528,7 @@ fn svgs_follow_units_imperial_on_every_axis_and_label() {
         .success();
     let si = texts(&std::fs::read_to_string(&target).unwrap());
     assert!(
-        si.contains("undercut E (mm)") && si.contains("range (m)"),
+        si.contains("undercut E (m)") && si.contains("range (m)"),
         "{si}"
     );
 }

@@ -25,7 +25,7 @@ pub use units::UnitSystem;
 use units::Quantity;
 
 /// A picture's lengths, sizes, angles and ranges in the units asked for:
-/// SI (m, mm, rad) by default, or ft, in and ° under `--units imperial`.
+/// SI (m, rad) by default, or ft, in and ° under `--units imperial`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 struct Scale(UnitSystem);
 
@@ -40,23 +40,15 @@ impl Scale {
         Quantity::Distance.in_system(self.0).symbol
     }
 
-    /// An undercut (m) on the surface's axis: in mm, as the paper's Fig. 7,
-    /// or in inches.
+    /// An undercut (m) on the surface's axis: in m, as Table II and the
+    /// figures give E (one unit for E everywhere), or in inches.
     fn undercut(self, m: f64) -> f64 {
-        if self.0 == UnitSystem::Si {
-            m * 1e3
-        } else {
-            Quantity::Size.in_system(self.0).show(m)
-        }
+        Quantity::Size.in_system(self.0).show(m)
     }
 
-    /// The undercut axis' unit: "mm" or "in".
+    /// The undercut axis' unit: "m" or "in".
     fn undercut_unit(self) -> &'static str {
-        if self.0 == UnitSystem::Si {
-            "mm"
-        } else {
-            Quantity::Size.in_system(self.0).symbol
-        }
+        Quantity::Size.in_system(self.0).symbol
     }
 
     /// An angle (rad) in the unit shown.
@@ -189,18 +181,7 @@ fn tick_label(span: f64) -> impl Fn(&f64) -> String {
     } else {
         3
     };
-    move |v: &f64| {
-        let text = format!("{v:.decimals$}");
-        if text
-            .trim_start_matches('-')
-            .chars()
-            .all(|c| c == '0' || c == '.')
-        {
-            text.trim_start_matches('-').to_owned()
-        } else {
-            text
-        }
-    }
+    move |v: &f64| units::fixed(*v, decimals)
 }
 
 /// `text` cut into lines of at most `width` characters at spaces.

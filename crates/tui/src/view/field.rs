@@ -106,7 +106,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         format!(
             "{}, {} ",
             app.range_text(flight.range),
-            direction_words(flight.direction)
+            crate::shown::direction_text(app.units, flight.direction)
         )
     } else {
         "does not land ".to_owned()
@@ -253,16 +253,6 @@ fn wall_legend(app: &App) -> Line<'static> {
     }
     spans.push(Span::raw(" "));
     Line::from(spans)
-}
-
-/// "7° toward right field", "centre field".
-pub fn direction_words(rad: f64) -> String {
-    let degrees = rad.to_degrees();
-    if degrees.abs() < 0.5 {
-        return "centre field".to_owned();
-    }
-    let side = if degrees > 0.0 { "right" } else { "left" };
-    format!("{:.0}° toward {side} field", degrees.abs())
 }
 
 /// The wind's arrow (points across, up), where its label starts, the label.

@@ -8,6 +8,7 @@ use ratatui::widgets::{Block, Paragraph};
 
 use crate::app::App;
 use crate::format::signed;
+use crate::shown::{angle_text, quantity_text, undercut_text};
 use analysis::figures::trimmed;
 use analysis::landing::fence_text;
 use analysis::optimum::Status;
@@ -17,56 +18,21 @@ use model::launch::BattedBall;
 use units::{Quantity, UnitSystem};
 
 /// A launch as the readout writes it, in the units shown: "44.30 m/s
-/// 191.8 rad/s  26.38°" or "99.09 mph  1831 rpm  26.38°"; with `sign`, a
-/// difference of two ("+1.20 mph  +95 rpm  -0.50°").
+/// 191.8 rad/s  0.4604 rad" or "99.09 mph  1832 rpm  26.38°"; with `sign`,
+/// a difference of two ("+1.20 mph  +95 rpm  -0.50°").
 fn launch_text(app: &App, launch: &BattedBall, sign: bool) -> String {
-    let (speed, spin) = (app.unit(Quantity::Speed), app.unit(Quantity::Spin));
-    let spin_decimals = if app.units == UnitSystem::Si { 1 } else { 0 };
-    let (v, w) = (
-        speed.show_difference(launch.speed),
-        spin.show_difference(launch.spin),
-    );
-    let angle = launch.angle.to_degrees();
-    if sign {
-        format!(
-            "{} {}  {} {}  {}°",
-            signed(v, 2),
-            speed.symbol,
-            signed(w, spin_decimals),
-            spin.symbol,
-            signed(angle, 2)
-        )
-    } else {
-        format!(
-            "{v:.2} {}  {w:.spin_decimals$} {}  {angle:.2}°",
-            speed.symbol, spin.symbol
-        )
-    }
+    let text = |quantity, si, decimals| quantity_text(app.units, quantity, si, decimals, sign);
+    format!(
+        "{}  {}  {}",
+        text(Quantity::Speed, launch.speed, 2),
+        text(Quantity::Spin, launch.spin, 1),
+        text(Quantity::Angle, launch.angle, 4)
+    )
 }
 
-/// An angle in the units shown: "0.3791 rad" or "21.72°"; `sign` for a
-/// difference.
-pub(super) fn angle_text(app: &App, radians: f64, sign: bool) -> String {
-    match (app.units, sign) {
-        (UnitSystem::Si, false) => format!("{radians:.4}"),
-        (UnitSystem::Si, true) => signed(radians, 4),
-        (UnitSystem::Imperial, false) => format!("{:.2}°", radians.to_degrees()),
-        (UnitSystem::Imperial, true) => format!("{}°", signed(radians.to_degrees(), 2)),
-    }
-}
-
-/// An undercut in the units shown: "27.27 mm" or "1.074 in"; `sign` for a
-/// difference.
-pub(super) fn undercut_text(app: &App, metres: f64, sign: bool) -> String {
-    let (value, unit, decimals) = match app.units {
-        UnitSystem::Si => (metres * 1e3, "mm", 2),
-        UnitSystem::Imperial => (app.unit(Quantity::Size).show(metres), "in", 3),
-    };
-    if sign {
-        format!("{} {unit}", signed(value, decimals))
-    } else {
-        format!("{value:.decimals$} {unit}")
-    }
+/// An angle as the readout writes it: "0.3791 rad" or "21.72°".
+pub(super) fn angle(app: &App, radians: f64, sign: bool) -> String {
+    angle_text(app.units, radians, 4, sign)
 }
 
 /// The air in force: "ρ 1.194 kg/m³  ν 1.51e-5 m²/s" and where it comes
@@ -182,7 +148,7 @@ pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
         lines.push(Line::from(vec![
             label("impact"),
             Span::raw(format!(
-                "e* {:.4}  {}  θ {}{}",
+                "e* {:.4}  {}  θ {}",
                 impact.restitution(),
                 match impact.regime() {
                     // It sticks, then springs back (bat.tangential_restitution).
@@ -190,12 +156,7 @@ pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
                     Regime::Stick => "stick",
                     Regime::Slip => "slip",
                 },
-                angle_text(app, impact.normal_angle(), false),
-                if app.units == UnitSystem::Si {
-                    " rad"
-                } else {
-                    ""
-                }
+                angle(app, impact.normal_angle(), false),
             )),
         ]));
         lines.push(Line::from(vec![
@@ -315,8 +276,8 @@ pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
             }
             let optimum = format!(
                 "E {}  ψ {}  {:.2} {u}",
-                undercut_text(app, o.best.undercut, false),
-                angle_text(app, o.best.swing_angle, false),
+                undercut_text(app.units, o.best.undercut, false),
+                angle(app, o.best.swing_angle, false),
                 d(o.best.range)
             );
             // Tags that do not fit take a line of their own (at 80×24 the
@@ -353,8 +314,8 @@ pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
                 label("you −opt"),
                 Span::raw(format!(
                     "ΔE {}  Δψ {}  {range}",
-                    undercut_text(app, e - o.best.undercut, true),
-                    angle_text(app, psi - o.best.swing_angle, true),
+                    undercut_text(app.units, e - o.best.undercut, true),
+                    angle(app, psi - o.best.swing_angle, true),
                 )),
             ]));
         }
@@ -366,10 +327,10 @@ pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
     let landing = Line::from(vec![
         label("landing"),
         Span::raw(format!(
-            "{:.2} {} at {:.1}° below level",
+            "{:.2} {} at {} below level",
             speed.show(flight.landing_speed),
             speed.symbol,
-            flight.landing_angle.to_degrees()
+            angle_text(app.units, flight.landing_angle, 3, false)
         )),
     ]);
     // A batted ball's readout has room for its landing: no impact, no optimum.
@@ -452,10 +413,10 @@ pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
             lines.push(Line::from(vec![
                 label("pitch"),
                 Span::raw(format!(
-                    "{:.1} {}, descending {:.2}°",
+                    "{:.1} {}, descending {}",
                     speed.show(app.scene.pitch.speed),
                     speed.symbol,
-                    impact.descent_angle().to_degrees()
+                    angle(app, impact.descent_angle(), false)
                 )),
             ]));
         }
