@@ -9,12 +9,14 @@
 
 mod bench;
 mod figure;
+mod impact;
 mod park;
 mod surface;
 mod trajectory;
 
 pub use bench::bench_svg;
 pub use figure::{figure_svg, table_figure_svg, table_figure_svg_now};
+pub use impact::{ImpactPicture, impact_svg_in};
 pub use park::park_svg_in;
 pub use surface::{SurfacePicture, surface_svg, surface_svg_in};
 pub use trajectory::{
@@ -110,6 +112,27 @@ fn draw_legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
         .border_style(RGBColor(180, 180, 180))
         .draw()
         .map_err(drawn)
+}
+
+/// A line in the `k`-th series' colour, named in the legend.
+fn draw_named_line<'a, DB: DrawingBackend + 'a, CT: CoordTranslate<From = (f64, f64)>>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    k: usize,
+    name: &str,
+    points: &[(f64, f64)],
+) -> Result<(), PictureError> {
+    let color = series_color(k);
+    chart
+        .draw_series(plotters::series::LineSeries::new(
+            points.iter().copied(),
+            color.stroke_width(2),
+        ))
+        .map_err(drawn)?
+        .label(name)
+        .legend(move |(x, y)| {
+            plotters::element::PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+        });
+    Ok(())
 }
 
 /// Every chart's axes alike: the descriptions' and labels' fonts and the
