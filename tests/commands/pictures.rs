@@ -658,7 +658,7 @@ fn explorer_x_in_an_imperial_scene_draws_in_its_units() {
     tui_support::key(&mut app, KeyCode::Char('4'));
     tui_support::settle(&mut app);
     let figure = svg(&app);
-    for label in ["range (ft)", "(mph)", "bat 67.108 mph"] {
+    for label in ["range (ft)", "(mph)", "bat 67.11 mph"] {
         assert!(figure.contains(label), "{label}: {figure}");
     }
     assert!(

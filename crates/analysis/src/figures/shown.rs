@@ -164,12 +164,20 @@ pub fn conditions(name: &str, s: &Scene, shown: UnitSystem) -> String {
     let v = |quantity: Quantity, si: f64| {
         let unit = quantity.in_system(shown);
         let gap = if unit.symbol == "°" { "" } else { " " };
-        let value = if unit.is_identity() {
-            si
+        if unit.is_identity() {
+            return format!("{}{gap}{}", figures::short(si), unit.symbol);
+        }
+        // Four significant digits: more (-1909.859 rpm for -200 rad/s)
+        // show only the conversion.
+        let value = unit.show(si);
+        let decimals = (3 - value.abs().max(1e-9).log10().floor() as i32).clamp(0, 6) as usize;
+        let text = format!("{value:.decimals$}");
+        let text = if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.')
         } else {
-            unit.show(si)
+            &text
         };
-        format!("{}{gap}{}", figures::short(value), unit.symbol)
+        format!("{text}{gap}{}", unit.symbol)
     };
     if s.kind == SceneKind::BattedBall {
         let launch = s.batted_ball();
@@ -231,6 +239,13 @@ mod tests {
             "range (ft) against undercut E (in) at ψ = 9.13°, with launch; A and B are the E giving ω_bf = 1742 rpm and 2293 rpm"
         );
         assert_eq!(quoted("A (182.4 rad/s)", imperial), "A (1742 rpm)");
+        // The conditions to four significant digits, not the conversion's.
+        let fastball = Scene::default();
+        let line = conditions("fastball", &fastball, imperial);
+        assert!(
+            line.contains("pitch 93.95 mph, spin -1910 rpm; bat 67.11 mph"),
+            "{line}"
+        );
         assert_eq!(
             quoted("the bat's radius 0.035 m", imperial),
             "the bat's radius 0.035 m"
