@@ -156,7 +156,28 @@ pub(super) fn lines(app: &App, area: Rect) -> Vec<Line<'static>> {
     if area.height as usize >= lines.len() + 6 {
         lines.extend(the_rest(app, derived, inner.width));
     }
-    glued(lines)
+    let mut lines = glued(lines);
+    keep_fence_in_view(inner, &mut lines);
+    lines
+}
+
+/// A line that wraps (you − opt far from the optimum, "ΔE +0.0162 m  Δψ
+/// +0.0433 rad  -533.45 m" at 80×24) must not push the fence off a short
+/// pane: the impact's lines give up their rows first (tab 3 shows them).
+fn keep_fence_in_view(inner: Rect, lines: &mut Vec<Line<'static>>) {
+    let width = inner.width as usize;
+    for name in ["impulse", "impact"] {
+        let rows_to_fence = labelled(lines, "fence").map(|k| {
+            lines[..=k]
+                .iter()
+                .map(|l| super::words::rows_needed(&l.spans, width))
+                .sum::<usize>()
+        });
+        if rows_to_fence.is_none_or(|rows| rows <= inner.height as usize) {
+            return;
+        }
+        remove_labelled(lines, name);
+    }
 }
 
 /// The launch and the flight: "launch 44.30 m/s …", "flight range …".
