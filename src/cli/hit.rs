@@ -281,6 +281,7 @@ pub(super) fn trajectory_svg(
     let (summary, points) = sampled(&preset.scene, samples)?;
     let end = points.last().map_or(0.0, |p| p.y);
     let picture = TrajectoryPicture {
+        park: None,
         preset: preset.name.clone(),
         paths: vec![FlightPath {
             name: match preset.scene.kind {

@@ -303,6 +303,7 @@ fn a_trajectory_draws_every_path_point_and_the_fence() {
         })
         .collect();
     let picture = TrajectoryPicture {
+        park: None,
         preset: "fastball".into(),
         paths: vec![FlightPath {
             name: "now".into(),
@@ -347,6 +348,7 @@ fn a_trajectory_with_a_ground_track_draws_the_field_from_above() {
         .map(|&(x, z)| (x.hypot(z), 1.0 + x.hypot(z) * (120.0 - x.hypot(z)) / 130.0))
         .collect();
     let picture = TrajectoryPicture {
+        park: None,
         preset: "fly-ball".into(),
         paths: vec![FlightPath {
             name: "now".into(),
@@ -528,7 +530,7 @@ fn svgs_follow_units_imperial_on_every_axis_and_label() {
         .success();
     let si = texts(&std::fs::read_to_string(&target).unwrap());
     assert!(
-        si.contains("undercut E (mm)") && si.contains("range (m)"),
+        si.contains("undercut E (m)") && si.contains("range (m)"),
         "{si}"
     );
 }
@@ -656,7 +658,7 @@ fn explorer_x_in_an_imperial_scene_draws_in_its_units() {
     tui_support::key(&mut app, KeyCode::Char('4'));
     tui_support::settle(&mut app);
     let figure = svg(&app);
-    for label in ["range (ft)", "(mph)", "bat 67.108 mph"] {
+    for label in ["range (ft)", "(mph)", "bat 67.11 mph"] {
         assert!(figure.contains(label), "{label}: {figure}");
     }
     assert!(
@@ -671,4 +673,48 @@ fn explorer_x_in_an_imperial_scene_draws_in_its_units() {
         si.contains("range (m)") && si.contains("bat 30 m/s"),
         "{si}"
     );
+}
+
+/// Issue 36, item 7: `x` writes what is on screen. On the impact tab the
+/// impact chart (the paper's Fig. 2: v1 and v3 against p, p_s, p_c and p_f
+/// marked), not the trajectory; with a park chosen its wall, from the side
+/// where the ball crosses it and from above pole to pole, not the generic
+/// fence; each in the units shown.
+#[test]
+fn explorer_x_writes_the_impact_chart_and_the_chosen_parks_wall() {
+    use ratatui::crossterm::event::KeyCode;
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = tui_support::app(80, 24, None);
+    tui_support::settle(&mut app);
+    tui_support::key(&mut app, KeyCode::Char('3'));
+    let path = app.export_to(dir.path()).unwrap();
+    assert!(path.ends_with("homerun-impact-1.svg"), "{path:?}");
+    let svg = std::fs::read_to_string(&path).unwrap();
+    let text = texts(&svg);
+    for label in [
+        "v1", "v3", "p_s", "p_c", "p_f", "(m/s)", "p (N·s)", "Fig. 2",
+    ] {
+        assert!(text.contains(label), "{label}: {text}");
+    }
+    assert!(!text.contains("Trajectory"), "{text}");
+    // v1 and v3, one vertex a sample.
+    assert_eq!(lines(&svg).iter().filter(|&&n| n == 401).count(), 2);
+    tui_support::key(&mut app, KeyCode::Char('u'));
+    let text = texts(&std::fs::read_to_string(app.export_to(dir.path()).unwrap()).unwrap());
+    assert!(text.contains("(mph)") && !text.contains("m/s"), "{text}");
+
+    tui_support::key(&mut app, KeyCode::Char('1'));
+    tui_support::pick(&mut app, "COL");
+    tui_support::settle(&mut app);
+    let svg = std::fs::read_to_string(app.export_to(dir.path()).unwrap()).unwrap();
+    let text = texts(&svg);
+    assert!(
+        text.contains("COL's wall where the ball crosses it: ") && text.contains(" ft high"),
+        "{text}"
+    );
+    assert!(!text.contains("fence: 400 ft out"), "{text}");
+    // From above, Coors' wall point by point, not the generic arc's 91.
+    let wall = app.chosen_park().unwrap().fence.points().len();
+    assert_ne!(wall, 91);
+    assert!(lines(&svg).contains(&wall), "{:?} vs {wall}", lines(&svg));
 }

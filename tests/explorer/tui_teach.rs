@@ -89,7 +89,8 @@ fn g_selects_the_first_input() {
 }
 
 /// Issue 36, item 3: on a Table II preset the readout shows the paper's
-/// optimum under ours (26.5 mm beside 27.27), at 80×24 too; with the bat
+/// optimum under ours (0.0265 m beside 0.0273, in the unit of Table II and
+/// of the input), at 80×24 too; with the bat
 /// changed the row is no longer the paper's, and the line goes.
 #[test]
 fn the_paper_optimum_stands_under_ours_on_table_two_presets() {
@@ -97,17 +98,17 @@ fn the_paper_optimum_stands_under_ours_on_table_two_presets() {
     settle(&mut app);
     let text = screen(&app);
     assert!(
-        text.contains("optimum  E 27.27 mm  ψ 0.1744  134.79 m"),
+        text.contains("optimum  E 0.0273 m  ψ 0.1744 rad  134.79 m"),
         "{text}"
     );
     assert!(
-        text.contains("Table II E 26.50 mm  ψ 0.1594  134.80 m"),
+        text.contains("Table II E 0.0265 m  ψ 0.1594 rad  134.80 m"),
         "{text}"
     );
     // A swing moved off the paper's (E, ψ) is still Table II's scene.
     key(&mut app, KeyCode::Char('r'));
     settle(&mut app);
-    assert!(screen(&app).contains("Table II E 26.50 mm"));
+    assert!(screen(&app).contains("Table II E 0.0265 m"));
     set_and_settle(&mut app, "bat.speed", "31");
     assert!(!screen(&app).contains("Table II"), "{}", screen(&app));
     // The glossary says why the two differ, and answers the curve ball's
@@ -223,4 +224,65 @@ fn i_shows_the_words_the_panes_cut_short() {
     assert!(whole.contains("Message"), "{whole}");
     let last_word = message.split_whitespace().last().unwrap();
     assert!(whole.contains(last_word), "{message}\n{whole}");
+}
+
+/// Issue 36, item 2: one unit per quantity. In SI the undercut is in m (as
+/// the input, Table II and the figures give it) and every angle in rad; in
+/// baseball units E in inches and angles in degrees: the readout, the
+/// surface's axis and a figure's caption (with the numbers it quotes)
+/// never show another.
+#[test]
+fn each_quantity_has_one_unit_on_every_pane() {
+    use homerun::tui::layout::{Tab, layout};
+    let mut app = app(200, 60, None);
+    settle(&mut app);
+    let readout = |app: &homerun::tui::app::App| {
+        let panes = layout(app.size, app.tab, true);
+        // A non-breaking space (a number glued to its unit) reads as a space.
+        rows_in(app, panes.readout.unwrap())
+            .join("\n")
+            .replace('\u{a0}', " ")
+    };
+    let si = readout(&app);
+    assert!(si.contains("E 0.0273 m  ψ 0.1744 rad"), "{si}");
+    assert!(si.contains("0.4604 rad"), "{si}");
+    assert!(!si.contains("mm") && !si.contains("° "), "{si}");
+    key(&mut app, KeyCode::Char('2'));
+    assert!(screen(&app).contains("E (m) →"));
+    assert!(!screen(&app).contains("(mm)"));
+    key(&mut app, KeyCode::Char('u'));
+    settle(&mut app);
+    let imperial = readout(&app);
+    assert!(imperial.contains("E 1.074 in  ψ 9.99°"), "{imperial}");
+    assert!(imperial.contains("26.38°"), "{imperial}");
+    for si_unit in [" rad", " m ", "m/s", " mm"] {
+        assert!(!imperial.contains(si_unit), "{si_unit} in {imperial}");
+    }
+    assert!(screen(&app).contains("E (in) →"));
+    // Fig. 13's caption quotes ψ and the spins of A and B: in ° and rpm.
+    key(&mut app, KeyCode::Char('4'));
+    while app.figure_number != 13 {
+        key(&mut app, KeyCode::Char('f'));
+    }
+    settle(&mut app);
+    assert_eq!(app.tab, Tab::Figures);
+    assert!(screen(&app).contains("range (ft) against undercut E (in) at ψ ="));
+    // `i` shows the caption whole: its words, the panes' borders and the
+    // curves behind it aside.
+    key(&mut app, KeyCode::Char('i'));
+    let words = screen(&app)
+        .replace(|c: char| ('\u{2800}'..='\u{28ff}').contains(&c), " ")
+        .lines()
+        .flat_map(|l| l.split(['│', '"']))
+        .collect::<Vec<_>>()
+        .join(" ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(words.contains("at ψ = 9.13°"), "{words}");
+    assert!(words.contains("ω_bf = 1742 rpm and 2944 rpm"), "{words}");
+    assert!(
+        !words.contains("rad/s") && !words.contains("E (m)"),
+        "{words}"
+    );
 }

@@ -262,14 +262,28 @@ fn the_picker_jumps_and_a_name_with_spaces_is_fixed_up() {
     }
     typed(&mut app, "class demo");
     key(&mut app, KeyCode::Enter);
-    assert!(!matches!(app.mode, Mode::Save { .. }), "saved, not refused");
-    assert_eq!(app.preset_name, "class-demo");
-    // Issue 36, item 8: the user is told the name changed.
-    let (message, error) = app.message.clone().expect("a message");
+    // Issue 36, item 8: a name with a space is asked about, not changed
+    // silently: the box offers class-demo, and nothing is saved yet.
+    let Mode::Save { text, error, .. } = &app.mode else {
+        panic!("the save box stays open to ask");
+    };
+    assert_eq!(text.lines().join(""), "class-demo");
+    let question = error.clone().expect("a question");
     assert!(
-        !error && message.contains("`class demo` became `class-demo`"),
-        "{message}"
+        question.contains("names take no spaces: Enter saves `class demo` as `class-demo`"),
+        "{question}"
     );
+    assert!(homerun::preset::load("class-demo", Some(dir.path())).is_err());
+    let asked = screen(&app);
+    assert!(asked.contains("names take no spaces"), "{asked}");
+    key(&mut app, KeyCode::Enter);
+    assert!(
+        !matches!(app.mode, Mode::Save { .. }),
+        "saved once confirmed"
+    );
+    assert_eq!(app.preset_name, "class-demo");
+    let (message, error) = app.message.clone().expect("a message");
+    assert!(!error && message.starts_with("saved "), "{message}");
     homerun::preset::load("class-demo", Some(dir.path())).unwrap();
     assert!(
         app.description.starts_with("saved from the explorer"),

@@ -6,7 +6,9 @@
 
 use plotters::prelude::*;
 
-use super::{FONT, PictureError, draw_legend, draw_title, drawn, house_style, series_color};
+use super::{
+    FONT, PictureError, draw_legend, draw_named_line, draw_title, drawn, house_style, series_color,
+};
 use analysis::bench::TrajectoryRow;
 
 /// The smallest error drawn (m): a row that hit the reference exactly is
@@ -120,16 +122,7 @@ pub fn bench_svg(rows: &[TrajectoryRow]) -> Result<String, PictureError> {
         .map_err(drawn)?;
         for (k, (name, points)) in lines.iter().enumerate() {
             let color = series_color(k);
-            chart
-                .draw_series(LineSeries::new(
-                    points.iter().copied(),
-                    color.stroke_width(2),
-                ))
-                .map_err(drawn)?
-                .label(name.clone())
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
-                });
+            draw_named_line(&mut chart, k, name, points)?;
             chart
                 .draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
                 .map_err(drawn)?;

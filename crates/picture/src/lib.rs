@@ -9,12 +9,14 @@
 
 mod bench;
 mod figure;
+mod impact;
 mod park;
 mod surface;
 mod trajectory;
 
 pub use bench::bench_svg;
 pub use figure::{figure_svg, table_figure_svg, table_figure_svg_now};
+pub use impact::{ImpactPicture, impact_svg_in};
 pub use park::park_svg_in;
 pub use surface::{SurfacePicture, surface_svg, surface_svg_in};
 pub use trajectory::{
@@ -25,7 +27,7 @@ pub use units::UnitSystem;
 use units::Quantity;
 
 /// A picture's lengths, sizes, angles and ranges in the units asked for:
-/// SI (m, mm, rad) by default, or ft, in and ° under `--units imperial`.
+/// SI (m, rad) by default, or ft, in and ° under `--units imperial`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 struct Scale(UnitSystem);
 
@@ -40,23 +42,15 @@ impl Scale {
         Quantity::Distance.in_system(self.0).symbol
     }
 
-    /// An undercut (m) on the surface's axis: in mm, as the paper's Fig. 7,
-    /// or in inches.
+    /// An undercut (m) on the surface's axis: in m, as Table II and the
+    /// figures give E (one unit for E everywhere), or in inches.
     fn undercut(self, m: f64) -> f64 {
-        if self.0 == UnitSystem::Si {
-            m * 1e3
-        } else {
-            Quantity::Size.in_system(self.0).show(m)
-        }
+        Quantity::Size.in_system(self.0).show(m)
     }
 
-    /// The undercut axis' unit: "mm" or "in".
+    /// The undercut axis' unit: "m" or "in".
     fn undercut_unit(self) -> &'static str {
-        if self.0 == UnitSystem::Si {
-            "mm"
-        } else {
-            Quantity::Size.in_system(self.0).symbol
-        }
+        Quantity::Size.in_system(self.0).symbol
     }
 
     /// An angle (rad) in the unit shown.
@@ -118,6 +112,27 @@ fn draw_legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
         .border_style(RGBColor(180, 180, 180))
         .draw()
         .map_err(drawn)
+}
+
+/// A line in the `k`-th series' colour, named in the legend.
+fn draw_named_line<'a, DB: DrawingBackend + 'a, CT: CoordTranslate<From = (f64, f64)>>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    k: usize,
+    name: &str,
+    points: &[(f64, f64)],
+) -> Result<(), PictureError> {
+    let color = series_color(k);
+    chart
+        .draw_series(plotters::series::LineSeries::new(
+            points.iter().copied(),
+            color.stroke_width(2),
+        ))
+        .map_err(drawn)?
+        .label(name)
+        .legend(move |(x, y)| {
+            plotters::element::PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+        });
+    Ok(())
 }
 
 /// Every chart's axes alike: the descriptions' and labels' fonts and the
@@ -189,18 +204,7 @@ fn tick_label(span: f64) -> impl Fn(&f64) -> String {
     } else {
         3
     };
-    move |v: &f64| {
-        let text = format!("{v:.decimals$}");
-        if text
-            .trim_start_matches('-')
-            .chars()
-            .all(|c| c == '0' || c == '.')
-        {
-            text.trim_start_matches('-').to_owned()
-        } else {
-            text
-        }
-    }
+    move |v: &f64| units::fixed(*v, decimals)
 }
 
 /// `text` cut into lines of at most `width` characters at spaces.

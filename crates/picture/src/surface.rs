@@ -142,7 +142,7 @@ const WIDTH: u32 = 960;
 const HEIGHT: u32 = 680;
 const SCALE_WIDTH: u32 = 130;
 
-/// The range surface as an SVG heatmap, E in mm, ψ in rad, ranges in m.
+/// The range surface as an SVG heatmap, E in m, ψ in rad, ranges in m.
 pub fn surface_svg(picture: &SurfacePicture) -> Result<String, PictureError> {
     surface_svg_in(picture, UnitSystem::Si)
 }
@@ -181,7 +181,7 @@ pub fn surface_svg_in(
             py(edges(grid.swing_angle, grid.rows, 0).0),
             py(edges(grid.swing_angle, grid.rows, grid.rows - 1).1),
         );
-        // E in mm on the axis, as the paper's Fig. 7.
+        // E in m on the axis, as Table II and the figures give it.
         let mut chart = ChartBuilder::on(&main)
             .margin(12)
             .x_label_area_size(44)

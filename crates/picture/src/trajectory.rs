@@ -49,6 +49,11 @@ pub struct TrajectoryPicture {
     /// Why there is no range ("did not land within 600.0 s …"), if none.
     pub not_landed: Option<String>,
     pub fence: Option<Fence>,
+    /// A park chosen instead of the generic fence: its code and its wall
+    /// from pole to pole as (direction from centre field in rad, distance
+    /// in m). The side view's `fence` is then its wall where the ball
+    /// crosses it, and the view from above draws the wall, not an arc.
+    pub park: Option<(String, Vec<(f64, f64)>)>,
 }
 
 const WIDTH: u32 = 960;
@@ -90,6 +95,10 @@ pub fn trajectory_svg_in(
             distance: l(f.distance),
             height: l(f.height),
         }),
+        park: picture
+            .park
+            .as_ref()
+            .map(|(code, wall)| (code.clone(), wall.iter().map(|&(d, r)| (d, l(r))).collect())),
         ..picture.clone()
     };
     drawn_in(&shown, scale.len_unit())
@@ -186,7 +195,13 @@ fn drawn_in(picture: &TrajectoryPicture, unit: &str) -> Result<String, PictureEr
                 )))
                 .map_err(drawn)?
                 .label(format!(
-                    "fence: {} {unit} out, {} {unit} high",
+                    "{}: {} {unit} out, {} {unit} high",
+                    picture
+                        .park
+                        .as_ref()
+                        .map_or("fence".to_owned(), |(code, _)| format!(
+                            "{code}'s wall where the ball crosses it"
+                        )),
                     trimmed_to(f.distance, unit),
                     trimmed_to(f.height, unit)
                 ))
@@ -217,6 +232,7 @@ fn top_view<DB: DrawingBackend>(
     let reach = tracks()
         .map(|&(x, z)| x.hypot(z))
         .chain(picture.fence.map(|f| f.distance))
+        .chain(picture.park.iter().flat_map(|(_, w)| w.iter().map(|p| p.1)))
         .filter(|v| v.is_finite())
         .fold(1.0_f64, f64::max)
         * 1.06;
@@ -261,12 +277,20 @@ fn top_view<DB: DrawingBackend>(
             )))
             .map_err(drawn)?;
     }
-    if let Some(f) = picture.fence {
-        let arc: Vec<(f64, f64)> = (0..=90)
-            .map(|k| {
-                let direction = (f64::from(k) - 45.0).to_radians();
-                (f.distance * direction.sin(), f.distance * direction.cos())
-            })
+    // A park's wall as it stands, else the generic fence's arc.
+    let wall: Option<Vec<(f64, f64)>> = match (&picture.park, picture.fence) {
+        (Some((_, wall)), _) => Some(wall.clone()),
+        (None, Some(f)) => Some(
+            (0..=90)
+                .map(|k| ((f64::from(k) - 45.0).to_radians(), f.distance))
+                .collect(),
+        ),
+        (None, None) => None,
+    };
+    if let Some(wall) = wall {
+        let arc: Vec<(f64, f64)> = wall
+            .iter()
+            .map(|&(direction, distance)| (distance * direction.sin(), distance * direction.cos()))
             .collect();
         chart
             .draw_series(std::iter::once(PathElement::new(arc, NOW.stroke_width(3))))

@@ -25,6 +25,7 @@ mod mouse;
 mod presets;
 mod reports;
 mod scene;
+mod units_shown;
 
 use super::format::{error_text, read_value, shown_value};
 pub use super::inputs::{input_count, input_key, scene_inputs};
@@ -503,41 +504,6 @@ impl App {
             units: self.units,
             work,
         }
-    }
-
-    /// Key `u`: every quantity shown in the other units. Nothing physical
-    /// changes, but a nudge now moves by the shown unit's step, so the Δ
-    /// columns are recomputed; the optimum and surface stay when they are
-    /// complete (else everything is, as after an input's change).
-    /// Shows every quantity in `units` (as `u` would switch them).
-    pub fn set_units(&mut self, units: UnitSystem) {
-        if self.units != units {
-            self.toggle_units();
-        }
-    }
-
-    fn toggle_units(&mut self) {
-        self.units = self.units.toggled();
-        self.message = Some((
-            match self.units {
-                UnitSystem::Si => "SI units: m, m/s, rad, rad/s, kg, °C, hPa (u: baseball's)",
-                UnitSystem::Imperial => "baseball units: ft, in, mph, °, rpm, oz, °F, inHg (u: SI)",
-            }
-            .into(),
-            false,
-        ));
-        let done = self.optimum.filter(|o| o.done);
-        if self.is_swing() && !(done.is_some() && self.surface_fresh()) {
-            self.inputs_changed = true;
-            return;
-        }
-        self.generation += 1;
-        if let Some(surface) = &mut self.surface {
-            surface.generation = self.generation;
-        }
-        self.job = Some(self.job_for(Work::Gains {
-            optimum: done.map(|o| o.best),
-        }));
     }
 
     /// A scene's flight sampled at the plot's resolution, flown once: its

@@ -5,7 +5,7 @@
 //! optimiser and the range surface in the background. Beneath both app and
 //! view: `keymap` (every key, what it does and its help), `layout` (where
 //! the panes go), `theme` (colours and styles) and `format` (numbers as
-//! shown). Every arrow points down: `view` reads `app`,
+//! shown; `shown`, one text per quantity). Every arrow points down: `view` reads `app`,
 //! and `app` never reads `view`. This file owns the terminal: set up, event
 //! loop, and restoring it on every way out.
 
@@ -17,6 +17,7 @@ pub mod keymap;
 pub mod layout;
 pub mod margin;
 pub mod palette;
+pub mod shown;
 mod signals;
 pub mod theme;
 pub mod view;

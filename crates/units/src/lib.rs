@@ -333,9 +333,28 @@ pub fn significant(value: f64) -> String {
     }
 }
 
+/// `value` to `decimals` decimals, with no sign on a zero: "-0.00" reads
+/// as a loss, or as a number below zero on an axis.
+pub fn fixed(value: f64, decimals: usize) -> String {
+    let text = format!("{value:.decimals$}");
+    let digits = text.trim_start_matches('-');
+    if digits.chars().all(|c| c == '0' || c == '.') {
+        digits.to_owned()
+    } else {
+        text
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_fixed_zero_has_no_sign() {
+        assert_eq!(fixed(-0.0001, 2), "0.00");
+        assert_eq!(fixed(-0.006, 2), "-0.01");
+        assert_eq!(fixed(26.375, 1), "26.4");
+    }
 
     #[test]
     fn typed_values_convert_by_the_exact_definitions() {

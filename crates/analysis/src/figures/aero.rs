@@ -33,9 +33,9 @@ pub(super) fn figure3(scene: &Scene) -> FigureData {
         .map(|(re, mark)| marked_row(&[re, re * speed_per_re, drag(re)], &mark))
         .collect();
     let spin_note = if model == DragModel::Nathan {
-        let rpm = spin_rate * 60.0 / std::f64::consts::TAU;
+        // In rad/s alone (one unit a title): `--units imperial` shows rpm.
         format!(
-            ", at the launch spin {spin_rate:.1} rad/s = {rpm:.0} rpm: C_D = {:.3}",
+            ", at the launch spin {spin_rate:.1} rad/s: C_D = {:.3}",
             drag(paper::DRYDEN_RE)
         )
     } else {

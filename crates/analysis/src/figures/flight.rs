@@ -74,7 +74,7 @@ pub(super) fn figure13(scene: &Scene) -> FigureData {
         ]);
     }
     let title = format!(
-        "range (m) against undercut E (m) at ψ = {} rad, with launch; A and B are the E giving ω_bf = {POINT_A_SPIN} and {POINT_B_SPIN} rad/s",
+        "range (m) against undercut E (m) at ψ = {} rad, with launch; A and B are the E giving ω_bf = {POINT_A_SPIN} rad/s and {POINT_B_SPIN} rad/s",
         trimmed(scene.bat.swing_angle)
     );
     let mut table = columns(&[("undercut", "E (m)", 5), ("range", "range (m)", 2)]);

@@ -54,6 +54,12 @@ pub fn converted(mut data: FigureData, shown: UnitSystem) -> FigureData {
             }
         }
     }
+    // The marks' labels ("A (182.4 rad/s)") beside the converted axes.
+    for cell in data.rows.iter_mut().flatten() {
+        if let Cell::Text(text) = cell {
+            *text = quoted(text, shown);
+        }
+    }
     data.title = title(&data.title, shown);
     data
 }
@@ -72,8 +78,9 @@ pub fn now(data: &FigureData, scene: &Scene, shown: UnitSystem) -> Option<f64> {
     })
 }
 
-/// The units a title names for its axes, in the units shown (the numbers it
-/// quotes keep their SI units beside them).
+/// The units a title names for its axes, in the units shown, and the
+/// numbers it quotes too ("ψ = 9.13°", "ω_bf = 1742 rpm"), so that no
+/// title has rad/s beside rpm.
 pub fn title(title: &str, shown: UnitSystem) -> String {
     if shown == UnitSystem::Si {
         return title.to_owned();
@@ -93,8 +100,59 @@ pub fn title(title: &str, shown: UnitSystem) -> String {
         out = out.replace(si, imperial);
     }
     // Speeds and spins in parentheses: a sweep's axis, "V_B0 (m/s)", "ω_b0
-    // (rad/s, topspin positive)"; numbers quoted in the title keep theirs.
-    out.replace("(m/s", "(mph").replace("(rad/s", "(rpm")
+    // (rad/s, topspin positive)".
+    let out = out.replace("(m/s", "(mph").replace("(rad/s", "(rpm");
+    quoted(&out, shown)
+}
+
+/// `text` with each number quoted with an angle's or a spin's SI unit
+/// ("0.1594 rad", "182.4 rad/s") in the units shown, to about its digits
+/// ("9.13°", "1742 rpm"): a mark's label, a title.
+pub fn quoted(text: &str, shown: UnitSystem) -> String {
+    if shown == UnitSystem::Si {
+        return text.to_owned();
+    }
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(at) = rest.find(" rad") {
+        let (before, after) = rest.split_at(at);
+        let spin = after.starts_with(" rad/s");
+        let unit_len = if spin { " rad/s".len() } else { " rad".len() };
+        // A unit ends there: "rad" is not the start of "radius".
+        let ends = after[unit_len..]
+            .chars()
+            .next()
+            .is_none_or(|c| !c.is_alphanumeric());
+        let start = before
+            .rfind(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+            .map_or(0, |k| {
+                k + before[k..].chars().next().map_or(1, char::len_utf8)
+            });
+        let number = &before[start..];
+        match number.parse::<f64>() {
+            Ok(si) if ends && !number.is_empty() => {
+                let quantity = if spin {
+                    Quantity::Spin
+                } else {
+                    Quantity::Angle
+                };
+                let unit = quantity.in_system(shown);
+                let decimals = number.split_once('.').map_or(0, |(_, d)| d.len());
+                let value = unit.show(si);
+                let decimals = unit.decimals(decimals);
+                let gap = if unit.symbol == "°" { "" } else { " " };
+                out.push_str(&before[..start]);
+                out.push_str(&format!("{value:.decimals$}{gap}{}", unit.symbol));
+            }
+            _ => {
+                out.push_str(before);
+                out.push_str(&after[..unit_len]);
+            }
+        }
+        rest = &after[unit_len..];
+    }
+    out.push_str(rest);
+    out
 }
 
 /// The inputs a figure was computed with, in one line, as
@@ -106,12 +164,20 @@ pub fn conditions(name: &str, s: &Scene, shown: UnitSystem) -> String {
     let v = |quantity: Quantity, si: f64| {
         let unit = quantity.in_system(shown);
         let gap = if unit.symbol == "°" { "" } else { " " };
-        let value = if unit.is_identity() {
-            si
+        if unit.is_identity() {
+            return format!("{}{gap}{}", figures::short(si), unit.symbol);
+        }
+        // Four significant digits: more (-1909.859 rpm for -200 rad/s)
+        // show only the conversion.
+        let value = unit.show(si);
+        let decimals = (3 - value.abs().max(1e-9).log10().floor() as i32).clamp(0, 6) as usize;
+        let text = format!("{value:.decimals$}");
+        let text = if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.')
         } else {
-            unit.show(si)
+            &text
         };
-        format!("{}{gap}{}", figures::short(value), unit.symbol)
+        format!("{text}{gap}{}", unit.symbol)
     };
     if s.kind == SceneKind::BattedBall {
         let launch = s.batted_ball();
@@ -164,5 +230,26 @@ mod tests {
             ),
             "the optimum (E_opt in, ψ_opt °, range ft) and its launch against bat speed V_B0 (mph)"
         );
+        // The numbers it quotes too: no rad/s beside rpm (issue 36).
+        assert_eq!(
+            title(
+                "range (m) against undercut E (m) at ψ = 0.1594 rad, with launch; A and B are the E giving ω_bf = 182.4 rad/s and 240.1 rad/s",
+                imperial
+            ),
+            "range (ft) against undercut E (in) at ψ = 9.13°, with launch; A and B are the E giving ω_bf = 1742 rpm and 2293 rpm"
+        );
+        assert_eq!(quoted("A (182.4 rad/s)", imperial), "A (1742 rpm)");
+        // The conditions to four significant digits, not the conversion's.
+        let fastball = Scene::default();
+        let line = conditions("fastball", &fastball, imperial);
+        assert!(
+            line.contains("pitch 93.95 mph, spin -1910 rpm; bat 67.11 mph"),
+            "{line}"
+        );
+        assert_eq!(
+            quoted("the bat's radius 0.035 m", imperial),
+            "the bat's radius 0.035 m"
+        );
+        assert_eq!(quoted("A (182.4 rad/s)", UnitSystem::Si), "A (182.4 rad/s)");
     }
 }

@@ -2,8 +2,9 @@
 //! folder (`homerun-trajectory-1.svg`, `-2`, …; never over an existing
 //! file), with where it went, or why not, in the status line (the screen's
 //! full width, where a path fits best; until the next key). The trajectory
-//! (from the side and from above) for tabs 1, 3 and 5, the range surface
-//! for tab 2, the figure for tab 4, each in the units shown (as the command
+//! (from the side and from above) for tabs 1 and 5, the impact chart (the
+//! paper's Fig. 2) for tab 3, the range surface for tab 2, the figure for
+//! tab 4, each in the units shown (as the command
 //! line's `--units` draws them). A write of ~50 KB is done at once, on the
 //! UI thread.
 
@@ -12,7 +13,7 @@ use std::path::{Path, PathBuf};
 use super::App;
 use crate::layout::Tab;
 use analysis::figures::{FigureData, shown};
-use picture::{self, FlightPath, PictureError, SurfacePicture, TrajectoryPicture};
+use picture::{self, FlightPath, ImpactPicture, PictureError, SurfacePicture, TrajectoryPicture};
 
 /// The most files of one kind `x` numbers before it gives up.
 const MAX_NUMBER: u32 = 10_000;
@@ -76,6 +77,43 @@ impl App {
         Ok(path)
     }
 
+    /// The impact as the tab draws it: v1 (and a 3-D swing's v2) and v3
+    /// against p, with p_s, p_c, p_f and the step-through's cursor.
+    fn impact_picture(&self) -> ImpactPicture {
+        let mut picture = ImpactPicture {
+            preset: self.preset_name.clone(),
+            curves: Vec::new(),
+            marks: Vec::new(),
+            cursor: None,
+        };
+        let Some(impact) = &self.flown.impact else {
+            return picture;
+        };
+        let pf = impact.separation_impulse();
+        let states: Vec<_> = (0..=400)
+            .map(|k| impact.at(pf * f64::from(k) / 400.0))
+            .collect();
+        let curve = |name: &str, value: fn(&model::impact::Moment) -> f64| {
+            let points = states.iter().map(|s| (s.impulse, value(s))).collect();
+            (name.to_owned(), points)
+        };
+        picture.curves.push(curve("v1", |s| s.slip.x));
+        if impact.spatial().is_some() {
+            picture.curves.push(curve("v2", |s| s.slip.y));
+        }
+        picture.curves.push(curve("v3", |s| s.normal_velocity));
+        picture
+            .marks
+            .extend(impact.stick_impulse().map(|p| ("p_s".to_owned(), p)));
+        picture
+            .marks
+            .push(("p_c".to_owned(), impact.compression_impulse()));
+        picture.marks.push(("p_f".to_owned(), pf));
+        let stops = super::impact_stops(impact);
+        picture.cursor = stops.get(self.impact_stop).map(|s| s.impulse);
+        picture
+    }
+
     /// The chart in view as SVG, with its kind for the file's name.
     fn chart_svg(&self) -> Result<(String, Result<String, PictureError>), String> {
         match self.tab {
@@ -132,6 +170,11 @@ impl App {
                     picture::table_figure_svg_now(&data, now, &self.preset_name),
                 ))
             }
+            // The impact chart on screen (the paper's Fig. 2), a swing's.
+            Tab::Impact if self.flown.impact.is_some() => Ok((
+                "impact".into(),
+                picture::impact_svg_in(&self.impact_picture(), self.units),
+            )),
             Tab::Flight | Tab::Impact | Tab::Field => {
                 let flight = &self.flown.flight;
                 let mut paths = vec![FlightPath {
@@ -159,7 +202,18 @@ impl App {
                     range: flight.landed.then_some(flight.range),
                     apex: flight.apex,
                     not_landed: (!flight.landed).then(|| "did not land".to_owned()),
-                    fence: self.fence,
+                    // With a park chosen, its wall, as the panes draw it.
+                    fence: self
+                        .side_fence()
+                        .map(|(distance, height)| preset::Fence { distance, height }),
+                    park: self.chosen_park().map(|park| {
+                        let wall = park
+                            .fence
+                            .points()
+                            .iter()
+                            .map(|p| (p.direction, p.distance));
+                        (park.code.clone(), wall.collect())
+                    }),
                 };
                 Ok((
                     "trajectory".into(),

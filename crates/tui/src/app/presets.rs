@@ -7,6 +7,7 @@ use std::sync::Arc;
 use ratatui::crossterm::event::KeyEvent;
 use ratatui_textarea::TextArea;
 
+use super::edit::prefilled;
 use super::{App, Find, Mode, Pick, PickItem, Searchable};
 use crate::keymap::Action;
 use preset::compact::CompactPresets;
@@ -24,16 +25,22 @@ impl App {
         match action {
             Some(Action::Close) => {}
             Some(Action::Confirm) => {
-                // A name with spaces is fixed up, not refused: "class demo"
-                // is saved as class-demo, and the message says so.
+                // A name with spaces is asked about, never changed silently:
+                // "class demo" offers class-demo in the box, which Enter then
+                // saves (or the user edits it).
                 let typed = text.lines().join("");
                 let name = typed.split_whitespace().collect::<Vec<_>>().join("-");
-                let renamed = (name != typed.trim()).then(|| {
-                    format!(
-                        " (`{}` became `{name}`: names take no spaces)",
-                        typed.trim()
-                    )
-                });
+                if name != typed.trim() {
+                    self.mode = Mode::Save {
+                        text: prefilled(name.clone(), &self.theme),
+                        error: Some(format!(
+                            "names take no spaces: Enter saves `{}` as `{name}` (or edit it; Esc cancels)",
+                            typed.trim()
+                        )),
+                        overwrite,
+                    };
+                    return;
+                }
                 // Taking a bundled name hides the bundled preset from
                 // `--preset NAME` and from `o`: only when asked twice.
                 // Overwriting one of the user's own: only when asked twice too.
@@ -62,8 +69,7 @@ impl App {
                         // The preset row's hint now describes the one saved.
                         self.description = self.saved_description();
                         self.preset_name = name;
-                        let renamed = renamed.unwrap_or_default();
-                        self.message = Some((format!("saved {}{renamed}", path.display()), false));
+                        self.message = Some((format!("saved {}", path.display()), false));
                     }
                     Err(e) => {
                         self.mode = Mode::Save {

@@ -25,7 +25,7 @@ fn sections(app: &App) -> Vec<(&'static str, Vec<String>)> {
     }
     let figure = app.figure.as_ref().and_then(|f| f.data.as_ref().ok());
     if let (Tab::Figures, Some(data)) = (app.tab, figure) {
-        let mut words = vec![data.title.clone()];
+        let mut words = vec![analysis::figures::shown::title(&data.title, app.units)];
         words.extend(data.comparisons.iter().map(|c| {
             format!(
                 "paper {} · ours {} {}: {}",

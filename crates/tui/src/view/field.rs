@@ -85,28 +85,51 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     datasets.push(chart::curve(now_mark.0, app.theme.swing, &now));
     datasets.push(chart::points(Marker::Block, app.theme.landing, &landing));
 
+    let block = titled_block(
+        app,
+        area,
+        (!best.is_empty(), !pinned.is_empty()),
+        walls.is_some(),
+    );
+    frame.render_widget(block, area);
+    // No labels on either axis: the chart's graph is the whole plot.
+    let chart = Chart::new(datasets)
+        .x_axis(Axis::default().bounds(map.z))
+        .y_axis(Axis::default().bounds(map.x))
+        .legend_position(None);
+    frame.render_widget(chart, map.plot);
+
+    write_labels(frame, (&map, k), app, &ring_arcs, wind.as_ref());
+}
+
+/// The pane's border with its title ("Field 134.70 m, centre field"), the
+/// paths' legend where it fits (`shown`: whether best and the pin are
+/// drawn) and, under a park's wall, the wall's key.
+fn titled_block(app: &App, area: Rect, shown: (bool, bool), walls: bool) -> Block<'static> {
+    let (now_mark, best_mark, pin_mark) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
     let mut legend = vec![Span::styled(
         format!("{} now ", now_mark.1),
         app.theme.swing,
     )];
-    if !best.is_empty() {
+    if shown.0 {
         legend.push(Span::styled(
             format!("{} best ", best_mark.1),
             app.theme.optimal,
         ));
     }
-    if !pinned.is_empty() {
+    if shown.1 {
         legend.push(Span::styled(
             format!("{} pin ", pin_mark.1),
             app.theme.pinned,
         ));
     }
     let legend = Line::from(legend);
+    let flight = &app.flown.flight;
     let numbers = if flight.landed {
         format!(
             "{}, {} ",
             app.range_text(flight.range),
-            direction_words(flight.direction)
+            crate::shown::direction_text(app.units, flight.direction)
         )
     } else {
         "does not land ".to_owned()
@@ -117,22 +140,24 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     if title.chars().count() + legend.width() <= room {
         block = block.title_top(legend.right_aligned());
     }
-    if walls.is_some() {
+    if walls {
         let key = wall_legend(app);
         if key.width() <= room {
             block = block.title_bottom(key);
         }
     }
-    frame.render_widget(block, area);
-    // No labels on either axis: the chart's graph is the whole plot.
-    let chart = Chart::new(datasets)
-        .x_axis(Axis::default().bounds(map.z))
-        .y_axis(Axis::default().bounds(map.x))
-        .legend_position(None);
-    frame.render_widget(chart, map.plot);
+    block
+}
 
-    // The rings' distances just left of the left-field line, the wind's
-    // speed under its arrow.
+/// The rings' distances just left of the left-field line (`k`: the unit
+/// shown per metre), the wind's speed under its arrow.
+fn write_labels(
+    frame: &mut Frame,
+    (map, k): (&FieldMap, f64),
+    app: &App,
+    ring_arcs: &[(f64, Vec<(f64, f64)>)],
+    wind: Option<&WindArrow>,
+) {
     let bounds = (map.z, map.x);
     let buf = frame.buffer_mut();
     let mut write = |point: (f64, f64), text: &str, style: Style, left: bool| {
@@ -149,7 +174,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             }
         }
     };
-    for (r, _) in &ring_arcs {
+    for (r, _) in ring_arcs {
         let d = r / k;
         let label = format!("{r:.0}");
         write(
@@ -159,7 +184,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             true,
         );
     }
-    if let Some((_, tail, label)) = &wind {
+    if let Some((_, tail, label)) = wind {
         write(*tail, label, app.theme.apex, false);
     }
 }
@@ -253,16 +278,6 @@ fn wall_legend(app: &App) -> Line<'static> {
     }
     spans.push(Span::raw(" "));
     Line::from(spans)
-}
-
-/// "7° toward right field", "centre field".
-pub fn direction_words(rad: f64) -> String {
-    let degrees = rad.to_degrees();
-    if degrees.abs() < 0.5 {
-        return "centre field".to_owned();
-    }
-    let side = if degrees > 0.0 { "right" } else { "left" };
-    format!("{:.0}° toward {side} field", degrees.abs())
 }
 
 /// The wind's arrow (points across, up), where its label starts, the label.

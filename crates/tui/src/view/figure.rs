@@ -13,7 +13,7 @@ use crate::app::{AERO_FIGURES, App, FIGURES};
 use analysis::figures::curves::{
     Curve, axis_title, column_input, curves, marked_points, panels, x_column,
 };
-use analysis::figures::{Column, FigureData, trimmed};
+use analysis::figures::{Column, FigureData, shown, trimmed};
 use units::{Quantity, Unit};
 
 /// The curves of `data` the explorer draws (its main panel, as
@@ -155,7 +155,9 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let width = inner.width as usize;
     let height = inner.height as usize;
     // The caption takes two rows where the pane is tall enough.
-    let caption = [Span::styled(data.title.as_str(), app.theme.dim)];
+    // In the units shown, the numbers it quotes too, as `x` writes it.
+    let title = shown::title(&data.title, app.units);
+    let caption = [Span::styled(title.as_str(), app.theme.dim)];
     let caption = words::fit(&caption, width, if height >= 18 { 2 } else { 1 });
     // The chart keeps at least 10 rows; the notes a quarter of the pane,
     // or a row each.
@@ -175,7 +177,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         Constraint::Length(below.len() as u16),
     ])
     .areas(inner);
-    let caption_cut = words::rows_needed(&[Span::raw(data.title.as_str())], width) > caption.len();
+    let caption_cut = words::rows_needed(&[Span::raw(title.as_str())], width) > caption.len();
     frame.render_widget(Paragraph::new(caption), heading);
     frame.render_widget(Paragraph::new(below), below_area);
     let notes_cut = notes

@@ -127,55 +127,12 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
 
     let [legend_row, stack] =
         Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
-    let mut legend = Vec::new();
-    // Which panel this is, and the key to the others.
-    if count < all.len() {
-        legend.push(Span::styled(
-            format!(
-                "panel {}/{}: {} · v next ",
-                first + 1,
-                all.len(),
-                shown[0].title
-            ),
-            app.theme.key,
-        ));
-    }
-    let main = &shown[0].curves;
-    if main.len() > 1 {
-        for (k, curve) in main.iter().enumerate() {
-            let glyph = app.theme.path(k).1;
-            let style = curve_style(&app.theme, k);
-            legend.push(Span::styled(format!("{glyph} {} ", curve.name), style));
-        }
-    }
-    if now.is_some() {
-        legend.push(Span::styled("│ now ", app.theme.swing));
-    }
-    frame.render_widget(
-        Paragraph::new(Line::from(legend).right_aligned()),
-        legend_row,
-    );
+    let which = (count < all.len()).then_some((first, all.len()));
+    legend_line(frame, legend_row, app, (which, &shown[0]), now.is_some());
 
     let rows = (stack.height.saturating_sub(2) / count as u16).max(1);
     let x_ticks = Ticks::across(x0, x1, stack.width.saturating_sub(8));
-    let y_ticks: Vec<Ticks> = shown
-        .iter()
-        .map(|p| {
-            let (y0, y1) = span(p.curves.iter().flat_map(|c| c.points.iter().map(|p| p.1)))
-                .unwrap_or((0.0, 1.0));
-            let pad = 0.05 * (y1 - y0);
-            Ticks::up(y0 - pad, y1 + pad, rows)
-        })
-        .collect();
-    // Every panel's y labels as wide, so that the graphs line up over the
-    // one x axis (whose first label may reach left of it too).
-    let width = y_ticks
-        .iter()
-        .flat_map(|t| t.labels())
-        .map(|l| l.chars().count())
-        .chain([x_ticks.labels()[0].chars().count().saturating_sub(1)])
-        .max()
-        .unwrap_or(0);
+    let (y_ticks, width) = y_axes(&shown, rows, &x_ticks);
     let constraints = (0..count).map(|k| {
         if k + 1 < count {
             Constraint::Length(rows)
@@ -222,6 +179,59 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
             chart::labels(frame, graph, ticks, mark_marker, &named, app.theme.apex);
         }
     }
+}
+
+/// The row over the panels: which panel this is where not all fit
+/// (`which`: the first shown and how many there are) and the key to the
+/// others, the main panel's curves by name, and the current value's line.
+fn legend_line(
+    frame: &mut Frame,
+    row: Rect,
+    app: &App,
+    (which, main): (Option<(usize, usize)>, &Panel),
+    now: bool,
+) {
+    let mut legend = Vec::new();
+    if let Some((first, all)) = which {
+        legend.push(Span::styled(
+            format!("panel {}/{all}: {} · v next ", first + 1, main.title),
+            app.theme.key,
+        ));
+    }
+    if main.curves.len() > 1 {
+        for (k, curve) in main.curves.iter().enumerate() {
+            let glyph = app.theme.path(k).1;
+            let style = curve_style(&app.theme, k);
+            legend.push(Span::styled(format!("{glyph} {} ", curve.name), style));
+        }
+    }
+    if now {
+        legend.push(Span::styled("│ now ", app.theme.swing));
+    }
+    frame.render_widget(Paragraph::new(Line::from(legend).right_aligned()), row);
+}
+
+/// Each panel's y ticks over `rows`, and the width every panel's y labels
+/// take, so that the graphs line up over the one x axis (whose first label
+/// may reach left of it too).
+fn y_axes(shown: &[Panel], rows: u16, x_ticks: &Ticks) -> (Vec<Ticks>, usize) {
+    let y_ticks: Vec<Ticks> = shown
+        .iter()
+        .map(|p| {
+            let (y0, y1) = span(p.curves.iter().flat_map(|c| c.points.iter().map(|p| p.1)))
+                .unwrap_or((0.0, 1.0));
+            let pad = 0.05 * (y1 - y0);
+            Ticks::up(y0 - pad, y1 + pad, rows)
+        })
+        .collect();
+    let width = y_ticks
+        .iter()
+        .flat_map(|t| t.labels())
+        .map(|l| l.chars().count())
+        .chain([x_ticks.labels()[0].chars().count().saturating_sub(1)])
+        .max()
+        .unwrap_or(0);
+    (y_ticks, width)
 }
 
 /// A mark's name on the chart: its words before any "(" or ":", if short

@@ -15,9 +15,9 @@ use ratatui::widgets::{Block, Paragraph};
 
 use crate::app::App;
 use crate::layout::{HEATMAP_BAR, heatmap_plot};
+use crate::shown::{swing_angle_tick, undercut_axis, undercut_tick};
 use crate::theme::{Theme, ramp};
 use analysis::study::{CellOutcome, Grid};
-use units::UnitSystem;
 
 /// The grid cell (column, row) at pixel (px, py) of a w×h picture, py from
 /// the top.
@@ -138,7 +138,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
 }
 
 /// The pane's border and title, and the axes' labels: ψ on the left (top,
-/// bottom), E along the bottom, in the units shown (rad and mm, or degrees
+/// bottom), E along the bottom, in the units shown (rad and m, or degrees
 /// and inches); the plot inside them, if it is large enough to draw.
 pub(super) fn frame_and_axes(
     frame: &mut Frame,
@@ -154,22 +154,8 @@ pub(super) fn frame_and_axes(
     }
     let window = Grid::explorer_window();
     let inner = Block::bordered().inner(area);
-    let imperial = app.units == UnitSystem::Imperial;
-    let psi_text = |psi: f64| {
-        if imperial {
-            format!("{:.0}°", psi.to_degrees())
-        } else {
-            format!("{psi:.1}")
-        }
-    };
-    let e_text = |e: f64| {
-        if imperial {
-            format!("{:.1}", e / units::METRES_PER_INCH)
-        } else {
-            format!("{:.0}", e * 1e3)
-        }
-    };
-    let e_unit = if imperial { "in" } else { "mm" };
+    let psi_text = |psi: f64| swing_angle_tick(app.units, psi);
+    let e_text = |e: f64| undercut_tick(app.units, e);
     let buf = frame.buffer_mut();
     buf.set_string(
         inner.x,
@@ -186,7 +172,7 @@ pub(super) fn frame_and_axes(
     );
     let bottom = plot.bottom();
     buf.set_string(plot.x, bottom, e_text(window.undercut.0), app.theme.dim);
-    let e_label = format!("E ({e_unit}) →");
+    let e_label = format!("{} →", undercut_axis(app.units));
     buf.set_string(
         plot.x + plot.width.saturating_sub(e_label.chars().count() as u16) / 2,
         bottom,

@@ -18,8 +18,9 @@ use super::impact::{Curve, impulse_line, named, phase_chart, stop_sentence};
 use super::{chart, words};
 use crate::app::App;
 use crate::layout::CELL_ASPECT;
+use crate::shown::angle_text;
 use model::impact::{Collision, Impact3d, Regime, Stop};
-use units::Quantity;
+use units::{Quantity, UnitSystem};
 
 /// Points along the slip's path: smooth in braille at any pane size.
 const PATH_POINTS: usize = 80;
@@ -136,10 +137,12 @@ fn spin_parts(app: &App, impact: &Collision, stop: Stop) -> String {
     )
 }
 
-/// "slip 38.2° (26.3° → 74.3° at p_s, sticks)": the slip's direction at the
+/// "slip 38.2° (26.3° → 74.3° at p_s, sticks)", in SI in rad: the slip's direction at the
 /// cursor (0° square across the bat, 90° along it), and at the start and
 /// the end of its turn: where it halts, or at separation if it never does.
 fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'static> {
+    // To a tenth of a degree, as `hit` prints the turn.
+    let slip_angle = |rad: f64| angle_text(app.units, rad, 3, false);
     let turn = impact.slip_turn(2);
     let label = Span::styled("slip ", app.theme.slip);
     let (Some(first), Some(last)) = (turn.first(), turn.last()) else {
@@ -150,7 +153,7 @@ fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'sta
     let stuck = impact.regime == Regime::Stick && cursor >= impact.slip_halt_impulse();
     let grips = impact.release != nalgebra::Vector2::zeros();
     let now = match impact.at(cursor).slip_angle().filter(|_| !stuck) {
-        Some(angle) => format!("{:.1}°", angle.to_degrees()),
+        Some(angle) => slip_angle(angle),
         None if grips && cursor > impact.slip_halt_impulse() => "springing back".to_owned(),
         None => "stuck".to_owned(),
     };
@@ -165,9 +168,9 @@ fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'sta
         // Where each end is, so that the last stop's 37° before the halt
         // does not read as the 74° at it.
         Span::raw(format!(
-            " ({:.1}° → {:.1}° at {}, ",
-            first.angle.to_degrees(),
-            last.angle.to_degrees(),
+            " ({} → {} at {}, ",
+            slip_angle(first.angle),
+            slip_angle(last.angle),
             if impact.regime == Regime::Stick {
                 "p_s"
             } else {
@@ -177,7 +180,10 @@ fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'sta
         end,
         Span::raw(")"),
     ];
-    let key = "  0° across the bat, 90° along";
+    let key = match app.units {
+        UnitSystem::Si => "  0 across the bat, π/2 along",
+        UnitSystem::Imperial => "  0° across the bat, 90° along",
+    };
     let used: usize = spans.iter().map(Span::width).sum();
     if used + key.chars().count() <= width as usize {
         spans.push(Span::styled(key, app.theme.dim));

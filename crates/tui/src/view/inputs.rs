@@ -194,15 +194,73 @@ fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
     (left, Some(Line::from(spans).right_aligned()))
 }
 
+/// The edit box's text and its refusal, while a value is typed.
+type Editing<'a> = Option<(&'a ratatui_textarea::TextArea<'static>, &'a Option<String>)>;
+
 pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let inner_width = Block::bordered().inner(area).width as usize;
-    // The widest value and name of the numeric rows, as shown now.
-    let numeric = app.fields.iter().filter_map(|f| match f {
-        Field::Key(k) => Some(input_key(*k)),
+    let c = fitted_columns(app, Block::bordered().inner(area).width as usize);
+    let (left, right) = title(app, c);
+    let mut block = Block::bordered().title(left);
+    if let Some(right) = right {
+        block = block.title(right);
+    }
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let list = inputs_list(area);
+    let editing: Editing = match &app.mode {
+        Mode::Edit { text, error, .. } => Some((text, error)),
         _ => None,
-    });
-    let value_width = numeric
-        .clone()
+    };
+    // Rows, with a header line before each group (as `layout` counts them,
+    // so that a click lands on the row drawn); remember the selected row
+    // and where its edit box goes (offset from the list's left, width).
+    let lines = app.input_lines();
+    let mut rows: Vec<Line> = Vec::new();
+    let (mut selected_row, mut edit_box) = (0, (0, 0));
+    for (line, field) in lines.iter().enumerate() {
+        let Some(i) = *field else {
+            let group = lines[line + 1].map_or("", |i| app.fields[i].group());
+            rows.push(Line::styled(format!("─ {group}"), app.theme.dim));
+            continue;
+        };
+        if i == app.selected {
+            selected_row = rows.len();
+        }
+        let (row, at) = field_row(app, i, c, editing, list);
+        edit_box = at.unwrap_or(edit_box);
+        rows.push(row);
+    }
+    // Keep the selected row in view.
+    let offset = input_scroll(selected_row, rows.len(), list.height as usize);
+    frame.render_widget(Paragraph::new(rows).scroll((offset as u16, 0)), list);
+    if let Some((text, _)) = editing {
+        let row = list.y + (selected_row - offset) as u16;
+        if row < list.y + list.height {
+            let (at, cells) = edit_box;
+            let edit = Rect::new(list.x + at as u16, row, cells as u16, 1);
+            frame.render_widget(ratatui::widgets::Clear, edit);
+            frame.render_widget(text, edit);
+        }
+    }
+    let about = Rect::new(
+        inner.x,
+        list.bottom(),
+        inner.width,
+        inner.bottom() - list.bottom(),
+    );
+    draw_about(frame, (area, about), app, editing);
+}
+
+/// The columns that fit a pane `inner_width` wide, for the values shown now.
+fn fitted_columns(app: &App, inner_width: usize) -> Columns {
+    // The widest value and name of the numeric rows, as shown now.
+    let value_width = app
+        .fields
+        .iter()
+        .filter_map(|f| match f {
+            Field::Key(k) => Some(input_key(*k)),
+            _ => None,
+        })
         .map(|key| width(&shown_value(key, (key.get)(&app.scene), app.units)))
         .max()
         .unwrap_or(0);
@@ -219,133 +277,106 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let mut c = columns(inner_width, label_width, value_width);
     // A batted ball has no optimum, so no Δopt.
     c.optimum &= app.is_swing();
+    c
+}
 
-    let (left, right) = title(app, c);
-    let mut block = Block::bordered().title(left);
-    if let Some(right) = right {
-        block = block.title(right);
-    }
-    let inner = block.inner(area);
-    frame.render_widget(block, area);
-    let list = inputs_list(area);
-    let about = Rect::new(
-        inner.x,
-        list.bottom(),
-        inner.width,
-        inner.bottom() - list.bottom(),
-    );
-    let editing = match &app.mode {
-        Mode::Edit { text, error, .. } => Some((text, error)),
-        _ => None,
-    };
-    // Where the edit box goes: (offset from the list's left, width).
-    let mut edit_box = (0, 0);
-    let (max_swing, max_optimum) = (largest(app, Gain::Swing), largest(app, Gain::Optimum));
-
-    // Rows, with a header line before each group (as `layout` counts them,
-    // so that a click lands on the row drawn); remember the selected row.
-    let lines = app.input_lines();
-    let mut rows: Vec<Line> = Vec::new();
-    let mut selected_row = 0;
-    for (line, field) in lines.iter().enumerate() {
-        let Some(i) = *field else {
-            let group = lines[line + 1].map_or("", |i| app.fields[i].group());
-            rows.push(Line::styled(format!("─ {group}"), app.theme.dim));
-            continue;
-        };
-        let field = &app.fields[i];
-        let selected = i == app.selected;
-        if selected {
-            selected_row = rows.len();
+/// The row of field `i`: its marker, words, value and unit (or the room
+/// for the edit box, whose place it returns), and its Δ columns.
+fn field_row(
+    app: &App,
+    i: usize,
+    c: Columns,
+    editing: Editing,
+    list: Rect,
+) -> (Line<'static>, Option<(usize, usize)>) {
+    let field = &app.fields[i];
+    let selected = i == app.selected;
+    let (value, unit) = match field {
+        Field::Preset => (escape_text(&app.preset_name), ""),
+        // A model's name is a word: never cut (it takes the unit's room).
+        Field::Drag => (app.scene.drag.name().to_owned(), ""),
+        Field::Lift => (app.scene.lift.name().to_owned(), ""),
+        Field::Hand => (app.scene.bat.hand.name().to_owned(), ""),
+        Field::Key(k) => {
+            let key = input_key(*k);
+            (
+                fitted_number(shown_value(key, (key.get)(&app.scene), app.units), c.value),
+                key.unit_in(app.units).symbol,
+            )
         }
-        let (value, unit) = match field {
-            Field::Preset => (escape_text(&app.preset_name), ""),
-            // A model's name is a word: never cut (it takes the unit's room).
-            Field::Drag => (app.scene.drag.name().to_owned(), ""),
-            Field::Lift => (app.scene.lift.name().to_owned(), ""),
-            Field::Hand => (app.scene.bat.hand.name().to_owned(), ""),
-            Field::Key(k) => {
-                let key = input_key(*k);
-                (
-                    fitted_number(shown_value(key, (key.get)(&app.scene), app.units), c.value),
-                    key.unit_in(app.units).symbol,
-                )
-            }
+    };
+    let mut label = pad(&label_text(*field), c.label, false);
+    let mut edit_box = None;
+    if let (true, Some((typing, _))) = (selected, editing) {
+        // The box takes the value's place; the symbol (and the name)
+        // before it and the unit after it stay.
+        let at = 1 + width(&label) + 1;
+        let typed = width(&typing.lines().join("")) + 1;
+        let (room, unit_cells) = match field {
+            Field::Key(_) => (c.value.max(typed), 1 + UNIT),
+            _ => ((c.value + 1 + UNIT).max(typed), 0),
         };
-        let mut label = pad(&label_text(*field), c.label, false);
-        let text = match field {
+        let room = room.min((list.width as usize).saturating_sub(at + unit_cells));
+        edit_box = Some((at, room));
+        label.push_str(&" ".repeat(1 + room));
+        if let Field::Key(_) = field {
+            label.push_str(&format!(" {}", pad(unit, UNIT, false)));
+        }
+    } else {
+        label.push_str(&match field {
             // A numeric value, right-aligned in its column, then the unit.
             Field::Key(_) => format!(" {} {}", pad(&value, c.value, true), pad(unit, UNIT, false)),
             // A name spans the value and unit columns, and further if long.
             _ => format!(" {}", pad(&value, c.value + 1 + UNIT, true)),
-        };
-        if let (true, Some((typing, _))) = (selected, editing) {
-            // The box takes the value's place; the symbol (and the name)
-            // before it and the unit after it stay.
-            let at = 1 + width(&label) + 1;
-            let typed = width(&typing.lines().join("")) + 1;
-            let (room, unit_cells) = match field {
-                Field::Key(_) => (c.value.max(typed), 1 + UNIT),
-                _ => ((c.value + 1 + UNIT).max(typed), 0),
-            };
-            let room = room.min((list.width as usize).saturating_sub(at + unit_cells));
-            edit_box = (at, room);
-            label.push_str(&" ".repeat(1 + room));
-            if let Field::Key(_) = field {
-                label.push_str(&format!(" {}", pad(unit, UNIT, false)));
-            }
-        } else {
-            label.push_str(&text);
-        }
-        let marker = if selected { "▶" } else { " " };
-        let style = if selected {
-            app.theme.selected
-        } else {
-            app.theme.plain
-        };
-        let mut spans = vec![Span::raw(marker), Span::styled(label, style)];
-        let edited = selected && editing.is_some();
-        if let (Field::Key(k), Some(form), false) = (field, c.swing, edited) {
-            let cells = match form {
-                Sensitivity::Numbers => GAIN,
-                Sensitivity::Signs => COMPACT,
-            };
-            spans.push(gain_span(
-                app,
-                app.swing_gains[*k],
-                max_swing,
-                form,
-                cells,
-                false,
-            ));
-            if c.optimum {
-                spans.push(gain_span(
-                    app,
-                    app.optimum_gains[*k],
-                    max_optimum,
-                    Sensitivity::Numbers,
-                    GAIN,
-                    !sensitivity::moves_optimum(input_key(*k)),
-                ));
-            }
-        }
-        rows.push(Line::from(spans));
+        });
     }
-
-    // Keep the selected row in view.
-    let offset = input_scroll(selected_row, rows.len(), list.height as usize);
-    frame.render_widget(Paragraph::new(rows).scroll((offset as u16, 0)), list);
-
-    if let Some((text, _)) = editing {
-        let row = list.y + (selected_row - offset) as u16;
-        if row < list.y + list.height {
-            let (at, cells) = edit_box;
-            let edit = Rect::new(list.x + at as u16, row, cells as u16, 1);
-            frame.render_widget(ratatui::widgets::Clear, edit);
-            frame.render_widget(text, edit);
-        }
+    let (marker, style) = if selected {
+        ("▶", app.theme.selected)
+    } else {
+        (" ", app.theme.plain)
+    };
+    let mut spans = vec![Span::raw(marker), Span::styled(label, style)];
+    if let (Field::Key(k), false) = (field, edit_box.is_some()) {
+        spans.extend(gain_spans(app, *k, c));
     }
+    (Line::from(spans), edit_box)
+}
 
+/// Input `k`'s Δ and Δopt, as the columns show them.
+fn gain_spans(app: &App, k: usize, c: Columns) -> Vec<Span<'static>> {
+    let Some(form) = c.swing else {
+        return Vec::new();
+    };
+    let cells = match form {
+        Sensitivity::Numbers => GAIN,
+        Sensitivity::Signs => COMPACT,
+    };
+    let max_swing = largest(app, Gain::Swing);
+    let mut spans = vec![gain_span(
+        app,
+        app.swing_gains[k],
+        max_swing,
+        form,
+        cells,
+        false,
+    )];
+    if c.optimum {
+        spans.push(gain_span(
+            app,
+            app.optimum_gains[k],
+            largest(app, Gain::Optimum),
+            Sensitivity::Numbers,
+            GAIN,
+            !sensitivity::moves_optimum(input_key(k)),
+        ));
+    }
+    spans
+}
+
+/// Under the list: the edit's refusal or help, the message, or the
+/// selected input's description; where its words are cut, the pane's
+/// (`area`'s) foot says where the rest is (`i` shows it whole).
+fn draw_about(frame: &mut Frame, (area, about): (Rect, Rect), app: &App, editing: Editing) {
     let (about_words, about_style) = match editing {
         Some((_, Some(error))) => (error.clone(), app.theme.error),
         Some((_, None)) => (edit_help(app, app.fields[app.selected]), app.theme.dim),
@@ -359,8 +390,6 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         > about.height as usize;
     let about_text = Paragraph::new(Line::styled(about_words, about_style));
     let about_text = about_text.wrap(Wrap { trim: true });
-    // Words past the rows under the list: the pane's foot says where the
-    // rest is (`i` shows it whole).
     if cut {
         super::read_all_hint(frame, area, app);
     }

@@ -4,8 +4,9 @@
 
 use ratatui::text::{Line, Span};
 
-use super::readout::{angle_text, undercut_text};
+use super::readout::angle;
 use crate::app::App;
+use crate::shown::undercut_text;
 use analysis::paper::{TABLE2, TableRow, table2_scene};
 
 /// The printed row whose scene this is, whatever its swing (E, ψ).
@@ -17,7 +18,7 @@ pub fn table2_row(app: &App) -> Option<TableRow> {
     })
 }
 
-/// "Table II E 26.50 mm  ψ 0.1594  134.80 m": the printed optimum, in the
+/// "Table II E 0.0265 m  ψ 0.1594 rad  134.80 m": the printed optimum, in the
 /// units shown, under ours.
 pub fn line(app: &App) -> Option<Line<'static>> {
     let row = table2_row(app)?;
@@ -27,8 +28,8 @@ pub fn line(app: &App) -> Option<Line<'static>> {
         Span::styled(
             format!(
                 "E {}  ψ {}  {range:.2} {unit}",
-                undercut_text(app, row.undercut, false),
-                angle_text(app, row.swing_angle, false),
+                undercut_text(app.units, row.undercut, false),
+                angle(app, row.swing_angle, false),
             ),
             app.theme.dim,
         ),
