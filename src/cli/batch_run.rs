@@ -175,18 +175,12 @@ fn run_batch(
         note(&line);
     }
     if args.summary.0 {
-        for table in tally.tables(shown) {
+        for table in tally.tables(&setup, shown) {
             let _ = writeln!(std::io::stderr(), "{table}");
         }
     }
     if let Some(path) = args.summary.1 {
-        let mut json = tally.json(shown);
-        // As the summary line says: at --park the difference is that
-        // park's air against where each ball was hit.
-        if let (Some(i), Some(difference)) = (setup.park, json.get_mut("difference")) {
-            difference["flown_in_air_of"] = setup.parks.parks[i].code.clone().into();
-        }
-        let text = super::pretty(&json);
+        let text = super::pretty(&tally.json(&setup, shown));
         crate::preset::atomic_file::write(path, text.as_bytes())
             .map_err(|e| refused(&path.display().to_string(), e.to_string()))?;
     }

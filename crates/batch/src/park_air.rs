@@ -185,15 +185,11 @@ pub(crate) fn settle(
                 .map(|pair| (rows[pair.0].from + pair.1, air_of(pair)))
                 .collect();
             let mut unsure = Vec::new();
-            let fence_of = |slot: usize| std::slice::from_ref(&parks[slot % parks.len()]);
-            let fenced = (flights.iter()).map(|(slot, flight)| (*flight, fence_of(*slot)));
-            many::judge_many(fenced, &cheap, |index, summary, crossing| {
+            fly_each(&flights, parks, &cheap, |index, judged, summary| {
                 let (slot, flight) = flights[index];
-                let fence = fence_of(slot)[0];
-                let judged = Clearing::judge(fence, crossing[0], &summary);
-                let launch_direction = rows[round[index].0].launch_direction;
-                let sure = (launch_direction, &summary);
-                if settled(&judged, sure, fence, (0.0, VERDICT_SLACK)) {
+                let fence = parks[slot % parks.len()];
+                let launched = (rows[round[index].0].launch_direction, summary);
+                if settled(&judged, launched, fence, (0.0, VERDICT_SLACK)) {
                     clearings[slot] = judged;
                 } else {
                     unsure.push((slot, flight));
@@ -237,13 +233,30 @@ pub(crate) fn fly_alone(
     options: &FlightOptions,
     clearings: &mut [Clearing],
 ) {
+    fly_each(flights, parks, options, |index, judged, _| {
+        clearings[flights[index].0] = judged;
+    });
+}
+
+/// As [`fly_alone`], each flight's verdict and flight handed to
+/// `done(index, judged, flight)`.
+fn fly_each(
+    flights: &[(usize, SceneFlight)],
+    parks: &[&Fence],
+    options: &FlightOptions,
+    mut done: impl FnMut(usize, Clearing, &FlightSummary),
+) {
     let fence_of = |slot: usize| std::slice::from_ref(&parks[slot % parks.len()]);
     let fenced = flights
         .iter()
         .map(|(slot, flight)| (*flight, fence_of(*slot)));
     many::judge_many(fenced, options, |index, summary, crossing| {
-        let slot = flights[index].0;
-        clearings[slot] = Clearing::judge(fence_of(slot)[0], crossing[0], &summary);
+        let fence = fence_of(flights[index].0)[0];
+        done(
+            index,
+            Clearing::judge(fence, crossing[0], &summary),
+            &summary,
+        );
     });
 }
 

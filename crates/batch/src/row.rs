@@ -235,11 +235,11 @@ fn read_cells(
                 Err(format!("{} is empty", LAUNCH_KEYS[index]))
             }
             _ if value.is_empty() => Ok(()), // the preset's value
-            Column::Savant(SavantColumn::HomeTeam) if setup.park_of(value).is_none() => {
-                *unknown_park = Some(cut(value, 20));
-                Ok(())
-            }
-            Column::Savant(column) => savant.read(column, value, setup),
+            Column::Savant(column) => savant.read(column, value, setup).map(|()| {
+                if column == SavantColumn::HomeTeam && savant.park.is_none() {
+                    *unknown_park = Some(cut(value, 20));
+                }
+            }),
             Column::Swing(column, range) => tracked.read((column, range), value),
             // A launch.* cell as `--set` takes it (`103mph`).
             Column::Launch(index, Unit::Si) => {

@@ -315,8 +315,8 @@ impl Tally {
     }
 
     /// `--summary`'s tables, in the units shown (none without their data).
-    pub fn tables(&self, shown: Shown) -> Vec<String> {
-        let json = self.json(shown);
+    pub fn tables(&self, setup: &Setup, shown: Shown) -> Vec<String> {
+        let json = self.json(setup, shown);
         let (d, unit) = (
             shown.unit(Quantity::Distance),
             shown.csv_key("", Quantity::Distance),
@@ -427,7 +427,7 @@ impl Tally {
 
     /// The whole summary as JSON, in the units shown (keys named with their
     /// unit outside SI, as the CSV's columns are).
-    pub fn json(&self, shown: Shown) -> Value {
+    pub fn json(&self, setup: &Setup, shown: Shown) -> Value {
         let d = |q: &numerics::quantile::Quantiles| {
             let value = |v: f64| json!(shown.convert(Quantity::Distance, v));
             match q.is_empty() {
@@ -451,6 +451,11 @@ impl Tally {
             let (median, median_abs) = d(&self.differences);
             value["difference"] = json!({ "rows": self.differences.len(),
                 key("median"): median, key("median_abs"): median_abs });
+            // As the outcome line says: --park's air against where each
+            // ball was hit.
+            if let Some(i) = setup.park {
+                value["difference"]["flown_in_air_of"] = json!(setup.parks.parks[i].code);
+            }
             let bands: Vec<Value> = (0..BANDS)
                 .map(|band| {
                     let (from, to) = band_bounds(band);

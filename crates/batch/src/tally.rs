@@ -158,7 +158,8 @@ impl Tally {
         }
         self.side_unknown += usize::from(job.side_unknown);
         if let Some(code) = &job.unknown_park {
-            self.unknown_park(code, 1);
+            self.at_unknown_park += 1;
+            self.name_unknown_park(code, 1);
         }
         let at = match flown.clearing.outcome {
             Verdict::Clears => 0,
@@ -233,9 +234,9 @@ impl Tally {
         band.spin.push(spin.sqrt());
     }
 
-    /// Counts `rows` at `code`, a home_team no park answers to.
-    fn unknown_park(&mut self, code: &str, rows: usize) {
-        self.at_unknown_park += rows;
+    /// Names `rows` at `code`, a home_team no park answers to, among the
+    /// first few such codes.
+    fn name_unknown_park(&mut self, code: &str, rows: usize) {
         let known = self.unknown_parks.iter().position(|(c, _)| c == code);
         match known {
             Some(k) => self.unknown_parks[k].1 += rows,
@@ -248,12 +249,10 @@ impl Tally {
 
     /// Adds another piece's tally.
     pub(crate) fn add(&mut self, other: &Tally) {
+        self.at_unknown_park += other.at_unknown_park;
         for (code, rows) in &other.unknown_parks {
-            self.unknown_park(code, *rows);
+            self.name_unknown_park(code, *rows);
         }
-        // Rows at codes past the first few named: counted all the same.
-        let named: usize = other.unknown_parks.iter().map(|(_, n)| n).sum();
-        self.at_unknown_park += other.at_unknown_park - named;
         let sums = [
             (&mut self.estimated, other.estimated),
             (&mut self.sprayed, other.sprayed),
