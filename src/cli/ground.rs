@@ -68,17 +68,6 @@ pub(super) fn generic_fence(preset: &Preset) -> park::Fence {
         .uniform()
 }
 
-/// The air keys among `--set`'s assignments.
-pub(super) fn given_weather(assignments: &[String]) -> GivenWeather {
-    let mut given = GivenWeather::default();
-    for assignment in assignments {
-        if let Some((key, _)) = assignment.split_once('=') {
-            given.note(key.trim());
-        }
-    }
-    given
-}
-
 /// Takes `scene` to `park`: the standard air at its elevation, the weather
 /// `given` kept.
 pub(super) fn to_park(scene: &mut Scene, park: &Park, given: GivenWeather) {

@@ -268,7 +268,11 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             scene::swing_only("optimize", &preset)?;
             let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let park = parks::lookup(code, &parks)?;
-            ground::to_park(&mut preset.scene, park, ground::given_weather(&scene.set));
+            ground::to_park(
+                &mut preset.scene,
+                park,
+                crate::model::park::GivenWeather::of_assignments(&scene.set),
+            );
             Ok(optimize::park_optimum(
                 &preset.scene,
                 park,
@@ -291,13 +295,18 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             let ground = match park {
                 Some(code) => {
                     let park = parks::lookup(code, &parks)?;
-                    ground::to_park(&mut preset.scene, park, ground::given_weather(&scene.set));
+                    ground::to_park(
+                        &mut preset.scene,
+                        park,
+                        crate::model::park::GivenWeather::of_assignments(&scene.set),
+                    );
                     ground::Ground::Park(park)
                 }
                 None => ground::Ground::Generic(&generic),
             };
             // One rule: a park's outcome is the ball in that park's own air.
-            let own_air = (!*one_flight).then(|| ground::given_weather(&scene.set));
+            let own_air = (!*one_flight)
+                .then(|| crate::model::park::GivenWeather::of_assignments(&scene.set));
             Ok(fly::fly(
                 &preset,
                 ground,

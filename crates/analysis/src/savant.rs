@@ -8,10 +8,12 @@
 //! Nathan's spin estimate wants the launch direction. So by default the
 //! launch direction is solved: the one whose flight, with the spin
 //! estimated from that very direction, lands on the spray's bearing (a
-//! secant iteration on the landing direction, a few flights). Taking the
+//! secant iteration on the landing direction, a few flights, the first ones
+//! at a looser precision while they are far from it). Taking the
 //! spray as the launch direction instead ([`Spray::Launch`]) is the recipe
 //! of pybaseball's calculator, and lands shorter (docs/accuracy.md).
 
+use crate::precision::{AIM_MISS, Purpose};
 use model::flight::{FlightOptions, FlightSummary};
 use model::frame;
 use model::launch::SceneFlight;
@@ -69,8 +71,9 @@ impl RowLaunch {
 /// coordinates resolve. The secant iteration gets there in three or four
 /// flights (the miss falls ~0.1, 1e-2, 1e-4, 1e-7 rad).
 const DIRECTION_TOLERANCE: f64 = 1e-4;
-/// Flights the solve may take: it needs three to five (`homerun bench`).
-const MAX_FLIGHTS: usize = 12;
+/// Flights the solve may take: it needs three to five (`homerun bench`), a
+/// popup whose landing swings about the plate a dozen.
+const MAX_FLIGHTS: usize = 16;
 /// Launch directions are kept this far inside ±π/2 (`launch.direction`'s
 /// open bounds).
 const MAX_DIRECTION: f64 = std::f64::consts::FRAC_PI_2 - 1e-3;
@@ -175,8 +178,9 @@ fn solve_direction(
     options: &FlightOptions,
 ) -> (usize, DirectionFrom) {
     let mut solve = DirectionSolve::new(*scene, row, bearing);
+    let aim = aim_options(options);
     loop {
-        let summary = solve.flight().fly(options);
+        let summary = (solve.flight()).fly(if solve.aiming() { &aim } else { options });
         if let Some(ended) = solve.flown(&summary) {
             *scene = solve.scene;
             return ended;
@@ -198,6 +202,9 @@ struct DirectionSolve {
     /// The last direction flown and its miss (none before the first).
     previous: Option<(f64, f64)>,
     flights: usize,
+    /// A flight came down within [`AIM_RANGE`]: the rest fly at the
+    /// solve's precision.
+    near: bool,
 }
 
 impl DirectionSolve {
@@ -210,6 +217,7 @@ impl DirectionSolve {
             direction: bearing,
             previous: None,
             flights: 0,
+            near: false,
         }
     }
 
@@ -218,17 +226,33 @@ impl DirectionSolve {
         SceneFlight::new(&self.scene, &self.scene.batted_ball())
     }
 
+    /// Whether [`Self::flight`] is flown at [`aim_options`]: the first, and
+    /// every one after a miss over [`AIM_MISS`] by a flight that came down
+    /// past [`AIM_RANGE`].
+    fn aiming(&self) -> bool {
+        !self.near && self.previous.is_none_or(|(_, miss)| miss.abs() >= AIM_MISS)
+    }
+
     /// Takes the outcome of [`Self::flight`]: the flights taken and where
     /// the direction came from once the solve has ended, else `None` and
     /// the next direction to try.
     fn flown(&mut self, summary: &FlightSummary) -> Option<(usize, DirectionFrom)> {
+        let aimed = self.aiming();
         self.flights += 1;
         let bearing = self.bearing;
         if !summary.landed {
             return Some(self.unsolved());
         }
         let miss = landing_direction(summary) - bearing;
-        if miss.abs() < DIRECTION_TOLERANCE {
+        self.near |= summary.range.abs() < AIM_RANGE;
+        // An aiming flight's landing is known to its budget: it ends the
+        // solve only as far inside the tolerance.
+        let known_to = if aimed {
+            aim_lateral() / summary.range.abs()
+        } else {
+            0.0
+        };
+        if miss.abs() + known_to < DIRECTION_TOLERANCE {
             return Some((self.flights, DirectionFrom::Landing));
         }
         let next = match self.previous {
@@ -268,6 +292,29 @@ impl DirectionSolve {
     }
 }
 
+/// An aiming flight's landing point lies within this (m) of the
+/// reference's, sideways ([`Purpose::Aim`]'s budget): its direction is
+/// known to this over its range.
+fn aim_lateral() -> f64 {
+    Purpose::Aim.range_budget()
+}
+
+/// A flight that comes down nearer than this (m), a popup or a grounder,
+/// has its landing direction from an aiming flight unsure by more than
+/// 4e-4 rad: the solve's next flights fly at its own precision.
+const AIM_RANGE: f64 = 50.0;
+
+/// The precision of a solve's flights while they aim ([`Purpose::Aim`]),
+/// or the solve's own where that is looser.
+fn aim_options(options: &FlightOptions) -> FlightOptions {
+    let aim = Purpose::Aim.flight_options();
+    if options.tolerance.relative > aim.tolerance.relative {
+        *options
+    } else {
+        aim
+    }
+}
+
 /// Where a flight came down: the direction of its landing point (a planar
 /// flight's range may be negative, behind the plate).
 fn landing_direction(summary: &FlightSummary) -> f64 {
@@ -303,15 +350,22 @@ pub fn launch_many<'s>(
         }
     }
     let mut summaries: Vec<Option<FlightSummary>> = Vec::new();
+    let aim = aim_options(options);
     while !solving.is_empty() {
-        let flights: Vec<SceneFlight> = solving.iter().map(|(_, s)| s.flight()).collect();
         summaries.clear();
-        summaries.resize(flights.len(), None);
-        many::judge_many(
-            flights.iter().map(|&flight| (flight, &[][..])),
-            options,
-            |index, summary, _| summaries[index] = Some(summary),
-        );
+        summaries.resize(solving.len(), None);
+        // The round's aiming flights together, then the rest.
+        for (aiming, options) in [(true, &aim), (false, options)] {
+            let flights: Vec<(usize, SceneFlight)> = (solving.iter().enumerate())
+                .filter(|(_, (_, s))| s.aiming() == aiming)
+                .map(|(k, (_, s))| (k, s.flight()))
+                .collect();
+            many::judge_many(
+                flights.iter().map(|&(_, flight)| (flight, &[][..])),
+                options,
+                |index, summary, _| summaries[flights[index].0] = Some(summary),
+            );
+        }
         let mut flown = summaries.iter();
         solving.retain_mut(|(index, solve)| {
             let summary = flown.next().copied().flatten().expect("every flight flown");
@@ -534,6 +588,8 @@ mod tests {
         let mut next = numerics::xorshift::uniform(11);
         let landing = landing_direction;
         let mut worst: f64 = 0.0;
+        // An aiming flight's landing point, sideways (m).
+        let mut aim_worst: f64 = 0.0;
         for i in 0..300 {
             let base = if i % 3 == 0 {
                 model::scene::Scene::default()
@@ -551,7 +607,12 @@ mod tests {
             let solve = flight.fly(&Purpose::Solve.flight_options());
             let reference = flight.fly(&Purpose::Reference.flight_options());
             worst = worst.max((landing(&solve) - landing(&reference)).abs());
+            let aim = flight.fly(&Purpose::Aim.flight_options());
+            let sideways = (landing(&aim) - landing(&reference)).abs() * reference.range.abs();
+            aim_worst = aim_worst.max(sideways);
         }
+        assert!(aim_worst < aim_lateral(), "{aim_worst:e} m");
+        assert!(aim_worst > aim_lateral() / 1000.0, "{aim_worst:e} m");
         let budget = Purpose::Solve.range_budget() / 150.0;
         assert!(worst < budget / 10.0, "{worst:e} rad");
         // And no tighter than it needs: within ~1000× of the budget.

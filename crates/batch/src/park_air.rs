@@ -111,13 +111,12 @@ pub(crate) struct Reference {
     pub clearings: Vec<Option<Clearing>>,
 }
 
-/// The flights that settle parks are flown at the solve's precision
-/// ([`Purpose::Solve`]: within 3e-5 m of the readout's in range, 1e-8 rad
-/// in direction, docs/speed.md), a third of the readout's cost, and read
-/// as if their heights and ranges could be this far (m) from the
-/// readout's: 300 times that. A verdict they cannot give so is flown again
-/// at the readout's precision, so that each park's is the one `fly --park`
-/// gives.
+/// The flights that settle parks are flown at [`Purpose::Verdict`]'s
+/// precision (within 3.5e-4 m of the readout's in range, docs/speed.md), a
+/// quarter of the readout's cost, and read as if their heights and ranges
+/// could be this far (m) from the readout's: 28 times that. A verdict they
+/// cannot give so is flown again at the readout's precision, so that each
+/// park's is the one `fly --park` gives.
 pub(crate) const VERDICT_SLACK: f64 = 0.01;
 
 /// Settles every park of every row of `rows` in rounds (see above): each
@@ -129,8 +128,11 @@ pub(crate) fn settle(
     options: &FlightOptions,
     clearings: &mut [Clearing],
 ) {
-    let cheap = Purpose::Solve.flight_options();
+    let cheap = Purpose::Verdict.flight_options();
     let mut done: Vec<bool> = vec![false; rows.len() * parks.len()];
+    // How many of each row's flights each park has been read against: a
+    // flight that could not settle a park cannot the next round either.
+    let mut tried: Vec<u8> = vec![0; rows.len() * parks.len()];
     for round_number in 0.. {
         let last = round_number == REFERENCE_ROUNDS;
         let mut round: Vec<(usize, usize)> = Vec::new();
@@ -138,6 +140,7 @@ pub(crate) fn settle(
         let mut open: Vec<Vec<usize>> = Vec::new();
         for (index, row) in rows.iter().enumerate() {
             let done = &mut done[index * parks.len()..][..parks.len()];
+            let tried = &mut tried[index * parks.len()..][..parks.len()];
             let mut farthest: Option<(usize, f64)> = None;
             for (park, fence) in parks.iter().enumerate() {
                 if done[park] {
@@ -145,7 +148,9 @@ pub(crate) fn settle(
                 }
                 let density = row.airs[park].density;
                 let change = |flight: &Reference| density_change(flight.density, density);
-                let by = row.flights.iter().find_map(|flight| {
+                let untried = &row.flights[usize::from(tried[park])..];
+                tried[park] = row.flights.len() as u8;
+                let by = untried.iter().find_map(|flight| {
                     let judged = flight.clearings[park]?;
                     let launched = (row.launch_direction, &flight.flight);
                     settled(&judged, launched, fence, (change(flight), flight.slack))

@@ -70,10 +70,9 @@ impl<'a> Setup<'a> {
 
     /// Notes `--set`'s assignments: their keys, and the air among them.
     pub fn given(&mut self, assignments: &[String]) {
-        for (key, _) in assignments.iter().filter_map(|a| a.split_once('=')) {
-            self.given.note(key.trim());
-            self.given_keys.push(key.trim().to_owned());
-        }
+        self.given = GivenWeather::of_assignments(assignments);
+        let keys = assignments.iter().filter_map(|a| a.split_once('='));
+        self.given_keys = keys.map(|(key, _)| key.trim().to_owned()).collect();
     }
 
     /// Whether `--set` gave `key`.

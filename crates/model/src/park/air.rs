@@ -29,6 +29,15 @@ impl GivenWeather {
         }
     }
 
+    /// What `--set`'s `key=value` assignments give.
+    pub fn of_assignments(assignments: &[String]) -> GivenWeather {
+        let mut given = GivenWeather::default();
+        for (key, _) in assignments.iter().filter_map(|a| a.split_once('=')) {
+            given.note(key.trim());
+        }
+        given
+    }
+
     /// Whether any air or weather key was given.
     pub fn any(&self) -> bool {
         self.air || self.weather.contains(&true)
