@@ -475,3 +475,18 @@ fn a_league_team_and_an_undefined_side_are_answered_at_no_park() {
     assert_eq!(status, 1, "{err}");
     assert!(err.contains("stand = \"X9\": expected R or L"), "{err}");
 }
+
+/// The summary compares against the distance column the file has, by the
+/// file's name for it (Trackman's `Distance`), not Savant's.
+#[test]
+fn the_summary_names_the_files_distance_column() {
+    let text = "ExitSpeed,Angle,Direction,Distance\n95,28,10,120\n100,30,-5,130\n";
+    let (_, err, status) = run(&["fly", "--batch", "-", "--summary"], text.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    assert!(err.contains("; against Distance (2 rows): median"), "{err}");
+    assert!(
+        err.contains("by launch angle, model − Distance (m):"),
+        "{err}"
+    );
+    assert!(!err.contains("hit_distance_sc"), "{err}");
+}

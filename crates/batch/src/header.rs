@@ -323,6 +323,12 @@ impl Header {
             .collect()
     }
 
+    /// The file's name of `column`, if it has it.
+    pub(crate) fn name_of(&self, column: &Column) -> Option<&str> {
+        let at = self.columns.iter().position(|c| c == column)?;
+        Some(&self.names[at])
+    }
+
     pub(crate) fn has_launch(&self, index: usize) -> bool {
         (self.columns.iter()).any(|c| matches!(c, Column::Launch(i, _) if *i == index))
     }

@@ -215,8 +215,9 @@ impl Tally {
             let unit = shown.unit(Quantity::Distance);
             let _ = write!(
                 line,
-                "; against hit_distance_sc ({} rows): median difference {:+.1} {}, median \
+                "; against {} ({} rows): median difference {:+.1} {}, median \
                  |difference| {:.1} {}",
+                preset::escape_cut(&self.distance_column, 40),
                 self.differences.len(),
                 unit.show(self.differences.median()),
                 unit.symbol,
@@ -229,7 +230,8 @@ impl Tally {
                 let code = preset::escape_cut(&setup.parks.parks[i].code, 20);
                 let _ = write!(
                     line,
-                    " (flown in {code}'s air, hit_distance_sc where each ball was hit)"
+                    " (flown in {code}'s air, {} where each ball was hit)",
+                    preset::escape_cut(&self.distance_column, 40)
                 );
             }
         }
@@ -322,6 +324,7 @@ impl Tally {
             shown.csv_key("", Quantity::Distance),
         );
         let key = |name: &str| format!("{name}{unit}");
+        let distance = preset::escape_cut(&self.distance_column, 40);
         let cell = |v: &Value, sign: bool| match v.as_f64() {
             Some(m) if sign => format!("{m:+.1}"),
             Some(m) => format!("{m:.1}"),
@@ -330,8 +333,8 @@ impl Tally {
         let mut tables = Vec::new();
         if let Some(bands) = json["bands"].as_array() {
             let mut table = format!(
-                "by launch angle, model − hit_distance_sc ({}):\n{:<8} {:>7} {:>8} {:>10}",
-                d.symbol, "angle", "rows", "median", "median |d|"
+                "by launch angle, model − {} ({}):\n{:<8} {:>7} {:>8} {:>10}",
+                distance, d.symbol, "angle", "rows", "median", "median |d|"
             );
             for band in bands {
                 let name = band_name((band["from"].as_f64(), band["to"].as_f64()));
@@ -349,7 +352,7 @@ impl Tally {
         if let Some(rows) = json["kinds"].as_array().filter(|r| !r.is_empty()) {
             kinds.push(format!(
                 "by kind of ball (bb_type; home runs by events), launched at 10° or more, model − \
-                 hit_distance_sc ({}):\n{:<13} {:>7} {:>8} {:>10}",
+                 {distance} ({}):\n{:<13} {:>7} {:>8} {:>10}",
                 d.symbol, "kind", "rows", "median", "median |d|"
             ));
             for row in rows {

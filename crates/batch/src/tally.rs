@@ -12,6 +12,7 @@ use analysis::savant::DirectionFrom;
 use model::clearing::Outcome as Verdict;
 use numerics::quantile::Quantiles;
 
+use crate::columns::{Column, SavantColumn};
 use crate::flights::RowFlight;
 use crate::header::Header;
 use crate::kinds::KINDS;
@@ -117,6 +118,9 @@ pub struct Tally {
     pub(crate) without_speed: usize,
     pub(crate) empty: usize,
     pub(crate) used: Vec<String>,
+    /// The file's name for Statcast's distance (`hit_distance_sc`,
+    /// Trackman's `Distance`, …), which the summary compares against.
+    pub(crate) distance_column: String,
     pub(crate) hit_coordinates: bool,
 }
 
@@ -318,5 +322,9 @@ impl Tally {
             .into_iter()
             .map(str::to_owned)
             .collect();
+        self.distance_column = header
+            .name_of(&Column::Savant(SavantColumn::Distance))
+            .unwrap_or("hit_distance_sc")
+            .to_owned();
     }
 }
