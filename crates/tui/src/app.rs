@@ -142,13 +142,15 @@ pub enum Mode {
         error: Option<String>,
         initial: String,
     },
-    /// Typing a name to save the inputs under. `overwrite` is the name (a
-    /// bundled preset's, or one of the user's) the user was warned about:
-    /// Enter on it again saves anyway.
+    /// Typing a name to save the inputs under, then (once `named`) the
+    /// preset's description. `overwrite` is the name (a bundled preset's,
+    /// or one of the user's) the user was warned about: Enter on it again
+    /// goes on anyway.
     Save {
         text: TextArea<'static>,
         error: Option<String>,
         overwrite: Option<String>,
+        named: Option<String>,
     },
     /// Choosing a preset (or a Savant file's swing) to load; with `find`,
     /// the items are those whose name and description hold each of its
@@ -347,6 +349,7 @@ impl App {
         theme: impl Into<Theme>,
         size: Rect,
     ) -> App {
+        let setup = preset.explorer.clone();
         let flown = fly_scene(&preset.scene, Purpose::Readout);
         let fields = fields(preset.scene.kind);
         let selected = first_input(&fields, preset.scene.kind);
@@ -396,6 +399,12 @@ impl App {
             inputs_changed: true,
             job: None,
         };
+        // A preset saved from the explorer opens as it was left (its park
+        // among the bundled; `run` looks again among the user's).
+        if let Some(setup) = &setup {
+            app.restore_setup(setup);
+            app.message = None;
+        }
         app.fit_figure();
         app.flush();
         app
@@ -565,7 +574,8 @@ impl App {
                 text,
                 error,
                 overwrite,
-            } => self.save_key(key, action, text, error, overwrite),
+                named,
+            } => self.save_key(key, action, text, (error, overwrite), named),
             Mode::Open {
                 items,
                 selected,
@@ -609,6 +619,7 @@ impl App {
                     text: prefilled(name, &self.theme),
                     error: None,
                     overwrite: None,
+                    named: None,
                 };
             }
             Action::Open => self.open_picker(),

@@ -103,7 +103,9 @@ fn draw_panes(frame: &mut Frame, app: &App) {
     match &app.mode {
         Mode::Help { glossary, scroll } => overlay::help(frame, area, app, (*glossary, *scroll)),
         Mode::Detail { scroll } => detail::draw(frame, area, app, *scroll),
-        Mode::Save { text, error, .. } => overlay::save(frame, area, app, text, error.as_deref()),
+        Mode::Save {
+            text, error, named, ..
+        } => overlay::save(frame, area, app, text, (error.as_deref(), named.as_deref())),
         Mode::Open {
             items,
             selected,
