@@ -15,7 +15,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Wrap};
 
 use crate::app::{App, Field, GainCell, Mode, input_key};
-use crate::format::{shown_bounds, shown_range, shown_step, shown_value};
+use crate::format::{shown_bounds, shown_range, shown_step, value_and_unit};
 use crate::inputs::input_words;
 use crate::layout::{input_scroll, inputs_list};
 use crate::worker::Gain;
@@ -261,7 +261,7 @@ fn fitted_columns(app: &App, inner_width: usize) -> Columns {
             Field::Key(k) => Some(input_key(*k)),
             _ => None,
         })
-        .map(|key| width(&shown_value(key, (key.get)(&app.scene), app.units)))
+        .map(|key| width(&value_and_unit(key, (key.get)(&app.scene), app.units).0))
         .max()
         .unwrap_or(0);
     let label_width = app
@@ -299,10 +299,8 @@ fn field_row(
         Field::Hand => (app.scene.bat.hand.name().to_owned(), ""),
         Field::Key(k) => {
             let key = input_key(*k);
-            (
-                fitted_number(shown_value(key, (key.get)(&app.scene), app.units), c.value),
-                key.unit_in(app.units).symbol,
-            )
+            let (value, unit) = value_and_unit(key, (key.get)(&app.scene), app.units);
+            (fitted_number(value, c.value), unit)
         }
     };
     let mut label = pad(&label_text(*field), c.label, false);
@@ -461,6 +459,15 @@ fn selected_gain(app: &App) -> Option<Line<'static>> {
 /// A number's text rounded to fewer decimals until it fits `cells` (its
 /// whole part is never cut).
 fn fitted_number(text: String, cells: usize) -> String {
+    // A degree sign stays on its number, however few digits fit.
+    if let Some(number) = text.strip_suffix('°') {
+        let fitted = fitted_number(number.to_owned(), cells.saturating_sub(1));
+        return format!("{fitted}°");
+    }
+    // A number in scientific notation (ν) is short already.
+    if text.contains('e') {
+        return text;
+    }
     let Ok(value) = text.parse::<f64>() else {
         return text;
     };

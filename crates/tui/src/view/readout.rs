@@ -8,7 +8,7 @@ use ratatui::widgets::{Block, Paragraph};
 
 use crate::app::{App, OptimumState};
 use crate::format::signed;
-use crate::shown::{angle_text, quantity_text, undercut_text};
+use crate::shown::{READOUT_DECIMALS, angle_text, quantity_text, undercut_text};
 use analysis::figures::trimmed;
 use analysis::landing::fence_text;
 use analysis::optimum::Status;
@@ -32,7 +32,7 @@ fn launch_text(app: &App, launch: &BattedBall, sign: bool) -> String {
 
 /// An angle as the readout writes it: "0.3791 rad" or "21.72°".
 pub(super) fn angle(app: &App, radians: f64, sign: bool) -> String {
-    angle_text(app.units, radians, 4, sign)
+    angle_text(app.units, radians, READOUT_DECIMALS, sign)
 }
 
 /// The air in force: "ρ 1.194 kg/m³  ν 1.51e-5 m²/s" and where it comes
