@@ -300,15 +300,12 @@ pub struct App {
 impl App {
     /// A distance in the units shown: (value, unit).
     pub fn distance(&self, metres: f64) -> (f64, &'static str) {
-        let unit = self.unit(Quantity::Distance);
-        (unit.show(metres), unit.symbol)
+        crate::shown::distance(self.units, metres)
     }
 
-    /// The scene's range as every pane shows it, at one rounding (the
-    /// readout's, to which the Δ column's gains add up): "134.70 m".
+    /// The scene's range as every pane shows it ([`crate::shown::range_text`]).
     pub fn range_text(&self, metres: f64) -> String {
-        let (value, unit) = self.distance(metres);
-        format!("{value:.2} {unit}")
+        crate::shown::range_text(self.units, metres)
     }
 
     /// What a class should hear about a landing that is no hit to the

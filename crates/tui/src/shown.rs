@@ -43,6 +43,19 @@ pub fn quantity_text(
     format!("{value}{gap}{}", unit.symbol)
 }
 
+/// A distance in the units shown: (value, unit).
+pub fn distance(units: UnitSystem, metres: f64) -> (f64, &'static str) {
+    let unit = Quantity::Distance.in_system(units);
+    (unit.show(metres), unit.symbol)
+}
+
+/// A range as every pane shows it, at one rounding (the readout's, to
+/// which the Δ column's gains add up): "134.70 m".
+pub fn range_text(units: UnitSystem, metres: f64) -> String {
+    let (value, unit) = distance(units, metres);
+    format!("{value:.2} {unit}")
+}
+
 /// An angle: "0.1744 rad" or "9.99°" (ψ, θ, ζ, the launch, the landing,
 /// the slip's direction).
 pub fn angle_text(units: UnitSystem, rad: f64, si_decimals: usize, sign: bool) -> String {

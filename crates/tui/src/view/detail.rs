@@ -39,7 +39,10 @@ fn sections(app: &App) -> Vec<(&'static str, Vec<String>)> {
         sections.push(("Figure", words));
     }
     // The readout as on a screen with room for all of it.
-    let readout = super::readout::lines(app, Rect::new(0, 0, 200, 200));
+    let readout = super::readout::lines(
+        &super::readout_view::Readout::of(app),
+        Rect::new(0, 0, 200, 200),
+    );
     sections.push((
         "Readout",
         readout

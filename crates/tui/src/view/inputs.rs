@@ -389,7 +389,7 @@ fn draw_about(frame: &mut Frame, (area, about): (Rect, Rect), app: &App, editing
     let about_text = Paragraph::new(Line::styled(about_words, about_style));
     let about_text = about_text.wrap(Wrap { trim: true });
     if cut {
-        super::read_all_hint(frame, area, app);
+        super::read_all_hint(frame, area, &app.theme);
     }
     frame.render_widget(about_text, about);
 }

@@ -15,6 +15,7 @@ mod overlay;
 mod paper_line;
 mod phase_words;
 mod readout;
+mod readout_view;
 mod trajectory;
 mod words;
 
@@ -71,7 +72,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
         trajectory::draw(frame, r, app);
     }
     if let Some(r) = panes.readout {
-        readout::draw(frame, r, app);
+        readout::draw(frame, r, &readout_view::Readout::of(app));
     }
     // A batted ball has no swing to vary nor impact to step through.
     if let Some(r) = panes.heatmap {
@@ -159,7 +160,7 @@ fn swing_only(frame: &mut Frame, area: Rect, (title, what): (&str, &str), theme:
 
 /// " i: read all " on the foot of a pane whose words are cut short: `i`
 /// shows them whole ([`detail`]).
-pub(super) fn read_all_hint(frame: &mut Frame, pane: Rect, app: &App) {
+pub(super) fn read_all_hint(frame: &mut Frame, pane: Rect, theme: &Theme) {
     let hint = " i: read all ";
     if pane.height == 0 || pane.width < hint.chars().count() as u16 + 2 {
         return;
@@ -167,7 +168,7 @@ pub(super) fn read_all_hint(frame: &mut Frame, pane: Rect, app: &App) {
     let x = pane.x + pane.width - hint.chars().count() as u16 - 1;
     frame
         .buffer_mut()
-        .set_string(x, pane.y + pane.height - 1, hint, app.theme.key);
+        .set_string(x, pane.y + pane.height - 1, hint, theme.key);
 }
 
 /// Which scene is shown, what is being computed and how fresh each result
