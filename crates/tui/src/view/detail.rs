@@ -16,7 +16,10 @@ use preset::escape_text;
 
 /// The sections shown, each a heading and its paragraphs.
 fn sections(app: &App) -> Vec<(&'static str, Vec<String>)> {
-    let mut sections = vec![("Selected input", vec![about_selected(app)])];
+    let mut sections = vec![(
+        "Selected input",
+        vec![about_selected(&super::inputs_view::Inputs::of(app))],
+    )];
     if let Some((message, _)) = &app.message {
         sections.push(("Message", vec![escape_text(message)]));
     }

@@ -10,6 +10,7 @@ mod heatmap;
 mod impact;
 mod impact3d;
 mod inputs;
+mod inputs_view;
 mod margin_map;
 mod overlay;
 mod paper_line;
@@ -55,7 +56,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
         return;
     }
     let panes = layout(area, app.tab, app.is_swing());
-    inputs::draw(frame, panes.inputs, app);
+    inputs::draw(frame, panes.inputs, &inputs_view::Inputs::of(app));
     if let Some(tabs) = panes.tabs {
         let selected = Tab::ALL.iter().position(|t| *t == app.tab).unwrap_or(0);
         let short = Tab::short_titles(tabs.width);
