@@ -272,6 +272,7 @@ pub(super) fn save_fitted(
         description,
         scene: setup.base.scene,
         fence: setup.base.fence,
+        explorer: None,
         source: Source::Bundled,
     };
     fitted(&mut preset.scene);

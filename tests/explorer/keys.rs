@@ -226,6 +226,7 @@ fn presets_save_and_load_and_a_broken_file_is_listed_not_fatal() {
     }
     typed(&mut app, "quick");
     key(&mut app, KeyCode::Enter);
+    key(&mut app, KeyCode::Enter);
     assert!(matches!(app.mode, Mode::Normal));
     assert!(dir.path().join("quick.toml").is_file());
     assert_eq!(app.preset_name, "quick");
@@ -334,7 +335,9 @@ fn a_save_never_hides_a_bundled_preset_unless_asked_twice() {
         other => panic!("a warning, not {other:?}"),
     }
     assert!(!dir.path().join("fastball.toml").exists());
-    // Enter again: saved, and the picker says which fastball is which.
+    // Enter again (and on the description): saved, and the picker says
+    // which fastball is which.
+    key(&mut app, KeyCode::Enter);
     key(&mut app, KeyCode::Enter);
     assert!(matches!(app.mode, Mode::Normal));
     assert!(dir.path().join("fastball.toml").is_file());
@@ -379,6 +382,8 @@ fn a_save_never_overwrites_a_users_preset_unless_asked_twice() {
         std::fs::read_to_string(dir.path().join("mine.toml")).unwrap(),
         old
     );
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Save { named: Some(_), .. }));
     key(&mut app, KeyCode::Enter);
     assert!(matches!(app.mode, Mode::Normal));
     assert_ne!(

@@ -8,6 +8,7 @@ mod tui_fit;
 mod tui_output;
 mod tui_parks;
 mod tui_polish;
+mod tui_presets;
 mod tui_pty;
 mod tui_render;
 mod tui_signals;

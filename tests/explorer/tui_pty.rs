@@ -163,8 +163,14 @@ fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
     session.press("s");
     session.wait_for("Save preset");
     session.press("\u{7f}\u{7f}\u{7f}\u{7f}\u{7f}\u{7f}\u{7f}\u{7f}fast35\r");
+    session.wait_for("2/2 what `fast35` is for");
+    session.press("faster bat\r");
     session.wait_for("saved ");
-    assert!(dir.path().join("fast35.toml").is_file());
+    let saved = std::fs::read_to_string(dir.path().join("fast35.toml")).unwrap();
+    assert!(
+        saved.starts_with("description = \"faster bat\"\n"),
+        "{saved}"
+    );
     session.press("q");
     assert_eq!(session.exit_code(), 0);
     // Every frame is wrapped in a synchronized update (DEC mode 2026).

@@ -115,6 +115,7 @@ fn failed_save() {
         key(&mut app, KeyCode::Char('s'));
         typed(&mut app, "mine");
         key(&mut app, KeyCode::Enter);
+        key(&mut app, KeyCode::Enter);
         assert_eq!(app.scene, before, "the inputs stay");
         insta::assert_snapshot!(format!("failed_save_{w}x{h}"), screen(&app));
     }

@@ -270,12 +270,19 @@ fn the_picker_jumps_and_a_name_with_spaces_is_fixed_up() {
     assert_eq!(text.lines().join(""), "class-demo");
     let question = error.clone().expect("a question");
     assert!(
-        question.contains("names take no spaces: Enter saves `class demo` as `class-demo`"),
+        question.contains("names take no spaces: Enter takes `class demo` as `class-demo`"),
         "{question}"
     );
     assert!(homerun::preset::load("class-demo", Some(dir.path())).is_err());
     let asked = screen(&app);
     assert!(asked.contains("names take no spaces"), "{asked}");
+    key(&mut app, KeyCode::Enter);
+    // Then its description, which the user writes (empty: a default).
+    let Mode::Save { named, .. } = &app.mode else {
+        panic!("the save box asks for the description");
+    };
+    assert_eq!(named.as_deref(), Some("class-demo"));
+    typed(&mut app, "for Tuesday's class");
     key(&mut app, KeyCode::Enter);
     assert!(
         !matches!(app.mode, Mode::Save { .. }),
@@ -284,12 +291,9 @@ fn the_picker_jumps_and_a_name_with_spaces_is_fixed_up() {
     assert_eq!(app.preset_name, "class-demo");
     let (message, error) = app.message.clone().expect("a message");
     assert!(!error && message.starts_with("saved "), "{message}");
-    homerun::preset::load("class-demo", Some(dir.path())).unwrap();
-    assert!(
-        app.description.starts_with("saved from the explorer"),
-        "{}",
-        app.description
-    );
+    let saved = homerun::preset::load("class-demo", Some(dir.path())).unwrap();
+    assert_eq!(saved.description, "for Tuesday's class");
+    assert_eq!(app.description, "for Tuesday's class");
 }
 
 /// Issue 28, item 10: h and l on the preset row load the previous and next

@@ -386,6 +386,8 @@ fn a_batted_ball_saves_as_one_and_the_pin_compares_across_scenes() {
     }
     typed(&mut app, "batted");
     key(&mut app, KeyCode::Enter);
+    // The description: none, so the default.
+    key(&mut app, KeyCode::Enter);
     let saved = homerun::preset::load("batted", Some(dir.path())).unwrap();
     assert_eq!(saved.scene.kind, SceneKind::BattedBall);
     assert_eq!(saved.scene.launch, app.scene.launch);

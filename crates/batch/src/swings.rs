@@ -176,6 +176,7 @@ fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
         description,
         scene,
         fence: Some(job.fence),
+        explorer: None,
         source: Source::Bundled,
     })
 }

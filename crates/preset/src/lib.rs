@@ -14,6 +14,7 @@ mod escape;
 mod field;
 mod file;
 pub mod parks;
+mod setup;
 
 pub use escape::{
     cut, escape_cut, escape_for_terminal, escape_text, json_for_terminal, needs_escape,
@@ -22,6 +23,7 @@ pub use field::{FIELD_KEYS, FieldKey};
 pub use file::shown;
 pub use file::{FileKind, MAX_BYTES, check_dir, read_text};
 use file::{check_save_target, preset_files, size_text, through};
+pub use setup::{EXPLORER_SECTION, ExplorerSetup};
 
 use model::aero::{DragModel, LiftModel};
 use model::keys::{
@@ -57,6 +59,8 @@ pub struct Preset {
     pub description: String,
     pub scene: Scene,
     pub fence: Option<Fence>,
+    /// The explorer's set-up saved with it (`[explorer]`), if any.
+    pub explorer: Option<ExplorerSetup>,
     pub source: Source,
 }
 
@@ -172,8 +176,13 @@ impl Preset {
         let mut description = String::new();
         let mut fence_distance = None;
         let mut fence_height = None;
+        let mut explorer = None;
         for (section, value) in &table {
             let section = section.as_str();
+            if section == EXPLORER_SECTION {
+                explorer = Some(ExplorerSetup::parse(value, origin)?);
+                continue;
+            }
             if section == "description" {
                 description = value
                     .as_str()
@@ -276,6 +285,7 @@ impl Preset {
             description,
             scene,
             fence,
+            explorer,
             source,
         })
     }
@@ -390,6 +400,9 @@ impl Preset {
                 toml::Value::Float(fence.distance),
                 toml::Value::Float(fence.height)
             );
+        }
+        if let Some(setup) = &self.explorer {
+            out += &setup.to_toml();
         }
         out
     }

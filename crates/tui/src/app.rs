@@ -142,13 +142,15 @@ pub enum Mode {
         error: Option<String>,
         initial: String,
     },
-    /// Typing a name to save the inputs under. `overwrite` is the name (a
-    /// bundled preset's, or one of the user's) the user was warned about:
-    /// Enter on it again saves anyway.
+    /// Typing a name to save the inputs under, then (once `named`) the
+    /// preset's description. `overwrite` is the name (a bundled preset's,
+    /// or one of the user's) the user was warned about: Enter on it again
+    /// goes on anyway.
     Save {
         text: TextArea<'static>,
         error: Option<String>,
         overwrite: Option<String>,
+        named: Option<String>,
     },
     /// Choosing a preset (or a Savant file's swing) to load; with `find`,
     /// the items are those whose name and description hold each of its
@@ -298,15 +300,12 @@ pub struct App {
 impl App {
     /// A distance in the units shown: (value, unit).
     pub fn distance(&self, metres: f64) -> (f64, &'static str) {
-        let unit = self.unit(Quantity::Distance);
-        (unit.show(metres), unit.symbol)
+        crate::shown::distance(self.units, metres)
     }
 
-    /// The scene's range as every pane shows it, at one rounding (the
-    /// readout's, to which the Δ column's gains add up): "134.70 m".
+    /// The scene's range as every pane shows it ([`crate::shown::range_text`]).
     pub fn range_text(&self, metres: f64) -> String {
-        let (value, unit) = self.distance(metres);
-        format!("{value:.2} {unit}")
+        crate::shown::range_text(self.units, metres)
     }
 
     /// What a class should hear about a landing that is no hit to the
@@ -347,6 +346,7 @@ impl App {
         theme: impl Into<Theme>,
         size: Rect,
     ) -> App {
+        let setup = preset.explorer.clone();
         let flown = fly_scene(&preset.scene, Purpose::Readout);
         let fields = fields(preset.scene.kind);
         let selected = first_input(&fields, preset.scene.kind);
@@ -396,6 +396,12 @@ impl App {
             inputs_changed: true,
             job: None,
         };
+        // A preset saved from the explorer opens as it was left (its park
+        // among the bundled; `run` looks again among the user's).
+        if let Some(setup) = &setup {
+            app.restore_setup(setup);
+            app.message = None;
+        }
         app.fit_figure();
         app.flush();
         app
@@ -565,7 +571,8 @@ impl App {
                 text,
                 error,
                 overwrite,
-            } => self.save_key(key, action, text, error, overwrite),
+                named,
+            } => self.save_key(key, action, text, (error, overwrite), named),
             Mode::Open {
                 items,
                 selected,
@@ -609,6 +616,7 @@ impl App {
                     text: prefilled(name, &self.theme),
                     error: None,
                     overwrite: None,
+                    named: None,
                 };
             }
             Action::Open => self.open_picker(),

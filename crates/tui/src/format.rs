@@ -3,6 +3,7 @@
 //! is read back in the same unit. Values stay SI inside; only text passes
 //! through here.
 
+use crate::shown::READOUT_DECIMALS;
 use model::keys::{InputError, Key, number_text};
 use units::{Quantity, UnitSystem};
 
@@ -35,19 +36,70 @@ pub fn on_step(key: &Key, si: f64, system: UnitSystem) -> f64 {
 ///
 /// A value that is whole at up to three more digits (90.5 or 94.23 mph,
 /// as typed) keeps them: the rounding hides only the conversion's digits.
+///
+/// Where the readout shows the same quantity, the value not typed is
+/// shown as the readout shows it, so that one number reads the same in
+/// every pane: an angle or a size (ψ, E, the radii) to the readout's
+/// digits (0.4887 rad, 9.13°, 1.043 in), or finer where the step is; the
+/// air's ρ to a thousandth and ν as 1.776e-5.
 pub fn shown_value(key: &Key, si: f64, system: UnitSystem) -> String {
     let unit = key.unit_in(system);
     let (value, step) = (unit.show(si), shown_step(key, system));
-    if unit.is_identity() {
-        return number(value, step, 3);
+    // The value as typed, if it was typed to at most 3 digits past the step.
+    let typed = || {
+        (0..=3)
+            .map(|finer| number(value, step, finer))
+            .find(|text| is_exact(text, value))
+    };
+    match (key.name, key.quantity()) {
+        // The air as the readout's air line shows it (ρ 1.007 kg/m³, ν
+        // 1.776e-5 m²/s), or as typed where that was finer.
+        (AIR_DENSITY, _) => typed().unwrap_or_else(|| trim(format!("{value:.3}"))),
+        (VISCOSITY, _) => scientific(value),
+        // An angle or a size as the readout shows it (0.4887 rad, 9.13°,
+        // 1.043 in), or finer where the step is.
+        (_, Quantity::Angle | Quantity::Size) => typed().unwrap_or_else(|| {
+            let step_decimals = (-step.log10()).ceil().max(0.0) as usize;
+            let decimals = unit.decimals(READOUT_DECIMALS).max(step_decimals);
+            trim(format!("{value:.decimals$}"))
+        }),
+        _ if unit.is_identity() => number(value, step, 3),
+        _ => typed().unwrap_or_else(|| number(value, step, 0)),
     }
-    (0..=3)
-        .map(|finer| number(value, step, finer))
+}
+
+/// ν as the readout shows it, 1.776e-5, or as typed (1.5e-5).
+fn scientific(value: f64) -> String {
+    (0..=5)
+        .map(|digits| format!("{value:.digits$e}"))
+        // Relative: every ν is far below the 1e-9 that `is_exact` allows.
         .find(|text| {
             text.parse::<f64>()
-                .is_ok_and(|shown| (shown - value).abs() <= 1e-9 * value.abs().max(1.0))
+                .is_ok_and(|shown| (shown - value).abs() <= 1e-9 * value.abs())
         })
-        .unwrap_or_else(|| number(value, step, 0))
+        .unwrap_or_else(|| format!("{value:.3e}"))
+}
+
+const AIR_DENSITY: &str = "environment.air_density";
+const VISCOSITY: &str = "environment.kinematic_viscosity";
+
+/// Whether `text` reads back as `value` (to a part in 10⁹): the digits a
+/// user typed, not a conversion's or a derivation's.
+fn is_exact(text: &str, value: f64) -> bool {
+    text.parse::<f64>()
+        .is_ok_and(|shown| (shown - value).abs() <= 1e-9 * value.abs().max(1.0))
+}
+
+/// A value and its unit as the inputs pane's columns show them: degrees
+/// on their number ("9.13°", as every other pane writes an angle), other
+/// units in the unit column ("1.043", "in").
+pub fn value_and_unit(key: &Key, si: f64, system: UnitSystem) -> (String, &'static str) {
+    let (value, symbol) = (shown_value(key, si, system), key.unit_in(system).symbol);
+    if symbol == "°" {
+        (format!("{value}°"), "")
+    } else {
+        (value, symbol)
+    }
 }
 
 /// An SI value of `key` in `system`, to a thousandth of the shown step: for
@@ -192,14 +244,48 @@ mod tests {
         let shown = |name: &str, si: f64| shown_value(Scene::key(name).unwrap(), si, imperial);
         // 1013.25 hPa is 29.921 inHg; the step is 0.02 inHg.
         assert_eq!(shown("environment.pressure", 1013.25), "29.92");
-        // 0.0265 m is 1.0433 in, step 0.02 in; 0.0231 m is 0.9094 in.
-        assert_eq!(shown("bat.undercut", 0.0265), "1.04");
-        assert_eq!(shown("ball.gyration_radius", 0.0231), "0.91");
+        // 0.0265 m is 1.0433 in, step 0.02 in; 0.0231 m is 0.9094 in:
+        // to the thousandth, as the readout shows an undercut (1.043 in).
+        assert_eq!(shown("bat.undercut", 0.0265), "1.043");
+        assert_eq!(shown("ball.gyration_radius", 0.0231), "0.909");
+        // Table II's ψ, 0.1594 rad, is 9.133°: 9.13° as the readout has it,
+        // the degree sign on the number as everywhere else.
+        assert_eq!(shown("bat.swing_angle", 0.1594), "9.13");
+        let psi = Scene::key("bat.swing_angle").unwrap();
+        assert_eq!(
+            value_and_unit(psi, 0.1594, imperial),
+            ("9.13°".to_owned(), "")
+        );
+        // The air as the readout shows it: ρ 1.007, ν 1.776e-5 (Coors'),
+        // or as typed (1.23, 1.5e-5).
+        for system in [imperial, UnitSystem::Si] {
+            let air = |name: &str, si: f64| shown_value(Scene::key(name).unwrap(), si, system);
+            assert_eq!(air("environment.air_density", 1.007_330_4), "1.007");
+            assert_eq!(air("environment.air_density", 1.23), "1.23");
+            assert_eq!(air("environment.air_density", 1.2345), "1.2345");
+            assert_eq!(
+                air("environment.kinematic_viscosity", 1.776_290_3e-5),
+                "1.776e-5"
+            );
+            assert_eq!(air("environment.kinematic_viscosity", 1.5e-5), "1.5e-5");
+        }
+        let speed = Scene::key("pitch.speed").unwrap();
+        assert_eq!(
+            value_and_unit(speed, 42.0, imperial),
+            ("94".to_owned(), "mph")
+        );
         // SI as it always was: a thousandth of the step.
         assert_eq!(
             shown_value(Scene::key("bat.undercut").unwrap(), 0.0265, UnitSystem::Si),
             "0.0265"
         );
+        // An angle in SI as the readout shows it: 28° is 0.4887 rad, and
+        // the optimum's ψ 0.1744 rad; a typed 0.48869 keeps its digits.
+        let si_angle =
+            |name: &str, rad: f64| shown_value(Scene::key(name).unwrap(), rad, UnitSystem::Si);
+        assert_eq!(si_angle("launch.angle", 28f64.to_radians()), "0.4887");
+        assert_eq!(si_angle("bat.swing_angle", 0.174_372_1), "0.1744");
+        assert_eq!(si_angle("launch.angle", 0.48869), "0.48869");
         let scene = Scene::default();
         for key in model::keys::all_keys() {
             let step = shown_step(key, imperial);
@@ -214,9 +300,11 @@ mod tests {
             );
             let text = shown_value(key, si, imperial);
             let decimals = text.split_once('.').map_or(0, |(_, d)| d.len());
+            // The step's digits, or (an angle, a size) the readout's.
             if !unit.is_identity() {
                 let step_decimals = (-step.log10()).ceil().max(0.0) as usize;
-                assert!(decimals <= step_decimals, "{}: {text}", key.name);
+                let most = step_decimals.max(unit.decimals(READOUT_DECIMALS));
+                assert!(decimals <= most, "{}: {text}", key.name);
             }
         }
     }

@@ -285,7 +285,7 @@ pub const KEYMAP: &[Row] = &[
     ),
     row(
         &[ch('s', Save), ch('o', Open)],
-        "save the inputs as a preset / open one",
+        "save inputs and set-up as a preset / open one",
     ),
     row(
         &[ch('x', Export)],

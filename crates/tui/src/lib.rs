@@ -135,14 +135,23 @@ pub fn run(
         background.unwrap_or_else(Background::detect),
         ColorMode::detect(),
     );
+    let setup = preset.explorer.clone();
     let mut app = App::new(
         preset,
         presets_dir,
         theme,
         Rect::new(0, 0, size.width, size.height),
     );
-    app.set_units(units);
     app.load_parks(parks_dir.as_deref());
+    // A preset saved from the explorer opens in its own units and park
+    // (which may be one of the user's); any other in `--units`.
+    match &setup {
+        Some(setup) => {
+            app.restore_setup(setup);
+            app.message = None;
+        }
+        None => app.set_units(units),
+    }
     app.offer_compact_swings(swings);
     let worker = Worker::spawn();
     watch_for_hang_up()?;

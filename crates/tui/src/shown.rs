@@ -7,6 +7,10 @@
 use crate::format::signed;
 use units::{Quantity, UnitSystem};
 
+/// The decimals in SI the readout gives an angle (0.1744 rad) and the
+/// undercut (0.0273 m); in the other units about as fine (9.99°, 1.074 in).
+pub const READOUT_DECIMALS: usize = 4;
+
 /// `si` of `quantity` in the unit of `units`, with its symbol: `si_decimals`
 /// in SI and about as fine in the other system ([`units::Unit::decimals`]);
 /// `sign` for a difference ("+0.0008 m", never "-0.0000"). Degrees sit on
@@ -39,6 +43,19 @@ pub fn quantity_text(
     format!("{value}{gap}{}", unit.symbol)
 }
 
+/// A distance in the units shown: (value, unit).
+pub fn distance(units: UnitSystem, metres: f64) -> (f64, &'static str) {
+    let unit = Quantity::Distance.in_system(units);
+    (unit.show(metres), unit.symbol)
+}
+
+/// A range as every pane shows it, at one rounding (the readout's, to
+/// which the Δ column's gains add up): "134.70 m".
+pub fn range_text(units: UnitSystem, metres: f64) -> String {
+    let (value, unit) = distance(units, metres);
+    format!("{value:.2} {unit}")
+}
+
 /// An angle: "0.1744 rad" or "9.99°" (ψ, θ, ζ, the launch, the landing,
 /// the slip's direction).
 pub fn angle_text(units: UnitSystem, rad: f64, si_decimals: usize, sign: bool) -> String {
@@ -47,7 +64,7 @@ pub fn angle_text(units: UnitSystem, rad: f64, si_decimals: usize, sign: bool) -
 
 /// The undercut E: "0.0273 m" (Table II's unit and digits) or "1.074 in".
 pub fn undercut_text(units: UnitSystem, metres: f64, sign: bool) -> String {
-    quantity_text(units, Quantity::Size, metres, 4, sign)
+    quantity_text(units, Quantity::Size, metres, READOUT_DECIMALS, sign)
 }
 
 /// The undercut's axis: a tick's text and the axis' title, "E (m)" with
@@ -73,12 +90,20 @@ pub fn undercut_axis(units: UnitSystem) -> String {
     format!("E ({})", Quantity::Size.in_system(units).symbol)
 }
 
-/// The swing angle axis' tick: "0.8" (rad) or "46°".
+/// The swing angle axis' tick: "0.8" (rad) or "46" (°), bare as the
+/// undercut's are, the unit said once beside the axis' name
+/// ([`swing_angle_unit`]).
 pub fn swing_angle_tick(units: UnitSystem, rad: f64) -> String {
     match units {
         UnitSystem::Si => format!("{rad:.1}"),
-        UnitSystem::Imperial => format!("{:.0}°", rad.to_degrees()),
+        UnitSystem::Imperial => format!("{:.0}", rad.to_degrees()),
     }
+}
+
+/// The swing angle axis' unit, under its name as "E (m)" has it: "(rad)"
+/// or "(°)".
+pub fn swing_angle_unit(units: UnitSystem) -> String {
+    format!("({})", Quantity::Angle.in_system(units).symbol)
 }
 
 /// A direction from the centre-field line in words: "0.12 rad toward right
@@ -128,6 +153,8 @@ mod tests {
         assert_eq!(direction_text(IMPERIAL, -0.12), "7° toward left field");
         assert_eq!(direction_text(SI, 0.005), "centre field");
         assert_eq!(swing_angle_tick(SI, 0.8), "0.8");
-        assert_eq!(swing_angle_tick(IMPERIAL, 0.8), "46°");
+        assert_eq!(swing_angle_tick(IMPERIAL, 0.8), "46");
+        assert_eq!(swing_angle_unit(SI), "(rad)");
+        assert_eq!(swing_angle_unit(IMPERIAL), "(°)");
     }
 }

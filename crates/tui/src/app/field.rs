@@ -59,11 +59,23 @@ impl App {
         self.park.and_then(|k| self.parks.list.parks.get(k))
     }
 
+    /// The index of the park `code` names (its code, else an alias, in
+    /// any case), as `--park` finds it.
+    pub fn park_index(&self, code: &str) -> Option<usize> {
+        let park = self.parks.list.find(code)?;
+        self.parks
+            .list
+            .parks
+            .iter()
+            .position(|p| std::ptr::eq(p, park))
+    }
+
     /// Reads the user's parks from `dir` (every `*.toml` in it) beside the
     /// bundled ones for `m`/`M`. A file that does not read leaves the
     /// bundled parks alone, and says why (a park silently missing would
     /// be a wrong answer, not a smaller list).
     pub fn load_parks(&mut self, dir: Option<&std::path::Path>) {
+        let code = self.chosen_park().map(|p| p.code.clone());
         self.parks = match preset::parks::all(dir) {
             Ok(list) => {
                 if let Some(note) = &list.note {
@@ -83,7 +95,11 @@ impl App {
                 }
             }
         };
-        self.park = None;
+        // The park chosen stays chosen, found by its code in the new list.
+        self.park = code.and_then(|code| self.park_index(&code));
+        if self.park.is_none() {
+            self.air_before_park = None;
+        }
         self.judge_fences();
         self.refresh_margin(true);
         self.dirty = true;

@@ -11,98 +11,165 @@ use super::edit::prefilled;
 use super::{App, Find, Mode, Pick, PickItem, Searchable};
 use crate::keymap::Action;
 use preset::compact::CompactPresets;
-use preset::{self, Preset, PresetError, Source};
+use preset::{self, ExplorerSetup, Preset, PresetError, Source, escape_for_terminal};
+
+/// The longest description a preset is saved with: a sentence or two,
+/// which the picker and the preset row show.
+const MAX_DESCRIPTION: usize = 300;
 
 impl App {
+    /// A key in the save prompt: its first step takes the name, its
+    /// second (`named`) the description.
     pub(super) fn save_key(
         &mut self,
         key: KeyEvent,
         action: Option<Action>,
         mut text: TextArea<'static>,
-        error: Option<String>,
-        overwrite: Option<String>,
+        (error, overwrite): (Option<String>, Option<String>),
+        named: Option<String>,
     ) {
-        match action {
-            Some(Action::Close) => {}
-            Some(Action::Confirm) => {
-                // A name with spaces is asked about, never changed silently:
-                // "class demo" offers class-demo in the box, which Enter then
-                // saves (or the user edits it).
-                let typed = text.lines().join("");
-                let name = typed.split_whitespace().collect::<Vec<_>>().join("-");
-                if name != typed.trim() {
-                    self.mode = Mode::Save {
-                        text: prefilled(name.clone(), &self.theme),
-                        error: Some(format!(
-                            "names take no spaces: Enter saves `{}` as `{name}` (or edit it; Esc cancels)",
-                            typed.trim()
-                        )),
-                        overwrite,
-                    };
-                    return;
-                }
-                // Taking a bundled name hides the bundled preset from
-                // `--preset NAME` and from `o`: only when asked twice.
-                // Overwriting one of the user's own: only when asked twice too.
-                let asked = overwrite.as_deref() == Some(name.as_str());
-                let question = if preset::user_file(&name, self.presets_dir.as_deref()).is_some() {
-                    Some(format!(
-                        "`{name}` is one of your presets: Enter again to overwrite it"
-                    ))
-                } else if preset::is_bundled(&name) {
-                    Some(format!(
-                        "`{name}` is bundled: your file would hide it (--preset {name} and o load yours); Enter again to save anyway"
-                    ))
-                } else {
-                    None
-                };
-                if let Some(question) = question.filter(|_| !asked) {
-                    self.mode = Mode::Save {
-                        text,
-                        error: Some(question),
-                        overwrite: Some(name),
-                    };
-                    return;
-                }
-                match self.save(&name) {
-                    Ok(path) => {
-                        // The preset row's hint now describes the one saved.
-                        self.description = self.saved_description();
-                        self.preset_name = name;
-                        self.message = Some((format!("saved {}", path.display()), false));
-                    }
-                    Err(e) => {
-                        self.mode = Mode::Save {
-                            text,
-                            error: Some(e),
-                            overwrite,
-                        }
-                    }
-                }
-            }
-            _ => {
+        match (action, named) {
+            (Some(Action::Close), _) => {}
+            (Some(Action::Confirm), None) => self.confirm_name(text, overwrite),
+            (Some(Action::Confirm), Some(name)) => self.confirm_description(text, name),
+            (_, named) => {
                 text.input(key);
                 self.mode = Mode::Save {
                     text,
                     error,
                     overwrite,
+                    named,
                 };
             }
         }
     }
 
-    /// What a preset saved now says of itself.
-    fn saved_description(&self) -> String {
-        format!("saved from the explorer (from {})", self.preset_name)
+    /// Enter on the name: asked about if it has spaces, or would hide a
+    /// bundled preset or overwrite one of the user's; else on to the
+    /// description.
+    fn confirm_name(&mut self, text: TextArea<'static>, overwrite: Option<String>) {
+        let ask = |text, error: String, overwrite| Mode::Save {
+            text,
+            error: Some(error),
+            overwrite,
+            named: None,
+        };
+        // A name with spaces is asked about, never changed silently:
+        // "class demo" offers class-demo in the box, which Enter then
+        // saves (or the user edits it).
+        let typed = text.lines().join("");
+        let name = typed.split_whitespace().collect::<Vec<_>>().join("-");
+        if name != typed.trim() {
+            let error = format!(
+                "names take no spaces: Enter takes `{}` as `{name}` (or edit it; Esc cancels)",
+                typed.trim()
+            );
+            self.mode = ask(prefilled(name, &self.theme), error, overwrite);
+            return;
+        }
+        // A name that cannot be saved is said now, not after the description.
+        let dir = self.presets_dir.as_deref();
+        if let Err(e) = dir
+            .ok_or_else(|| preset::NO_FOLDER.to_owned())
+            .and_then(|dir| preset::check_save(&name, dir, true).map_err(|e| e.to_string()))
+        {
+            self.mode = ask(text, format!("not saved: {e}"), overwrite);
+            return;
+        }
+        // Taking a bundled name hides the bundled preset from
+        // `--preset NAME` and from `o`: only when asked twice.
+        // Overwriting one of the user's own: only when asked twice too.
+        let asked = overwrite.as_deref() == Some(name.as_str());
+        let question = if preset::user_file(&name, dir).is_some() {
+            Some(format!(
+                "`{name}` is one of your presets: Enter again to overwrite it"
+            ))
+        } else if preset::is_bundled(&name) {
+            Some(format!(
+                "`{name}` is bundled: your file would hide it (--preset {name} and o load yours); Enter again to save anyway"
+            ))
+        } else {
+            None
+        };
+        if let Some(question) = question.filter(|_| !asked) {
+            self.mode = ask(text, question, Some(name));
+            return;
+        }
+        self.mode = Mode::Save {
+            text: TextArea::default(),
+            error: None,
+            overwrite: None,
+            named: Some(name),
+        };
     }
 
-    fn save(&self, name: &str) -> Result<PathBuf, String> {
+    /// Enter on the description (empty: [`App::default_description`]):
+    /// the preset is saved, or the prompt says why not.
+    fn confirm_description(&mut self, text: TextArea<'static>, name: String) {
+        let typed = text.lines().join(" ");
+        let description = match typed.trim() {
+            "" => self.default_description(),
+            typed => typed.to_owned(),
+        };
+        if description.chars().count() > MAX_DESCRIPTION {
+            self.mode = Mode::Save {
+                text,
+                error: Some(format!(
+                    "a description is at most {MAX_DESCRIPTION} characters; this is {}",
+                    description.chars().count()
+                )),
+                overwrite: None,
+                named: Some(name),
+            };
+            return;
+        }
+        match self.save(&name, &description) {
+            Ok(path) => {
+                // The preset row's hint now describes the one saved.
+                self.description = description;
+                self.preset_name = name;
+                self.message = Some((format!("saved {}", path.display()), false));
+            }
+            Err(error) => {
+                self.mode = Mode::Save {
+                    text,
+                    error: Some(error),
+                    overwrite: None,
+                    named: Some(name),
+                }
+            }
+        }
+    }
+
+    /// What a preset saved with no description of the user's says of
+    /// itself: where it came from and the park it was set in.
+    pub fn default_description(&self) -> String {
+        let park = match (self.chosen_park(), self.in_park_air()) {
+            (Some(park), true) => format!(" at {} in its air", escape_for_terminal(&park.code)),
+            (Some(park), false) => format!(" at {}", escape_for_terminal(&park.code)),
+            (None, _) => String::new(),
+        };
+        format!("{} as set in the explorer{park}", self.preset_name)
+    }
+
+    /// The explorer's set-up around the scene, as a preset keeps it.
+    pub fn setup(&self) -> ExplorerSetup {
+        let park = self.chosen_park().map(|p| p.code.clone());
+        ExplorerSetup {
+            park_air: park.is_some() && self.in_park_air(),
+            park,
+            units: self.units,
+        }
+    }
+
+    fn save(&self, name: &str, description: &str) -> Result<PathBuf, String> {
         let dir = self.presets_dir.as_deref().ok_or(preset::NO_FOLDER)?;
         let preset = Preset {
             name: name.to_owned(),
-            description: self.saved_description(),
+            description: description.to_owned(),
             scene: self.scene,
             fence: self.fence,
+            explorer: Some(self.setup()),
             source: Source::Bundled,
         };
         preset

@@ -2,18 +2,60 @@
 //! the batted ball it launches, and the swing moved to the optimum.
 
 use super::*;
+use preset::{ExplorerSetup, escape_for_terminal};
 
 impl App {
     /// Replaces the inputs with a preset's.
     pub fn load(&mut self, preset: Preset) {
-        self.message = Some((format!("loaded {}", preset.name), false));
+        let mut message = format!("loaded {}", preset.name);
         // The preset brings its own air.
         self.air_before_park = None;
         self.preset_name = preset.name;
         self.description = preset.description;
         self.set_scene(preset.scene);
         self.fence = preset.fence;
+        // A preset saved from the explorer brings its set-up too; one
+        // without leaves the park and the units as they are.
+        if let Some(setup) = &preset.explorer {
+            message += &self.restore_setup(setup);
+        }
+        self.message = Some((message, false));
         self.dirty = true;
+    }
+
+    /// Puts back the set-up a preset was saved in: its units, its park
+    /// (by code, among the parks `m`/`M` go through) and whether the
+    /// scene flies in that park's air (the preset's air is that air
+    /// already; `a` then brings the standard air at sea level). What
+    /// the message adds about it.
+    pub fn restore_setup(&mut self, setup: &ExplorerSetup) -> String {
+        self.set_units(setup.units);
+        let found = setup
+            .park
+            .as_deref()
+            .map(|code| (code, self.park_index(code)));
+        let (park, words) = match found {
+            None => (None, String::new()),
+            Some((code, Some(k))) => (Some(k), format!(" at {}", escape_for_terminal(code))),
+            Some((code, None)) => (
+                None,
+                format!(
+                    "; its park {} is not among yours: the preset's fence",
+                    escape_for_terminal(code)
+                ),
+            ),
+        };
+        self.park = park;
+        self.air_before_park =
+            (park.is_some() && setup.park_air).then(|| Scene::default().environment.air());
+        self.judge_fences();
+        self.refresh_margin(true);
+        let air = if self.in_park_air() {
+            " in its air"
+        } else {
+            ""
+        };
+        format!("{words}{air}, in {} units", self.units)
     }
 
     /// Replaces the scene, and the inputs pane's rows with its kind's,

@@ -16,7 +16,10 @@ use preset::escape_text;
 
 /// The sections shown, each a heading and its paragraphs.
 fn sections(app: &App) -> Vec<(&'static str, Vec<String>)> {
-    let mut sections = vec![("Selected input", vec![about_selected(app)])];
+    let mut sections = vec![(
+        "Selected input",
+        vec![about_selected(&super::inputs_view::Inputs::of(app))],
+    )];
     if let Some((message, _)) = &app.message {
         sections.push(("Message", vec![escape_text(message)]));
     }
@@ -39,7 +42,10 @@ fn sections(app: &App) -> Vec<(&'static str, Vec<String>)> {
         sections.push(("Figure", words));
     }
     // The readout as on a screen with room for all of it.
-    let readout = super::readout::lines(app, Rect::new(0, 0, 200, 200));
+    let readout = super::readout::lines(
+        &super::readout_view::Readout::of(app),
+        Rect::new(0, 0, 200, 200),
+    );
     sections.push((
         "Readout",
         readout

@@ -171,18 +171,21 @@ fn write_labels(
             if let Some(start) = start.filter(|s| *s >= map.plot.x && s + width <= map.plot.right())
             {
                 buf.set_string(start, row, text, style);
+                return true;
             }
         }
+        false
     };
-    for (r, _) in ring_arcs {
+    // The nearest ring says the unit ("100 ft"), as an axis would, where
+    // it fits; the others their number alone.
+    let unit = app.unit(Quantity::Distance).symbol;
+    for (n, (r, _)) in ring_arcs.iter().enumerate() {
         let d = r / k;
-        let label = format!("{r:.0}");
-        write(
-            (-d * FRAC_PI_4.sin(), d * FRAC_PI_4.cos()),
-            &label,
-            app.theme.dim,
-            true,
-        );
+        let at = (-d * FRAC_PI_4.sin(), d * FRAC_PI_4.cos());
+        let bare = format!("{r:.0}");
+        if !(n == 0 && write(at, &format!("{bare} {unit}"), app.theme.dim, true)) {
+            write(at, &bare, app.theme.dim, true);
+        }
     }
     if let Some((_, tail, label)) = wind {
         write(*tail, label, app.theme.apex, false);

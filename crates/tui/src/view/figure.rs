@@ -185,7 +185,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .zip(&rows)
         .any(|(note, &rows)| words::rows_needed(note, width) > rows);
     if caption_cut || notes_cut {
-        super::read_all_hint(frame, area, app);
+        super::read_all_hint(frame, area, &app.theme);
     }
 
     figure_panels::draw(frame, plot, app, data);

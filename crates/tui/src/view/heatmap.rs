@@ -15,7 +15,7 @@ use ratatui::widgets::{Block, Paragraph};
 
 use crate::app::App;
 use crate::layout::{HEATMAP_BAR, heatmap_plot};
-use crate::shown::{swing_angle_tick, undercut_axis, undercut_tick};
+use crate::shown::{swing_angle_tick, swing_angle_unit, undercut_axis, undercut_tick};
 use crate::theme::{Theme, ramp};
 use analysis::study::{CellOutcome, Grid};
 
@@ -163,7 +163,13 @@ pub(super) fn frame_and_axes(
         format!("{:>5}", psi_text(window.swing_angle.1)),
         app.theme.dim,
     );
-    buf.set_string(inner.x, plot.y + plot.height / 2, "  ψ ↑", app.theme.dim);
+    let middle = plot.y + plot.height / 2;
+    buf.set_string(inner.x, middle, "  ψ ↑", app.theme.dim);
+    // The unit under the name, where it leaves the bottom tick its row.
+    if middle + 1 < plot.bottom().saturating_sub(1) {
+        let unit = format!("{:>5}", swing_angle_unit(app.units));
+        buf.set_string(inner.x, middle + 1, unit, app.theme.dim);
+    }
     buf.set_string(
         inner.x,
         plot.bottom().saturating_sub(1),

@@ -83,8 +83,10 @@ fn planar_text(
     stop: Stop,
     glyphs: (&str, &str),
 ) -> Vec<Line<'static>> {
-    let (speed, spin) = (app.unit(Quantity::Speed), app.unit(Quantity::Spin));
+    let speed = app.unit(Quantity::Speed);
     let s = impact.at(stop.impulse);
+    // The spin to the readout's digits: 191.8 rad/s, 1832 rpm.
+    let spin = crate::shown::quantity_text(app.units, Quantity::Spin, s.ball_spin.z, 1, true);
     vec![
         impulse_line(app, impact, stop),
         Line::from(vec![
@@ -103,13 +105,11 @@ fn planar_text(
         Line::from(vec![
             Span::styled("ball ", app.theme.dim),
             Span::raw(format!(
-                "({:+.2}, {:+.2}) {}  |v| {:.2}  spin {:+.1} {}",
+                "({:+.2}, {:+.2}) {}  |v| {:.2}  spin {spin}",
                 speed.show(s.ball_velocity.x),
                 speed.show(s.ball_velocity.y),
                 speed.symbol,
                 speed.show(s.ball_velocity.norm()),
-                spin.show(s.ball_spin.z),
-                spin.symbol
             )),
         ]),
     ]

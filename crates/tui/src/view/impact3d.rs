@@ -18,7 +18,7 @@ use super::impact::{Curve, impulse_line, named, phase_chart, stop_sentence};
 use super::{chart, words};
 use crate::app::App;
 use crate::layout::CELL_ASPECT;
-use crate::shown::angle_text;
+use crate::shown::{angle_text, quantity_text};
 use model::impact::{Collision, Impact3d, Regime, Stop};
 use units::{Quantity, UnitSystem};
 
@@ -33,7 +33,6 @@ pub fn draw(
     stop: Stop,
 ) {
     let speed = app.unit(Quantity::Speed);
-    let spin = app.unit(Quantity::Spin);
     let (across, normal, along) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
     let s = impact.at(stop.impulse);
     let value = |v: f64| Span::raw(format!("{:+.2}  ", speed.show(v)));
@@ -56,13 +55,12 @@ pub fn draw(
         Line::from(vec![
             Span::styled("ball ", app.theme.dim),
             Span::raw(format!(
-                "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {:.1} {}{}",
+                "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {}{}",
                 speed.show(v.x),
                 speed.show(v.y),
                 speed.show(v.z),
                 speed.symbol,
-                spin.show(s.ball_spin.norm()),
-                spin.symbol,
+                quantity_text(app.units, Quantity::Spin, s.ball_spin.norm(), 1, false),
                 spin_parts(app, impact, stop)
             )),
         ]),
@@ -129,9 +127,11 @@ fn spin_parts(app: &App, impact: &Collision, stop: Stop) -> String {
     if stop.impulse < impact.separation_impulse() {
         return String::new();
     }
+    // The readout's digits: a tenth of a rad/s, whole rpm.
     let spin = app.unit(Quantity::Spin);
+    let decimals = spin.decimals(1);
     format!(
-        " (launch: backspin\u{a0}{:.1}, sidespin\u{a0}{:.1})",
+        " (launch: backspin\u{a0}{:.decimals$}, sidespin\u{a0}{:.decimals$})",
         spin.show(impact.launch_spin()),
         spin.show(impact.launch_sidespin())
     )

@@ -14,8 +14,9 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Wrap};
 
-use crate::app::{App, Field, GainCell, Mode, input_key};
-use crate::format::{shown_bounds, shown_range, shown_step, shown_value};
+use super::inputs_view::{Editing, Inputs};
+use crate::app::{Field, GainCell, input_key};
+use crate::format::{shown_bounds, shown_range, shown_step, value_and_unit};
 use crate::inputs::input_words;
 use crate::layout::{input_scroll, inputs_list};
 use crate::worker::Gain;
@@ -116,7 +117,7 @@ fn gain_signs(value: f64, max: f64) -> String {
 
 /// One sensitivity cell, `cells` wide: its text and style.
 fn gain_span(
-    app: &App,
+    view: &Inputs,
     cell: Option<GainCell>,
     max: f64,
     form: Sensitivity,
@@ -124,23 +125,23 @@ fn gain_span(
     fixed: bool,
 ) -> Span<'static> {
     let (text, style) = match cell {
-        None => (String::new(), app.theme.plain),
+        None => (String::new(), view.theme.plain),
         // At the optimum, the swing's own inputs change nothing.
-        Some(GainCell { value: None, .. }) if !fixed => ("—".to_owned(), app.theme.dim),
-        Some(GainCell { value: None, .. }) => ("0".to_owned(), app.theme.dim),
+        Some(GainCell { value: None, .. }) if !fixed => ("—".to_owned(), view.theme.dim),
+        Some(GainCell { value: None, .. }) => ("0".to_owned(), view.theme.dim),
         Some(GainCell {
             value: Some(v),
             generation,
         }) => {
-            let v = app.distance(v).0;
+            let v = view.distance(v).0;
             let text = match form {
                 Sensitivity::Numbers => gain_text(v),
                 Sensitivity::Signs => gain_signs(v, max),
             };
-            let style = if generation != app.generation {
-                app.theme.stale_gain
+            let style = if generation != view.generation {
+                view.theme.stale_gain
             } else {
-                app.theme.gain(v, max)
+                view.theme.gain(v, max)
             };
             (text, style)
         }
@@ -149,28 +150,32 @@ fn gain_span(
 }
 
 /// The largest |gain| of a kind, in the pane's unit (1 if none yet).
-fn largest(app: &App, gain: Gain) -> f64 {
-    let max = app
+fn largest(view: &Inputs, gain: Gain) -> f64 {
+    let max = view
         .gains(gain)
         .iter()
         .filter_map(|c| c.and_then(|c| c.value))
-        .map(|v| app.distance(v).0.abs())
+        .map(|v| view.distance(v).0.abs())
         .fold(0.0, f64::max);
     if max > 0.0 { max } else { 1.0 }
 }
 
 /// The pane's title: "Inputs" at the left, the Δ columns' heads at the right
 /// above their columns (in the busy colour while any is being computed).
-fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
-    let left = Line::from(Span::styled(" Inputs ", app.theme.title));
+fn title(view: &Inputs, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
+    let left = Line::from(Span::styled(" Inputs ", view.theme.title));
     let Some(form) = c.swing else {
-        return (left, selected_gain(app));
+        return (left, selected_gain(view));
     };
-    let unit = app.distance(1.0).1;
+    let unit = view.distance(1.0).1;
     // Each head is right-aligned over its column; the border runs on to it.
     let head = |text: String, gain: Gain, cells: usize| {
-        let busy = app.gains_done(gain) < app.gain_count();
-        let style = if busy { app.theme.busy } else { app.theme.dim };
+        let busy = view.gains_busy(gain);
+        let style = if busy {
+            view.theme.busy
+        } else {
+            view.theme.dim
+        };
         let text = format!(" {text}");
         [
             Span::raw("─".repeat(cells.saturating_sub(width(&text)))),
@@ -194,12 +199,9 @@ fn title(app: &App, c: Columns) -> (Line<'static>, Option<Line<'static>>) {
     (left, Some(Line::from(spans).right_aligned()))
 }
 
-/// The edit box's text and its refusal, while a value is typed.
-type Editing<'a> = Option<(&'a ratatui_textarea::TextArea<'static>, &'a Option<String>)>;
-
-pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let c = fitted_columns(app, Block::bordered().inner(area).width as usize);
-    let (left, right) = title(app, c);
+pub fn draw(frame: &mut Frame, area: Rect, view: &Inputs) {
+    let c = fitted_columns(view, Block::bordered().inner(area).width as usize);
+    let (left, right) = title(view, c);
     let mut block = Block::bordered().title(left);
     if let Some(right) = right {
         block = block.title(right);
@@ -207,26 +209,23 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let list = inputs_list(area);
-    let editing: Editing = match &app.mode {
-        Mode::Edit { text, error, .. } => Some((text, error)),
-        _ => None,
-    };
+    let editing = view.editing;
     // Rows, with a header line before each group (as `layout` counts them,
     // so that a click lands on the row drawn); remember the selected row
     // and where its edit box goes (offset from the list's left, width).
-    let lines = app.input_lines();
+    let lines = &view.lines;
     let mut rows: Vec<Line> = Vec::new();
     let (mut selected_row, mut edit_box) = (0, (0, 0));
     for (line, field) in lines.iter().enumerate() {
         let Some(i) = *field else {
-            let group = lines[line + 1].map_or("", |i| app.fields[i].group());
-            rows.push(Line::styled(format!("─ {group}"), app.theme.dim));
+            let group = lines[line + 1].map_or("", |i| view.fields[i].group());
+            rows.push(Line::styled(format!("─ {group}"), view.theme.dim));
             continue;
         };
-        if i == app.selected {
+        if i == view.selected {
             selected_row = rows.len();
         }
-        let (row, at) = field_row(app, i, c, editing, list);
+        let (row, at) = field_row(view, i, c, editing, list);
         edit_box = at.unwrap_or(edit_box);
         rows.push(row);
     }
@@ -248,23 +247,23 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         inner.width,
         inner.bottom() - list.bottom(),
     );
-    draw_about(frame, (area, about), app, editing);
+    draw_about(frame, (area, about), view, editing);
 }
 
 /// The columns that fit a pane `inner_width` wide, for the values shown now.
-fn fitted_columns(app: &App, inner_width: usize) -> Columns {
+fn fitted_columns(view: &Inputs, inner_width: usize) -> Columns {
     // The widest value and name of the numeric rows, as shown now.
-    let value_width = app
+    let value_width = view
         .fields
         .iter()
         .filter_map(|f| match f {
             Field::Key(k) => Some(input_key(*k)),
             _ => None,
         })
-        .map(|key| width(&shown_value(key, (key.get)(&app.scene), app.units)))
+        .map(|key| width(&value_and_unit(key, (key.get)(view.scene), view.units).0))
         .max()
         .unwrap_or(0);
-    let label_width = app
+    let label_width = view
         .fields
         .iter()
         .map(|f| width(&label_text(*f)))
@@ -276,33 +275,31 @@ fn fitted_columns(app: &App, inner_width: usize) -> Columns {
     let value_width = value_width.min(room.max(6));
     let mut c = columns(inner_width, label_width, value_width);
     // A batted ball has no optimum, so no Δopt.
-    c.optimum &= app.is_swing();
+    c.optimum &= view.is_swing();
     c
 }
 
 /// The row of field `i`: its marker, words, value and unit (or the room
 /// for the edit box, whose place it returns), and its Δ columns.
 fn field_row(
-    app: &App,
+    view: &Inputs,
     i: usize,
     c: Columns,
     editing: Editing,
     list: Rect,
 ) -> (Line<'static>, Option<(usize, usize)>) {
-    let field = &app.fields[i];
-    let selected = i == app.selected;
+    let field = &view.fields[i];
+    let selected = i == view.selected;
     let (value, unit) = match field {
-        Field::Preset => (escape_text(&app.preset_name), ""),
+        Field::Preset => (escape_text(view.preset_name), ""),
         // A model's name is a word: never cut (it takes the unit's room).
-        Field::Drag => (app.scene.drag.name().to_owned(), ""),
-        Field::Lift => (app.scene.lift.name().to_owned(), ""),
-        Field::Hand => (app.scene.bat.hand.name().to_owned(), ""),
+        Field::Drag => (view.scene.drag.name().to_owned(), ""),
+        Field::Lift => (view.scene.lift.name().to_owned(), ""),
+        Field::Hand => (view.scene.bat.hand.name().to_owned(), ""),
         Field::Key(k) => {
             let key = input_key(*k);
-            (
-                fitted_number(shown_value(key, (key.get)(&app.scene), app.units), c.value),
-                key.unit_in(app.units).symbol,
-            )
+            let (value, unit) = value_and_unit(key, (key.get)(view.scene), view.units);
+            (fitted_number(value, c.value), unit)
         }
     };
     let mut label = pad(&label_text(*field), c.label, false);
@@ -331,19 +328,19 @@ fn field_row(
         });
     }
     let (marker, style) = if selected {
-        ("▶", app.theme.selected)
+        ("▶", view.theme.selected)
     } else {
-        (" ", app.theme.plain)
+        (" ", view.theme.plain)
     };
     let mut spans = vec![Span::raw(marker), Span::styled(label, style)];
     if let (Field::Key(k), false) = (field, edit_box.is_some()) {
-        spans.extend(gain_spans(app, *k, c));
+        spans.extend(gain_spans(view, *k, c));
     }
     (Line::from(spans), edit_box)
 }
 
 /// Input `k`'s Δ and Δopt, as the columns show them.
-fn gain_spans(app: &App, k: usize, c: Columns) -> Vec<Span<'static>> {
+fn gain_spans(view: &Inputs, k: usize, c: Columns) -> Vec<Span<'static>> {
     let Some(form) = c.swing else {
         return Vec::new();
     };
@@ -351,10 +348,10 @@ fn gain_spans(app: &App, k: usize, c: Columns) -> Vec<Span<'static>> {
         Sensitivity::Numbers => GAIN,
         Sensitivity::Signs => COMPACT,
     };
-    let max_swing = largest(app, Gain::Swing);
+    let max_swing = largest(view, Gain::Swing);
     let mut spans = vec![gain_span(
-        app,
-        app.swing_gains[k],
+        view,
+        view.gain(Gain::Swing, k),
         max_swing,
         form,
         cells,
@@ -362,9 +359,9 @@ fn gain_spans(app: &App, k: usize, c: Columns) -> Vec<Span<'static>> {
     )];
     if c.optimum {
         spans.push(gain_span(
-            app,
-            app.optimum_gains[k],
-            largest(app, Gain::Optimum),
+            view,
+            view.gain(Gain::Optimum, k),
+            largest(view, Gain::Optimum),
             Sensitivity::Numbers,
             GAIN,
             !sensitivity::moves_optimum(input_key(k)),
@@ -376,14 +373,14 @@ fn gain_spans(app: &App, k: usize, c: Columns) -> Vec<Span<'static>> {
 /// Under the list: the edit's refusal or help, the message, or the
 /// selected input's description; where its words are cut, the pane's
 /// (`area`'s) foot says where the rest is (`i` shows it whole).
-fn draw_about(frame: &mut Frame, (area, about): (Rect, Rect), app: &App, editing: Editing) {
+fn draw_about(frame: &mut Frame, (area, about): (Rect, Rect), view: &Inputs, editing: Editing) {
     let (about_words, about_style) = match editing {
-        Some((_, Some(error))) => (error.clone(), app.theme.error),
-        Some((_, None)) => (edit_help(app, app.fields[app.selected]), app.theme.dim),
-        None => match &app.message {
-            Some((message, true)) => (escape_text(message), app.theme.error),
-            Some((message, false)) => (escape_text(message), app.theme.good),
-            None => (about_selected(app), app.theme.dim),
+        Some((_, Some(error))) => (error.clone(), view.theme.error),
+        Some((_, None)) => (edit_help(view, view.fields[view.selected]), view.theme.dim),
+        None => match &view.message {
+            Some((message, true)) => (escape_text(message), view.theme.error),
+            Some((message, false)) => (escape_text(message), view.theme.good),
+            None => (about_selected(view), view.theme.dim),
         },
     };
     let cut = super::words::rows_needed(&[Span::raw(about_words.as_str())], about.width as usize)
@@ -391,23 +388,23 @@ fn draw_about(frame: &mut Frame, (area, about): (Rect, Rect), app: &App, editing
     let about_text = Paragraph::new(Line::styled(about_words, about_style));
     let about_text = about_text.wrap(Wrap { trim: true });
     if cut {
-        super::read_all_hint(frame, area, app);
+        super::read_all_hint(frame, area, view.theme);
     }
     frame.render_widget(about_text, about);
 }
 
 /// What the selected input is, its range and step, in words.
-pub(super) fn about_selected(app: &App) -> String {
-    match app.fields[app.selected] {
+pub(super) fn about_selected(view: &Inputs) -> String {
+    match view.fields[view.selected] {
         Field::Preset => format!(
             "{} — h l: the previous / next preset · Enter or o: open one",
-            escape_text(&app.description)
+            escape_text(view.description)
         ),
-        Field::Drag => format!("model.drag (h l): {}", app.scene.drag.description()),
-        Field::Lift => format!("model.lift (h l): {}", app.scene.lift.description()),
+        Field::Drag => format!("model.drag (h l): {}", view.scene.drag.description()),
+        Field::Lift => format!("model.lift (h l): {}", view.scene.lift.description()),
         Field::Hand => format!(
             "{HAND_KEY} (h l): {} batter, right or left",
-            app.scene.bat.hand.description()
+            view.scene.bat.hand.description()
         ),
         Field::Key(k) => {
             let key = input_key(k);
@@ -415,8 +412,8 @@ pub(super) fn about_selected(app: &App) -> String {
                 "{}: {} {}, step {}",
                 key.name,
                 key.description,
-                shown_bounds(key, app.units),
-                shown_step(key, app.units)
+                shown_bounds(key, view.units),
+                shown_step(key, view.units)
             )
         }
     }
@@ -426,31 +423,31 @@ pub(super) fn about_selected(app: &App) -> String {
 /// title's right, marked as the selected row is (" ▶ Δ +2.01 m "): grey
 /// while it is computed, "…" before it first is, none for a model or the
 /// preset.
-fn selected_gain(app: &App) -> Option<Line<'static>> {
-    let Field::Key(k) = app.fields[app.selected] else {
+fn selected_gain(view: &Inputs) -> Option<Line<'static>> {
+    let Field::Key(k) = view.fields[view.selected] else {
         return None;
     };
-    let unit = app.distance(1.0).1;
-    let (text, style) = match app.swing_gains[k] {
+    let unit = view.distance(1.0).1;
+    let (text, style) = match view.gain(Gain::Swing, k) {
         Some(GainCell {
             value: Some(v),
             generation,
         }) => {
-            let v = app.distance(v).0;
-            let style = if generation == app.generation {
-                app.theme.gain(v, largest(app, Gain::Swing))
+            let v = view.distance(v).0;
+            let style = if generation == view.generation {
+                view.theme.gain(v, largest(view, Gain::Swing))
             } else {
-                app.theme.stale_gain
+                view.theme.stale_gain
             };
             (format!("{} {unit}", gain_text(v)), style)
         }
         // Refused (at a bound) or not landing, as in the column.
-        Some(GainCell { value: None, .. }) => ("—".to_owned(), app.theme.dim),
-        None => ("…".to_owned(), app.theme.busy),
+        Some(GainCell { value: None, .. }) => ("—".to_owned(), view.theme.dim),
+        None => ("…".to_owned(), view.theme.busy),
     };
     Some(
         Line::from(vec![
-            Span::styled(" ▶ Δ ", app.theme.dim),
+            Span::styled(" ▶ Δ ", view.theme.dim),
             Span::styled(text, style),
             Span::raw(" "),
         ])
@@ -461,6 +458,15 @@ fn selected_gain(app: &App) -> Option<Line<'static>> {
 /// A number's text rounded to fewer decimals until it fits `cells` (its
 /// whole part is never cut).
 fn fitted_number(text: String, cells: usize) -> String {
+    // A degree sign stays on its number, however few digits fit.
+    if let Some(number) = text.strip_suffix('°') {
+        let fitted = fitted_number(number.to_owned(), cells.saturating_sub(1));
+        return format!("{fitted}°");
+    }
+    // A number in scientific notation (ν) is short already.
+    if text.contains('e') {
+        return text;
+    }
     let Ok(value) = text.parse::<f64>() else {
         return text;
     };
@@ -494,12 +500,12 @@ fn label_text(field: Field) -> String {
 
 /// What an edit takes, under its box: the key, its unit and its accepted
 /// range ("bat.speed in m/s, (0, 100]"), or a model's choices.
-fn edit_help(app: &App, field: Field) -> String {
+fn edit_help(view: &Inputs, field: Field) -> String {
     let takes = match field {
         Field::Key(k) => {
             let key = input_key(k);
-            let range = shown_range(key, app.units);
-            match key.unit_in(app.units).symbol {
+            let range = shown_range(key, view.units);
+            match key.unit_in(view.units).symbol {
                 "" => format!("{}: {range}", key.name),
                 unit => format!("{} in {unit}, {range}", key.name),
             }

@@ -10,11 +10,13 @@ mod heatmap;
 mod impact;
 mod impact3d;
 mod inputs;
+mod inputs_view;
 mod margin_map;
 mod overlay;
 mod paper_line;
 mod phase_words;
 mod readout;
+mod readout_view;
 mod trajectory;
 mod words;
 
@@ -54,7 +56,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
         return;
     }
     let panes = layout(area, app.tab, app.is_swing());
-    inputs::draw(frame, panes.inputs, app);
+    inputs::draw(frame, panes.inputs, &inputs_view::Inputs::of(app));
     if let Some(tabs) = panes.tabs {
         let selected = Tab::ALL.iter().position(|t| *t == app.tab).unwrap_or(0);
         let short = Tab::short_titles(tabs.width);
@@ -71,7 +73,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
         trajectory::draw(frame, r, app);
     }
     if let Some(r) = panes.readout {
-        readout::draw(frame, r, app);
+        readout::draw(frame, r, &readout_view::Readout::of(app));
     }
     // A batted ball has no swing to vary nor impact to step through.
     if let Some(r) = panes.heatmap {
@@ -103,7 +105,9 @@ fn draw_panes(frame: &mut Frame, app: &App) {
     match &app.mode {
         Mode::Help { glossary, scroll } => overlay::help(frame, area, app, (*glossary, *scroll)),
         Mode::Detail { scroll } => detail::draw(frame, area, app, *scroll),
-        Mode::Save { text, error, .. } => overlay::save(frame, area, app, text, error.as_deref()),
+        Mode::Save {
+            text, error, named, ..
+        } => overlay::save(frame, area, app, text, (error.as_deref(), named.as_deref())),
         Mode::Open {
             items,
             selected,
@@ -157,7 +161,7 @@ fn swing_only(frame: &mut Frame, area: Rect, (title, what): (&str, &str), theme:
 
 /// " i: read all " on the foot of a pane whose words are cut short: `i`
 /// shows them whole ([`detail`]).
-pub(super) fn read_all_hint(frame: &mut Frame, pane: Rect, app: &App) {
+pub(super) fn read_all_hint(frame: &mut Frame, pane: Rect, theme: &Theme) {
     let hint = " i: read all ";
     if pane.height == 0 || pane.width < hint.chars().count() as u16 + 2 {
         return;
@@ -165,7 +169,7 @@ pub(super) fn read_all_hint(frame: &mut Frame, pane: Rect, app: &App) {
     let x = pane.x + pane.width - hint.chars().count() as u16 - 1;
     frame
         .buffer_mut()
-        .set_string(x, pane.y + pane.height - 1, hint, app.theme.key);
+        .set_string(x, pane.y + pane.height - 1, hint, theme.key);
 }
 
 /// Which scene is shown, what is being computed and how fresh each result

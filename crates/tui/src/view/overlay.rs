@@ -103,33 +103,49 @@ fn glossary_lines(app: &App, width: u16) -> Vec<Line<'static>> {
     lines
 }
 
-pub fn save(frame: &mut Frame, area: Rect, app: &App, text: &TextArea, error: Option<&str>) {
-    let popup = centered(area, 64, 8);
+/// The save prompt: the name (`named` is `None`), then the description.
+pub fn save(
+    frame: &mut Frame,
+    area: Rect,
+    app: &App,
+    text: &TextArea,
+    (error, named): (Option<&str>, Option<&str>),
+) {
+    let popup = centered(area, 64, 9);
     frame.render_widget(Clear, popup);
     let block = Block::bordered().title(Span::styled(" Save preset ", app.theme.title));
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
-    let [folder, input, message] = Layout::vertical([
+    let [asked, input, message] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Length(1),
         Constraint::Fill(1),
     ])
     .areas(inner);
-    let dir = app
-        .presets_dir
-        .as_ref()
-        .map_or("(no folder)".to_owned(), |d| d.display().to_string());
-    frame.render_widget(
-        Paragraph::new(Line::styled(format!("name, into {dir}:"), app.theme.dim)),
-        folder,
-    );
+    let (question, hint) = match named {
+        None => {
+            let dir = app
+                .presets_dir
+                .as_ref()
+                .map_or("(no folder)".to_owned(), |d| d.display().to_string());
+            (
+                format!("1/2 name, into {dir}:"),
+                "letters, digits, - and _ · Enter: on to the description · Esc cancels".to_owned(),
+            )
+        }
+        Some(name) => (
+            format!("2/2 what `{name}` is for (the picker shows it):"),
+            format!(
+                "Enter saves it with the park, its air and the units · empty: \"{}\" · Esc cancels",
+                app.default_description()
+            ),
+        ),
+    };
+    frame.render_widget(Paragraph::new(Line::styled(question, app.theme.dim)), asked);
     frame.render_widget(text, input);
     let line = match error {
         Some(e) => Paragraph::new(Line::styled(e, app.theme.error)),
-        None => Paragraph::new(Line::styled(
-            "letters, digits, - and _ · Enter saves · Esc cancels",
-            app.theme.dim,
-        )),
+        None => Paragraph::new(Line::styled(hint, app.theme.dim)),
     };
     frame.render_widget(line.wrap(Wrap { trim: true }), message);
 }

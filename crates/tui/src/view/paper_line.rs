@@ -5,33 +5,33 @@
 use ratatui::text::{Line, Span};
 
 use super::readout::angle;
-use crate::app::App;
+use super::readout_view::Readout;
 use crate::shown::undercut_text;
 use analysis::paper::{TABLE2, TableRow, table2_scene};
 
 /// The printed row whose scene this is, whatever its swing (E, ψ).
-pub fn table2_row(app: &App) -> Option<TableRow> {
-    let scene = &app.scene;
+pub fn table2_row(view: &Readout) -> Option<TableRow> {
+    let scene = &view.scene;
     TABLE2.iter().find_map(|(_, _, row)| {
-        (app.is_swing() && scene.with_swing(row.undercut, row.swing_angle) == table2_scene(row))
+        (view.is_swing() && scene.with_swing(row.undercut, row.swing_angle) == table2_scene(row))
             .then_some(*row)
     })
 }
 
 /// "Table II E 0.0265 m  ψ 0.1594 rad  134.80 m": the printed optimum, in the
 /// units shown, under ours.
-pub fn line(app: &App) -> Option<Line<'static>> {
-    let row = table2_row(app)?;
-    let (range, unit) = app.distance(row.range);
+pub fn line(view: &Readout) -> Option<Line<'static>> {
+    let row = table2_row(view)?;
+    let (range, unit) = view.distance(row.range);
     Some(Line::from(vec![
-        Span::styled("Table II ", app.theme.dim),
+        Span::styled("Table II ", view.theme.dim),
         Span::styled(
             format!(
                 "E {}  ψ {}  {range:.2} {unit}",
-                undercut_text(app.units, row.undercut, false),
-                angle(app, row.swing_angle, false),
+                undercut_text(view.units, row.undercut, false),
+                angle(view, row.swing_angle, false),
             ),
-            app.theme.dim,
+            view.theme.dim,
         ),
     ]))
 }
