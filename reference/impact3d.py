@@ -4,9 +4,15 @@ left-handed batter (docs/swing-3d.md, shared/DESIGN.md "Three dimensions").
 
 Written from the physics, apart from the Rust core, in the most literal form:
   - the geometry by rotation matrices: a right-handed batter's level, square
-    bat lies along +z; tilt it by tau about the direction of its motion, turn
-    it by phi about the vertical; a left-handed batter is that bat, swung
-    toward -phi, reflected in z;
+    bat lies along +z, moving along +x; tilt it by T (the swing plane's
+    tilt) about the direction of its motion: the bottom of a swing arc in a
+    plane tilted T; turn bat and velocity together about that plane's normal
+    until the velocity rises at the swing angle psi (a rigid bat turning in
+    its plane: its velocity stays square to it), or where |sin psi| >=
+    |sin T| keep the bat level and tip the velocity up by psi about the bat;
+    then turn about the vertical until the velocity's horizontal direction
+    is phi; a left-handed batter is that bat, swung toward -phi, reflected
+    in z;
   - the bodies as full rigid-body vectors in the flight frame (ball velocity
     and spin, bat velocity and spin), with the bat's inverse inertia
     a a^T / (M_B k_B2^2) (it rolls about its own axis only) and its point on
@@ -46,6 +52,11 @@ def rot_x(a):
     return np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
 
 
+def rot_z(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
 def rot_y(a):
     c, s = math.cos(a), math.sin(a)
     return np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
@@ -54,22 +65,47 @@ def rot_y(a):
 MIRROR = np.diag([1.0, 1.0, -1.0])
 
 
-def bat_frame(tilt, direction, hand):
-    """(axis hands->barrel, up square to it, the horizontal it moves along)."""
+def rot_about(n, a):
+    """Rodrigues: the rotation by a about the unit vector n."""
+    n = np.asarray(n, dtype=float)
+    k = np.array([[0, -n[2], n[1]], [n[2], 0, -n[0]], [-n[1], n[0], 0]])
+    return np.eye(3) + math.sin(a) * k + (1 - math.cos(a)) * (k @ k)
+
+
+def bat_frame(tilt, direction, hand, swing_angle):
+    """(axis hands->barrel, up square to it in its vertical plane, the
+    horizontal square to both, the unit velocity) of a bat swung at
+    swing_angle within a swing plane tilted `tilt`."""
     if hand == "left":
-        axis, up, forward = bat_frame(tilt, -direction, "right")
-        return MIRROR @ axis, MIRROR @ up, MIRROR @ forward
-    # Tilt about x (the direction of motion): +z goes down toward -y; then
-    # turn about y so that x goes to (cos phi, 0, sin phi).
-    turn = rot_y(-direction) @ rot_x(tilt)
-    return turn @ np.array([0.0, 0.0, 1.0]), turn @ np.array([0.0, 1.0, 0.0]), turn @ np.array(
-        [1.0, 0.0, 0.0]
-    )
+        axis, up, forward, path = bat_frame(tilt, -direction, "right", swing_angle)
+        return MIRROR @ axis, MIRROR @ up, MIRROR @ forward, MIRROR @ path
+    x, y, z = np.eye(3)
+    if abs(math.sin(swing_angle)) >= abs(math.sin(tilt)):
+        # No plane of that tilt holds the velocity: the paper's level bat.
+        axis, path = z, rot_z(swing_angle) @ x
+    else:
+        # The bottom of the arc in the plane tilted about the motion...
+        bottom = rot_x(tilt)
+        normal = bottom @ y
+        # ...then along the arc until the velocity rises at swing_angle:
+        # v_y = sin(alpha) sin(tilt).
+        alpha = math.asin(math.sin(swing_angle) / math.sin(tilt))
+        along = rot_about(normal, alpha)
+        axis, path = along @ bottom @ z, along @ x
+    # Turn about the vertical until the velocity heads toward `direction`.
+    heading = math.atan2(path[2], path[0])
+    turn = rot_y(-(direction - heading))
+    axis, path = turn @ axis, turn @ path
+    up = y - (y @ axis) * axis
+    up = up / np.linalg.norm(up)
+    forward = np.cross(up, axis)
+    return axis, up, forward, path
 
 
 def impact(case):
     hand = case["hand"]
-    axis, up, forward = bat_frame(case["tilt"], case["direction"], hand)
+    psi = case["swing_angle"]
+    axis, up, forward, path = bat_frame(case["tilt"], case["direction"], hand, psi)
     theta = math.asin(case["undercut"] / (R_BALL + R_BAT))
     n3 = math.cos(theta) * forward + math.sin(theta) * up
     # The paper's frame: n2 along the bat (+z for either hand at a square,
@@ -85,8 +121,7 @@ def impact(case):
         _, gamma = pitch(speed, G)
         vb0 = np.array([-speed * math.cos(gamma), -speed * math.sin(gamma), 0.0])
     wb0 = np.array([0.0, 0.0, spin])
-    psi = case["swing_angle"]
-    vB0 = case["bat_speed"] * (math.cos(psi) * forward + math.sin(psi) * np.array([0.0, 1.0, 0.0]))
+    vB0 = case["bat_speed"] * path
     # Fig. 9's positive roll adds backspin: about -n2.
     wB0 = -case["bat_spin"] * n2
 

@@ -59,7 +59,7 @@ def run(args, home):
 
 def snapshots():
     found = []
-    for path in sorted(glob.glob("tests/snapshots/*.snap")):
+    for path in sorted(glob.glob("tests/**/snapshots/*.snap", recursive=True)):
         body = open(path).read().split("---\n", 2)[2]
         found.append([l.strip('"').rstrip() for l in body.splitlines()])
     return found

@@ -7,7 +7,13 @@ developers (never run by the tests; tests/commands/swing_found.rs checks the
 columns on the committed sample).
 
     cargo build --release
-    python3 scripts/swings_by_speed.py FILE [LABEL=--set,bat.effective_mass=0.8 ...]
+    python3 scripts/swings_by_speed.py FILE [--dates FIRST LAST] [LABEL=--set,bat.effective_mass=0.8 ...]
+
+--dates keeps the rows whose game_date lies in FIRST..LAST (ISO dates): the
+held-out tables of docs/bat-tracking.md ("The swing plane") are the bat
+fitted on one half of April 2024 (`homerun calibrate --impact` on that half,
+0.8819 kg on April 1-15, 0.8857 kg on April 16-30) measured on the other,
+e.g. `--dates 2024-04-16 2024-04-30 held-out=--set,bat.effective_mass=0.8819`.
 
 Without LABEL=ARGS, three bats: the paper's (0.8 kg), the default (the row's
 season's where known), and 0.8819 kg (fitted on April 1-15, 2024 alone).
@@ -28,14 +34,20 @@ DEFAULT = [
 ]
 
 
+DATES = None
+
+
 def run(path, extra):
-    args = [BINARY, "hit", "--batch", path, "--keep", "launch_speed"] + extra
+    args = [BINARY, "hit", "--batch", path, "--keep", "launch_speed,game_date"] + extra
     done = subprocess.run(args, capture_output=True, text=True)
     if done.returncode not in (0, 1):
         sys.exit(done.stderr)
     rows = [r for r in csv.DictReader(io.StringIO(done.stdout)) if r["solved"] in ("true", "false")]
     # Tracked rows only: a reason of no bat_speed or no pitch is untracked.
-    return [r for r in rows if r["pitch.speed"] != "" and r["swing.bat_speed"] != ""]
+    rows = [r for r in rows if r["pitch.speed"] != "" and r["swing.bat_speed"] != ""]
+    if DATES:
+        rows = [r for r in rows if DATES[0] <= r["game_date"] <= DATES[1]]
+    return rows
 
 
 def table(path, variants):
@@ -74,7 +86,12 @@ def table(path, variants):
 
 
 if __name__ == "__main__":
-    path = sys.argv[1]
+    args = sys.argv[1:]
+    if "--dates" in args:
+        at = args.index("--dates")
+        DATES = (args[at + 1], args[at + 2])
+        del args[at:at + 3]
+    path = args[0]
     variants = [(a.split("=", 1)[0], [x for x in a.split("=", 1)[1].split(",") if x])
-                for a in sys.argv[2:]]
+                for a in args[1:]]
     table(path, variants or DEFAULT)

@@ -265,10 +265,11 @@ mod tests {
                 .collect();
             let off = (here.angle - measured[1]).abs().to_degrees();
             // A popup near 90° may lie past the paper's pitch path's
-            // reach (Outman's 83°: 79.6° at the most); it opens at the
-            // steepest the explorer's impact gives, and says so.
+            // reach (Outman's 83°: 69.6° at the most with the bat in its
+            // tilted swing plane, 79.6° before); it opens at the steepest
+            // the explorer's impact gives, and says so.
             if measured[1] > 1.3 {
-                assert!(off < 5.0, "{}", preset.description);
+                assert!(off < 15.0, "{}", preset.description);
                 continue;
             }
             worst.0 = worst.0.max((here.speed - measured[0]).abs());

@@ -119,7 +119,10 @@ pub struct Bat {
     pub radius: f64,
     /// k_B2, radius of gyration about the bat's own axis (m).
     pub gyration_radius: f64,
-    /// The barrel's angle below the hands at contact (rad): 0 is the
+    /// The swing plane's tilt (rad), MLB's swing path tilt: the barrel this
+    /// far below the hands at the bottom of the arc (ψ = 0), less as the bat
+    /// rises or falls through the contact, its velocity square to it
+    /// ([`crate::impact::barrel_in_swing_plane`]); 0 is the
     /// paper's level bat (docs/swing-3d.md).
     #[serde(default)]
     pub tilt: f64,

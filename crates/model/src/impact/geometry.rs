@@ -7,7 +7,9 @@
 //! direction φ ([`frame::backspin_axis`]), and h = ±1 the batter's hand:
 //! - the bat's velocity points along ŵ = (cos φ, 0, sin φ) tipped up by ψ;
 //! - its axis, from the hands to the barrel, is â = h·cos τ·b̂ − sin τ·ŷ
-//!   (τ > 0: the barrel below the hands);
+//!   (τ > 0: the barrel below the hands) at the bottom of the swing's arc
+//!   (ψ = 0); a bat rising through the contact lies in its swing plane,
+//!   square to its velocity ([`BatFrame::swung`]);
 //! - "up, square to the bat" is û = h·sin τ·b̂ + cos τ·ŷ, the unit vector
 //!   square to â in the vertical plane that holds â;
 //! - the ball's centre sits at (r_b + r_B)(cos θ·ŵ + sin θ·û) from the
@@ -26,8 +28,43 @@ pub struct BatFrame {
     pub axis: Vector3<f64>,
     /// û, square to the axis in its vertical plane, upward.
     pub up: Vector3<f64>,
-    /// ŵ, the horizontal direction of the bat's velocity.
+    /// ŵ, the horizontal square to the axis (the bat's velocity's
+    /// horizontal direction at the bottom of the arc, ψ = 0).
     pub forward: Vector3<f64>,
+    /// The unit direction of the bat's velocity.
+    pub path: Vector3<f64>,
+}
+
+/// The barrel's drop below the hands δ and the turn ε of the bat's heading
+/// (rad, for a right-handed batter; a left-handed one's turn is −ε) of a
+/// bat swung at `swing_angle` ψ above the horizontal within a swing plane
+/// tilted `plane_tilt` T (MLB's swing path tilt), its velocity square to
+/// its axis. The sweet spot moves as a point of a rigid bat turning in its
+/// plane about the hands, v = ω × r, so its velocity is square to the bat
+/// (the knob's own motion along the bat is left out); the plane holds both
+/// the velocity v̂ and the axis â. With q̂ = −sin ψ·ŵ + cos ψ·ŷ, square to v̂
+/// in its vertical plane, â = h·cos χ·b̂ − sin χ·q̂ is square to v̂ for any χ,
+/// and the plane's normal v̂ × â has the vertical part cos χ·cos ψ = cos T:
+/// - cos χ = cos T / cos ψ, so sin δ = −â·ŷ = sin χ·cos ψ
+///   = √(sin² T − sin² ψ): the barrel drops T at the bottom of the arc
+///   (ψ = 0) and less as the bat rises through the contact;
+/// - where |ψ| ≥ |T| no plane of that tilt holds the velocity: the bat is
+///   level (χ = 0), its plane tilted by the rise itself, as the paper's
+///   level bat swung at ψ is;
+/// - â's horizontal part, h·cos χ·b̂ + sin χ·sin ψ·ŵ, turns the bat's
+///   heading by ε = atan2(−sin χ·sin ψ, cos χ): an upswing puts the barrel
+///   out in front of the hands, as past the bottom of a tilted arc.
+///
+/// At T = 0, δ = ε = 0 exactly: the paper's level bat, whatever ψ.
+pub fn barrel_in_swing_plane(plane_tilt: f64, swing_angle: f64) -> (f64, f64) {
+    let cos_chi = plane_tilt.cos() / swing_angle.cos();
+    if plane_tilt == 0.0 || cos_chi >= 1.0 {
+        return (0.0, 0.0);
+    }
+    let sin_chi = (1.0 - cos_chi * cos_chi).sqrt().copysign(plane_tilt);
+    let drop = (sin_chi * swing_angle.cos()).asin();
+    let turn = (-sin_chi * swing_angle.sin()).atan2(cos_chi);
+    (drop, turn)
 }
 
 impl BatFrame {
@@ -37,19 +74,32 @@ impl BatFrame {
         let (sin_tilt, cos_tilt) = tilt.sin_cos();
         let square = frame::backspin_axis(direction);
         let h = hand.sign();
+        let forward = frame::horizontal(direction);
         BatFrame {
             axis: square * (h * cos_tilt) - Vector3::y() * sin_tilt,
             up: square * (h * sin_tilt) + Vector3::y() * cos_tilt,
-            forward: frame::horizontal(direction),
+            forward,
+            path: forward,
         }
     }
 
-    /// The bat's velocity (m/s): `speed` along ŵ tipped up by the swing
-    /// angle ψ above the horizontal. Its part along a tilted bat's axis,
-    /// −speed·sin ψ·sin τ, slides toward the hands.
-    pub fn velocity(&self, speed: f64, swing_angle: f64) -> Vector3<f64> {
+    /// The bat swung at `swing_angle` ψ above the horizontal, its velocity's
+    /// horizontal direction `direction` φ, in a swing plane tilted
+    /// `plane_tilt` (the key `bat.tilt`): the barrel's drop and heading from
+    /// [`barrel_in_swing_plane`], so the velocity is square to the axis.
+    /// At a level plane (the paper's) this is [`BatFrame::new`]`(0, φ, h)`
+    /// with the velocity tipped up by ψ, to the bit.
+    pub fn swung(plane_tilt: f64, swing_angle: f64, direction: f64, hand: Hand) -> BatFrame {
+        let (drop, turn) = barrel_in_swing_plane(plane_tilt, swing_angle);
+        let mut bat = BatFrame::new(drop, direction + turn * hand.sign(), hand);
         let (sin, cos) = swing_angle.sin_cos();
-        (self.forward * cos + Vector3::y() * sin) * speed
+        bat.path = frame::horizontal(direction) * cos + Vector3::y() * sin;
+        bat
+    }
+
+    /// The bat's velocity (m/s): `speed` along its path.
+    pub fn velocity(&self, speed: f64) -> Vector3<f64> {
+        self.path * speed
     }
 }
 
@@ -129,6 +179,64 @@ mod tests {
                 assert!(f.n3.dot(&bat.axis).abs() < 1e-15);
             }
         }
+    }
+
+    #[test]
+    fn a_swung_bat_moves_square_to_itself_in_its_tilted_plane() {
+        for (tilt, swing_angle, direction) in [
+            (0.5585, 0.1594, 0.0),
+            (0.5585, 0.35, -0.3),
+            (0.69, -0.2, 0.4),
+            (-0.4, 0.3, 0.1),
+            (0.3, 0.45, 0.2),
+        ] {
+            for hand in Hand::ALL {
+                let bat = BatFrame::swung(tilt, swing_angle, direction, hand);
+                assert!(orthonormal([bat.axis, bat.up, bat.forward]));
+                let path = bat.path;
+                // The velocity keeps the keys' meaning: ψ above the
+                // horizontal, heading φ; and it is square to the bat.
+                assert!((path.y - f64::sin(swing_angle)).abs() < 1e-15);
+                assert!((path.z.atan2(path.x) - direction).abs() < 1e-14);
+                assert!(path.dot(&bat.axis).abs() < 1e-15);
+                // The plane holding velocity and bat is tilted by the key,
+                // unless the swing rises more steeply than it (a level bat).
+                let normal = path.cross(&bat.axis).normalize();
+                let plane = normal.y.abs().acos();
+                let expected = tilt.abs().max(swing_angle.abs());
+                assert!((plane - expected).abs() < 1e-12, "{plane} {expected}");
+                // The barrel drops √(sin²T − sin²ψ), less than T once the bat
+                // rises or falls through the contact.
+                let drop = (tilt.sin().powi(2) - swing_angle.sin().powi(2))
+                    .max(0.0)
+                    .sqrt();
+                assert!((-bat.axis.y - drop.copysign(tilt)).abs() < 1e-15);
+            }
+        }
+    }
+
+    #[test]
+    fn a_level_plane_is_the_papers_bat_to_the_bit() {
+        for hand in Hand::ALL {
+            for (swing_angle, direction) in [(0.1594, 0.0), (-0.3, 0.25), (0.7, -0.5)] {
+                let bat = BatFrame::swung(0.0, swing_angle, direction, hand);
+                let level = BatFrame::new(0.0, direction, hand);
+                assert_eq!(
+                    (bat.axis, bat.up, bat.forward),
+                    (level.axis, level.up, level.forward)
+                );
+                let (sin, cos) = f64::sin_cos(swing_angle);
+                assert_eq!(
+                    bat.velocity(30.0),
+                    (level.forward * cos + Vector3::y() * sin) * 30.0
+                );
+            }
+        }
+        // At the bottom of a tilted arc the bat is `new`'s.
+        let bottom = BatFrame::swung(0.5, 0.0, 0.2, Hand::Right);
+        let new = BatFrame::new(0.5, 0.2, Hand::Right);
+        assert!((bottom.axis - new.axis).norm() < 1e-15);
+        assert_eq!(bottom.path, new.forward);
     }
 
     #[test]

@@ -133,10 +133,10 @@ impl Impact3d {
         let (ball, bat) = (scene.ball, scene.bat);
         // Eq. (1), square to the bat; the clamp only guards rounding.
         let normal_angle = (bat.undercut / scene.reach()).clamp(-1.0, 1.0).asin();
-        let bat_frame = BatFrame::new(bat.tilt, bat.direction, bat.hand);
+        let bat_frame = BatFrame::swung(bat.tilt, bat.swing_angle, bat.direction, bat.hand);
         let frame = ContactFrame::new(bat_frame, normal_angle, bat.hand);
         let ball_spin_before = Vector3::z() * scene.pitch.spin;
-        let bat_velocity_before = bat_frame.velocity(bat.speed, bat.swing_angle);
+        let bat_velocity_before = bat_frame.velocity(bat.speed);
         // Fig. 9's positive roll adds backspin: it turns about −n2.
         let bat_roll_before = -bat.spin;
 

@@ -342,7 +342,7 @@ pub const EXTENDED_KEYS: &[Key] = &[
         "bat.tilt",
         "τ_B",
         "rad",
-        "barrel below the hands at contact (0: the paper's level bat)",
+        "swing plane's tilt: barrel below the hands at the arc's bottom (0: the paper's level bat)",
         Bounds::closed(-FRAC_PI_3, FRAC_PI_3),
         "Measured barrels sit 25–35° below the hands in big-league swings and −29.6 ± 8.7° in elite softball (docs/swing-3d.md), and low and high pitches take them further; toward ±90° the bat stands upright, where \"above the axis\" (E) loses its meaning.",
         0.02,
