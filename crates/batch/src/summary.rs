@@ -213,11 +213,11 @@ impl Tally {
         }
         if !self.differences.is_empty() {
             let unit = shown.unit(Quantity::Distance);
+            let distance = self.distance_shown();
             let _ = write!(
                 line,
-                "; against {} ({} rows): median difference {:+.1} {}, median \
+                "; against {distance} ({} rows): median difference {:+.1} {}, median \
                  |difference| {:.1} {}",
-                preset::escape_cut(&self.distance_column, 40),
                 self.differences.len(),
                 unit.show(self.differences.median()),
                 unit.symbol,
@@ -230,12 +230,17 @@ impl Tally {
                 let code = preset::escape_cut(&setup.parks.parks[i].code, 20);
                 let _ = write!(
                     line,
-                    " (flown in {code}'s air, {} where each ball was hit)",
-                    preset::escape_cut(&self.distance_column, 40)
+                    " (flown in {code}'s air, {distance} where each ball was hit)"
                 );
             }
         }
         line
+    }
+
+    /// The file's name for the distance compared against, as the text
+    /// shows it.
+    fn distance_shown(&self) -> String {
+        preset::escape_cut(&self.distance_column, 40)
     }
 
     /// "40 home runs (events) the model calls short or foul at their park:
@@ -324,7 +329,7 @@ impl Tally {
             shown.csv_key("", Quantity::Distance),
         );
         let key = |name: &str| format!("{name}{unit}");
-        let distance = preset::escape_cut(&self.distance_column, 40);
+        let distance = self.distance_shown();
         let cell = |v: &Value, sign: bool| match v.as_f64() {
             Some(m) if sign => format!("{m:+.1}"),
             Some(m) => format!("{m:.1}"),
