@@ -140,7 +140,11 @@ pub(crate) fn fly_chunk(
         if !setup.one_flight {
             let own = &ready.scene.environment;
             let airs = scratch.airs.of(own, job.given, &setup.parks.parks);
-            if park_air::settles(&ready.scene) && !setup.all_parks {
+            let settles = park_air::settles(&ready.scene) && !setup.all_parks;
+            if settles && park_air::short_everywhere(&summary, own.air_density, airs, parks) {
+                // Short of every wall in every park's air: the row's own
+                // verdicts are every park's.
+            } else if settles {
                 pending.push(park_air::Pending {
                     scene: ready.scene,
                     launch_direction: ready.launch.direction,

@@ -156,6 +156,7 @@ pub(crate) fn settle(
                     settled(&judged, launched, fence, (change(flight), flight.slack))
                         .then_some(judged)
                 });
+                let by = by.or_else(|| between(row, park, fence));
                 match by {
                     Some(judged) => {
                         clearings[row.from + park] = judged;
@@ -265,9 +266,115 @@ fn fly_each(
     });
 }
 
+/// A park's verdict read between two of the row's flights, the nearest in
+/// density either side of the park's air, both judged there: the flight in
+/// the park's air lies between theirs, but for a second-order term
+/// ([`read_between`]). The verdict is one of theirs.
+fn between(row: &Pending, park: usize, fence: &Fence) -> Option<Clearing> {
+    let density = row.airs[park].density;
+    let judged = |flight: &&Reference| flight.flight.landed && flight.clearings[park].is_some();
+    let nearest = |side: std::cmp::Ordering| {
+        (row.flights.iter().filter(judged))
+            .filter(|flight| flight.density.total_cmp(&density) == side)
+            .min_by(|a, b| {
+                let away = |f: &Reference| (f.density - density).abs();
+                away(a).total_cmp(&away(b))
+            })
+    };
+    let pair = [
+        nearest(std::cmp::Ordering::Less)?,
+        nearest(std::cmp::Ordering::Greater)?,
+    ];
+    let clears = read_between(pair, park, (density, row.launch_direction), fence)?;
+    (pair.iter()).find_map(|flight| flight.clearings[park].filter(|c| c.clears() == clears))
+}
+
+/// Whether the row's flight in air of density `density` clears `fence`
+/// (the park `park` of its flights' clearings), read between `pair`, two
+/// flights in airs either side of it: `None` where the reading cannot say.
+///
+/// Between two airs, a flight's height at a wall, its range and its
+/// direction are the straight line between theirs, off by at most
+/// C·½(ρ − ρ₁)(ρ₂ − ρ)/ρ² times the wall's distance (times max(1, tan θ)),
+/// the range, or the hook, C measured as the first-order bounds were
+/// (docs/parks.md): a second-order term, some ten times smaller than the
+/// first-order bands across the parks' airs.
+fn read_between(
+    [a, b]: [&Reference; 2],
+    park: usize,
+    (density, launch_direction): (f64, f64),
+    fence: &Fence,
+) -> Option<bool> {
+    let (on_a, on_b) = (a.clearings[park]?, b.clearings[park]?);
+    let along = (density - a.density) / (b.density - a.density);
+    let between = |x: f64, y: f64| x + (y - x) * along;
+    let curvature = 0.5 * (density - a.density) * (b.density - density) / (density * density);
+    let slack = a.slack.max(b.slack);
+    let hook = [
+        on_a.direction,
+        on_b.direction,
+        a.flight.direction,
+        b.flight.direction,
+    ]
+    .iter()
+    .fold(0.0, |most: f64, d| most.max((d - launch_direction).abs()));
+    let turn = TURN_CURVATURE * curvature * hook + slack / fence.nearest();
+    let (from, to) = (
+        on_a.direction.min(on_b.direction),
+        on_a.direction.max(on_b.direction),
+    );
+    let window = Window::of(fence, from - turn, to + turn);
+    let Some(fair) = window.fair else {
+        // Foul in every direction the ball could take.
+        return Some(false);
+    };
+    let steepest = a
+        .flight
+        .landing_angle
+        .tan()
+        .abs()
+        .max(b.flight.landing_angle.tan().abs());
+    let slope = steepest.max(1.0);
+    match (on_a.height_at_fence, on_b.height_at_fence) {
+        (Some(over_a), Some(over_b)) => {
+            let height = between(over_a, over_b);
+            let band = HEIGHT_CURVATURE * curvature * fair.farthest * slope
+                + slack
+                + slope * (fair.farthest - fair.nearest);
+            if window.all_fair && height - band > fair.tallest {
+                Some(true)
+            } else {
+                (height + band < fair.lowest).then_some(false)
+            }
+        }
+        (None, None) => {
+            let ranges = (a.flight.range.abs(), b.flight.range.abs());
+            let reach = between(ranges.0, ranges.1)
+                + RANGE_CURVATURE * curvature * ranges.0.max(ranges.1)
+                + slack;
+            (reach < fair.nearest).then_some(false)
+        }
+        _ => None,
+    }
+}
+
+/// Read between two airs ([`read_between`]), a flight's height at a wall
+/// lies off the straight line by at most this times ½(ρ − ρ₁)(ρ₂ − ρ)/ρ²
+/// times the wall's distance and max(1, tan θ) (seen: 0.67 at most, 0.35
+/// in the median, walls at 100–130 m).
+const HEIGHT_CURVATURE: f64 = 1.6;
+
+/// Its range by at most this times that and the range (seen: 0.84 at
+/// most, 0.16 in the median, where it lands past 70 m).
+const RANGE_CURVATURE: f64 = 2.0;
+
+/// Its direction by at most this times that and the hook (seen: 0.76 at
+/// most where the hook is over 0.3°).
+const TURN_CURVATURE: f64 = 2.0;
+
 /// Rounds of flights to every fence before the parks left are flown each
 /// to its own fence.
-const REFERENCE_ROUNDS: usize = 2;
+const REFERENCE_ROUNDS: usize = 3;
 
 /// Whether `scene`'s flight depends on its air only through the density,
 /// its launch fixed whatever the air: then [`settled`] may answer for it.
@@ -275,6 +382,23 @@ pub(crate) fn settles(scene: &Scene) -> bool {
     let drag_without_reynolds = matches!(scene.drag, DragModel::Nathan | DragModel::Constant);
     let launch_given = scene.kind == SceneKind::BattedBall && scene.launch.is_complete();
     drag_without_reynolds && launch_given
+}
+
+/// Whether a flight (landed `range` m from the plate, in air of density
+/// `own`) comes down short of every wall of `parks` in any of `airs`:
+/// then its own verdict, short, is every park's, and no park need be
+/// settled one by one ([`settled`]'s first answer, for them all at once).
+pub(crate) fn short_everywhere(
+    flight: &FlightSummary,
+    own: f64,
+    airs: &[Air],
+    parks: &[&Fence],
+) -> bool {
+    let change = (airs.iter()).fold(0.0, |most: f64, air| {
+        most.max(density_change(own, air.density))
+    });
+    let nearest = (parks.iter()).fold(f64::INFINITY, |least, fence| least.min(fence.nearest()));
+    flight.landed && flight.range.abs() * (1.0 + RANGE_PER_DENSITY * change) < nearest
 }
 
 /// The relative change in density from `own` to `there` (kg/m³).
@@ -308,7 +432,16 @@ fn settled(
     let hook = (home.direction - launch_direction)
         .abs()
         .max((flight.direction - launch_direction).abs());
-    let turn = (TURN_PER_DENSITY * change * hook).max(LEAST_TURN);
+    // In another air, the hook's share of the turn (and no less than the
+    // least seen); in its own air, none. Either way, the slack's: a
+    // crossing known to `slack` is known in direction to slack over its
+    // distance, which is no less than the nearest wall's.
+    let air_turn = if change == 0.0 {
+        0.0
+    } else {
+        (TURN_PER_DENSITY * change * hook).max(LEAST_TURN)
+    };
+    let turn = air_turn + slack / fence.nearest();
     let window = Window::of(fence, home.direction - turn, home.direction + turn);
     let Some(fair) = window.fair else {
         // Foul in every direction the ball could take.
