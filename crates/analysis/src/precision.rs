@@ -35,6 +35,8 @@ pub enum Purpose {
     Aim,
     /// A flight of a batch row in another park's air, whose verdict there
     /// is read with a slack of 1 cm (`batch::park_air`): a tenth of it.
+    /// Also a direction solve's flights once they are near the bearing,
+    /// their landing read as known to 3 mm sideways (`savant`).
     Verdict,
     /// The reference for the benchmarks and tests: as tight as f64 allows.
     Reference,
