@@ -563,7 +563,8 @@ fn a_header_without_inputs_is_refused_and_long_values_are_read_whole() {
     assert!(out.is_empty(), "{out}");
     assert!(
         err.contains("line 1 (the header): no column is an input")
-            && err.contains("`launch_speed;launch_angle`"),
+            && err.contains("`launch_speed;launch_angle`")
+            && err.contains("--column NAME=COLUMN maps one"),
         "{err}"
     );
     // A key's value longer than an error's quote is parsed whole: 15 °C

@@ -230,7 +230,8 @@ impl Header {
         if !self.columns.iter().any(|c| !matches!(c, Column::Ignored)) {
             return Err(format!(
                 "{}: no column is an input (launch_speed, launch_angle, launch.*, or a key \
-                 of `homerun keys`); columns separated by commas? first column: `{}`",
+                 of `homerun keys`); columns separated by commas? first column: `{}`; \
+                 --column NAME=COLUMN maps one (--column launch_speed=EV)",
                 self.line,
                 escape_cut(self.names.first().map_or("", String::as_str), 80)
             ));
