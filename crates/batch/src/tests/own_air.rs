@@ -133,3 +133,19 @@ fn a_ball_on_the_top_of_a_wall_is_judged_as_it_is_alone() {
         .collect();
     assert_eq!(counted, wanted);
 }
+
+/// The bounds that settle parks were measured in still air: a row in a
+/// wind (which changes how much the density moves a flight: a 27 mph wind
+/// moved 23 verdicts of 40,000 fly balls past them) is flown in every
+/// park's air.
+#[test]
+fn a_row_in_a_wind_is_flown_in_every_parks_air() {
+    let preset = preset::load("fly-ball", None).unwrap();
+    let mut scene = preset.scene;
+    for (key, value) in [("launch.direction", "0.2"), ("launch.sidespin", "-50")] {
+        scene.set_text(key, value).unwrap();
+    }
+    assert!(park_air::settles(&scene));
+    scene.environment.wind = -12.0;
+    assert!(!park_air::settles(&scene));
+}
