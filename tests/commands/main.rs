@@ -11,6 +11,7 @@ mod cli;
 mod common;
 mod config_folder;
 mod fly;
+mod held_out;
 mod help;
 mod hit_batch;
 mod hit_json;
