@@ -4,6 +4,7 @@
 //! help and the version still print normally; a flight that does not land is
 //! never reported as a range; and every command's work is bounded.
 
+mod bat_heading;
 mod batch_on_a_terminal;
 mod calibrate;
 mod cli;
