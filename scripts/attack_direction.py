@@ -20,7 +20,9 @@ import subprocess
 import sys
 
 BINARY = "target/release/homerun"
-KEEP = "launch_angle,attack_direction,stand,p_throws,player_name,hc_x,hc_y"
+KEEP = ("launch_angle,attack_direction,stand,p_throws,player_name,hc_x,hc_y,"
+        "intercept_ball_minus_batter_pos_x_inches")
+INTERCEPT = [(0, 32), (32, 38), (38, 44), (44, 99)]
 BANDS = [(-90, -10), (-10, 10), (10, 25), (25, 50), (50, 91)]
 
 
@@ -49,8 +51,10 @@ def main(path):
         hand = 1 if r["stand"] == "R" else -1
         model = math.degrees(float(r["launch.direction"])) * hand
         real = spray(r) * hand
+        intercept = r["intercept_ball_minus_batter_pos_x_inches"]
+        intercept = float(intercept) if intercept not in ("", "NA") else None
         rows.append((float(r["launch_angle"]), model, real, float(r["attack_direction"]),
-                     r["player_name"], r["stand"], r["p_throws"]))
+                     r["player_name"], r["stand"], r["p_throws"], intercept))
     print(f"\n{len(rows)} solved rows with hit coordinates; degrees, + toward the batter's opposite field\n")
     print("| launch angle | rows | model's launch − spray, median | median \\|…\\| |")
     print("|---|---|---|---|")
@@ -65,7 +69,7 @@ def main(path):
     print("\n| batter | pitcher throws | rows | model − spray, median |")
     print("|---|---|---|---|")
     groups = {}
-    for _, m, s, _, name, stand, throws in rows:
+    for _, m, s, _, name, stand, throws, _ in rows:
         groups.setdefault((name, stand, throws), []).append(m - s)
     for (name, stand, throws), values in sorted(groups.items()):
         print(f"| {name} ({stand}) | {throws} | {len(values)} | {statistics.median(values):+.1f}° |")
@@ -76,6 +80,13 @@ def main(path):
                           ("model's launch direction", [x[1] for x in ground_to_fly])):
         intercept, slope = line(d, values)
         print(f"- {label}: {intercept:+.1f}° + {slope:.2f}·D")
+    print("\nLaunch angles −10° to 50°, by Statcast's intercept_ball_minus_batter_pos_x_inches:\n")
+    print("| intercept x (in) | rows | model − spray, median |")
+    print("|---|---|---|")
+    for low, high in INTERCEPT:
+        band = [m - s for a, m, s, *_, x in rows if -10 <= a < 50 and x is not None and low <= x < high]
+        if band:
+            print(f"| {low} to {high} | {len(band)} | {statistics.median(band):+.1f}° |")
 
 
 if __name__ == "__main__":
