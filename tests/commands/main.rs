@@ -4,6 +4,7 @@
 //! help and the version still print normally; a flight that does not land is
 //! never reported as a range; and every command's work is bounded.
 
+mod bat_heading;
 mod batch_on_a_terminal;
 mod calibrate;
 mod cli;
@@ -11,6 +12,7 @@ mod cli;
 mod common;
 mod config_folder;
 mod fly;
+mod held_out;
 mod help;
 mod hit_batch;
 mod hit_json;
