@@ -13,7 +13,7 @@ use crate::app::{AERO_FIGURES, App, FIGURES};
 use analysis::figures::curves::{
     Curve, axis_title, column_input, curves, marked_points, panels, x_column,
 };
-use analysis::figures::{Column, FigureData, shown, trimmed};
+use analysis::figures::{Column, FigureData, shown, stated, trimmed};
 use units::{Quantity, Unit};
 
 /// The curves of `data` the explorer draws (its main panel, as
@@ -128,9 +128,11 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     };
     // The paper's numbers beside ours, and the notes: each gets a row, and
     // rows to spare go to the first ones' further words.
+    // In the units shown, as the axes are (and as `x` writes them).
     let notes: Vec<Vec<Span>> = data
         .comparisons
         .iter()
+        .map(|c| stated::comparison(c, app.units))
         .map(|c| {
             // The numbers first, so that a narrow pane loses only words.
             vec![
@@ -149,7 +151,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .chain(
             data.notes
                 .iter()
-                .map(|n| vec![Span::styled(n.as_str(), app.theme.dim)]),
+                .map(|n| vec![Span::styled(stated::words(n, app.units), app.theme.dim)]),
         )
         .collect();
     let width = inner.width as usize;
