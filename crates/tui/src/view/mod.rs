@@ -79,7 +79,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
     // A batted ball has no swing to vary nor impact to step through.
     if let Some(r) = panes.heatmap {
         if app.is_swing() {
-            heatmap::draw(frame, r, app);
+            heatmap::draw(frame, r, &pane_views::Surface::of(app));
         } else {
             swing_only(
                 frame,
@@ -97,7 +97,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
         }
     }
     if let Some(r) = panes.figure {
-        figure::draw(frame, r, app);
+        figure::draw(frame, r, &pane_views::Figure::of(app));
     }
     if let Some(r) = panes.field {
         field::draw(frame, r, &pane_views::Field::of(app, r));

@@ -3,12 +3,13 @@
 //! built, changed and tested without an [`App`] (ratatui's demo2: a widget
 //! over a small view of the state), as the readout and the inputs are.
 
-use crate::app::{App, Pin};
+use crate::app::{App, FigureState, MarginMap, OptimumState, Pin, SurfaceState};
 use crate::layout::FieldMap;
 use crate::theme::Theme;
 use model::flight::FlightSummary;
 use model::impact::Collision;
 use model::park;
+use model::scene::Scene;
 use ratatui::layout::Rect;
 use units::{Quantity, Unit, UnitSystem};
 
@@ -43,7 +44,7 @@ macro_rules! in_units {
         }
     )*};
 }
-in_units!(Trajectory, Impact, Field);
+in_units!(Trajectory, Impact, Field, Surface, Figure);
 impl InUnits for super::readout_view::Readout<'_> {
     fn units(&self) -> UnitSystem {
         self.units
@@ -142,6 +143,82 @@ impl<'a> Field<'a> {
             fence: app.field_fence(),
             wind: (environment.wind, environment.wind_direction),
         }
+    }
+}
+
+/// The surface pane's view: the range over (E, ψ), or (`c`) the margin
+/// over the fence, with the optimum and the swing marked.
+#[derive(Clone, Debug)]
+pub struct Surface<'a> {
+    pub theme: &'a Theme,
+    pub units: UnitSystem,
+    /// The range surface so far, and the inputs' generation: older is stale.
+    pub surface: Option<&'a SurfaceState>,
+    pub generation: u64,
+    /// The preset's fence distance (m): the contour drawn.
+    pub fence_distance: Option<f64>,
+    pub optimum: Option<OptimumState>,
+    /// The swing's (E, ψ), in m and rad.
+    pub swing: (f64, f64),
+    /// The margin map, when it is the one shown, and where it is judged
+    /// ("the fence" or a park's code).
+    pub margin: Option<(&'a MarginMap, String)>,
+}
+
+impl<'a> Surface<'a> {
+    pub fn of(app: &'a App) -> Surface<'a> {
+        Surface {
+            theme: &app.theme,
+            units: app.units,
+            surface: app.surface.as_ref(),
+            generation: app.generation,
+            fence_distance: app.fence.map(|f| f.distance),
+            optimum: app.optimum,
+            swing: (app.scene.bat.undercut, app.scene.bat.swing_angle),
+            margin: app
+                .shows_margin()
+                .then(|| (&app.margin, app.margin_place())),
+        }
+    }
+}
+
+/// The figures pane's view: the paper's figure chosen (`f` `F`), as far as
+/// it is computed, and the panel shown (`v`).
+#[derive(Clone, Copy, Debug)]
+pub struct Figure<'a> {
+    pub theme: &'a Theme,
+    pub units: UnitSystem,
+    /// The figure's number, and its table once computed for `generation`
+    /// (older is being recomputed).
+    pub number: u32,
+    pub figure: Option<&'a FigureState>,
+    pub generation: u64,
+    /// The panel drawn first (`v`), counted over the figure's panels.
+    pub panel: usize,
+    /// The scene, for the current input's value on the x axis.
+    pub scene: &'a Scene,
+    /// Whether the scene is a swing: a batted ball has the aero figures only.
+    pub swing: bool,
+}
+
+impl<'a> Figure<'a> {
+    pub fn of(app: &'a App) -> Figure<'a> {
+        Figure {
+            theme: &app.theme,
+            units: app.units,
+            number: app.figure_number,
+            figure: app.figure.as_ref(),
+            generation: app.figure_generation,
+            panel: app.figure_panel,
+            scene: &app.scene,
+            swing: app.is_swing(),
+        }
+    }
+
+    /// Whether the figure can be drawn for the scene
+    /// ([`App::figure_applies`]).
+    pub fn applies(&self) -> bool {
+        self.swing || crate::app::AERO_FIGURES.contains(&self.number)
     }
 }
 
@@ -288,5 +365,89 @@ mod tests {
         view.wall = Some(&wall);
         let walled = screen(60, 24, |f| super::super::field::draw(f, pane, &view));
         assert!(walled.contains("wall") && walled.contains("ft"), "{walled}");
+    }
+
+    #[test]
+    fn the_surface_draws_from_its_view_alone() {
+        let theme = Theme::from(ColorMode::Indexed);
+        let mut view = Surface {
+            theme: &theme,
+            units: UnitSystem::Si,
+            surface: None,
+            generation: 0,
+            fence_distance: Some(121.92),
+            optimum: None,
+            swing: (0.0265, 0.1594),
+            margin: None,
+        };
+        let draw =
+            |view: &Surface| screen(60, 20, |f| super::super::heatmap::draw(f, f.area(), view));
+        let si = draw(&view);
+        assert!(
+            si.contains("Range over (E, ψ)") && si.contains("122 m (fence)"),
+            "{si}"
+        );
+        assert!(
+            si.contains("computing the surface…") && si.contains("E (m)"),
+            "{si}"
+        );
+        view.units = UnitSystem::Imperial;
+        view.fence_distance = None;
+        let imperial = draw(&view);
+        assert!(
+            imperial.contains("E (in)") && !imperial.contains("fence"),
+            "{imperial}"
+        );
+        // The margin map in its place, judged at a park.
+        let margin = MarginMap::default();
+        view.margin = Some((&margin, "COL".to_owned()));
+        let margin = draw(&view);
+        assert!(
+            margin.contains("COL") && margin.contains("computing the margin…"),
+            "{margin}"
+        );
+    }
+
+    #[test]
+    fn a_figure_draws_from_its_view_alone() {
+        let theme = Theme::from(ColorMode::Indexed);
+        let scene = preset::load("fastball", None).unwrap().scene;
+        let analysis::figures::Figure::Table(data) =
+            analysis::figures::figure_data(5, &scene, "fastball").unwrap()
+        else {
+            panic!("Fig. 5 is a table");
+        };
+        let state = FigureState {
+            number: 5,
+            data: Ok(data),
+            generation: 1,
+            elapsed: std::time::Duration::ZERO,
+        };
+        let mut view = Figure {
+            theme: &theme,
+            units: UnitSystem::Imperial,
+            number: 5,
+            figure: Some(&state),
+            generation: 1,
+            panel: 0,
+            scene: &scene,
+            swing: true,
+        };
+        let draw =
+            |view: &Figure| screen(100, 40, |f| super::super::figure::draw(f, f.area(), view));
+        let shown = draw(&view);
+        assert!(shown.contains("Fig. 5 (3/11, f F)"), "{shown}");
+        // The paper's 0.064 m beside ours, in inches as the axis is.
+        assert!(
+            shown.contains("paper 2.52 · ours") && shown.contains("E (in)"),
+            "{shown}"
+        );
+        assert!(!shown.contains("computing"), "{shown}");
+        // Newer inputs: the figure is being recomputed.
+        view.generation = 2;
+        assert!(draw(&view).contains("computing…"));
+        // A batted ball has no impact to draw.
+        view.swing = false;
+        assert!(draw(&view).contains("Fig. 5 needs a swing"));
     }
 }
