@@ -11,8 +11,9 @@ use units::{Quantity, Unit, UnitSystem};
 const PER_SPEED: &str = "per 1 m/s";
 
 /// `c` in the units shown: its numbers, its unit and the numbers its words
-/// quote. The paper's number is rounded to one more digit than it gave
-/// (5 m per 1 m/s is 7.3 ft per 1 mph); ours is left whole.
+/// quote. The paper's number is rounded to the digits it gave, two at
+/// least (5 m per 1 m/s is 7.3 ft per 1 mph, 44.34 m/s 99.19 mph); ours
+/// is left whole.
 pub fn comparison(c: &Comparison, shown: UnitSystem) -> Comparison {
     if shown == UnitSystem::Si {
         return c.clone();
@@ -45,8 +46,18 @@ pub fn comparison(c: &Comparison, shown: UnitSystem) -> Comparison {
     Comparison {
         what: words(&what, shown),
         unit: unit.symbol,
-        paper: significant(show(c.paper), stated_digits(c.paper) + 1),
+        paper: significant(show(c.paper), stated_digits(c.paper).max(2)),
         ours: show(c.ours),
+    }
+}
+
+/// `number` with `unit` as every pane writes it: a degree on its number
+/// ("25.7°"), another unit a space away, none where there is none (C_D).
+pub fn with_unit(number: &str, unit: &str) -> String {
+    match unit {
+        "" => number.to_owned(),
+        "°" => format!("{number}°"),
+        _ => format!("{number} {unit}"),
     }
 }
 
@@ -278,16 +289,19 @@ mod tests {
         assert_eq!(comparison(&halts, IMPERIAL).unit, "in");
         let ab = stated("undercut from A to B", "mm", 6.5, 6.0);
         let ab = comparison(&ab, IMPERIAL);
-        assert_eq!((ab.unit, ab.paper), ("in", 0.256));
+        assert_eq!((ab.unit, ab.paper), ("in", 0.26));
         let less = stated("range of A less range of B", "m", 7.3, 7.0);
         assert_eq!(comparison(&less, IMPERIAL).unit, "ft");
         let zeta = stated("ζ at E = 0.040 m, μ = 0.35–0.5", "rad", 0.731, 0.73);
         let zeta = comparison(&zeta, IMPERIAL);
         assert_eq!(zeta.what, "ζ at E = 1.57 in, μ = 0.35–0.5");
-        assert_eq!((zeta.unit, zeta.paper), ("°", 41.88));
+        assert_eq!((zeta.unit, zeta.paper), ("°", 41.9));
         // A difference the paper gives in degrees stays so.
         let degrees = stated("their difference", "°", 8.6, 8.0);
         assert_eq!(comparison(&degrees, IMPERIAL), degrees);
+        assert_eq!(with_unit("25.7", "°"), "25.7°");
+        assert_eq!(with_unit("99.2", "mph"), "99.2 mph");
+        assert_eq!(with_unit("0.15", ""), "0.15");
     }
 
     #[test]

@@ -35,10 +35,9 @@ fn sections(app: &App) -> Vec<(&'static str, Vec<String>)> {
             .map(|c| stated::comparison(c, app.units));
         words.extend(comparisons.map(|c| {
             format!(
-                "paper {} · ours {} {}: {}",
+                "paper {} · ours {}: {}",
                 trimmed(c.paper),
-                super::figure::sig(c.ours, 3),
-                c.unit,
+                stated::with_unit(&super::figure::sig(c.ours, 3), c.unit),
                 c.what
             )
         }));

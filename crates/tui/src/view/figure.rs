@@ -135,7 +135,10 @@ pub fn draw(frame: &mut Frame, area: Rect, view: &Figure) {
             // The numbers first, so that a narrow pane loses only words.
             vec![
                 Span::styled(format!("paper {}", trimmed(c.paper)), view.theme.dim),
-                Span::raw(format!(" · ours {} {}", sig(c.ours, 3), c.unit)),
+                Span::raw(format!(
+                    " · ours {}",
+                    stated::with_unit(&sig(c.ours, 3), c.unit)
+                )),
                 // A number's groups ("208 000") wrap together.
                 Span::styled(
                     format!(

@@ -439,7 +439,7 @@ mod tests {
         assert!(shown.contains("Fig. 5 (3/11, f F)"), "{shown}");
         // The paper's 0.064 m beside ours, in inches as the axis is.
         assert!(
-            shown.contains("paper 2.52 · ours") && shown.contains("E (in)"),
+            shown.contains("paper 2.5 · ours") && shown.contains("E (in)"),
             "{shown}"
         );
         assert!(!shown.contains("computing"), "{shown}");
