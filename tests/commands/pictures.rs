@@ -504,6 +504,11 @@ fn svgs_follow_units_imperial_on_every_axis_and_label() {
         assert!(figure.contains(label), "{label}: {figure}");
     }
     assert!(!figure.contains("E (m)"), "{figure}");
+    // The paper's numbers beside ours in the same units (issue 36): its
+    // 0.064 m is 2.5 in; its own words, quoted, as printed.
+    let lines = figure.replace('\n', " ");
+    assert!(lines.contains("paper 2.5 · ours"), "{figure}");
+    assert!(lines.contains("a misprint for \"0.064 m\""), "{figure}");
     let surface = texts(&imperial_svg(&["surface", "--grid", "6x6"]));
     for label in ["undercut E (in)", "swing angle ψ (°)", "range (ft)", " ft"] {
         assert!(surface.contains(label), "{label}: {surface}");

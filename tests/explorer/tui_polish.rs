@@ -38,7 +38,8 @@ fn figure_captions_and_notes_are_never_cut_mid_word() {
             }
             let known = |word: &str| {
                 words.iter().any(|w| w == word)
-                    || word.parse::<f64>().is_ok()
+                    // A number, or one in degrees ("6.79°", glued as everywhere).
+                    || word.trim_end_matches('°').parse::<f64>().is_ok()
                     || ["paper", "ours", "·"].contains(&word)
             };
             let pane = layout(app.size, app.tab, true).figure.unwrap();

@@ -286,3 +286,74 @@ fn each_quantity_has_one_unit_on_every_pane() {
         "{words}"
     );
 }
+
+/// Issue 36, item 2: under baseball units Fig. 8's notes, and the paper's
+/// numbers beside ours, are in ft and mph as its axes are; only the
+/// paper's own words, in quotes, keep its metres. Seen at 80×24 and
+/// 200×60, and whole under `i`.
+#[test]
+fn figure_notes_are_in_the_units_shown() {
+    use homerun::tui::layout::{Tab, layout};
+    for (w, h) in [(80, 24), (200, 60)] {
+        let mut app = app(w, h, None);
+        key(&mut app, KeyCode::Char('u'));
+        key(&mut app, KeyCode::Char('4'));
+        settle(&mut app);
+        assert_eq!((app.tab, app.figure_number), (Tab::Figures, 8));
+        insta::assert_snapshot!(format!("figure8_imperial_{w}x{h}"), screen(&app));
+        let figure = layout(app.size, app.tab, true).figure.unwrap();
+        let pane = rows_in(&app, figure).join(" ");
+        assert!(pane.contains("paper 7.3 · ours"), "{pane}");
+        // No m/s but in the paper's quoted words.
+        let unquoted: String = pane.split('"').step_by(2).collect();
+        assert!(!unquoted.contains("m/s"), "{pane}");
+        key(&mut app, KeyCode::Char('i'));
+        // The screen's rows are quoted: their words joined across rows.
+        let words = screen(&app)
+            .lines()
+            .map(|l| l.trim_matches('"'))
+            .flat_map(|l| l.split('│'))
+            .collect::<Vec<_>>()
+            .join(" ")
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert!(
+            words.contains("ft: range gained per 1 mph of bat speed near 67 mph"),
+            "{words}"
+        );
+        assert!(words.contains("paper 94 · ours"), "{words}");
+        assert!(
+            words.contains("ψ_opt falls to 0 at 94 mph and below it after"),
+            "{words}"
+        );
+        // The paper's words as it printed them, in quotes.
+        assert!(
+            words.contains("\"increasing the bat speed by only 1 m/s"),
+            "{words}"
+        );
+    }
+}
+
+/// Issue 36, item 2: a batted ball's exit speed and backspin, carried
+/// over from the swing (`b`), show in the inputs as the readout shows them
+/// (44.30 m/s, 191.8 rad/s), not to digits no pane shows; typed, as typed.
+#[test]
+fn the_exit_speed_shows_the_readouts_digits_until_typed() {
+    let mut app = app(80, 24, None);
+    key(&mut app, KeyCode::Char('b'));
+    settle(&mut app);
+    let shown = screen(&app);
+    assert!(
+        shown.contains("exit speed V̂_bf   44.30 m/s") && shown.contains("launch   44.30 m/s"),
+        "{shown}"
+    );
+    assert!(shown.contains("backspin ω_bf     191.8 rad/s"), "{shown}");
+    assert!(!shown.contains("44.2991"), "{shown}");
+    set_and_settle(&mut app, "launch.speed", "44.2991");
+    assert!(
+        screen(&app).contains("exit speed V̂_bf 44.2991 m/s"),
+        "{}",
+        screen(&app)
+    );
+}

@@ -17,7 +17,7 @@ use super::{
 use analysis::figures::curves::{
     self, axis_title, current_value, marked_points, panels, x_column, y_title,
 };
-use analysis::figures::{Figure, FigureData, trimmed};
+use analysis::figures::{Figure, FigureData, stated, trimmed};
 use model::scene::Scene;
 
 /// A figure's picture: Fig. 7 as the range surface, the others as line
@@ -80,11 +80,10 @@ fn notes_unwrapped(data: &FigureData) -> Vec<String> {
         .iter()
         .map(|c| {
             format!(
-                "{}: paper {} · ours {} {}",
+                "{}: paper {} · ours {}",
                 c.what,
                 trimmed(c.paper),
-                sig(c.ours, 4),
-                c.unit
+                stated::with_unit(&sig(c.ours, 4), c.unit)
             )
         })
         .collect();

@@ -56,6 +56,11 @@ pub fn shown_value(key: &Key, si: f64, system: UnitSystem) -> String {
         // 1.776e-5 m²/s), or as typed where that was finer.
         (AIR_DENSITY, _) => typed().unwrap_or_else(|| trim(format!("{value:.3}"))),
         (VISCOSITY, _) => scientific(value),
+        // A batted ball's exit speed and spin as the readout's launch line
+        // shows them (44.30 m/s, 191.8 rad/s; 99.09 mph, 1832 rpm), or as
+        // typed: the swing's launch otherwise keeps digits nowhere shown.
+        (LAUNCH_SPEED, _) => typed().unwrap_or_else(|| readout_digits(value, unit, 2)),
+        (LAUNCH_SPIN, _) => typed().unwrap_or_else(|| readout_digits(value, unit, 1)),
         // An angle or a size as the readout shows it (0.4887 rad, 9.13°,
         // 1.043 in), or finer where the step is.
         (_, Quantity::Angle | Quantity::Size) => typed().unwrap_or_else(|| {
@@ -80,6 +85,19 @@ fn scientific(value: f64) -> String {
         .unwrap_or_else(|| format!("{value:.3e}"))
 }
 
+/// `value` (in `unit`) to the readout's digits for `si_decimals` in SI.
+fn readout_digits(value: f64, unit: units::Unit, si_decimals: usize) -> String {
+    let decimals = unit.decimals(si_decimals);
+    let text = format!("{value:.decimals$}");
+    if text == format!("-{:.decimals$}", 0.0) {
+        text[1..].to_owned()
+    } else {
+        text
+    }
+}
+
+const LAUNCH_SPEED: &str = "launch.speed";
+const LAUNCH_SPIN: &str = "launch.spin";
 const AIR_DENSITY: &str = "environment.air_density";
 const VISCOSITY: &str = "environment.kinematic_viscosity";
 
@@ -274,6 +292,21 @@ mod tests {
             value_and_unit(speed, 42.0, imperial),
             ("94".to_owned(), "mph")
         );
+        // A batted ball's launch, not typed, as the readout's launch line
+        // has it; typed, as typed (issue 36).
+        for (system, speed, spin) in [
+            (UnitSystem::Si, "44.30", "191.8"),
+            (imperial, "99.09", "1832"),
+        ] {
+            let launch = |name: &str, si: f64| shown_value(Scene::key(name).unwrap(), si, system);
+            assert_eq!(launch("launch.speed", 44.299_13), speed);
+            assert_eq!(launch("launch.spin", 191.834_6), spin);
+        }
+        let exit = Scene::key("launch.speed").unwrap();
+        for typed in ["44.2991", "44.3", "45"] {
+            let si = read_value(exit, typed, UnitSystem::Si).unwrap();
+            assert_eq!(shown_value(exit, si, UnitSystem::Si), typed);
+        }
         // SI as it always was: a thousandth of the step.
         assert_eq!(
             shown_value(Scene::key("bat.undercut").unwrap(), 0.0265, UnitSystem::Si),

@@ -76,7 +76,7 @@ pub(super) fn impact_figure(number: u32, scene: &Scene) -> FigureData {
             comparisons.push(compare(paper::THOUSAND_SPIN_UNDERCUT, e));
         }
         notes.push(
-            "The paper prints the μ = 0.35 threshold as \"E = 0.64\", a misprint for 0.064 m."
+            "The paper prints the μ = 0.35 threshold as \"E = 0.64\", a misprint for \"0.064 m\"."
                 .to_owned(),
         );
     } else {

@@ -11,6 +11,7 @@ mod flight;
 mod impact;
 mod optimum;
 pub mod shown;
+pub mod stated;
 
 use crate::optimum::Optimum;
 use crate::paper::{FIGURES, Stated};

@@ -1,8 +1,8 @@
 //! A figure's table, conditions and title in the units shown (the command
 //! line's `--units`, the explorer's `u`). The figures are computed in SI
-//! ([`super`]); this only rewrites what text, CSV and SVG show. Marks,
-//! notes and the paper's stated numbers keep the paper's SI words, each
-//! with its unit.
+//! ([`super`]); this only rewrites what text, CSV and SVG show: the
+//! paper's stated numbers and the notes too ([`super::stated`]), but for
+//! the paper's words in quotes.
 
 use super::{self as figures, Cell, FigureData};
 use model::keys::all_keys;
@@ -61,6 +61,13 @@ pub fn converted(mut data: FigureData, shown: UnitSystem) -> FigureData {
         }
     }
     data.title = title(&data.title, shown);
+    // The paper's numbers beside ours, and the notes, in the same units.
+    for c in &mut data.comparisons {
+        *c = super::stated::comparison(c, shown);
+    }
+    for note in &mut data.notes {
+        *note = super::stated::words(note, shown);
+    }
     data
 }
 

@@ -11,7 +11,7 @@ use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
 use super::inputs::about_selected;
 use crate::app::App;
 use crate::layout::Tab;
-use analysis::figures::trimmed;
+use analysis::figures::{stated, trimmed};
 use preset::escape_text;
 
 /// The sections shown, each a heading and its paragraphs.
@@ -29,16 +29,19 @@ fn sections(app: &App) -> Vec<(&'static str, Vec<String>)> {
     let figure = app.figure.as_ref().and_then(|f| f.data.as_ref().ok());
     if let (Tab::Figures, Some(data)) = (app.tab, figure) {
         let mut words = vec![analysis::figures::shown::title(&data.title, app.units)];
-        words.extend(data.comparisons.iter().map(|c| {
+        let comparisons = data
+            .comparisons
+            .iter()
+            .map(|c| stated::comparison(c, app.units));
+        words.extend(comparisons.map(|c| {
             format!(
-                "paper {} · ours {} {}: {}",
+                "paper {} · ours {}: {}",
                 trimmed(c.paper),
-                super::figure::sig(c.ours, 3),
-                c.unit,
+                stated::with_unit(&super::figure::sig(c.ours, 3), c.unit),
                 c.what
             )
         }));
-        words.extend(data.notes.iter().cloned());
+        words.extend(data.notes.iter().map(|n| stated::words(n, app.units)));
         sections.push(("Figure", words));
     }
     // The readout as on a screen with room for all of it.

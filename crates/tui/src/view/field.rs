@@ -13,21 +13,22 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Block, Chart, Dataset};
 
 use super::chart::{self, Ticks};
-use crate::app::App;
+use super::pane_views::Field;
+use super::pane_views::InUnits;
 use crate::layout::FieldMap;
 use units::Quantity;
 
 /// Points along an arc, per radian: smooth in braille at any pane size.
 const ARC_POINTS: usize = 120;
 
-pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let map = app.field_map(area);
-    let k = app.distance(1.0).0;
+pub fn draw(frame: &mut Frame, area: Rect, view: &Field) {
+    let map = view.map;
+    let k = view.distance(1.0).0;
     // Drawn as (z, x): across the page, then up it.
     let across =
         |track: &[(f64, f64)]| -> Vec<(f64, f64)> { track.iter().map(|&(x, z)| (z, x)).collect() };
-    let (now, best) = (across(&app.ground), across(&app.optimal_ground));
-    let pinned = app.pin.as_ref().map_or(Vec::new(), |p| across(&p.ground));
+    let (now, best) = (across(view.ground), across(view.optimal_ground));
+    let pinned = view.pin_ground.map_or(Vec::new(), across);
     let reach = map.x[1].max(map.z[1] * 2f64.sqrt());
     let foul_lines: Vec<Vec<(f64, f64)>> = [-1.0, 1.0]
         .iter()
@@ -43,50 +44,52 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .collect();
     // A park's wall in runs of one height band each; the preset's fence,
     // the same everywhere, in the fence's colour.
-    let walls = app.chosen_park().map(|p| wall_runs(&p.fence));
-    let fence = app
-        .field_fence()
+    let walls = view.wall.map(wall_runs);
+    let fence = view
+        .fence
+        .as_ref()
         .filter(|_| walls.is_none())
         .map(|f| arc(|d| f.distance_at(d), FRAC_PI_4));
-    let flight = &app.flown.flight;
+    let flight = view.flight;
     let landing = match now.last() {
         Some(&end) if flight.landed => vec![end],
         _ => Vec::new(),
     };
-    let wind = wind_arrow(app, &map);
+    let wind = wind_arrow(view, &map);
 
-    let (now_mark, best_mark, pin_mark) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
+    let (now_mark, best_mark, pin_mark) =
+        (view.theme.path(0), view.theme.path(1), view.theme.path(2));
     let mut datasets: Vec<Dataset> = Vec::new();
     for line in &foul_lines {
-        datasets.push(chart::line(app.theme.dim, line));
+        datasets.push(chart::line(view.theme.dim, line));
     }
     for (_, ring) in &ring_arcs {
-        datasets.push(chart::line(app.theme.dim, ring));
+        datasets.push(chart::line(view.theme.dim, ring));
     }
     if let Some(fence) = &fence {
-        datasets.push(chart::line(app.theme.fence, fence));
+        datasets.push(chart::line(view.theme.fence, fence));
     }
     for (band, run) in walls.iter().flatten() {
         datasets.push(chart::curve(
-            app.theme.wall_marker(*band),
-            app.theme.walls[*band],
+            view.theme.wall_marker(*band),
+            view.theme.walls[*band],
             run,
         ));
     }
     if let Some((arrow, _, _)) = &wind {
-        datasets.push(chart::line(app.theme.apex, arrow));
+        datasets.push(chart::line(view.theme.apex, arrow));
     }
     if !best.is_empty() {
-        datasets.push(chart::curve(best_mark.0, app.theme.optimal, &best));
+        datasets.push(chart::curve(best_mark.0, view.theme.optimal, &best));
     }
     if !pinned.is_empty() {
-        datasets.push(chart::curve(pin_mark.0, app.theme.pinned, &pinned));
+        datasets.push(chart::curve(pin_mark.0, view.theme.pinned, &pinned));
     }
-    datasets.push(chart::curve(now_mark.0, app.theme.swing, &now));
-    datasets.push(chart::points(Marker::Block, app.theme.landing, &landing));
+    datasets.push(chart::curve(now_mark.0, view.theme.swing, &now));
+    datasets.push(chart::points(Marker::Block, view.theme.landing, &landing));
 
     let block = titled_block(
-        app,
+        view,
         area,
         (!best.is_empty(), !pinned.is_empty()),
         walls.is_some(),
@@ -99,49 +102,50 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .legend_position(None);
     frame.render_widget(chart, map.plot);
 
-    write_labels(frame, (&map, k), app, &ring_arcs, wind.as_ref());
+    write_labels(frame, (&map, k), view, &ring_arcs, wind.as_ref());
 }
 
 /// The pane's border with its title ("Field 134.70 m, centre field"), the
 /// paths' legend where it fits (`shown`: whether best and the pin are
 /// drawn) and, under a park's wall, the wall's key.
-fn titled_block(app: &App, area: Rect, shown: (bool, bool), walls: bool) -> Block<'static> {
-    let (now_mark, best_mark, pin_mark) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
+fn titled_block(view: &Field, area: Rect, shown: (bool, bool), walls: bool) -> Block<'static> {
+    let (now_mark, best_mark, pin_mark) =
+        (view.theme.path(0), view.theme.path(1), view.theme.path(2));
     let mut legend = vec![Span::styled(
         format!("{} now ", now_mark.1),
-        app.theme.swing,
+        view.theme.swing,
     )];
     if shown.0 {
         legend.push(Span::styled(
             format!("{} best ", best_mark.1),
-            app.theme.optimal,
+            view.theme.optimal,
         ));
     }
     if shown.1 {
         legend.push(Span::styled(
             format!("{} pin ", pin_mark.1),
-            app.theme.pinned,
+            view.theme.pinned,
         ));
     }
     let legend = Line::from(legend);
-    let flight = &app.flown.flight;
+    let flight = view.flight;
     let numbers = if flight.landed {
         format!(
             "{}, {} ",
-            app.range_text(flight.range),
-            crate::shown::direction_text(app.units, flight.direction)
+            view.range_text(flight.range),
+            crate::shown::direction_text(view.units, flight.direction)
         )
     } else {
         "does not land ".to_owned()
     };
     let title = format!(" Field {numbers}");
     let room = area.width.saturating_sub(2) as usize;
-    let mut block = Block::bordered().title(Span::styled(title.clone(), app.theme.title));
+    let mut block = Block::bordered().title(Span::styled(title.clone(), view.theme.title));
     if title.chars().count() + legend.width() <= room {
         block = block.title_top(legend.right_aligned());
     }
     if walls {
-        let key = wall_legend(app);
+        let key = wall_legend(view);
         if key.width() <= room {
             block = block.title_bottom(key);
         }
@@ -154,7 +158,7 @@ fn titled_block(app: &App, area: Rect, shown: (bool, bool), walls: bool) -> Bloc
 fn write_labels(
     frame: &mut Frame,
     (map, k): (&FieldMap, f64),
-    app: &App,
+    view: &Field,
     ring_arcs: &[(f64, Vec<(f64, f64)>)],
     wind: Option<&WindArrow>,
 ) {
@@ -178,17 +182,17 @@ fn write_labels(
     };
     // The nearest ring says the unit ("100 ft"), as an axis would, where
     // it fits; the others their number alone.
-    let unit = app.unit(Quantity::Distance).symbol;
+    let unit = view.unit(Quantity::Distance).symbol;
     for (n, (r, _)) in ring_arcs.iter().enumerate() {
         let d = r / k;
         let at = (-d * FRAC_PI_4.sin(), d * FRAC_PI_4.cos());
         let bare = format!("{r:.0}");
-        if !(n == 0 && write(at, &format!("{bare} {unit}"), app.theme.dim, true)) {
-            write(at, &bare, app.theme.dim, true);
+        if !(n == 0 && write(at, &format!("{bare} {unit}"), view.theme.dim, true)) {
+            write(at, &bare, view.theme.dim, true);
         }
     }
     if let Some((_, tail, label)) = wind {
-        write(*tail, label, app.theme.apex, false);
+        write(*tail, label, view.theme.apex, false);
     }
 }
 
@@ -251,20 +255,20 @@ fn wall_runs(fence: &model::park::Fence) -> Vec<(usize, Vec<(f64, f64)>)> {
 
 /// "wall ≤8 ≤12 <20 ≥20 ft", each band in its own colour and glyph, in
 /// the units shown (metres: ≤2.4 ≤3.7 <6.1 ≥6.1 m).
-fn wall_legend(app: &App) -> Line<'static> {
-    let unit = app.unit(Quantity::Distance);
+fn wall_legend(view: &Field) -> Line<'static> {
+    let unit = view.unit(Quantity::Distance);
     let shown = |feet: f64| {
         let v = unit.show(feet * units::METRES_PER_FOOT);
         analysis::figures::trimmed((v * 10.0).round() / 10.0)
     };
     let [low, mid, high] = WALL_BANDS_FT.map(shown);
-    let glyph = |k: usize| match app.theme.wall_marker(k) {
+    let glyph = |k: usize| match view.theme.wall_marker(k) {
         Marker::Block => "█",
         Marker::HalfBlock => "▀",
         Marker::Bar => "▄",
         _ => "━",
     };
-    let mut spans = vec![Span::styled(" wall ", app.theme.dim)];
+    let mut spans = vec![Span::styled(" wall ", view.theme.dim)];
     for (k, text) in [
         format!("≤{low} "),
         format!("≤{mid} "),
@@ -276,7 +280,7 @@ fn wall_legend(app: &App) -> Line<'static> {
     {
         spans.push(Span::styled(
             format!("{}{text}", glyph(k)),
-            app.theme.walls[k],
+            view.theme.walls[k],
         ));
     }
     spans.push(Span::raw(" "));
@@ -290,12 +294,12 @@ type WindArrow = (Vec<(f64, f64)>, (f64, f64), String);
 /// blows, its length growing with its speed (a quarter of the view's reach
 /// at 15 m/s and beyond), with its speed in the unit shown under it;
 /// `None` in calm air.
-fn wind_arrow(app: &App, map: &FieldMap) -> Option<WindArrow> {
-    let speed = app.scene.environment.wind;
+fn wind_arrow(view: &Field, map: &FieldMap) -> Option<WindArrow> {
+    let (speed, direction) = view.wind;
     if speed == 0.0 || !speed.is_finite() {
         return None;
     }
-    let toward = app.scene.environment.wind_direction
+    let toward = direction
         + if speed < 0.0 {
             std::f64::consts::PI
         } else {
@@ -325,7 +329,7 @@ fn wind_arrow(app: &App, map: &FieldMap) -> Option<WindArrow> {
         arrow.iter().map(|p| p.0).fold(f64::INFINITY, f64::min),
         arrow.iter().map(|p| p.1).fold(f64::INFINITY, f64::min) - row,
     );
-    let unit = app.unit(Quantity::Speed);
+    let unit = view.unit(Quantity::Speed);
     let label = format!("wind {:.0} {}", unit.show(speed.abs()), unit.symbol);
     Some((arrow, under, label))
 }

@@ -8,12 +8,13 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
+use super::pane_views::Figure;
 use super::{figure_panels, words};
-use crate::app::{AERO_FIGURES, App, FIGURES};
+use crate::app::{AERO_FIGURES, FIGURES};
 use analysis::figures::curves::{
     Curve, axis_title, column_input, curves, marked_points, panels, x_column,
 };
-use analysis::figures::{Column, FigureData, shown, trimmed};
+use analysis::figures::{Column, FigureData, shown, stated, trimmed};
 use units::{Quantity, Unit};
 
 /// The curves of `data` the explorer draws (its main panel, as
@@ -36,7 +37,7 @@ pub fn chart_marks(data: &FigureData) -> Vec<(f64, f64)> {
 /// swept input's, else what its heading's SI unit measures (a range in m
 /// is a distance, ω in rad/s a spin). Dimensionless columns (Re, S, C_D)
 /// and times stay as they are.
-pub(super) fn column_unit(app: &App, column: &Column) -> (Unit, String) {
+pub(super) fn column_unit(view: &Figure, column: &Column) -> (Unit, String) {
     let title = axis_title(&column.head);
     let si = title
         .rsplit_once('(')
@@ -54,7 +55,7 @@ pub(super) fn column_unit(app: &App, column: &Column) -> (Unit, String) {
             _ => Quantity::Unchanged,
         },
     };
-    let unit = quantity.unit(app.units, "");
+    let unit = quantity.unit(view.units, "");
     if unit.is_identity() {
         return (unit, title);
     }
@@ -73,18 +74,15 @@ pub(super) fn sig(value: f64, digits: i32) -> String {
     format!("{value:.decimals$}")
 }
 
-pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let k = FIGURES
-        .iter()
-        .position(|&f| f == app.figure_number)
-        .unwrap_or(0);
-    let state = app.figure.as_ref();
-    let stale = state.is_none_or(|f| f.generation != app.figure_generation);
+pub fn draw(frame: &mut Frame, area: Rect, view: &Figure) {
+    let k = FIGURES.iter().position(|&f| f == view.number).unwrap_or(0);
+    let state = view.figure;
+    let stale = state.is_none_or(|f| f.generation != view.generation);
     // A batted ball steps through the aero figures only: say so.
-    let (k, count, which) = if app.is_swing() {
+    let (k, count, which) = if view.swing {
         (k, FIGURES.len(), "")
     } else {
-        let k = AERO_FIGURES.iter().position(|&f| f == app.figure_number);
+        let k = AERO_FIGURES.iter().position(|&f| f == view.number);
         (
             k.unwrap_or(0),
             AERO_FIGURES.len(),
@@ -93,22 +91,22 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     };
     let title = format!(
         " Fig. {} ({}/{count}, f F{which}){} ",
-        app.figure_number,
+        view.number,
         k + 1,
         if stale { " computing…" } else { "" }
     );
-    let block = Block::bordered().title(Span::styled(title, app.theme.title));
+    let block = Block::bordered().title(Span::styled(title, view.theme.title));
     let inner = block.inner(area);
     frame.render_widget(block, area);
     // A batted ball has no pitch or bat to sweep: only the aero applies.
-    if !app.figure_applies() {
+    if !view.applies() {
         let text = format!(
             "Fig. {} needs a swing: b switches to the swing scene. For a batted ball, f shows Figs. {} (the aerodynamics).",
-            app.figure_number,
+            view.number,
             AERO_FIGURES.map(|n| n.to_string()).join("–")
         );
         frame.render_widget(
-            Paragraph::new(Line::styled(text, app.theme.dim))
+            Paragraph::new(Line::styled(text, view.theme.dim))
                 .wrap(ratatui::widgets::Wrap { trim: true }),
             inner,
         );
@@ -118,7 +116,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         None => return,
         Some(Err(e)) => {
             frame.render_widget(
-                Paragraph::new(Line::styled(e.as_str(), app.theme.error))
+                Paragraph::new(Line::styled(e.as_str(), view.theme.error))
                     .wrap(ratatui::widgets::Wrap { trim: true }),
                 inner,
             );
@@ -128,36 +126,41 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     };
     // The paper's numbers beside ours, and the notes: each gets a row, and
     // rows to spare go to the first ones' further words.
+    // In the units shown, as the axes are (and as `x` writes them).
     let notes: Vec<Vec<Span>> = data
         .comparisons
         .iter()
+        .map(|c| stated::comparison(c, view.units))
         .map(|c| {
             // The numbers first, so that a narrow pane loses only words.
             vec![
-                Span::styled(format!("paper {}", trimmed(c.paper)), app.theme.dim),
-                Span::raw(format!(" · ours {} {}", sig(c.ours, 3), c.unit)),
+                Span::styled(format!("paper {}", trimmed(c.paper)), view.theme.dim),
+                Span::raw(format!(
+                    " · ours {}",
+                    stated::with_unit(&sig(c.ours, 3), c.unit)
+                )),
                 // A number's groups ("208 000") wrap together.
                 Span::styled(
                     format!(
                         "  {}",
                         words::non_breaking(&c.what, |next| next.is_ascii_digit())
                     ),
-                    app.theme.dim,
+                    view.theme.dim,
                 ),
             ]
         })
         .chain(
             data.notes
                 .iter()
-                .map(|n| vec![Span::styled(n.as_str(), app.theme.dim)]),
+                .map(|n| vec![Span::styled(stated::words(n, view.units), view.theme.dim)]),
         )
         .collect();
     let width = inner.width as usize;
     let height = inner.height as usize;
     // The caption takes two rows where the pane is tall enough.
     // In the units shown, the numbers it quotes too, as `x` writes it.
-    let title = shown::title(&data.title, app.units);
-    let caption = [Span::styled(title.as_str(), app.theme.dim)];
+    let title = shown::title(&data.title, view.units);
+    let caption = [Span::styled(title.as_str(), view.theme.dim)];
     let caption = words::fit(&caption, width, if height >= 18 { 2 } else { 1 });
     // The chart keeps at least 10 rows; the notes a quarter of the pane,
     // or a row each.
@@ -185,10 +188,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         .zip(&rows)
         .any(|(note, &rows)| words::rows_needed(note, width) > rows);
     if caption_cut || notes_cut {
-        super::read_all_hint(frame, area, &app.theme);
+        super::read_all_hint(frame, area, view.theme);
     }
 
-    figure_panels::draw(frame, plot, app, data);
+    figure_panels::draw(frame, plot, view, data);
 }
 
 /// The rows each note gets out of `budget`: one each, in order, while they

@@ -11,7 +11,7 @@ use ratatui::widgets::Paragraph;
 
 use super::chart::{self, AxisSpec, Ticks};
 use super::figure::column_unit;
-use crate::app::App;
+use super::pane_views::Figure;
 use crate::theme::Theme;
 use analysis::figures::FigureData;
 use analysis::figures::curves::{Curve, current_value, curves, marked_points, panels, x_column};
@@ -39,14 +39,14 @@ fn panels_that_fit(height: u16, count: usize) -> usize {
 
 /// The panel of `data` whose y columns start with `prefix`, in the units
 /// shown, against the x column in `x_unit`.
-fn panel(app: &App, data: &FigureData, prefix: &str, x_unit: Unit) -> Panel {
+fn panel(view: &Figure, data: &FigureData, prefix: &str, x_unit: Unit) -> Panel {
     let (y_unit, title) = data
         .columns
         .iter()
         .find(|c| c.key.starts_with(prefix))
         .map_or(
-            (Quantity::Unchanged.unit(app.units, ""), String::new()),
-            |c| column_unit(app, c),
+            (Quantity::Unchanged.unit(view.units, ""), String::new()),
+            |c| column_unit(view, c),
         );
     let curves = curves(data, prefix)
         .into_iter()
@@ -79,20 +79,20 @@ fn span(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
     })
 }
 
-pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
+pub fn draw(frame: &mut Frame, area: Rect, view: &Figure, data: &FigureData) {
     let x = x_column(data);
-    let (x_unit, x_title) = column_unit(app, &data.columns[x]);
+    let (x_unit, x_title) = column_unit(view, &data.columns[x]);
     let all = panels(data.number);
     let count = panels_that_fit(area.height, all.len());
     // Where not all fit, one at a time: the one `v` has reached.
     let first = if count < all.len() {
-        app.figure_panel % all.len()
+        view.panel % all.len()
     } else {
         0
     };
     let shown: Vec<Panel> = all[first..first + count]
         .iter()
-        .map(|prefix| panel(app, data, prefix, x_unit))
+        .map(|prefix| panel(view, data, prefix, x_unit))
         .collect();
     let Some((x0, x1)) = span(
         shown
@@ -115,20 +115,20 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
         .collect();
     let mark_points: Vec<(f64, f64)> = marks.iter().map(|m| m.0).collect();
     // Dots, or blocks where the second curve is in dots.
-    let mark_marker = if app.theme.colored() {
+    let mark_marker = if view.theme.colored() {
         Marker::Dot
     } else {
         Marker::Block
     };
     // The current input's value, where the x column is an input.
-    let now = current_value(data, &app.scene)
+    let now = current_value(data, view.scene)
         .map(|v| x_unit.show(v))
         .filter(|v| (x0..=x1).contains(v));
 
     let [legend_row, stack] =
         Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
     let which = (count < all.len()).then_some((first, all.len()));
-    legend_line(frame, legend_row, app, (which, &shown[0]), now.is_some());
+    legend_line(frame, legend_row, view, (which, &shown[0]), now.is_some());
 
     let rows = (stack.height.saturating_sub(2) / count as u16).max(1);
     let x_ticks = Ticks::across(x0, x1, stack.width.saturating_sub(8));
@@ -148,15 +148,15 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
             .iter()
             .enumerate()
             .map(|(c, curve)| {
-                let marker = app.theme.path(c).0;
-                chart::curve(marker, curve_style(&app.theme, c), &curve.points)
+                let marker = view.theme.path(c).0;
+                chart::curve(marker, curve_style(view.theme, c), &curve.points)
             })
             .collect();
         if !now_line.is_empty() {
-            datasets.push(chart::line(app.theme.swing, &now_line));
+            datasets.push(chart::line(view.theme.swing, &now_line));
         }
         if on_first(k) {
-            datasets.push(chart::points(mark_marker, app.theme.apex, &mark_points));
+            datasets.push(chart::points(mark_marker, view.theme.apex, &mark_points));
         }
         // Only the lowest panel has the x axis and its title (each is given
         // the title, so that each graph leaves it the same room).
@@ -168,7 +168,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
             width,
             ..AxisSpec::new(panel.title.clone(), *y)
         };
-        let graph = chart::draw(frame, areas[k], datasets, (&x, &y_axis), app.theme.dim);
+        let graph = chart::draw(frame, areas[k], datasets, (&x, &y_axis), view.theme.dim);
         if on_first(k) {
             let named: Vec<((f64, f64), &str)> = marks
                 .iter()
@@ -176,7 +176,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
                 .map(|(point, text)| (*point, text.as_str()))
                 .collect();
             let ticks = (&x_ticks, y);
-            chart::labels(frame, graph, ticks, mark_marker, &named, app.theme.apex);
+            chart::labels(frame, graph, ticks, mark_marker, &named, view.theme.apex);
         }
     }
 }
@@ -187,7 +187,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App, data: &FigureData) {
 fn legend_line(
     frame: &mut Frame,
     row: Rect,
-    app: &App,
+    view: &Figure,
     (which, main): (Option<(usize, usize)>, &Panel),
     now: bool,
 ) {
@@ -195,18 +195,18 @@ fn legend_line(
     if let Some((first, all)) = which {
         legend.push(Span::styled(
             format!("panel {}/{all}: {} · v next ", first + 1, main.title),
-            app.theme.key,
+            view.theme.key,
         ));
     }
     if main.curves.len() > 1 {
         for (k, curve) in main.curves.iter().enumerate() {
-            let glyph = app.theme.path(k).1;
-            let style = curve_style(&app.theme, k);
+            let glyph = view.theme.path(k).1;
+            let style = curve_style(view.theme, k);
             legend.push(Span::styled(format!("{glyph} {} ", curve.name), style));
         }
     }
     if now {
-        legend.push(Span::styled("│ now ", app.theme.swing));
+        legend.push(Span::styled("│ now ", view.theme.swing));
     }
     frame.render_widget(Paragraph::new(Line::from(legend).right_aligned()), row);
 }

@@ -13,7 +13,7 @@ use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
-use crate::app::App;
+use super::pane_views::{InUnits, Surface};
 use crate::layout::{HEATMAP_BAR, heatmap_plot};
 use crate::shown::{swing_angle_tick, swing_angle_unit, undercut_axis, undercut_tick};
 use crate::theme::{Theme, ramp};
@@ -55,16 +55,15 @@ pub(super) struct Scale {
     pub contour: Color,
 }
 
-pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    if app.shows_margin() {
-        super::margin_map::draw(frame, area, app);
+pub fn draw(frame: &mut Frame, area: Rect, view: &Surface) {
+    if let Some(margin) = &view.margin {
+        super::margin_map::draw(frame, area, view, margin);
         return;
     }
-    let level = app.fence.map(|f| f.distance);
-    let stale = if app
+    let level = view.fence_distance;
+    let stale = if view
         .surface
-        .as_ref()
-        .is_some_and(|s| s.generation != app.generation)
+        .is_some_and(|s| s.generation != view.generation)
     {
         " (stale)"
     } else {
@@ -72,20 +71,20 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     };
     let title = match level {
         Some(d) => {
-            let (d, unit) = app.distance(d);
+            let (d, unit) = view.distance(d);
             format!(
                 " Range over (E, ψ){stale} · {} {d:.0} {unit} (fence) ",
-                contour_key(app)
+                contour_key(view)
             )
         }
         None => format!(" Range over (E, ψ){stale} "),
     };
-    let Some(plot) = frame_and_axes(frame, area, app, title) else {
+    let Some(plot) = frame_and_axes(frame, area, view, title) else {
         return;
     };
-    let Some(state) = &app.surface else {
+    let Some(state) = view.surface else {
         frame.render_widget(
-            Paragraph::new(Line::styled("computing the surface…", app.theme.dim)),
+            Paragraph::new(Line::styled("computing the surface…", view.theme.dim)),
             plot,
         );
         return;
@@ -108,26 +107,26 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let scale = Scale {
         ramp,
         shade: Theme::shade,
-        contour: app.theme.contour,
+        contour: view.theme.contour,
     };
     paint(
         frame.buffer_mut(),
         plot,
-        app,
+        view,
         (&value, &|v| (v - min) / (max - min).max(1e-9), level),
         &scale,
     );
-    marks(frame.buffer_mut(), plot, app);
-    let (top, unit) = app.distance(max);
+    marks(frame.buffer_mut(), plot, view);
+    let (top, unit) = view.distance(max);
     let labels = [
         format!("{top:>5.0}"),
         format!("{unit:>5}"),
-        format!("{:>5.0}", app.distance(min).0),
+        format!("{:>5.0}", view.distance(min).0),
     ];
     colour_bar(
         frame.buffer_mut(),
         plot,
-        app,
+        view,
         (&scale, &labels),
         if surface.any_not_landed() {
             OffScale::NotLanded
@@ -143,10 +142,10 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
 pub(super) fn frame_and_axes(
     frame: &mut Frame,
     area: Rect,
-    app: &App,
+    view: &Surface,
     title: String,
 ) -> Option<Rect> {
-    let block = Block::bordered().title(Span::styled(title, app.theme.title));
+    let block = Block::bordered().title(Span::styled(title, view.theme.title));
     frame.render_widget(block, area);
     let plot = heatmap_plot(area);
     if plot.width < 4 || plot.height < 2 {
@@ -154,43 +153,43 @@ pub(super) fn frame_and_axes(
     }
     let window = Grid::explorer_window();
     let inner = Block::bordered().inner(area);
-    let psi_text = |psi: f64| swing_angle_tick(app.units, psi);
-    let e_text = |e: f64| undercut_tick(app.units, e);
+    let psi_text = |psi: f64| swing_angle_tick(view.units, psi);
+    let e_text = |e: f64| undercut_tick(view.units, e);
     let buf = frame.buffer_mut();
     buf.set_string(
         inner.x,
         plot.y,
         format!("{:>5}", psi_text(window.swing_angle.1)),
-        app.theme.dim,
+        view.theme.dim,
     );
     let middle = plot.y + plot.height / 2;
-    buf.set_string(inner.x, middle, "  ψ ↑", app.theme.dim);
+    buf.set_string(inner.x, middle, "  ψ ↑", view.theme.dim);
     // The unit under the name, where it leaves the bottom tick its row.
     if middle + 1 < plot.bottom().saturating_sub(1) {
-        let unit = format!("{:>5}", swing_angle_unit(app.units));
-        buf.set_string(inner.x, middle + 1, unit, app.theme.dim);
+        let unit = format!("{:>5}", swing_angle_unit(view.units));
+        buf.set_string(inner.x, middle + 1, unit, view.theme.dim);
     }
     buf.set_string(
         inner.x,
         plot.bottom().saturating_sub(1),
         format!("{:>5}", psi_text(window.swing_angle.0)),
-        app.theme.dim,
+        view.theme.dim,
     );
     let bottom = plot.bottom();
-    buf.set_string(plot.x, bottom, e_text(window.undercut.0), app.theme.dim);
-    let e_label = format!("{} →", undercut_axis(app.units));
+    buf.set_string(plot.x, bottom, e_text(window.undercut.0), view.theme.dim);
+    let e_label = format!("{} →", undercut_axis(view.units));
     buf.set_string(
         plot.x + plot.width.saturating_sub(e_label.chars().count() as u16) / 2,
         bottom,
         &e_label,
-        app.theme.dim,
+        view.theme.dim,
     );
     let right = e_text(window.undercut.1);
     buf.set_string(
         plot.right().saturating_sub(right.len() as u16),
         bottom,
         &right,
-        app.theme.dim,
+        view.theme.dim,
     );
 
     Some(plot)
@@ -211,7 +210,7 @@ pub(super) type Values<'a> = (
 pub(super) fn paint(
     buf: &mut Buffer,
     plot: Rect,
-    app: &App,
+    view: &Surface,
     (value, place, level): Values,
     scale: &Scale,
 ) {
@@ -243,7 +242,7 @@ pub(super) fn paint(
             Value::Empty => Pixel::NoRange,
         }
     };
-    let theme = &app.theme;
+    let theme = &view.theme;
     if theme.colored() {
         let colour = |px: usize, py: usize| -> Color {
             match pixel(px, py) {
@@ -261,7 +260,7 @@ pub(super) fn paint(
 
 /// The current swing ✚ and the optimum ★ over a map; a point outside the
 /// window is pinned to its edge as ◆.
-pub(super) fn marks(buf: &mut Buffer, plot: Rect, app: &App) {
+pub(super) fn marks(buf: &mut Buffer, plot: Rect, view: &Surface) {
     let window = Grid::explorer_window();
     let to_cell = |e: f64, psi: f64| -> (u16, u16, bool) {
         let fx = (e - window.undercut.0) / (window.undercut.1 - window.undercut.0);
@@ -276,21 +275,21 @@ pub(super) fn marks(buf: &mut Buffer, plot: Rect, app: &App) {
         let symbol = if inside { symbol } else { "◆" };
         buf[(x, y)]
             .set_symbol(symbol)
-            .set_style(app.theme.mark(colour));
+            .set_style(view.theme.mark(colour));
     };
-    if let Some(o) = app.optimum.filter(|o| o.done && o.best.range.is_finite()) {
+    if let Some(o) = view.optimum.filter(|o| o.done && o.best.range.is_finite()) {
         mark(
             buf,
             to_cell(o.best.undercut, o.best.swing_angle),
             "★",
-            app.theme.optimum_mark,
+            view.theme.optimum_mark,
         );
     }
     mark(
         buf,
-        to_cell(app.scene.bat.undercut, app.scene.bat.swing_angle),
+        to_cell(view.swing.0, view.swing.1),
         "✚",
-        app.theme.swing_mark,
+        view.theme.swing_mark,
     );
 }
 
@@ -310,7 +309,7 @@ pub(super) enum OffScale {
 pub(super) fn colour_bar(
     buf: &mut Buffer,
     plot: Rect,
-    app: &App,
+    view: &Surface,
     (scale, labels): (&Scale, &[String; 3]),
     off: OffScale,
 ) {
@@ -318,13 +317,13 @@ pub(super) fn colour_bar(
     let [_, bar_area] = Layout::horizontal([Constraint::Length(0), Constraint::Fill(1)]).areas(bar);
     for row in 0..bar_area.height {
         let t = 1.0 - row as f64 / (bar_area.height.max(2) - 1) as f64;
-        let c = app.theme.rgb((scale.ramp)(t));
-        let swatch = if app.theme.colored() {
+        let c = view.theme.rgb((scale.ramp)(t));
+        let swatch = if view.theme.colored() {
             "██"
         } else {
             &(scale.shade)(t).repeat(2)
         };
-        buf.set_string(bar_area.x, bar_area.y + row, swatch, app.theme.swatch(c));
+        buf.set_string(bar_area.x, bar_area.y + row, swatch, view.theme.swatch(c));
     }
     let rows = [
         bar_area.y,
@@ -332,24 +331,24 @@ pub(super) fn colour_bar(
         bar_area.bottom().saturating_sub(1),
     ];
     for (row, label) in rows.into_iter().zip(labels) {
-        buf.set_string(bar_area.x + 2, row, label, app.theme.dim);
+        buf.set_string(bar_area.x + 2, row, label, view.theme.dim);
     }
     let (x, y) = (bar_area.x, bar_area.bottom());
     match off {
         OffScale::None => {}
         OffScale::NotLanded => {
-            let legend = if app.theme.colored() {
+            let legend = if view.theme.colored() {
                 NOT_LANDED_LEGEND
             } else {
                 NOT_LANDED_PLAIN_LEGEND
             };
-            buf.set_string(x, y, legend, app.theme.swatch(app.theme.not_landed));
+            buf.set_string(x, y, legend, view.theme.swatch(view.theme.not_landed));
         }
         OffScale::Foul => {
             // The blank cells' own colour, then the word.
-            let swatch = Style::new().bg(app.theme.no_range);
+            let swatch = Style::new().bg(view.theme.no_range);
             buf.set_string(x, y, "  ", swatch);
-            buf.set_string(x + 2, y, " foul", app.theme.dim);
+            buf.set_string(x + 2, y, " foul", view.theme.dim);
         }
     }
 }
@@ -393,8 +392,8 @@ fn draw_pixels(
 
 /// How the legend draws the contour: a line where it is drawn in colour,
 /// its dots without (NO_COLOR), as the map shows it.
-pub(super) fn contour_key(app: &App) -> String {
-    if app.theme.colored() {
+pub(super) fn contour_key(view: &Surface) -> String {
+    if view.theme.colored() {
         "──".to_owned()
     } else {
         CONTOUR_GLYPH.repeat(2)

@@ -12,44 +12,48 @@ use ratatui::widgets::{Block, Paragraph};
 
 use super::chart::{self, AxisSpec, Ticks};
 use super::impact3d;
+use super::pane_views::Impact;
+use super::pane_views::InUnits;
 use super::words;
-use crate::app::{App, impact_stops};
+use crate::app::impact_stops;
 use model::impact::{Collision, Stop};
 use units::Quantity;
 
-pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
+pub fn draw(frame: &mut Frame, area: Rect, view: &Impact) {
     // Drawn for a swing only: a batted ball has no impact.
-    let Some(impact) = &app.flown.impact else {
+    let Some(impact) = view.impact else {
         return;
     };
     let stops = impact_stops(impact);
-    let stop = stops[app.impact_stop.min(stops.len() - 1)];
+    // A view past the last stop shows the last (the app keeps it in range).
+    let at = view.stop.min(stops.len() - 1);
+    let stop = stops[at];
     let block = Block::bordered().title(Span::styled(
         format!(
             " Impact: {} ({}/{}) · , . step ",
             stop.name,
-            app.impact_stop + 1,
+            at + 1,
             stops.len()
         ),
-        app.theme.title,
+        view.theme.title,
     ));
     let inner = block.inner(area);
     frame.render_widget(block, area);
     match impact.spatial() {
-        Some(spatial) => impact3d::draw(frame, inner, app, (impact, spatial), stop),
-        None => planar(frame, inner, app, impact, stop),
+        Some(spatial) => impact3d::draw(frame, inner, view, (impact, spatial), stop),
+        None => planar(frame, inner, view, impact, stop),
     }
 }
 
 /// The paper's collision: v1 and v3 against p.
-fn planar(frame: &mut Frame, inner: Rect, app: &App, impact: &Collision, stop: Stop) {
+fn planar(frame: &mut Frame, inner: Rect, view: &Impact, impact: &Collision, stop: Stop) {
     // Speeds in the units shown (m/s or mph); impulses stay N·s.
-    let (slip_path, normal_path) = (app.theme.path(0), app.theme.path(1));
-    let lines = planar_text(app, impact, stop, (slip_path.1, normal_path.1));
+    let (slip_path, normal_path) = (view.theme.path(0), view.theme.path(1));
+    let lines = planar_text(view, impact, stop, (slip_path.1, normal_path.1));
     // Each line wrapped at words, never cut: up to two rows each, and the
     // stop's sentence first, up to four.
     let width = inner.width as usize;
-    let lines: Vec<Line> = words::fit(&stop_sentence(app, impact, stop).spans, width, 4)
+    let lines: Vec<Line> = words::fit(&stop_sentence(view, impact, stop).spans, width, 4)
         .into_iter()
         .chain(lines.iter().flat_map(|l| words::fit(&l.spans, width, 2)))
         .collect();
@@ -60,17 +64,17 @@ fn planar(frame: &mut Frame, inner: Rect, app: &App, impact: &Collision, stop: S
         Curve {
             name: "v1",
             value: |s| s.slip.x,
-            style: app.theme.slip,
+            style: view.theme.slip,
             marker: slip_path.0,
         },
         Curve {
             name: "v3",
             value: |s| s.normal_velocity,
-            style: app.theme.approach,
+            style: view.theme.approach,
             marker: normal_path.0,
         },
     ];
-    phase_chart(frame, chart_area, app, impact, stop.impulse, &curves);
+    phase_chart(frame, chart_area, view, impact, stop.impulse, &curves);
 
     frame.render_widget(Paragraph::new(lines), text_area);
 }
@@ -78,23 +82,26 @@ fn planar(frame: &mut Frame, inner: Rect, app: &App, impact: &Collision, stop: S
 /// The impact's state at the cursor, in words: the impulses, v1 and v3,
 /// and the ball's velocity and spin.
 fn planar_text(
-    app: &App,
+    view: &Impact,
     impact: &Collision,
     stop: Stop,
     glyphs: (&str, &str),
 ) -> Vec<Line<'static>> {
-    let speed = app.unit(Quantity::Speed);
+    let speed = view.unit(Quantity::Speed);
     let s = impact.at(stop.impulse);
     // The spin to the readout's digits: 191.8 rad/s, 1832 rpm.
-    let spin = crate::shown::quantity_text(app.units, Quantity::Spin, s.ball_spin.z, 1, true);
+    let spin = crate::shown::quantity_text(view.units, Quantity::Spin, s.ball_spin.z, 1, true);
     vec![
-        impulse_line(app, impact, stop),
+        impulse_line(view, impact, stop),
         Line::from(vec![
-            Span::styled(format!("{}v1 slip ", named(app, glyphs.0)), app.theme.slip),
+            Span::styled(
+                format!("{}v1 slip ", named(view, glyphs.0)),
+                view.theme.slip,
+            ),
             Span::raw(format!("{:+.2}  ", speed.show(s.slip.x))),
             Span::styled(
-                format!("{}v3 normal ", named(app, glyphs.1)),
-                app.theme.approach,
+                format!("{}v3 normal ", named(view, glyphs.1)),
+                view.theme.approach,
             ),
             Span::raw(format!(
                 "{:+.2} {}",
@@ -103,7 +110,7 @@ fn planar_text(
             )),
         ]),
         Line::from(vec![
-            Span::styled("ball ", app.theme.dim),
+            Span::styled("ball ", view.theme.dim),
             Span::raw(format!(
                 "({:+.2}, {:+.2}) {}  |v| {:.2}  spin {spin}",
                 speed.show(s.ball_velocity.x),
@@ -116,8 +123,8 @@ fn planar_text(
 }
 
 /// What is happening at the stop, in a sentence (dim, under the chart).
-pub(super) fn stop_sentence(app: &App, impact: &Collision, stop: Stop) -> Line<'static> {
-    Line::styled(super::phase_words::sentence(impact, stop), app.theme.dim)
+pub(super) fn stop_sentence(view: &Impact, impact: &Collision, stop: Stop) -> Line<'static> {
+    Line::styled(super::phase_words::sentence(impact, stop), view.theme.dim)
 }
 
 /// A curve of the chart against p: what it plots of a moment (m/s), and
@@ -132,8 +139,8 @@ pub(super) struct Curve {
 }
 
 /// Without colour, a curve's name carries its glyph.
-pub(super) fn named(app: &App, glyph: &str) -> String {
-    if app.theme.colored() {
+pub(super) fn named(view: &Impact, glyph: &str) -> String {
+    if view.theme.colored() {
         String::new()
     } else {
         format!("{glyph} ")
@@ -142,19 +149,19 @@ pub(super) fn named(app: &App, glyph: &str) -> String {
 
 /// "p 4.311 N·s  p_s 1.657  p_c 8.621  p_f 12.341": the cursor and the
 /// phases' impulses.
-pub(super) fn impulse_line(app: &App, impact: &Collision, stop: Stop) -> Line<'static> {
+pub(super) fn impulse_line(view: &Impact, impact: &Collision, stop: Stop) -> Line<'static> {
     Line::from(vec![
-        Span::styled("p ", app.theme.cursor),
+        Span::styled("p ", view.theme.cursor),
         Span::raw(format!("{:.3} N·s  ", stop.impulse)),
-        Span::styled("p_s ", app.theme.stick),
+        Span::styled("p_s ", view.theme.stick),
         Span::raw(
             impact
                 .stick_impulse()
                 .map_or("— (slips) ".to_owned(), |p| format!("{p:.3}  ")),
         ),
-        Span::styled("p_c ", app.theme.compression),
+        Span::styled("p_c ", view.theme.compression),
         Span::raw(format!("{:.3}  ", impact.compression_impulse())),
-        Span::styled("p_f ", app.theme.dim),
+        Span::styled("p_f ", view.theme.dim),
         Span::raw(format!("{:.3}", impact.separation_impulse())),
     ])
 }
@@ -168,12 +175,12 @@ const P_AXIS: &str = "p (N·s)";
 pub(super) fn phase_chart(
     frame: &mut Frame,
     chart_area: Rect,
-    app: &App,
+    view: &Impact,
     impact: &Collision,
     cursor: f64,
     curves: &[Curve],
 ) {
-    let speed = app.unit(Quantity::Speed);
+    let speed = view.unit(Quantity::Speed);
     let pf = impact.separation_impulse();
     let samples = (2 * chart_area.width as usize).clamp(8, 400);
     let states: Vec<_> = (0..samples)
@@ -204,14 +211,14 @@ pub(super) fn phase_chart(
     let cursor = vertical(cursor);
     let zero = [(0.0, 0.0), (x.hi, 0.0)];
     let mut datasets = vec![
-        chart::line(app.theme.dim, &zero),
-        chart::line(app.theme.compression, &pc_line),
-        chart::line(app.theme.dim, &pf_line),
+        chart::line(view.theme.dim, &zero),
+        chart::line(view.theme.compression, &pc_line),
+        chart::line(view.theme.dim, &pf_line),
     ];
     if let Some(ps) = &ps_line {
-        datasets.push(chart::line(app.theme.stick, ps));
+        datasets.push(chart::line(view.theme.stick, ps));
     }
-    datasets.push(chart::line(app.theme.cursor, &cursor));
+    datasets.push(chart::line(view.theme.cursor, &cursor));
     for (curve, points) in curves.iter().zip(&points) {
         datasets.push(chart::curve(curve.marker, curve.style, points));
     }
@@ -220,7 +227,7 @@ pub(super) fn phase_chart(
         chart_area,
         datasets,
         (&AxisSpec::new(P_AXIS, x), &AxisSpec::new(speed.symbol, y)),
-        app.theme.dim,
+        view.theme.dim,
     );
     // Each line's name at its top, where the chart leaves room.
     let label = |frame: &mut Frame, at: (f64, f64), name: &str, style: Style| {
@@ -234,12 +241,12 @@ pub(super) fn phase_chart(
         );
     };
     let compression = impact.compression_impulse();
-    label(frame, (compression, y.hi), "p_c", app.theme.compression);
+    label(frame, (compression, y.hi), "p_c", view.theme.compression);
     if let Some(ps) = impact.stick_impulse() {
-        label(frame, (ps, y.hi), "p_s", app.theme.stick);
+        label(frame, (ps, y.hi), "p_s", view.theme.stick);
     }
     // At the foot of its line: the curves end at its top.
-    label(frame, (pf, y.lo), "p_f", app.theme.dim);
+    label(frame, (pf, y.lo), "p_f", view.theme.dim);
     // Each curve's name at its end, in its colour.
     for (curve, points) in curves.iter().zip(&points) {
         if let Some(&end) = points.last() {

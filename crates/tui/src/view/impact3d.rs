@@ -15,8 +15,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Chart, Paragraph};
 
 use super::impact::{Curve, impulse_line, named, phase_chart, stop_sentence};
+use super::pane_views::Impact;
+use super::pane_views::InUnits;
 use super::{chart, words};
-use crate::app::App;
 use crate::layout::CELL_ASPECT;
 use crate::shown::{angle_text, quantity_text};
 use model::impact::{Collision, Impact3d, Regime, Stop};
@@ -28,40 +29,43 @@ const PATH_POINTS: usize = 80;
 pub fn draw(
     frame: &mut Frame,
     inner: Rect,
-    app: &App,
+    view: &Impact,
     (impact, spatial): (&Collision, &Impact3d),
     stop: Stop,
 ) {
-    let speed = app.unit(Quantity::Speed);
-    let (across, normal, along) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
+    let speed = view.unit(Quantity::Speed);
+    let (across, normal, along) = (view.theme.path(0), view.theme.path(1), view.theme.path(2));
     let s = impact.at(stop.impulse);
     let value = |v: f64| Span::raw(format!("{:+.2}  ", speed.show(v)));
     let v = s.ball_velocity;
     let lines: Vec<Line> = [
-        impulse_line(app, impact, stop),
+        impulse_line(view, impact, stop),
         Line::from(vec![
-            Span::styled(format!("{}v1 ", named(app, across.1)), app.theme.slip),
+            Span::styled(format!("{}v1 ", named(view, across.1)), view.theme.slip),
             value(s.slip.x),
-            Span::styled(format!("{}v2 ", named(app, along.1)), app.theme.slip_along),
+            Span::styled(
+                format!("{}v2 ", named(view, along.1)),
+                view.theme.slip_along,
+            ),
             value(s.slip.y),
-            Span::styled(format!("{}v3 ", named(app, normal.1)), app.theme.approach),
+            Span::styled(format!("{}v3 ", named(view, normal.1)), view.theme.approach),
             Span::raw(format!(
                 "{:+.2} {}",
                 speed.show(s.normal_velocity),
                 speed.symbol
             )),
         ]),
-        turn_line(app, spatial, stop.impulse, inner.width),
+        turn_line(view, spatial, stop.impulse, inner.width),
         Line::from(vec![
-            Span::styled("ball ", app.theme.dim),
+            Span::styled("ball ", view.theme.dim),
             Span::raw(format!(
                 "({:+.2}, {:+.2}, {:+.2}) {}  |ω| {}{}",
                 speed.show(v.x),
                 speed.show(v.y),
                 speed.show(v.z),
                 speed.symbol,
-                quantity_text(app.units, Quantity::Spin, s.ball_spin.norm(), 1, false),
-                spin_parts(app, impact, stop)
+                quantity_text(view.units, Quantity::Spin, s.ball_spin.norm(), 1, false),
+                spin_parts(view, impact, stop)
             )),
         ]),
     ]
@@ -71,7 +75,7 @@ pub fn draw(
     .flat_map(|l| words::fit(&l.spans, inner.width as usize, 2))
     .collect();
     let lines: Vec<Line> = words::fit(
-        &stop_sentence(app, impact, stop).spans,
+        &stop_sentence(view, impact, stop).spans,
         inner.width as usize,
         4,
     )
@@ -95,25 +99,25 @@ pub fn draw(
         Curve {
             name: "v1",
             value: |s| s.slip.x,
-            style: app.theme.slip,
+            style: view.theme.slip,
             marker: across.0,
         },
         Curve {
             name: "v2",
             value: |s| s.slip.y,
-            style: app.theme.slip_along,
+            style: view.theme.slip_along,
             marker: along.0,
         },
         Curve {
             name: "v3",
             value: |s| s.normal_velocity,
-            style: app.theme.approach,
+            style: view.theme.approach,
             marker: normal.0,
         },
     ];
-    phase_chart(frame, chart_area, app, impact, stop.impulse, &curves);
+    phase_chart(frame, chart_area, view, impact, stop.impulse, &curves);
     if shows_plane {
-        slip_plane(frame, plane_area, app, spatial, stop.impulse);
+        slip_plane(frame, plane_area, view, spatial, stop.impulse);
     }
 
     frame.render_widget(Paragraph::new(lines), text_area);
@@ -123,12 +127,12 @@ pub fn draw(
 /// vector, the launch's backspin and sidespin are its parts about the
 /// horizontal across the flight and the vertical (the rest spins about the
 /// ball's path and bends nothing).
-fn spin_parts(app: &App, impact: &Collision, stop: Stop) -> String {
+fn spin_parts(view: &Impact, impact: &Collision, stop: Stop) -> String {
     if stop.impulse < impact.separation_impulse() {
         return String::new();
     }
     // The readout's digits: a tenth of a rad/s, whole rpm.
-    let spin = app.unit(Quantity::Spin);
+    let spin = view.unit(Quantity::Spin);
     let decimals = spin.decimals(1);
     format!(
         " (launch: backspin\u{a0}{:.decimals$}, sidespin\u{a0}{:.decimals$})",
@@ -140,11 +144,11 @@ fn spin_parts(app: &App, impact: &Collision, stop: Stop) -> String {
 /// "slip 38.2° (26.3° → 74.3° at p_s, sticks)", in SI in rad: the slip's direction at the
 /// cursor (0° square across the bat, 90° along it), and at the start and
 /// the end of its turn: where it halts, or at separation if it never does.
-fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'static> {
+fn turn_line(view: &Impact, impact: &Impact3d, cursor: f64, width: u16) -> Line<'static> {
     // To a tenth of a degree, as `hit` prints the turn.
-    let slip_angle = |rad: f64| angle_text(app.units, rad, 3, false);
+    let slip_angle = |rad: f64| angle_text(view.units, rad, 3, false);
     let turn = impact.slip_turn(2);
-    let label = Span::styled("slip ", app.theme.slip);
+    let label = Span::styled("slip ", view.theme.slip);
     let (Some(first), Some(last)) = (turn.first(), turn.last()) else {
         return Line::from(vec![label, Span::raw("none: it sticks from the start")]);
     };
@@ -158,13 +162,13 @@ fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'sta
         None => "stuck".to_owned(),
     };
     let end = match impact.regime {
-        Regime::Stick if grips => Span::styled("sticks, springs back", app.theme.stick),
-        Regime::Stick => Span::styled("sticks", app.theme.stick),
+        Regime::Stick if grips => Span::styled("sticks, springs back", view.theme.stick),
+        Regime::Stick => Span::styled("sticks", view.theme.stick),
         Regime::Slip => Span::raw("slips to p_f"),
     };
     let mut spans = vec![
         label,
-        Span::styled(now, app.theme.cursor),
+        Span::styled(now, view.theme.cursor),
         // Where each end is, so that the last stop's 37° before the halt
         // does not read as the 74° at it.
         Span::raw(format!(
@@ -180,30 +184,30 @@ fn turn_line(app: &App, impact: &Impact3d, cursor: f64, width: u16) -> Line<'sta
         end,
         Span::raw(")"),
     ];
-    let key = match app.units {
+    let key = match view.units {
         UnitSystem::Si => "  0 across the bat, π/2 along",
         UnitSystem::Imperial => "  0° across the bat, 90° along",
     };
     let used: usize = spans.iter().map(Span::width).sum();
     if used + key.chars().count() <= width as usize {
-        spans.push(Span::styled(key, app.theme.dim));
+        spans.push(Span::styled(key, view.theme.dim));
     }
     Line::from(spans)
 }
 
 /// The slip in the tangent plane: v1 across, v2 up, equal scales; the path
 /// of its tip, the stick point, and the cursor's slip as an arrow.
-fn slip_plane(frame: &mut Frame, area: Rect, app: &App, impact: &Impact3d, cursor: f64) {
+fn slip_plane(frame: &mut Frame, area: Rect, view: &Impact, impact: &Impact3d, cursor: f64) {
     let [title, plot] = Layout::vertical([Constraint::Length(1), Constraint::Fill(1)]).areas(area);
     frame.buffer_mut().set_string(
         title.x,
         title.y,
         fitted("slip (v1, v2)", title.width),
-        app.theme.dim,
+        view.theme.dim,
     );
-    let plane = Plane::new(plot, app, impact, cursor);
-    plane.draw(frame, app);
-    plane.name(frame, app);
+    let plane = Plane::new(plot, view, impact, cursor);
+    plane.draw(frame, view);
+    plane.name(frame, view);
 }
 
 /// What the slip plane draws, in the speed unit shown: the path of the
@@ -218,8 +222,8 @@ struct Plane {
 }
 
 impl Plane {
-    fn new(plot: Rect, app: &App, impact: &Impact3d, cursor: f64) -> Plane {
-        let speed = app.unit(Quantity::Speed);
+    fn new(plot: Rect, view: &Impact, impact: &Impact3d, cursor: f64) -> Plane {
+        let speed = view.unit(Quantity::Speed);
         let shown = |v: nalgebra::Vector2<f64>| (speed.show(v.x), speed.show(v.y));
         let mut path: Vec<(f64, f64)> = impact
             .slip_turn(PATH_POINTS)
@@ -252,28 +256,28 @@ impl Plane {
     }
 
     /// The axes, the path, the arrow and the stick point.
-    fn draw(&self, frame: &mut Frame, app: &App) {
+    fn draw(&self, frame: &mut Frame, view: &Impact) {
         let (bx, by) = self.bounds;
         let axes = [
             vec![(bx[0], 0.0), (bx[1], 0.0)],
             vec![(0.0, by[0]), (0.0, by[1])],
         ];
         let mut datasets = vec![
-            chart::line(app.theme.dim, &axes[0]),
-            chart::line(app.theme.dim, &axes[1]),
-            chart::curve(app.theme.path(0).0, app.theme.slip, &self.path),
+            chart::line(view.theme.dim, &axes[0]),
+            chart::line(view.theme.dim, &axes[1]),
+            chart::curve(view.theme.path(0).0, view.theme.slip, &self.path),
         ];
         if let Some(arrow) = &self.arrow {
             // Without colour, dots tell it from the path.
-            let marker = if app.theme.colored() {
+            let marker = if view.theme.colored() {
                 Marker::Braille
             } else {
                 Marker::Dot
             };
-            datasets.push(chart::curve(marker, app.theme.cursor, arrow));
+            datasets.push(chart::curve(marker, view.theme.cursor, arrow));
         }
         if self.sticks {
-            datasets.push(chart::points(Marker::Dot, app.theme.stick, &ORIGIN));
+            datasets.push(chart::points(Marker::Dot, view.theme.stick, &ORIGIN));
         }
         frame.render_widget(
             Chart::new(datasets)
@@ -289,7 +293,7 @@ impl Plane {
     /// right or left) where every cell is blank. No word covers a cell the
     /// path, the arrow or the stick point passes through: an axis's name
     /// moves off its axis's end where the slip runs along it.
-    fn name(&self, frame: &mut Frame, app: &App) {
+    fn name(&self, frame: &mut Frame, view: &Impact) {
         let (plot, bounds) = (self.plot, self.bounds);
         let (bx, by) = bounds;
         let mut ink = inked(plot, bounds, &self.path);
@@ -330,9 +334,9 @@ impl Plane {
                 }
             };
         let ends = [(true, 0), (true, -1), (true, 1)];
-        write((bx[1], 0.0), "v1", app.theme.dim, &ends, false);
+        write((bx[1], 0.0), "v1", view.theme.dim, &ends, false);
         let top = [(false, 0), (true, 0), (false, 1), (true, 1)];
-        write((0.0, by[1]), "v2", app.theme.dim, &top, false);
+        write((0.0, by[1]), "v2", view.theme.dim, &top, false);
         if let Some(&start) = self.path.first() {
             let left = start.0 > 0.5 * (bx[0] + bx[1]);
             let places = [
@@ -344,11 +348,11 @@ impl Plane {
                 (left, -2),
                 (left, 2),
             ];
-            write(start, "p=0", app.theme.slip, &places, true);
+            write(start, "p=0", view.theme.slip, &places, true);
         }
         if self.sticks {
             let places = [(false, 1), (true, 1), (false, -1), (true, -1)];
-            write(ORIGIN[0], "p_s", app.theme.stick, &places, true);
+            write(ORIGIN[0], "p_s", view.theme.stick, &places, true);
         }
     }
 }
@@ -427,6 +431,7 @@ fn fitted(text: &str, width: u16) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::app::App;
     use crate::theme::ColorMode;
     use ratatui::Terminal;
     use ratatui::backend::TestBackend;
@@ -450,18 +455,23 @@ mod tests {
             fastball.scene.bat.direction = direction;
             fastball.scene.bat.friction = friction;
             let app = App::new(fastball, None, ColorMode::Indexed, Rect::new(0, 0, 80, 24));
-            let impact = app.flown.impact.as_ref().unwrap();
+            let view = Impact::of(&app);
+            let impact = view.impact.unwrap();
             let spatial = impact.spatial().unwrap();
-            let inks = [app.theme.slip.fg, app.theme.cursor.fg, app.theme.stick.fg];
+            let inks = [
+                view.theme.slip.fg,
+                view.theme.cursor.fg,
+                view.theme.stick.fg,
+            ];
             for (w, h) in [(18, 16), (26, 28)] {
                 let area = Rect::new(0, 0, w, h);
                 for k in 0..6 {
                     let cursor = impact.separation_impulse() * f64::from(k) / 6.0;
-                    let plane = Plane::new(area, &app, spatial, cursor);
-                    let bare = drawn(area, |f| plane.draw(f, &app));
+                    let plane = Plane::new(area, &view, spatial, cursor);
+                    let bare = drawn(area, |f| plane.draw(f, &view));
                     let named = drawn(area, |f| {
-                        plane.draw(f, &app);
-                        plane.name(f, &app);
+                        plane.draw(f, &view);
+                        plane.name(f, &view);
                     });
                     let mut words = 0;
                     for (x, y) in (0..h).flat_map(|y| (0..w).map(move |x| (x, y))) {

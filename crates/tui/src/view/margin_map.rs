@@ -15,7 +15,8 @@ use ratatui::widgets::Paragraph;
 use super::heatmap::{
     OffScale, Scale, Value, colour_bar, frame_and_axes, marks, paint, sample_cell,
 };
-use crate::app::App;
+use super::pane_views::{InUnits, Surface};
+use crate::app::MarginMap;
 use crate::margin::{MarginCell, MarginSurface};
 use crate::theme::{diverging, margin_shade};
 
@@ -56,25 +57,25 @@ fn scale_reach(margins: impl Iterator<Item = f64>) -> (f64, f64) {
     (over.max(LEAST_REACH), deep.max(LEAST_REACH))
 }
 
-pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let state = app.margin.state.as_ref();
-    let stale = if state.is_some_and(|s| s.generation != app.margin.generation) {
+pub fn draw(frame: &mut Frame, area: Rect, view: &Surface, (margin, place): &(&MarginMap, String)) {
+    let state = margin.state.as_ref();
+    let stale = if state.is_some_and(|s| s.generation != margin.generation) {
         " (stale)"
     } else {
         ""
     };
-    let unit = app.distance(1.0).1;
+    let unit = view.distance(1.0).1;
     let title = format!(
         " Margin at {} (E, ψ){stale} · {} 0 {unit} ",
-        app.margin_place(),
-        super::heatmap::contour_key(app)
+        place,
+        super::heatmap::contour_key(view)
     );
-    let Some(plot) = frame_and_axes(frame, area, app, title) else {
+    let Some(plot) = frame_and_axes(frame, area, view, title) else {
         return;
     };
     let Some(state) = state else {
         frame.render_widget(
-            Paragraph::new(Line::styled("computing the margin…", app.theme.dim)),
+            Paragraph::new(Line::styled("computing the margin…", view.theme.dim)),
             plot,
         );
         return;
@@ -117,19 +118,19 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let scale = Scale {
         ramp: diverging,
         shade: margin_shade,
-        contour: app.theme.zero_contour,
+        contour: view.theme.zero_contour,
     };
     paint(
         frame.buffer_mut(),
         plot,
-        app,
+        view,
         (&value, &place, Some(0.0)),
         &scale,
     );
-    marks(frame.buffer_mut(), plot, app);
+    marks(frame.buffer_mut(), plot, view);
     // "≤" where the scale stops short of the deepest.
     let end = |metres: f64| {
-        let shown = app.distance(metres).0;
+        let shown = view.distance(metres).0;
         format!("{shown:+.0$}", usize::from(shown.abs() < 10.0))
     };
     let bottom = end(-under);
@@ -152,5 +153,5 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     } else {
         OffScale::None
     };
-    colour_bar(frame.buffer_mut(), plot, app, (&scale, &labels), off);
+    colour_bar(frame.buffer_mut(), plot, view, (&scale, &labels), off);
 }

@@ -13,6 +13,7 @@ mod inputs;
 mod inputs_view;
 mod margin_map;
 mod overlay;
+pub mod pane_views;
 mod paper_line;
 mod phase_words;
 mod readout;
@@ -70,7 +71,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
         );
     }
     if let Some(r) = panes.trajectory {
-        trajectory::draw(frame, r, app);
+        trajectory::draw(frame, r, &pane_views::Trajectory::of(app));
     }
     if let Some(r) = panes.readout {
         readout::draw(frame, r, &readout_view::Readout::of(app));
@@ -78,7 +79,7 @@ fn draw_panes(frame: &mut Frame, app: &App) {
     // A batted ball has no swing to vary nor impact to step through.
     if let Some(r) = panes.heatmap {
         if app.is_swing() {
-            heatmap::draw(frame, r, app);
+            heatmap::draw(frame, r, &pane_views::Surface::of(app));
         } else {
             swing_only(
                 frame,
@@ -90,16 +91,16 @@ fn draw_panes(frame: &mut Frame, app: &App) {
     }
     if let Some(r) = panes.impact {
         if app.is_swing() {
-            impact::draw(frame, r, app);
+            impact::draw(frame, r, &pane_views::Impact::of(app));
         } else {
             swing_only(frame, r, (" Impact ", "The impact"), &app.theme);
         }
     }
     if let Some(r) = panes.figure {
-        figure::draw(frame, r, app);
+        figure::draw(frame, r, &pane_views::Figure::of(app));
     }
     if let Some(r) = panes.field {
-        field::draw(frame, r, app);
+        field::draw(frame, r, &pane_views::Field::of(app, r));
     }
     status_line(frame, panes.status, app);
     match &app.mode {

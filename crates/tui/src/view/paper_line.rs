@@ -4,6 +4,7 @@
 
 use ratatui::text::{Line, Span};
 
+use super::pane_views::InUnits;
 use super::readout::angle;
 use super::readout_view::Readout;
 use crate::shown::undercut_text;

@@ -6,6 +6,7 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
+use super::pane_views::InUnits;
 use super::readout_view::Readout;
 use crate::app::{App, OptimumState};
 use crate::format::signed;

@@ -9,7 +9,7 @@ use model::launch::Flown;
 use model::park::Park;
 use model::scene::Scene;
 use preset::Fence;
-use units::{Quantity, Unit, UnitSystem};
+use units::UnitSystem;
 
 /// The readout's view of the explorer's state.
 #[derive(Clone, Copy, Debug)]
@@ -50,21 +50,6 @@ impl<'a> Readout<'a> {
             in_park_air: app.in_park_air(),
             at_parks: app.at_parks,
         }
-    }
-
-    /// The unit a quantity is shown in.
-    pub fn unit(&self, quantity: Quantity) -> Unit {
-        quantity.in_system(self.units)
-    }
-
-    /// A distance in the units shown: (value, unit).
-    pub fn distance(&self, metres: f64) -> (f64, &'static str) {
-        crate::shown::distance(self.units, metres)
-    }
-
-    /// The range as every pane shows it ([`crate::shown::range_text`]).
-    pub fn range_text(&self, metres: f64) -> String {
-        crate::shown::range_text(self.units, metres)
     }
 
     /// Whether the scene is a swing (not a batted ball on its own).

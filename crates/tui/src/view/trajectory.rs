@@ -9,24 +9,25 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Block;
 
 use super::chart::{self, AxisSpec, Ticks};
+use super::pane_views::InUnits;
+use super::pane_views::Trajectory;
 use crate::app::App;
 
-pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
-    let flight = &app.flown.flight;
-    let (k, unit) = app.distance(1.0);
+pub fn draw(frame: &mut Frame, area: Rect, view: &Trajectory) {
+    let flight = view.flight;
+    let (k, unit) = view.distance(1.0);
     let scaled = |path: &[(f64, f64)]| -> Vec<(f64, f64)> {
         path.iter().map(|&(x, y)| (k * x, k * y)).collect()
     };
-    let (path, optimal_path) = (scaled(&app.path), scaled(&app.optimal_path));
-    let pinned_path = app.pin.as_ref().map_or(Vec::new(), |p| scaled(&p.path));
-    let (pin_range, pin_apex) = app
+    let (path, optimal_path) = (scaled(view.path), scaled(view.optimal_path));
+    let pinned_path = view.pin.map_or(Vec::new(), |p| scaled(&p.path));
+    let (pin_range, pin_apex) = view
         .pin
-        .as_ref()
         .map_or((0.0, 0.0), |p| (p.flown.flight.range, p.flown.flight.apex));
-    let optimal_range = app.optimum.filter(|o| o.done).map_or(0.0, |o| o.best.range);
-    let optimal_apex = app.optimal_path.iter().map(|p| p.1).fold(0.0, f64::max);
-    let fence = app
-        .side_fence()
+    let optimal_range = view.optimal_range;
+    let optimal_apex = view.optimal_path.iter().map(|p| p.1).fold(0.0, f64::max);
+    let fence = view
+        .fence
         .map_or((0.0, 0.0), |(distance, height)| (k * distance, k * height));
     // The x axis reaches past the farthest landing and the fence; a ball
     // carried back over the plate (a steep launch with backspin) lands
@@ -49,34 +50,37 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
     let fence_line = [(fence.0, 0.0), (fence.0, fence.1)];
     // Each path's marker and legend glyph: told apart by colour, or by
     // glyph where there is none.
-    let (now, best, pin) = (app.theme.path(0), app.theme.path(1), app.theme.path(2));
+    let (now, best, pin) = (view.theme.path(0), view.theme.path(1), view.theme.path(2));
     let mut datasets = Vec::new();
     if !optimal_path.is_empty() {
-        datasets.push(chart::curve(best.0, app.theme.optimal, &optimal_path).name("optimal"));
+        datasets.push(chart::curve(best.0, view.theme.optimal, &optimal_path).name("optimal"));
     }
     if !pinned_path.is_empty() {
-        datasets.push(chart::curve(pin.0, app.theme.pinned, &pinned_path).name("pinned"));
+        datasets.push(chart::curve(pin.0, view.theme.pinned, &pinned_path).name("pinned"));
     }
-    datasets.push(chart::curve(now.0, app.theme.swing, &path).name("this swing"));
-    datasets.push(chart::points(Marker::Dot, app.theme.apex, &apex).name("apex"));
-    datasets.push(chart::points(Marker::Block, app.theme.landing, &landing).name("landing"));
-    if app.side_fence().is_some() {
-        datasets.push(chart::line(app.theme.fence, &fence_line).name("fence"));
+    datasets.push(chart::curve(now.0, view.theme.swing, &path).name("this swing"));
+    datasets.push(chart::points(Marker::Dot, view.theme.apex, &apex).name("apex"));
+    datasets.push(chart::points(Marker::Block, view.theme.landing, &landing).name("landing"));
+    if view.fence.is_some() {
+        datasets.push(chart::line(view.theme.fence, &fence_line).name("fence"));
     }
     // The legend sits in the border, where it hides no data.
-    let mut legend = vec![Span::styled(format!("{} now ", now.1), app.theme.swing)];
+    let mut legend = vec![Span::styled(format!("{} now ", now.1), view.theme.swing)];
     if !optimal_path.is_empty() {
-        legend.push(Span::styled(format!("{} best ", best.1), app.theme.optimal));
+        legend.push(Span::styled(
+            format!("{} best ", best.1),
+            view.theme.optimal,
+        ));
     }
     if !pinned_path.is_empty() {
-        legend.push(Span::styled(format!("{} pin ", pin.1), app.theme.pinned));
+        legend.push(Span::styled(format!("{} pin ", pin.1), view.theme.pinned));
     }
     let legend = Line::from(legend);
     let numbers = if flight.landed {
         format!(
             "{}{}, apex {:.1} {unit} ",
-            app.range_text(flight.range),
-            crate::app::App::landing_call(flight).map_or(String::new(), |c| format!(" {c}")),
+            view.range_text(flight.range),
+            App::landing_call(flight).map_or(String::new(), |c| format!(" {c}")),
             k * flight.apex
         )
     } else {
@@ -91,7 +95,7 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
         format!(" {numbers}")
     };
     let block = Block::bordered()
-        .title(Span::styled(title, app.theme.title))
+        .title(Span::styled(title, view.theme.title))
         .title_top(legend.right_aligned());
     let inner = block.inner(area);
     frame.render_widget(block, area);
@@ -114,6 +118,6 @@ pub fn draw(frame: &mut Frame, area: Rect, app: &App) {
             &AxisSpec::new(format!("x ({unit})"), x),
             &AxisSpec::new(format!("y ({unit})"), y),
         ),
-        app.theme.dim,
+        view.theme.dim,
     );
 }
