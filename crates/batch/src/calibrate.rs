@@ -12,13 +12,15 @@ use analysis::precision::Purpose;
 use analysis::savant;
 
 use crate::columns::SavantColumn;
+use crate::header::header_of;
 use crate::pieces::{Outcome, Piece, Stage, stream};
 use crate::read::Records;
+use crate::read::read_header;
 use crate::row::Job;
 use crate::setup::Setup;
-use crate::swing::solve_row;
+use crate::swing_solve::solve_row;
 use crate::tally::LOWEST_FLIGHT;
-use crate::{header_of, plural};
+use crate::words::plural;
 
 /// A group's rows fewer than this are named, not fitted: the same minimum
 /// for every fit, grouped or not.
@@ -130,13 +132,13 @@ pub fn measured(
     note: &mut dyn FnMut(&str),
 ) -> Result<Measurements, String> {
     let mut records = Records::new(input);
-    let (names, line) = crate::read_header(&mut records)?.ok_or("the input is empty")?;
+    let (names, line) = read_header(&mut records)?.ok_or("the input is empty")?;
     if let Some(by) = by {
         setup.keep = vec![by.column(&names)?.to_owned()];
     }
     let header = crate::header::Header::new((names, line), setup)?;
     let sprayed = header.has(SavantColumn::HcX) || header.has(SavantColumn::HcY);
-    let priors = setup.priors(&header);
+    let priors = header.priors(setup);
     let setup = &*setup;
     let options = Purpose::Solve.flight_options();
     let finish = |piece: &mut Piece<Made>| {

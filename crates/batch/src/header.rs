@@ -2,14 +2,20 @@
 //! once: a column repeated, a launch that no column gives, a mapping
 //! (`--column`) that names no column are refused here, before any row.
 
+use std::io::BufRead;
+
+use analysis::bat_tracking;
 use model::keys::{AIR_KEYS, ATMOSPHERE_KEYS, Key, LAUNCH_KEYS as SCENE_LAUNCH_KEYS, TEXT_KEYS};
 use model::scene::{Scene, SceneKind};
-use preset::{FIELD_KEYS, escape_cut};
+use preset::{FIELD_KEYS, Source, escape_cut};
 
+use crate::Setup;
 use crate::columns::{
     self, Column, LAUNCH_KEYS, NEEDED_FOR_SWINGS, SavantColumn, TABLE, Unit, column_of,
 };
-use crate::{Setup, plural};
+use crate::read::{Records, read_header};
+use crate::setup::Priors;
+use crate::words::plural;
 
 /// `fly --batch`'s long help: the columns read, made from the table and
 /// the keys, so that it cannot fall behind them.
@@ -354,4 +360,40 @@ impl Header {
             .map(|(n, _)| n.as_str())
             .collect()
     }
+}
+
+/// What a tracked row is solved at where it does not say, from the header
+/// and the command line.
+impl Header {
+    /// The bat's tilt a tracked row without `swing_path_tilt` is solved
+    /// at: MLB's league average ([`bat_tracking::LEAGUE_SWING_PATH_TILT`]),
+    /// unless `--set bat.tilt` or a `bat.tilt` column gives one (`None`:
+    /// the row's scene's).
+    fn tilt_prior(&self, setup: &Setup) -> Option<f64> {
+        (!setup.gave("bat.tilt") && !self.tilt_given)
+            .then_some(bat_tracking::LEAGUE_SWING_PATH_TILT)
+    }
+
+    /// What a tracked row is solved at where it does not say: the tilt
+    /// ([`Header::tilt_prior`]), and whether its season's bat replaces the
+    /// preset's. It does unless `--set` or a column gives
+    /// `bat.effective_mass`, or the preset is the user's own (a file, as
+    /// `calibrate --impact --save` writes): a bundled preset's bat is the
+    /// paper's, of 1998.
+    pub(crate) fn priors(&self, setup: &Setup) -> Priors {
+        let bat_given = setup.gave("bat.effective_mass")
+            || (self.columns).contains(&Column::Input("bat.effective_mass"));
+        Priors {
+            tilt: self.tilt_prior(setup),
+            season_bats: !bat_given && setup.base.source == Source::Bundled,
+        }
+    }
+}
+
+/// The header of `records`, checked against `setup`; refused when empty.
+pub(crate) fn header_of<R: BufRead>(
+    records: &mut Records<R>,
+    setup: &Setup,
+) -> Result<Header, String> {
+    Header::new(read_header(records)?.ok_or("the input is empty")?, setup)
 }

@@ -1,8 +1,9 @@
 //! homerun's batch pipeline: a CSV of launches, or a Baseball Savant
 //! export as it comes, read once and taken down one staged path: the
 //! columns ([`columns`]: one table), the header ([`header`]), records read
-//! bounded ([`read`]), each row made a scene ([`row`]), its swing solved
-//! ([`swing`]), flown ([`flights`]) in pieces on the thread pool
+//! bounded ([`read`]), each row made a scene ([`row`]) with its tracking
+//! cells ([`swing`]), its swing solved ([`swing_solve`]), flown
+//! ([`flights`], each park in its air: [`park_air`]) in pieces on the thread pool
 //! ([`pieces`]), and given to a sink: the rows as CSV or JSON and the
 //! summary ([`fly_rows`]), the measured flights `calibrate` fits
 //! ([`calibrate`]), the tracked swings of `calibrate --impact`, the swings
@@ -10,7 +11,9 @@
 //! bit, whatever its neighbours.
 //!
 //! Arrows point down: this crate imports the core (numerics, units,
-//! model, preset, analysis) and is imported by the frontends.
+//! model, preset, analysis) and is imported by the frontends; inside it,
+//! each module imports only those before it on that path, never in a loop
+//! (a test reads the sources and holds it).
 
 use std::io::{self, BufRead, Write};
 
@@ -31,8 +34,10 @@ mod row;
 mod setup;
 mod summary;
 mod swing;
+mod swing_solve;
 pub mod swings;
 mod tally;
+mod words;
 
 pub use analysis::shown::Shown;
 pub use header::{Header, columns_help};
@@ -43,7 +48,8 @@ pub use summary::band_name;
 pub use tally::Tally;
 
 use pieces::Stage;
-use read::Records;
+use read::{Records, read_header};
+use words::plural;
 
 /// How rows are printed.
 #[derive(Clone, Copy, Debug, Default)]
@@ -120,44 +126,6 @@ pub fn fly_rows(
     )?;
     tally.close(&outcome, &header);
     Ok((outcome, tally))
-}
-
-/// "s" after a count other than one: "1 row", "2 rows".
-pub(crate) fn plural(count: usize) -> &'static str {
-    if count == 1 { "" } else { "s" }
-}
-
-/// The header's names (a byte-order mark dropped), `None` for an empty
-/// input, or why the input is no CSV of launches.
-pub(crate) fn read_header<R: BufRead>(
-    records: &mut Records<R>,
-) -> Result<Option<(Vec<String>, usize)>, String> {
-    let (mut bytes, mut ends) = (Vec::new(), Vec::new());
-    match records.next(&mut bytes, &mut ends, false) {
-        Ok(None) => Ok(None),
-        Ok(Some(read)) if read.too_long => Err(format!(
-            "line {} (the header): longer than {} KiB: not a CSV of launches",
-            read.line,
-            MAX_RECORD_BYTES / 1024
-        )),
-        Ok(Some(read)) => {
-            let mut lossy = read::Lossy::default();
-            let fields = read::Fields::of(&bytes, &ends, &mut lossy);
-            Ok(Some((
-                fields.iter().map(str::to_owned).collect(),
-                read.line,
-            )))
-        }
-        Err(stop) => Err(stop.to_string()),
-    }
-}
-
-/// The header of `records`, checked against `setup`; refused when empty.
-pub(crate) fn header_of<R: BufRead>(
-    records: &mut Records<R>,
-    setup: &Setup,
-) -> Result<Header, String> {
-    Header::new(read_header(records)?.ok_or("the input is empty")?, setup)
 }
 
 /// One note for the columns ignored and the launch values the rows take

@@ -17,7 +17,7 @@ use crate::own_launch::SwingLaunches;
 use crate::read::{Fields, Lossy, MAX_RECORD_BYTES, Read, Records};
 use crate::row::{Job, Row, parse_row};
 use crate::setup::Setup;
-use crate::swing::solve_row;
+use crate::swing_solve::solve_row;
 
 /// Records a piece holds: small enough that a round's last pieces leave
 /// no thread idle for long (a few ms of flights), large enough that
@@ -232,7 +232,7 @@ impl<T> Piece<T> {
             }
         }
         if stage >= Stage::Solved && setup.solve_swings {
-            let priors = setup.priors(header);
+            let priors = header.priors(setup);
             (self.jobs.iter_mut()).for_each(|job| solve_row(job, setup.spray, priors));
         }
         if stage == Stage::Flown {

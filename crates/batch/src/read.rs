@@ -288,3 +288,28 @@ impl<'a> Fields<'a> {
         (0..self.len()).map(|i| self.get(i))
     }
 }
+
+/// The header's names (a byte-order mark dropped), `None` for an empty
+/// input, or why the input is no CSV of launches.
+pub(crate) fn read_header<R: BufRead>(
+    records: &mut Records<R>,
+) -> Result<Option<(Vec<String>, usize)>, String> {
+    let (mut bytes, mut ends) = (Vec::new(), Vec::new());
+    match records.next(&mut bytes, &mut ends, false) {
+        Ok(None) => Ok(None),
+        Ok(Some(read)) if read.too_long => Err(format!(
+            "line {} (the header): longer than {} KiB: not a CSV of launches",
+            read.line,
+            MAX_RECORD_BYTES / 1024
+        )),
+        Ok(Some(read)) => {
+            let mut lossy = Lossy::default();
+            let fields = Fields::of(&bytes, &ends, &mut lossy);
+            Ok(Some((
+                fields.iter().map(str::to_owned).collect(),
+                read.line,
+            )))
+        }
+        Err(stop) => Err(stop.to_string()),
+    }
+}

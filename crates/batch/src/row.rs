@@ -10,13 +10,14 @@ use model::spin_estimate::Side;
 use preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use units::{Quantity, UnitSystem, significant};
 
+use crate::Setup;
 use crate::columns::{Column, LAUNCH_KEYS, SavantColumn, Unit};
 use crate::header::{Header, launch_key};
 use crate::kinds::{Called, Kind};
 use crate::own_launch::SwingLaunches;
 use crate::read::Fields;
 use crate::swing::{RowSwing, SwingCells};
-use crate::{Setup, plural};
+use crate::words::plural;
 
 /// Exactly 0.3048 m to the foot (Statcast's distances are in feet).
 const METRES_PER_FOOT: f64 = 0.3048;

@@ -1,14 +1,10 @@
 //! What every row of a batch shares: the preset, the parks, and what the
 //! command line chose.
 
-use analysis::bat_tracking;
 use analysis::savant::Spray;
 use model::park::{self, GivenWeather};
+use preset::Preset;
 use preset::parks::Parks;
-use preset::{Preset, Source};
-
-use crate::columns::Column;
-use crate::header::Header;
 
 /// What every row of a batch shares.
 pub struct Setup<'a> {
@@ -78,30 +74,6 @@ impl<'a> Setup<'a> {
     /// Whether `--set` gave `key`.
     pub(crate) fn gave(&self, key: &str) -> bool {
         self.given_keys.iter().any(|k| k == key)
-    }
-
-    /// The bat's tilt a tracked row without `swing_path_tilt` is solved
-    /// at: MLB's league average ([`bat_tracking::LEAGUE_SWING_PATH_TILT`]),
-    /// unless `--set bat.tilt` or a `bat.tilt` column gives one (`None`:
-    /// the row's scene's).
-    pub(crate) fn tilt_prior(&self, header: &Header) -> Option<f64> {
-        (!self.gave("bat.tilt") && !header.tilt_given)
-            .then_some(bat_tracking::LEAGUE_SWING_PATH_TILT)
-    }
-
-    /// What a tracked row is solved at where it does not say: the tilt
-    /// ([`Setup::tilt_prior`]), and whether its season's bat replaces the
-    /// preset's. It does unless `--set` or a column gives
-    /// `bat.effective_mass`, or the preset is the user's own (a file, as
-    /// `calibrate --impact --save` writes): a bundled preset's bat is the
-    /// paper's, of 1998.
-    pub(crate) fn priors(&self, header: &Header) -> Priors {
-        let bat_given = self.gave("bat.effective_mass")
-            || (header.columns).contains(&Column::Input("bat.effective_mass"));
-        Priors {
-            tilt: self.tilt_prior(header),
-            season_bats: !bat_given && self.base.source == Source::Bundled,
-        }
     }
 
     /// The index of the first park that answers to `code` (any case).

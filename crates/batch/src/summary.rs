@@ -3,7 +3,10 @@
 //! (`--summary-file`), every number in the units shown, keys named with
 //! their unit outside SI.
 
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
+
+use analysis::bat_tracking::season_bat;
 
 use analysis::savant::Spray;
 use serde_json::{Value, json};
@@ -11,7 +14,8 @@ use units::Quantity;
 
 use crate::kinds::KIND_NAMES;
 use crate::tally::{BANDS, Tally, band_bounds};
-use crate::{Setup, Shown, plural};
+use crate::words::plural;
+use crate::{Setup, Shown};
 
 /// A band's name in a table: "< 10°", "10–20°", "50°+".
 pub fn band_name((from, to): (Option<f64>, Option<f64>)) -> String {
@@ -307,11 +311,7 @@ impl Tally {
                 e[1], e[0], e[2]
             );
         }
-        let _ = write!(
-            line,
-            "; bat: {}",
-            crate::swing::bats_named(&swings.bats).join(", ")
-        );
+        let _ = write!(line, "; bat: {}", bats_named(&swings.bats).join(", "));
         let reasons: Vec<String> = (swings.unsolved.iter().map(|(why, n)| format!("{n} {why}")))
             .chain(swings.untracked.iter().map(|(why, n)| format!("{n} {why}")))
             .collect();
@@ -510,8 +510,38 @@ impl Tally {
             value["swings"] = json!(bands);
         }
         if !self.swings.bats.is_empty() {
-            value["bats"] = crate::swing::bats_json(&self.swings.bats);
+            value["bats"] = bats_json(&self.swings.bats);
         }
         value
     }
+}
+
+/// The bats a batch's tracked rows were solved with
+/// ([`Swings::bats`](crate::tally::Swings)), for the summary line: "17436 with the
+/// 2024 bat: M_B 0.884 kg, …".
+pub(crate) fn bats_named(bats: &BTreeMap<(Option<i32>, u64), usize>) -> Vec<String> {
+    (bats.iter())
+        .map(
+            |(&(season, mass), n)| match season.and_then(|s| season_bat(Some(s))) {
+                Some(bat) => format!("{n} with the {}", bat.source),
+                None => format!("{n} with the preset's (M_B {:.3} kg)", f64::from_bits(mass)),
+            },
+        )
+        .collect()
+}
+
+/// The same as the summary's JSON: `[{"bat", "effective_mass", "source",
+/// "tracked"}]`, masses in kg.
+pub(crate) fn bats_json(bats: &BTreeMap<(Option<i32>, u64), usize>) -> serde_json::Value {
+    (bats.iter())
+        .map(|(&(season, mass), n)| {
+            let bat = season.and_then(|s| season_bat(Some(s)));
+            serde_json::json!({
+                "bat": season.map_or("preset".to_owned(), |s| s.to_string()),
+                "effective_mass": f64::from_bits(mass),
+                "source": bat.map_or("the preset's bat", |b| b.source),
+                "tracked": n,
+            })
+        })
+        .collect()
 }

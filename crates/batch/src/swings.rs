@@ -61,7 +61,7 @@ fn each_solved_swing(
 ) -> Result<(usize, usize), String> {
     setup.solve_swings = true;
     let mut records = Records::new(input);
-    let (names, line) = crate::read_header(&mut records)?.ok_or("the input is empty")?;
+    let (names, line) = crate::read::read_header(&mut records)?.ok_or("the input is empty")?;
     setup.keep = (NAMING.iter())
         .filter(|n| names.iter().any(|m| m.trim() == **n))
         .map(|n| (*n).to_owned())

@@ -675,4 +675,5 @@ fn missing_values_units_and_compared_columns() {
 }
 
 /// Each park in its own air: the parks settled from a row's own flight.
+mod imports;
 mod own_air;

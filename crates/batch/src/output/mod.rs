@@ -15,6 +15,8 @@ use model::clearing::Clearing;
 use preset::escape_cut;
 use units::Quantity;
 
+mod swing;
+
 /// The output's columns, in order: then [`STATCAST_COLUMNS`] when the input
 /// has Statcast's distance, then `--keep`'s.
 pub const OUTPUT_COLUMNS: [&str; 19] = [
@@ -70,7 +72,7 @@ const STATCAST_COLUMNS: [(&str, Quantity); 2] = [
 
 /// The CSV header line.
 pub(crate) fn csv_header(statcast: bool, setup: &Setup, shown: Shown) -> String {
-    let swing = crate::swing::CSV_COLUMNS
+    let swing = swing::CSV_COLUMNS
         .iter()
         .copied()
         .filter(|_| setup.swing_columns);
@@ -217,7 +219,7 @@ impl CsvLine<'_> {
         };
         let _ = write!(out, "{},", job.line);
         if self.setup.swing_columns {
-            crate::swing::write_csv(self, out, job);
+            swing::write_csv(self, out, job);
         }
         number(out, Quantity::Speed, Some(launch.speed), 4);
         number(out, Quantity::Angle, Some(launch.angle), 6);
@@ -353,7 +355,7 @@ struct LaunchJson {
     spin: f64,
 }
 
-use crate::swing::{ImpactJson, PitchJson, SwingJson};
+use swing::{ImpactJson, PitchJson, SwingJson};
 
 #[derive(Serialize)]
 struct ParksJson<'a> {
@@ -377,7 +379,7 @@ fn json_line(
 ) {
     let known = job.fence_known();
     let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.clearing);
-    let swing = crate::swing::json_parts(job);
+    let swing = swing::json_parts(job);
     let parks = setup.parks.parks.iter().zip(cleared);
     let line = JsonLine {
         all_parks: setup.all_parks.then(|| {
