@@ -114,6 +114,8 @@ pub(crate) fn fly_chunk(
         &mut scratch.summaries,
     );
     let width = parks.len() + 1;
+    let nearest_wall =
+        (parks.iter()).fold(f64::INFINITY, |least, fence| least.min(fence.nearest()));
     let mut flown = 0;
     let mut in_own_air: Vec<(usize, SceneFlight)> = Vec::new();
     let mut pending = Vec::new();
@@ -140,11 +142,22 @@ pub(crate) fn fly_chunk(
         if !setup.one_flight {
             let own = &ready.scene.environment;
             let airs = scratch.airs.of(own, job.given, &setup.parks.parks);
-            let settles = park_air::settles(&ready.scene) && !setup.all_parks;
-            if settles && park_air::short_everywhere(&summary, own.air_density, airs, parks) {
-                // Short of every wall in every park's air: the row's own
-                // verdicts are every park's.
-            } else if settles {
+            if setup.all_parks || !park_air::settles(&ready.scene) {
+                // Flown in every park's air but its own (`--all-parks`
+                // prints the margins too).
+                for (k, air) in airs
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, air)| **air != own.air())
+                {
+                    let mut there = ready.scene;
+                    there.environment.set_air(*air);
+                    in_own_air.push((from + k, launch::scene_start(&there).0));
+                }
+            } else if !park_air::short_everywhere(&summary, own.air_density, airs, nearest_wall) {
+                // Settled from this flight and as few more as it takes
+                // (a row short of every wall in every park's air keeps
+                // its own verdicts).
                 pending.push(park_air::Pending {
                     scene: ready.scene,
                     launch_direction: ready.launch.direction,
@@ -161,18 +174,6 @@ pub(crate) fn fly_chunk(
                             .collect(),
                     }],
                 });
-            } else {
-                // Flown in every park's air but its own (`--all-parks`
-                // prints the margins too).
-                for (k, air) in airs
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, air)| **air != own.air())
-                {
-                    let mut there = ready.scene;
-                    there.environment.set_air(*air);
-                    in_own_air.push((from + k, launch::scene_start(&there).0));
-                }
             }
         }
         out.push(Ok(RowFlight {

@@ -389,21 +389,20 @@ pub(crate) fn settles(scene: &Scene) -> bool {
     drag_without_reynolds && launch_given && still
 }
 
-/// Whether a flight (landed `range` m from the plate, in air of density
-/// `own`) comes down short of every wall of `parks` in any of `airs`:
+/// Whether a flight (in air of density `own`) comes down short of
+/// `nearest_wall` (m, the nearest wall of every park) in any of `airs`:
 /// then its own verdict, short, is every park's, and no park need be
 /// settled one by one ([`settled`]'s first answer, for them all at once).
 pub(crate) fn short_everywhere(
     flight: &FlightSummary,
     own: f64,
     airs: &[Air],
-    parks: &[&Fence],
+    nearest_wall: f64,
 ) -> bool {
     let change = (airs.iter()).fold(0.0, |most: f64, air| {
         most.max(density_change(own, air.density))
     });
-    let nearest = (parks.iter()).fold(f64::INFINITY, |least, fence| least.min(fence.nearest()));
-    flight.landed && flight.range.abs() * (1.0 + RANGE_PER_DENSITY * change) < nearest
+    flight.landed && flight.range.abs() * (1.0 + RANGE_PER_DENSITY * change) < nearest_wall
 }
 
 /// The relative change in density from `own` to `there` (kg/m³).

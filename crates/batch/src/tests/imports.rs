@@ -47,12 +47,12 @@ fn imports() -> BTreeMap<String, BTreeSet<String>> {
                         .map_or(word.as_str(), |(_, module)| module);
                     named.insert(module.to_owned());
                 }
-                // `crate::{A, B}`: the root's re-exports.
-                for (at, _) in line.match_indices("crate::{") {
-                    for (item, module) in reexported {
-                        if line[at..].contains(item) {
-                            named.insert(module.to_owned());
-                        }
+            }
+            // `crate::{A, B}`: the root's re-exports.
+            for (at, _) in line.match_indices("crate::{") {
+                for (item, module) in reexported {
+                    if line[at..].contains(item) {
+                        named.insert(module.to_owned());
                     }
                 }
             }
