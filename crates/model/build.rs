@@ -66,7 +66,16 @@ fn main() {
                 number(&p["height"])
             );
         }
-        out.push_str("] },\n");
+        let home: Vec<String> = park
+            .get("home")
+            .and_then(|h| h.as_array())
+            .map(|h| {
+                h.iter()
+                    .map(|s| format!("{:?}", s.as_str().expect("a home span")))
+                    .collect()
+            })
+            .unwrap_or_default();
+        let _ = writeln!(out, "], home: &[{}] }},", home.join(", "));
     }
     out.push(']');
     let path =

@@ -288,6 +288,7 @@ def main():
             + ", ".join(f"{k} = {pub[s] * FOOT:.3f}" for k, s in
                         (("left_line", "lf"), ("center", "cf"), ("right_line", "rf")))
             + f" }}  # {p['lf']}, {p['cf']}, {p['rf']} ft",
+            "home = [" + ", ".join(f'"{h}"' for h in p["home"].split("|") if h) + "]",
             "fence = [",
         ]
         for d, r, h in points:

@@ -103,6 +103,14 @@ pub(super) fn profile(park: &Park, json: bool, shown: Shown) -> String {
             escape_cut(&park.aliases.join(", "), 80)
         );
     }
+    if !park.home.is_empty() {
+        let _ = writeln!(
+            out,
+            "home of {} {} (a batch row dated otherwise is at no park)",
+            escape_for_terminal(&park.code),
+            model::park::spans_text(&park.home)
+        );
+    }
     if let Some(p) = park.published {
         let _ = writeln!(
             out,
@@ -172,8 +180,8 @@ fn profile_points(park: &Park) -> Vec<FencePoint> {
 }
 
 /// A park in JSON, SI: `code`, `aliases`, `name`, `elevation` (m),
-/// `center_field_bearing` (° from true north), `published` (m, or null)
-/// and `fence`, its points as `{direction (rad), distance (m), height (m)}`.
+/// `center_field_bearing` (° from true north), `published` (m, or null),
+/// `home` (its spans as a park file writes them, "1998..2024") and `fence`, its points as `{direction (rad), distance (m), height (m)}`.
 pub(super) fn park_json(park: &Park) -> Value {
     json!({
         "code": park.code,
@@ -182,6 +190,7 @@ pub(super) fn park_json(park: &Park) -> Value {
         "elevation": park.elevation,
         "center_field_bearing": park.center_field_bearing,
         "published": park.published,
+        "home": park.home.iter().map(model::park::HomeSpan::as_written).collect::<Vec<_>>(),
         "fence": park.fence.points(),
     })
 }

@@ -313,9 +313,10 @@ fn calibrate_by_month_reads_either_date_and_saves_a_preset_a_group() {
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("\"yesterday\" is neither YYYY-MM-DD nor M/D/YYYY"),
+        err.contains("game_date = \"yesterday\": expected a date, YYYY-MM-DD or M/D/YYYY"),
         "{err}"
     );
+    assert!(err.contains("line 2: game_date"), "{err}");
 }
 
 #[test]

@@ -21,7 +21,14 @@ const FOOT: f64 = 0.3048;
 /// the hit coordinates kept to tell which rows had them.
 fn default_pipeline(args: &[&str]) -> Vec<Value> {
     let out = common::assert_command()
-        .args(["fly", "--batch", SAMPLE, "--json", "--keep", "hc_x,hc_y"])
+        .args([
+            "fly",
+            "--batch",
+            SAMPLE,
+            "--json",
+            "--keep",
+            "hc_x,hc_y,home_team",
+        ])
         .args(args)
         .output()
         .unwrap();
@@ -63,14 +70,20 @@ fn the_default_pipeline_lands_within_its_measured_error() {
     // The goal, with room: within 10 ft, ≤ 13 ft.
     assert!(bias.abs() < 10.0 && absolute <= 13.0);
 
-    // Measured: 203 of the 239 (84.9 %) clear their own park's fence; the
-    // goal is 80 %.
-    let cleared = rows
-        .iter()
-        .filter(|r| comparable(r) && r["fence"]["outcome"] == "clears")
+    // Measured: 196 of the 231 judged at their park (84.8 %) clear its
+    // fence; the goal is 80 %. The other 8 are the Rangers' of 2019, hit at
+    // Globe Life Park, not the bundled Globe Life Field (2020 on): at no park.
+    let judged: Vec<&Value> = (rows.iter())
+        .filter(|r| comparable(r) && r["fence"]["park"] != "none")
+        .collect();
+    assert_eq!(judged.len(), 231);
+    let away = rows.iter().filter(|r| r["fence"]["park"] == "none");
+    assert!(away.clone().all(|r| r["kept"]["home_team"] == "TEX"));
+    let cleared = (judged.iter())
+        .filter(|r| r["fence"]["outcome"] == "clears")
         .count();
-    assert!(cleared >= 200, "{cleared} of 239 clear their own park");
-    assert!(cleared as f64 / 239.0 >= 0.8);
+    assert!(cleared >= 193, "{cleared} of 231 clear their own park");
+    assert!(cleared as f64 / 231.0 >= 0.8);
     // Each row names its own park, and the count of parks cleared is its
     // list of codes.
     for r in &rows {

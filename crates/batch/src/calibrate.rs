@@ -91,7 +91,7 @@ impl By {
         let date = crate::dates::year_month;
         let unreadable = || {
             format!(
-                "--by: date {:?} is neither YYYY-MM-DD nor M/D/YYYY",
+                "--by: date {:?} is neither YYYY-MM-DD nor M/D/YYYY (nor M/D/YY)",
                 preset::cut(cell, 40)
             )
         };
@@ -323,7 +323,9 @@ mod tests {
         assert_eq!(By::Month.group("5/3/2022 12:00").unwrap(), "2022-05");
         assert_eq!(By::Season.group("2025").unwrap(), "2025");
         assert_eq!(By::Season.group("4/30/2024").unwrap(), "2024");
-        assert!(By::Month.group("10/1/20").is_err());
+        // Yakkertech's two-digit year; three digits are no year.
+        assert_eq!(By::Month.group("10/1/20").unwrap(), "2020-10");
+        assert!(By::Month.group("10/1/202").is_err());
         assert!(
             By::Month
                 .group("yesterday")

@@ -75,6 +75,11 @@ pub enum SavantColumn {
     /// Savant's kind of ball and the play's result: counted only.
     BbType,
     Events,
+    /// The season (a year), and the date: the row's park is its team's
+    /// home on some days only ([`model::park::Park::home_on`]); a tracked
+    /// swing's season picks its bat ([`analysis::bat_tracking::season_bat`]).
+    Season,
+    Date,
 }
 
 /// A bat-tracking or pitch-tracking column (read when swings are solved).
@@ -92,10 +97,6 @@ pub enum SwingColumn {
     SpinAxis,
     /// The pitch's speed at release (mph): Savant's squared-up.
     ReleaseSpeed,
-    /// The season (a year), or the date whose year is the season: the
-    /// tracked swing's bat ([`analysis::bat_tracking::season_bat`]).
-    Season,
-    Date,
 }
 
 /// What a column of the table becomes.
@@ -248,13 +249,14 @@ pub const TABLE: &[Entry] = &[
     ),
     entry(
         &["game_year", "season"],
-        Swing(W::Season, (1800.0, 2200.0)),
-        "the season: a tracked swing is solved with its season's bat where known",
+        Savant(S::Season),
+        "the season: whether home_team's park was home then, and a tracked swing's bat",
     ),
     entry(
         &["game_date", "Date"],
-        Swing(W::Date, (1800.0, 2200.0)),
-        "the date (YYYY-MM-DD or M/D/YYYY): its year the season, without game_year",
+        Savant(S::Date),
+        "the date (YYYY-MM-DD or M/D/YYYY): whether home_team's park was home that day; \
+         its year the season, without game_year",
     ),
 ];
 

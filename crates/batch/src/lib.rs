@@ -19,6 +19,7 @@ use std::io::{self, BufRead, Write};
 
 use preset::escape_cut;
 
+mod away;
 pub mod calibrate;
 pub mod columns;
 mod dates;

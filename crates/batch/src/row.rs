@@ -4,7 +4,7 @@
 use analysis::savant::{RowLaunch, spray_angle};
 use model::aero::UnknownModel;
 use model::keys::{InputBatch, InputError, Key, out_of_range_shown};
-use model::park::GivenWeather;
+use model::park::{AtHome, Day, GivenWeather, Played};
 use model::scene::{Scene, UnknownHand};
 use model::spin_estimate::Side;
 use preset::{FIELD_KEYS, Fence, cut, escape_cut};
@@ -38,6 +38,12 @@ pub(crate) struct Job {
     /// league's team in a Trackman file): the row is at no park, and the
     /// summary names the code, where the row was refused before.
     pub(crate) unknown_park: Option<String>,
+    /// Its `home_team`'s park, where the row was played elsewhere (the
+    /// park was not home on its date, or not for all its season): the row
+    /// is at no park, and the summary names the park and the season.
+    pub(crate) away: Option<Away>,
+    /// Its season: `game_year` (or `season`), else its date's year.
+    pub(crate) season: Option<i32>,
     /// Its batter's side was given as not known ([`SavantCells::side_unknown`]).
     pub(crate) side_unknown: bool,
     /// A fence was given (the preset's `[field]`, `field.*` by --set or a
@@ -69,6 +75,17 @@ impl Job {
     pub(crate) fn fence_known(&self) -> bool {
         self.park.is_some() || self.fence_given
     }
+}
+
+/// A row whose `home_team`'s park was not home when it was played.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Away {
+    /// The park's index.
+    pub park: usize,
+    pub season: Option<i32>,
+    /// `No`, or `Unsure` (only the season known, the park home for part of
+    /// it); `Undated`: no date, judged at the park as bundled.
+    pub at_home: AtHome,
 }
 
 /// What a row turned out to be.
@@ -157,6 +174,8 @@ pub(crate) fn parse_row(
         fence: setup.base.fence.unwrap_or(Fence::generic()),
         park: None,
         unknown_park: None,
+        away: None,
+        season: None,
         side_unknown: false,
         // The presets' [field] is the explorer's drawing, no park's wall.
         fence_given: FIELD_KEYS.iter().any(|k| setup.gave(k.name)),
@@ -307,7 +326,11 @@ fn read_cells(
         scene,
         header.contact_height_given || setup.gave(CONTACT_HEIGHT),
     );
-    let park = setup.park.or(savant.park);
+    let (park, away) = match (setup.park, savant.park) {
+        (Some(park), _) => (Some(park), None),
+        (None, Some(park)) => savant.at_home(park, setup),
+        (None, None) => (None, None),
+    };
     if let Some(index) = park {
         given.park_air(&mut scene.environment, setup.parks.parks[index].elevation);
     }
@@ -359,6 +382,7 @@ fn read_cells(
         estimate_sidespin: !spin_given && !sidespin_given,
     };
     job.park = park;
+    (job.away, job.season) = (away, savant.season());
     job.contact = contact;
     job.called = savant.called;
     job.side_unknown = savant.side_unknown;
@@ -367,6 +391,10 @@ fn read_cells(
     (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);
     Ok(())
 }
+
+/// Statcast's first season: a row without a date at a park that was home
+/// from then on is surely judged where it was played.
+const STATCAST: i32 = 2015;
 
 /// The key `plate_z` gives.
 pub(crate) const CONTACT_HEIGHT: &str = "environment.contact_height";
@@ -412,6 +440,9 @@ pub(crate) struct SavantCells {
     pub plate_height: Option<Option<f64>>,
     /// What Savant called the ball.
     pub called: Called,
+    /// `game_year` (or `season`), and `game_date`.
+    pub season: Option<i32>,
+    pub day: Option<Day>,
 }
 
 impl SavantCells {
@@ -472,8 +503,57 @@ impl SavantCells {
             // A code no park answers to leaves the row at no park, named in
             // the summary ([`Job::unknown_park`]).
             SavantColumn::HomeTeam => self.park = setup.park_of(value),
+            SavantColumn::Season => {
+                let year = number()?;
+                if !(1800.0..=2200.0).contains(&year) {
+                    return Err(format!(
+                        "game_year = {:?}: expected a year from 1800 to 2200",
+                        cut(value, 80)
+                    ));
+                }
+                self.season = Some(year.floor() as i32);
+            }
+            SavantColumn::Date => {
+                self.day = Some(crate::dates::day(value).ok_or_else(|| {
+                    format!(
+                        "game_date = {:?}: expected a date, YYYY-MM-DD or M/D/YYYY",
+                        cut(value, 80)
+                    )
+                })?);
+            }
         }
         Ok(())
+    }
+
+    /// The row's season: `game_year` (or `season`), else its date's year.
+    pub(crate) fn season(&self) -> Option<i32> {
+        self.season.or(self.day.map(Day::year))
+    }
+
+    /// Where a row at `park` (its `home_team`'s) is judged: there, unless
+    /// the park was not its team's home when the row was played (then at
+    /// no park, and why); a row without a date at a park that was not
+    /// always home is judged there, and counted.
+    fn at_home(&self, park: usize, setup: &Setup) -> (Option<usize>, Option<Away>) {
+        let played = match (self.day, self.season) {
+            (Some(day), _) => Played::On(day),
+            (None, Some(year)) => Played::In(year),
+            (None, None) => Played::Unknown,
+        };
+        let at_home = setup.parks.parks[park].home_on(played);
+        let away = Away {
+            park,
+            season: self.season(),
+            at_home,
+        };
+        match at_home {
+            AtHome::Yes => (Some(park), None),
+            AtHome::Undated if setup.parks.parks[park].always_home_since(STATCAST) => {
+                (Some(park), None)
+            }
+            AtHome::Undated => (Some(park), Some(away)),
+            AtHome::No | AtHome::Unsure => (None, Some(away)),
+        }
     }
 
     /// Starts the row's flight where the bat met the pitch: at the pitch's

@@ -129,8 +129,10 @@ impl Tally {
             parts.push(format!("{parks} park{} from {how}, {air}", plural(parks)));
         }
         if self.at_no_park > 0 && parks > 0 {
-            parts.push(format!("{} rows at no park", self.at_no_park));
+            let n = self.at_no_park;
+            parts.push(format!("{n} row{} at no park", plural(n)));
         }
+        parts.extend(self.away.parts(setup));
         if self.side_unknown > 0 {
             parts.push(format!(
                 "{} row{} whose batter's side is given as not known (Undefined, Switch) spin-estimated \
@@ -190,6 +192,10 @@ impl Tally {
                 } else {
                     "it"
                 }
+            ),
+            None if no_fence && self.away.at_no_park() > 0 => String::from(
+                "at no park (home_team's park was not home when they were played: no fence to \
+                 judge; foul balls still called)",
             ),
             None if no_fence => String::from(
                 "at no park (no home_team, no --park: no fence to judge; foul balls still called)",
@@ -484,6 +490,9 @@ impl Tally {
             .collect();
         if !kinds.is_empty() {
             value["kinds"] = json!(kinds);
+        }
+        if !self.away.is_empty() {
+            value["away_from_home_park"] = self.away.json(setup);
         }
         if self.home_runs > 0 {
             value["home_runs"] = json!({ "clear": self.home_runs_clear, "of": self.home_runs,

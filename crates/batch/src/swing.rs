@@ -29,9 +29,6 @@ pub(crate) struct SwingCells {
     pub spin_axis: Option<f64>,
     /// `release_speed` (mph).
     pub release_speed: Option<f64>,
-    /// `game_year` (or `season`), and the year of `game_date`.
-    pub season: Option<f64>,
-    pub date_year: Option<f64>,
 }
 
 /// Why a row with a launch has no swing to solve.
@@ -48,16 +45,6 @@ impl SwingCells {
         value: &str,
     ) -> Result<(), String> {
         let name = crate::columns::name_of(crate::columns::Becomes::Swing(column, (low, high)));
-        if column == SwingColumn::Date {
-            let year = crate::dates::year_month(value).map(|(year, _)| f64::from(year));
-            self.date_year = Some(year.ok_or_else(|| {
-                format!(
-                    "{name} = {:?}: expected a date, YYYY-MM-DD or M/D/YYYY",
-                    cut(value, 80)
-                )
-            })?);
-            return Ok(());
-        }
         let number = value
             .parse::<f64>()
             .ok()
@@ -78,20 +65,9 @@ impl SwingCells {
             SwingColumn::SpinRate => &mut self.spin_rate,
             SwingColumn::SpinAxis => &mut self.spin_axis,
             SwingColumn::ReleaseSpeed => &mut self.release_speed,
-            SwingColumn::Season => &mut self.season,
-            SwingColumn::Date => &mut self.date_year,
         };
         *slot = Some(number);
         Ok(())
-    }
-
-    /// The row's season: `game_year` (or `season`), else its date's year.
-    pub(crate) fn season(&self) -> Option<i32> {
-        // Both read within 1800 to 2200: whole years.
-        self.season
-            .map(|y| y.floor())
-            .or(self.date_year)
-            .map(|y| y as i32)
     }
 
     /// The row's tracked swing in SI, given its measured launch (m/s,

@@ -53,7 +53,7 @@ pub(crate) fn solve_row(job: &mut Job, spray: Spray, priors: Priors) {
     {
         job.scene.bat.tilt = prior;
     }
-    let season = job.tracked.season();
+    let season = job.season;
     let bat = (priors.season_bats && tracked.is_ok())
         .then(|| bat_tracking::season_bat(season))
         .flatten();

@@ -12,6 +12,7 @@ use analysis::savant::DirectionFrom;
 use model::clearing::Outcome as Verdict;
 use numerics::quantile::Quantiles;
 
+use crate::away::AwayRows;
 use crate::columns::{Column, SavantColumn};
 use crate::flights::RowFlight;
 use crate::header::Header;
@@ -94,6 +95,8 @@ pub struct Tally {
     /// Rows whose batter's side was given as not known.
     pub(crate) side_unknown: usize,
     pub(crate) unknown_parks: Vec<(String, usize)>,
+    /// Rows played where their home_team's park was not home.
+    pub(crate) away: AwayRows,
     /// Rows flown from the pitch's height, and those whose `plate_z` was
     /// no height.
     pub(crate) from_plate: usize,
@@ -161,6 +164,9 @@ impl Tally {
             None => self.at_no_park += 1,
         }
         self.side_unknown += usize::from(job.side_unknown);
+        if let Some(away) = &job.away {
+            self.away.count(away);
+        }
         if let Some(code) = &job.unknown_park {
             self.at_unknown_park += 1;
             self.name_unknown_park(code, 1);
@@ -254,6 +260,7 @@ impl Tally {
     /// Adds another piece's tally.
     pub(crate) fn add(&mut self, other: &Tally) {
         self.at_unknown_park += other.at_unknown_park;
+        self.away.add(&other.away);
         for (code, rows) in &other.unknown_parks {
             self.name_unknown_park(code, *rows);
         }

@@ -675,5 +675,6 @@ fn missing_values_units_and_compared_columns() {
 }
 
 /// Each park in its own air: the parks settled from a row's own flight.
+mod home;
 mod imports;
 mod own_air;

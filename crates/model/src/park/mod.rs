@@ -6,6 +6,7 @@
 
 mod air;
 mod fence;
+mod home;
 mod parse;
 
 use std::sync::LazyLock;
@@ -14,6 +15,7 @@ use parse::BundledEntry;
 
 pub use air::GivenWeather;
 pub use fence::{FOUL_LINE, Fence, FenceAt, FenceError, FencePoint};
+pub use home::{AtHome, Day, HOME_FORMS, HomeSpan, Played, at_home, spans_text};
 pub use parse::{ParkError, parse};
 
 /// A ballpark.
@@ -34,6 +36,8 @@ pub struct Park {
     /// The published foul-line and centre-field distances, if known.
     pub published: Option<ParkDimensions>,
     pub fence: Fence,
+    /// When it was its team's home (none: always), [`home`].
+    pub home: Vec<HomeSpan>,
 }
 
 /// A park's published distances (m): to the foul poles and to straightaway
@@ -152,6 +156,21 @@ impl Park {
         self.codes().any(|c| c.eq_ignore_ascii_case(code))
     }
 
+    /// Whether it was its team's home when a row was `played`.
+    pub fn home_on(&self, played: Played) -> AtHome {
+        at_home(&self.home, played)
+    }
+
+    /// Whether it has been home every day from the first of `year` on.
+    pub fn always_home_since(&self, year: i32) -> bool {
+        let first = Day::new(year, 1, 1).expect("the first of January");
+        self.home.is_empty()
+            || self
+                .home
+                .iter()
+                .any(|s| s.contains(first) && s.to.is_none())
+    }
+
     /// A wind's direction in the flight frame: radians from the
     /// centre-field line, positive toward right field (which is clockwise
     /// from centre field seen from above), in (−π, π]. A wind from due
@@ -195,6 +214,7 @@ mod tests {
             center_field_bearing: bearing,
             published: None,
             fence: Fence::uniform(120.0, 3.0),
+            home: vec![],
         }
     }
 

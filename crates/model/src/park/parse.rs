@@ -4,6 +4,7 @@
 use serde::Deserialize;
 
 use super::fence::{Fence, FenceError, FencePoint};
+use super::home::{HOME_FORMS, HomeSpan};
 use super::{Park, ParkDimensions};
 
 /// Why a park file's text is not a list of parks. The message is one line;
@@ -52,6 +53,8 @@ struct Entry {
     #[serde(default)]
     published: Option<Published>,
     fence: Vec<Point>,
+    #[serde(default)]
+    home: Vec<String>,
 }
 
 #[derive(Deserialize)]
@@ -81,6 +84,7 @@ pub(super) struct BundledEntry {
     pub center_field_bearing: f64,
     pub published: Option<[f64; 3]>,
     pub fence: &'static [[f64; 3]],
+    pub home: &'static [&'static str],
 }
 
 impl BundledEntry {
@@ -109,6 +113,7 @@ impl BundledEntry {
                     height,
                 })
                 .collect(),
+            home: self.home.iter().map(|&h| h.to_owned()).collect(),
         }
         .checked()
     }
@@ -238,6 +243,12 @@ impl Entry {
                 })
             }
         };
+        let mut home = Vec::with_capacity(self.home.len());
+        for text in &self.home {
+            let span = HomeSpan::parse(text)
+                .ok_or_else(|| field("home", format!("{text:?}"), HOME_FORMS))?;
+            home.push(span);
+        }
         let points = self
             .fence
             .into_iter()
@@ -264,6 +275,7 @@ impl Entry {
             center_field_bearing: bearing,
             published,
             fence,
+            home,
         })
     }
 }
@@ -313,6 +325,13 @@ fence = [
             parse(&bad).unwrap_err().to_string(),
             "park XYZ: fence point 1: distance = 0: must be a finite number in (0, 1000] m"
         );
+        let bad = ONE.replace("fence =", "home = [\"2025..2024\"]\nfence =");
+        assert_eq!(
+            parse(&bad).unwrap_err().to_string(),
+            format!("park XYZ: home = \"2025..2024\": {}", super::HOME_FORMS)
+        );
+        let good = ONE.replace("fence =", "home = [\"2025..2027\"]\nfence =");
+        assert_eq!(parse(&good).unwrap()[0].home[0].to_string(), "2025–2027");
         let bad = ONE.replace("name =", "nmae =");
         let e = parse(&bad).unwrap_err().to_string();
         assert!(

@@ -1,0 +1,80 @@
+//! A row is judged at its home_team's park only when the park was home
+//! ([`model::park::Park::home_on`]): the Athletics' 2025 in Sacramento and
+//! the Blue Jays' 2020–21 in Buffalo and Dunedin are no verdict at the
+//! Oakland Coliseum or the Rogers Centre.
+
+use super::*;
+
+#[test]
+fn a_row_played_where_its_home_team_was_not_at_home_is_at_no_park() {
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
+    let setup = Setup::new(&preset, &parks);
+    let rows = [
+        ("ATH", "2025-05-01", "", "none"),
+        ("ATH", "2024-09-26", "", "ATH"),
+        ("ATH", "", "2025", "none"),
+        ("TB", "4/2/2025", "", "none"),
+        ("TB", "2026-04-02", "", "TB"),
+        ("TOR", "2021-07-29", "", "none"),
+        ("TOR", "2021-07-30", "", "TOR"),
+        // The season alone, Toronto home for part of it.
+        ("TOR", "", "2021", "none"),
+        ("TOR", "", "2019", "TOR"),
+        ("TEX", "2019-06-01", "", "none"),
+        ("ATL", "2016-06-01", "", "none"),
+        ("BOS", "2016-06-01", "", "BOS"),
+        // No date: judged at the park as bundled, and counted.
+        ("TB", "", "", "TB"),
+        ("BOS", "", "", "BOS"),
+    ];
+    let mut input = String::from("launch_speed,launch_angle,home_team,game_date,game_year\n");
+    for (code, date, year, _) in rows {
+        input += &format!("104,28,{code},{date},{year}\n");
+    }
+    let (out, err, outcome) = run(&setup, &input, false, Shown::default());
+    assert_eq!(outcome.failed, 0, "{err}");
+    let mut lines = out.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let at = header.iter().position(|h| *h == "park").unwrap();
+    let judged: Vec<&str> = lines.map(|l| l.split(',').nth(at).unwrap()).collect();
+    let wanted: Vec<&str> = rows.iter().map(|r| r.3).collect();
+    assert_eq!(judged, wanted);
+    assert!(
+        err.contains(
+            "7 rows played where home_team's park was not home, at no park: ATL 2016 (1 row), \
+             ATH 2025 (2 rows), TB 2025 (1 row), TEX 2019 (1 row), TOR 2021 (1 row), \
+             TOR 2021, its date not given (1 row)"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.contains("ATH's Oakland Coliseum was home 1968–2024"),
+        "{err}"
+    );
+    assert!(
+        err.contains("1 row without a date (game_date, game_year) judged at a park that was not always home: TB (1 row)"),
+        "{err}"
+    );
+    // `--park` judges every row at the park asked for, whatever its date.
+    let mut at_oakland = Setup::new(&preset, &parks);
+    at_oakland.park = parks.parks.iter().position(|p| p.code == "ATH");
+    let (out, _, _) = run(&at_oakland, &input, false, Shown::default());
+    assert!(
+        out.lines()
+            .skip(1)
+            .all(|l| l.split(',').nth(at) == Some("ATH"))
+    );
+    // A date that is no date is named.
+    let (_, err, outcome) = run(
+        &setup,
+        "launch_speed,launch_angle,home_team,game_date\n104,28,ATH,2025-02-30\n",
+        false,
+        Shown::default(),
+    );
+    assert_eq!(outcome.failed, 1);
+    assert!(
+        err.contains("game_date = \"2025-02-30\": expected a date, YYYY-MM-DD or M/D/YYYY"),
+        "{err}"
+    );
+}
