@@ -331,11 +331,12 @@ def nathan_lift(s):
     return 1.120 * s / (0.583 + 2.333 * s)
 
 
-def trackman_aero(data):
+def trackman_aero(data, window=(0.15, 0.85)):
     """C_D and C_L measured on each summer-league ball from Trackman's own
     fitted trajectory: the acceleration less gravity, along −v̂ (drag) and
-    across v̂ (lift), at 15 instants from 15 % to 85 % of the tracked flight,
-    the medians; S from the measured spin and the speed there."""
+    across v̂ (lift), at 15 instants over `window` of the tracked flight
+    (15 % to 85 %), the medians; S from the measured spin and the speed
+    there."""
     t = pd.read_csv(os.path.join(data, "trackman-2024-25-potters-batted-balls.csv"),
                     low_memory=False)
     flat = [c for axis in TRAJECTORY for c in axis]
@@ -349,7 +350,7 @@ def trackman_aero(data):
     tracked = (t.LastTrackedDistance / t.Distance).clip(0, 1).fillna(1.0)
     end = (t.HangTime * tracked).to_numpy()
     cd, cl, speed = [], [], []
-    for share in np.linspace(0.15, 0.85, 15):
+    for share in np.linspace(window[0], window[1], 15):
         at = share * end
         v = sum(velocity_c[..., i] * at[:, None] ** i for i in range(8))
         a = sum(accel_c[..., i] * at[:, None] ** i for i in range(7))
@@ -360,14 +361,13 @@ def trackman_aero(data):
         cd.append(along / (k * sp**2))
         cl.append(across / (k * sp**2))
         speed.append(sp)
-    t["cd"], t["cl"] = np.median(cd, 0), np.median(cl, 0)
-    t["speed"] = np.median(speed, 0)
-    t["S"] = (BALL_RADIUS_M / 0.3048) * t.HitSpinRate * np.pi / 30 / t.speed
-    t["lift_ratio"] = t.cl / nathan_lift(t.S)
-    t["drag_ratio"] = t.cd / (0.3008 + 0.0292 * t.HitSpinRate / 1000)
-    t["slowing"] = t.speed / (t.ExitSpeed * 5280 / 3600)
-    t["band"] = T.band(t.Angle)
-    return t
+    t = t.copy()  # one block, not the file's hundreds of columns appended to
+    t = t.assign(cd=np.median(cd, 0), cl=np.median(cl, 0), speed=np.median(speed, 0))
+    t = t.assign(S=(BALL_RADIUS_M / 0.3048) * t.HitSpinRate * np.pi / 30 / t.speed)
+    return t.assign(lift_ratio=t.cl / nathan_lift(t.S),
+                    drag_ratio=t.cd / (0.3008 + 0.0292 * t.HitSpinRate / 1000),
+                    slowing=t.speed / (t.ExitSpeed * 5280 / 3600),
+                    band=T.band(t.Angle))
 
 
 def fit_lift(t):
@@ -398,6 +398,12 @@ def measured_lift(data, out):
     out.append(band_row("S mid-flight", g.S.median(), "{:.2f}"))
     out.append(band_row("C_L measured / Nathan's C_L(S)", g.lift_ratio.median(), "{:.2f}"))
     out.append(band_row("C_D measured / Nathan's C_D(ω)", g.drag_ratio.median(), "{:.2f}"))
+    low = t[t.band == T.LABELS[0]]
+    by_speed = low.groupby(pd.cut(low.ExitSpeed, [0, 80, 90, 100, 130],
+                                  labels=["< 80 mph", "80–90", "90–100", "100+"]), observed=False)
+    out.append("\nAt 10–20°, C_L measured / Nathan's by exit speed: " + ", ".join(
+        f"{k} {v:.2f} ({n})" for (k, v), n in zip(by_speed.lift_ratio.median().items(),
+                                                   by_speed.size())) + ".")
     edges = [0, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5, 0.7, 1.0, 3.0]
     labels = [f"{lo}–{hi}" for lo, hi in zip(edges[:-1], edges[1:])]
     g = t.groupby(pd.cut(t.S, edges, labels=labels), observed=False)
@@ -413,6 +419,18 @@ def measured_lift(data, out):
         else:
             vals = g[col].median()
         out.append(f"| {name} | " + " | ".join(fmt.format(vals[x]) for x in labels) + " |")
+    robust = [("instants at 25–75 % of the flight", trackman_aero(data, (0.25, 0.75))),
+              ("instants at 5–50 % (its first half)", trackman_aero(data, (0.05, 0.5))),
+              ("balls tracked to 95 % of their distance or more",
+               t[t.LastTrackedDistance >= 0.95 * t.Distance])]
+    coarse = [0, 0.2, 0.3, 0.5, 0.7, 3.0]
+    names = [f"{lo}–{hi}" for lo, hi in zip(coarse[:-1], coarse[1:])]
+    out.append("\nThe same ratio, measured / Nathan's, other ways (balls in brackets):\n\n| S | "
+               + " | ".join(names) + " |\n|---|" + "---|" * len(names))
+    for name, frame in [("15–85 % (as above)", t)] + robust:
+        g = frame.groupby(pd.cut(frame.S, coarse, labels=names), observed=False)
+        m, n = g.lift_ratio.median(), g.size()
+        out.append(f"| {name} | " + " | ".join(f"{m[x]:.2f} ({n[x]})" for x in names) + " |")
     a, b = fit_lift(t)
     out.append(f"\nNathan's form fitted to these balls: C_L = {a:.3f}·S/({b:.3f} + S) (Nathan's: "
                "0.480·S/(0.250 + S)): a slope at small S of "
