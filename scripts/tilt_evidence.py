@@ -27,7 +27,7 @@ The tables:
   8. what half a degree of launch angle does to the bands;
   9. lift and drag measured on Trackman's own fitted trajectories (summer
      league), against Nathan's, by band and by S;
- 10. that measured C_L(S) given, approximately, to 2018, 2019 and 2024.
+ 10. that measured C_L(S) given, in flight, to 2018, 2019 and 2024.
 """
 import os
 import re
@@ -366,7 +366,6 @@ def trackman_aero(data, window=(0.15, 0.85)):
     t = t.assign(S=(BALL_RADIUS_M / 0.3048) * t.HitSpinRate * np.pi / 30 / t.speed)
     return t.assign(lift_ratio=t.cl / nathan_lift(t.S),
                     drag_ratio=t.cd / (0.3008 + 0.0292 * t.HitSpinRate / 1000),
-                    slowing=t.speed / (t.ExitSpeed * 5280 / 3600),
                     band=T.band(t.Angle))
 
 
@@ -435,13 +434,16 @@ def measured_lift(data, out):
     out.append(f"\nNathan's form fitted to these balls: C_L = {a:.3f}·S/({b:.3f} + S) (Nathan's: "
                "0.480·S/(0.250 + S)): a slope at small S of "
                f"{a / b:.2f} against Nathan's 1.92.\n")
-    # Table 10: the fitted C_L(S) on the MLB seasons, approximately: one
-    # lift factor a flight, C_L,fit/C_L,Nathan at S mid-flight (the spin
-    # estimate over the launch speed times the summer league's median
-    # slowing in the band).
-    slowing = t.groupby("band", observed=False).slowing.median()
-    out.append("**10. That C_L(S) given to the MLB seasons** (approximately: one lift factor a "
-               "flight, the fitted C_L over Nathan's at S mid-flight; model − measured, ft):\n")
+    # Table 10: the fitted C_L(S) on the MLB seasons, in flight. Each row's
+    # launch (speed, angle, direction, backspin, sidespin, as the defaults
+    # give them) flown twice by `lockstep_flights` below, with Nathan's C_L(S)
+    # and with the fitted one; the difference in range and in flight time is
+    # added to the binary's own flight. (The difference is taken in sea-level
+    # air from 1 m; the binary's flights are in each park's air from the
+    # pitch's height.)
+    out.append("**10. That C_L(S) given to the MLB seasons** (in flight: the change it makes to "
+               "each row's range and flight time, added to the defaults'; model − measured, "
+               "ft):\n")
     out.append(T.HEADER)
     for name, frame, keep in [("2018", T.season_2018(data), ["HANG_TIME"]),
                               ("2019 HR", T.season_2019(), []),
@@ -450,16 +452,70 @@ def measured_lift(data, out):
         tilt_row(f"{name}, Nathan's C_L(S) (the default)", base, T.error_ft(base), out)
         if keep:
             hang_row(f"{name}, Nathan's C_L(S)", base, out)
-        k = T.band(np.degrees(base["launch.angle"])).map(slowing).astype(float).fillna(0.6)
-        s = BALL_RADIUS_M * np.hypot(base["launch.spin"], base["launch.sidespin"]) / (
-            k * base["launch.speed"])
-        g = frame.copy()
-        g["model.lift_scale"] = (a * s / (b + s) / nathan_lift(s)).fillna(1.0).to_numpy()
-        rows = T.fly(g, keep=keep)
+        launch = [base[c].to_numpy(float) for c in ("launch.speed", "launch.angle",
+                                                      "launch.direction", "launch.spin",
+                                                      "launch.sidespin")]
+        nathan = lockstep_flights(*launch, nathan_lift)
+        fitted = lockstep_flights(*launch, lambda s: a * s / (b + s))
+        if name == "2018":
+            off = np.nanmedian(np.abs(nathan[0] - base.range.to_numpy())) / T.FT
+            out.append(f"| (the lock-step flights against the binary's, 2018: median "
+                       f"\\|Δrange\\| {off:.2f} ft) | | | | | | | | | |")
+        rows = base.assign(range=base.range + (fitted[0] - nathan[0]),
+                           flight_time=base.flight_time + (fitted[1] - nathan[1]))
         tilt_row(f"{name}, the summer league's C_L(S)", rows, T.error_ft(rows), out)
         if keep:
             hang_row(f"{name}, the summer league's C_L(S)", rows, out)
     out.append("")
+
+
+def lockstep_flights(speed, angle, direction, backspin, sidespin, lift, dt=0.004):
+    """Range (m) and flight time (s) of many flights at once: Nathan's drag,
+    C_L = lift(S), the spin vector fixed in space (DESIGN.md's "Three
+    dimensions"), the paper's ball, 15 °C, 1013.25 hPa, 50 % at sea level,
+    from 1 m up; classical RK4 in steps of `dt`, the landing interpolated."""
+    t_c, humidity = 15.0, 50.0
+    svp = 4.5841 * np.exp((18.687 - t_c / 234.5) * t_c / (257.14 + t_c))
+    rho = 1.2929 * (273.15 / (t_c + 273.15)) * (760.0 - 0.3783 * humidity / 100 * svp) / 760.0
+    k = rho * np.pi * BALL_RADIUS_M**2 / (2 * BALL_MASS)
+    ct, st, cp, sp_ = np.cos(angle), np.sin(angle), np.cos(direction), np.sin(direction)
+    v = np.stack([speed * ct * cp, speed * st, speed * ct * sp_], 1)
+    x = np.zeros_like(v)
+    x[:, 1] = 1.0
+    w = (backspin[:, None] * np.stack([-sp_, 0 * sp_, cp], 1)
+         + sidespin[:, None] * np.stack([st * cp, -ct, st * sp_], 1))
+    size = np.linalg.norm(w, axis=1)
+    axis = w / np.where(size > 0, size, 1.0)[:, None]
+    cd = 0.3008 + 0.0292 * size * 30 / np.pi / 1000
+
+    def accel(v):
+        air = np.linalg.norm(v, axis=1)
+        cl = lift(BALL_RADIUS_M * size / air)
+        a = (-k * (cd * air)[:, None] * v
+             + k * (cl * air)[:, None] * np.cross(axis, v))
+        a[:, 1] -= 9.81
+        return a
+
+    n = len(speed)
+    landed = np.zeros(n, bool)
+    reach, when = np.full(n, np.nan), np.full(n, np.nan)
+    t = 0.0
+    while not landed.all() and t < 15.0:
+        k1 = accel(v)
+        k2 = accel(v + 0.5 * dt * k1)
+        k3 = accel(v + 0.5 * dt * k2)
+        k4 = accel(v + dt * k3)
+        x_next = x + dt / 6 * (v + 2 * (v + 0.5 * dt * k1) + 2 * (v + 0.5 * dt * k2)
+                               + (v + dt * k3))
+        v_next = v + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        now = ~landed & (x_next[:, 1] <= 0) & (v_next[:, 1] < 0)
+        if now.any():
+            f = x[now, 1] / (x[now, 1] - x_next[now, 1])
+            p = x[now] + f[:, None] * (x_next[now] - x[now])
+            reach[now], when[now] = np.hypot(p[:, 0], p[:, 2]), t + f * dt
+            landed |= now
+        x, v, t = x_next, v_next, t + dt
+    return reach, when
 
 
 def main(data):
