@@ -5,31 +5,79 @@
 
 use std::collections::BTreeMap;
 
-use model::park::{AtHome, spans_text};
+use model::park::spans_text;
+use preset::cut;
 use serde_json::{Value, json};
 
 use crate::Setup;
-use crate::row::Away;
 use crate::words::plural;
 
-/// Rows by (park, season, how the row stood), in that order.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct AwayRows(BTreeMap<(usize, Option<i32>, u8), usize>);
+/// A row whose `home_team`'s park was not home when it was played.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Away {
+    /// The park's index.
+    pub park: usize,
+    pub season: Option<i32>,
+    pub why: AwayWhy,
+}
 
-fn order(at_home: AtHome) -> u8 {
-    match at_home {
-        AtHome::No => 0,
-        AtHome::Unsure => 1,
-        AtHome::Undated => 2,
-        AtHome::Yes => 3,
+/// Why a row is [`Away`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum AwayWhy {
+    /// The park was not home on its date, or in its season.
+    NotHome,
+    /// Only its season is known, and the park was home for part of it.
+    Unsure,
+    /// Savant's `game_type` S, E or A: spring training and exhibitions
+    /// (at the team's spring park, or anywhere), the All-Star Game.
+    NotAtHome(GameType),
+    /// No date: judged at the park as bundled, and counted.
+    Undated,
+}
+
+/// A game `game_type` says was not at the home team's park.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum GameType {
+    Spring,
+    Exhibition,
+    AllStar,
+}
+
+impl GameType {
+    /// Savant's `game_type`: `Ok(None)` for a game at the home team's park
+    /// (R, and the postseason's F, D, L, W).
+    pub(crate) fn of(value: &str) -> Result<Option<GameType>, String> {
+        match value.to_ascii_uppercase().as_str() {
+            "R" | "F" | "D" | "L" | "W" => Ok(None),
+            "S" => Ok(Some(GameType::Spring)),
+            "E" => Ok(Some(GameType::Exhibition)),
+            "A" => Ok(Some(GameType::AllStar)),
+            _ => Err(format!(
+                "game_type = {:?}: expected Savant's R, F, D, L, W (at the home team's park), \
+                 S, E or A (spring training, exhibition, All-Star Game)",
+                cut(value, 20)
+            )),
+        }
+    }
+
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            GameType::Spring => "spring training",
+            GameType::Exhibition => "exhibition",
+            GameType::AllStar => "All-Star Game",
+        }
     }
 }
+
+/// Rows by (park, season, why), in that order.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct AwayRows(BTreeMap<(usize, Option<i32>, AwayWhy), usize>);
 
 impl AwayRows {
     pub(crate) fn count(&mut self, away: &Away) {
         *self
             .0
-            .entry((away.park, away.season, order(away.at_home)))
+            .entry((away.park, away.season, away.why))
             .or_default() += 1;
     }
 
@@ -42,24 +90,30 @@ impl AwayRows {
     /// Rows at no park because of it.
     pub(crate) fn at_no_park(&self) -> usize {
         (self.0.iter())
-            .filter(|((_, _, how), _)| *how < 2)
+            .filter(|((_, _, why), _)| *why != AwayWhy::Undated)
             .map(|(_, rows)| rows)
             .sum()
     }
 
     /// "ATH 2025 (38 rows)", the kinds `how` picks.
-    fn groups(&self, setup: &Setup, how: impl Fn(u8) -> bool) -> (usize, Vec<String>, Vec<usize>) {
+    fn groups(
+        &self,
+        setup: &Setup,
+        how: impl Fn(AwayWhy) -> bool,
+    ) -> (usize, Vec<String>, Vec<usize>) {
         let (mut rows, mut named, mut parks) = (0, Vec::new(), Vec::new());
         for (&(park, season, kind), &n) in self.0.iter().filter(|((_, _, k), _)| how(*k)) {
             rows += n;
             let code = &setup.parks.parks[park].code;
-            let when = match (season, kind) {
-                (Some(year), 1) => format!(" {year}, its date not given"),
-                (Some(year), _) => format!(" {year}"),
-                (None, _) => String::new(),
+            let year = season.map_or(String::new(), |y| format!(" {y}"));
+            let when = match kind {
+                AwayWhy::Unsure => format!("{year}, its date not given"),
+                AwayWhy::NotAtHome(game) => format!("{year}, {}", game.name()),
+                _ => year,
             };
             named.push(format!("{code}{when} ({n} row{})", plural(n)));
-            if !parks.contains(&park) {
+            let dated = matches!(kind, AwayWhy::NotHome | AwayWhy::Unsure | AwayWhy::Undated);
+            if dated && !parks.contains(&park) {
                 parks.push(park);
             }
         }
@@ -86,18 +140,23 @@ impl AwayRows {
     /// without the date that would say whether it was home.
     pub(crate) fn parts(&self, setup: &Setup) -> Vec<String> {
         let mut parts = Vec::new();
-        let (rows, named, parks) = self.groups(setup, |kind| kind < 2);
+        let (rows, named, parks) = self.groups(setup, |why| why != AwayWhy::Undated);
         if rows > 0 {
+            let homes = match parks.is_empty() {
+                true => String::new(),
+                false => format!(
+                    " ({}; a park file with that code and its `home` judges them, \
+                     docs/parks.md)",
+                    Self::homes(setup, &parks)
+                ),
+            };
             parts.push(format!(
-                "{rows} row{} played where home_team's park was not home, at no park: {} \
-                 ({}; a park file with that code and its `home` judges them, \
-                 docs/parks.md)",
+                "{rows} row{} played where home_team's park was not home, at no park: {}{homes}",
                 plural(rows),
                 named.join(", "),
-                Self::homes(setup, &parks)
             ));
         }
-        let (rows, named, parks) = self.groups(setup, |kind| kind == 2);
+        let (rows, named, parks) = self.groups(setup, |why| why == AwayWhy::Undated);
         if rows > 0 {
             parts.push(format!(
                 "{rows} row{} without a date (game_date, game_year) judged at a park that was \
@@ -116,9 +175,10 @@ impl AwayRows {
             .map(|(&(park, season, kind), &rows)| {
                 let park = &setup.parks.parks[park];
                 let judged = match kind {
-                    0 => "no_park: not home then",
-                    1 => "no_park: home for part of the season, no date",
-                    _ => "at the park: no date",
+                    AwayWhy::NotHome => "no_park: not home then",
+                    AwayWhy::Unsure => "no_park: home for part of the season, no date",
+                    AwayWhy::NotAtHome(game) => game.name(),
+                    AwayWhy::Undated => "at the park: no date",
                 };
                 json!({ "home_team": park.code, "park": park.name, "season": season,
                     "rows": rows, "judged": judged, "home": spans_text(&park.home) })

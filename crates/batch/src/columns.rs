@@ -80,6 +80,9 @@ pub enum SavantColumn {
     /// swing's season picks its bat ([`analysis::bat_tracking::season_bat`]).
     Season,
     Date,
+    /// Savant's kind of game: spring training, exhibitions and the
+    /// All-Star Game are not at the home team's park.
+    GameType,
 }
 
 /// A bat-tracking or pitch-tracking column (read when swings are solved).
@@ -251,6 +254,12 @@ pub const TABLE: &[Entry] = &[
         &["game_year", "season"],
         Savant(S::Season),
         "the season: whether home_team's park was home then, and a tracked swing's bat",
+    ),
+    entry(
+        &["game_type"],
+        Savant(S::GameType),
+        "Savant's kind of game: S (spring training), E (exhibition) and A (All-Star Game) \
+         rows are at no park, not at home_team's",
     ),
     entry(
         &["game_date", "Date"],

@@ -11,6 +11,7 @@ use preset::{FIELD_KEYS, Fence, cut, escape_cut};
 use units::{Quantity, UnitSystem, significant};
 
 use crate::Setup;
+use crate::away::{Away, AwayWhy, GameType};
 use crate::columns::{Column, LAUNCH_KEYS, SavantColumn, Unit};
 use crate::header::{Header, launch_key};
 use crate::kinds::{Called, Kind};
@@ -75,17 +76,6 @@ impl Job {
     pub(crate) fn fence_known(&self) -> bool {
         self.park.is_some() || self.fence_given
     }
-}
-
-/// A row whose `home_team`'s park was not home when it was played.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Away {
-    /// The park's index.
-    pub park: usize,
-    pub season: Option<i32>,
-    /// `No`, or `Unsure` (only the season known, the park home for part of
-    /// it); `Undated`: no date, judged at the park as bundled.
-    pub at_home: AtHome,
 }
 
 /// What a row turned out to be.
@@ -443,6 +433,8 @@ pub(crate) struct SavantCells {
     /// `game_year` (or `season`), and `game_date`.
     pub season: Option<i32>,
     pub day: Option<Day>,
+    /// A `game_type` not played at the home team's park.
+    pub game_type: Option<GameType>,
 }
 
 impl SavantCells {
@@ -503,6 +495,7 @@ impl SavantCells {
             // A code no park answers to leaves the row at no park, named in
             // the summary ([`Job::unknown_park`]).
             SavantColumn::HomeTeam => self.park = setup.park_of(value),
+            SavantColumn::GameType => self.game_type = GameType::of(value)?,
             SavantColumn::Season => {
                 let year = number()?;
                 if !(1800.0..=2200.0).contains(&year) {
@@ -540,19 +533,22 @@ impl SavantCells {
             (None, Some(year)) => Played::In(year),
             (None, None) => Played::Unknown,
         };
-        let at_home = setup.parks.parks[park].home_on(played);
-        let away = Away {
+        let away = |why| Away {
             park,
             season: self.season(),
-            at_home,
+            why,
         };
-        match at_home {
+        if let Some(game_type) = self.game_type {
+            return (None, Some(away(AwayWhy::NotAtHome(game_type))));
+        }
+        match setup.parks.parks[park].home_on(played) {
             AtHome::Yes => (Some(park), None),
             AtHome::Undated if setup.parks.parks[park].always_home_since(STATCAST) => {
                 (Some(park), None)
             }
-            AtHome::Undated => (Some(park), Some(away)),
-            AtHome::No | AtHome::Unsure => (None, Some(away)),
+            AtHome::Undated => (Some(park), Some(away(AwayWhy::Undated))),
+            AtHome::No => (None, Some(away(AwayWhy::NotHome))),
+            AtHome::Unsure => (None, Some(away(AwayWhy::Unsure))),
         }
     }
 

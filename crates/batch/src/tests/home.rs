@@ -27,10 +27,19 @@ fn a_row_played_where_its_home_team_was_not_at_home_is_at_no_park() {
         // No date: judged at the park as bundled, and counted.
         ("TB", "", "", "TB"),
         ("BOS", "", "", "BOS"),
+        // Spring training: at the team's spring park, whatever the date.
+        ("BOS", "2024-03-01", "S", "none"),
+        ("BOS", "2024-10-05", "D", "BOS"),
     ];
-    let mut input = String::from("launch_speed,launch_angle,home_team,game_date,game_year\n");
+    let mut input =
+        String::from("launch_speed,launch_angle,home_team,game_date,game_year,game_type\n");
     for (code, date, year, _) in rows {
-        input += &format!("104,28,{code},{date},{year}\n");
+        // A game_year cell of S or D is the row's game_type.
+        let (year, game_type) = match year {
+            "S" | "D" => ("", year),
+            _ => (year, "R"),
+        };
+        input += &format!("104,28,{code},{date},{year},{game_type}\n");
     }
     let (out, err, outcome) = run(&setup, &input, false, Shown::default());
     assert_eq!(outcome.failed, 0, "{err}");
@@ -42,9 +51,9 @@ fn a_row_played_where_its_home_team_was_not_at_home_is_at_no_park() {
     assert_eq!(judged, wanted);
     assert!(
         err.contains(
-            "7 rows played where home_team's park was not home, at no park: ATL 2016 (1 row), \
-             ATH 2025 (2 rows), TB 2025 (1 row), TEX 2019 (1 row), TOR 2021 (1 row), \
-             TOR 2021, its date not given (1 row)"
+            "8 rows played where home_team's park was not home, at no park: ATL 2016 (1 row), \
+             BOS 2024, spring training (1 row), ATH 2025 (2 rows), TB 2025 (1 row), \
+             TEX 2019 (1 row), TOR 2021 (1 row), TOR 2021, its date not given (1 row)"
         ),
         "{err}"
     );
@@ -64,6 +73,18 @@ fn a_row_played_where_its_home_team_was_not_at_home_is_at_no_park() {
         out.lines()
             .skip(1)
             .all(|l| l.split(',').nth(at) == Some("ATH"))
+    );
+    // A game_type Savant does not write is named.
+    let (_, err, outcome) = run(
+        &setup,
+        "launch_speed,launch_angle,home_team,game_type\n104,28,BOS,Q\n",
+        false,
+        Shown::default(),
+    );
+    assert_eq!(outcome.failed, 1);
+    assert!(
+        err.contains("game_type = \"Q\": expected Savant's R, F, D, L, W"),
+        "{err}"
     );
     // A date that is no date is named.
     let (_, err, outcome) = run(
