@@ -28,6 +28,9 @@ pub(crate) enum AwayWhy {
     NotHome,
     /// Only its season is known, and the park was home for part of it.
     Unsure,
+    /// A regular-season game at a neutral site (Mexico City, London, …):
+    /// its venue.
+    Neutral(&'static str),
     /// Savant's `game_type` S, E or A: spring training and exhibitions
     /// (at the team's spring park, or anywhere), the All-Star Game.
     NotAtHome(GameType),
@@ -109,6 +112,7 @@ impl AwayRows {
             let when = match kind {
                 AwayWhy::Unsure => format!("{year}, its date not given"),
                 AwayWhy::NotAtHome(game) => format!("{year}, {}", game.name()),
+                AwayWhy::Neutral(venue) => format!("{year}, at {venue}"),
                 _ => year,
             };
             named.push(format!("{code}{when} ({n} row{})", plural(n)));
@@ -178,6 +182,7 @@ impl AwayRows {
                     AwayWhy::NotHome => "no_park: not home then",
                     AwayWhy::Unsure => "no_park: home for part of the season, no date",
                     AwayWhy::NotAtHome(game) => game.name(),
+                    AwayWhy::Neutral(venue) => venue,
                     AwayWhy::Undated => "at the park: no date",
                 };
                 json!({ "home_team": park.code, "park": park.name, "season": season,

@@ -4,7 +4,7 @@
 use analysis::savant::{RowLaunch, spray_angle};
 use model::aero::UnknownModel;
 use model::keys::{InputBatch, InputError, Key, out_of_range_shown};
-use model::park::{AtHome, Day, GivenWeather, Played};
+use model::park::{AtHome, Day, GivenWeather, Played, neutral_site};
 use model::scene::{Scene, UnknownHand};
 use model::spin_estimate::Side;
 use preset::{FIELD_KEYS, Fence, cut, escape_cut};
@@ -540,6 +540,12 @@ impl SavantCells {
         };
         if let Some(game_type) = self.game_type {
             return (None, Some(away(AwayWhy::NotAtHome(game_type))));
+        }
+        let neutral = self
+            .day
+            .and_then(|day| neutral_site(day, &setup.parks.parks[park]));
+        if let Some(site) = neutral {
+            return (None, Some(away(AwayWhy::Neutral(&site.venue))));
         }
         match setup.parks.parks[park].home_on(played) {
             AtHome::Yes => (Some(park), None),

@@ -1,7 +1,8 @@
 //! A row is judged at its home_team's park only when the park was home
 //! ([`model::park::Park::home_on`]): the Athletics' 2025 in Sacramento and
 //! the Blue Jays' 2020–21 in Buffalo and Dunedin are no verdict at the
-//! Oakland Coliseum or the Rogers Centre.
+//! Oakland Coliseum or the Rogers Centre; nor are spring training and the
+//! games at neutral sites ([`model::park::neutral_site`]).
 
 use super::*;
 
@@ -30,6 +31,11 @@ fn a_row_played_where_its_home_team_was_not_at_home_is_at_no_park() {
         // Spring training: at the team's spring park, whatever the date.
         ("BOS", "2024-03-01", "S", "none"),
         ("BOS", "2024-10-05", "D", "BOS"),
+        // Mexico City, a neutral site: the Rockies' home games, and the
+        // Astros' there.
+        ("COL", "2024-04-27", "", "none"),
+        ("HOU", "2024-04-28", "", "none"),
+        ("COL", "2024-04-29", "", "COL"),
     ];
     let mut input =
         String::from("launch_speed,launch_angle,home_team,game_date,game_year,game_type\n");
@@ -51,8 +57,11 @@ fn a_row_played_where_its_home_team_was_not_at_home_is_at_no_park() {
     assert_eq!(judged, wanted);
     assert!(
         err.contains(
-            "8 rows played where home_team's park was not home, at no park: ATL 2016 (1 row), \
-             BOS 2024, spring training (1 row), ATH 2025 (2 rows), TB 2025 (1 row), \
+            "10 rows played where home_team's park was not home, at no park: ATL 2016 (1 row), \
+             BOS 2024, spring training (1 row), \
+             COL 2024, at Estadio Alfredo Harp Helú, Mexico City (1 row), \
+             HOU 2024, at Estadio Alfredo Harp Helú, Mexico City (1 row), \
+             ATH 2025 (2 rows), TB 2025 (1 row), \
              TEX 2019 (1 row), TOR 2021 (1 row), TOR 2021, its date not given (1 row)"
         ),
         "{err}"

@@ -35,6 +35,19 @@ impl Day {
         })
     }
 
+    /// `YYYY-MM-DD`, a year from 1850 to 2200.
+    pub fn parse(text: &str) -> Option<Day> {
+        let numbers: Vec<&str> = text.trim().split('-').collect();
+        let [year, month, day] = numbers.as_slice() else {
+            return None;
+        };
+        let year = year
+            .parse::<i32>()
+            .ok()
+            .filter(|y| (1850..=2200).contains(y))?;
+        Day::new(year, month.parse().ok()?, day.parse().ok()?)
+    }
+
     pub fn year(self) -> i32 {
         self.year
     }
@@ -112,19 +125,18 @@ impl HomeSpan {
             if text.is_empty() {
                 return Some(None);
             }
-            let numbers: Vec<&str> = text.split('-').collect();
-            let number = |i: usize| numbers.get(i)?.parse::<u32>().ok();
-            let year = i32::try_from(number(0)?).ok()?;
-            if !(1850..=2200).contains(&year) {
-                return None;
+            if text.contains('-') {
+                return Day::parse(text).map(Some);
             }
-            let day = match numbers.len() {
-                1 if first => Day::first_of(year),
-                1 => Day::last_of(year),
-                3 => Day::new(year, number(1)?, number(2)?)?,
-                _ => return None,
-            };
-            Some(Some(day))
+            let year = text
+                .parse::<i32>()
+                .ok()
+                .filter(|y| (1850..=2200).contains(y))?;
+            Some(Some(if first {
+                Day::first_of(year)
+            } else {
+                Day::last_of(year)
+            }))
         };
         let span = HomeSpan {
             from: end(from, true)?,

@@ -7,6 +7,7 @@
 mod air;
 mod fence;
 mod home;
+mod neutral;
 mod parse;
 
 use std::sync::LazyLock;
@@ -16,6 +17,7 @@ use parse::BundledEntry;
 pub use air::GivenWeather;
 pub use fence::{FOUL_LINE, Fence, FenceAt, FenceError, FencePoint};
 pub use home::{AtHome, Day, HOME_FORMS, HomeSpan, Played, at_home, spans_text};
+pub use neutral::{NeutralSite, neutral_site, neutral_sites};
 pub use parse::{ParkError, parse};
 
 /// A ballpark.
