@@ -264,7 +264,9 @@ fn read_cells(
                 let quantity = unit.quantity().expect("Statcast's columns have units");
                 let si = match measure(value, quantity, |v| unit.to_si(v)) {
                     Some(si) => Ok(si),
-                    None => number().map(|v| unit.to_si(v)),
+                    None => number()
+                        .map(|v| unit.to_si(v))
+                        .map_err(|e| unit_unknown(name, value, (quantity, unit)).unwrap_or(e)),
                 };
                 si.map(|si| {
                     converted = true;
@@ -385,6 +387,35 @@ fn read_cells(
 /// Statcast's first season: a row without a date at a park that was home
 /// from then on is surely judged where it was played.
 const STATCAST: i32 = 2015;
+
+/// Why a Statcast cell with a unit after its number (`45kph`, `28deg` in
+/// `launch_speed`) cannot be read: the unit named, and those accepted.
+fn unit_unknown(name: &str, value: &str, (quantity, unit): (Quantity, Unit)) -> Option<String> {
+    let why = match units::read_typed(value, quantity, quantity.si_symbol()) {
+        Err(units::TypedError::UnknownUnit { unit }) => {
+            format!("unknown unit `{}`", cut(&unit, 20))
+        }
+        Err(units::TypedError::OtherQuantity {
+            unit,
+            quantity: other,
+        }) => {
+            format!(
+                "`{}` measures {}, not {}",
+                cut(&unit, 20),
+                other.noun(),
+                quantity.noun()
+            )
+        }
+        _ => return None,
+    };
+    Some(format!(
+        "{} = {:?}: {why}; it takes {} (a bare number is {})",
+        escape_cut(name, 80),
+        cut(value, 80),
+        units::accepted(quantity, quantity.si_symbol()),
+        unit.name()
+    ))
+}
 
 /// The key `plate_z` gives.
 pub(crate) const CONTACT_HEIGHT: &str = "environment.contact_height";

@@ -672,6 +672,21 @@ fn missing_values_units_and_compared_columns() {
     assert_eq!(rows[1][19], "140.21");
     assert_eq!(rows[2][19], "");
     assert_eq!(rows[3][19], "140.00");
+    // A unit the column does not take is named, with those it does.
+    let input = "launch_speed,launch_angle\n45kph,28\n100,28rpm\n";
+    let (_, err, outcome) = run(&setup, input, false, Shown::default());
+    assert_eq!(outcome.failed, 2);
+    assert!(
+        err.contains(
+            "launch_speed = \"45kph\": unknown unit `kph`; it takes m/s, km/h, mph, ft/s \
+             (a bare number is mph)"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.contains("launch_angle = \"28rpm\": `rpm` measures a spin rate, not an angle"),
+        "{err}"
+    );
 }
 
 /// Each park in its own air: the parks settled from a row's own flight.
