@@ -352,7 +352,8 @@ impl Tally {
                 let _ = write!(
                     table,
                     "\n{name:<8} {:>7} {:>8} {:>10}",
-                    band["rows"],
+                    // serde_json's Display pads nothing: the text pads.
+                    band["rows"].to_string(),
                     cell(&band[key("median")], true),
                     cell(&band[key("median_abs")], false)
                 );
@@ -370,18 +371,23 @@ impl Tally {
                 kinds.push(format!(
                     "{:<13} {:>7} {:>8} {:>10}",
                     row["kind"].as_str().unwrap_or(""),
-                    row["rows"],
+                    row["rows"].to_string(),
                     cell(&row[key("median")], true),
                     cell(&row[key("median_abs")], false)
                 ));
             }
         }
-        if self.home_runs > 0 {
+        if self.home_runs_judged > 0 {
+            let at_no_park = self.home_runs - self.home_runs_judged;
             kinds.push(format!(
-                "home runs that clear the fence they are judged at: {} of {} ({:.1} %)",
+                "home runs that clear the fence they are judged at: {} of {} ({:.1} %){}",
                 self.home_runs_clear,
-                self.home_runs,
-                100.0 * self.home_runs_clear as f64 / self.home_runs as f64
+                self.home_runs_judged,
+                100.0 * self.home_runs_clear as f64 / self.home_runs_judged as f64,
+                match at_no_park {
+                    0 => String::new(),
+                    n => format!("; {n} more at no park"),
+                }
             ));
         }
         if !kinds.is_empty() {
@@ -496,6 +502,7 @@ impl Tally {
         }
         if self.home_runs > 0 {
             value["home_runs"] = json!({ "clear": self.home_runs_clear, "of": self.home_runs,
+                "judged_at_a_park": self.home_runs_judged,
                 "short_or_foul": self.home_runs_not_count,
                 "short_or_foul_lines": self.home_runs_not });
         }

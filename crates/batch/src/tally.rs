@@ -111,6 +111,8 @@ pub struct Tally {
     /// Home runs (by `events`), those that clear where they are judged,
     /// and the lines of the first that the model calls short or foul.
     pub(crate) home_runs: usize,
+    /// Of those, the home runs with a fence to be judged at.
+    pub(crate) home_runs_judged: usize,
     pub(crate) home_runs_clear: usize,
     pub(crate) home_runs_not: Vec<usize>,
     pub(crate) home_runs_not_count: usize,
@@ -186,6 +188,7 @@ impl Tally {
         let called = job.called;
         if called.home_run {
             self.home_runs += 1;
+            self.home_runs_judged += usize::from(job.fence_known());
             self.home_runs_clear += usize::from(at == 0);
             if at >= 2 && job.fence_known() {
                 self.home_runs_not_count += 1;
@@ -276,6 +279,7 @@ impl Tally {
             (&mut self.from_plate, other.from_plate),
             (&mut self.plate_unusable, other.plate_unusable),
             (&mut self.home_runs, other.home_runs),
+            (&mut self.home_runs_judged, other.home_runs_judged),
             (&mut self.home_runs_clear, other.home_runs_clear),
             (&mut self.home_runs_not_count, other.home_runs_not_count),
             (&mut self.swings.off_sweet_spot, other.swings.off_sweet_spot),
