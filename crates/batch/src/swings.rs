@@ -131,9 +131,15 @@ fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
         ),
         false => String::new(),
     };
+    // The bat's lead over its measured path, where solved (a 2025 row).
+    let lead = solved.scene.bat.lead;
+    let lead = match lead == 0.0 {
+        true => String::new(),
+        false => format!(", lead {}", angle(lead)),
+    };
     let description = format!(
-        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}, tilt {}{contact}, {}, q {:.3}, {}; \
-         here {} at {} (E for the paper's pitch path)",
+        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}, tilt {}{lead}{contact}, {}, q {:.3}, \
+         {}; here {} at {} (E for the paper's pitch path)",
         // "Ohtani, Shohei" as "Shohei Ohtani": found by either name.
         cell("player_name").map_or(String::from("?"), |n| match n.split_once(", ") {
             Some((last, first)) => format!("{first} {last}"),
