@@ -133,3 +133,28 @@ fn the_python_reference_solves_the_same_leads() {
     let reference = "tests/data/swing_lead_reference.csv";
     assert_eq!(agrees_with_the_python_reference(SAMPLE, reference), (21, 0));
 }
+
+/// `bat.lead` is an input like the bat's tilt: `hit` says how far the bat
+/// leads, within ±45° (beyond, refused); 0 is the paper's bat, of which
+/// nothing is said.
+#[test]
+fn the_lead_is_a_key_within_forty_five_degrees() {
+    let args = ["hit", "--set", "bat.tilt=0.5236", "--set", "bat.lead=0.14"];
+    let (code, out, err) = run_homerun(&args, None);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        out.contains("swung toward centre field, leading its path by 0.1400 rad (8.0°)"),
+        "{out}"
+    );
+    let (_, square, _) = run_homerun(&["hit", "--set", "bat.tilt=0.5236"], None);
+    assert!(!square.contains("leading"), "{square}");
+    assert_ne!(out, square);
+    let (code, _, err) = run_homerun(&["hit", "--set", "bat.lead=1"], None);
+    assert_ne!(code, Some(0));
+    assert!(
+        err.contains(
+            "bat.lead = 1: must be a finite number in [-0.7853981633974483, 0.7853981633974483] rad"
+        ),
+        "{err}"
+    );
+}
