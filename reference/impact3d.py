@@ -11,8 +11,11 @@ Written from the physics, apart from the Rust core, in the most literal form:
     its plane: its velocity stays square to it), or where |sin psi| >=
     |sin T| keep the bat level and tip the velocity up by psi about the bat;
     then turn about the vertical until the velocity's horizontal direction
-    is phi; a left-handed batter is that bat, swung toward -phi, reflected
-    in z;
+    is phi; a bat that leads its path by lambda (bat.lead) is then turned
+    by lambda about the normal of the plane holding its axis and its
+    velocity, the barrel toward the velocity, the velocity kept (Rodrigues'
+    rotation); a left-handed batter is that bat, swung toward -phi with the
+    same lead, reflected in z;
   - the bodies as full rigid-body vectors in the flight frame (ball velocity
     and spin, bat velocity and spin), with the bat's inverse inertia
     a a^T / (M_B k_B2^2) (it rolls about its own axis only) and its point on
@@ -72,12 +75,13 @@ def rot_about(n, a):
     return np.eye(3) + math.sin(a) * k + (1 - math.cos(a)) * (k @ k)
 
 
-def bat_frame(tilt, direction, hand, swing_angle):
+def bat_frame(tilt, direction, hand, swing_angle, lead=0.0):
     """(axis hands->barrel, up square to it in its vertical plane, the
     horizontal square to both, the unit velocity) of a bat swung at
-    swing_angle within a swing plane tilted `tilt`."""
+    swing_angle within a swing plane tilted `tilt`, leading its path by
+    `lead`."""
     if hand == "left":
-        axis, up, forward, path = bat_frame(tilt, -direction, "right", swing_angle)
+        axis, up, forward, path = bat_frame(tilt, -direction, "right", swing_angle, lead)
         return MIRROR @ axis, MIRROR @ up, MIRROR @ forward, MIRROR @ path
     x, y, z = np.eye(3)
     if abs(math.sin(swing_angle)) >= abs(math.sin(tilt)):
@@ -96,6 +100,11 @@ def bat_frame(tilt, direction, hand, swing_angle):
     heading = math.atan2(path[2], path[0])
     turn = rot_y(-(direction - heading))
     axis, path = turn @ axis, turn @ path
+    if lead != 0.0:
+        # The barrel ahead of square by `lead`, within the plane that holds
+        # the bat and its velocity: about that plane's normal axis x path.
+        normal = np.cross(axis, path)
+        axis = rot_about(normal / np.linalg.norm(normal), lead) @ axis
     up = y - (y @ axis) * axis
     up = up / np.linalg.norm(up)
     forward = np.cross(up, axis)
@@ -105,7 +114,8 @@ def bat_frame(tilt, direction, hand, swing_angle):
 def impact(case):
     hand = case["hand"]
     psi = case["swing_angle"]
-    axis, up, forward, path = bat_frame(case["tilt"], case["direction"], hand, psi)
+    axis, up, forward, path = bat_frame(case["tilt"], case["direction"], hand, psi,
+                                        case.get("lead", 0.0))
     theta = math.asin(case["undercut"] / (R_BALL + R_BAT))
     n3 = math.cos(theta) * forward + math.sin(theta) * up
     # The paper's frame: n2 along the bat (+z for either hand at a square,
@@ -291,7 +301,7 @@ def impact(case):
 
 INPUTS = [
     "hand", "tilt", "direction", "undercut", "swing_angle", "friction",
-    "pitch_speed", "pitch_spin", "bat_speed", "bat_spin", "tangential_restitution",
+    "pitch_speed", "pitch_spin", "bat_speed", "bat_spin", "tangential_restitution", "lead",
 ]
 OUTPUTS = [
     "launch_speed", "launch_angle", "launch_direction", "backspin", "sidespin", "gyrospin",
@@ -343,6 +353,21 @@ def cases():
     while len(out) < 47:
         case = drawn(grip_rng, grip_rng.choice([0.2, 0.35, 0.5, 0.8]))
         case["tangential_restitution"] = grip_rng.choice([0.2, 0.4, 0.7, 1.0])
+        out.append(case)
+    for case in out:
+        case["lead"] = 0.0
+    # Bats that lead their path (bat.lead, session 20): the fastball's swing
+    # tilted 30 degrees with the barrel 8 and 20 degrees ahead, both hands;
+    # then draws across the keys' bounds with leads of up to 45 degrees.
+    for lead in (0.14, 0.35, -0.2):
+        for hand in ("right", "left"):
+            out.append(dict(fast, hand=hand, tilt=0.5236, direction=-0.1, lead=lead,
+                            tangential_restitution=0.0))
+    lead_rng = random.Random(41)
+    while len(out) < 61:
+        case = drawn(lead_rng, lead_rng.choice([0.0, 0.1, 0.35, 0.5, 0.8]))
+        case["tangential_restitution"] = lead_rng.choice([0.0, 0.0, 0.4])
+        case["lead"] = round(lead_rng.uniform(-0.78, 0.78), 4)
         out.append(case)
     return out
 

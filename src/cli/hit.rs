@@ -122,10 +122,18 @@ pub(super) fn hit(scene: &Scene, json: bool, shown: Shown) -> String {
         lines.push((
             "bat",
             format!(
-                "{}, barrel {} below the hands, swung {}",
+                "{}, barrel {} below the hands, swung {}{}",
                 bat.hand.description(),
                 shown.angle_and_degrees(bat.tilt, 4, 1),
                 shown.direction(bat.direction),
+                // The bat's lead over its path, where it leads.
+                match bat.lead == 0.0 {
+                    true => String::new(),
+                    false => format!(
+                        ", leading its path by {}",
+                        shown.angle_and_degrees(bat.lead, 4, 1)
+                    ),
+                },
             ),
         ));
     }

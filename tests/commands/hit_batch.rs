@@ -317,9 +317,10 @@ fn near(
 /// `reference` (reference/swing_solve.py: its own pitch kinematics, the
 /// impact integrated over the impulse, scipy's root finder from a fan of
 /// starts, in the same order: off the sweet spot at the prior swing angle
-/// first, then the swing angle at the sweet spot). Gives how many rows
-/// were solved, and how many of them off the sweet spot.
-fn agrees_with_the_python_reference(file: &str, reference: &str) -> (usize, usize) {
+/// first, then the swing angle at the sweet spot; a measured path's lead
+/// solved with E and the contact's speed). Gives how many rows were
+/// solved, and how many of them off the sweet spot at the prior.
+pub(crate) fn agrees_with_the_python_reference(file: &str, reference: &str) -> (usize, usize) {
     // The reference solves with the paper's bat (M_B = 0.8 kg), not the
     // 2024 season's that a 2024 row takes by default.
     let paper_bat = ["--set", "bat.effective_mass=0.8"];
@@ -362,6 +363,11 @@ fn agrees_with_the_python_reference(file: &str, reference: &str) -> (usize, usiz
             1e-8,
         );
         near(&cells, "direction", &rust["swing"]["direction"], 1e-9);
+        // The bat's lead over its path (0 where the path is not measured;
+        // fixtures from before session 20 have no column).
+        if cells.contains_key("lead") {
+            near(&cells, "lead", &rust["swing"]["lead"], 1e-9);
+        }
         near(&cells, "spin", &rust["launch"]["spin"], 1e-6);
         near(&cells, "sidespin", &rust["launch"]["sidespin"], 1e-6);
         let most = &rust["impact"]["max_exit_speed"];

@@ -99,6 +99,10 @@ fn a_measured_attack_angle_says_measured() {
         [&from["angle"], &from["direction"], &from["tilt"]],
         ["measured", "measured", "measured"]
     );
+    // With the path measured, the bat's lead over it is what turns the
+    // launch toward the spray: solved.
+    assert_eq!(from["lead"], "solved");
+    assert_eq!(lines[0]["direction_from"], "landing");
     let (lines, _) = hit(&first_row_with(&[]), &["--set", "bat.tilt=0.3"]);
     assert_eq!(lines[0]["swing"]["from"]["tilt"], "given");
     assert_eq!(lines[0]["swing"]["from"]["angle"], "prior");
@@ -109,10 +113,19 @@ fn a_measured_attack_angle_says_measured() {
     let row = rows.next().unwrap();
     let cell = |name: &str| row[names.iter().position(|n| *n == name).unwrap()];
     assert_eq!(
-        ["angle", "direction", "tilt", "contact_speed", "undercut"]
-            .map(|q| cell(&format!("swing.from.{q}"))),
-        ["prior", "solved", "prior", "solved", "solved"]
+        [
+            "angle",
+            "direction",
+            "tilt",
+            "contact_speed",
+            "undercut",
+            "lead"
+        ]
+        .map(|q| cell(&format!("swing.from.{q}"))),
+        ["prior", "solved", "prior", "solved", "solved", "prior"]
     );
+    // Without a measured path the bat is square to it: lead 0, the prior.
+    assert_eq!(cell("swing.lead"), "0.000000");
     // bat_speed as measured (77.462 mph), in m/s.
     assert_eq!(cell("swing.bat_speed"), "34.6286");
 }
@@ -194,13 +207,15 @@ fn a_2024_row_takes_the_2024_bat_unless_one_is_given() {
 
 /// tests/data/savant_2025_popup.csv: line 16 of
 /// statcast-2025-bat-tracking-three-hitters.csv (Altuve, 2025-04-02: 56.7
-/// mph at 80°, attack angle 5.2°, tilt 39.5°). No undercut within 0.97 of
-/// the reach and no contact speed from 0.3 to 2 times `bat_speed` gives
-/// more than 53° at its measured swing; the solve's start from a jump
-/// across the elevation's wrap ended in "did not converge", and is now
-/// named for what it is.
+/// mph at 80°, attack angle 5.2°, tilt 39.5°). With the bat square to its
+/// path no undercut within 0.97 of the reach and no contact speed from 0.3
+/// to 2 times `bat_speed` gives more than 53° (session 18: "launch angle
+/// out of reach", named so). A barrel leading its path turns the undercut
+/// ball's lean forward: with the lead solved toward the spray (session 20)
+/// the popup is reached, the barrel 26.0° ahead, the ball met 60.8 mm
+/// below its centre and off the sweet spot (13.5 of 33.6 m/s).
 #[test]
-fn a_2025_popup_past_the_impacts_reach_is_named_so() {
+fn a_2025_popup_past_the_square_bats_reach_is_reached_by_its_lead() {
     let (code, out, err) = run_homerun(
         &[
             "hit",
@@ -212,12 +227,19 @@ fn a_2025_popup_past_the_impacts_reach_is_named_so() {
     );
     assert_eq!(code, Some(0), "{err}");
     let line = &json_lines(&out)[0];
-    assert_eq!(line["solved"], false);
-    assert_eq!(
-        line["reason"],
-        "launch angle out of reach: no undercut gives it"
-    );
+    assert_eq!(line["solved"], true, "{err}");
+    let swing = &line["swing"];
+    assert_eq!(swing["from"]["lead"], "solved");
+    let lead = swing["lead"].as_f64().unwrap().to_degrees();
+    assert!((lead - 26.0).abs() < 0.05, "{lead}");
+    let undercut = line["impact"]["undercut"].as_f64().unwrap();
+    assert!((undercut - 0.0608).abs() < 1e-4, "{undercut}");
+    let contact = swing["contact_speed"].as_f64().unwrap();
+    assert!((contact - 13.47).abs() < 0.01, "{contact}");
+    // The measured launch, to the solve's tolerance.
+    let angle = line["launch"]["angle"].as_f64().unwrap();
+    assert!((angle - 80f64.to_radians()).abs() < 1e-9, "{angle}");
     // A 2025 row: the preset's bat (the program knows no 2025 bat).
     assert_eq!(line["impact"]["bat"], "preset");
-    assert!(err.contains("1 launch angle out of reach"), "{err}");
+    assert!(err.contains("swings: solved 1 of 1 tracked"), "{err}");
 }

@@ -388,7 +388,7 @@ fn reference_rows() -> (Vec<&'static str>, Vec<Vec<&'static str>>) {
 fn an_independent_implementation_agrees_on_varied_3d_impacts() {
     let (names, rows) = reference_rows();
     assert!(rows.len() >= 30, "{} rows", rows.len());
-    let (mut stuck, mut slid, mut gripped) = (0, 0, 0);
+    let (mut stuck, mut slid, mut gripped, mut leading) = (0, 0, 0, 0);
     let mut worst: f64 = 0.0;
     for fields in rows {
         let row = Row {
@@ -403,6 +403,7 @@ fn an_independent_implementation_agrees_on_varied_3d_impacts() {
             "undercut",
             "swing_angle",
             "friction",
+            "lead",
         ] {
             scene
                 .set_text(&format!("bat.{key}"), row.text(key))
@@ -425,6 +426,7 @@ fn an_independent_implementation_agrees_on_varied_3d_impacts() {
         scene.validate().unwrap();
         let impact = Impact3d::new(&scene);
         gripped += usize::from(scene.bat.tangential_restitution > 0.0);
+        leading += usize::from(scene.bat.lead != 0.0);
         let case = row.fields.join(",");
         let regime = match impact.regime {
             Regime::Stick => "stick",
@@ -469,6 +471,10 @@ fn an_independent_implementation_agrees_on_varied_3d_impacts() {
     }
     assert!(stuck >= 10 && slid >= 5, "{stuck} stuck, {slid} slid");
     assert!(gripped >= 10, "{gripped} gripping");
+    // Bats leading their path by up to ±45° (bat.lead), both hands, some
+    // gripping and some slipping: the reference turns the bat by Rodrigues'
+    // rotation in its plane, the core by cos λ·â + sin λ·v̂.
+    assert!(leading >= 14, "{leading} leading");
     eprintln!("worst scaled disagreement with reference/impact3d.py: {worst:.1e}");
 }
 

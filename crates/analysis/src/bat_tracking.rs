@@ -10,7 +10,10 @@
 //!   only a ball faster than the sweet spot gives at the prior has its
 //!   swing angle ψ solved instead, at the sweet spot;
 //! - the bat's direction where the row has no `attack_direction` and has
-//!   a spray, taken as the launch direction.
+//!   a spray, taken as the launch direction;
+//! - where `attack_direction` measures the sweet spot's path, the bat's
+//!   lead over it (the barrel turned ahead of square within the swing
+//!   plane, `bat.lead`), toward the same spray; 0 (square) without a spray.
 //!
 //! So the impact gives the measured exit speed and launch angle (and
 //! direction) exactly, and then says what tracking cannot: the spin the
@@ -70,10 +73,11 @@ pub struct TrackedSwing {
 }
 
 impl TrackedSwing {
-    /// The spray, where the bat's direction is solved from it (no measured
-    /// attack direction).
+    /// The spray, where the launch is turned toward it: by the bat's
+    /// direction, or where `attack_direction` measures that, by the bat's
+    /// lead over its path (docs/swing-3d.md).
     pub fn spray_to_solve(&self) -> Option<f64> {
-        self.spray.filter(|_| self.attack_direction.is_none())
+        self.spray
     }
 }
 
@@ -165,6 +169,10 @@ pub enum Unreached {
     /// The Newton iteration did not reach the launch to 0.1 mph and 0.1°.
     #[error("the solve did not converge")]
     NoConvergence,
+    /// The launch reached only with the bat leading its measured path by
+    /// more than [`model::impact::MOST_LEAD`] (rad, the lead it took).
+    #[error("the bat's lead over its path needed is beyond ±45°")]
+    Lead { lead: f64 },
 }
 
 impl Unreached {

@@ -131,9 +131,15 @@ fn swing_preset(job: &Job, kept: &[String], shown: Shown) -> Option<Preset> {
         ),
         false => String::new(),
     };
+    // The bat's lead over its measured path, where solved (a 2025 row).
+    let lead = solved.scene.bat.lead;
+    let lead = match lead == 0.0 {
+        true => String::new(),
+        false => format!(", lead {}", angle(lead)),
+    };
     let description = format!(
-        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}, tilt {}{contact}, {}, q {:.3}, {}; \
-         here {} at {} (E for the paper's pitch path)",
+        "{}, line {}{}: measured {} at {}; solved E {}, ψ {}, tilt {}{lead}{contact}, {}, q {:.3}, \
+         {}; here {} at {} (E for the paper's pitch path)",
         // "Ohtani, Shohei" as "Shohei Ohtani": found by either name.
         cell("player_name").map_or(String::from("?"), |n| match n.split_once(", ") {
             Some((last, first)) => format!("{first} {last}"),
@@ -309,7 +315,8 @@ mod tests {
     #[test]
     fn a_compact_swing_opens_bit_for_bit_as_its_row_made_it() {
         let april = "../../../shared/data/statcast-2024-04-balls-in-play.csv";
-        for file in ["../../tests/data/savant_swings.csv", april] {
+        let leading = "../../tests/data/savant_2025_every_20th.csv";
+        for file in ["../../tests/data/savant_swings.csv", leading, april] {
             let Ok(input) = crate::open(file) else {
                 assert_eq!(file, april, "the committed sample opens");
                 continue;
@@ -330,6 +337,15 @@ mod tests {
             .unwrap();
             assert_eq!(swings.presets.len(), whole.len());
             assert!(whole.len() >= 33, "{file}: {}", whole.len());
+            // 2025's rows measure the bat's path: each swing carries its
+            // solved lead, in its scene and its description.
+            if file == leading {
+                assert!(
+                    whole
+                        .iter()
+                        .all(|p| p.scene.bat.lead != 0.0 && p.description.contains(", lead "))
+                );
+            }
             for (i, made) in whole.iter().enumerate() {
                 let opened = swings.presets.preset(i);
                 assert_eq!(

@@ -140,6 +140,13 @@ pub struct Bat {
     /// rolling.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub tangential_restitution: f64,
+    /// λ, the bat's lead over its path (rad): the barrel turned this far
+    /// within the swing plane ahead of square to the velocity, so the
+    /// contact point moves sin λ of its speed along the bat
+    /// ([`crate::impact::BatFrame::leading`]; docs/swing-3d.md). 0 is the
+    /// paper's bat, square to its path.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub lead: f64,
 }
 
 fn is_zero(value: &f64) -> bool {
@@ -151,7 +158,7 @@ impl Bat {
     /// meeting the ball in the vertical plane toward centre field. Either
     /// hand then swings the same (the plane is its own mirror image).
     pub fn is_planar(&self) -> bool {
-        self.tilt == 0.0 && self.direction == 0.0
+        self.tilt == 0.0 && self.direction == 0.0 && self.lead == 0.0
     }
 }
 
@@ -376,6 +383,7 @@ impl Default for Scene {
                 direction: 0.0,
                 hand: Hand::Right,
                 tangential_restitution: 0.0,
+                lead: 0.0,
             },
             ball: Ball {
                 mass: 0.145,

@@ -18,7 +18,7 @@ use crate::Preset;
 
 /// The numbers each swing keeps for itself: read from its scene, and
 /// written into its background to give the scene back.
-const OWN_NUMBERS: [fn(&mut Scene) -> &mut f64; 8] = [
+const OWN_NUMBERS: [fn(&mut Scene) -> &mut f64; 9] = [
     |s| &mut s.pitch.speed,
     |s| &mut s.pitch.spin,
     |s| &mut s.bat.speed,
@@ -26,6 +26,7 @@ const OWN_NUMBERS: [fn(&mut Scene) -> &mut f64; 8] = [
     |s| &mut s.bat.swing_angle,
     |s| &mut s.bat.tilt,
     |s| &mut s.bat.direction,
+    |s| &mut s.bat.lead,
     |s| &mut s.environment.contact_height,
 ];
 

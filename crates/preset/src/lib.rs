@@ -330,11 +330,12 @@ impl Preset {
         };
         // A calibration factor is written only when it scales (1: as
         // published), the tangential restitution only when the contact
-        // springs back (0: the paper's rolling).
+        // springs back (0: the paper's rolling), the bat's lead only when
+        // the bat leads (0: the paper's square bat).
         let unscaled = |k: &Key| {
             let value = (k.get)(&self.scene);
             (CALIBRATION_KEYS.iter().any(|c| c.name == k.name) && value == 1.0)
-                || (k.name == "bat.tangential_restitution" && value == 0.0)
+                || (["bat.tangential_restitution", "bat.lead"].contains(&k.name) && value == 0.0)
         };
         let keys: Vec<&Key> = all_keys()
             .filter(|k| !skipped.contains(&k.name) && !unscaled(k))

@@ -44,6 +44,11 @@ pub struct Found {
     pub contact_speed: How,
     /// E: always solved.
     pub undercut: How,
+    /// The bat's lead over its path: solved toward the spray where
+    /// `attack_direction` measures the path; else the scene's (0, the
+    /// square bat: without a measured path the lead and the direction
+    /// turn the launch alike, and the direction is solved).
+    pub lead: How,
 }
 
 impl Found {
@@ -74,6 +79,10 @@ impl Found {
                 false => How::Measured,
             },
             undercut: How::Solved,
+            lead: match swing.attack_direction.and(swing.spray) {
+                Some(_) => How::Solved,
+                None => How::Prior,
+            },
         }
     }
 }

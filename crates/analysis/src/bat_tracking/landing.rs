@@ -26,8 +26,8 @@ const PASSES: usize = 8;
 /// the spray; and where the launch direction came from: `Landing` once the
 /// impact's direction lands on the spray, `SprayUnsolved` where no
 /// direction does or the turning stopped (the last solved kept), `Scene`
-/// for a row without a spray or with a measured attack direction (the
-/// bat's direction is then no unknown).
+/// for a row without a spray. With a measured attack direction the bat's
+/// lead over it turns the launch, as the bat's direction does without.
 pub fn solve_landing(
     base: &Scene,
     swing: &TrackedSwing,
@@ -107,7 +107,7 @@ fn again(
     let bat = from.scene.bat;
     let newton = |problem: &Problem, second: f64| {
         problem
-            .newton([bat.undercut, second, bat.direction])
+            .newton([bat.undercut, second, problem.third_of(&bat)])
             .map(|x| problem.solved_at(x))
     };
     let solved = match problem.second {

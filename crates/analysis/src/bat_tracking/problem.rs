@@ -1,12 +1,15 @@
 //! One row's equations and their solve: the unknowns (E, then ψ or the
-//! bat's speed at the contact, and the direction where free) that make the
-//! paper's impact give the measured launch ([`super::solve`]).
+//! bat's speed at the contact, and the bat's direction or its lead where the
+//! row has a spray) that make the paper's impact give the measured launch
+//! ([`super::solve`]).
 
 use super::*;
 
 /// A start whose launch angle misses the target by more than this (rad)
 /// is no root of the angle's equation ([`Problem::named`]).
 const ROOT_ANGLE: f64 = 1e-6;
+/// The most lead (rad) a solved bat may have: the key's bound.
+const MOST_LEAD: f64 = model::impact::MOST_LEAD;
 
 /// The second unknown beside E.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -15,14 +18,26 @@ pub(super) enum Second {
     ContactSpeed,
 }
 
-/// One row's equations: unknowns x = (E, ψ or V̂_B0, φ), targets (EV, LA,
-/// spray).
+/// The third unknown, which turns the launch toward the spray.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Third {
+    /// None: the row has no spray; x[2] is the bat's direction, held.
+    Held,
+    /// The bat's direction φ (no `attack_direction`).
+    Direction,
+    /// The bat's lead λ over its measured path (`attack_direction`
+    /// measured): the direction is Statcast's, the barrel's heading is not.
+    Lead,
+}
+
+/// One row's equations: unknowns x = (E, ψ or V̂_B0, φ or λ), targets (EV,
+/// LA, spray).
 #[derive(Clone, Copy)]
 pub(super) struct Problem {
     pub(super) scene: Scene,
     pub(super) pitch: Vector3<f64>,
     pub(super) second: Second,
-    pub(super) free_direction: bool,
+    pub(super) third: Third,
     pub(super) target: [f64; 3],
     pub(super) prior: f64,
     /// The bat's speed at the contact allowed, as multiples of the sweet
@@ -51,7 +66,11 @@ impl Problem {
             scene,
             pitch: swing.pitch.velocity,
             second,
-            free_direction: swing.spray_to_solve().is_some(),
+            third: match (swing.spray_to_solve(), swing.attack_direction) {
+                (None, _) => Third::Held,
+                (Some(_), None) => Third::Direction,
+                (Some(_), Some(_)) => Third::Lead,
+            },
             target: [
                 swing.launch_speed,
                 swing.launch_angle,
@@ -70,8 +89,44 @@ impl Problem {
             Second::SwingAngle => scene.bat.swing_angle = x[1],
             Second::ContactSpeed => scene.bat.speed = x[1],
         }
-        scene.bat.direction = x[2];
+        match self.third {
+            Third::Lead => scene.bat.lead = x[2],
+            Third::Held | Third::Direction => scene.bat.direction = x[2],
+        }
         scene
+    }
+
+    /// The third unknown's value in `bat`.
+    pub(super) fn third_of(&self, bat: &model::scene::Bat) -> f64 {
+        match self.third {
+            Third::Lead => bat.lead,
+            Third::Held | Third::Direction => bat.direction,
+        }
+    }
+
+    /// The bat's direction where the third unknown is `third`.
+    fn direction_at(&self, third: f64) -> f64 {
+        match self.third {
+            Third::Lead => self.scene.bat.direction,
+            Third::Held | Third::Direction => third,
+        }
+    }
+
+    /// Whether the launch direction is a target (the row has a spray).
+    fn aimed(&self) -> bool {
+        self.third != Third::Held
+    }
+
+    /// About how far the launch turns per unit of the third unknown, for
+    /// the secant's first step only (it measures its own slope after): 1
+    /// for the bat's direction; for the lead, −1.5·h, a barrel ahead of its
+    /// path pulling the ball (about 1.5° a degree of lead, session 19's
+    /// patch, docs/swing-3d.md).
+    fn turn_per_unknown(&self) -> f64 {
+        match self.third {
+            Third::Lead => -1.5 * self.scene.bat.hand.sign(),
+            Third::Held | Third::Direction => 1.0,
+        }
     }
 
     pub(super) fn impact(&self, x: [f64; 3]) -> Impact3d {
@@ -98,16 +153,19 @@ impl Problem {
         let off = self.off_the_sweet_spot();
         // A slow bat turns the ball less: its direction may lie far from
         // the spray's, so where the spray's fails the start is tried from
-        // bats turned either way (with a free direction). A ball faster than
-        // the sweet spot gives is not reached by turning.
-        let turns: &[f64] = match off.free_direction {
+        // bats turned either way (with a free direction or lead). A ball
+        // faster than the sweet spot gives is not reached by turning.
+        let turns: &[f64] = match off.aimed() {
             true => &[0.0, -0.2, 0.2, -0.4, 0.4],
             false => &[0.0],
         };
         let mut failed = Unreached::NoConvergence;
         for turn in turns {
             let mut from = off;
-            from.scene.bat.direction += turn;
+            match from.third {
+                Third::Lead => from.scene.bat.lead += turn,
+                Third::Held | Third::Direction => from.scene.bat.direction += turn,
+            }
             match from.solve() {
                 Ok(solved) => return Ok(solved),
                 Err(why @ Unreached::TooFast { .. }) => return Err(why),
@@ -118,7 +176,18 @@ impl Problem {
     }
 
     pub(super) fn solve(&self) -> Result<SolvedSwing, Unreached> {
-        let direction = self.scene.bat.direction;
+        let x = self.unknowns()?;
+        // A lead past the key's bounds is no swing (docs/swing-3d.md):
+        // named, not kept.
+        if self.third == Third::Lead && x[2].abs() > MOST_LEAD {
+            return Err(Unreached::Lead { lead: x[2] });
+        }
+        Ok(self.solved_at(x))
+    }
+
+    /// The unknowns that give the launch.
+    fn unknowns(&self) -> Result<[f64; 3], Unreached> {
+        let direction = self.third_of(&self.scene.bat);
         // Newton's method from the prior swing, the undercut set to give
         // the angle: for an exit speed that rises and falls with ψ (near a
         // parabola) it reaches the root nearer its start. Where it fails,
@@ -144,7 +213,7 @@ impl Problem {
                 }
             }
         };
-        Ok(self.solved_at(x))
+        Ok(x)
     }
 
     /// Why a solve from `start` failed, named: a start whose launch angle
@@ -192,7 +261,7 @@ impl Problem {
         // signed past ±90° for a ball going back: it rises with E through
         // every forward launch, and is the launch angle for a ball going
         // forward.
-        let forward = model::frame::horizontal(direction);
+        let forward = model::frame::horizontal(self.direction_at(direction));
         let angle_less_target = |undercut: f64| {
             let impact = self.impact([undercut, second, direction]);
             let v = impact.after.ball_velocity;
@@ -402,7 +471,7 @@ impl Problem {
     /// alone is iterated (a secant), each step solving E and ψ (or V̂_B0)
     /// at that direction as the start did.
     pub(super) fn aim(&self, start: [f64; 3]) -> Result<[f64; 3], Unreached> {
-        if !self.free_direction {
+        if !self.aimed() {
             return Err(Unreached::NoConvergence);
         }
         let at = |direction: f64| match self.second {
@@ -411,7 +480,7 @@ impl Problem {
         };
         let miss = |x: [f64; 3]| self.impact(x).launch_direction() - self.target[2];
         let (mut last, mut last_miss) = (start, miss(start));
-        let mut x = at(start[2] - last_miss)?;
+        let mut x = at(start[2] - last_miss / self.turn_per_unknown())?;
         for _ in 0..30 {
             let now = miss(x);
             if self.converged(&self.residual(x)) {
@@ -435,7 +504,7 @@ impl Problem {
     /// when it is not an unknown.
     pub(super) fn residual(&self, x: [f64; 3]) -> Vector3<f64> {
         let impact = self.impact(x);
-        let direction = if self.free_direction {
+        let direction = if self.aimed() {
             impact.launch_direction() - self.target[2]
         } else {
             0.0
@@ -465,14 +534,14 @@ impl Problem {
                 return self.within_bounds(x).then_some(x);
             }
             let mut jacobian = Matrix3::identity();
-            let unknowns = if self.free_direction { 3 } else { 2 };
+            let unknowns = if self.aimed() { 3 } else { 2 };
             for j in 0..unknowns {
                 let mut moved = x;
                 moved[j] += STEPS[j];
                 let column = (self.residual(moved) - r) / STEPS[j];
                 jacobian.set_column(j, &column);
             }
-            if !self.free_direction {
+            if !self.aimed() {
                 jacobian.set_column(2, &Vector3::z());
             }
             let step = jacobian.lu().solve(&-r)?;

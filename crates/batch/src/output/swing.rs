@@ -5,10 +5,11 @@ use serde::Serialize;
 use super::CsvLine;
 use crate::row::Job;
 use crate::setup::quoted;
+use analysis::bat_tracking::How;
 use units::Quantity;
 
 /// The swing's CSV columns, after `line` (`hit --batch`).
-pub(crate) const CSV_COLUMNS: [(&str, Quantity); 24] = [
+pub(crate) const CSV_COLUMNS: [(&str, Quantity); 26] = [
     ("solved", Quantity::Unchanged),
     ("reason", Quantity::Unchanged),
     ("shortfall", Quantity::Speed),
@@ -19,11 +20,13 @@ pub(crate) const CSV_COLUMNS: [(&str, Quantity); 24] = [
     ("swing.angle", Quantity::Angle),
     ("swing.direction", Quantity::Angle),
     ("swing.tilt", Quantity::Angle),
+    ("swing.lead", Quantity::Angle),
     ("swing.from.angle", Quantity::Unchanged),
     ("swing.from.direction", Quantity::Unchanged),
     ("swing.from.tilt", Quantity::Unchanged),
     ("swing.from.contact_speed", Quantity::Unchanged),
     ("swing.from.undercut", Quantity::Unchanged),
+    ("swing.from.lead", Quantity::Unchanged),
     ("impact.undercut", Quantity::Size),
     ("impact.regime", Quantity::Unchanged),
     ("impact.bat", Quantity::Unchanged),
@@ -61,6 +64,7 @@ pub(crate) fn write_csv(csv: &CsvLine, out: &mut Vec<u8>, job: &Job) {
     csv.number(out, Quantity::Angle, bat.map(|b| b.swing_angle), 6);
     csv.number(out, Quantity::Angle, bat.map(|b| b.direction), 6);
     csv.number(out, Quantity::Angle, bat.map(|b| b.tilt), 6);
+    csv.number(out, Quantity::Angle, bat.map(|b| b.lead), 6);
     let from = swing.found_names();
     for k in 0..5 {
         if let Some(from) = from {
@@ -68,6 +72,10 @@ pub(crate) fn write_csv(csv: &CsvLine, out: &mut Vec<u8>, job: &Job) {
         }
         out.push(b',');
     }
+    if let Some(lead) = lead_found(job) {
+        out.extend_from_slice(lead.as_bytes());
+    }
+    out.push(b',');
     csv.number(out, Quantity::Size, bat.map(|b| b.undercut), 6);
     if let Some(solved) = solved {
         out.extend_from_slice(solved.regime.name().as_bytes());
@@ -85,6 +93,18 @@ pub(crate) fn write_csv(csv: &CsvLine, out: &mut Vec<u8>, job: &Job) {
     csv.number(out, Quantity::Unchanged, solved.map(|s| s.squared_up()), 5);
     csv.number(out, Quantity::Unchanged, swing.savant_squared_up, 5);
     csv.number(out, Quantity::Spin, solved.map(|s| s.launch.gyrospin), 3);
+}
+
+/// How the solved swing's lead over its path was found: `solved` (a
+/// measured `attack_direction` and a spray), else `prior` (0, the square
+/// bat) or `given` (`--set bat.lead` or a column).
+fn lead_found(job: &Job) -> Option<&'static str> {
+    let swing = job.swing.as_ref()?;
+    let how = swing.found()?.lead;
+    Some(match how {
+        How::Prior if swing.solved()?.scene.bat.lead != 0.0 => "given",
+        how => how.name(),
+    })
 }
 
 #[derive(Serialize)]
@@ -114,6 +134,7 @@ pub(crate) struct FromJson {
     tilt: &'static str,
     contact_speed: &'static str,
     undercut: &'static str,
+    lead: &'static str,
 }
 
 #[derive(Serialize)]
@@ -126,6 +147,9 @@ pub(crate) struct SwingJson {
     contact_speed: f64,
     direction: f64,
     from: FromJson,
+    /// The bat's lead over its path (rad): solved where the path is
+    /// measured, else 0.
+    lead: f64,
     /// The bat's tilt the swing was solved at: `swing_path_tilt`, or the
     /// league's where the row has none.
     tilt: f64,
@@ -182,7 +206,9 @@ pub(crate) fn json_parts(job: &Job) -> JsonParts<'static> {
                     tilt: from[2],
                     contact_speed: from[3],
                     undercut: from[4],
+                    lead: lead_found(job).unwrap_or_default(),
                 },
+                lead: s.scene.bat.lead,
                 tilt: s.scene.bat.tilt,
             }),
         gyrospin: solved.map(|s| s.launch.gyrospin),

@@ -9,7 +9,8 @@
 //! - its axis, from the hands to the barrel, is â = h·cos τ·b̂ − sin τ·ŷ
 //!   (τ > 0: the barrel below the hands) at the bottom of the swing's arc
 //!   (ψ = 0); a bat rising through the contact lies in its swing plane,
-//!   square to its velocity ([`BatFrame::swung`]);
+//!   square to its velocity ([`BatFrame::swung`]), or leading it by λ
+//!   within that plane ([`BatFrame::leading`]);
 //! - "up, square to the bat" is û = h·sin τ·b̂ + cos τ·ŷ, the unit vector
 //!   square to â in the vertical plane that holds â;
 //! - the ball's centre sits at (r_b + r_B)(cos θ·ŵ + sin θ·û) from the
@@ -67,6 +68,15 @@ pub fn barrel_in_swing_plane(plane_tilt: f64, swing_angle: f64) -> (f64, f64) {
     (drop, turn)
 }
 
+/// The most a bat may lead its path (rad), either way: ±45°. sin λ is the
+/// share of the contact point's speed that runs along the bat, the hands'
+/// drive along it over the sweet spot's speed ([`BatFrame::leading`]); at
+/// 45° the bat slides along itself as fast as it sweeps across, and beyond
+/// it would slide faster than it sweeps: a bat dragged along its length,
+/// which "the undercut square to the bat" of Eq. (1) does not describe, and
+/// no swing (docs/swing-3d.md, *The bat's lead over its path*).
+pub const MOST_LEAD: f64 = std::f64::consts::FRAC_PI_4;
+
 impl BatFrame {
     /// The bat tilted `tilt` (barrel below the hands), swung toward
     /// `direction`, held by a batter of `hand`.
@@ -89,12 +99,53 @@ impl BatFrame {
     /// [`barrel_in_swing_plane`], so the velocity is square to the axis.
     /// At a level plane (the paper's) this is [`BatFrame::new`]`(0, φ, h)`
     /// with the velocity tipped up by ψ, to the bit.
-    pub fn swung(plane_tilt: f64, swing_angle: f64, direction: f64, hand: Hand) -> BatFrame {
+    ///
+    /// A bat that leads its path by `lead` λ (rad, [`BatFrame::leading`])
+    /// is turned within that plane; λ = 0, the square bat, is the frame
+    /// above to the bit.
+    pub fn swung(
+        plane_tilt: f64,
+        swing_angle: f64,
+        direction: f64,
+        lead: f64,
+        hand: Hand,
+    ) -> BatFrame {
         let (drop, turn) = barrel_in_swing_plane(plane_tilt, swing_angle);
         let mut bat = BatFrame::new(drop, direction + turn * hand.sign(), hand);
         let (sin, cos) = swing_angle.sin_cos();
         bat.path = frame::horizontal(direction) * cos + Vector3::y() * sin;
-        bat
+        match lead == 0.0 {
+            true => bat,
+            false => bat.leading(lead, hand),
+        }
+    }
+
+    /// This bat turned by `lead` λ within the plane that holds its axis and
+    /// its path, the barrel toward the path (forward, ahead of the hands'
+    /// square position), its path kept: â' = cos λ·â + sin λ·v̂, for a bat
+    /// square to its path (â·v̂ = 0, as [`BatFrame::swung`] gives it).
+    ///
+    /// Statcast's `attack_direction` and `attack_angle` are the sweet
+    /// spot's velocity v̂, not the bat's orientation. The sweet spot of a bat
+    /// turning at ω whose knob moves at v_knob moves at v = v_knob + ω × r,
+    /// and ω × r is square to the bat, so v·â = v_knob·â: a bat square to
+    /// its sweet spot's path is one whose hands move square to it. Where the
+    /// hands drive along the bat toward the barrel as it releases, the
+    /// barrel leads: sin λ = v_knob·â / |v| (docs/swing-3d.md, *The bat's
+    /// lead over its path*). The axis keeps its plane, so the barrel's drop
+    /// and heading follow: drop δ' = asin(−â'·ŷ), heading from â''s
+    /// horizontal part.
+    pub fn leading(&self, lead: f64, hand: Hand) -> BatFrame {
+        let (sin, cos) = lead.sin_cos();
+        let axis = self.axis * cos + self.path * sin;
+        let drop = (-axis.y).clamp(-1.0, 1.0).asin();
+        // â = h·cos δ·b̂(φ) − sin δ·ŷ with b̂(φ) = (−sin φ, 0, cos φ).
+        let h = hand.sign();
+        let heading = (-h * axis.x).atan2(h * axis.z);
+        BatFrame {
+            path: self.path,
+            ..BatFrame::new(drop, heading, hand)
+        }
     }
 
     /// The bat's velocity (m/s): `speed` along its path.
@@ -191,7 +242,7 @@ mod tests {
             (0.3, 0.45, 0.2),
         ] {
             for hand in Hand::ALL {
-                let bat = BatFrame::swung(tilt, swing_angle, direction, hand);
+                let bat = BatFrame::swung(tilt, swing_angle, direction, 0.0, hand);
                 assert!(orthonormal([bat.axis, bat.up, bat.forward]));
                 let path = bat.path;
                 // The velocity keeps the keys' meaning: ψ above the
@@ -219,7 +270,7 @@ mod tests {
     fn a_level_plane_is_the_papers_bat_to_the_bit() {
         for hand in Hand::ALL {
             for (swing_angle, direction) in [(0.1594, 0.0), (-0.3, 0.25), (0.7, -0.5)] {
-                let bat = BatFrame::swung(0.0, swing_angle, direction, hand);
+                let bat = BatFrame::swung(0.0, swing_angle, direction, 0.0, hand);
                 let level = BatFrame::new(0.0, direction, hand);
                 assert_eq!(
                     (bat.axis, bat.up, bat.forward),
@@ -233,10 +284,54 @@ mod tests {
             }
         }
         // At the bottom of a tilted arc the bat is `new`'s.
-        let bottom = BatFrame::swung(0.5, 0.0, 0.2, Hand::Right);
+        let bottom = BatFrame::swung(0.5, 0.0, 0.2, 0.0, Hand::Right);
         let new = BatFrame::new(0.5, 0.2, Hand::Right);
         assert!((bottom.axis - new.axis).norm() < 1e-15);
         assert_eq!(bottom.path, new.forward);
+    }
+
+    #[test]
+    fn a_leading_bat_turns_in_its_plane_toward_its_path() {
+        for (tilt, swing_angle, direction, lead) in [
+            (0.5585, 0.1594, 0.0, 0.15),
+            (0.5585, 0.35, -0.3, -0.2),
+            (0.69, -0.2, 0.4, 0.6),
+            (0.0, 0.3, 0.1, 0.1),
+        ] {
+            for hand in Hand::ALL {
+                let square = BatFrame::swung(tilt, swing_angle, direction, 0.0, hand);
+                let bat = BatFrame::swung(tilt, swing_angle, direction, lead, hand);
+                assert!(orthonormal([bat.axis, bat.up, bat.forward]));
+                // The path is the measured one; the sweet spot now moves
+                // sin λ of its speed along the bat, toward the barrel's end
+                // for a positive lead.
+                assert_eq!(bat.path, square.path);
+                assert!((bat.axis.dot(&bat.path) - f64::sin(lead)).abs() < 1e-15);
+                // Turned within the plane of the square bat and its path.
+                let plane = square.path.cross(&square.axis);
+                assert!(bat.axis.dot(&plane).abs() < 1e-15);
+                let turned = square.axis.dot(&bat.axis).clamp(-1.0, 1.0).acos();
+                assert!((turned - lead.abs()).abs() < 1e-7, "{turned} {lead}");
+                // The frame is `new`'s for the new axis: up square to it in
+                // its vertical plane, forward horizontal.
+                assert!(bat.up.y > 0.0 && bat.forward.y == 0.0);
+                assert!(bat.up.dot(&bat.axis).abs() < 1e-15);
+            }
+            // A left-handed batter leading by λ mirrors a right-handed one
+            // swung toward −φ and leading by λ.
+            let right = BatFrame::swung(tilt, swing_angle, -direction, lead, Hand::Right);
+            let left = BatFrame::swung(tilt, swing_angle, direction, lead, Hand::Left);
+            let mirror = |v: Vector3<f64>| Vector3::new(v.x, v.y, -v.z);
+            assert!((left.axis - mirror(right.axis)).norm() < 1e-15);
+            assert!((left.up - mirror(right.up)).norm() < 1e-15);
+            assert!((left.path - mirror(right.path)).norm() < 1e-15);
+        }
+        // A positive lead puts a square, level bat's barrel out in front of
+        // the hands (toward the pitcher) for either hand.
+        for hand in Hand::ALL {
+            let bat = BatFrame::swung(0.0, 0.0, 0.0, 0.2, hand);
+            assert!((bat.axis.x - f64::sin(0.2)).abs() < 1e-15);
+        }
     }
 
     #[test]

@@ -13,7 +13,7 @@ mod planar;
 mod slip;
 mod spatial;
 
-pub use geometry::{BatFrame, ContactFrame, barrel_in_swing_plane};
+pub use geometry::{BatFrame, ContactFrame, MOST_LEAD, barrel_in_swing_plane};
 pub use planar::{ContactState, Impact, ImpactAngles, NormalAngles, PitchAngles};
 pub use spatial::{Contact3d, Impact3d, SlipPoint};
 

@@ -133,7 +133,8 @@ impl Impact3d {
         let (ball, bat) = (scene.ball, scene.bat);
         // Eq. (1), square to the bat; the clamp only guards rounding.
         let normal_angle = (bat.undercut / scene.reach()).clamp(-1.0, 1.0).asin();
-        let bat_frame = BatFrame::swung(bat.tilt, bat.swing_angle, bat.direction, bat.hand);
+        let bat_frame =
+            BatFrame::swung(bat.tilt, bat.swing_angle, bat.direction, bat.lead, bat.hand);
         let frame = ContactFrame::new(bat_frame, normal_angle, bat.hand);
         let ball_spin_before = Vector3::z() * scene.pitch.spin;
         let bat_velocity_before = bat_frame.velocity(bat.speed);

@@ -21,7 +21,7 @@ mod typed;
 pub use batch::InputBatch;
 pub use table::{
     AIR_KEYS, ATMOSPHERE_KEYS, CALIBRATION_KEYS, DRAG_KEY, EXTENDED_KEYS, HAND_KEY, KEYS,
-    LAUNCH_KEYS, LIFT_KEY, SWING_3D_KEYS, TEXT_KEYS, all_keys, swing_keys,
+    LAUNCH_KEYS, LIFT_KEY, SWING_3D_KEYS, TEXT_KEYS, TRACKING_KEYS, all_keys, swing_keys,
 };
 pub use typed::{Typed, out_of_range_shown, read_in_system, read_typed};
 
@@ -421,7 +421,7 @@ impl Scene {
 fn checking_order(derived: bool) -> &'static [&'static Key] {
     static ORDERS: std::sync::OnceLock<[Vec<&'static Key>; 2]> = std::sync::OnceLock::new();
     let orders = ORDERS.get_or_init(|| {
-        let inputs = || swing_keys().chain(CALIBRATION_KEYS);
+        let inputs = || swing_keys().chain(CALIBRATION_KEYS).chain(TRACKING_KEYS);
         let later = |key: &&Key| AIR_KEYS.contains(&key.name);
         let given: Vec<_> = inputs().collect();
         let derived = inputs()

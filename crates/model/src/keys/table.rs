@@ -455,11 +455,30 @@ pub const CALIBRATION_KEYS: &[Key] = &[
     ),
 ];
 
+/// What bat tracking's solve finds beyond the paper's swing: the bat's lead
+/// over its path (docs/swing-3d.md, *The bat's lead over its path*). Kept
+/// apart from [`EXTENDED_KEYS`] so that the explorer's rows stay as they
+/// are; `homerun keys`, `--set`, presets (where not 0) and batch columns
+/// take it.
+pub const TRACKING_KEYS: &[Key] = &[key!(
+    "bat.lead",
+    "λ_B",
+    "rad",
+    "bat's lead over its path: barrel turned ahead of square to the velocity, in the swing plane (0: the paper's square bat)",
+    Bounds::closed(-crate::impact::MOST_LEAD, crate::impact::MOST_LEAD),
+    "sin λ is the share of the contact point's speed along the bat (the hands' drive along it); at ±45° the bat slides along itself as fast as it sweeps across, beyond it faster, a bat dragged along its length rather than swung (docs/swing-3d.md).",
+    0.01,
+    bat.lead
+)];
+
 /// Every numeric input: [`KEYS`], then [`EXTENDED_KEYS`], then
-/// [`LAUNCH_KEYS`], then [`CALIBRATION_KEYS`] (last, so that the explorer's
-/// indices into the others stay).
+/// [`LAUNCH_KEYS`], then [`CALIBRATION_KEYS`] and [`TRACKING_KEYS`] (last,
+/// so that the explorer's indices into the others stay).
 pub fn all_keys() -> impl Iterator<Item = &'static Key> {
-    swing_keys().chain(LAUNCH_KEYS).chain(CALIBRATION_KEYS)
+    swing_keys()
+        .chain(LAUNCH_KEYS)
+        .chain(CALIBRATION_KEYS)
+        .chain(TRACKING_KEYS)
 }
 
 /// The numeric inputs of a swing scene: all but the launch, which a swing
