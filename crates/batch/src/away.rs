@@ -112,7 +112,7 @@ impl AwayRows {
             let when = match kind {
                 AwayWhy::Unsure => format!("{year}, its date not given"),
                 AwayWhy::NotAtHome(game) => format!("{year}, {}", game.name()),
-                AwayWhy::Neutral(venue) => format!("{year}, at {venue}"),
+                AwayWhy::Neutral(venue) => format!("{year}, at {venue}, in its air"),
                 _ => year,
             };
             named.push(format!("{code}{when} ({n} row{})", plural(n)));

@@ -326,6 +326,16 @@ fn read_cells(
     if let Some(index) = park {
         given.park_air(&mut scene.environment, setup.parks.parks[index].elevation);
     }
+    // A neutral site's air, though it has no fence here.
+    let site = savant.day.zip(away).and_then(|(day, away)| {
+        let at_site = matches!(away.why, AwayWhy::Neutral(_));
+        at_site
+            .then(|| neutral_site(day, &setup.parks.parks[away.park]))
+            .flatten()
+    });
+    if let Some(site) = site {
+        given.park_air(&mut scene.environment, site.elevation);
+    }
     let valid = swings.validate(scene, header.launch_only.then_some(park));
     if let Err(mut e) = valid {
         // Out of range from a column in mph, ° or rpm: shown in that unit

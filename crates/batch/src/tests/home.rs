@@ -52,15 +52,36 @@ fn a_row_played_where_its_home_team_was_not_at_home_is_at_no_park() {
     let mut lines = out.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     let at = header.iter().position(|h| *h == "park").unwrap();
-    let judged: Vec<&str> = lines.map(|l| l.split(',').nth(at).unwrap()).collect();
+    let cells: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let judged: Vec<&str> = cells.iter().map(|c| c[at]).collect();
+    // Mexico City's air (2,240 m up) carries a ball farther than Coors
+    // Field's (1,580 m), and Coors' farther than Fenway's.
+    let range = |code: &str, date: &str| -> f64 {
+        let k = rows
+            .iter()
+            .position(|r| (r.0, r.1) == (code, date))
+            .unwrap();
+        cells[k][header.iter().position(|h| *h == "range").unwrap()]
+            .parse()
+            .unwrap()
+    };
+    let (mexico, coors, fenway) = (
+        range("COL", "2024-04-27"),
+        range("COL", "2024-04-29"),
+        range("BOS", "2016-06-01"),
+    );
+    assert!(
+        mexico > coors + 2.0 && coors > fenway + 5.0,
+        "{mexico} {coors} {fenway}"
+    );
     let wanted: Vec<&str> = rows.iter().map(|r| r.3).collect();
     assert_eq!(judged, wanted);
     assert!(
         err.contains(
             "10 rows played where home_team's park was not home, at no park: ATL 2016 (1 row), \
              BOS 2024, spring training (1 row), \
-             COL 2024, at Estadio Alfredo Harp Helú, Mexico City (1 row), \
-             HOU 2024, at Estadio Alfredo Harp Helú, Mexico City (1 row), \
+             COL 2024, at Estadio Alfredo Harp Helú, Mexico City, in its air (1 row), \
+             HOU 2024, at Estadio Alfredo Harp Helú, Mexico City, in its air (1 row), \
              ATH 2025 (2 rows), TB 2025 (1 row), \
              TEX 2019 (1 row), TOR 2021 (1 row), TOR 2021, its date not given (1 row)"
         ),

@@ -17,6 +17,8 @@ pub struct NeutralSite {
     /// Both teams' codes: a row is matched whichever was the home team.
     pub teams: [String; 2],
     pub venue: String,
+    /// The field's height above sea level (m): its standard air.
+    pub elevation: f64,
 }
 
 #[derive(Deserialize)]
@@ -31,6 +33,7 @@ struct Entry {
     days: Vec<String>,
     teams: [String; 2],
     venue: String,
+    elevation: f64,
 }
 
 /// The file, compiled in.
@@ -45,6 +48,7 @@ static SITES: LazyLock<Vec<NeutralSite>> = LazyLock::new(|| {
                 .collect(),
             teams: game.teams,
             venue: game.venue,
+            elevation: game.elevation,
         })
         .collect()
 });
@@ -71,6 +75,7 @@ mod tests {
         assert_eq!(sites.len(), 25);
         for site in sites {
             assert!(!site.days.is_empty(), "{site:?}");
+            assert!((0.0..3000.0).contains(&site.elevation), "{site:?}");
             for team in &site.teams {
                 assert!(find(bundled(), team).is_some(), "{team}");
             }
@@ -85,6 +90,7 @@ mod tests {
         let park = |code| find(bundled(), code).unwrap();
         let site = neutral_site(day(2024, 4, 27), park("COL")).unwrap();
         assert_eq!(site.venue, "Estadio Alfredo Harp Helú, Mexico City");
+        assert_eq!(site.elevation, 2240.0);
         assert!(neutral_site(day(2024, 4, 28), park("HOU")).is_some());
         assert!(neutral_site(day(2024, 4, 29), park("COL")).is_none());
         assert!(neutral_site(day(2024, 4, 27), park("BOS")).is_none());
