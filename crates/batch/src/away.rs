@@ -19,6 +19,8 @@ pub(crate) struct Away {
     pub park: usize,
     pub season: Option<i32>,
     pub why: AwayWhy,
+    /// A neutral site's elevation (m): the row flies in its air.
+    pub site_elevation: Option<f64>,
 }
 
 /// Why a row is [`Away`].

@@ -327,14 +327,8 @@ fn read_cells(
         given.park_air(&mut scene.environment, setup.parks.parks[index].elevation);
     }
     // A neutral site's air, though it has no fence here.
-    let site = savant.day.zip(away).and_then(|(day, away)| {
-        let at_site = matches!(away.why, AwayWhy::Neutral(_));
-        at_site
-            .then(|| neutral_site(day, &setup.parks.parks[away.park]))
-            .flatten()
-    });
-    if let Some(site) = site {
-        given.park_air(&mut scene.environment, site.elevation);
+    if let Some(elevation) = away.and_then(|away| away.site_elevation) {
+        given.park_air(&mut scene.environment, elevation);
     }
     let valid = swings.validate(scene, header.launch_only.then_some(park));
     if let Err(mut e) = valid {
@@ -578,6 +572,7 @@ impl SavantCells {
             park,
             season: self.season(),
             why,
+            site_elevation: None,
         };
         if let Some(game_type) = self.game_type {
             return (None, Some(away(AwayWhy::NotAtHome(game_type))));
@@ -586,7 +581,11 @@ impl SavantCells {
             .day
             .and_then(|day| neutral_site(day, &setup.parks.parks[park]));
         if let Some(site) = neutral {
-            return (None, Some(away(AwayWhy::Neutral(&site.venue))));
+            let at_site = Away {
+                site_elevation: Some(site.elevation),
+                ..away(AwayWhy::Neutral(&site.venue))
+            };
+            return (None, Some(at_site));
         }
         match setup.parks.parks[park].home_on(played) {
             AtHome::Yes => (Some(park), None),
