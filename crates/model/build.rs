@@ -27,15 +27,15 @@ fn main() {
                 .or_else(|| value.as_integer().map(|i| i as f64))
                 .expect("a number")
         };
-        let aliases: Vec<String> = park
-            .get("aliases")
-            .and_then(|a| a.as_array())
-            .map(|a| {
-                a.iter()
-                    .map(|s| format!("{:?}", s.as_str().expect("alias")))
-                    .collect()
-            })
-            .unwrap_or_default();
+        // A list of strings (`aliases`, `home`), as Rust's `&[..]` items.
+        let strings = |key: &str| -> String {
+            let items = park.get(key).and_then(|a| a.as_array());
+            let quoted = items
+                .into_iter()
+                .flatten()
+                .map(|s| format!("{:?}", s.as_str().expect(key)));
+            quoted.collect::<Vec<_>>().join(", ")
+        };
         let published = match park.get("published").and_then(|p| p.as_table()) {
             Some(p) => format!(
                 "Some([{:?}, {:?}, {:?}])",
@@ -50,7 +50,7 @@ fn main() {
             "BundledEntry {{ code: {}, aliases: &[{}], name: {}, city: {:?}, elevation: {:?}, \
              center_field_bearing: {:?}, published: {published}, fence: &[",
             text("code"),
-            aliases.join(", "),
+            strings("aliases"),
             text("name"),
             park.get("city").and_then(|c| c.as_str()).unwrap_or(""),
             number(&park["elevation"]),
@@ -66,16 +66,7 @@ fn main() {
                 number(&p["height"])
             );
         }
-        let home: Vec<String> = park
-            .get("home")
-            .and_then(|h| h.as_array())
-            .map(|h| {
-                h.iter()
-                    .map(|s| format!("{:?}", s.as_str().expect("a home span")))
-                    .collect()
-            })
-            .unwrap_or_default();
-        let _ = writeln!(out, "], home: &[{}] }},", home.join(", "));
+        let _ = writeln!(out, "], home: &[{}] }},", strings("home"));
     }
     out.push(']');
     let path =

@@ -577,9 +577,8 @@ impl SavantCells {
         if let Some(game_type) = self.game_type {
             return (None, Some(away(AwayWhy::NotAtHome(game_type))));
         }
-        let neutral = self
-            .day
-            .and_then(|day| neutral_site(day, &setup.parks.parks[park]));
+        let at = &setup.parks.parks[park];
+        let neutral = self.day.and_then(|day| neutral_site(day, at));
         if let Some(site) = neutral {
             let at_site = Away {
                 site_elevation: Some(site.elevation),
@@ -587,11 +586,9 @@ impl SavantCells {
             };
             return (None, Some(at_site));
         }
-        match setup.parks.parks[park].home_on(played) {
+        match at.home_on(played) {
             AtHome::Yes => (Some(park), None),
-            AtHome::Undated if setup.parks.parks[park].always_home_since(STATCAST) => {
-                (Some(park), None)
-            }
+            AtHome::Undated if at.always_home_since(STATCAST) => (Some(park), None),
             AtHome::Undated => (Some(park), Some(away(AwayWhy::Undated))),
             AtHome::No => (None, Some(away(AwayWhy::NotHome))),
             AtHome::Unsure => (None, Some(away(AwayWhy::Unsure))),

@@ -56,10 +56,6 @@ impl Day {
         u32::from(self.month)
     }
 
-    pub fn day(self) -> u32 {
-        u32::from(self.day)
-    }
-
     fn first_of(year: i32) -> Day {
         Day {
             year,
@@ -152,12 +148,20 @@ impl HomeSpan {
     /// As a park file writes it ([`Self::parse`]'s text): "1998..2024",
     /// "2021-07-30..".
     pub fn as_written(&self) -> String {
-        let end = |day: Option<Day>, (month, date)| match day {
-            None => String::new(),
-            Some(d) if (d.month, d.day) == (month, date) => d.year.to_string(),
-            Some(d) => d.to_string(),
+        let (from, to) = self.ends();
+        format!("{}..{}", from.unwrap_or_default(), to.unwrap_or_default())
+    }
+
+    /// Its ends as text: a year where the span takes the whole of it (from
+    /// the first of January, to the last of December), else the day.
+    fn ends(&self) -> (Option<String>, Option<String>) {
+        let end = |day: Option<Day>, whole_year: (u8, u8)| {
+            day.map(|d| match (d.month, d.day) == whole_year {
+                true => d.year.to_string(),
+                false => d.to_string(),
+            })
         };
-        format!("{}..{}", end(self.from, (1, 1)), end(self.to, (12, 31)))
+        (end(self.from, (1, 1)), end(self.to, (12, 31)))
     }
 
     pub fn contains(&self, day: Day) -> bool {
@@ -176,15 +180,7 @@ impl HomeSpan {
 impl fmt::Display for HomeSpan {
     /// "1998–2024", "2026 on", "2021-07-30 on", "to 2024".
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let from = self.from.map(|d| match (d.month, d.day) {
-            (1, 1) => d.year.to_string(),
-            _ => d.to_string(),
-        });
-        let to = self.to.map(|d| match (d.month, d.day) {
-            (12, 31) => d.year.to_string(),
-            _ => d.to_string(),
-        });
-        match (from, to) {
+        match self.ends() {
             (Some(from), Some(to)) if from == to => write!(f, "{from}"),
             (Some(from), Some(to)) => write!(f, "{from}–{to}"),
             (Some(from), None) => write!(f, "{from} on"),
@@ -214,6 +210,13 @@ pub fn at_home(spans: &[HomeSpan], played: Played) -> AtHome {
         }
         Played::Unknown => AtHome::Undated,
     }
+}
+
+/// Whether a park whose home spans are `spans` (none: always home) has
+/// been home every day from the first of `year` on.
+pub fn home_since(spans: &[HomeSpan], year: i32) -> bool {
+    let first = Day::first_of(year);
+    spans.is_empty() || (spans.iter()).any(|s| s.contains(first) && s.to.is_none())
 }
 
 /// The spans as a reader says them: "1989-06-05–2019, 2021-07-30 on".

@@ -165,12 +165,7 @@ impl Park {
 
     /// Whether it has been home every day from the first of `year` on.
     pub fn always_home_since(&self, year: i32) -> bool {
-        let first = Day::new(year, 1, 1).expect("the first of January");
-        self.home.is_empty()
-            || self
-                .home
-                .iter()
-                .any(|s| s.contains(first) && s.to.is_none())
+        home::home_since(&self.home, year)
     }
 
     /// A wind's direction in the flight frame: radians from the
