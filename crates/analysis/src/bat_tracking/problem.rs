@@ -30,6 +30,16 @@ pub(super) enum Third {
     Lead,
 }
 
+impl Third {
+    /// Where it lives in `bat`: the lead, or the bat's direction.
+    fn of(self, bat: &mut model::scene::Bat) -> &mut f64 {
+        match self {
+            Third::Lead => &mut bat.lead,
+            Third::Held | Third::Direction => &mut bat.direction,
+        }
+    }
+}
+
 /// One row's equations: unknowns x = (E, ψ or V̂_B0, φ or λ), targets (EV,
 /// LA, spray).
 #[derive(Clone, Copy)]
@@ -89,19 +99,14 @@ impl Problem {
             Second::SwingAngle => scene.bat.swing_angle = x[1],
             Second::ContactSpeed => scene.bat.speed = x[1],
         }
-        match self.third {
-            Third::Lead => scene.bat.lead = x[2],
-            Third::Held | Third::Direction => scene.bat.direction = x[2],
-        }
+        *self.third.of(&mut scene.bat) = x[2];
         scene
     }
 
     /// The third unknown's value in `bat`.
     pub(super) fn third_of(&self, bat: &model::scene::Bat) -> f64 {
-        match self.third {
-            Third::Lead => bat.lead,
-            Third::Held | Third::Direction => bat.direction,
-        }
+        let mut bat = *bat;
+        *self.third.of(&mut bat)
     }
 
     /// The bat's direction where the third unknown is `third`.
@@ -162,10 +167,7 @@ impl Problem {
         let mut failed = Unreached::NoConvergence;
         for turn in turns {
             let mut from = off;
-            match from.third {
-                Third::Lead => from.scene.bat.lead += turn,
-                Third::Held | Third::Direction => from.scene.bat.direction += turn,
-            }
+            *from.third.of(&mut from.scene.bat) += turn;
             match from.solve() {
                 Ok(solved) => return Ok(solved),
                 Err(why @ Unreached::TooFast { .. }) => return Err(why),
