@@ -133,12 +133,10 @@ pub(crate) fn fly_chunk(
         let landing = Landing::of(&summary);
         let clearing = Clearing::judge_landed(ready.own, crossings[0], &summary, landing);
         let from = scratch.clearings.len();
-        let judged = parks.iter().zip(&crossings[1..]);
-        scratch.clearings.extend(
-            judged.map(|(fence, crossing)| {
-                Clearing::judge_landed(fence, *crossing, &summary, landing)
-            }),
-        );
+        // How each park's verdict is found: from this flight alone, from
+        // flights in the parks' own air, or settled from this one (then
+        // the parks' airs are kept with it).
+        let mut settling = None;
         if !setup.one_flight {
             let own = &ready.scene.environment;
             let airs = scratch.airs.of(own, job.given, &setup.parks.parks);
@@ -158,23 +156,42 @@ pub(crate) fn fly_chunk(
                 // Settled from this flight and as few more as it takes
                 // (a row short of every wall in every park's air keeps
                 // its own verdicts).
-                pending.push(park_air::Pending {
-                    scene: ready.scene,
-                    launch_direction: ready.launch.direction,
-                    airs: airs.to_vec(),
-                    from,
-                    flights: vec![park_air::Reference {
-                        density: own.air_density,
-                        flight: summary,
-                        slack: 0.0,
-                        clearings: scratch.clearings[from..]
-                            .iter()
-                            .copied()
-                            .map(Some)
-                            .collect(),
-                    }],
-                });
+                settling = Some(airs.to_vec());
             }
+        }
+        // Judged whole where the margins are printed (`--all-parks`); else
+        // only the verdicts are read, and what settles them.
+        let judge = match setup.all_parks {
+            true => Clearing::judge_landed,
+            false => Clearing::outcome_landed,
+        };
+        let judged = parks.iter().zip(&crossings[1..]);
+        (scratch.clearings)
+            .extend(judged.map(|(fence, crossing)| judge(fence, *crossing, &summary, landing)));
+        // A row whose own flight settles every park keeps its verdicts
+        // (what the settling's first round would find, without its lists).
+        let settling = settling.filter(|airs| {
+            let own = (ready.scene.environment.air_density, airs.as_slice());
+            let launched = (ready.launch.direction, &summary);
+            !park_air::own_flight_settles(launched, own, parks, &scratch.clearings[from..])
+        });
+        if let Some(airs) = settling {
+            pending.push(park_air::Pending {
+                scene: ready.scene,
+                launch_direction: ready.launch.direction,
+                airs,
+                from,
+                flights: vec![park_air::Reference {
+                    density: ready.scene.environment.air_density,
+                    flight: summary,
+                    slack: 0.0,
+                    clearings: scratch.clearings[from..]
+                        .iter()
+                        .copied()
+                        .map(Some)
+                        .collect(),
+                }],
+            });
         }
         out.push(Ok(RowFlight {
             launch: ready.launch,

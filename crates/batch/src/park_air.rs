@@ -215,7 +215,7 @@ pub(crate) fn settle(
             let landing = Landing::of(&flight);
             let mut judged = vec![None; parks.len()];
             for (&k, crossing) in open[flown].iter().zip(crossings) {
-                judged[k] = Some(Clearing::judge_landed(
+                judged[k] = Some(Clearing::outcome_landed(
                     parks[k], *crossing, &flight, landing,
                 ));
             }
@@ -405,6 +405,22 @@ pub(crate) fn short_everywhere(
     flight.landed && flight.range.abs() * (1.0 + RANGE_PER_DENSITY * change) < nearest_wall
 }
 
+/// Whether a row's own flight (launched toward `launch_direction`, in air
+/// of density `own`, judged at each of `parks` as `judged`) settles every
+/// park in its air (`airs`, one a park): as [`settle`]'s first round would
+/// find, before a row is handed to it.
+pub(crate) fn own_flight_settles(
+    (launch_direction, flight): (f64, &FlightSummary),
+    (own, airs): (f64, &[Air]),
+    parks: &[&Fence],
+    judged: &[Clearing],
+) -> bool {
+    (parks.iter().zip(airs).zip(judged)).all(|((fence, air), home)| {
+        let change = density_change(own, air.density);
+        settled(home, (launch_direction, flight), fence, (change, 0.0))
+    })
+}
+
 /// The relative change in density from `own` to `there` (kg/m³).
 fn density_change(own: f64, there: f64) -> f64 {
     ((there - own) / own).abs()
@@ -446,6 +462,11 @@ fn settled(
         (TURN_PER_DENSITY * change * hook).max(LEAST_TURN)
     };
     let turn = air_turn + slack / fence.nearest();
+    if home.height_at_fence.is_none() && reach < fence.surely_short_within(home.direction, turn) {
+        // Short of the wall in every direction the ball could take (the
+        // window's nearest wall, bounded without a search of its points).
+        return true;
+    }
     let window = Window::of(fence, home.direction - turn, home.direction + turn);
     let Some(fair) = window.fair else {
         // Foul in every direction the ball could take.

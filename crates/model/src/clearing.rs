@@ -14,7 +14,7 @@ use serde::Serialize;
 use super::flight::{self, FlightOptions, FlightSummary};
 use super::frame;
 use super::launch::SceneFlight;
-use super::park::{Fence, FenceAt};
+use super::park::{FOUL_LINE, Fence, FenceAt};
 use numerics::ode::Step;
 use numerics::real::Real;
 use numerics::roots::find_root_newton_from;
@@ -162,6 +162,32 @@ impl Clearing {
             margin,
             direction: landing,
             wall,
+            height_at_fence: None,
+        }
+    }
+
+    /// As [`Clearing::judge_landed`] where the track crossed the fence;
+    /// where it never did, the outcome alone (short, or foul past the
+    /// lines) without the wall and the margin, which take a search of the
+    /// fence's points: for a batch that wants a park's verdict and not its
+    /// margin (`parks_cleared` without `--all-parks`).
+    pub fn outcome_landed(
+        fence: &Fence,
+        crossing: Option<Crossing>,
+        flight: &FlightSummary,
+        landing: Landing,
+    ) -> Clearing {
+        if crossing.is_some() {
+            return Clearing::judge_landed(fence, crossing, flight, landing);
+        }
+        let direction = landing.direction;
+        // As `Fence::at` finds the lines: no wall outside them (or at NaN).
+        let fair = (-FOUL_LINE..=FOUL_LINE).contains(&direction);
+        Clearing {
+            outcome: if fair { Outcome::Short } else { Outcome::Foul },
+            margin: None,
+            direction,
+            wall: None,
             height_at_fence: None,
         }
     }
@@ -461,6 +487,49 @@ mod tests {
             point(FOUL_LINE, 100.0, 2.5),
         ])
         .unwrap()
+    }
+
+    #[test]
+    fn a_verdict_alone_is_the_judgements_outcome() {
+        // Balls that cross the fence (clear it or not), land short of it
+        // and land foul, at two fences: the outcome as judged, and where
+        // the track crossed, the whole judgement.
+        let fences = [sloping_fence(), bundled()[0].fence.clone()];
+        let mut outcomes = Vec::new();
+        for fence in &fences {
+            for (speed, angle, direction) in [
+                (45.0, 0.6, 0.3),
+                (40.0, 0.5, -0.3),
+                (30.0, 0.5, 0.1),
+                (25.0, 0.4, 0.0),
+                (40.0, 0.6, 1.2),
+                (40.0, 0.6, -1.0),
+            ] {
+                let flight = vacuum(speed, angle, direction, 0.0);
+                let mut crossings = [None];
+                let summary = flight.fly_to_fences(&options(), &[fence], &mut crossings);
+                let landing = Landing::of(&summary);
+                let whole = Clearing::judge_landed(fence, crossings[0], &summary, landing);
+                let alone = Clearing::outcome_landed(fence, crossings[0], &summary, landing);
+                assert_eq!(alone.outcome, whole.outcome);
+                assert_eq!(alone.direction, whole.direction);
+                if alone.height_at_fence.is_some() {
+                    assert_eq!(alone, whole);
+                }
+                outcomes.push(whole.outcome);
+            }
+        }
+        for outcome in [
+            Outcome::Clears,
+            Outcome::OffTheWall,
+            Outcome::Short,
+            Outcome::Foul,
+        ] {
+            assert!(
+                outcomes.contains(&outcome),
+                "{outcome:?} never met: {outcomes:?}"
+            );
+        }
     }
 
     #[test]

@@ -304,6 +304,21 @@ impl Fence {
         }
     }
 
+    /// A distance (m) short of the wall at every direction within `spread`
+    /// (rad) of `direction`: [`Fence::surely_short`]'s, whose slices either
+    /// side cover such a spread when it is under one slice (with room for
+    /// the slice's rounding); −∞, nothing surely short, for a wider one.
+    /// So a ball whose direction is known to `spread` is judged short of
+    /// the wall without a search of its points.
+    pub fn surely_short_within(&self, direction: f64, spread: f64) -> f64 {
+        let slice = 2.0 * FOUL_LINE / BUCKETS as f64;
+        if spread <= 0.9 * slice {
+            self.surely_short(direction)
+        } else {
+            f64::NEG_INFINITY
+        }
+    }
+
     /// The wall's distance (m) in `direction` and its rate of change with
     /// the direction (m/rad), the fence continued past each foul pole at
     /// the pole's distance: a function of every direction, so that a root
@@ -456,13 +471,13 @@ mod tests {
         }
     }
 
-    #[test]
-    fn surely_short_is_short_of_the_wall_in_every_direction() {
+    /// Every bundled fence, one with points on slice boundaries, a deep
+    /// notch and a step, and a uniform one.
+    fn hard_fences() -> Vec<Fence> {
         let mut fences: Vec<Fence> = super::super::bundled()
             .iter()
             .map(|p| p.fence.clone())
             .collect();
-        // Points on slice boundaries, a deep notch and a step.
         let start = Fence::bucket_start;
         let points = vec![
             point(-FOUL_LINE, 100.0, 3.0),
@@ -474,6 +489,48 @@ mod tests {
         ];
         fences.push(Fence::new(points).unwrap());
         fences.push(Fence::uniform(121.92, 3.0));
+        fences
+    }
+
+    #[test]
+    fn surely_short_within_a_spread_is_short_of_the_wall_over_it() {
+        let width = 2.0 * FOUL_LINE / BUCKETS as f64;
+        for fence in &hard_fences() {
+            // Directions at slice starts, an ulp either side, and between;
+            // spreads up to the most allowed.
+            let starts = (0..=BUCKETS).map(Fence::bucket_start);
+            let mut directions: Vec<f64> = starts
+                .flat_map(|d| [d, d.next_up(), d.next_down()])
+                .collect();
+            directions.extend((0..=2_000).map(|i| -0.9 + i as f64 * 9e-4));
+            for d in directions {
+                for spread in [0.0, 0.3 * width, 0.9 * width] {
+                    let short = fence.surely_short_within(d, spread);
+                    let (from, to) = (d - spread, d + spread);
+                    let fair = |d: f64| d.clamp(-FOUL_LINE, FOUL_LINE);
+                    let inside = (fence.points.iter())
+                        .filter(|p| (fair(from)..=fair(to)).contains(&p.direction))
+                        .map(|p| p.distance);
+                    let ends = [fence.reach(from).0, fence.reach(to).0];
+                    let least = inside.chain(ends).fold(f64::INFINITY, f64::min);
+                    assert!(
+                        short < least,
+                        "{short} against {least} at {d:e} ± {spread:e}"
+                    );
+                }
+                // Wider than a slice's room: nothing is surely short.
+                assert_eq!(
+                    fence.surely_short_within(d, 0.95 * width),
+                    f64::NEG_INFINITY
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn surely_short_is_short_of_the_wall_in_every_direction() {
+        let fences = hard_fences();
+        let start = Fence::bucket_start;
         for fence in &fences {
             let mut directions: Vec<f64> = fence.points.iter().map(|p| p.direction).collect();
             directions.extend((0..BUCKETS).map(start));

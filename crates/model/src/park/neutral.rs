@@ -53,6 +53,17 @@ static SITES: LazyLock<Vec<NeutralSite>> = LazyLock::new(|| {
         .collect()
 });
 
+/// Every day some neutral site was played on, sorted: a batch asks of
+/// every row, and nearly every day is none of them (one search, not a
+/// look at each site's days).
+static DAYS: LazyLock<Vec<Day>> = LazyLock::new(|| {
+    let mut days: Vec<Day> = (SITES.iter())
+        .flat_map(|site| site.days.iter().copied())
+        .collect();
+    days.sort_unstable();
+    days
+});
+
 /// Every neutral site, in the file's order.
 pub fn neutral_sites() -> &'static [NeutralSite] {
     &SITES
@@ -60,6 +71,7 @@ pub fn neutral_sites() -> &'static [NeutralSite] {
 
 /// The neutral site where a team `park` is home to played on `day`, if any.
 pub fn neutral_site(day: Day, park: &Park) -> Option<&'static NeutralSite> {
+    DAYS.binary_search(&day).ok()?;
     (neutral_sites().iter())
         .find(|site| site.days.contains(&day) && site.teams.iter().any(|t| park.answers_to(t)))
 }
