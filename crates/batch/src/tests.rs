@@ -182,6 +182,17 @@ fn statcast_units_convert_exactly() {
 
 /// Runs the batch on `input`: (stdout, stderr, outcome).
 fn run(setup: &Setup, input: &str, json: bool, shown: Shown) -> (String, String, Outcome) {
+    let (out, err, outcome, _) = run_tallied(setup, input, json, shown);
+    (out, err, outcome)
+}
+
+/// [`run`], and the tally its summary is made from.
+fn run_tallied(
+    setup: &Setup,
+    input: &str,
+    json: bool,
+    shown: Shown,
+) -> (String, String, Outcome, Tally) {
     let (mut out, mut err) = (Vec::new(), String::new());
     let mut note = |m: &str| err += &format!("homerun: {m}\n");
     let (outcome, tally) = fly_rows(
@@ -196,7 +207,7 @@ fn run(setup: &Setup, input: &str, json: bool, shown: Shown) -> (String, String,
     for line in tally.lines(setup, shown) {
         note(&line);
     }
-    (String::from_utf8(out).unwrap(), err, outcome)
+    (String::from_utf8(out).unwrap(), err, outcome, tally)
 }
 
 /// A row flown alone, as `fly` flies it: at the readout's precision,
@@ -693,3 +704,4 @@ fn missing_values_units_and_compared_columns() {
 mod home;
 mod imports;
 mod own_air;
+mod walls;
