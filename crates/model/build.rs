@@ -27,7 +27,7 @@ fn main() {
                 .or_else(|| value.as_integer().map(|i| i as f64))
                 .expect("a number")
         };
-        // A list of strings (`aliases`, `home`), as Rust's `&[..]` items.
+        // A list of strings (`aliases`, `home`, `walls`), as Rust's `&[..]` items.
         let strings = |key: &str| -> String {
             let items = park.get(key).and_then(|a| a.as_array());
             let quoted = items
@@ -66,7 +66,11 @@ fn main() {
                 number(&p["height"])
             );
         }
-        let _ = writeln!(out, "], home: &[{}] }},", strings("home"));
+        let walls = match park.get("walls") {
+            Some(_) => format!("Some(&[{}])", strings("walls")),
+            None => "None".to_owned(),
+        };
+        let _ = writeln!(out, "], home: &[{}], walls: {walls} }},", strings("home"));
     }
     out.push(']');
     let path =

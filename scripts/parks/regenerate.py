@@ -289,6 +289,10 @@ def main():
                         (("left_line", "lf"), ("center", "cf"), ("right_line", "rf")))
             + f" }}  # {p['lf']}, {p['cf']}, {p['rf']} ft",
             "home = [" + ", ".join(f'"{h}"' for h in p["home"].split("|") if h) + "]",
+        ]
+        if p["walls"]:  # else the home spans (docs/parks.md, When the walls stood)
+            out.append("walls = [" + ", ".join(f'"{w}"' for w in p["walls"].split("|")) + "]")
+        out += [
             "fence = [",
         ]
         for d, r, h in points:

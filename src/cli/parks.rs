@@ -111,6 +111,14 @@ pub(super) fn profile(park: &Park, json: bool, shown: Shown) -> String {
             model::park::spans_text(&park.home)
         );
     }
+    if !park.walls.is_empty() && park.walls != park.home {
+        let _ = writeln!(
+            out,
+            "its walls as given stood {} (a batch row at {} dated otherwise is at no park)",
+            model::park::spans_text(&park.walls),
+            escape_for_terminal(&park.code),
+        );
+    }
     if let Some(p) = park.published {
         let _ = writeln!(
             out,
@@ -181,7 +189,9 @@ fn profile_points(park: &Park) -> Vec<FencePoint> {
 
 /// A park in JSON, SI: `code`, `aliases`, `name`, `elevation` (m),
 /// `center_field_bearing` (° from true north), `published` (m, or null),
-/// `home` (its spans as a park file writes them, "1998..2024") and `fence`, its points as `{direction (rad), distance (m), height (m)}`.
+/// `home` (its spans as a park file writes them, "1998..2024"), `walls`
+/// (when its fence stood, the same way) and `fence`, its points as
+/// `{direction (rad), distance (m), height (m)}`.
 pub(super) fn park_json(park: &Park) -> Value {
     json!({
         "code": park.code,
@@ -191,6 +201,7 @@ pub(super) fn park_json(park: &Park) -> Value {
         "center_field_bearing": park.center_field_bearing,
         "published": park.published,
         "home": park.home.iter().map(model::park::HomeSpan::as_written).collect::<Vec<_>>(),
+        "walls": park.walls.iter().map(model::park::HomeSpan::as_written).collect::<Vec<_>>(),
         "fence": park.fence.points(),
     })
 }

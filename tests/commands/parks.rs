@@ -153,6 +153,10 @@ fn the_json_list_reads_back_as_the_bundled_parks() {
     for (entry, p) in listed.iter().zip(park::bundled()) {
         assert_eq!(entry["code"], p.code.as_str());
         assert_eq!(entry["elevation"].as_f64(), Some(p.elevation));
+        // When its walls stood, as a park file writes it: Camden Yards'
+        // left field of 2022–2024; a park without a change, its home.
+        let walls: Vec<String> = p.walls.iter().map(|w| w.as_written()).collect();
+        assert_eq!(entry["walls"], serde_json::json!(walls));
         let fence = entry["fence"].as_array().unwrap();
         assert_eq!(fence.len(), p.fence.points().len());
         for (point, want) in fence.iter().zip(p.fence.points()) {
@@ -170,6 +174,19 @@ fn one_parks_profile_in_feet_steps_at_the_monster() {
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.starts_with("BOS Fenway Park\n"), "{text}");
+    // Fenway's walls stood all its home years: no line for them.
+    assert!(!text.contains("walls"), "{text}");
+    let camden = homerun(none.path(), &["parks", "BAL"]);
+    let camden = String::from_utf8(camden.stdout).unwrap();
+    assert!(
+        camden.contains(
+            "its walls as given stood 2022–2024 (a batch row at BAL dated otherwise is at no park)"
+        ),
+        "{camden}"
+    );
+    let json = homerun(none.path(), &["parks", "BAL", "--json"]);
+    let json: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(json["walls"], serde_json::json!(["2022..2024"]));
     assert!(
         text.contains("direction (°)  distance (ft)  height (ft)"),
         "{text}"
@@ -451,8 +468,9 @@ fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
         assert_eq!(cleared.to_string(), cells[at("parks_cleared")], "{line}");
         // The row's own park's columns are its outcome and margin. The
         // Rangers' 2019 home runs were hit at Globe Life Park, not the
-        // bundled Globe Life Field (2020 on), and one Angels' in Monterrey:
-        // at no park.
+        // bundled Globe Life Field (2020 on), one Angels' in Monterrey, and
+        // 30 at parks whose walls were others in 2019 (BAL, DET, MIA, SF):
+        // at no park, though `--all-parks` judges them at every park.
         let park = cells[at("park")];
         if park == "none" {
             assert_eq!(cells[at("outcome")], "no_park", "{line}");
@@ -464,7 +482,7 @@ fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
         assert_eq!(cells[at(&format!("{park}_margin"))], cells[at("margin")]);
         rows += 1;
     }
-    assert_eq!((rows, away), (248, 10));
+    assert_eq!((rows, away), (248, 40));
     // Imperial: the margins in feet, named so.
     let imperial = run(&["fly", "--units", "imperial", "--all-parks", "--batch", file]);
     let header = imperial.lines().next().unwrap();

@@ -1,11 +1,13 @@
 //! Rows played away from their `home_team`'s bundled park (the park was not
-//! the team's home that day: [`model::park::Park::home_on`]), counted and
-//! said: such a row is at no park, for a verdict at the wrong park would be
-//! a wrong answer given as right.
+//! the team's home that day: [`model::park::Park::home_on`]), or there but
+//! before or after its walls as given ([`model::park::Park::walls_on`]),
+//! counted and said: such a row is at no park, for a verdict at the wrong
+//! park, or at walls that were not there, would be a wrong answer given as
+//! right.
 
 use std::collections::BTreeMap;
 
-use model::park::spans_text;
+use model::park::{HomeSpan, spans_text};
 use preset::cut;
 use serde_json::{Value, json};
 
@@ -19,8 +21,9 @@ pub(crate) struct Away {
     pub park: usize,
     pub season: Option<i32>,
     pub why: AwayWhy,
-    /// A neutral site's elevation (m): the row flies in its air.
-    pub site_elevation: Option<f64>,
+    /// The elevation (m) where it was played, a neutral site's or its
+    /// park's when the walls were others: the row flies in its air.
+    pub air_elevation: Option<f64>,
 }
 
 /// Why a row is [`Away`].
@@ -36,8 +39,21 @@ pub(crate) enum AwayWhy {
     /// Savant's `game_type` S, E or A: spring training and exhibitions
     /// (at the team's spring park, or anywhere), the All-Star Game.
     NotAtHome(GameType),
+    /// Played at its park, on a day its walls as given did not stand (a
+    /// 2019 row at Camden Yards, whose left field moved for 2022).
+    WallsNotThen,
+    /// Only its season is known, and the walls as given stood for part of
+    /// it.
+    WallsUnsure,
     /// No date: judged at the park as bundled, and counted.
     Undated,
+}
+
+impl AwayWhy {
+    /// Whether it is about the park's walls, not where it was played.
+    fn walls(self) -> bool {
+        matches!(self, AwayWhy::WallsNotThen | AwayWhy::WallsUnsure)
+    }
 }
 
 /// A game `game_type` says was not at the home team's park.
@@ -112,13 +128,13 @@ impl AwayRows {
             let code = &setup.parks.parks[park].code;
             let year = season.map_or(String::new(), |y| format!(" {y}"));
             let when = match kind {
-                AwayWhy::Unsure => format!("{year}, its date not given"),
+                AwayWhy::Unsure | AwayWhy::WallsUnsure => format!("{year}, its date not given"),
                 AwayWhy::NotAtHome(game) => format!("{year}, {}", game.name()),
                 AwayWhy::Neutral(venue) => format!("{year}, at {venue}, in its air"),
                 _ => year,
             };
             named.push(format!("{code}{when} ({n} row{})", plural(n)));
-            let dated = matches!(kind, AwayWhy::NotHome | AwayWhy::Unsure | AwayWhy::Undated);
+            let dated = !matches!(kind, AwayWhy::Neutral(_) | AwayWhy::NotAtHome(_));
             if dated && !parks.contains(&park) {
                 parks.push(park);
             }
@@ -126,16 +142,25 @@ impl AwayRows {
         (rows, named, parks)
     }
 
-    /// "Oakland Coliseum was home 1968–2024; …".
+    /// "ATH's Oakland Coliseum was home 1968–2024; BAL's Oriole Park at
+    /// Camden Yards was home 1992 on, its walls as given 2022–2024".
     fn homes(setup: &Setup, parks: &[usize]) -> String {
+        let always = |spans: &[HomeSpan]| match spans.is_empty() {
+            true => String::from("always"),
+            false => spans_text(spans),
+        };
         let homes: Vec<String> = (parks.iter())
             .map(|&i| {
                 let park = &setup.parks.parks[i];
+                let walls = match park.walls == park.home {
+                    true => String::new(),
+                    false => format!(", its walls as given {}", always(&park.walls)),
+                };
                 format!(
-                    "{}'s {} was home {}",
+                    "{}'s {} was home {}{walls}",
                     park.code,
                     park.name,
-                    spans_text(&park.home)
+                    always(&park.home)
                 )
             })
             .collect();
@@ -146,7 +171,8 @@ impl AwayRows {
     /// without the date that would say whether it was home.
     pub(crate) fn parts(&self, setup: &Setup) -> Vec<String> {
         let mut parts = Vec::new();
-        let (rows, named, parks) = self.groups(setup, |why| why != AwayWhy::Undated);
+        let (rows, named, parks) =
+            self.groups(setup, |why| why != AwayWhy::Undated && !why.walls());
         if rows > 0 {
             let homes = match parks.is_empty() {
                 true => String::new(),
@@ -162,11 +188,22 @@ impl AwayRows {
                 named.join(", "),
             ));
         }
+        let (rows, named, parks) = self.groups(setup, AwayWhy::walls);
+        if rows > 0 {
+            parts.push(format!(
+                "{rows} row{} played at home_team's park when its walls were not those given, \
+                 at no park, in its air: {} ({}; a park file with that code and its `walls` \
+                 judges them, docs/parks.md)",
+                plural(rows),
+                named.join(", "),
+                Self::homes(setup, &parks)
+            ));
+        }
         let (rows, named, parks) = self.groups(setup, |why| why == AwayWhy::Undated);
         if rows > 0 {
             parts.push(format!(
                 "{rows} row{} without a date (game_date, game_year) judged at a park that was \
-                 not always home: {} ({})",
+                 not always home, or not always so walled: {} ({})",
                 plural(rows),
                 named.join(", "),
                 Self::homes(setup, &parks)
@@ -185,10 +222,15 @@ impl AwayRows {
                     AwayWhy::Unsure => "no_park: home for part of the season, no date",
                     AwayWhy::NotAtHome(game) => game.name(),
                     AwayWhy::Neutral(venue) => venue,
+                    AwayWhy::WallsNotThen => "no_park: other walls then",
+                    AwayWhy::WallsUnsure => {
+                        "no_park: walls as given for part of the season, no date"
+                    }
                     AwayWhy::Undated => "at the park: no date",
                 };
                 json!({ "home_team": park.code, "park": park.name, "season": season,
-                    "rows": rows, "judged": judged, "home": spans_text(&park.home) })
+                    "rows": rows, "judged": judged, "home": spans_text(&park.home),
+                    "walls": spans_text(&park.walls) })
             })
             .collect();
         json!(entries)

@@ -326,8 +326,9 @@ fn read_cells(
     if let Some(index) = park {
         given.park_air(&mut scene.environment, setup.parks.parks[index].elevation);
     }
-    // A neutral site's air, though it has no fence here.
-    if let Some(elevation) = away.and_then(|away| away.site_elevation) {
+    // The air where it was played, though no fence here stands for it: a
+    // neutral site's, or its park's in a season of other walls.
+    if let Some(elevation) = away.and_then(|away| away.air_elevation) {
         given.park_air(&mut scene.environment, elevation);
     }
     let valid = swings.validate(scene, header.launch_only.then_some(park));
@@ -388,8 +389,9 @@ fn read_cells(
     Ok(())
 }
 
-/// Statcast's first season: a row without a date at a park that was home
-/// from then on is surely judged where it was played.
+/// Statcast's first season: a row without a date at a park that was home,
+/// with its walls as given, from then on is surely judged where and as it
+/// was played.
 const STATCAST: i32 = 2015;
 
 /// Why a Statcast cell with a unit after its number (`45kph`, `28deg` in
@@ -559,9 +561,10 @@ impl SavantCells {
     }
 
     /// Where a row at `park` (its `home_team`'s) is judged: there, unless
-    /// the park was not its team's home when the row was played (then at
-    /// no park, and why); a row without a date at a park that was not
-    /// always home is judged there, and counted.
+    /// the park was not its team's home when the row was played, or its
+    /// walls then were not the ones given (then at no park, and why); a
+    /// row without a date at a park that was not always home, or not
+    /// always so walled, is judged there, and counted.
     fn at_home(&self, park: usize, setup: &Setup) -> (Option<usize>, Option<Away>) {
         let played = match (self.day, self.season) {
             (Some(day), _) => Played::On(day),
@@ -572,7 +575,7 @@ impl SavantCells {
             park,
             season: self.season(),
             why,
-            site_elevation: None,
+            air_elevation: None,
         };
         if let Some(game_type) = self.game_type {
             return (None, Some(away(AwayWhy::NotAtHome(game_type))));
@@ -581,17 +584,28 @@ impl SavantCells {
         let neutral = self.day.and_then(|day| neutral_site(day, at));
         if let Some(site) = neutral {
             let at_site = Away {
-                site_elevation: Some(site.elevation),
+                air_elevation: Some(site.elevation),
                 ..away(AwayWhy::Neutral(&site.venue))
             };
             return (None, Some(at_site));
         }
-        match at.home_on(played) {
-            AtHome::Yes => (Some(park), None),
-            AtHome::Undated if at.always_home_since(STATCAST) => (Some(park), None),
-            AtHome::Undated => (Some(park), Some(away(AwayWhy::Undated))),
-            AtHome::No => (None, Some(away(AwayWhy::NotHome))),
-            AtHome::Unsure => (None, Some(away(AwayWhy::Unsure))),
+        // Played there, but at other walls: in the park's air, no fence.
+        let walled = |why| Away {
+            air_elevation: Some(at.elevation),
+            ..away(why)
+        };
+        match (at.home_on(played), at.walls_on(played)) {
+            (AtHome::No, _) => (None, Some(away(AwayWhy::NotHome))),
+            (AtHome::Unsure, _) => (None, Some(away(AwayWhy::Unsure))),
+            (AtHome::Undated, _) | (_, AtHome::Undated) if at.as_given_since(STATCAST) => {
+                (Some(park), None)
+            }
+            (AtHome::Undated, _) | (_, AtHome::Undated) => {
+                (Some(park), Some(away(AwayWhy::Undated)))
+            }
+            (AtHome::Yes, AtHome::Yes) => (Some(park), None),
+            (AtHome::Yes, AtHome::No) => (None, Some(walled(AwayWhy::WallsNotThen))),
+            (AtHome::Yes, AtHome::Unsure) => (None, Some(walled(AwayWhy::WallsUnsure))),
         }
     }
 

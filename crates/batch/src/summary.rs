@@ -194,8 +194,8 @@ impl Tally {
                 }
             ),
             None if no_fence && self.away.at_no_park() > 0 => String::from(
-                "at no park (home_team's park was not home when they were played: no fence to \
-                 judge; foul balls still called)",
+                "at no park (home_team's park was not home, or not so walled, when they were \
+                 played: no fence to judge; foul balls still called)",
             ),
             None if no_fence => String::from(
                 "at no park (no home_team, no --park: no fence to judge; foul balls still called)",

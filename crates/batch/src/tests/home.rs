@@ -92,7 +92,7 @@ fn a_row_played_where_its_home_team_was_not_at_home_is_at_no_park() {
         "{err}"
     );
     assert!(
-        err.contains("1 row without a date (game_date, game_year) judged at a park that was not always home: TB (1 row)"),
+        err.contains("1 row without a date (game_date, game_year) judged at a park that was not always home, or not always so walled: TB (1 row)"),
         "{err}"
     );
     // `--park` judges every row at the park asked for, whatever its date.

@@ -40,6 +40,10 @@ pub struct Park {
     pub fence: Fence,
     /// When it was its team's home (none: always), [`home`].
     pub home: Vec<HomeSpan>,
+    /// When its fence stood as given (none: always): a row at its park on
+    /// another day met other walls. A park file without `walls` gives its
+    /// `home` spans.
+    pub walls: Vec<HomeSpan>,
 }
 
 /// A park's published distances (m): to the foul poles and to straightaway
@@ -163,9 +167,17 @@ impl Park {
         at_home(&self.home, played)
     }
 
-    /// Whether it has been home every day from the first of `year` on.
-    pub fn always_home_since(&self, year: i32) -> bool {
-        home::home_since(&self.home, year)
+    /// Whether its fence as given stood when a row was `played` (asked
+    /// of a row played there: [`Self::home_on`] first).
+    pub fn walls_on(&self, played: Played) -> AtHome {
+        at_home(&self.walls, played)
+    }
+
+    /// Whether it has been home, with its walls as given, every day from
+    /// the first of `year` on: a row without a date is surely judged
+    /// where and as it was played.
+    pub fn as_given_since(&self, year: i32) -> bool {
+        home::home_since(&self.home, year) && home::home_since(&self.walls, year)
     }
 
     /// A wind's direction in the flight frame: radians from the
@@ -212,6 +224,7 @@ mod tests {
             published: None,
             fence: Fence::uniform(120.0, 3.0),
             home: vec![],
+            walls: vec![],
         }
     }
 
@@ -232,6 +245,43 @@ mod tests {
         let coors = facing(350.0);
         let drift = coors.wind_direction(CompassWind::Toward(0.0));
         assert!((drift - 10f64.to_radians()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn each_bundled_fence_stood_in_its_walls_spans_only() {
+        let played = |y, m, d| Played::On(Day::new(y, m, d).unwrap());
+        let walls = |code: &str, when: Played| find(bundled(), code).unwrap().walls_on(when);
+        // Camden Yards' left field: back and up for 2022, part way in for 2025.
+        assert_eq!(walls("BAL", played(2021, 9, 30)), AtHome::No);
+        assert_eq!(walls("BAL", played(2022, 4, 11)), AtHome::Yes);
+        assert_eq!(walls("BAL", played(2024, 9, 29)), AtHome::Yes);
+        assert_eq!(walls("BAL", played(2025, 3, 31)), AtHome::No);
+        assert_eq!(walls("BAL", Played::In(2023)), AtHome::Yes);
+        assert_eq!(walls("BAL", Played::Unknown), AtHome::Undated);
+        // Toronto's outline and walls are from before the 2023 renovation.
+        assert_eq!(walls("TOR", played(2022, 9, 1)), AtHome::Yes);
+        assert_eq!(walls("TOR", played(2023, 4, 11)), AtHome::No);
+        // Houston's centre field without Tal's Hill, from 2017.
+        assert_eq!(walls("HOU", played(2016, 9, 28)), AtHome::No);
+        assert_eq!(walls("HOU", played(2017, 4, 3)), AtHome::Yes);
+        assert_eq!(walls("KC", Played::In(2026)), AtHome::No);
+        // A park with no change known: its walls are its home spans.
+        let fenway = find(bundled(), "BOS").unwrap();
+        assert_eq!(fenway.walls, fenway.home);
+        assert_eq!(fenway.walls_on(played(2016, 6, 1)), AtHome::Yes);
+        // A row without a date is surely judged as it was played only where
+        // the park was home, with these walls, since the season asked.
+        let since = |code: &str| find(bundled(), code).unwrap().as_given_since(2015);
+        assert_eq!(
+            [
+                since("BOS"),
+                since("BAL"),
+                since("HOU"),
+                since("MIA"),
+                since("TB")
+            ],
+            [true, false, false, false, false]
+        );
     }
 
     #[test]

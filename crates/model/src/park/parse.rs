@@ -55,6 +55,9 @@ struct Entry {
     fence: Vec<Point>,
     #[serde(default)]
     home: Vec<String>,
+    /// When its fence stood (absent: its `home`).
+    #[serde(default)]
+    walls: Option<Vec<String>>,
 }
 
 #[derive(Deserialize)]
@@ -85,6 +88,8 @@ pub(super) struct BundledEntry {
     pub published: Option<[f64; 3]>,
     pub fence: &'static [[f64; 3]],
     pub home: &'static [&'static str],
+    /// `walls`, if the file gives it.
+    pub walls: Option<&'static [&'static str]>,
 }
 
 impl BundledEntry {
@@ -114,6 +119,7 @@ impl BundledEntry {
                 })
                 .collect(),
             home: self.home.iter().map(|&h| h.to_owned()).collect(),
+            walls: (self.walls).map(|spans| spans.iter().map(|&w| w.to_owned()).collect()),
         }
         .checked()
     }
@@ -243,12 +249,20 @@ impl Entry {
                 })
             }
         };
-        let mut home = Vec::with_capacity(self.home.len());
-        for text in &self.home {
-            let span = HomeSpan::parse(text)
-                .ok_or_else(|| field("home", format!("{text:?}"), HOME_FORMS))?;
-            home.push(span);
-        }
+        // `home` and `walls` are read alike; walls absent stood while home.
+        let spans = |name, texts: &[String]| -> Result<Vec<HomeSpan>, ParkError> {
+            (texts.iter())
+                .map(|text| {
+                    HomeSpan::parse(text)
+                        .ok_or_else(|| field(name, format!("{text:?}"), HOME_FORMS))
+                })
+                .collect()
+        };
+        let home = spans("home", &self.home)?;
+        let walls = match &self.walls {
+            Some(texts) => spans("walls", texts)?,
+            None => home.clone(),
+        };
         let points = self
             .fence
             .into_iter()
@@ -276,6 +290,7 @@ impl Entry {
             published,
             fence,
             home,
+            walls,
         })
     }
 }
@@ -332,6 +347,18 @@ fence = [
         );
         let good = ONE.replace("fence =", "home = [\"2025..2027\"]\nfence =");
         assert_eq!(parse(&good).unwrap()[0].home[0].to_string(), "2025–2027");
+        // Walls default to the home spans; given, they are read alike.
+        assert_eq!(
+            parse(&good).unwrap()[0].walls,
+            parse(&good).unwrap()[0].home
+        );
+        let walls = good.replace("fence =", "walls = [\"2026..\"]\nfence =");
+        assert_eq!(parse(&walls).unwrap()[0].walls[0].to_string(), "2026 on");
+        let bad = good.replace("fence =", "walls = [\"2026\"]\nfence =");
+        assert_eq!(
+            parse(&bad).unwrap_err().to_string(),
+            format!("park XYZ: walls = \"2026\": {}", super::HOME_FORMS)
+        );
         let bad = ONE.replace("name =", "nmae =");
         let e = parse(&bad).unwrap_err().to_string();
         assert!(
