@@ -1,6 +1,6 @@
 //! The headless command line: clap commands → core → text, JSON or CSV.
 //!
-//! One file per command group; every table goes through [`table`].
+//! One file per command group; every table goes through `table`.
 
 mod args;
 mod batch_run;

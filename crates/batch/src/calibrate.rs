@@ -36,7 +36,7 @@ pub struct Measurements {
     pub spin_from_swing: Option<usize>,
     pub rows: usize,
     pub without_distance: usize,
-    /// Launched below [`LOWEST_FLIGHT`]: a grounder's distance is where it
+    /// Launched below `LOWEST_FLIGHT` (10°): a grounder's distance is where it
     /// was fielded.
     pub grounders: usize,
     /// With a measurement outside its plausible range (each named).

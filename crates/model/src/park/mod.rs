@@ -38,7 +38,7 @@ pub struct Park {
     /// The published foul-line and centre-field distances, if known.
     pub published: Option<ParkDimensions>,
     pub fence: Fence,
-    /// When it was its team's home (none: always), [`home`].
+    /// When it was its team's home (none: always), [`at_home`].
     pub home: Vec<HomeSpan>,
 }
 
