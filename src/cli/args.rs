@@ -147,11 +147,16 @@ pub enum Command {
         /// --batch: each row's home_team].
         #[arg(long, value_name = "PARK")]
         park: Option<String>,
-        /// Also list every park with the outcome and margin there. With --batch:
-        /// two more columns a park, <CODE>_outcome and <CODE>_margin (_margin_ft
-        /// with --units imperial), after the others and before --keep's; in JSON
-        /// an `all_parks` list of {park, outcome, margin} (SI).
-        #[arg(long)]
+        /// Also list every park with the outcome and margin there; with --batch
+        /// two more columns a park (`<CODE>_outcome`, `<CODE>_margin`). The help
+        /// is `help`'s text, where `<CODE>` is written as it is, not as HTML.
+        #[arg(
+            long,
+            help = "Also list every park with the outcome and margin there. With --batch: two \
+                    more columns a park, <CODE>_outcome and <CODE>_margin (_margin_ft with \
+                    --units imperial), after the others and before --keep's; in JSON an \
+                    `all_parks` list of {park, outcome, margin} (SI)"
+        )]
         all_parks: bool,
         /// Each park in its own air: the default, kept so that older
         /// command lines still run.
@@ -222,11 +227,17 @@ pub enum Command {
         /// What Savant's spray angle is (as `fly --batch --spray`).
         #[arg(long, value_name = "WHAT", default_value = "landing")]
         spray: SprayArg,
-        /// Fit each group of rows apart, one line a group: by a column's value
-        /// (home_team, …), `month` (game_date's year and month, from
-        /// YYYY-MM-DD or M/D/YYYY) or `season` (game_year or season). With
-        /// --save NAME, one preset a group: NAME-<group>.
-        #[arg(long, value_name = "COLUMN")]
+        /// Fit each group of rows apart, one line a group (`month`, `season` or
+        /// a column); with --save NAME, one preset a group (`NAME-<group>`).
+        /// The help is `help`'s text, where `<group>` is written as it is.
+        #[arg(
+            long,
+            value_name = "COLUMN",
+            help = "Fit each group of rows apart, one line a group: by a column's value \
+                    (home_team, …), `month` (game_date's year and month, from YYYY-MM-DD or \
+                    M/D/YYYY) or `season` (game_year or season). With --save NAME, one preset a \
+                    group: NAME-<group>"
+        )]
         by: Option<String>,
         /// Read the file's COLUMN as NAME (as fly --batch --column); repeatable.
         #[arg(long, value_name = "NAME=COLUMN")]

@@ -7,9 +7,10 @@
 use std::collections::BTreeMap;
 use std::io::BufRead;
 use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 
 use batch::calibrate::{By, FEWEST_ROWS, Measurements};
-use batch::{Setup, Shown};
+use batch::{Outcome, Setup, Shown};
 use serde_json::json;
 
 use crate::analysis::calibrate::{self, Errors, Fit, LiftFrom, Measured};
@@ -28,8 +29,12 @@ pub struct Save<'a> {
     pub force: bool,
 }
 
+/// The rows a calibration read (every record) and how its batch went:
+/// what its exit status follows from ([`exit_status`]).
+pub(super) type Rows = (usize, Outcome);
+
 /// Runs `calibrate` on `source` ("-" for stdin), with `--by` each group
-/// apart: the text (or JSON) to print.
+/// apart: the text (or JSON) to print, and the rows read.
 pub fn run(
     setup: &mut Setup,
     source: &str,
@@ -37,13 +42,15 @@ pub fn run(
     lift: bool,
     json: bool,
     shown: Shown,
-) -> Result<String, UsageError> {
+) -> Result<(String, Rows), UsageError> {
     let grouped = by.map(By::of);
     let read = read_source(source, save.as_ref(), |input| {
         batch::calibrate::measured(setup, input, grouped.as_ref(), &mut note)
     })?;
+    let rows = (read.rows, read.outcome);
     let Some(by) = by else {
-        return run_one(setup, source, (save, read), lift, json, shown);
+        let text = run_one(setup, source, (save, read), lift, json, shown)?;
+        return Ok((text, rows));
     };
     let mut groups: BTreeMap<&str, Vec<Measured>> = BTreeMap::new();
     for (measured, group) in read.measured.iter().zip(&read.groups) {
@@ -117,7 +124,7 @@ pub fn run(
         let value = json!({ "by": by, "groups": fits, "rows": read.rows,
             "measured": read.measured.len(), "grounders": read.grounders,
             "skipped": skipped(&read) });
-        return Ok(super::pretty(&value));
+        return Ok((super::pretty(&value), rows));
     }
     let mut text = format!(
         "by {}: {} groups, {} of {} rows measured (launched at 10° or more, with a distance and hit coordinates; {} skipped)\n",
@@ -131,7 +138,21 @@ pub fn run(
         text += &line;
         text.push('\n');
     }
-    Ok(text)
+    Ok((text, rows))
+}
+
+/// The exit status once the fit is out, as `fly --batch` gives it: 1 where
+/// a row failed (each named as it was read; the fit is of the others) or
+/// reading stopped early, 0 otherwise. Rows without a launch, grounders
+/// and rows left out of the fit are counted, not failed.
+pub(super) fn exit_status((rows, outcome): Rows) -> ExitCode {
+    if outcome.failed > 0 {
+        note(&format!(
+            "{} of {rows} rows failed and were skipped (exit status 1)",
+            outcome.failed
+        ));
+    }
+    ExitCode::from(outcome.exit_status())
 }
 
 /// Rows read but neither measured nor counted otherwise: failed, without a

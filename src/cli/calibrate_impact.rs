@@ -4,7 +4,7 @@
 //! rows is the data's ([`bat_tracking::fit_effective_mass`];
 //! docs/bat-tracking.md).
 
-use super::calibrate::{Save, failed, read_source, save_fitted};
+use super::calibrate::{Rows, Save, failed, read_source, save_fitted};
 use crate::analysis::bat_tracking::{self, ImpactFit};
 use crate::cli::UsageError;
 use crate::preset::escape_cut;
@@ -14,15 +14,16 @@ use batch::{Setup, Shown};
 /// The quantile of q matched.
 const QUANTILE: f64 = 0.99;
 
-/// Runs the fit on `source` ("-" for stdin): the text (or JSON) to print.
+/// Runs the fit on `source` ("-" for stdin): the text (or JSON) to print,
+/// and the rows read.
 pub(super) fn run(
     setup: &Setup,
     source: &str,
     save: Option<Save>,
     json: bool,
     shown: Shown,
-) -> Result<String, UsageError> {
-    let (swings, outcome) = read_source(source, save.as_ref(), |input| {
+) -> Result<(String, Rows), UsageError> {
+    let (swings, rows, outcome) = read_source(source, save.as_ref(), |input| {
         batch::calibrate::tracked_swings(setup, input, &mut |m| eprintln!("homerun: {m}"))
     })?;
     let base = &setup.base.scene;
@@ -54,7 +55,7 @@ pub(super) fn run(
         if let Some(path) = &saved {
             value["saved"] = path.display().to_string().into();
         }
-        return Ok(super::pretty(&value));
+        return Ok((super::pretty(&value), (rows, outcome)));
     }
     let mut text = text(&fit, saved.as_deref(), shown);
     if outcome.failed + outcome.without_launch > 0 {
@@ -70,7 +71,7 @@ pub(super) fn run(
             outcome.without_launch
         );
     }
-    Ok(text)
+    Ok((text, (rows, outcome)))
 }
 
 fn text(fit: &ImpactFit, saved: Option<&std::path::Path>, shown: Shown) -> String {

@@ -1,6 +1,6 @@
 //! The headless command line: clap commands → core → text, JSON or CSV.
 //!
-//! One file per command group; every table goes through [`table`].
+//! One file per command group; every table goes through `table`.
 
 mod args;
 mod batch_run;
@@ -100,7 +100,7 @@ fn checked_presets_dir(cli: &Cli) -> Result<Option<PathBuf>, UsageError> {
 }
 
 /// Runs a headless command, writing to stdout, and gives the exit status: 0,
-/// or 1 when some rows of `fly --batch` failed. A closed pipe (`| head`)
+/// or 1 when some rows of a batch (`fly --batch`, `calibrate`) failed. A closed pipe (`| head`)
 /// ends the output quietly.
 pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
     if let Some(ran) = batch_run::run(cli, command) {
@@ -145,7 +145,7 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
             force: *force,
         });
         let shown = Shown(cli.units);
-        let text = match impact {
+        let (text, rows) = match impact {
             true => calibrate_impact::run(&setup, file, save, *json, shown)?,
             false => calibrate::run(
                 &mut setup,
@@ -163,7 +163,10 @@ pub fn run(cli: &Cli, command: &Command) -> Result<ExitCode, UsageError> {
         };
         // Written as every command's output is: a full disk or a closed
         // pipe is an error line or a quiet end, never print!'s panic.
-        return write_stdout(&[text]);
+        write_stdout(&[text])?;
+        // The fit stands on the rows read; a row that failed makes the
+        // exit status 1, as in `fly --batch`.
+        return Ok(calibrate::exit_status(rows));
     }
     let svg = svg_target(command);
     // A folder that cannot take the file is refused before any work.

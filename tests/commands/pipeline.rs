@@ -319,6 +319,54 @@ fn calibrate_by_month_reads_either_date_and_saves_a_preset_a_group() {
     assert!(err.contains("line 2: game_date"), "{err}");
 }
 
+/// `calibrate`, in every mode, follows `fly --batch`'s rule: a row that
+/// fails (a `game_date` that is no date, a `game_year` no season) is
+/// named with why and skipped, the others are fitted and printed, and the
+/// exit status is 1. A row merely without a launch is counted: status 0.
+#[test]
+fn calibrate_fits_the_other_rows_and_exits_1_when_a_row_failed() {
+    let no_date = sample().replacen("\"2019-07-24\"", "\"2019-02-30\"", 1);
+    let date_named =
+        "line 2: game_date = \"2019-02-30\": expected a date, YYYY-MM-DD or M/D/YYYY; skipped";
+    let no_season = sample().replacen("\"fly_ball\",2019,", "\"fly_ball\",2019.0,", 1);
+    let season_named = "line 2: --by: date \"2019.0\" is neither YYYY-MM-DD nor M/D/YYYY";
+    let modes: [(&[&str], &str, &str); 6] = [
+        (&[], &no_date, date_named),
+        (&["--drag-only", "--json"], &no_date, date_named),
+        (&["--by", "month"], &no_date, date_named),
+        (&["--by", "home_team", "--json"], &no_date, date_named),
+        (&["--by", "season"], &no_season, season_named),
+        (&["--by", "season", "--json"], &no_season, season_named),
+    ];
+    for (mode, text, named) in modes {
+        let args = [&["calibrate", "-"][..], mode].concat();
+        let (out, err, status) = run(&args, text.as_bytes());
+        assert_eq!(status, 1, "{mode:?}: {err}");
+        assert!(err.contains(named), "{mode:?}: {err}");
+        assert!(
+            err.contains("1 of 248 rows failed and were skipped (exit status 1)"),
+            "{mode:?}: {err}"
+        );
+        assert!(out.contains("drag_scale"), "{mode:?}: {out}");
+    }
+    // The bat's fit too.
+    let swings = std::fs::read_to_string("tests/data/savant_swings.csv").unwrap();
+    let no_date = swings.replacen(",2024-04-03,", ",2024-02-30,", 1);
+    let (out, err, status) = run(&["calibrate", "--impact", "-"], no_date.as_bytes());
+    assert_eq!(status, 1, "{err}");
+    assert!(err.contains("line 2: game_date = \"2024-02-30\""), "{err}");
+    assert!(out.contains("(fitted: bat.effective_mass)"), "{out}");
+    // A row without a launch (a pitch not put in play) is no failure.
+    let pitch = format!("{}\"2019-07-24\"{}\n", sample(), ",".repeat(16));
+    for mode in [&["--by", "month"][..], &[]] {
+        let args = [&["calibrate", "-"][..], mode].concat();
+        let (out, err, status) = run(&args, pitch.as_bytes());
+        assert_eq!(status, 0, "{mode:?}: {err}");
+        assert!(!err.contains("failed"), "{mode:?}: {err}");
+        assert!(out.contains("1 skipped"), "{mode:?}: {out}");
+    }
+}
+
 #[test]
 fn a_fit_needs_ten_rows_grouped_or_not() {
     let text: String = sample().lines().take(6).collect::<Vec<_>>().join("\n");
@@ -420,7 +468,14 @@ fn calibrate_impact_names_the_rows_it_skips() {
     let rows = text.lines().count();
     text += "1,2,3\n";
     let (out, err, status) = run(&["calibrate", "--impact", "-"], text.as_bytes());
-    assert_eq!(status, 0, "{err}");
+    // The fit stands on the other rows; the one failed makes the status 1.
+    assert_eq!(status, 1, "{err}");
+    assert!(
+        err.contains(&format!(
+            "1 of {rows} rows failed and were skipped (exit status 1)"
+        )),
+        "{err}"
+    );
     let line = rows + 1;
     assert!(
         err.contains(&format!("line {line}: 3 fields where the header has")),

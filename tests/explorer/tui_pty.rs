@@ -10,6 +10,19 @@ use std::time::{Duration, Instant};
 
 use portable_pty::{CommandBuilder, PtySize, native_pty_system};
 
+/// How long a wait for the screen lasts at most: far past what a loaded
+/// machine takes (the explorer's work on two busy cores), so that a test
+/// fails with the screen it saw rather than hangs when the text never
+/// comes. Every wait here polls for its condition; none sleeps a fixed time
+/// and hopes.
+const PATIENCE: Duration = Duration::from_secs(60);
+/// A wait's poll.
+const POLL: Duration = Duration::from_millis(20);
+/// How long the explorer writes nothing before its screen counts as drawn
+/// whole: a frame read half (the terminal reads while the explorer writes)
+/// can show a new value above a status line not yet rewritten.
+const QUIET: Duration = Duration::from_millis(600);
+
 pub(crate) struct Session {
     pub(crate) screen: Arc<Mutex<vt100::Parser>>,
     /// Everything the explorer wrote.
@@ -91,17 +104,63 @@ impl Session {
     /// caught half written (the terminal reads while the explorer draws)
     /// can show one and not yet another.
     pub(crate) fn wait_for_all(&self, texts: &[&str]) -> String {
+        self.wait_until(&format!("all of {texts:?}"), |contents| {
+            texts.iter().all(|text| contents.contains(text))
+        })
+    }
+
+    /// Waits until the screen no longer shows `text` (a popup closed).
+    pub(crate) fn wait_for_gone(&self, text: &str) -> String {
+        self.wait_until(&format!("{text:?} gone"), |contents| {
+            !contents.contains(text)
+        })
+    }
+
+    /// The first screen `done` holds for, polled (up to [`PATIENCE`]; past
+    /// it the test fails, naming `what` and the screen).
+    fn wait_until(&self, what: &str, done: impl Fn(&str) -> bool) -> String {
+        self.wait_within(PATIENCE, what, done)
+    }
+
+    fn wait_within(&self, patience: Duration, what: &str, done: impl Fn(&str) -> bool) -> String {
         let start = Instant::now();
         loop {
+            let contents = self.contents();
+            if done(&contents) {
+                return contents;
+            }
+            assert!(
+                start.elapsed() < patience,
+                "never saw {what} in {patience:?}; screen:\n{contents}"
+            );
+            thread::sleep(POLL);
+        }
+    }
+
+    /// Waits until the explorer has written nothing for [`QUIET`] and its
+    /// screen, so drawn whole, shows every one of `texts`: its work done.
+    /// The bytes written in that quiet stretch are none.
+    fn wait_until_settled(&self, texts: &[&str]) -> String {
+        let start = Instant::now();
+        loop {
+            self.wait_for_all(texts);
+            let (mut written, mut since) = (self.bytes.lock().unwrap().len(), Instant::now());
+            while since.elapsed() < QUIET {
+                assert!(
+                    start.elapsed() < PATIENCE,
+                    "never quiet for {QUIET:?} in {PATIENCE:?}; screen:\n{}",
+                    self.contents()
+                );
+                thread::sleep(POLL);
+                let now = self.bytes.lock().unwrap().len();
+                if now != written {
+                    (written, since) = (now, Instant::now());
+                }
+            }
             let contents = self.contents();
             if texts.iter().all(|text| contents.contains(text)) {
                 return contents;
             }
-            assert!(
-                start.elapsed() < Duration::from_secs(60),
-                "never saw all of {texts:?}; screen:\n{contents}"
-            );
-            thread::sleep(Duration::from_millis(20));
         }
     }
 
@@ -120,8 +179,8 @@ impl Session {
                 }
                 return status.exit_code();
             }
-            assert!(start.elapsed() < Duration::from_secs(30), "did not exit");
-            thread::sleep(Duration::from_millis(20));
+            assert!(start.elapsed() < PATIENCE, "did not exit");
+            thread::sleep(POLL);
         }
     }
 }
@@ -140,13 +199,14 @@ fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
         screen.contains("V̂_B0") || screen.contains("V_B0"),
         "{screen}"
     );
-    session.wait_for("optimum ✓");
-    session.wait_for("surface ✓");
-    // The sensitivity at the optimum comes last.
-    session.wait_for("Δ ✓");
-    // An idle explorer writes nothing.
+    // The optimum, the surface and the sensitivity at the optimum (last) for
+    // the new speed: on a screen drawn whole, not one with the new value
+    // above the old status line.
+    session.wait_until_settled(&["35 m/s", "optimum ✓", "surface ✓", "Δ ✓"]);
+    // An idle explorer writes nothing: not in the quiet stretch just waited
+    // for, nor in as long again.
     let before = session.bytes.lock().unwrap().len();
-    thread::sleep(Duration::from_millis(600));
+    thread::sleep(QUIET);
     let after = session.bytes.lock().unwrap().clone();
     // On failure, what was written and onto which screen, to find the cause.
     assert_eq!(
@@ -196,6 +256,18 @@ fn the_explorer_runs_in_a_terminal_takes_keys_saves_and_quits() {
     session.wait_for_all(&["Trajectory", "fast35", "35 m/s"]);
     session.press("\u{3}"); // Ctrl-C
     assert_eq!(session.exit_code(), 0);
+}
+
+/// A wait for text that never comes fails, with the screen it saw, once its
+/// patience is out (here 2 s, not [`PATIENCE`]).
+#[test]
+#[should_panic(expected = "never saw all of [\"no such text\"] in 2s; screen:")]
+fn a_wait_for_text_that_never_comes_fails() {
+    let session = Session::start(&[], 80, 24);
+    session.wait_for("Trajectory");
+    session.wait_within(Duration::from_secs(2), "all of [\"no such text\"]", |s| {
+        s.contains("no such text")
+    });
 }
 
 #[test]
@@ -271,13 +343,13 @@ fn a_terminal_that_goes_away_ends_the_explorer() {
     let mut seen = Vec::new();
     let start = Instant::now();
     while !String::from_utf8_lossy(&seen).contains("Trajectory") {
-        assert!(start.elapsed() < Duration::from_secs(60), "never started");
+        assert!(start.elapsed() < PATIENCE, "never started");
         let mut buf = [0u8; 8192];
         let n = unsafe { libc::read(fd, buf.as_mut_ptr().cast(), buf.len()) };
         if n > 0 {
             seen.extend_from_slice(&buf[..n as usize]);
         } else {
-            thread::sleep(Duration::from_millis(20));
+            thread::sleep(POLL);
         }
     }
     let subshell = child_named(shell.process_id().unwrap(), "sh").expect("the subshell runs");
@@ -285,22 +357,22 @@ fn a_terminal_that_goes_away_ends_the_explorer() {
     drop(pair.master); // the terminal goes away
     let start = Instant::now();
     while running(explorer) {
-        if start.elapsed() > Duration::from_secs(10) {
+        if start.elapsed() > PATIENCE {
             // Leave no spinning process behind a failed run.
             let _ = std::process::Command::new("kill")
                 .args(["-KILL", &explorer.to_string()])
                 .status();
             panic!("the explorer outlived its terminal");
         }
-        thread::sleep(Duration::from_millis(50));
+        thread::sleep(POLL);
     }
     let _ = shell.wait();
     let start = Instant::now();
     let written = loop {
         match std::fs::read_to_string(&status) {
             Ok(text) if text.ends_with('\n') => break text,
-            _ if start.elapsed() > Duration::from_secs(10) => panic!("no status written"),
-            _ => thread::sleep(Duration::from_millis(20)),
+            _ if start.elapsed() > PATIENCE => panic!("no status written"),
+            _ => thread::sleep(POLL),
         }
     };
     assert_eq!(written, "129\n");
@@ -344,8 +416,9 @@ fn tui_savant_solves_the_files_swings_and_refuses_a_file_without_them() {
     // paper's).
     session.wait_for("Open a swing (33)");
     session.press("\u{1b}");
-    // Apart from the Esc, or the two read as Alt-q.
-    thread::sleep(Duration::from_millis(300));
+    // Apart from the Esc (read once the picker is gone), or the two read as
+    // Alt-q.
+    session.wait_for_gone("Open a swing (33)");
     session.press("q");
     assert_eq!(session.exit_code(), 0);
     let written = String::from_utf8_lossy(&session.bytes.lock().unwrap()).into_owned();
@@ -376,8 +449,9 @@ fn a_fifo_among_the_presets_leaves_the_picker_and_q_working() {
     session.press("o");
     session.wait_for("fifo.toml: not a regular file");
     session.press("\u{1b}");
-    // Apart from the Esc, or the two read as Alt-q.
-    thread::sleep(Duration::from_millis(300));
+    // Apart from the Esc (read once the picker is gone), or the two read as
+    // Alt-q.
+    session.wait_for_gone("Open preset");
     session.press("q");
     assert_eq!(session.exit_code(), 0);
 }
@@ -452,7 +526,9 @@ fn no_color_writes_no_colour_and_stays_usable() {
     session.wait_for("Enter accepts");
     session.press("\x1b");
     // Esc and q at once would read as Alt-q: wait for the edit to close.
-    session.wait_for("step 0.5");
+    session.wait_until("the edit closed", |s| {
+        !s.contains("Enter accepts") && s.contains("step 0.5")
+    });
     session.press("q");
     assert_eq!(session.exit_code(), 0);
     let codes = sgr_codes(&session.bytes.lock().unwrap());

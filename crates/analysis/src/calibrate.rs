@@ -10,12 +10,12 @@
 //! k_D (monotone: more drag, shorter); with a second measured quantity the
 //! two factors solve the two medians together (Newton's method, its
 //! Jacobian by differences). Without one, the distances by launch angle
-//! fit both ([`bands`]). Each trial flies every row (in parallel).
+//! fit both (`bands`). Each trial flies every row (in parallel).
 //!
 //! The uncertainty is the median's own: its standard error, 1.2533·σ/√n
 //! with σ = 1.4826·(median absolute deviation) (both exact for normal
 //! errors), carried to the factors through the slopes of the medians
-//! (each the mean rate of the rows about its median, [`median_slope`]).
+//! (each the mean rate of the rows about its median, `median_slope`).
 
 mod bands;
 
@@ -200,7 +200,7 @@ const TOLERANCE: f64 = 1e-5;
 pub enum LiftFrom {
     HangTime,
     Apex,
-    /// The distances' medians by launch-angle band ([`bands`]).
+    /// The distances' medians by launch-angle band (`bands`).
     Bands,
 }
 

@@ -29,7 +29,7 @@ const FROM_OFF: [(&str, f64); 1] = [("model.spin_decay", 30.0)];
 /// 1 mph, 100 rpm, 0.5°). A converted value is rarely on that step's grid,
 /// so the snap there only removes the conversion's rounding noise, and each
 /// nudge moves by the shown step exactly. Up from off, a key of
-/// [`FROM_OFF`] goes to its value when on.
+/// `FROM_OFF` goes to its value when on.
 pub fn nudge_in(
     scene: &Scene,
     key: &Key,

@@ -36,7 +36,7 @@ pub struct Measurements {
     pub spin_from_swing: Option<usize>,
     pub rows: usize,
     pub without_distance: usize,
-    /// Launched below [`LOWEST_FLIGHT`]: a grounder's distance is where it
+    /// Launched below `LOWEST_FLIGHT` (10°): a grounder's distance is where it
     /// was fielded.
     pub grounders: usize,
     /// With a measurement outside its plausible range (each named).
@@ -248,12 +248,13 @@ pub fn measured(
 const NAMED_IMPLAUSIBLE: usize = 20;
 
 /// Every row's tracked swing (`calibrate --impact`): rows without one are
-/// counted, bad rows named.
+/// counted, bad rows named. With them, the rows read (every record) and
+/// how the batch went.
 pub fn tracked_swings(
     setup: &Setup,
     input: impl BufRead,
     note: &mut dyn FnMut(&str),
-) -> Result<(Vec<TrackedSwing>, Outcome), String> {
+) -> Result<(Vec<TrackedSwing>, usize, Outcome), String> {
     let mut records = Records::new(input);
     let header = header_of(&mut records, setup)?;
     let finish = |piece: &mut Piece<Vec<TrackedSwing>>| {
@@ -262,8 +263,10 @@ pub fn tracked_swings(
         piece.made.extend(swings.flatten());
         piece.answered = piece.made.len();
     };
-    let mut swings = Vec::new();
+    let (mut swings, mut rows) = (Vec::new(), 0);
     let take = |piece: &mut Piece<Vec<TrackedSwing>>| {
+        // Every record is a row: read whole, or failed as it was read.
+        rows += piece.jobs.len() + piece.without_launch + piece.failed.len();
         swings.append(&mut piece.made);
         Ok(true)
     };
@@ -275,7 +278,7 @@ pub fn tracked_swings(
         take,
         note,
     )?;
-    Ok((swings, outcome))
+    Ok((swings, rows, outcome))
 }
 
 /// Refuses a row whose measurements are not plausible

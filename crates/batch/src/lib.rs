@@ -1,10 +1,10 @@
 //! homerun's batch pipeline: a CSV of launches, or a Baseball Savant
 //! export as it comes, read once and taken down one staged path: the
 //! columns ([`columns`]: one table), the header ([`header`]), records read
-//! bounded ([`read`]), each row made a scene ([`row`]) with its tracking
-//! cells ([`swing`]), its swing solved ([`swing_solve`]), flown
-//! ([`flights`], each park in its air: [`park_air`]) in pieces on the thread pool
-//! ([`pieces`]), and given to a sink: the rows as CSV or JSON and the
+//! bounded (`read`), each row made a scene (`row`) with its tracking
+//! cells (`swing`), its swing solved (`swing_solve`), flown
+//! (`flights`, each park in its air: `park_air`) in pieces on the thread pool
+//! (`pieces`), and given to a sink: the rows as CSV or JSON and the
 //! summary ([`fly_rows`]), the measured flights `calibrate` fits
 //! ([`calibrate`]), the tracked swings of `calibrate --impact`, the swings
 //! the explorer opens ([`swings`]). Each row's answer is its own, bit for

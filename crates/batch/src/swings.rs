@@ -1,5 +1,5 @@
 //! `tui --savant FILE`: the swings of a Savant export with bat tracking,
-//! each solved as `hit --batch` solves it ([`solve_row`]) and made a scene
+//! each solved as `hit --batch` solves it (`solve_row`) and made a scene
 //! the explorer opens, so that a teacher can step through the impact of a
 //! real swing.
 

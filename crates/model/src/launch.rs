@@ -241,7 +241,7 @@ impl SceneFlight {
 
     /// The flight after `impact`, whose launch velocity is the impact's own
     /// (not rebuilt from speed, angle and direction), so a planar swing
-    /// flies exactly as the paper's [`super::launch`] does.
+    /// flies exactly as the paper's [`super::launch`](fn@super::launch) does.
     pub fn of_impact(scene: &Scene, impact: &Collision) -> SceneFlight {
         // A planar impact flown in its plane needs no launch angle (an
         // arctangent, and a sine and cosine to undo it: a sixth of a

@@ -11,8 +11,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::surface::{SurfacePicture, surface_svg};
 use super::{
-    FONT, Labels, MARK, NOW, PictureError, chars_in, draw_legend, draw_title, drawn,
-    emptiest_corner, house_style, padded, series_color, sig, tick_label, wrapped,
+    FONT, Labels, MARK, MOST_DECIMALS, NOW, PictureError, chars_in, draw_legend, draw_title, drawn,
+    emptiest_corner, house_style, padded, series_color, tick_label, wrapped,
 };
 use analysis::figures::curves::{
     self, axis_title, current_value, marked_points, panels, x_column, y_title,
@@ -83,7 +83,7 @@ fn notes_unwrapped(data: &FigureData) -> Vec<String> {
                 "{}: paper {} · ours {}",
                 c.what,
                 trimmed(c.paper),
-                stated::with_unit(&sig(c.ours, 4), c.unit)
+                stated::with_unit(&units::sig(c.ours, 4, MOST_DECIMALS), c.unit)
             )
         })
         .collect();
@@ -235,7 +235,10 @@ fn draw_panel(
                 PathElement::new(vec![(v, at(k)), (v, at(k + 1))], NOW.stroke_width(2))
             }))
             .map_err(drawn)?
-            .label(format!("now: {name} = {}{gap}{unit}", sig(v, 4)))
+            .label(format!(
+                "now: {name} = {}{gap}{unit}",
+                units::sig(v, 4, MOST_DECIMALS)
+            ))
             .legend(|(x, y)| {
                 EmptyElement::at((x, y))
                     + PathElement::new(vec![(0, 0), (6, 0)], NOW.stroke_width(2))

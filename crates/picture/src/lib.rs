@@ -167,14 +167,8 @@ const MARK: RGBColor = RGBColor(200, 0, 0);
 /// The current input's value and the current swing.
 const NOW: RGBColor = RGBColor(90, 90, 90);
 
-/// `value` to `digits` significant digits, for tick labels and notes.
-fn sig(value: f64, digits: i32) -> String {
-    if value == 0.0 || !value.is_finite() {
-        return format!("{value}");
-    }
-    let decimals = (digits - 1 - value.abs().log10().floor() as i32).clamp(0, 8) as usize;
-    format!("{value:.decimals$}")
-}
+/// The most decimals a tick label or note gives ([`units::sig`]).
+const MOST_DECIMALS: i32 = 8;
 
 /// The smallest and largest of `values` (finite ones only), widened by
 /// `pad` of the span on each side, and never empty: a flat series gets a

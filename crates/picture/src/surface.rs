@@ -9,8 +9,8 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::{
-    FONT, Labels, MARK, NOW, PictureError, Scale, UnitSystem, draw_title, drawn, house_style, sig,
-    tick_label,
+    FONT, Labels, MARK, MOST_DECIMALS, NOW, PictureError, Scale, UnitSystem, draw_title, drawn,
+    house_style, tick_label,
 };
 use analysis::figures::SurfaceFigure;
 use analysis::study::{CellOutcome, Surface};
@@ -258,7 +258,10 @@ pub fn surface_svg_in(
         }
         if let Some((e, psi, range)) = picture.optimum.filter(|&(e, psi, _)| inside(e, psi)) {
             let at = (ex(e), py(psi));
-            let text = format!("O {} {unit}", sig(scale.len(range), 5));
+            let text = format!(
+                "O {} {unit}",
+                units::sig(scale.len(range), 5, MOST_DECIMALS)
+            );
             let (offset, right) = labels.place_clear(chart.backend_coord(&at), &text, plot, MARKER);
             chart
                 .draw_series(std::iter::once(
@@ -270,7 +273,10 @@ pub fn surface_svg_in(
         }
         if let Some((e, psi, range)) = picture.paper.filter(|&(e, psi, _)| inside(e, psi)) {
             let at = (ex(e), py(psi));
-            let text = format!("paper's O {} {unit}", sig(scale.len(range), 5));
+            let text = format!(
+                "paper's O {} {unit}",
+                units::sig(scale.len(range), 5, MOST_DECIMALS)
+            );
             let (offset, right) = labels.place_clear(chart.backend_coord(&at), &text, plot, MARKER);
             chart
                 .draw_series(std::iter::once(
@@ -359,7 +365,10 @@ fn draw_scale(
     }
     if let Some(level) = level {
         area.draw(&Text::new(
-            format!("white: {} {unit} (fence)", sig(scale.len(level), 4)),
+            format!(
+                "white: {} {unit} (fence)",
+                units::sig(scale.len(level), 4, MOST_DECIMALS)
+            ),
             (x, y + 6),
             (FONT, 11),
         ))

@@ -10,7 +10,7 @@
 //!
 //! Two targets are not renamed over: a symbolic link to a file in the same
 //! folder stays a link (the file it points to is replaced), and, for
-//! pictures ([`write`]), a device, FIFO or socket (`/dev/null`,
+//! pictures ([`write`](fn@write)), a device, FIFO or socket (`/dev/null`,
 //! `/dev/stdout`, a named pipe), or any path in `/dev` or `/proc` (the
 //! system's own links: `/dev/stdout` when stdout is a file), is written to
 //! in place, since a rename would replace the device node itself with a

@@ -56,8 +56,9 @@ pub type Path = Vec<(f64, f64)>;
 pub enum Field {
     /// The preset's name: Enter opens the picker.
     Preset,
-    /// A numeric input: an index into `all_keys()` ([`KEYS`], then
-    /// [`EXTENDED_KEYS`], then [`LAUNCH_KEYS`]; see [`input_key`]).
+    /// A numeric input: an index into `all_keys()` ([`model::keys::KEYS`],
+    /// then [`model::keys::EXTENDED_KEYS`], then [`model::keys::LAUNCH_KEYS`];
+    /// see [`input_key`]).
     Key(usize),
     /// The drag model.
     Drag,

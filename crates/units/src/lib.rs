@@ -333,6 +333,19 @@ pub fn significant(value: f64) -> String {
     }
 }
 
+/// `value` to `digits` significant digits, and to no more than
+/// `most_decimals` decimals (a tiny value is zeros there, not a long run of
+/// them); a zero, inf or NaN as Rust writes it ("0", "-0", "inf"). For
+/// tick labels and notes: the pictures' and the explorer's figures'.
+pub fn sig(value: f64, digits: i32, most_decimals: i32) -> String {
+    if value == 0.0 || !value.is_finite() {
+        return format!("{value}");
+    }
+    let decimals =
+        (digits - 1 - value.abs().log10().floor() as i32).clamp(0, most_decimals) as usize;
+    format!("{value:.decimals$}")
+}
+
 /// `value` to `decimals` decimals, with no sign on a zero: "-0.00" reads
 /// as a loss, or as a number below zero on an axis.
 pub fn fixed(value: f64, decimals: usize) -> String {
@@ -403,6 +416,21 @@ mod tests {
         assert_eq!(significant(f64::INFINITY), "inf");
         assert_eq!(significant(f64::NEG_INFINITY), "-inf");
         assert_eq!(significant(f64::NAN), "NaN");
+    }
+
+    #[test]
+    fn sig_keeps_its_digits_up_to_the_decimals_allowed() {
+        assert_eq!(sig(134.699, 4, 8), "134.7");
+        assert_eq!(sig(0.026_54, 3, 6), "0.0265");
+        assert_eq!(sig(-2.5e-3, 2, 8), "-0.0025");
+        assert_eq!(sig(12_345.6, 3, 8), "12346");
+        // Below the decimals allowed, zeros.
+        assert_eq!(sig(1.234e-7, 3, 8), "0.00000012");
+        assert_eq!(sig(1.234e-7, 3, 6), "0.000000");
+        assert_eq!(sig(0.0, 3, 6), "0");
+        assert_eq!(sig(-0.0, 3, 6), "-0");
+        assert_eq!(sig(f64::INFINITY, 3, 6), "inf");
+        assert_eq!(sig(f64::NAN, 3, 6), "NaN");
     }
 
     #[test]

@@ -221,7 +221,7 @@ pub fn slice(
 /// few chunks for the cores, each a few times the lanes.
 const FEW: usize = 8;
 
-/// Flies `flights` in lock-step, in parallel chunks of [`FEW`] (the same
+/// Flies `flights` in lock-step, in parallel chunks of `FEW` (the same
 /// on any number of cores, so that each flight's steps are too), giving
 /// what their ranges need ([`land_many`]), in their order.
 pub fn land_all(flights: &[SceneFlight], options: &FlightOptions) -> Vec<RangeSummary> {

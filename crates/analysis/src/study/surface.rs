@@ -148,7 +148,7 @@ impl Surface {
 /// The most integration steps a sweep's optimisations may take together
 /// (about 3 s on one core), shared by its points: each point's optimiser
 /// gets the smaller of an even share of what is left and its own
-/// [`OptimizerSettings::max_flight_steps`], and flies at least one swing (so
+/// [`OptimizerSettings::max_flight_steps`](crate::optimum::OptimizerSettings::max_flight_steps), and flies at least one swing (so
 /// the sweep may overrun by a flight a point). An ordinary point takes 3 000
 /// to 10 000 (warm-started), so a share stays ample up to 200 points.
 pub const SWEEP_FLIGHT_STEPS: u64 = 10_000_000;
@@ -405,7 +405,7 @@ pub fn surface(scene: &Scene, grid: Grid, options: impl Into<FlightOptions>) -> 
 }
 
 /// As [`surface`], giving up (`None`) as soon as `cancelled()` turns true:
-/// it is polled before every chunk of [`CHUNK`] cells.
+/// it is polled before every chunk of `CHUNK` cells.
 pub fn surface_until(
     scene: &Scene,
     grid: Grid,

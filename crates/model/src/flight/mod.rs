@@ -37,7 +37,7 @@ pub const MAX_FLIGHT_TIME: f64 = 600.0;
 const VACUUM_TIMES: f64 = 10.0;
 
 /// How long a flight launched at `speed` (m/s) from `height` (m) is
-/// followed before it counts as not landing: [`VACUUM_TIMES`] the vacuum
+/// followed before it counts as not landing: `VACUUM_TIMES` (10) the vacuum
 /// flight time of that speed straight up from that height, at least a
 /// second and at most [`MAX_FLIGHT_TIME`].
 pub fn time_limit(speed: f64, height: f64, gravity: f64) -> f64 {

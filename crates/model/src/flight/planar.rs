@@ -116,7 +116,7 @@ pub struct Flight {
     /// at 1 leaves every bit as it was).
     pub surface_speed: f64,
     pub spin_sign: f64,
-    /// `model.drag_scale`, on C_D (see [`scaled`]).
+    /// `model.drag_scale`, on C_D (see `scaled`).
     pub drag_scale: f64,
     /// ω at launch (rad/s, backspin positive).
     pub spin: f64,
@@ -271,8 +271,9 @@ pub struct Launch {
 
 impl Launch {
     /// How long the flight is followed before it counts as not landing:
-    /// [`VACUUM_TIMES`] the vacuum flight time of this speed straight up
-    /// from this height, at least a second and at most [`MAX_FLIGHT_TIME`].
+    /// `VACUUM_TIMES` (10) the vacuum flight time of this speed straight up
+    /// from this height, at least a second and at most
+    /// [`MAX_FLIGHT_TIME`](super::MAX_FLIGHT_TIME).
     pub fn time_limit(&self, gravity: f64) -> f64 {
         time_limit(self.velocity.norm(), self.position.y, gravity)
     }

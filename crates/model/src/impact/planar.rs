@@ -71,7 +71,7 @@ pub struct Impact {
     pub regime: Regime,
     /// The tangential impulse a gripping contact gives back after the slip
     /// halts (N·s, ≥ 0): e_T times the one that halted it, no more than
-    /// friction allows over the rest of the contact ([`super::release`]);
+    /// friction allows over the rest of the contact (`impact::release`);
     /// 0 for the paper's rolling.
     pub release_impulse: f64,
     /// Pre-impact states (flight frame).

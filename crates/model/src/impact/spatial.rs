@@ -90,7 +90,7 @@ pub struct Impact3d {
     pub separation_impulse: f64,
     pub regime: Regime,
     /// The tangential impulse (n1, n2) a gripping contact gives back after
-    /// its slip halts, along the impulse that halted it ([`super::release`]);
+    /// its slip halts, along the impulse that halted it (`impact::release`);
     /// zero for the paper's rolling.
     pub release: Vector2<f64>,
     /// p_s where a release needed it exactly (friction capped it); else

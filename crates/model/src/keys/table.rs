@@ -370,7 +370,7 @@ pub const EXTENDED_KEYS: &[Key] = &[
     ),
 ];
 
-/// The launch of a batted-ball scene (see [`crate::launch`]).
+/// The launch of a batted-ball scene (see [`crate::launch`](mod@crate::launch)).
 /// Setting one makes the scene a batted ball; each one not set is read
 /// from the scene's own swing (the impact's launch), and reading one on a
 /// swing scene gives the impact's. Kept apart from [`KEYS`], which are the

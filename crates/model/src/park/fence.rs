@@ -131,7 +131,7 @@ const MAX_HEIGHT: f64 = 100.0;
 
 impl Fence {
     /// A fence from points, checked: at least two and at most
-    /// [`MAX_POINTS`], each distance in
+    /// `MAX_POINTS` (1000), each distance in
     /// (0, 1000] m and height in (0, 100] m, directions not decreasing (at
     /// most two at one direction) from −π/4 to +π/4. The end points are
     /// moved onto the foul lines exactly.

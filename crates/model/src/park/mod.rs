@@ -38,7 +38,7 @@ pub struct Park {
     /// The published foul-line and centre-field distances, if known.
     pub published: Option<ParkDimensions>,
     pub fence: Fence,
-    /// When it was its team's home (none: always), [`home`].
+    /// When it was its team's home (none: always), [`at_home`].
     pub home: Vec<HomeSpan>,
     /// When its fence stood as given (none: always): a row at its park on
     /// another day met other walls. A park file without `walls` gives its

@@ -4,7 +4,7 @@ use super::{Control, DenseStep, Outcome, State, Stats, Step, too_small};
 
 /// The classical fixed-step Runge–Kutta method (4th order, four
 /// evaluations a step), with a cubic Hermite continuous extension: the
-/// benchmark's comparison for [`integrate`], with the same observer protocol.
+/// benchmark's comparison for [`integrate`](super::integrate), with the same observer protocol.
 /// The last step is shortened to end on `t_end`.
 pub fn integrate_fixed<const N: usize, F, O>(
     mut f: F,

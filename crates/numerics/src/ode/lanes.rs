@@ -6,8 +6,8 @@
 //! on; a lane whose problem ends takes the next one ([`LaneSystem::refill`]),
 //! starting with its neighbour's first step.
 //!
-//! The step's arithmetic is [`super::stages`]'s, the controller's
-//! [`super::controller`]'s, the same as the single integrator's; what
+//! The step's arithmetic is [`super::stages`](mod@super::stages)'s, the controller's
+//! `super::controller`'s, the same as the single integrator's; what
 //! happens between steps (events, the dense output where one falls) is the
 //! system's, lane by lane, in scalar code.
 //!

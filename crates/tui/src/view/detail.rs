@@ -37,7 +37,7 @@ fn sections(app: &App) -> Vec<(&'static str, Vec<String>)> {
             format!(
                 "paper {} · ours {}: {}",
                 trimmed(c.paper),
-                stated::with_unit(&super::figure::sig(c.ours, 3), c.unit),
+                stated::with_unit(&units::sig(c.ours, 3, super::figure::MOST_DECIMALS), c.unit,),
                 c.what
             )
         }));

@@ -65,14 +65,8 @@ pub(super) fn column_unit(view: &Figure, column: &Column) -> (Unit, String) {
     (unit, format!("{name} ({})", unit.symbol))
 }
 
-/// `value` to `digits` significant digits.
-pub(super) fn sig(value: f64, digits: i32) -> String {
-    if value == 0.0 || !value.is_finite() {
-        return format!("{value}");
-    }
-    let decimals = (digits - 1 - value.abs().log10().floor() as i32).clamp(0, 6) as usize;
-    format!("{value:.decimals$}")
-}
+/// The most decimals a stated number on the screen gives ([`units::sig`]).
+pub(super) const MOST_DECIMALS: i32 = 6;
 
 pub fn draw(frame: &mut Frame, area: Rect, view: &Figure) {
     let k = FIGURES.iter().position(|&f| f == view.number).unwrap_or(0);
@@ -137,7 +131,7 @@ pub fn draw(frame: &mut Frame, area: Rect, view: &Figure) {
                 Span::styled(format!("paper {}", trimmed(c.paper)), view.theme.dim),
                 Span::raw(format!(
                     " · ours {}",
-                    stated::with_unit(&sig(c.ours, 3), c.unit)
+                    stated::with_unit(&units::sig(c.ours, 3, MOST_DECIMALS), c.unit)
                 )),
                 // A number's groups ("208 000") wrap together.
                 Span::styled(
