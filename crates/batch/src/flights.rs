@@ -53,6 +53,8 @@ pub(crate) struct Scratch {
     /// With `--all-parks`, for each row flown, its judgement at each park
     /// (beside `cleared`: from the same `cleared_from`).
     pub clearings: Vec<Clearing>,
+    /// Without it, the row being flown's verdict at each park.
+    verdicts: Vec<Clearing>,
     airs: park_air::ParkAirs,
 }
 
@@ -132,7 +134,13 @@ pub(crate) fn fly_chunk(
         flown += 1;
         let landing = Landing::of(&summary);
         let clearing = Clearing::judge_landed(ready.own, crossings[0], &summary, landing);
-        let from = scratch.clearings.len();
+        // Each row's verdicts at the parks: whole where the margins are
+        // printed (`--all-parks`); else only whether each park is cleared,
+        // a flag where a whole judgement is some 70 bytes.
+        let from = match setup.all_parks {
+            true => scratch.clearings.len(),
+            false => scratch.cleared.len(),
+        };
         // How each park's verdict is found: from this flight alone, from
         // flights in the parks' own air, or settled from this one (then
         // the parks' airs are kept with it).
@@ -159,24 +167,31 @@ pub(crate) fn fly_chunk(
                 settling = Some(airs.to_vec());
             }
         }
-        // Judged whole where the margins are printed (`--all-parks`); else
-        // only the verdicts are read, and what settles them.
-        let judge = match setup.all_parks {
-            true => Clearing::judge_landed,
-            false => Clearing::outcome_landed,
-        };
         let judged = parks.iter().zip(&crossings[1..]);
-        (scratch.clearings)
-            .extend(judged.map(|(fence, crossing)| judge(fence, *crossing, &summary, landing)));
+        if setup.all_parks {
+            (scratch.clearings).extend(judged.map(|(fence, crossing)| {
+                Clearing::judge_landed(fence, *crossing, &summary, landing)
+            }));
+        } else {
+            let verdict = |(fence, crossing): (&&park::Fence, &Option<Crossing>)| {
+                Clearing::outcome_landed(fence, *crossing, &summary, landing)
+            };
+            scratch.verdicts.clear();
+            scratch.verdicts.extend(judged.map(verdict));
+            (scratch.cleared).extend(scratch.verdicts.iter().map(Clearing::clears));
+        }
         // A row whose own flight settles every park keeps its verdicts
         // (what the settling's first round would find, without its lists).
+        let mut settled_at = Vec::new();
         let settling = settling.filter(|airs| {
             let own = (ready.scene.environment.air_density, airs.as_slice());
             let launched = (ready.launch.direction, &summary);
-            !park_air::own_flight_settles(launched, own, parks, &scratch.clearings[from..])
+            let judged = (parks, scratch.verdicts.as_slice());
+            !park_air::own_flight_settles(launched, own, judged, &mut settled_at)
         });
         if let Some(airs) = settling {
             pending.push(park_air::Pending {
+                settled_at,
                 scene: ready.scene,
                 launch_direction: ready.launch.direction,
                 airs,
@@ -185,11 +200,7 @@ pub(crate) fn fly_chunk(
                     density: ready.scene.environment.air_density,
                     flight: summary,
                     slack: 0.0,
-                    clearings: scratch.clearings[from..]
-                        .iter()
-                        .copied()
-                        .map(Some)
-                        .collect(),
+                    clearings: scratch.verdicts.iter().copied().map(Some).collect(),
                 }],
             });
         }
@@ -203,11 +214,17 @@ pub(crate) fn fly_chunk(
             direction_from: ready.direction_from,
         }));
     }
-    park_air::fly_alone(&in_own_air, parks, &options, &mut scratch.clearings);
-    park_air::settle(pending, parks, &options, &mut scratch.clearings);
-    scratch
-        .cleared
-        .extend(scratch.clearings.iter().map(Clearing::clears));
+    if setup.all_parks {
+        park_air::fly_alone(&in_own_air, parks, &options, |slot, judged| {
+            scratch.clearings[slot] = judged;
+        });
+        (scratch.cleared).extend(scratch.clearings.iter().map(Clearing::clears));
+    } else {
+        park_air::fly_alone(&in_own_air, parks, &options, |slot, judged| {
+            scratch.cleared[slot] = judged.clears();
+        });
+        park_air::settle(pending, parks, &options, &mut scratch.cleared);
+    }
     let count = setup.parks.parks.len();
     for row in out.iter_mut().flatten() {
         let cleared = &scratch.cleared[row.cleared_from..][..count];

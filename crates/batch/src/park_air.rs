@@ -97,6 +97,9 @@ pub(crate) struct Pending {
     pub from: usize,
     /// Its flights so far: its own first.
     pub flights: Vec<Reference>,
+    /// The parks its own flight settles ([`own_flight_settles`]): their
+    /// verdicts are in place.
+    pub settled_at: Vec<bool>,
 }
 
 /// A row's flight in one air, judged at every park.
@@ -120,19 +123,22 @@ pub(crate) struct Reference {
 pub(crate) const VERDICT_SLACK: f64 = 0.01;
 
 /// Settles every park of every row of `rows` in rounds (see above): each
-/// park's verdict into `clearings[row.from + park]`, from a flight whose
-/// air settles it. `options` is the readout's precision.
+/// park's verdict, cleared or not, into `cleared[row.from + park]`, from a
+/// flight whose air settles it. `options` is the readout's precision.
 pub(crate) fn settle(
     mut rows: Vec<Pending>,
     parks: &[&Fence],
     options: &FlightOptions,
-    clearings: &mut [Clearing],
+    cleared: &mut [bool],
 ) {
     let cheap = Purpose::Verdict.flight_options();
-    let mut done: Vec<bool> = vec![false; rows.len() * parks.len()];
+    // The parks each row's own flight settled, read against it already.
+    let mut done: Vec<bool> = (rows.iter())
+        .flat_map(|row| row.settled_at.iter().copied())
+        .collect();
     // How many of each row's flights each park has been read against: a
     // flight that could not settle a park cannot the next round either.
-    let mut tried: Vec<u8> = vec![0; rows.len() * parks.len()];
+    let mut tried: Vec<u8> = vec![1; rows.len() * parks.len()];
     for round_number in 0.. {
         let last = round_number == REFERENCE_ROUNDS;
         let mut round: Vec<(usize, usize)> = Vec::new();
@@ -159,7 +165,7 @@ pub(crate) fn settle(
                 let by = by.or_else(|| between(row, park, fence));
                 match by {
                     Some(judged) => {
-                        clearings[row.from + park] = judged;
+                        cleared[row.from + park] = judged.clears();
                         done[park] = true;
                     }
                     None if last => round.push((index, park)),
@@ -196,12 +202,14 @@ pub(crate) fn settle(
                 let fence = parks[slot % parks.len()];
                 let launched = (rows[round[index].0].launch_direction, summary);
                 if settled(&judged, launched, fence, (0.0, VERDICT_SLACK)) {
-                    clearings[slot] = judged;
+                    cleared[slot] = judged.clears();
                 } else {
                     unsure.push((slot, flight));
                 }
             });
-            fly_alone(&unsure, parks, options, clearings);
+            fly_alone(&unsure, parks, options, |slot, judged| {
+                cleared[slot] = judged.clears();
+            });
             return;
         }
         let fences: Vec<Vec<&Fence>> = (open.iter())
@@ -232,15 +240,15 @@ pub(crate) fn settle(
 
 /// Flies each `(slot, flight)` to its park's fence alone (the slot's place
 /// among a row's parks, which start at a multiple of their number) and
-/// judges it there, into `clearings[slot]`.
+/// judges it there: `set(slot, judged)`.
 pub(crate) fn fly_alone(
     flights: &[(usize, SceneFlight)],
     parks: &[&Fence],
     options: &FlightOptions,
-    clearings: &mut [Clearing],
+    mut set: impl FnMut(usize, Clearing),
 ) {
     fly_each(flights, parks, options, |index, judged, _| {
-        clearings[flights[index].0] = judged;
+        set(flights[index].0, judged);
     });
 }
 
@@ -405,20 +413,25 @@ pub(crate) fn short_everywhere(
     flight.landed && flight.range.abs() * (1.0 + RANGE_PER_DENSITY * change) < nearest_wall
 }
 
-/// Whether a row's own flight (launched toward `launch_direction`, in air
-/// of density `own`, judged at each of `parks` as `judged`) settles every
-/// park in its air (`airs`, one a park): as [`settle`]'s first round would
-/// find, before a row is handed to it.
+/// Which parks a row's own flight (launched toward `launch_direction`, in
+/// air of density `own`, judged at each of `parks` as `judged`) settles in
+/// their air (`airs`, one a park), into `settled_at`: as [`settle`]'s first
+/// round would find, before a row is handed to it. True where it settles
+/// them all.
 pub(crate) fn own_flight_settles(
     (launch_direction, flight): (f64, &FlightSummary),
     (own, airs): (f64, &[Air]),
-    parks: &[&Fence],
-    judged: &[Clearing],
+    (parks, judged): (&[&Fence], &[Clearing]),
+    settled_at: &mut Vec<bool>,
 ) -> bool {
-    (parks.iter().zip(airs).zip(judged)).all(|((fence, air), home)| {
-        let change = density_change(own, air.density);
-        settled(home, (launch_direction, flight), fence, (change, 0.0))
-    })
+    settled_at.clear();
+    settled_at.extend(
+        (parks.iter().zip(airs).zip(judged)).map(|((fence, air), home)| {
+            let change = density_change(own, air.density);
+            settled(home, (launch_direction, flight), fence, (change, 0.0))
+        }),
+    );
+    settled_at.iter().all(|&s| s)
 }
 
 /// The relative change in density from `own` to `there` (kg/m³).
