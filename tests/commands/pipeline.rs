@@ -328,8 +328,8 @@ fn calibrate_fits_the_other_rows_and_exits_1_when_a_row_failed() {
     let no_date = sample().replacen("\"2019-07-24\"", "\"2019-02-30\"", 1);
     let date_named =
         "line 2: game_date = \"2019-02-30\": expected a date, YYYY-MM-DD or M/D/YYYY; skipped";
-    let no_season = sample().replacen("\"fly_ball\",2019,", "\"fly_ball\",2019.0,", 1);
-    let season_named = "line 2: --by: date \"2019.0\" is neither YYYY-MM-DD nor M/D/YYYY";
+    let no_season = sample().replacen("\"fly_ball\",2019,", "\"fly_ball\",2019.5,", 1);
+    let season_named = "line 2: game_year = \"2019.5\": expected a whole year from 1800 to 2200";
     let modes: [(&[&str], &str, &str); 6] = [
         (&[], &no_date, date_named),
         (&["--drag-only", "--json"], &no_date, date_named),

@@ -100,13 +100,23 @@ impl By {
             By::Month => date(cell)
                 .map(|(y, m)| format!("{y}-{m:02}"))
                 .ok_or_else(unreadable),
-            By::Season if cell.len() == 4 => cell
-                .parse::<u32>()
-                .map(|y| y.to_string())
-                .map_err(|_| unreadable()),
-            By::Season => date(cell)
-                .map(|(y, _)| y.to_string())
-                .ok_or_else(unreadable),
+            // A year as the rows read `game_year`, `2019` or pandas'
+            // `2019.0` (a column with a gap is written as floats).
+            By::Season => match cell.parse::<f64>() {
+                Ok(year) if year.fract() == 0.0 && (1800.0..=2200.0).contains(&year) => {
+                    Ok(format!("{year:.0}"))
+                }
+                Ok(_) => Err(format!(
+                    "--by season: {:?} is no year (a whole number from 1800 to 2200)",
+                    preset::cut(cell, 40)
+                )),
+                Err(_) => date(cell).map(|(y, _)| y.to_string()).ok_or_else(|| {
+                    format!(
+                        "--by season: {:?} is neither a year nor a date (YYYY-MM-DD, M/D/YYYY)",
+                        preset::cut(cell, 40)
+                    )
+                }),
+            },
         }
     }
 }
@@ -326,6 +336,16 @@ mod tests {
         assert_eq!(By::Month.group("5/3/2022 12:00").unwrap(), "2022-05");
         assert_eq!(By::Season.group("2025").unwrap(), "2025");
         assert_eq!(By::Season.group("4/30/2024").unwrap(), "2024");
+        // A season written by pandas as a float; not a fraction of one.
+        assert_eq!(By::Season.group("2019.0").unwrap(), "2019");
+        assert!(By::Season.group("2019.5").unwrap_err().contains("no year"));
+        assert!(By::Season.group("0000").is_err());
+        assert!(
+            By::Season
+                .group("soon")
+                .unwrap_err()
+                .contains("neither a year nor a date")
+        );
         // Yakkertech's two-digit year; three digits are no year.
         assert_eq!(By::Month.group("10/1/20").unwrap(), "2020-10");
         assert!(By::Month.group("10/1/202").is_err());

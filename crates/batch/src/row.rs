@@ -535,9 +535,11 @@ impl SavantCells {
             SavantColumn::GameType => self.game_type = GameType::of(value)?,
             SavantColumn::Season => {
                 let year = number()?;
-                if !(1800.0..=2200.0).contains(&year) {
+                // `2019.0` (pandas writes a column with a gap as floats),
+                // not a fraction of a season.
+                if !(1800.0..=2200.0).contains(&year) || year.fract() != 0.0 {
                     return Err(format!(
-                        "game_year = {:?}: expected a year from 1800 to 2200",
+                        "game_year = {:?}: expected a whole year from 1800 to 2200",
                         cut(value, 80)
                     ));
                 }
