@@ -100,13 +100,10 @@ impl By {
             By::Month => date(cell)
                 .map(|(y, m)| format!("{y}-{m:02}"))
                 .ok_or_else(unreadable),
-            // A year as the rows read `game_year`, `2019` or pandas'
-            // `2019.0` (a column with a gap is written as floats).
-            By::Season => match cell.parse::<f64>() {
-                Ok(year) if year.fract() == 0.0 && (1800.0..=2200.0).contains(&year) => {
-                    Ok(format!("{year:.0}"))
-                }
-                Ok(_) => Err(format!(
+            // A year as the rows read `game_year` ([`crate::dates::season`]).
+            By::Season => match cell.parse::<f64>().map(crate::dates::season) {
+                Ok(Some(year)) => Ok(year.to_string()),
+                Ok(None) => Err(format!(
                     "--by season: {:?} is no year (a whole number from 1800 to 2200)",
                     preset::cut(cell, 40)
                 )),

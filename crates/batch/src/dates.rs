@@ -35,6 +35,13 @@ pub(crate) fn day(cell: &str) -> Option<Day> {
     Day::new(i32::try_from(year).ok()?, month, day)
 }
 
+/// A season's year as a number: a whole year from 1800 to 2200, `2019.0`
+/// included (pandas writes an integer column with a gap as floats), not a
+/// fraction of one. `game_year` in a row and `calibrate --by season`.
+pub(crate) fn season(year: f64) -> Option<i32> {
+    ((1800.0..=2200.0).contains(&year) && year.fract() == 0.0).then_some(year as i32)
+}
+
 /// The year and month of `cell` ([`day`]).
 pub(crate) fn year_month(cell: &str) -> Option<(u32, u32)> {
     day(cell).map(|d| (d.year().unsigned_abs(), d.month()))

@@ -534,16 +534,13 @@ impl SavantCells {
             SavantColumn::HomeTeam => self.park = setup.park_of(value),
             SavantColumn::GameType => self.game_type = GameType::of(value)?,
             SavantColumn::Season => {
-                let year = number()?;
-                // `2019.0` (pandas writes a column with a gap as floats),
-                // not a fraction of a season.
-                if !(1800.0..=2200.0).contains(&year) || year.fract() != 0.0 {
-                    return Err(format!(
+                let year = crate::dates::season(number()?).ok_or_else(|| {
+                    format!(
                         "game_year = {:?}: expected a whole year from 1800 to 2200",
                         cut(value, 80)
-                    ));
-                }
-                self.season = Some(year.floor() as i32);
+                    )
+                })?;
+                self.season = Some(year);
             }
             SavantColumn::Date => {
                 self.day = Some(crate::dates::day(value).ok_or_else(|| {

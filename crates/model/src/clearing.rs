@@ -14,7 +14,7 @@ use serde::Serialize;
 use super::flight::{self, FlightOptions, FlightSummary};
 use super::frame;
 use super::launch::SceneFlight;
-use super::park::{FOUL_LINE, Fence, FenceAt};
+use super::park::{Fence, FenceAt, fair};
 use numerics::ode::Step;
 use numerics::real::Real;
 use numerics::roots::find_root_newton_from;
@@ -181,10 +181,13 @@ impl Clearing {
             return Clearing::judge_landed(fence, crossing, flight, landing);
         }
         let direction = landing.direction;
-        // As `Fence::at` finds the lines: no wall outside them (or at NaN).
-        let fair = (-FOUL_LINE..=FOUL_LINE).contains(&direction);
+        // Where `Fence::at` finds no wall: outside the lines (or at NaN).
         Clearing {
-            outcome: if fair { Outcome::Short } else { Outcome::Foul },
+            outcome: if fair(direction) {
+                Outcome::Short
+            } else {
+                Outcome::Foul
+            },
             margin: None,
             direction,
             wall: None,

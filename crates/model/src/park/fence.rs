@@ -7,6 +7,12 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// The foul lines' directions: ±π/4 from the centre-field line.
 pub const FOUL_LINE: f64 = FRAC_PI_4;
 
+/// Whether `direction` (rad from the centre-field line) lies between the
+/// foul lines, on them included; not NaN.
+pub fn fair(direction: f64) -> bool {
+    (-FOUL_LINE..=FOUL_LINE).contains(&direction)
+}
+
 /// One point of a fence.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct FencePoint {
@@ -347,7 +353,7 @@ impl Fence {
     /// right field), or `None` outside the foul lines (foul) or for NaN.
     /// A binary search and one interpolation: no allocation.
     pub fn at(&self, direction: f64) -> Option<FenceAt> {
-        if !(-FOUL_LINE..=FOUL_LINE).contains(&direction) {
+        if !fair(direction) {
             return None;
         }
         let (a, b) = self.segment(direction);

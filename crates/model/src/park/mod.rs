@@ -15,7 +15,7 @@ use std::sync::LazyLock;
 use parse::BundledEntry;
 
 pub use air::GivenWeather;
-pub use fence::{FOUL_LINE, Fence, FenceAt, FenceError, FencePoint};
+pub use fence::{FOUL_LINE, Fence, FenceAt, FenceError, FencePoint, fair};
 pub use home::{AtHome, Day, HOME_FORMS, HomeSpan, Played, at_home, spans_text};
 pub use neutral::{NeutralSite, neutral_site, neutral_sites};
 pub use parse::{ParkError, parse};
