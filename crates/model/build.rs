@@ -10,6 +10,35 @@
 
 use std::fmt::Write as _;
 
+/// A number of the file, written as a float or an integer.
+fn number(value: &toml::Value) -> f64 {
+    value
+        .as_float()
+        .or_else(|| value.as_integer().map(|i| i as f64))
+        .expect("a number")
+}
+
+/// A list of strings (`aliases`, `home`, `walls`), as Rust's `&[..]` items.
+fn strings_of(table: &toml::Table, key: &str) -> String {
+    let items = table.get(key).and_then(|a| a.as_array());
+    let quoted = (items.into_iter().flatten()).map(|s| format!("{:?}", s.as_str().expect(key)));
+    quoted.collect::<Vec<_>>().join(", ")
+}
+
+/// A table's `fence`, as `[direction, distance, height], ` items.
+fn write_fence(out: &mut String, table: &toml::Table) {
+    for point in table["fence"].as_array().expect("fence points") {
+        let p = point.as_table().expect("a fence point");
+        let _ = write!(
+            out,
+            "[{:?}, {:?}, {:?}], ",
+            number(&p["direction"]),
+            number(&p["distance"]),
+            number(&p["height"])
+        );
+    }
+}
+
 fn main() {
     let source = "../../data/parks.toml";
     println!("cargo::rerun-if-changed={source}");
@@ -21,21 +50,7 @@ fn main() {
     for park in parks {
         let park = park.as_table().expect("a [[park]] table");
         let text = |key: &str| format!("{:?}", park[key].as_str().expect(key));
-        let number = |value: &toml::Value| -> f64 {
-            value
-                .as_float()
-                .or_else(|| value.as_integer().map(|i| i as f64))
-                .expect("a number")
-        };
-        // A list of strings (`aliases`, `home`, `walls`), as Rust's `&[..]` items.
-        let strings = |key: &str| -> String {
-            let items = park.get(key).and_then(|a| a.as_array());
-            let quoted = items
-                .into_iter()
-                .flatten()
-                .map(|s| format!("{:?}", s.as_str().expect(key)));
-            quoted.collect::<Vec<_>>().join(", ")
-        };
+        let strings = |key: &str| strings_of(park, key);
         let published = match park.get("published").and_then(|p| p.as_table()) {
             Some(p) => format!(
                 "Some([{:?}, {:?}, {:?}])",
@@ -56,21 +71,25 @@ fn main() {
             number(&park["elevation"]),
             number(&park["center_field_bearing"]),
         );
-        for point in park["fence"].as_array().expect("fence points") {
-            let p = point.as_table().expect("a fence point");
-            let _ = write!(
-                out,
-                "[{:?}, {:?}, {:?}], ",
-                number(&p["direction"]),
-                number(&p["distance"]),
-                number(&p["height"])
-            );
-        }
+        write_fence(&mut out, park);
         let walls = match park.get("walls") {
             Some(_) => format!("Some(&[{}])", strings("walls")),
             None => "None".to_owned(),
         };
-        let _ = writeln!(out, "], home: &[{}], walls: {walls} }},", strings("home"));
+        let _ = write!(
+            out,
+            "], home: &[{}], walls: {walls}, earlier: &[",
+            strings("home")
+        );
+        // `[[park.earlier]]`: each one's walls and fence.
+        let earlier = park.get("earlier").and_then(|e| e.as_array());
+        for walls in earlier.into_iter().flatten() {
+            let walls = walls.as_table().expect("a [[park.earlier]] table");
+            let _ = write!(out, "(&[{}], &[", strings_of(walls, "walls"));
+            write_fence(&mut out, walls);
+            out.push_str("]), ");
+        }
+        let _ = writeln!(out, "] }},");
     }
     out.push(']');
     let path =

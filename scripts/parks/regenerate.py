@@ -199,6 +199,48 @@ def park_points(profile, stretches):
     return points
 
 
+def walls_line(walls):
+    return "walls = [" + ", ".join(f'"{w}"' for w in walls.split("|")) + "]"
+
+
+def fence_lines(points):
+    out = ["fence = ["]
+    for d, r, h in points:
+        out.append(
+            f"  {{ direction = {math.radians(d):.5f}, distance = {r * FOOT:.3f}, "
+            f"height = {h * FOOT:.3f} }},  # {d:6.1f}°  {r:5.1f} ft  {h:4.1f} ft"
+        )
+    return out + ["]", ""]
+
+
+def reaches(profile, side, distance):
+    """The direction (°) where the outline's fence first reaches `distance`
+    walking from the `side`'s foul pole toward centre (C: centre itself)."""
+    if side == "C":
+        return 0.0
+    walk = [(d, r) for d, r in profile if d <= 0] if side == "L" else \
+        [(d, r) for d, r in reversed(profile) if d >= 0]
+    for (d0, r0), (d1, r1) in zip(walk, walk[1:]):
+        if (r0 - distance) * (r1 - distance) <= 0:
+            return d0 if r1 == r0 else d0 + (d1 - d0) * (distance - r0) / (r1 - r0)
+    raise ValueError((side, distance))
+
+
+def rebuild(profile, rebuilt):
+    """The outline's fence scaled to a rebuilt wall's published distances
+    (rebuilt.csv), and its heights: (profile, stretches)."""
+    marks = sorted((reaches(profile, r["side"], float(r["old_ft"])),
+                    float(r["new_ft"]), float(r["height_ft"])) for r in rebuilt)
+    assert marks[0][0] == -POLE and marks[-1][0] == POLE, marks
+    factor = [(d, new / at(profile, d)) for d, new, _ in marks]
+    scaled = [(d, r * at(factor, d)) for d, r in profile]
+    # Each published point a vertex, so that it is met exactly.
+    scaled = sorted({d: r for d, r in scaled + [(d, new) for d, new, _ in marks]}.items())
+    cuts = [-POLE] + [(a[0] + b[0]) / 2 for a, b in zip(marks, marks[1:])] + [POLE]
+    stretches = [(a, b, h) for a, b, (_, _, h) in zip(cuts, cuts[1:], marks)]
+    return scaled, stretches
+
+
 def main():
     check = "--check" in sys.argv
     paths = outlines()
@@ -272,6 +314,14 @@ def main():
             for (_, b, _), (a, _, _) in zip(stretches, stretches[1:]):
                 assert abs(a - b) < 1e-9, (team, a, b)
         points = park_points(profile, stretches)
+        # 7. Walls rebuilt since the outline: those are the park's fence,
+        # the outline's its earlier walls.
+        earlier = []
+        rebuilt = [r for r in rows("rebuilt.csv") if r["code"] == p["code"]]
+        if rebuilt:
+            earlier = [(p["walls"], points)]
+            profile, stretches = rebuild(profile, rebuilt)
+            points = park_points(profile, stretches)
         errors = [got - want for got, want in zip(raw, (pub["lf"], pub["cf"], pub["rf"]))]
         report.append((p["code"], errors, max(h for *_, h in points)))
 
@@ -290,17 +340,12 @@ def main():
             + f" }}  # {p['lf']}, {p['cf']}, {p['rf']} ft",
             "home = [" + ", ".join(f'"{h}"' for h in p["home"].split("|") if h) + "]",
         ]
-        if p["walls"]:  # else the home spans (docs/parks.md, When the walls stood)
-            out.append("walls = [" + ", ".join(f'"{w}"' for w in p["walls"].split("|")) + "]")
-        out += [
-            "fence = [",
-        ]
-        for d, r, h in points:
-            out.append(
-                f"  {{ direction = {math.radians(d):.5f}, distance = {r * FOOT:.3f}, "
-                f"height = {h * FOOT:.3f} }},  # {d:6.1f}°  {r:5.1f} ft  {h:4.1f} ft"
-            )
-        out += ["]", ""]
+        walls = rebuilt[0]["walls"] if rebuilt else p["walls"]
+        if walls:  # else the home spans (docs/parks.md, When the walls stood)
+            out.append(walls_line(walls))
+        out += fence_lines(points)
+        for walls, points in earlier:
+            out += ["[[park.earlier]]", walls_line(walls)] + fence_lines(points)
 
     text = "\n".join(out)
     print(f"scale {scale:.4f} ft/unit (nominal {NOMINAL_SCALE}, ratio "

@@ -8,7 +8,7 @@ use serde_json::{Value, json};
 use super::shown::Shown;
 use super::table::{Align, Cell, Column, Digits, Table, Width};
 use super::{UsageError, pretty};
-use crate::model::park::{FOUL_LINE, FencePoint, Named, Park};
+use crate::model::park::{FOUL_LINE, Fence, FencePoint, Named, Park};
 use crate::preset::parks::Parks;
 use crate::preset::{escape_cut, escape_for_terminal, shown as shown_path};
 use crate::units::Quantity;
@@ -112,9 +112,13 @@ pub(super) fn profile(park: &Park, json: bool, shown: Shown) -> String {
         );
     }
     if !park.walls.is_empty() && park.walls != park.home {
+        let otherwise = match park.earlier.is_empty() {
+            true => "is at no park",
+            false => "is judged at its walls then, below, or else at no park",
+        };
         let _ = writeln!(
             out,
-            "its walls as given stood {} (a batch row at {} dated otherwise is at no park)",
+            "its walls as given stood {} (a batch row at {} dated otherwise {otherwise})",
             model::park::spans_text(&park.walls),
             escape_for_terminal(&park.code),
         );
@@ -145,25 +149,36 @@ pub(super) fn profile(park: &Park, json: bool, shown: Shown) -> String {
         )
         .after("  "),
     ];
-    let rows = profile_points(park)
-        .into_iter()
-        .map(|p| {
-            vec![
-                Cell::Num(p.direction.to_degrees()),
-                Cell::Num(shown.convert(Quantity::Distance, p.distance)),
-                Cell::Num(shown.convert(Quantity::Distance, p.height)),
-            ]
-        })
-        .collect();
+    let table = |fence: &Fence| {
+        let rows = (profile_points(fence).into_iter())
+            .map(|p| {
+                vec![
+                    Cell::Num(p.direction.to_degrees()),
+                    Cell::Num(shown.convert(Quantity::Distance, p.distance)),
+                    Cell::Num(shown.convert(Quantity::Distance, p.height)),
+                ]
+            })
+            .collect();
+        let columns = columns.clone();
+        Table { columns, rows }.text()
+    };
     out.push('\n');
-    out += &Table { columns, rows }.text();
+    out += &table(&park.fence);
+    for earlier in &park.earlier {
+        let _ = writeln!(
+            out,
+            "\nits walls {} (a batch row at {} then is judged at them):\n",
+            model::park::spans_text(&earlier.walls),
+            escape_for_terminal(&park.code),
+        );
+        out += &table(&earlier.fence);
+    }
     out
 }
 
 /// The fence every 5° from the left-field line to the right-field line,
 /// and both sides of each change of height.
-fn profile_points(park: &Park) -> Vec<FencePoint> {
-    let fence = &park.fence;
+fn profile_points(fence: &Fence) -> Vec<FencePoint> {
     let n = 90 / STEP_DEGREES;
     let mut points: Vec<FencePoint> = (0..=n)
         .map(|k| {
@@ -190,8 +205,9 @@ fn profile_points(park: &Park) -> Vec<FencePoint> {
 /// A park in JSON, SI: `code`, `aliases`, `name`, `elevation` (m),
 /// `center_field_bearing` (° from true north), `published` (m, or null),
 /// `home` (its spans as a park file writes them, "1998..2024"), `walls`
-/// (when its fence stood, the same way) and `fence`, its points as
-/// `{direction (rad), distance (m), height (m)}`.
+/// (when its fence stood, the same way), `fence`, its points as
+/// `{direction (rad), distance (m), height (m)}`, and `earlier`, its other
+/// walls: `{walls, fence}` each.
 pub(super) fn park_json(park: &Park) -> Value {
     json!({
         "code": park.code,
@@ -203,6 +219,10 @@ pub(super) fn park_json(park: &Park) -> Value {
         "home": park.home.iter().map(model::park::HomeSpan::as_written).collect::<Vec<_>>(),
         "walls": park.walls.iter().map(model::park::HomeSpan::as_written).collect::<Vec<_>>(),
         "fence": park.fence.points(),
+        "earlier": (park.earlier.iter()).map(|earlier| json!({
+            "walls": earlier.walls.iter().map(model::park::HomeSpan::as_written).collect::<Vec<_>>(),
+            "fence": earlier.fence.points(),
+        })).collect::<Vec<_>>(),
     })
 }
 

@@ -457,7 +457,7 @@ fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
         );
     }
     assert_eq!(header.len(), 21 + 2 * 30);
-    let (mut rows, mut away) = (0, 0);
+    let (mut rows, mut away, mut earlier) = (0, 0, 0);
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();
         assert_eq!(cells.len(), header.len(), "{line}");
@@ -478,11 +478,17 @@ fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
             rows += 1;
             continue;
         }
+        rows += 1;
+        // Toronto's 14 rows met its walls of 2019, bundled as its earlier
+        // ones; `--all-parks` judges its walls as bundled (2023 on).
+        if park == "TOR" {
+            earlier += 1;
+            continue;
+        }
         assert_eq!(cells[at(&format!("{park}_outcome"))], cells[at("outcome")]);
         assert_eq!(cells[at(&format!("{park}_margin"))], cells[at("margin")]);
-        rows += 1;
     }
-    assert_eq!((rows, away), (248, 40));
+    assert_eq!((rows, away, earlier), (248, 40, 14));
     // Imperial: the margins in feet, named so.
     let imperial = run(&["fly", "--units", "imperial", "--all-parks", "--batch", file]);
     let header = imperial.lines().next().unwrap();

@@ -87,6 +87,7 @@ pub(crate) fn fly_chunk(
         }
     }
     let own = |job: &Job| match job.park {
+        Some(index) if job.earlier.is_some() => setup.parks.parks[index].fence_of(job.earlier),
         Some(index) => setup.fences[index],
         None => {
             &generic

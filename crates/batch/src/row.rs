@@ -35,6 +35,9 @@ pub(crate) struct Job {
     pub(crate) fence: Fence,
     /// The index of the row's park, if it is at one.
     pub(crate) park: Option<usize>,
+    /// The park's earlier walls it met ([`model::park::Park::earlier_on`]), if not its
+    /// fence as given.
+    pub(crate) earlier: Option<usize>,
     /// Its `home_team`, where no park answers to it (a college or summer
     /// league's team in a Trackman file): the row is at no park, and the
     /// summary names the code, where the row was refused before.
@@ -163,6 +166,7 @@ pub(crate) fn parse_row(
         launch: RowLaunch::default(),
         fence: setup.base.fence.unwrap_or(Fence::generic()),
         park: None,
+        earlier: None,
         unknown_park: None,
         away: None,
         season: None,
@@ -318,10 +322,10 @@ fn read_cells(
         scene,
         header.contact_height_given || setup.gave(CONTACT_HEIGHT),
     );
-    let (park, away) = match (setup.park, savant.park) {
-        (Some(park), _) => (Some(park), None),
+    let ((park, earlier), away) = match (setup.park, savant.park) {
+        (Some(park), _) => ((Some(park), None), None),
         (None, Some(park)) => savant.at_home(park, setup),
-        (None, None) => (None, None),
+        (None, None) => ((None, None), None),
     };
     if let Some(index) = park {
         given.park_air(&mut scene.environment, setup.parks.parks[index].elevation);
@@ -378,7 +382,7 @@ fn read_cells(
         estimate_backspin: !spin_given,
         estimate_sidespin: !spin_given && !sidespin_given,
     };
-    job.park = park;
+    (job.park, job.earlier) = (park, earlier);
     (job.away, job.season) = (away, savant.season());
     job.contact = contact;
     job.called = savant.called;
@@ -388,6 +392,10 @@ fn read_cells(
     (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);
     Ok(())
 }
+
+/// Where a row is judged: its park's index and the park's earlier walls it
+/// met (none: the fence as given), and why it is at no park or counted.
+type Judged = ((Option<usize>, Option<usize>), Option<Away>);
 
 /// Statcast's first season: a row without a date at a park that was home,
 /// with its walls as given, from then on is surely judged where and as it
@@ -559,12 +567,13 @@ impl SavantCells {
         self.season.or(self.day.map(Day::year))
     }
 
-    /// Where a row at `park` (its `home_team`'s) is judged: there, unless
-    /// the park was not its team's home when the row was played, or its
-    /// walls then were not the ones given (then at no park, and why); a
-    /// row without a date at a park that was not always home, or not
-    /// always so walled, is judged there, and counted.
-    fn at_home(&self, park: usize, setup: &Setup) -> (Option<usize>, Option<Away>) {
+    /// Where a row at `park` (its `home_team`'s) is judged: there (at the
+    /// earlier walls it met, where they were not the fence as given),
+    /// unless the park was not its team's home when the row was played,
+    /// or its walls then are not known (then at no park, and why); a row
+    /// without a date at a park that was not always home, or not always so
+    /// walled, is judged there, and counted.
+    fn at_home(&self, park: usize, setup: &Setup) -> Judged {
         let played = match (self.day, self.season) {
             (Some(day), _) => Played::On(day),
             (None, Some(year)) => Played::In(year),
@@ -577,7 +586,7 @@ impl SavantCells {
             air_elevation: None,
         };
         if let Some(game_type) = self.game_type {
-            return (None, Some(away(AwayWhy::NotAtHome(game_type))));
+            return ((None, None), Some(away(AwayWhy::NotAtHome(game_type))));
         }
         let at = &setup.parks.parks[park];
         let neutral = self.day.and_then(|day| neutral_site(day, at));
@@ -586,25 +595,29 @@ impl SavantCells {
                 air_elevation: Some(site.elevation),
                 ..away(AwayWhy::Neutral(&site.venue))
             };
-            return (None, Some(at_site));
+            return ((None, None), Some(at_site));
         }
         // Played there, but at other walls: in the park's air, no fence.
         let walled = |why| Away {
             air_elevation: Some(at.elevation),
             ..away(why)
         };
+        let none = (None, None);
         match (at.home_on(played), at.walls_on(played)) {
-            (AtHome::No, _) => (None, Some(away(AwayWhy::NotHome))),
-            (AtHome::Unsure, _) => (None, Some(away(AwayWhy::Unsure))),
+            (AtHome::No, _) => (none, Some(away(AwayWhy::NotHome))),
+            (AtHome::Unsure, _) => (none, Some(away(AwayWhy::Unsure))),
             (AtHome::Undated, _) | (_, AtHome::Undated) if at.as_given_since(STATCAST) => {
-                (Some(park), None)
+                ((Some(park), None), None)
             }
             (AtHome::Undated, _) | (_, AtHome::Undated) => {
-                (Some(park), Some(away(AwayWhy::Undated)))
+                ((Some(park), None), Some(away(AwayWhy::Undated)))
             }
-            (AtHome::Yes, AtHome::Yes) => (Some(park), None),
-            (AtHome::Yes, AtHome::No) => (None, Some(walled(AwayWhy::WallsNotThen))),
-            (AtHome::Yes, AtHome::Unsure) => (None, Some(walled(AwayWhy::WallsUnsure))),
+            (AtHome::Yes, AtHome::Yes) => ((Some(park), None), None),
+            (AtHome::Yes, _) if let Some(earlier) = at.earlier_on(played) => {
+                ((Some(park), Some(earlier)), None)
+            }
+            (AtHome::Yes, AtHome::No) => (none, Some(walled(AwayWhy::WallsNotThen))),
+            (AtHome::Yes, AtHome::Unsure) => (none, Some(walled(AwayWhy::WallsUnsure))),
         }
     }
 

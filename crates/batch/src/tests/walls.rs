@@ -1,7 +1,9 @@
 //! A row at its home_team's park is judged at the park's walls only on the
 //! days they stood ([`model::park::Park::walls_on`]): a 2019 or a 2025 row
 //! at Camden Yards met another left-field wall than the 2022–2024 one
-//! bundled, and is at no park, flown in Camden Yards' air, and named.
+//! bundled, and is at no park, flown in Camden Yards' air, and named. A
+//! park that bundles its earlier walls too (Toronto's before 2023) judges
+//! a row of their days at them.
 
 use model::park::HomeSpan;
 
@@ -55,11 +57,9 @@ fn a_row_played_before_or_after_its_parks_walls_is_at_no_park_in_its_air() {
         ("BAL", "", "2019", "none"),
         // No date: judged as bundled, and counted.
         ("BAL", "", "", "BAL"),
-        // Houston's centre field from 2017, Toronto's walls to 2022.
+        // Houston's centre field from 2017.
         ("HOU", "2016-09-28", "", "none"),
         ("HOU", "2017-04-03", "", "HOU"),
-        ("TOR", "2022-09-01", "", "TOR"),
-        ("TOR", "2024-04-12", "", "none"),
         // A park whose walls never changed.
         ("BOS", "2016-06-01", "", "BOS"),
     ];
@@ -73,17 +73,16 @@ fn a_row_played_before_or_after_its_parks_walls_is_at_no_park_in_its_air() {
     // Camden Yards in 2019 and in 2023 carries alike.
     let (before, during) = (judged.ranges[0], judged.ranges[2]);
     assert_eq!(before, during);
-    let at_toronto = judged.ranges[11];
-    assert_eq!(at_toronto, judged.ranges[10]);
+    let in_houston = judged.ranges[8];
+    assert_eq!(in_houston, judged.ranges[9]);
     let err = &judged.err;
     assert!(
         err.contains(
-            "6 rows played at home_team's park when its walls were not those given, at no \
+            "5 rows played at home_team's park when its walls were not those given, at no \
              park, in its air: BAL 2019 (2 rows), BAL 2021 (1 row), BAL 2025 (1 row), \
-             HOU 2016 (1 row), TOR 2024 (1 row) (BAL's Oriole Park at Camden Yards was home \
-             1992 on, its walls as given 2022–2024; HOU's Daikin Park was home 2000 on, its \
-             walls as given 2017 on; TOR's Rogers Centre was home 1989-06-05–2019, \
-             2021-07-30 on, its walls as given 1989–2022"
+             HOU 2016 (1 row) (BAL's Oriole Park at Camden Yards was home 1992 on, its walls \
+             as given 2022–2024; HOU's Daikin Park was home 2000 on, its walls as given 2017 \
+             on"
         ),
         "{err}"
     );
@@ -140,4 +139,66 @@ fn a_season_the_walls_stood_for_part_of_is_at_no_park_without_a_date() {
         "{}",
         judged.err
     );
+}
+
+#[test]
+fn a_row_of_a_parks_earlier_walls_is_judged_at_them() {
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
+    let setup = Setup::new(&preset, &parks);
+    // Toronto's walls: rebuilt for 2023, the outline's before. The same
+    // ball to the right-centre power alley, where the wall came in 11 ft
+    // (383 to 372) and went up 9 in.
+    let rows = [
+        ("2019-06-01", ""),
+        ("", "2022"),
+        ("2023-04-11", ""),
+        ("", "2024"),
+        ("2020-08-11", ""),
+    ];
+    let mut input = String::from(
+        "launch_speed,launch_angle,launch.direction,launch.sidespin,home_team,game_date,game_year\n",
+    );
+    for (date, year) in rows {
+        input += &format!("96,27,0.35,0,TOR,{date},{year}\n");
+    }
+    let shown = Shown::default();
+    let (out, err, outcome, _) = run_tallied(&setup, &input, false, shown);
+    assert_eq!(outcome.failed, 0, "{err}");
+    let judged = |out: &str| -> Vec<(String, String, String)> {
+        let mut lines = out.lines();
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+        let (park, verdict, margin) = (column("park"), column("outcome"), column("margin"));
+        (lines.map(|l| l.split(',').collect::<Vec<_>>()))
+            .map(|c| {
+                (
+                    c[park].to_owned(),
+                    c[verdict].to_owned(),
+                    c[margin].to_owned(),
+                )
+            })
+            .collect()
+    };
+    let rows = judged(&out);
+    let parks: Vec<&str> = rows.iter().map(|r| r.0.as_str()).collect();
+    // 2020: the Blue Jays played in Buffalo.
+    assert_eq!(parks, ["TOR", "TOR", "TOR", "TOR", "none"], "{err}");
+    assert_eq!(rows[0], rows[1]);
+    assert_eq!(rows[2], rows[3]);
+    // Off the old wall, over the new one.
+    let verdicts = (rows[0].1.as_str(), rows[2].1.as_str());
+    assert_eq!(verdicts, ("off the wall", "clears"));
+    // Each as a park of those walls alone, always standing, judges it.
+    let mut old_walls = preset::parks::all(None).unwrap();
+    let toronto = old_walls
+        .parks
+        .iter_mut()
+        .find(|p| p.code == "TOR")
+        .unwrap();
+    toronto.fence = toronto.earlier.remove(0).fence;
+    toronto.walls = Vec::new();
+    let setup = Setup::new(&preset, &old_walls);
+    let (out, err, _, _) = run_tallied(&setup, &input, false, shown);
+    assert_eq!(judged(&out)[3], rows[0], "{err}");
 }

@@ -44,6 +44,17 @@ pub struct Park {
     /// another day met other walls. A park file without `walls` gives its
     /// `home` spans.
     pub walls: Vec<HomeSpan>,
+    /// Other walls that stood there, each with when (a park rebuilt since:
+    /// Toronto's before 2023): a row played there then is judged at them.
+    pub earlier: Vec<EarlierWalls>,
+}
+
+/// Walls a park had on other days than its fence as given.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EarlierWalls {
+    /// When they stood.
+    pub walls: Vec<HomeSpan>,
+    pub fence: Fence,
 }
 
 /// A park's published distances (m): to the foul poles and to straightaway
@@ -173,6 +184,18 @@ impl Park {
         at_home(&self.walls, played)
     }
 
+    /// The earlier walls (their index in `earlier`) that surely stood
+    /// when a row was `played` there, where its fence as given did not.
+    pub fn earlier_on(&self, played: Played) -> Option<usize> {
+        (self.earlier.iter()).position(|earlier| at_home(&earlier.walls, played) == AtHome::Yes)
+    }
+
+    /// Its fence, or the earlier walls `earlier` (an index from
+    /// [`Self::earlier_on`]).
+    pub fn fence_of(&self, earlier: Option<usize>) -> &Fence {
+        earlier.map_or(&self.fence, |k| &self.earlier[k].fence)
+    }
+
     /// Whether it has been home, with its walls as given, every day from
     /// the first of `year` on: a row without a date is surely judged
     /// where and as it was played.
@@ -225,6 +248,7 @@ mod tests {
             fence: Fence::uniform(120.0, 3.0),
             home: vec![],
             walls: vec![],
+            earlier: vec![],
         }
     }
 
@@ -258,9 +282,38 @@ mod tests {
         assert_eq!(walls("BAL", played(2025, 3, 31)), AtHome::No);
         assert_eq!(walls("BAL", Played::In(2023)), AtHome::Yes);
         assert_eq!(walls("BAL", Played::Unknown), AtHome::Undated);
-        // Toronto's outline and walls are from before the 2023 renovation.
-        assert_eq!(walls("TOR", played(2022, 9, 1)), AtHome::Yes);
-        assert_eq!(walls("TOR", played(2023, 4, 11)), AtHome::No);
+        // Toronto's walls rebuilt for 2023; its outline's before, bundled
+        // as its earlier walls.
+        assert_eq!(walls("TOR", played(2022, 9, 1)), AtHome::No);
+        assert_eq!(walls("TOR", played(2023, 4, 11)), AtHome::Yes);
+        let toronto = find(bundled(), "TOR").unwrap();
+        assert_eq!(toronto.earlier_on(played(2022, 9, 1)), Some(0));
+        assert_eq!(toronto.earlier_on(Played::In(2019)), Some(0));
+        assert_eq!(toronto.earlier_on(played(2023, 4, 11)), None);
+        assert_eq!(toronto.earlier_on(Played::Unknown), None);
+        assert_eq!(spans_text(&toronto.earlier[0].walls), "1989–2022");
+        // The same park, a new wall: in 16 ft at right-centre (375 to 359
+        // ft, at the direction the old wall was 375), the poles and
+        // centre field where they were.
+        let ft = |m: f64| m / 0.3048;
+        let right_centre = 24.6f64.to_radians();
+        let old = ft(toronto.earlier[0].fence.distance_at(right_centre).unwrap());
+        let new = ft(toronto.fence.distance_at(right_centre).unwrap());
+        assert!(
+            (old - 375.0).abs() < 0.5 && (new - 359.0).abs() < 1.0,
+            "{old} {new}"
+        );
+        for direction in [-FOUL_LINE, 0.0, FOUL_LINE] {
+            let old = toronto.earlier[0].fence.distance_at(direction).unwrap();
+            assert_eq!(toronto.fence.distance_at(direction).unwrap(), old);
+        }
+        // Other parks have none.
+        assert!(
+            bundled()
+                .iter()
+                .filter(|p| p.code != "TOR")
+                .all(|p| p.earlier.is_empty())
+        );
         // Houston's centre field without Tal's Hill, from 2017.
         assert_eq!(walls("HOU", played(2016, 9, 28)), AtHome::No);
         assert_eq!(walls("HOU", played(2017, 4, 3)), AtHome::Yes);

@@ -4,8 +4,8 @@
 use serde::Deserialize;
 
 use super::fence::{Fence, FenceError, FencePoint};
-use super::home::{HOME_FORMS, HomeSpan};
-use super::{Park, ParkDimensions};
+use super::home::{HOME_FORMS, HomeSpan, spans_text};
+use super::{EarlierWalls, Park, ParkDimensions};
 
 /// Why a park file's text is not a list of parks. The message is one line;
 /// the caller names the file.
@@ -24,6 +24,12 @@ pub enum ParkError {
     },
     #[error("park {code}: fence {source}")]
     Fence { code: String, source: FenceError },
+    #[error("park {code}: earlier walls {walls}: fence {source}")]
+    EarlierFence {
+        code: String,
+        walls: String,
+        source: FenceError,
+    },
     #[error("park {code} is given twice (as {first} and {second})")]
     Twice {
         code: String,
@@ -58,6 +64,16 @@ struct Entry {
     /// When its fence stood (absent: its `home`).
     #[serde(default)]
     walls: Option<Vec<String>>,
+    /// `[[park.earlier]]`: other walls and when they stood.
+    #[serde(default)]
+    earlier: Vec<Earlier>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Earlier {
+    walls: Vec<String>,
+    fence: Vec<Point>,
 }
 
 #[derive(Deserialize)]
@@ -90,6 +106,8 @@ pub(super) struct BundledEntry {
     pub home: &'static [&'static str],
     /// `walls`, if the file gives it.
     pub walls: Option<&'static [&'static str]>,
+    /// `earlier`: each one's `walls` and fence.
+    pub earlier: &'static [(&'static [&'static str], &'static [[f64; 3]])],
 }
 
 impl BundledEntry {
@@ -109,20 +127,29 @@ impl BundledEntry {
                     center,
                     right_line,
                 }),
-            fence: self
-                .fence
-                .iter()
-                .map(|&[direction, distance, height]| Point {
-                    direction,
-                    distance,
-                    height,
-                })
-                .collect(),
+            fence: points(self.fence),
             home: self.home.iter().map(|&h| h.to_owned()).collect(),
             walls: (self.walls).map(|spans| spans.iter().map(|&w| w.to_owned()).collect()),
+            earlier: (self.earlier.iter())
+                .map(|(walls, fence)| Earlier {
+                    walls: walls.iter().map(|&w| w.to_owned()).collect(),
+                    fence: points(fence),
+                })
+                .collect(),
         }
         .checked()
     }
+}
+
+/// A bundled fence's points, as a park file's.
+fn points(fence: &[[f64; 3]]) -> Vec<Point> {
+    (fence.iter())
+        .map(|&[direction, distance, height]| Point {
+            direction,
+            distance,
+            height,
+        })
+        .collect()
 }
 
 /// Elevations accepted (m): the Dead Sea's shore to well above any park
@@ -263,19 +290,24 @@ impl Entry {
             Some(texts) => spans("walls", texts)?,
             None => home.clone(),
         };
-        let points = self
-            .fence
-            .into_iter()
-            .map(|p| FencePoint {
-                direction: p.direction,
-                distance: p.distance,
-                height: p.height,
-            })
-            .collect();
-        let fence = Fence::new(points).map_err(|source| ParkError::Fence {
+        let fence = Fence::new(fence_points(self.fence)).map_err(|source| ParkError::Fence {
             code: code.clone(),
             source,
         })?;
+        let mut earlier = Vec::with_capacity(self.earlier.len());
+        for Earlier { walls, fence } in self.earlier {
+            let spans = spans("earlier.walls", &walls)?;
+            let fence =
+                Fence::new(fence_points(fence)).map_err(|source| ParkError::EarlierFence {
+                    code: code.clone(),
+                    walls: spans_text(&spans),
+                    source,
+                })?;
+            earlier.push(EarlierWalls {
+                walls: spans,
+                fence,
+            });
+        }
         Ok(Park {
             code,
             aliases: self
@@ -291,8 +323,19 @@ impl Entry {
             fence,
             home,
             walls,
+            earlier,
         })
     }
+}
+
+fn fence_points(points: Vec<Point>) -> Vec<FencePoint> {
+    (points.into_iter())
+        .map(|p| FencePoint {
+            direction: p.direction,
+            distance: p.distance,
+            height: p.height,
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -358,6 +401,34 @@ fence = [
         assert_eq!(
             parse(&bad).unwrap_err().to_string(),
             format!("park XYZ: walls = \"2026\": {}", super::HOME_FORMS)
+        );
+        // Earlier walls: when they stood, and their fence, checked alike.
+        let earlier = format!(
+            "{}[[park.earlier]]\nwalls = [\"2001..2010\"]\nfence = [\n  {{ direction = -0.7854, \
+             distance = 90, height = 2 }},\n  {{ direction = 0.7854, distance = 90, height = 2 }},\n]\n",
+            ONE.replace("fence =", "walls = [\"2011..\"]\nfence =")
+        );
+        let park = &parse(&earlier).unwrap()[0];
+        assert_eq!(park.earlier[0].walls[0].to_string(), "2001–2010");
+        assert_eq!(park.earlier[0].fence.distance_at(0.0), Some(90.0));
+        assert_eq!(park.fence_of(Some(0)), &park.earlier[0].fence);
+        assert_eq!(park.fence_of(None), &park.fence);
+        let bad = earlier.replace(
+            "distance = 90, height = 2 },\n]",
+            "distance = 0, height = 2 },\n]",
+        );
+        assert_eq!(
+            parse(&bad).unwrap_err().to_string(),
+            "park XYZ: earlier walls 2001–2010: fence point 1: distance = 0: must be a finite \
+             number in (0, 1000] m"
+        );
+        let bad = earlier.replace("\"2001..2010\"", "\"2010..2001\"");
+        assert_eq!(
+            parse(&bad).unwrap_err().to_string(),
+            format!(
+                "park XYZ: earlier.walls = \"2010..2001\": {}",
+                super::HOME_FORMS
+            )
         );
         let bad = ONE.replace("name =", "nmae =");
         let e = parse(&bad).unwrap_err().to_string();
