@@ -52,9 +52,11 @@ def rows(name):
 
 
 def outlines():
-    """{team: {segment: [(x, y), ...]}} in outline units, in file order."""
+    """{team: {segment: [(x, y), ...]}} in outline units, in file order: the
+    outlines of today, and those of walls since rebuilt (their teams named
+    apart, `orioles_2018`)."""
     out = {}
-    for row in rows("mlb_stadia_paths.csv"):
+    for row in rows("mlb_stadia_paths.csv") + rows("mlb_stadia_paths_2018.csv"):
         seg = out.setdefault(row["team"], {}).setdefault(row["segment"], [])
         seg.append((float(row["x"]), float(row["y"])))
     return out
@@ -241,6 +243,37 @@ def rebuild(profile, rebuilt):
     return scaled, stretches
 
 
+def outlined(paths, home, scale, pub, heights):
+    """An outlined park's fence anchored to its published distances `pub`
+    (ft), with `heights` [(from, to, ft)] in the Dinger Machine's angles:
+    (profile, stretches, raw), raw the outline's own LF, CF and RF."""
+    outline = paths["outfield_outer"]
+    profile = wall(outline, home, scale)
+    raw = tuple(at(profile, d) for d in (-POLE, 0.0, POLE))
+    # Straightaway centre as a vertex, so that it is met exactly.
+    profile = sorted(set(profile) | {(0.0, raw[1])})
+    # 4. Anchor: a factor per side, linear in direction.
+    fl, fc, fr = pub["lf"] / raw[0], pub["cf"] / raw[1], pub["rf"] / raw[2]
+    profile = [
+        (d, r * (fc + (fl - fc) * (-d / POLE) if d < 0 else fc + (fr - fc) * (d / POLE)))
+        for d, r in profile
+    ]
+    # 5. Heights: the Dinger Machine's angles back onto the outline.
+    stretches = []
+    for a, b, h in heights:
+        ends = []
+        for e in (a, b):
+            if abs(e) >= 90:
+                ends.append(math.copysign(POLE, e))
+                continue
+            hit = ray_hit(outline, DINGER_ORIGIN, e / DINGER_ANGLE_FACTOR)
+            ends.append(max(-POLE, min(POLE, polar(hit, home, scale)[0])))
+        stretches.append((ends[0], ends[1], h))
+    for (_, b, _), (a, _, _) in zip(stretches, stretches[1:]):
+        assert abs(a - b) < 1e-9, (a, b)
+    return profile, stretches, raw
+
+
 def main():
     check = "--check" in sys.argv
     paths = outlines()
@@ -287,32 +320,8 @@ def main():
             stretches = [(-POLE, POLE, float(pts[0]["height_ft"]))]
             raw = (f(-POLE), f(0.0), f(POLE))
         else:
-            team = p["team"]
-            outline = paths[team]["outfield_outer"]
-            home = homes[team]
-            profile = wall(outline, home, scale)
-            raw = tuple(at(profile, d) for d in (-POLE, 0.0, POLE))
-            # Straightaway centre as a vertex, so that it is met exactly.
-            profile = sorted(set(profile) | {(0.0, raw[1])})
-            # 4. Anchor: a factor per side, linear in direction.
-            fl, fc, fr = pub["lf"] / raw[0], pub["cf"] / raw[1], pub["rf"] / raw[2]
-            profile = [
-                (d, r * (fc + (fl - fc) * (-d / POLE) if d < 0 else fc + (fr - fc) * (d / POLE)))
-                for d, r in profile
-            ]
-            # 5. Heights: the Dinger Machine's angles back onto the outline.
-            stretches = []
-            for a, b, h in heights[team]:
-                ends = []
-                for e in (a, b):
-                    if abs(e) >= 90:
-                        ends.append(math.copysign(POLE, e))
-                        continue
-                    hit = ray_hit(outline, DINGER_ORIGIN, e / DINGER_ANGLE_FACTOR)
-                    ends.append(max(-POLE, min(POLE, polar(hit, home, scale)[0])))
-                stretches.append((ends[0], ends[1], h))
-            for (_, b, _), (a, _, _) in zip(stretches, stretches[1:]):
-                assert abs(a - b) < 1e-9, (team, a, b)
+            profile, stretches, raw = outlined(
+                paths[p["team"]], homes[p["team"]], scale, pub, heights[p["team"]])
         points = park_points(profile, stretches)
         # 7. Walls rebuilt since the outline: those are the park's fence,
         # the outline's its earlier walls.
@@ -322,6 +331,15 @@ def main():
             earlier = [(p["walls"], points)]
             profile, stretches = rebuild(profile, rebuilt)
             points = park_points(profile, stretches)
+        # 8. Earlier walls drawn in an outline of their own, or in the
+        # park's, anchored to their own published distances.
+        for e in (r for r in rows("earlier.csv") if r["code"] == p["code"]):
+            team = e["outline"]
+            home = home_plate(team, paths[team]["foul_lines"])
+            then = {k: float(e[k]) for k in ("lf", "cf", "rf")}
+            profile_then, stretches_then, _ = outlined(
+                paths[team], home, scale, then, heights[e["heights"]])
+            earlier.append((e["walls"], park_points(profile_then, stretches_then)))
         errors = [got - want for got, want in zip(raw, (pub["lf"], pub["cf"], pub["rf"]))]
         report.append((p["code"], errors, max(h for *_, h in points)))
 

@@ -180,13 +180,29 @@ fn one_parks_profile_in_feet_steps_at_the_monster() {
     let camden = String::from_utf8(camden.stdout).unwrap();
     assert!(
         camden.contains(
-            "its walls as given stood 2022–2024 (a batch row at BAL dated otherwise is at no park)"
+            "its walls as given stood 2022–2024 (a batch row at BAL dated otherwise is judged \
+             at its walls then, below, or else at no park)"
         ),
         "{camden}"
     );
+    // Its walls before 2022, in a table of their own: 333 ft at the pole,
+    // 7 ft high (the 2022 wall: 12.5).
+    let walls_then = "its walls 2015–2021 (a batch row at BAL then is judged at them):";
+    let before = camden.split(walls_then).nth(1).expect(&camden);
+    let pole = before
+        .lines()
+        .find(|l| l.trim_start().starts_with("-45.0"))
+        .unwrap();
+    let pole: Vec<&str> = pole.split_whitespace().collect();
+    assert_eq!(pole, ["-45.0", "101.50", "2.13"], "{camden}");
     let json = homerun(none.path(), &["parks", "BAL", "--json"]);
     let json: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     assert_eq!(json["walls"], serde_json::json!(["2022..2024"]));
+    assert_eq!(
+        json["earlier"][0]["walls"],
+        serde_json::json!(["2015..2021"])
+    );
+    assert_eq!(json["earlier"].as_array().unwrap().len(), 1);
     assert!(
         text.contains("direction (°)  distance (ft)  height (ft)"),
         "{text}"
@@ -469,7 +485,7 @@ fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
         // The row's own park's columns are its outcome and margin. The
         // Rangers' 2019 home runs were hit at Globe Life Park, not the
         // bundled Globe Life Field (2020 on), one Angels' in Monterrey, and
-        // 30 at parks whose walls were others in 2019 (BAL, DET, MIA, SF):
+        // none at a park whose walls of 2019 are not bundled:
         // at no park, though `--all-parks` judges them at every park.
         let park = cells[at("park")];
         if park == "none" {
@@ -479,16 +495,18 @@ fn a_batch_with_all_parks_gives_each_parks_outcome_and_margin() {
             continue;
         }
         rows += 1;
-        // Toronto's 14 rows met its walls of 2019, bundled as its earlier
-        // ones; `--all-parks` judges its walls as bundled (2023 on).
-        if park == "TOR" {
+        // The rows at Toronto (14), Camden Yards (15), Comerica Park (4),
+        // Marlins Park (5) and Oracle Park (6) met the walls of 2019,
+        // bundled as earlier ones; `--all-parks` judges the walls as given
+        // (2022 on and the like).
+        if ["TOR", "BAL", "DET", "MIA", "SF"].contains(&park) {
             earlier += 1;
             continue;
         }
         assert_eq!(cells[at(&format!("{park}_outcome"))], cells[at("outcome")]);
         assert_eq!(cells[at(&format!("{park}_margin"))], cells[at("margin")]);
     }
-    assert_eq!((rows, away, earlier), (248, 40, 14));
+    assert_eq!((rows, away, earlier), (248, 10, 44));
     // Imperial: the margins in feet, named so.
     let imperial = run(&["fly", "--units", "imperial", "--all-parks", "--batch", file]);
     let header = imperial.lines().next().unwrap();

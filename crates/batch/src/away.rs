@@ -143,7 +143,8 @@ impl AwayRows {
     }
 
     /// "ATH's Oakland Coliseum was home 1968–2024; BAL's Oriole Park at
-    /// Camden Yards was home 1992 on, its walls as given 2022–2024".
+    /// Camden Yards was home 1992 on, its walls as given 2022–2024, earlier
+    /// walls 2015–2021".
     fn homes(setup: &Setup, parks: &[usize]) -> String {
         let always = |spans: &[HomeSpan]| match spans.is_empty() {
             true => String::from("always"),
@@ -152,10 +153,13 @@ impl AwayRows {
         let homes: Vec<String> = (parks.iter())
             .map(|&i| {
                 let park = &setup.parks.parks[i];
-                let walls = match park.walls == park.home {
+                let mut walls = match park.walls == park.home {
                     true => String::new(),
                     false => format!(", its walls as given {}", always(&park.walls)),
                 };
+                for earlier in &park.earlier {
+                    walls += &format!(", earlier walls {}", spans_text(&earlier.walls));
+                }
                 format!(
                     "{}'s {} was home {}{walls}",
                     park.code,
@@ -230,7 +234,8 @@ impl AwayRows {
                 };
                 json!({ "home_team": park.code, "park": park.name, "season": season,
                     "rows": rows, "judged": judged, "home": spans_text(&park.home),
-                    "walls": spans_text(&park.walls) })
+                    "walls": spans_text(&park.walls),
+                    "earlier_walls": (park.earlier.iter()).map(|e| spans_text(&e.walls)).collect::<Vec<_>>() })
             })
             .collect();
         json!(entries)

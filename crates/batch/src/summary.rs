@@ -9,6 +9,7 @@ use std::fmt::Write as _;
 use analysis::bat_tracking::season_bat;
 
 use analysis::savant::Spray;
+use model::park::spans_text;
 use serde_json::{Value, json};
 use units::Quantity;
 
@@ -133,6 +134,9 @@ impl Tally {
             parts.push(format!("{n} row{} at no park", plural(n)));
         }
         parts.extend(self.away.parts(setup));
+        if let Some(part) = self.earlier_walls_part(setup) {
+            parts.push(part);
+        }
         if self.side_unknown > 0 {
             parts.push(format!(
                 "{} row{} whose batter's side is given as not known (Undefined, Switch) spin-estimated \
@@ -158,6 +162,28 @@ impl Tally {
             ));
         }
         (!parts.is_empty()).then(|| parts.join("; "))
+    }
+
+    /// "44 rows judged at their park's walls of the day, not those given (…): BAL
+    /// 2015–2021 (15 rows), …": where a park's earlier walls stood, so that
+    /// its `<CODE>_outcome` (the walls as given) may differ from `outcome`.
+    fn earlier_walls_part(&self, setup: &Setup) -> Option<String> {
+        let rows: usize = self.at_earlier_walls.values().sum();
+        let named: Vec<String> = (self.at_earlier_walls.iter())
+            .map(|(&(park, walls), &n)| {
+                let park = &setup.parks.parks[park];
+                let walls = spans_text(&park.earlier[walls].walls);
+                format!("{} {walls} ({n} row{})", park.code, plural(n))
+            })
+            .collect();
+        (rows > 0).then(|| {
+            format!(
+                "{rows} row{} judged at their park's walls of the day, not those given \
+                 (--park, --all-parks and parks_cleared judge those): {}",
+                plural(rows),
+                named.join(", ")
+            )
+        })
     }
 
     /// "LIN_POT, Normal Cornbelters, …": the codes no park answers to.
@@ -499,6 +525,14 @@ impl Tally {
         }
         if !self.away.is_empty() {
             value["away_from_home_park"] = self.away.json(setup);
+        }
+        if !self.at_earlier_walls.is_empty() {
+            let entries = (self.at_earlier_walls.iter()).map(|(&(park, walls), rows)| {
+                let park = &setup.parks.parks[park];
+                json!({ "home_team": park.code, "park": park.name, "rows": rows,
+                    "walls": spans_text(&park.earlier[walls].walls) })
+            });
+            value["at_earlier_walls"] = json!(entries.collect::<Vec<_>>());
         }
         if self.home_runs > 0 {
             value["home_runs"] = json!({ "clear": self.home_runs_clear, "of": self.home_runs,

@@ -89,6 +89,8 @@ pub struct Tally {
     /// Rows at each park (by index), and at no park.
     pub(crate) at_park: Vec<usize>,
     pub(crate) at_no_park: usize,
+    /// Rows judged at a park's earlier walls: by park and walls (index).
+    pub(crate) at_earlier_walls: BTreeMap<(usize, usize), usize>,
     /// Of those, the rows whose home_team no park answers to, and the
     /// first few such codes with their rows.
     pub(crate) at_unknown_park: usize,
@@ -164,6 +166,9 @@ impl Tally {
         match job.park {
             Some(index) => self.at_park[index] += 1,
             None => self.at_no_park += 1,
+        }
+        if let Some(walls) = job.park.zip(job.earlier) {
+            *self.at_earlier_walls.entry(walls).or_default() += 1;
         }
         self.side_unknown += usize::from(job.side_unknown);
         if let Some(away) = &job.away {
@@ -289,6 +294,9 @@ impl Tally {
         }
         for (mine, theirs) in self.at_park.iter_mut().zip(&other.at_park) {
             *mine += theirs;
+        }
+        for (&walls, rows) in &other.at_earlier_walls {
+            *self.at_earlier_walls.entry(walls).or_default() += rows;
         }
         for (mine, theirs) in self.outcomes.iter_mut().zip(other.outcomes) {
             *mine += theirs;

@@ -46,15 +46,16 @@ fn a_row_played_before_or_after_its_parks_walls_is_at_no_park_in_its_air() {
     let parks = preset::parks::all(None).unwrap();
     let setup = Setup::new(&preset, &parks);
     let rows = [
-        // Camden Yards: the bundled left field stood 2022–2024.
-        ("BAL", "2019-06-01", "", "none"),
-        ("BAL", "2021-09-30", "", "none"),
+        // Camden Yards: the bundled left field stood 2022–2024, its
+        // earlier walls (bundled too) 2015–2021; before, not known.
+        ("BAL", "2014-06-01", "", "none"),
+        ("BAL", "2021-09-30", "", "BAL"),
         ("BAL", "2022-04-11", "", "BAL"),
         ("BAL", "2024-09-29", "", "BAL"),
         ("BAL", "2025-03-31", "", "none"),
         // The season alone: inside the span, outside it.
         ("BAL", "", "2023", "BAL"),
-        ("BAL", "", "2019", "none"),
+        ("BAL", "", "2014", "none"),
         // No date: judged as bundled, and counted.
         ("BAL", "", "", "BAL"),
         // Houston's centre field from 2017.
@@ -70,7 +71,7 @@ fn a_row_played_before_or_after_its_parks_walls_is_at_no_park_in_its_air() {
         assert_eq!(park == "none", outcome == "no_park", "{park} {outcome}");
     }
     // Flown in the park's own air, not the preset's: the same ball at
-    // Camden Yards in 2019 and in 2023 carries alike.
+    // Camden Yards in 2014 and in 2022 carries alike.
     let (before, during) = (judged.ranges[0], judged.ranges[2]);
     assert_eq!(before, during);
     let in_houston = judged.ranges[8];
@@ -78,11 +79,11 @@ fn a_row_played_before_or_after_its_parks_walls_is_at_no_park_in_its_air() {
     let err = &judged.err;
     assert!(
         err.contains(
-            "5 rows played at home_team's park when its walls were not those given, at no \
-             park, in its air: BAL 2019 (2 rows), BAL 2021 (1 row), BAL 2025 (1 row), \
-             HOU 2016 (1 row) (BAL's Oriole Park at Camden Yards was home 1992 on, its walls \
-             as given 2022–2024; HOU's Daikin Park was home 2000 on, its walls as given 2017 \
-             on"
+            "4 rows played at home_team's park when its walls were not those given, at no \
+             park, in its air: BAL 2014 (2 rows), BAL 2025 (1 row), HOU 2016 (1 row) (BAL's \
+             Oriole Park at Camden Yards was home 1992 on, its walls as given 2022–2024, \
+             earlier walls 2015–2021; HOU's Daikin Park was home 2000 on, its walls as given \
+             2017 on"
         ),
         "{err}"
     );
@@ -90,17 +91,18 @@ fn a_row_played_before_or_after_its_parks_walls_is_at_no_park_in_its_air() {
         err.contains(
             "1 row without a date (game_date, game_year) judged at a park that was not always \
              home, or not always so walled: BAL (1 row) (BAL's Oriole Park at Camden Yards was \
-             home 1992 on, its walls as given 2022–2024)"
+             home 1992 on, its walls as given 2022–2024, earlier walls 2015–2021)"
         ),
         "{err}"
     );
     let entries = judged.json["away_from_home_park"].as_array().unwrap();
-    let bal_2019 = (entries.iter())
-        .find(|e| e["home_team"] == "BAL" && e["season"] == 2019)
+    let bal_2014 = (entries.iter())
+        .find(|e| e["home_team"] == "BAL" && e["season"] == 2014)
         .unwrap();
-    assert_eq!(bal_2019["rows"], 2);
-    assert_eq!(bal_2019["judged"], "no_park: other walls then");
-    assert_eq!(bal_2019["walls"], "2022–2024");
+    assert_eq!(bal_2014["rows"], 2);
+    assert_eq!(bal_2014["judged"], "no_park: other walls then");
+    assert_eq!(bal_2014["walls"], "2022–2024");
+    assert_eq!(bal_2014["earlier_walls"], serde_json::json!(["2015–2021"]));
 
     // `--park` asks "would it be out there today": every date at the park
     // as bundled.
@@ -163,8 +165,19 @@ fn a_row_of_a_parks_earlier_walls_is_judged_at_them() {
         input += &format!("96,27,0.35,0,TOR,{date},{year}\n");
     }
     let shown = Shown::default();
-    let (out, err, outcome, _) = run_tallied(&setup, &input, false, shown);
+    let (out, err, outcome, tally) = run_tallied(&setup, &input, false, shown);
     assert_eq!(outcome.failed, 0, "{err}");
+    // Said, for a park's own column is at the walls as given.
+    assert!(
+        err.contains(
+            "2 rows judged at their park's walls of the day, not those given (--park, \
+             --all-parks and parks_cleared judge those): TOR 1989–2022 (2 rows)"
+        ),
+        "{err}"
+    );
+    let json = tally.json(&setup, shown);
+    assert_eq!(json["at_earlier_walls"][0]["rows"], 2);
+    assert_eq!(json["at_earlier_walls"][0]["walls"], "1989–2022");
     let judged = |out: &str| -> Vec<(String, String, String)> {
         let mut lines = out.lines();
         let header: Vec<&str> = lines.next().unwrap().split(',').collect();

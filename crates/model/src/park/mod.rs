@@ -307,13 +307,21 @@ mod tests {
             let old = toronto.earlier[0].fence.distance_at(direction).unwrap();
             assert_eq!(toronto.fence.distance_at(direction).unwrap(), old);
         }
-        // Other parks have none.
-        assert!(
-            bundled()
-                .iter()
-                .filter(|p| p.code != "TOR")
-                .all(|p| p.earlier.is_empty())
-        );
+        // Camden Yards before its 2022 wall, Comerica Park before 2023 and
+        // Oracle Park before 2020, from 2015; Marlins Park 2016–2019; no
+        // other park has any.
+        let earlier_on = |code: &str, when| find(bundled(), code).unwrap().earlier_on(when);
+        assert_eq!(earlier_on("BAL", played(2019, 6, 1)), Some(0));
+        assert_eq!(earlier_on("BAL", played(2014, 6, 1)), None);
+        assert_eq!(earlier_on("DET", Played::In(2022)), Some(0));
+        assert_eq!(earlier_on("SF", played(2020, 7, 24)), None);
+        assert_eq!(earlier_on("MIA", played(2015, 7, 24)), None);
+        assert_eq!(earlier_on("MIA", Played::In(2016)), Some(0));
+        let with_earlier: Vec<&str> = (bundled().iter())
+            .filter(|p| !p.earlier.is_empty())
+            .map(|p| p.code.as_str())
+            .collect();
+        assert_eq!(with_earlier, ["BAL", "DET", "MIA", "SF", "TOR"]);
         // Houston's centre field without Tal's Hill, from 2017.
         assert_eq!(walls("HOU", played(2016, 9, 28)), AtHome::No);
         assert_eq!(walls("HOU", played(2017, 4, 3)), AtHome::Yes);
