@@ -168,6 +168,15 @@ impl HomeSpan {
         self.from.is_none_or(|from| from <= day) && self.to.is_none_or(|to| day <= to)
     }
 
+    /// Whether it and `other` share a day.
+    pub fn overlaps(&self, other: &HomeSpan) -> bool {
+        let starts_by_end = |a: &HomeSpan, b: &HomeSpan| match (a.from, b.to) {
+            (Some(from), Some(to)) => from <= to,
+            _ => true,
+        };
+        starts_by_end(self, other) && starts_by_end(other, self)
+    }
+
     /// Whether it covers the whole of `year`, and whether any of it.
     fn covers(&self, year: i32) -> (bool, bool) {
         let whole = self.contains(Day::first_of(year)) && self.contains(Day::last_of(year));

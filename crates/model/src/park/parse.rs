@@ -294,9 +294,44 @@ impl Entry {
             code: code.clone(),
             source,
         })?;
-        let mut earlier = Vec::with_capacity(self.earlier.len());
-        for Earlier { walls, fence } in self.earlier {
-            let spans = spans("earlier.walls", &walls)?;
+        let mut earlier: Vec<EarlierWalls> = Vec::with_capacity(self.earlier.len());
+        // No spans: every day.
+        let every_day = [HomeSpan {
+            from: None,
+            to: None,
+        }];
+        let days = |spans: &[HomeSpan]| -> Vec<HomeSpan> {
+            match spans.is_empty() {
+                true => every_day.to_vec(),
+                false => spans.to_vec(),
+            }
+        };
+        for Earlier {
+            walls: texts,
+            fence,
+        } in self.earlier
+        {
+            let spans = spans("earlier.walls", &texts)?;
+            if spans.is_empty() {
+                let expected = "one or more spans: the days those walls stood";
+                return Err(field("earlier.walls", "[]".to_owned(), expected));
+            }
+            // A day has one set of walls: earlier ones on the days of the
+            // fence as given would never be met.
+            let taken = (days(&walls).into_iter())
+                .chain(earlier.iter().flat_map(|e| days(&e.walls)))
+                .collect::<Vec<_>>();
+            if let Some(text) = (spans.iter().zip(&texts))
+                .find(|(span, _)| taken.iter().any(|t| t.overlaps(span)))
+                .map(|(_, text)| text)
+            {
+                return Err(field(
+                    "earlier.walls",
+                    format!("{text:?}"),
+                    "days no other walls of the park stood: outside its `walls` (its `home` \
+                     years where `walls` is not given) and each other earlier walls'",
+                ));
+            }
             let fence =
                 Fence::new(fence_points(fence)).map_err(|source| ParkError::EarlierFence {
                     code: code.clone(),
@@ -421,6 +456,34 @@ fence = [
             parse(&bad).unwrap_err().to_string(),
             "park XYZ: earlier walls 2001–2010: fence point 1: distance = 0: must be a finite \
              number in (0, 1000] m"
+        );
+        // Earlier walls on a day of the walls as given, or of other
+        // earlier ones, or without a day, are refused.
+        let overlap = "park XYZ: earlier.walls = \"2005..2011\": days no other walls of the park \
+                       stood: outside its `walls` (its `home` years where `walls` is not given) \
+                       and each other earlier walls'";
+        let bad = earlier.replace("\"2001..2010\"", "\"2005..2011\"");
+        assert_eq!(parse(&bad).unwrap_err().to_string(), overlap);
+        let block = &earlier[earlier.find("[[park.earlier]]").unwrap()..];
+        let twice = format!("{earlier}{}", block.replace("2001..2010", "2009..2010"));
+        let e = parse(&twice).unwrap_err().to_string();
+        assert!(
+            e.starts_with("park XYZ: earlier.walls = \"2009..2010\": days no"),
+            "{e}"
+        );
+        let apart = format!("{earlier}{}", block.replace("2001..2010", "1995..2000"));
+        assert_eq!(parse(&apart).unwrap()[0].earlier.len(), 2);
+        let no_walls = earlier.replace("walls = [\"2011..\"]\n", "");
+        assert!(
+            parse(&no_walls)
+                .unwrap_err()
+                .to_string()
+                .contains("\"2001..2010\": days no")
+        );
+        let no_days = earlier.replace("[\"2001..2010\"]", "[]");
+        assert_eq!(
+            parse(&no_days).unwrap_err().to_string(),
+            "park XYZ: earlier.walls = []: one or more spans: the days those walls stood"
         );
         let bad = earlier.replace("\"2001..2010\"", "\"2010..2001\"");
         assert_eq!(
