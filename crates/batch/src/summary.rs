@@ -236,6 +236,10 @@ impl Tally {
     fn outcome_line(&self, setup: &Setup, shown: Shown) -> String {
         let [clear, wall, short, foul] = self.outcomes;
         let skipped = self.failed + self.without_speed;
+        if self.answered == 0 {
+            // Nothing was judged anywhere: no park to name.
+            return format!("summary: flown 0 rows, skipped {skipped}");
+        }
         let mut line = format!(
             "summary: flown {} row{}, skipped {skipped}; {}: {clear} clear, {wall} off the wall, \
              {short} short, {foul} foul",

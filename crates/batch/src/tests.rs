@@ -512,6 +512,19 @@ fn hostile_cells_fail_in_line_order_between_rows_that_fly() {
     assert_eq!(outcome.failed, failed.len());
 }
 
+#[test]
+fn a_batch_where_every_row_fails_names_no_park() {
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
+    let setup = Setup::new(&preset, &parks);
+    let input = "launch_speed,launch_angle\nabc,20\n";
+    let (_, err, outcome) = run(&setup, input, false, Shown::default());
+    assert_eq!(outcome.failed, 1);
+    // Nothing was judged: neither "each row's park" nor a count of verdicts.
+    let line = err.lines().find(|l| l.contains("summary: flown")).unwrap();
+    assert_eq!(line, "homerun: summary: flown 0 rows, skipped 1", "{err}");
+}
+
 /// Each output line of a batch without its line number, by line: (CSV,
 /// JSON).
 fn outputs(setup: &Setup, input: &str) -> Vec<(usize, String, String)> {
