@@ -239,7 +239,12 @@ def rebuild(profile, rebuilt):
     # Each published point a vertex, so that it is met exactly.
     scaled = sorted({d: r for d, r in scaled + [(d, new) for d, new, _ in marks]}.items())
     cuts = [-POLE] + [(a[0] + b[0]) / 2 for a, b in zip(marks, marks[1:])] + [POLE]
-    stretches = [(a, b, h) for a, b, (_, _, h) in zip(cuts, cuts[1:], marks)]
+    stretches = []
+    for a, b, (_, _, h) in zip(cuts, cuts[1:], marks):
+        if stretches and stretches[-1][2] == h:  # no step where the height holds
+            stretches[-1] = (stretches[-1][0], b, h)
+        else:
+            stretches.append((a, b, h))
     return scaled, stretches
 
 

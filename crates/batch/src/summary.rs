@@ -164,7 +164,7 @@ impl Tally {
         (!parts.is_empty()).then(|| parts.join("; "))
     }
 
-    /// "44 rows judged at their park's walls of the day, not those given (…): BAL
+    /// "51 rows judged at their park's walls of the day, not those given (…): BAL
     /// 2015–2021 (15 rows), …": where a park's earlier walls stood, so that
     /// its `<CODE>_outcome` (the walls as given) may differ from `outcome`.
     fn earlier_walls_part(&self, setup: &Setup) -> Option<String> {

@@ -308,8 +308,9 @@ mod tests {
             assert_eq!(toronto.fence.distance_at(direction).unwrap(), old);
         }
         // Camden Yards before its 2022 wall, Comerica Park before 2023 and
-        // Oracle Park before 2020, from 2015; Marlins Park 2016–2019; no
-        // other park has any.
+        // Oracle Park before 2020, from 2015; Marlins Park 2016–2019;
+        // Kauffman Stadium 2004–2025; Rogers Centre 1989–2022; no other
+        // park has any.
         let earlier_on = |code: &str, when| find(bundled(), code).unwrap().earlier_on(when);
         assert_eq!(earlier_on("BAL", played(2019, 6, 1)), Some(0));
         assert_eq!(earlier_on("BAL", played(2014, 6, 1)), None);
@@ -317,15 +318,20 @@ mod tests {
         assert_eq!(earlier_on("SF", played(2020, 7, 24)), None);
         assert_eq!(earlier_on("MIA", played(2015, 7, 24)), None);
         assert_eq!(earlier_on("MIA", Played::In(2016)), Some(0));
+        assert_eq!(earlier_on("KC", Played::In(2025)), Some(0));
+        assert_eq!(earlier_on("KC", Played::In(2003)), None);
         let with_earlier: Vec<&str> = (bundled().iter())
             .filter(|p| !p.earlier.is_empty())
             .map(|p| p.code.as_str())
             .collect();
-        assert_eq!(with_earlier, ["BAL", "DET", "MIA", "SF", "TOR"]);
+        assert_eq!(with_earlier, ["BAL", "DET", "KC", "MIA", "SF", "TOR"]);
         // Houston's centre field without Tal's Hill, from 2017.
         assert_eq!(walls("HOU", played(2016, 9, 28)), AtHome::No);
         assert_eq!(walls("HOU", played(2017, 4, 3)), AtHome::Yes);
-        assert_eq!(walls("KC", Played::In(2026)), AtHome::No);
+        // Kauffman Stadium's walls rebuilt for 2026; those of 2004–2025
+        // its earlier walls.
+        assert_eq!(walls("KC", Played::In(2026)), AtHome::Yes);
+        assert_eq!(walls("KC", Played::In(2025)), AtHome::No);
         // A park with no change known: its walls are its home spans.
         let fenway = find(bundled(), "BOS").unwrap();
         assert_eq!(fenway.walls, fenway.home);
