@@ -295,16 +295,14 @@ impl Entry {
             source,
         })?;
         let mut earlier: Vec<EarlierWalls> = Vec::with_capacity(self.earlier.len());
-        // No spans: every day.
-        let every_day = [HomeSpan {
-            from: None,
-            to: None,
-        }];
-        let days = |spans: &[HomeSpan]| -> Vec<HomeSpan> {
-            match spans.is_empty() {
-                true => every_day.to_vec(),
-                false => spans.to_vec(),
-            }
+        // The days other walls stood: the fence's (no spans: every day),
+        // then each earlier one's as it is read.
+        let mut taken = match walls.is_empty() {
+            true => vec![HomeSpan {
+                from: None,
+                to: None,
+            }],
+            false => walls.clone(),
         };
         for Earlier {
             walls: texts,
@@ -318,9 +316,6 @@ impl Entry {
             }
             // A day has one set of walls: earlier ones on the days of the
             // fence as given would never be met.
-            let taken = (days(&walls).into_iter())
-                .chain(earlier.iter().flat_map(|e| days(&e.walls)))
-                .collect::<Vec<_>>();
             if let Some(text) = (spans.iter().zip(&texts))
                 .find(|(span, _)| taken.iter().any(|t| t.overlaps(span)))
                 .map(|(_, text)| text)
@@ -338,6 +333,7 @@ impl Entry {
                     walls: spans_text(&spans),
                     source,
                 })?;
+            taken.extend_from_slice(&spans);
             earlier.push(EarlierWalls {
                 walls: spans,
                 fence,
