@@ -186,7 +186,7 @@ fn one_parks_profile_in_feet_steps_at_the_monster() {
         "{camden}"
     );
     // Its walls before 2022, in a table of their own: 333 ft at the pole,
-    // 7 ft high (the 2022 wall: 12.5).
+    // 7 ft 4 in high (the 2022 wall: 13 ft).
     let walls_then = "its walls 2015–2021 (a batch row at BAL then is judged at them):";
     let before = camden.split(walls_then).nth(1).expect(&camden);
     let pole = before
@@ -194,7 +194,7 @@ fn one_parks_profile_in_feet_steps_at_the_monster() {
         .find(|l| l.trim_start().starts_with("-45.0"))
         .unwrap();
     let pole: Vec<&str> = pole.split_whitespace().collect();
-    assert_eq!(pole, ["-45.0", "101.50", "2.13"], "{camden}");
+    assert_eq!(pole, ["-45.0", "101.50", "2.23"], "{camden}");
     let json = homerun(none.path(), &["parks", "BAL", "--json"]);
     let json: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     assert_eq!(json["walls"], serde_json::json!(["2022..2024"]));
