@@ -177,10 +177,13 @@ impl Tally {
             })
             .collect();
         (rows > 0).then(|| {
+            let (s, their) = match rows {
+                1 => ("", "its"),
+                _ => ("s", "their"),
+            };
             format!(
-                "{rows} row{} judged at their park's walls of the day, not those given \
+                "{rows} row{s} judged at {their} park's walls of the day, not those given \
                  (--park, --all-parks and parks_cleared judge those): {}",
-                plural(rows),
                 named.join(", ")
             )
         })
