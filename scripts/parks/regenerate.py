@@ -289,8 +289,12 @@ def main():
             (float(row["from"]), float(row["to"]), float(row["height_ft"]))
         )
 
-    homes = {p["team"]: home_plate(p["team"], paths[p["team"]]["foul_lines"])
-             for p in parks if p["team"] != "constructed"}
+    rebuilts = rows("rebuilt.csv")
+    earliers = rows("earlier.csv")
+    # Home plate of every outline used: the parks' and their earlier walls'.
+    teams = {p["team"] for p in parks if p["team"] != "constructed"}
+    homes = {team: home_plate(team, paths[team]["foul_lines"])
+             for team in sorted(teams | {e["outline"] for e in earliers})}
 
     # 2. One scale for all parks.
     ratios = []
@@ -331,19 +335,18 @@ def main():
         # 7. Walls rebuilt since the outline: those are the park's fence,
         # the outline's its earlier walls.
         earlier = []
-        rebuilt = [r for r in rows("rebuilt.csv") if r["code"] == p["code"]]
+        rebuilt = [r for r in rebuilts if r["code"] == p["code"]]
         if rebuilt:
             earlier = [(p["walls"], points)]
             profile, stretches = rebuild(profile, rebuilt)
             points = park_points(profile, stretches)
         # 8. Earlier walls drawn in an outline of their own, or in the
         # park's, anchored to their own published distances.
-        for e in (r for r in rows("earlier.csv") if r["code"] == p["code"]):
+        for e in (r for r in earliers if r["code"] == p["code"]):
             team = e["outline"]
-            home = home_plate(team, paths[team]["foul_lines"])
             then = {k: float(e[k]) for k in ("lf", "cf", "rf")}
             profile_then, stretches_then, _ = outlined(
-                paths[team], home, scale, then, heights[e["heights"]])
+                paths[team], homes[team], scale, then, heights[e["heights"]])
             earlier.append((e["walls"], park_points(profile_then, stretches_then)))
         errors = [got - want for got, want in zip(raw, (pub["lf"], pub["cf"], pub["rf"]))]
         report.append((p["code"], errors, max(h for *_, h in points)))

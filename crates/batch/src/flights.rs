@@ -87,8 +87,8 @@ pub(crate) fn fly_chunk(
         }
     }
     let own = |job: &Job| match job.park {
-        Some(index) if job.earlier.is_some() => setup.parks.parks[index].fence_of(job.earlier),
-        Some(index) => setup.fences[index],
+        // The park's fence (`setup.fences[index]`), or the earlier walls met.
+        Some(index) => setup.parks.parks[index].fence_of(job.earlier),
         None => {
             &generic
                 .iter()

@@ -89,14 +89,14 @@ pub struct Tally {
     /// Rows at each park (by index), and at no park.
     pub(crate) at_park: Vec<usize>,
     pub(crate) at_no_park: usize,
-    /// Rows judged at a park's earlier walls: by park and walls (index).
-    pub(crate) at_earlier_walls: BTreeMap<(usize, usize), usize>,
     /// Of those, the rows whose home_team no park answers to, and the
     /// first few such codes with their rows.
     pub(crate) at_unknown_park: usize,
+    pub(crate) unknown_parks: Vec<(String, usize)>,
     /// Rows whose batter's side was given as not known.
     pub(crate) side_unknown: usize,
-    pub(crate) unknown_parks: Vec<(String, usize)>,
+    /// Rows judged at a park's earlier walls: by park and walls (index).
+    pub(crate) at_earlier_walls: BTreeMap<(usize, usize), usize>,
     /// Rows played where their home_team's park was not home.
     pub(crate) away: AwayRows,
     /// Rows flown from the pitch's height, and those whose `plate_z` was
