@@ -18,6 +18,7 @@ mod hit_batch;
 mod hit_json;
 mod hostile_files;
 mod inf_and_no_terminal;
+mod measured_spin;
 mod optimize_park;
 mod parks;
 mod pictures;

@@ -58,6 +58,10 @@ pub struct RowLaunch {
     pub estimate_backspin: bool,
     /// Estimate the sidespin likewise.
     pub estimate_sidespin: bool,
+    /// The spin's measured size (rad/s; a tracker's total spin rate without
+    /// its axis): the estimate then gives only the axis, its backspin and
+    /// sidespin scaled to this size.
+    pub measured_spin: Option<f64>,
 }
 
 impl RowLaunch {
@@ -156,7 +160,11 @@ fn launch_toward(scene: &mut Scene, row: &RowLaunch, direction: f64) {
     scene.launch.direction = Some(direction);
     if row.estimates_spin() {
         let angle = scene.batted_ball().angle;
-        let (backspin, sidespin) = nathan_spin(angle, direction, row.side);
+        let (mut backspin, mut sidespin) = nathan_spin(angle, direction, row.side);
+        let size = backspin.hypot(sidespin);
+        if let Some(measured) = row.measured_spin.filter(|_| size > 0.0) {
+            (backspin, sidespin) = (backspin * measured / size, sidespin * measured / size);
+        }
         if row.estimate_backspin {
             scene.launch.spin = Some(backspin);
         }
@@ -512,12 +520,20 @@ mod tests {
             direction: 0.0,
             sidespin: 0.0,
         });
-        for (side, bearing) in [(Side::Right, 0.3), (Side::Right, -0.4), (Side::Left, 0.1)] {
+        // The last: a tracker's measured spin rate, the estimate's axis.
+        let cases = [
+            (Side::Right, 0.3, None),
+            (Side::Right, -0.4, None),
+            (Side::Left, 0.1, None),
+            (Side::Right, 0.35, Some(250.0)),
+        ];
+        for (side, bearing, measured_spin) in cases {
             let row = RowLaunch {
                 spray: Some(bearing),
                 side: Some(side),
                 estimate_backspin: true,
                 estimate_sidespin: true,
+                measured_spin,
             };
             let solved = launch(&base, &row, Spray::Landing, &options);
             let ball = solved.scene.batted_ball();
@@ -526,9 +542,17 @@ mod tests {
                 .direction;
             assert!((landing - bearing).abs() < DIRECTION_TOLERANCE, "{landing}");
             assert!(solved.flights <= 5, "{}", solved.flights);
-            // The spin is the estimate's at the launch direction.
+            // The spin is the estimate's at the launch direction; a
+            // measured size keeps the estimate's axis.
             let (back, sidespin) = nathan_spin(0.49, ball.direction, Some(side));
-            assert_eq!((ball.spin, ball.sidespin), (back, sidespin));
+            match measured_spin {
+                None => assert_eq!((ball.spin, ball.sidespin), (back, sidespin)),
+                Some(measured) => {
+                    assert!((ball.spin.hypot(ball.sidespin) - measured).abs() < 1e-9);
+                    assert!((ball.sidespin / ball.spin - sidespin / back).abs() < 1e-12);
+                    assert!(measured < back.hypot(sidespin) - 50.0, "a size of its own");
+                }
+            }
             // A slice (sidespin toward right field) is launched left of
             // where it lands, a hook right of it.
             assert_eq!(ball.direction < bearing, sidespin > 0.0, "{ball:?}");
@@ -583,6 +607,7 @@ mod tests {
                 side: Some(if i % 2 == 0 { Side::Right } else { Side::Left }),
                 estimate_backspin: i % 3 != 0,
                 estimate_sidespin: i % 4 != 0,
+                measured_spin: (i % 5 == 1).then_some(260.0),
             };
             rows.push((scene, row));
         }

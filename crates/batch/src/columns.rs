@@ -83,6 +83,12 @@ pub enum SavantColumn {
     /// Savant's kind of game: spring training, exhibitions and the
     /// All-Star Game are not at the home team's park.
     GameType,
+    /// A tracker's measured spin of the batted ball (rpm, Trackman's
+    /// `HitSpinRate`; 0 where it measured none), and its axis (°, Trackman's
+    /// clock face: 180 is pure backspin, past 180 the ball curves toward
+    /// right field).
+    HitSpinRate,
+    HitSpinAxis,
 }
 
 /// A bat-tracking or pitch-tracking column (read when swings are solved).
@@ -254,6 +260,18 @@ pub const TABLE: &[Entry] = &[
         &["game_year", "season"],
         Savant(S::Season),
         "the season: whether home_team's park was home then, and a tracked swing's bat",
+    ),
+    entry(
+        &["hit_spin_rate"],
+        Savant(S::HitSpinRate),
+        "the ball's measured spin in rpm (Trackman's HitSpinRate; 0 is none measured): with \
+         hit_spin_axis, its backspin and sidespin; alone, the estimate's axis at this size",
+    ),
+    entry(
+        &["hit_spin_axis"],
+        Savant(S::HitSpinAxis),
+        "the measured spin's axis in ° (Trackman's HitSpinAxis: 180 pure backspin, over 180 \
+         curving toward right field)",
     ),
     entry(
         &["game_type"],

@@ -21,6 +21,7 @@ use preset::escape_cut;
 
 mod away;
 pub mod calibrate;
+mod cells;
 pub mod columns;
 mod dates;
 mod flights;
@@ -74,7 +75,7 @@ pub fn fly_rows(
     let mut records = Records::new(input);
     let Some(names) = read_header(&mut records)? else {
         // The header of no rows: a reader of the output still finds columns.
-        let line = output::csv_header(false, setup, format.shown);
+        let line = output::csv_header((false, false), setup, format.shown);
         if !format.json {
             let _ = out.write_all(line.as_bytes()).and_then(|()| out.flush());
         }
@@ -83,13 +84,14 @@ pub fn fly_rows(
     };
     let header = Header::new(names, setup)?;
     let statcast = header.has(columns::SavantColumn::Distance);
+    let spin_measured = header.has(columns::SavantColumn::HitSpinRate);
     let written = |r: io::Result<()>| match r {
         Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(false),
         Err(e) => Err(format!("writing the output: {e}")),
         Ok(()) => Ok(true),
     };
     if !format.json {
-        let line = output::csv_header(statcast, setup, format.shown);
+        let line = output::csv_header((statcast, spin_measured), setup, format.shown);
         if !written(out.write_all(line.as_bytes()))? {
             return Ok((Outcome::default(), Tally::new(setup, Some(&header))));
         }
@@ -99,6 +101,7 @@ pub fn fly_rows(
     let printed = output::Printed {
         shown: format.shown,
         statcast,
+        spin_measured,
         json: format.json,
     };
     let finish = |piece: &mut pieces::Piece<(Vec<u8>, Tally)>| {

@@ -58,10 +58,25 @@ impl Tally {
             parts.push(format!("read {}", self.used.join(", ")));
         }
         let flown = self.answered;
-        if self.estimated > 0 {
+        let [whole, size, zero] = self.spin_measured;
+        if whole + size > 0 {
+            let alone = match size {
+                0 => String::new(),
+                _ => format!(" ({size} of them its size alone, about the estimate's axis)"),
+            };
             parts.push(format!(
-                "spin estimated (Nathan's relation) on {} of {flown} rows",
-                self.estimated
+                "spin measured (hit_spin_rate) on {} of {flown} rows{alone}",
+                whole + size
+            ));
+        }
+        let estimated = self.estimated;
+        if estimated > 0 {
+            let none = match zero {
+                0 => String::new(),
+                _ => format!(" ({zero} whose hit_spin_rate of 0 is none measured)"),
+            };
+            parts.push(format!(
+                "spin estimated (Nathan's relation) on {estimated} of {flown} rows{none}"
             ));
         }
         if self.sprayed > 0 {
@@ -500,6 +515,11 @@ impl Tally {
             },
             "spin_estimated": self.estimated,
         });
+        let [whole, size, zero] = self.spin_measured;
+        if whole + size + zero > 0 {
+            value["spin_measured"] =
+                json!({ "whole": whole, "size_alone": size, "rate_zero": zero });
+        }
         if !self.differences.is_empty() {
             let (median, median_abs) = d(&self.differences);
             value["difference"] = json!({ "rows": self.differences.len(),

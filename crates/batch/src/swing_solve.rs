@@ -89,6 +89,7 @@ pub(crate) fn solve_row(job: &mut Job, spray: Spray, priors: Priors) {
             side: job.launch.side,
             estimate_backspin: false,
             estimate_sidespin: false,
+            measured_spin: None,
         };
     }
     let solved = answer.is_some_and(|a| a.solved.is_ok());

@@ -13,12 +13,13 @@ use model::clearing::Outcome as Verdict;
 use numerics::quantile::Quantiles;
 
 use crate::away::AwayRows;
+use crate::cells::ContactFrom;
 use crate::columns::{Column, SavantColumn};
 use crate::flights::RowFlight;
 use crate::header::Header;
 use crate::kinds::KINDS;
 use crate::pieces::Outcome;
-use crate::row::{ContactFrom, Job};
+use crate::row::{Job, SpinMeasured};
 use crate::setup::Setup;
 
 /// The summary's bands of launch angle: below 10°, then `calibrate`'s
@@ -75,8 +76,12 @@ pub(crate) struct Swings {
 /// The batch's one tally.
 #[derive(Clone, Debug, Default)]
 pub struct Tally {
-    /// Rows flown with an estimated spin.
+    /// Rows flown with an estimated spin ([`Job::spin_estimated`]).
     pub(crate) estimated: usize,
+    /// Rows flown with a tracker's measured spin: whole, its size alone
+    /// (about the estimate's axis); and rows whose rate was 0 (none
+    /// measured), estimated.
+    pub(crate) spin_measured: [usize; 3],
     /// Rows whose direction came from a spray angle; the flights spent
     /// solving them; those whose spray no flight lands on.
     pub(crate) sprayed: usize,
@@ -149,7 +154,13 @@ impl Tally {
 
     /// Counts a row flown.
     pub(crate) fn count(&mut self, job: &Job, flown: &RowFlight) {
-        self.estimated += usize::from(job.launch.estimates_spin());
+        self.estimated += usize::from(job.spin_estimated());
+        match job.spin_measured {
+            SpinMeasured::No => {}
+            SpinMeasured::Whole => self.spin_measured[0] += 1,
+            SpinMeasured::Size => self.spin_measured[1] += 1,
+            SpinMeasured::Zero => self.spin_measured[2] += 1,
+        }
         // A solved swing's direction is the impact's (aimed at the spray).
         if job.swing_solved() {
         } else if job.launch.spray.is_some() {
@@ -290,6 +301,9 @@ impl Tally {
             (&mut self.swings.off_sweet_spot, other.swings.off_sweet_spot),
         ];
         for (mine, theirs) in sums {
+            *mine += theirs;
+        }
+        for (mine, theirs) in self.spin_measured.iter_mut().zip(other.spin_measured) {
             *mine += theirs;
         }
         for (mine, theirs) in self.at_park.iter_mut().zip(&other.at_park) {

@@ -85,6 +85,7 @@ fn landing_launch(
         side: None,
         estimate_backspin: false,
         estimate_sidespin: false,
+        measured_spin: None,
     };
     let launched = savant::launch(&scene, &row, Spray::Landing, options);
     match launched.direction_from {

@@ -41,6 +41,7 @@ fn home_run() -> (Scene, RowLaunch) {
         side: Some(Side::Right),
         estimate_backspin: true,
         estimate_sidespin: true,
+        measured_spin: None,
     };
     (scene, row)
 }

@@ -64,6 +64,10 @@ const OUTPUT_QUANTITIES: [Quantity; 19] = [
     Quantity::Unchanged,
 ];
 
+/// Whether the row flew a tracker's measured spin, when the input has
+/// `hit_spin_rate`: after [`STATCAST_COLUMNS`].
+const SPIN_MEASURED: &str = "spin_measured";
+
 /// Statcast's distance and the model's range less it.
 const STATCAST_COLUMNS: [(&str, Quantity); 2] = [
     ("statcast_distance", Quantity::Distance),
@@ -71,7 +75,11 @@ const STATCAST_COLUMNS: [(&str, Quantity); 2] = [
 ];
 
 /// The CSV header line.
-pub(crate) fn csv_header(statcast: bool, setup: &Setup, shown: Shown) -> String {
+pub(crate) fn csv_header(
+    (statcast, spin_measured): (bool, bool),
+    setup: &Setup,
+    shown: Shown,
+) -> String {
     let swing = swing::CSV_COLUMNS
         .iter()
         .copied()
@@ -88,6 +96,11 @@ pub(crate) fn csv_header(statcast: bool, setup: &Setup, shown: Shown) -> String 
                 .zip(OUTPUT_QUANTITIES[1..].iter().copied()),
         )
         .chain(STATCAST_COLUMNS.into_iter().filter(|_| statcast))
+        .chain(
+            [(SPIN_MEASURED, Quantity::Unchanged)]
+                .into_iter()
+                .filter(|_| spin_measured),
+        )
         .map(|(name, quantity)| shown.csv_key(name, quantity))
         .collect();
     if setup.all_parks {
@@ -139,6 +152,8 @@ pub(crate) struct Printed {
     pub shown: Shown,
     /// The `difference` column (range less Statcast's) is printed.
     pub statcast: bool,
+    /// The input has `hit_spin_rate`: each row says whether it flew it.
+    pub spin_measured: bool,
     pub json: bool,
 }
 
@@ -157,12 +172,13 @@ pub(crate) fn write_row(
     };
     if printed.json {
         let cleared = &scratch.cleared[flown.cleared_from..][..parks];
-        json_line(out, (job, flown), (cleared, judged), setup, printed.shown);
+        json_line(out, (job, flown), (cleared, judged), setup, printed);
     } else {
         let csv = CsvLine {
             setup,
             shown: printed.shown,
             statcast: printed.statcast,
+            spin_measured: printed.spin_measured,
         };
         csv.write(out, job, flown, judged);
     }
@@ -174,6 +190,7 @@ pub(crate) struct CsvLine<'a> {
     pub setup: &'a Setup<'a>,
     pub shown: Shown,
     pub statcast: bool,
+    pub spin_measured: bool,
 }
 
 impl CsvLine<'_> {
@@ -252,7 +269,7 @@ impl CsvLine<'_> {
             out,
             "{},{},{}",
             flown.parks_cleared,
-            job.launch.estimates_spin(),
+            job.spin_estimated(),
             flown.direction_from.name()
         );
         if self.statcast {
@@ -261,6 +278,9 @@ impl CsvLine<'_> {
                 number(out, Quantity::Distance, value, 2);
                 out.pop();
             }
+        }
+        if self.spin_measured {
+            let _ = write!(out, ",{}", job.spin_measured.taken());
         }
         for there in judged {
             let _ = write!(out, ",{},", there.outcome.name());
@@ -309,6 +329,8 @@ struct JsonLine<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     solved: Option<bool>,
     spin_estimated: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    spin_measured: Option<bool>,
     #[serde(skip_serializing_if = "Option::is_none")]
     statcast: Option<StatcastJson>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -375,8 +397,9 @@ fn json_line(
     (job, flown): (&Job, &RowFlight),
     (cleared, judged): (&[bool], &[Clearing]),
     setup: &Setup,
-    shown: Shown,
+    printed: Printed,
 ) {
+    let shown = printed.shown;
     let known = job.fence_known();
     let (launch, flight, fence) = (&flown.launch, &flown.flight, &flown.clearing);
     let swing = swing::json_parts(job);
@@ -434,7 +457,8 @@ fn json_line(
         shortfall: swing.shortfall,
         solved: swing.solved,
         swing: swing.swing,
-        spin_estimated: job.launch.estimates_spin(),
+        spin_estimated: job.spin_estimated(),
+        spin_measured: printed.spin_measured.then(|| job.spin_measured.taken()),
         direction_from: flown.direction_from.name(),
         statcast: job.statcast.map(|distance| StatcastJson {
             difference: flown.difference(job),
