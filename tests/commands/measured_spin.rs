@@ -133,7 +133,7 @@ fn a_measured_spin_is_backspin_and_sidespin_by_its_axis() {
     let rate = 2500.0 * rpm;
     let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * rate;
     let (back, side) = spin(&flown[0]);
-    assert!(close(back, rate) && close(side, 0.0), "{back} {side}");
+    assert!(back == rate && side == 0.0, "{back} {side}");
     let (back, side) = spin(&flown[1]);
     assert!(close(back, 0.0) && close(side, rate), "{back} {side}");
     assert!(flown[1]["flight"]["direction"].as_f64().unwrap() > 0.05);
@@ -203,10 +203,16 @@ fn a_measured_spin_out_of_range_names_its_row() {
     let csv = "ExitSpeed,Angle,HitSpinRate,HitSpinAxis\n\
                100,25,-5,180\n\
                100,25,2500,400\n\
-               100,25,2500,180\n";
+               100,25,2500,180\n\
+               100,25,2500rpm,180\n\
+               100,25,25mph,180\n";
     let (status, out, err) = run_homerun(&["fly", "--batch", "-"], Some(csv));
     assert_eq!(status, Some(1), "{err}");
-    assert_eq!(out.lines().count(), 2, "{out}");
+    // The header and the two rows read (a rate with its unit, as --set
+    // takes one).
+    assert_eq!(out.lines().count(), 3, "{out}");
+    let after_line = |n: usize| out.lines().nth(n).unwrap().split_once(',').unwrap().1;
+    assert_eq!(after_line(1), after_line(2));
     assert!(
         err.contains(
             r#"line 2: hit_spin_rate = "-5": expected 0 (none measured) to 9000 rpm; skipped"#
@@ -215,6 +221,10 @@ fn a_measured_spin_out_of_range_names_its_row() {
     );
     assert!(
         err.contains(r#"line 3: hit_spin_axis = "400": expected 0 to 360°; skipped"#),
+        "{err}"
+    );
+    assert!(
+        err.contains(r#"line 6: hit_spin_rate = "25mph": not a number; skipped"#),
         "{err}"
     );
 }

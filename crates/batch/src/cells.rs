@@ -94,7 +94,8 @@ pub(crate) struct SavantCells {
     /// A `game_type` not played at the home team's park.
     pub game_type: Option<GameType>,
     /// A tracker's measured spin (rad/s; 0 where it measured none) and its
-    /// axis (rad, Trackman's clock face).
+    /// axis's turn (rad) from pure backspin (180° on Trackman's clock face):
+    /// + curves the ball toward right field.
     pub spin_rate: Option<f64>,
     pub spin_axis: Option<f64>,
 }
@@ -159,14 +160,18 @@ impl SavantCells {
             SavantColumn::HomeTeam => self.park = setup.park_of(value),
             SavantColumn::GameType => self.game_type = GameType::of(value)?,
             SavantColumn::HitSpinRate => {
-                let rpm = number()?;
-                if !(0.0..=MAX_SPIN_RPM).contains(&rpm) {
+                // rpm, or with its unit as `--set` takes one (`262rad/s`).
+                let rate = match measure(value, Quantity::Spin, |rpm| Unit::Rpm.to_si(rpm)) {
+                    Some(rate) => rate,
+                    None => Unit::Rpm.to_si(number()?),
+                };
+                if !(0.0..=Unit::Rpm.to_si(MAX_SPIN_RPM)).contains(&rate) {
                     return Err(format!(
                         "hit_spin_rate = {:?}: expected 0 (none measured) to {MAX_SPIN_RPM} rpm",
                         cut(value, 80)
                     ));
                 }
-                self.spin_rate = Some(Unit::Rpm.to_si(rpm));
+                self.spin_rate = Some(rate);
             }
             SavantColumn::HitSpinAxis => {
                 let degrees = number()?;
@@ -176,7 +181,9 @@ impl SavantCells {
                         cut(value, 80)
                     ));
                 }
-                self.spin_axis = Some(degrees.to_radians());
+                // As its turn from pure backspin, so that 180° is exactly
+                // backspin alone.
+                self.spin_axis = Some((degrees - 180.0).to_radians());
             }
             SavantColumn::Season => {
                 let year = crate::dates::season(number()?).ok_or_else(|| {

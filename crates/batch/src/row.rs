@@ -341,10 +341,11 @@ fn read_cells(
         None => SpinMeasured::No,
         Some(0.0) => SpinMeasured::Zero,
         Some(rate) => match savant.spin_axis {
-            Some(axis) => {
-                let (sin, cos) = axis.sin_cos();
-                scene.launch.spin = Some(-cos * rate);
-                scene.launch.sidespin = Some(-sin * rate);
+            Some(turn) => {
+                // −cos(axis) and −sin(axis), from the turn off 180°.
+                let (sin, cos) = turn.sin_cos();
+                scene.launch.spin = Some(cos * rate);
+                scene.launch.sidespin = Some(sin * rate);
                 (spin_given, sidespin_given) = (true, true);
                 SpinMeasured::Whole
             }
