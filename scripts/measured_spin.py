@@ -3,8 +3,9 @@
 
 Prints the table in docs/accuracy.md, "A tracker's measured spin". Each data set
 in ../shared/data is flown twice by the release binary: as it comes (its
-`HitSpinRate` / `HIT_SPIN_RATE`, and Trackman's `HitSpinAxis`, read), and with
-those columns renamed so that the spin is Nathan's estimate. On the rows with a
+`HitSpinRate` / `HIT_SPIN_RATE`, with Trackman's `HitSpinAxis` or Yakkertech's
+`yt_HitSpinComponentX/Y/Z`, read), and with the rate's column renamed so that
+the spin is Nathan's estimate. On the rows with a
 measured spin, in the air (10° and up, landing past 40 m), the medians of
 |model - tracker| for the landing bearing, the distance and the hang time.
 
@@ -22,10 +23,16 @@ import pandas as pd
 BINARY = Path(__file__).resolve().parent.parent / "target" / "release" / "homerun"
 
 SETS = [
-    # file, its spin columns, its bearing column (None: not measured)
-    ("trackman-2024-25-potters-batted-balls.csv", ["HitSpinRate", "HitSpinAxis"], "Bearing"),
-    ("yakkertech-2025-kcl-batted-balls.csv", ["HitSpinRate"], "Bearing"),
-    ("braves-2018-04-batted-balls-hang-time.csv", ["HIT_SPIN_RATE"], None),
+    # file, its bearing column (None: not measured), and each way of flying
+    # it: its label and the columns left unread
+    ("trackman-2024-25-potters-batted-balls.csv", "Bearing",
+     [("Nathan's estimate", ["HitSpinRate"]), ("measured, rate and axis", [])]),
+    ("yakkertech-2025-kcl-batted-balls.csv", "Bearing",
+     [("Nathan's estimate", ["HitSpinRate"]), ("measured rate and axis vector", []),
+      ("the rate alone, Nathan's axis",
+       ["yt_HitSpinComponentX", "yt_HitSpinComponentY", "yt_HitSpinComponentZ"])]),
+    ("braves-2018-04-batted-balls-hang-time.csv", None,
+     [("Nathan's estimate", ["HIT_SPIN_RATE"]), ("measured rate, Nathan's axis", [])]),
 ]
 
 
@@ -39,23 +46,27 @@ def fly(text, keep):
 def main(data):
     print("| data set, rows | spin | landing bearing (°) | distance (m) | hang time (s) |")
     print("|---|---|---|---|---|")
-    for name, spin_columns, bearing in SETS:
+    for name, bearing, ways in SETS:
         text = (Path(data) / name).read_text()
         hang = "HangTime" if "HangTime" in text.splitlines()[0] else "HANG_TIME"
         keep = [hang] + ([bearing] if bearing else [])
-        measured = fly(text, keep)
         header, rest = text.split("\n", 1)
-        for column in spin_columns:
-            header = header.replace(column, column + "Unread")
-        estimated = fly(header + "\n" + rest, keep)
+        flown = []
+        for label, unread in ways:
+            renamed = header
+            for column in unread:
+                renamed = renamed.replace(column, column + "Unread")
+            flown.append((label, fly(renamed + "\n" + rest, keep)))
+        # The rows the whole measured spin flies, in the air.
+        measured = flown[1][1]
         angle = np.degrees(measured["launch.angle"])
         rows = (
             measured["spin_measured"].astype(bool)
             & (angle >= 10)
             & (measured["flight.range"] > 40)
         ).to_numpy()
-        for label, flown in [("Nathan's estimate", estimated), ("measured", measured)]:
-            f = flown[rows]
+        for label, f in flown:
+            f = f[rows]
             cells = []
             if bearing:
                 kept = pd.to_numeric(f[f"kept.{bearing}"], errors="coerce")

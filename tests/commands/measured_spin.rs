@@ -106,6 +106,58 @@ fn a_trackman_ball_flown_with_its_measured_spin_lands_where_trackman_saw_it() {
     assert!(hang < 0.8 * hang_estimated, "{hang} {hang_estimated}");
 }
 
+/// 84 fly balls and line drives of another summer league, each with
+/// Yakkertech's measured spin as a rate and a vector in its frame
+/// (`tests/data/yakkertech_2025_measured_spin.csv`): split about each launch,
+/// its backspin and sidespin fly as Yakkertech's own projection does, to
+/// 0.5° of bearing and 0.02 s of hang time (2.2° and 0.14 s with the
+/// estimate). A frame read wrong (its x and y, or a sign) would miss by
+/// degrees.
+#[test]
+fn a_yakkertech_spin_vector_lands_where_yakkertech_projected_it() {
+    let file = "tests/data/yakkertech_2025_measured_spin.csv";
+    let args = [
+        "fly",
+        "--batch",
+        file,
+        "--json",
+        "--keep",
+        "Bearing,HangTime",
+    ];
+    let (status, out, err) = run_homerun(&args, None);
+    assert_eq!(status, Some(0), "{err}");
+    let measured = rows(&out);
+    assert_eq!(measured.len(), 84);
+    assert!(
+        err.contains("spin measured (hit_spin_rate) on 84 of 84 rows;"),
+        "every row's whole spin: {err}"
+    );
+    let text = std::fs::read_to_string(file).unwrap();
+    let unread = text.replacen("HitSpinRate", "RateUnread", 1);
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--json",
+        "--keep",
+        "Bearing,HangTime",
+    ];
+    let (status, out, err) = run_homerun(&args, Some(&unread));
+    assert_eq!(status, Some(0), "{err}");
+    let (bearing, distance, hang) = errors(&measured);
+    let (bearing_estimated, _, hang_estimated) = errors(&rows(&out));
+    // Measured today: 0.49° and 0.019 s, against 2.20° and 0.143 s.
+    assert!(
+        bearing < 0.8 && bearing_estimated > 1.5,
+        "{bearing} {bearing_estimated}"
+    );
+    assert!(
+        hang < 0.04 && hang_estimated > 0.1,
+        "{hang} {hang_estimated}"
+    );
+    assert!(distance < 2.0, "{distance}");
+}
+
 /// The axis on Trackman's clock face: 180° is pure backspin, 0° topspin,
 /// 270° sidespin that curves the ball toward right field (+z), 90° toward
 /// left. A rate alone keeps the estimate's axis at its own size; a rate of
@@ -227,4 +279,55 @@ fn a_measured_spin_out_of_range_names_its_row() {
         err.contains(r#"line 6: hit_spin_rate = "25mph": not a number; skipped"#),
         "{err}"
     );
+}
+
+/// Yakkertech's vector (x toward right field, y toward centre field, z up)
+/// split about the launch: toward right field is backspin for a ball to
+/// centre, down is sidespin that curves it toward right field, along the
+/// flight is gyrospin, which the flight does not take. Without the row's
+/// own launch direction it cannot be split: its size alone.
+#[test]
+fn a_spin_vector_is_split_about_the_launch() {
+    let rate = 2500.0 * std::f64::consts::PI / 30.0;
+    let csv = "ExitSpeed,Angle,Direction,HitSpinRate,yt_HitSpinComponentX,\
+               yt_HitSpinComponentY,yt_HitSpinComponentZ\n\
+               100,0,0,2500,1,0,0\n\
+               100,0,0,2500,0,0,-1\n\
+               100,0,0,2500,0,1,0\n";
+    let (status, out, err) = run_homerun(&["fly", "--batch", "-", "--json"], Some(csv));
+    assert_eq!(status, Some(0), "{err}");
+    let flown = rows(&out);
+    let spin = |r: &Value| {
+        let launch = &r["launch"];
+        (
+            launch["spin"].as_f64().unwrap(),
+            launch["sidespin"].as_f64().unwrap(),
+        )
+    };
+    assert_eq!(spin(&flown[0]), (rate, 0.0));
+    let (back, side) = spin(&flown[1]);
+    assert!(
+        back.abs() < 1e-12 && (side - rate).abs() < 1e-9,
+        "{back} {side}"
+    );
+    assert!(flown[1]["flight"]["direction"].as_f64().unwrap() > 0.02);
+    let (back, side) = spin(&flown[2]);
+    assert!(
+        back.abs() < 1e-12 && side.abs() < 1e-12,
+        "gyrospin alone: {back} {side}"
+    );
+    // No launch direction of the row's own (the spray is solved): the
+    // rate's size about the estimate's axis.
+    let csv = "launch_speed,launch_angle,hc_x,hc_y,stand,HitSpinRate,yt_HitSpinComponentX,\
+               yt_HitSpinComponentY,yt_HitSpinComponentZ\n\
+               100,25,100,80,R,2500,1,0,0\n";
+    let (status, out, err) = run_homerun(&["fly", "--batch", "-", "--json"], Some(csv));
+    assert_eq!(status, Some(0), "{err}");
+    let row = &rows(&out)[0];
+    let (back, side) = spin(row);
+    assert!(
+        (back.hypot(side) - rate).abs() < 1e-9 && side.abs() > 1.0,
+        "{row}"
+    );
+    assert!(err.contains("(1 of them its size alone"), "{err}");
 }

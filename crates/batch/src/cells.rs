@@ -4,10 +4,12 @@
 //! row is judged.
 
 use analysis::savant::spray_angle;
+use model::frame;
 use model::keys::Key;
 use model::park::{AtHome, Day, Played, neutral_site};
 use model::scene::Scene;
 use model::spin_estimate::Side;
+use nalgebra::Vector3;
 use preset::cut;
 use units::Quantity;
 
@@ -98,6 +100,8 @@ pub(crate) struct SavantCells {
     /// + curves the ball toward right field.
     pub spin_rate: Option<f64>,
     pub spin_axis: Option<f64>,
+    /// Or its direction as a vector (Yakkertech's frame).
+    pub spin_vector: [Option<f64>; 3],
 }
 
 impl SavantCells {
@@ -173,6 +177,7 @@ impl SavantCells {
                 }
                 self.spin_rate = Some(rate);
             }
+            SavantColumn::HitSpinVector(index) => self.spin_vector[index] = Some(number()?),
             SavantColumn::HitSpinAxis => {
                 let degrees = number()?;
                 if !(0.0..=360.0).contains(&degrees) {
@@ -286,6 +291,38 @@ impl SavantCells {
     /// are not the plate's own (which gives no direction).
     pub(crate) fn spray(&self) -> Option<f64> {
         Some(spray_angle(self.hc_x?, self.hc_y?)).filter(|angle| !angle.is_nan())
+    }
+
+    /// A measured spin of `rate` (rad/s) as backspin and sidespin, where
+    /// its axis is measured: on Trackman's clock face (180° pure backspin,
+    /// past 180° curving toward right field: −cos and −sin of the axis), or
+    /// as Yakkertech's vector, split about the launch (`angle`, and the
+    /// row's own `direction`: without one, the vector cannot be split); its
+    /// gyrospin, which the flight does not take (`model::frame::spin_parts`),
+    /// is dropped. `None` where no axis is measured.
+    pub(crate) fn measured_spin(
+        &self,
+        rate: f64,
+        (angle, direction): (Option<f64>, Option<f64>),
+    ) -> Option<(f64, f64)> {
+        if let Some(turn) = self.spin_axis {
+            let (sin, cos) = turn.sin_cos();
+            return Some((cos * rate, sin * rate));
+        }
+        let spin = self.spin_direction()? * rate;
+        let (backspin, sidespin, _gyrospin) = frame::spin_parts(spin, angle?, direction?);
+        Some((backspin, sidespin))
+    }
+
+    /// The measured spin's direction as a unit vector in the flight's frame
+    /// (x toward centre field, y up, z toward right field), from
+    /// Yakkertech's (x toward right field, y toward centre field, z up: the
+    /// same turn of hand), if all three parts are given and not all 0.
+    pub(crate) fn spin_direction(&self) -> Option<Vector3<f64>> {
+        let [Some(x), Some(y), Some(z)] = self.spin_vector else {
+            return None;
+        };
+        Vector3::new(y, z, x).try_normalize(0.0)
     }
 
     /// Whether the hit coordinates are exactly the plate's.

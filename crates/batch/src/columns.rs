@@ -89,6 +89,10 @@ pub enum SavantColumn {
     /// right field).
     HitSpinRate,
     HitSpinAxis,
+    /// The measured spin's direction as a vector, Yakkertech's
+    /// `yt_HitSpinComponentX/Y/Z` by index: x toward right field, y toward
+    /// centre field, z up.
+    HitSpinVector(usize),
 }
 
 /// A bat-tracking or pitch-tracking column (read when swings are solved).
@@ -273,6 +277,15 @@ pub const TABLE: &[Entry] = &[
         "the measured spin's axis in ° (Trackman's HitSpinAxis: 180 pure backspin, over 180 \
          curving toward right field)",
     ),
+    entry(
+        &["yt_HitSpinComponentX"],
+        Savant(S::HitSpinVector(0)),
+        "the measured spin's direction (Yakkertech's, with yt_HitSpinComponentY and Z: x toward \
+         right field, y toward centre field, z up): with hit_spin_rate and the launch's \
+         direction, its backspin and sidespin",
+    ),
+    entry(&["yt_HitSpinComponentY"], Savant(S::HitSpinVector(1)), ""),
+    entry(&["yt_HitSpinComponentZ"], Savant(S::HitSpinVector(2)), ""),
     entry(
         &["game_type"],
         Savant(S::GameType),

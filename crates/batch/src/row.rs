@@ -331,21 +331,27 @@ fn read_cells(
         };
         done?;
     }
+    if let Some(direction) = savant.direction {
+        scene.launch.direction = Some(direction);
+    }
     // A tracker's measured spin, where nothing else gives the spin: whole
-    // with its axis (Trackman's clock face: 180° pure backspin, past 180°
-    // curving toward right field, +z), else its size about the estimate's
-    // axis. A rate of 0 is none measured: the estimate's, counted.
+    // with its axis or vector ([`SavantCells::measured_spin`]), else its
+    // size about the estimate's axis. A rate of 0 is none measured: the
+    // estimate's, counted.
     let mut measured_spin = None;
+    let own_direction = header.direction_given || setup.gave("launch.direction");
+    let launch = (
+        scene.launch.angle,
+        scene.launch.direction.filter(|_| own_direction),
+    );
     job.spin_measured = match savant.spin_rate {
         _ if spin_given || sidespin_given => SpinMeasured::No,
         None => SpinMeasured::No,
         Some(0.0) => SpinMeasured::Zero,
-        Some(rate) => match savant.spin_axis {
-            Some(turn) => {
-                // −cos(axis) and −sin(axis), from the turn off 180°.
-                let (sin, cos) = turn.sin_cos();
-                scene.launch.spin = Some(cos * rate);
-                scene.launch.sidespin = Some(sin * rate);
+        Some(rate) => match savant.measured_spin(rate, launch) {
+            Some((backspin, sidespin)) => {
+                scene.launch.spin = Some(backspin);
+                scene.launch.sidespin = Some(sidespin);
                 (spin_given, sidespin_given) = (true, true);
                 SpinMeasured::Whole
             }
@@ -355,9 +361,6 @@ fn read_cells(
             }
         },
     };
-    if let Some(direction) = savant.direction {
-        scene.launch.direction = Some(direction);
-    }
     let contact = savant.start_at_pitch(
         scene,
         header.contact_height_given || setup.gave(CONTACT_HEIGHT),

@@ -72,6 +72,18 @@ pub fn spin_vector(backspin: f64, sidespin: f64, angle: f64, direction: f64) -> 
     backspin_axis(direction) * backspin + sidespin_axis(angle, direction) * sidespin
 }
 
+/// A spin vector's parts for a launch at `angle` in `direction`: its
+/// backspin, sidespin and gyrospin (about the launch velocity), each the
+/// vector along its axis. The inverse of [`spin_vector`], which has no
+/// gyrospin.
+pub fn spin_parts(spin: Vector3<f64>, angle: f64, direction: f64) -> (f64, f64, f64) {
+    (
+        spin.dot(&backspin_axis(direction)),
+        spin.dot(&sidespin_axis(angle, direction)),
+        spin.dot(&launch_velocity(1.0, angle, direction)),
+    )
+}
+
 /// The wind's velocity (m/s): `speed` blowing toward `direction`.
 pub fn wind_velocity(speed: f64, direction: f64) -> Vector3<f64> {
     horizontal(direction) * speed
@@ -125,6 +137,20 @@ mod tests {
             assert!(b.cross(&v).y > 0.0);
             let right = Vector3::new(-direction.sin(), 0.0, direction.cos());
             assert!((s.cross(&v) - right).norm() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn a_spin_vector_splits_back_into_its_parts() {
+        for (angle, direction) in [(0.0, 0.0), (0.5, 0.3), (-0.2, -0.7), (1.2, 1.0)] {
+            let spin = spin_vector(180.0, -70.0, angle, direction);
+            let (back, side, gyro) = spin_parts(spin, angle, direction);
+            assert!((back - 180.0).abs() < 1e-12 && (side + 70.0).abs() < 1e-12);
+            assert!(gyro.abs() < 1e-12);
+            // Spin about the velocity is gyrospin alone.
+            let along = launch_velocity(25.0, angle, direction);
+            let (back, side, gyro) = spin_parts(along, angle, direction);
+            assert!(back.abs() < 1e-12 && side.abs() < 1e-12 && (gyro - 25.0).abs() < 1e-12);
         }
     }
 
