@@ -117,8 +117,13 @@ pub fn fly_rows(
         }
     };
     let take = |piece: &mut pieces::Piece<(Vec<u8>, Tally)>| {
-        tally.add(&piece.made.1);
-        written(out.write_all(&piece.made.0).and_then(|()| out.flush()))
+        // A piece the reader did not take (`| head`) is not counted: the
+        // summary is of the rows written.
+        let wrote = written(out.write_all(&piece.made.0).and_then(|()| out.flush()))?;
+        if wrote {
+            tally.add(&piece.made.1);
+        }
+        Ok(wrote)
     };
     let outcome = pieces::stream(
         (setup, &header),

@@ -1,15 +1,16 @@
-//! The one path every batch command takes. The input is read a round at a
-//! time (whole records, back to back in one buffer); each round is cut
-//! into pieces of at most [`PIECE_ROWS`] records, and every piece is
-//! parsed, solved, flown and finished (written, measured) on the thread
-//! pool, while the next round is read. Only reading records and taking
-//! the pieces, in order, stay serial: memory stays flat however long the
-//! input.
+//! The one path every batch command takes. The input is read a piece at
+//! a time (at most [`PIECE_ROWS`] whole records, back to back in the
+//! piece's own buffer), and each piece is parsed, solved, flown and
+//! finished (written, measured) on the thread pool as soon as it is read,
+//! while the reading goes on; the pieces are taken, in order, as they
+//! come back. Only reading records and taking the pieces stay serial, and
+//! no thread waits for another's last piece: memory stays flat however
+//! long the input (a bounded number of pieces in flight).
 
+use std::collections::BTreeMap;
 use std::io::BufRead;
 use std::ops::Range;
-
-use rayon::prelude::*;
+use std::sync::mpsc;
 
 use crate::flights::{RowFlight, Scratch, fly_chunk};
 use crate::header::Header;
@@ -19,22 +20,23 @@ use crate::row::{Job, Row, parse_row};
 use crate::setup::Setup;
 use crate::swing_solve::solve_row;
 
-/// Records a piece holds: small enough that a round's last pieces leave
-/// no thread idle for long (a few ms of flights), large enough that
-/// handing one out costs nothing.
+/// Records a piece holds: small enough that the last pieces leave no
+/// thread idle for long (a few ms of flights), large enough that handing
+/// one out costs nothing.
 pub(crate) const PIECE_ROWS: usize = 256;
-/// Records read a round, at most...
-const ROUND_ROWS: usize = 8192;
-/// ...and bytes (one record more at most)...
-const ROUND_BYTES: usize = 1 << 20;
+/// Records in flight at once, at most...
+const IN_FLIGHT_ROWS: usize = 8192;
+/// ...and bytes a piece reads (one record more at most)...
+const PIECE_BYTES: usize = 1 << 18;
 /// ...and rows × fences judged (each row its own fence and every park's,
-/// a crossing each): many user parks make rounds of fewer rows.
-const ROUND_CROSSINGS: usize = ROUND_ROWS * 31;
+/// a crossing each): many user parks make fewer rows in flight.
+const IN_FLIGHT_CROSSINGS: usize = IN_FLIGHT_ROWS * 31;
 
-/// The rows of a round and of a piece for a batch judged at `parks` parks.
+/// The rows in flight at most, and a piece's, for a batch judged at
+/// `parks` parks.
 pub(crate) fn sizes(parks: usize) -> (usize, usize) {
-    let round = (ROUND_CROSSINGS / (parks + 1)).clamp(1, ROUND_ROWS);
-    (round, (round / 32).clamp(1, PIECE_ROWS))
+    let rows = (IN_FLIGHT_CROSSINGS / (parks + 1)).clamp(1, IN_FLIGHT_ROWS);
+    (rows, (rows / 32).clamp(1, PIECE_ROWS))
 }
 
 /// How far each row goes before its piece is finished.
@@ -48,24 +50,25 @@ pub(crate) enum Stage {
     Flown,
 }
 
-/// Records read at once, and how reading stopped after them.
+/// A piece's records as read, and how reading stopped after them.
 #[derive(Default)]
-struct Round {
+struct Input {
     bytes: Vec<u8>,
     ends: Vec<usize>,
     records: Vec<(Read, Range<usize>, Range<usize>)>,
     /// Why reading stopped early after these records.
     stop: Option<String>,
+    /// The input ended with these records (or stopped).
     ended: bool,
 }
 
-impl Round {
+impl Input {
     fn read<R: BufRead>(&mut self, records: &mut Records<R>, rows: usize) {
         self.bytes.clear();
         self.ends.clear();
         self.records.clear();
         self.stop = None;
-        while !self.ended && self.records.len() < rows && self.bytes.len() < ROUND_BYTES {
+        while !self.ended && self.records.len() < rows && self.bytes.len() < PIECE_BYTES {
             let (bytes, ends) = (self.bytes.len(), self.ends.len());
             match records.next(&mut self.bytes, &mut self.ends, true) {
                 Ok(Some(read)) => {
@@ -85,6 +88,7 @@ impl Round {
 /// One piece's rows and what became of them.
 #[derive(Default)]
 pub(crate) struct Piece<T> {
+    input: Input,
     lossy: Lossy,
     swings: SwingLaunches,
     pub scratch: Scratch,
@@ -138,73 +142,95 @@ pub(crate) fn stream<R: BufRead, T: Default + Send>(
     note: &mut dyn FnMut(&str),
 ) -> Result<Outcome, String> {
     let mut outcome = Outcome::default();
-    let (mut round, mut next) = (Round::default(), Round::default());
-    let mut pieces: Vec<Piece<T>> = Vec::new();
     let (rows, piece_rows) = sizes(setup.parks.parks.len());
-    round.read(records, rows);
-    loop {
-        // The next round is read (on this thread) while this one is worked
-        // (on the pool).
-        let used = round.records.len().div_ceil(piece_rows);
-        if pieces.len() < used {
-            pieces.resize_with(used, Piece::default);
-        }
-        rayon::in_place_scope(|scope| {
-            scope.spawn(|_| {
-                (round.records.par_chunks(piece_rows))
-                    .zip(pieces.par_iter_mut())
-                    .for_each(|(records, piece)| {
-                        piece.work(records, &round, (setup, header), stage);
-                        finish(piece);
-                        // Parse failures came first; the messages go out in
-                        // line order.
-                        piece.failed.sort_by_key(|(line, _)| *line);
-                    });
-            });
-            next.read(records, rows);
-        });
-        for piece in &mut pieces[..used] {
-            for (line, reason) in &piece.failed {
-                outcome.failed += 1;
-                if outcome.failed <= MAX_ROW_MESSAGES {
-                    note(&format!("line {line}: {reason}; skipped"));
-                } else if outcome.failed == MAX_ROW_MESSAGES + 1 {
-                    note("more bad rows: counted, not named");
+    let most_in_flight = rows.div_ceil(piece_rows);
+    // Pieces come back as they are done; each is taken in its turn.
+    let (done, back) = mpsc::channel::<(usize, Box<Piece<T>>)>();
+    let mut spare: Vec<Box<Piece<T>>> = Vec::new();
+    let mut waiting: BTreeMap<usize, Box<Piece<T>>> = BTreeMap::new();
+    let (mut sent, mut taken) = (0, 0);
+    let mut ended = false;
+    let finish = &finish;
+    let taking = rayon::in_place_scope(|scope| -> Result<(), String> {
+        loop {
+            if !ended && sent - taken < most_in_flight {
+                // Read the next piece (on this thread) and send it to the pool.
+                let mut piece = spare.pop().unwrap_or_default();
+                piece.input.ended = false;
+                piece.input.read(records, piece_rows);
+                ended = piece.input.ended;
+                let (done, number) = (done.clone(), sent);
+                sent += 1;
+                scope.spawn(move |_| {
+                    piece.work((setup, header), stage);
+                    finish(&mut piece);
+                    // Parse failures came first; the messages go out in
+                    // line order.
+                    piece.failed.sort_by_key(|(line, _)| *line);
+                    let _ = done.send((number, piece));
+                });
+            } else if taken == sent {
+                return Ok(());
+            } else {
+                let (number, piece) = wait(&back)?;
+                waiting.insert(number, piece);
+            }
+            while let Ok((number, piece)) = back.try_recv() {
+                waiting.insert(number, piece);
+            }
+            while let Some(mut piece) = waiting.remove(&taken) {
+                taken += 1;
+                for (line, reason) in &piece.failed {
+                    outcome.failed += 1;
+                    if outcome.failed <= MAX_ROW_MESSAGES {
+                        note(&format!("line {line}: {reason}; skipped"));
+                    } else if outcome.failed == MAX_ROW_MESSAGES + 1 {
+                        note("more bad rows: counted, not named");
+                    }
                 }
+                outcome.without_launch += piece.without_launch;
+                if !take(&mut piece)? {
+                    // The reader has what it wanted (`| head`): the
+                    // pieces in flight end unread.
+                    return Ok(());
+                }
+                outcome.answered += piece.answered;
+                if let Some(stop) = &piece.input.stop {
+                    note(&format!("{stop}; stopped reading"));
+                    outcome.stopped = true;
+                }
+                spare.push(piece);
             }
-            outcome.without_launch += piece.without_launch;
-            if !take(piece)? {
-                // The reader has what it wanted (`| head`).
-                return Ok(outcome);
-            }
-            outcome.answered += piece.answered;
         }
-        if let Some(stop) = &round.stop {
-            note(&format!("{stop}; stopped reading"));
-            outcome.stopped = true;
-        }
-        if round.ended {
-            break;
-        }
-        std::mem::swap(&mut round, &mut next);
-    }
+    });
+    taking?;
     outcome.empty = records.empty;
     Ok(outcome)
 }
 
+/// The next piece to come back. On one of the pool's own threads (a
+/// batch run from inside the pool), the pool's pending work is done
+/// meanwhile, so that a pool of one thread cannot wait on itself.
+fn wait<P>(back: &mpsc::Receiver<P>) -> Result<P, String> {
+    loop {
+        if let Ok(piece) = back.try_recv() {
+            return Ok(piece);
+        }
+        if rayon::yield_now() != Some(rayon::Yield::Executed) {
+            // Nothing pending: every piece out is on another thread.
+            return back.recv().map_err(|e| e.to_string());
+        }
+    }
+}
+
 impl<T> Piece<T> {
-    fn work(
-        &mut self,
-        records: &[(Read, Range<usize>, Range<usize>)],
-        round: &Round,
-        (setup, header): (&Setup, &Header),
-        stage: Stage,
-    ) {
+    fn work(&mut self, (setup, header): (&Setup, &Header), stage: Stage) {
         self.failed.clear();
         self.jobs.clear();
         self.flown.clear();
         (self.answered, self.without_launch) = (0, 0);
-        for (read, bytes, ends) in records {
+        let input = &self.input;
+        for (read, bytes, ends) in &input.records {
             let line = read.line;
             let row = if read.too_long {
                 Row::Bad {
@@ -213,8 +239,8 @@ impl<T> Piece<T> {
                 }
             } else {
                 let fields = Fields::of(
-                    &round.bytes[bytes.clone()],
-                    &round.ends[ends.clone()],
+                    &input.bytes[bytes.clone()],
+                    &input.ends[ends.clone()],
                     &mut self.lossy,
                 );
                 parse_row(
