@@ -73,6 +73,8 @@ pub(crate) enum ContactFrom {
 pub(crate) struct SavantCells {
     pub hc_x: Option<f64>,
     pub hc_y: Option<f64>,
+    /// The landing bearing (rad), where a column gives it.
+    pub bearing: Option<f64>,
     pub side: Option<Side>,
     /// The side was given as not known ("Undefined", "Switch").
     pub side_unknown: bool,
@@ -128,6 +130,16 @@ impl SavantCells {
         match column {
             SavantColumn::HcX => self.hc_x = Some(number()?),
             SavantColumn::HcY => self.hc_y = Some(number()?),
+            SavantColumn::LandingBearing => {
+                let degrees = number()?;
+                if !(-180.0..=180.0).contains(&degrees) {
+                    return Err(format!(
+                        "landing_bearing = {:?}: expected -180 to 180° (+ toward right field)",
+                        cut(value, 80)
+                    ));
+                }
+                self.bearing = Some(degrees.to_radians());
+            }
             // A distance past 10 km is no batted ball's (1e308 would print
             // 309 digits): missing, as one that cannot be read.
             SavantColumn::Distance => self.distance = feet().filter(|m| m.abs() <= 1e4),
@@ -290,6 +302,9 @@ impl SavantCells {
     /// The spray angle (rad), if the row has both hit coordinates and they
     /// are not the plate's own (which gives no direction).
     pub(crate) fn spray(&self) -> Option<f64> {
+        if self.bearing.is_some() {
+            return self.bearing;
+        }
         Some(spray_angle(self.hc_x?, self.hc_y?)).filter(|angle| !angle.is_nan())
     }
 

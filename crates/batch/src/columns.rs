@@ -59,6 +59,9 @@ pub enum SavantColumn {
     /// Hit coordinates: with `hc_y`, the spray angle.
     HcX,
     HcY,
+    /// Or the spray itself: where the ball came down, as a bearing (°, +
+    /// toward right field).
+    LandingBearing,
     /// The batter's side, R or L.
     Stand,
     /// The home team's code: the park.
@@ -169,6 +172,14 @@ pub const TABLE: &[Entry] = &[
         "Savant's hit coordinates, with hc_y: the spray angle (see --spray)",
     ),
     entry(&["hc_y"], Savant(S::HcY), "the other hit coordinate"),
+    entry(
+        &["landing_bearing"],
+        Savant(S::LandingBearing),
+        "where the ball came down, as a bearing in ° (+ toward right field, as the spray from \
+         hc_x/hc_y gives it): the launch direction is solved to land there. A spray angle or \
+         Trackman's Bearing is read as one only when mapped (--column landing_bearing=COLUMN): \
+         their signs follow no one convention",
+    ),
     entry(
         &["stand", "BatterSide"],
         Savant(S::Stand),

@@ -111,6 +111,20 @@ pub struct Header {
     pub(crate) line: String,
 }
 
+/// Column names (folded: [`columns::folded`]) that say a direction the
+/// table does not read.
+const DIRECTION_LIKE: [&str; 9] = [
+    "sprayangle",
+    "spray",
+    "bearing",
+    "direction",
+    "spraydirection",
+    "hitdirection",
+    "launchdirection",
+    "horizontalangle",
+    "horizontallaunchangle",
+];
+
 impl Header {
     /// The header of `names` (a byte-order mark dropped), each column read
     /// as `mapping` (`--column NAME=COLUMN`) says, or as the table does.
@@ -165,11 +179,24 @@ impl Header {
         let has = |c: Column| columns.contains(&c);
         let direction_given = has(Column::Input("launch.direction"))
             || has(Column::Savant(SavantColumn::ExitDirection));
-        let hit_coordinates =
+        let coordinates =
             has(Column::Savant(SavantColumn::HcX)) || has(Column::Savant(SavantColumn::HcY));
-        if direction_given && hit_coordinates && has(Column::Input("launch.direction")) {
+        let bearing = has(Column::Savant(SavantColumn::LandingBearing));
+        if coordinates && bearing {
             return Err(format!(
-                "{line}: columns launch.direction and hc_x/hc_y both give launch.direction; keep one"
+                "{line}: columns hc_x/hc_y and landing_bearing both give where the ball came \
+                 down; keep one"
+            ));
+        }
+        let hit_coordinates = coordinates || bearing;
+        if direction_given && hit_coordinates && has(Column::Input("launch.direction")) {
+            let spray = if bearing {
+                "landing_bearing"
+            } else {
+                "hc_x/hc_y"
+            };
+            return Err(format!(
+                "{line}: columns launch.direction and {spray} both give launch.direction; keep one"
             ));
         }
         let inputs = (columns.iter())
@@ -288,6 +315,7 @@ impl Header {
                 LAUNCH_KEYS[missing[0]]
             ));
         }
+        self.check_direction(setup)?;
         if setup.solve_swings {
             let missing: Vec<&str> = (NEEDED_FOR_SWINGS.iter().copied())
                 .filter(|needed| {
@@ -310,6 +338,38 @@ impl Header {
             }
         }
         Ok(())
+    }
+
+    /// Refuses a header with a column that looks like a direction (a spray
+    /// angle, a bearing) and none that gives one: every row would fly to
+    /// centre field, which whoever kept that column does not mean. Its
+    /// sign and what it measures (where the ball came down, or where it
+    /// left the bat) follow no one convention, so it is mapped, not
+    /// guessed.
+    fn check_direction(&self, setup: &Setup) -> Result<(), String> {
+        if self.direction_given || self.hit_coordinates || setup.gave("launch.direction") {
+            return Ok(());
+        }
+        let looks = (self.names.iter().zip(&self.columns))
+            .filter(|(_, c)| matches!(c, Column::Ignored))
+            .map(|(name, _)| name)
+            .find(|name| DIRECTION_LIKE.contains(&columns::folded(name).as_str()));
+        let Some(name) = looks else {
+            return Ok(());
+        };
+        let shown = escape_cut(name, 40);
+        // As the shell takes it.
+        let typed = match name.contains(' ') {
+            true => format!("'{shown}'"),
+            false => shown.clone(),
+        };
+        Err(format!(
+            "{}: column `{shown}` looks like a direction, but no column gives one, so every row \
+             would fly to centre field: map it, --column landing_bearing={typed} (where the ball \
+             came down, ° + toward right field) or --column exit_direction={typed} (where it \
+             left the bat); or --set launch.direction=0 flies every row to centre field",
+            self.line
+        ))
     }
 
     /// Whether a column is `column`.
