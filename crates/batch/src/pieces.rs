@@ -10,6 +10,7 @@
 use std::collections::BTreeMap;
 use std::io::BufRead;
 use std::ops::Range;
+use std::panic::{self, AssertUnwindSafe};
 use std::sync::mpsc;
 
 use crate::flights::{RowFlight, Scratch, fly_chunk};
@@ -145,7 +146,7 @@ pub(crate) fn stream<R: BufRead, T: Default + Send>(
     let (rows, piece_rows) = sizes(setup.parks.parks.len());
     let most_in_flight = rows.div_ceil(piece_rows);
     // Pieces come back as they are done; each is taken in its turn.
-    let (done, back) = mpsc::channel::<(usize, Box<Piece<T>>)>();
+    let (done, back) = mpsc::channel::<(usize, Worked<T>)>();
     let mut spare: Vec<Box<Piece<T>>> = Vec::new();
     let mut waiting: BTreeMap<usize, Box<Piece<T>>> = BTreeMap::new();
     let (mut sent, mut taken) = (0, 0);
@@ -162,21 +163,26 @@ pub(crate) fn stream<R: BufRead, T: Default + Send>(
                 let (done, number) = (done.clone(), sent);
                 sent += 1;
                 scope.spawn(move |_| {
-                    piece.work((setup, header), stage);
-                    finish(&mut piece);
-                    // Parse failures came first; the messages go out in
-                    // line order.
-                    piece.failed.sort_by_key(|(line, _)| *line);
-                    let _ = done.send((number, piece));
+                    // A panic comes back as the piece's answer, so that
+                    // no one waits for it (and it goes on from there).
+                    let worked = panic::catch_unwind(AssertUnwindSafe(move || {
+                        piece.work((setup, header), stage);
+                        finish(&mut piece);
+                        // Parse failures came first; the messages go out
+                        // in line order.
+                        piece.failed.sort_by_key(|(line, _)| *line);
+                        piece
+                    }));
+                    let _ = done.send((number, worked));
                 });
             } else if taken == sent {
                 return Ok(());
             } else {
-                let (number, piece) = wait(&back)?;
-                waiting.insert(number, piece);
+                let (number, worked) = wait(&back)?;
+                waiting.insert(number, worked.unwrap_or_else(|p| panic::resume_unwind(p)));
             }
-            while let Ok((number, piece)) = back.try_recv() {
-                waiting.insert(number, piece);
+            while let Ok((number, worked)) = back.try_recv() {
+                waiting.insert(number, worked.unwrap_or_else(|p| panic::resume_unwind(p)));
             }
             while let Some(mut piece) = waiting.remove(&taken) {
                 taken += 1;
@@ -207,6 +213,9 @@ pub(crate) fn stream<R: BufRead, T: Default + Send>(
     outcome.empty = records.empty;
     Ok(outcome)
 }
+
+/// A piece worked on the pool, or the panic that stopped it.
+type Worked<T> = std::thread::Result<Box<Piece<T>>>;
 
 /// The next piece to come back. On one of the pool's own threads (a
 /// batch run from inside the pool), the pool's pending work is done

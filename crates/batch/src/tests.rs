@@ -744,3 +744,32 @@ fn a_batch_inside_a_pool_of_one_thread_finishes() {
     assert_eq!(outcome.answered, 700);
     assert_eq!(inside, outside);
 }
+
+/// A piece whose work panics ends the batch with that panic, where the
+/// pieces' reader would otherwise wait for it forever.
+#[test]
+fn a_piece_that_panics_ends_the_batch_with_its_panic() {
+    let preset = preset::load("fly-ball", None).unwrap();
+    let parks = preset::parks::all(None).unwrap();
+    let setup = Setup::new(&preset, &parks);
+    let input = many_rows(700);
+    let mut records = Records::new(input.as_bytes());
+    let names = read::read_header(&mut records).unwrap().unwrap();
+    let header = Header::new(names, &setup).unwrap();
+    let streamed = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        pieces::stream::<_, ()>(
+            (&setup, &header),
+            &mut records,
+            pieces::Stage::Parsed,
+            |piece| {
+                if piece.jobs.iter().any(|job| job.line == 300) {
+                    panic!("a piece's panic");
+                }
+            },
+            |_| Ok(true),
+            &mut |_| {},
+        )
+    }));
+    let panic = streamed.expect_err("the panic, come back");
+    assert_eq!(panic.downcast_ref::<&str>(), Some(&"a piece's panic"));
+}
