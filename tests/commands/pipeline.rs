@@ -69,6 +69,37 @@ fn a_file_without_a_launch_column_is_refused_with_the_names_nearest() {
     );
     assert_eq!(status, 2);
     assert!(err.contains("no column `EV`"), "{err}");
+    // A mapping to a name nothing reads would leave its column unread:
+    // refused, with the nearest name.
+    let text = "launch_speed,launch_angle,temp\n100,25,20\n";
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--column",
+        "environment.temprature=temp",
+    ];
+    let (out, err, status) = run(&args, text.as_bytes());
+    assert_eq!(status, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains(
+            "--column environment.temprature=temp: `environment.temprature` is no column name \
+             or key homerun reads"
+        ) && err.contains("did you mean environment.temperature?"),
+        "{err}"
+    );
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--json",
+        "--column",
+        "environment.temperature=temp",
+    ];
+    let (out, err, status) = run(&args, text.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    assert_eq!(out.lines().count(), 1);
 }
 
 #[test]

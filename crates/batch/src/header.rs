@@ -111,6 +111,19 @@ pub struct Header {
     pub(crate) line: String,
 }
 
+/// Every name a column may be mapped to: the table's and the keys.
+fn readable_names() -> Vec<String> {
+    let table = columns::TABLE.iter().flat_map(|e| e.names.iter().copied());
+    let keys = model::keys::all_keys().map(|k| k.name);
+    let fields = FIELD_KEYS.iter().map(|f| f.name);
+    (table
+        .chain(keys)
+        .chain(fields)
+        .chain(TEXT_KEYS.iter().copied()))
+    .map(str::to_owned)
+    .collect()
+}
+
 /// Column names (folded: [`columns::folded`]) that say a direction the
 /// table does not read.
 const DIRECTION_LIKE: [&str; 9] = [
@@ -134,6 +147,22 @@ impl Header {
         let line = format!("line {line} (the header)");
         let names: Vec<String> = names.into_iter().map(|n| n.trim().to_owned()).collect();
         for (name, column) in &setup.mapping {
+            // A name nothing reads would leave the column unread, quietly.
+            if matches!(column_of(name), Column::Ignored) {
+                let readable = readable_names();
+                let near = columns::nearest(&[name.as_str()], &readable);
+                let near = match near.first() {
+                    Some(near) => format!("; did you mean {near}?"),
+                    None => String::new(),
+                };
+                return Err(format!(
+                    "--column {}={}: `{}` is no column name or key homerun reads (`homerun fly \
+                     --help` lists the columns, `homerun keys` the keys){near}",
+                    escape_cut(name, 40),
+                    escape_cut(column, 40),
+                    escape_cut(name, 40)
+                ));
+            }
             if !names.iter().any(|n| n == column) {
                 return Err(format!(
                     "--column {}={}: no column `{}` in the header",
