@@ -672,3 +672,63 @@ fn a_spray_angle_no_column_reads_is_refused_until_mapped() {
         "{err}"
     );
 }
+
+/// A weather column of its own name (`temperature`, `wind_speed`) that no
+/// column reads: every row would fly in the standard air, so the file is
+/// refused naming the key to map it to and its unit. Mapped, its cells are
+/// read as that key's (a bare number SI, a cell with its unit in it);
+/// `--column ignore=COLUMN` says it is meant to go unread.
+#[test]
+fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
+    let text = "launch_speed,launch_angle,temperature,wind_speed\n105,28,75F,0\n";
+    let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert_eq!(status, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains(
+            "column `temperature` looks like weather, but no column reads it, so every row \
+             would fly in its park's standard air (or the preset's): map it to its key, \
+             --column environment.temperature=temperature (a bare number in °C"
+        ) && err.contains("--column ignore=temperature to fly without it"),
+        "{err}"
+    );
+    let temperature = "environment.temperature=temperature";
+    let (_, err, status) = run(
+        &["fly", "--batch", "-", "--column", temperature],
+        text.as_bytes(),
+    );
+    assert_eq!(status, 2, "{err}");
+    assert!(
+        err.contains("--column environment.wind=wind_speed (a bare number in m/s"),
+        "{err}"
+    );
+    // Mapped: 75 °F is read as it says, and the ball carries farther than
+    // in the preset's 15 °C; ignored: the preset's air.
+    let range = |args: &[&str]| {
+        let (out, err, status) = run(args, text.as_bytes());
+        assert_eq!(status, 0, "{err}");
+        let row: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+        row["flight"]["range"].as_f64().unwrap()
+    };
+    let mapped = range(&[
+        "fly",
+        "--batch",
+        "-",
+        "--json",
+        "--column",
+        temperature,
+        "--column",
+        "environment.wind=wind_speed",
+    ]);
+    let ignored = range(&[
+        "fly",
+        "--batch",
+        "-",
+        "--json",
+        "--column",
+        "ignore=temperature",
+        "--column",
+        "ignore=wind_speed",
+    ]);
+    assert!(mapped > ignored + 0.5, "{mapped} {ignored}");
+}

@@ -124,19 +124,53 @@ fn readable_names() -> Vec<String> {
     .collect()
 }
 
+/// `--column ignore=COLUMN`: the column is meant to go unread.
+const IGNORE: &str = "ignore";
+
 /// Column names (folded: [`columns::folded`]) that say a direction the
 /// table does not read.
-const DIRECTION_LIKE: [&str; 9] = [
-    "sprayangle",
-    "spray",
-    "bearing",
-    "direction",
-    "spraydirection",
-    "hitdirection",
-    "launchdirection",
-    "horizontalangle",
-    "horizontallaunchangle",
+const DIRECTION_LIKE: [(&str, &str); 9] = [
+    ("sprayangle", ""),
+    ("spray", ""),
+    ("bearing", ""),
+    ("direction", ""),
+    ("spraydirection", ""),
+    ("hitdirection", ""),
+    ("launchdirection", ""),
+    ("horizontalangle", ""),
+    ("horizontallaunchangle", ""),
 ];
+
+/// Column names (folded) that say the weather, with the key each would be.
+const WEATHER_LIKE: [(&str, &str); 17] = [
+    ("temperature", "environment.temperature"),
+    ("temp", "environment.temperature"),
+    ("tempf", "environment.temperature"),
+    ("tempc", "environment.temperature"),
+    ("airtemperature", "environment.temperature"),
+    ("airtemp", "environment.temperature"),
+    ("wind", "environment.wind"),
+    ("windspeed", "environment.wind"),
+    ("winddirection", "environment.wind_direction"),
+    ("winddir", "environment.wind_direction"),
+    ("humidity", "environment.humidity"),
+    ("relativehumidity", "environment.humidity"),
+    ("pressure", "environment.pressure"),
+    ("barometricpressure", "environment.pressure"),
+    ("elevation", "environment.elevation"),
+    ("altitude", "environment.elevation"),
+    ("airdensity", "environment.air_density"),
+];
+
+/// A column's name as a message shows it, and as the shell takes it.
+fn shown_and_typed(name: &str) -> (String, String) {
+    let shown = escape_cut(name, 40);
+    let typed = match name.contains(' ') {
+        true => format!("'{shown}'"),
+        false => shown.clone(),
+    };
+    (shown, typed)
+}
 
 impl Header {
     /// The header of `names` (a byte-order mark dropped), each column read
@@ -147,8 +181,9 @@ impl Header {
         let line = format!("line {line} (the header)");
         let names: Vec<String> = names.into_iter().map(|n| n.trim().to_owned()).collect();
         for (name, column) in &setup.mapping {
-            // A name nothing reads would leave the column unread, quietly.
-            if matches!(column_of(name), Column::Ignored) {
+            // A name nothing reads would leave the column unread, quietly
+            // (`ignore` says that is meant).
+            if matches!(column_of(name), Column::Ignored) && name != IGNORE {
                 let readable = readable_names();
                 let near = columns::nearest(&[name.as_str()], &readable);
                 let near = match near.first() {
@@ -345,6 +380,7 @@ impl Header {
             ));
         }
         self.check_direction(setup)?;
+        self.check_weather(setup)?;
         if setup.solve_swings {
             let missing: Vec<&str> = (NEEDED_FOR_SWINGS.iter().copied())
                 .filter(|needed| {
@@ -379,19 +415,10 @@ impl Header {
         if self.direction_given || self.hit_coordinates || setup.gave("launch.direction") {
             return Ok(());
         }
-        let looks = (self.names.iter().zip(&self.columns))
-            .filter(|(_, c)| matches!(c, Column::Ignored))
-            .map(|(name, _)| name)
-            .find(|name| DIRECTION_LIKE.contains(&columns::folded(name).as_str()));
-        let Some(name) = looks else {
+        let Some((name, _)) = self.unread_like(setup, &DIRECTION_LIKE) else {
             return Ok(());
         };
-        let shown = escape_cut(name, 40);
-        // As the shell takes it.
-        let typed = match name.contains(' ') {
-            true => format!("'{shown}'"),
-            false => shown.clone(),
-        };
+        let (shown, typed) = shown_and_typed(name);
         Err(format!(
             "{}: column `{shown}` looks like a direction, but no column gives one, so every row \
              would fly to centre field: map it, --column landing_bearing={typed} (where the ball \
@@ -399,6 +426,50 @@ impl Header {
              left the bat); or --set launch.direction=0 flies every row to centre field",
             self.line
         ))
+    }
+
+    /// Refuses a header with a column that looks like weather (a
+    /// temperature, a wind) that no column reads: every row would fly in
+    /// its park's standard air, or the preset's, where whoever kept that
+    /// column means the day's. Its unit (°F or °C, mph or m/s) is not
+    /// guessed: mapped to its key, a bare number is SI and a cell may
+    /// carry its unit.
+    fn check_weather(&self, setup: &Setup) -> Result<(), String> {
+        let Some((name, key)) = self.unread_like(setup, &WEATHER_LIKE) else {
+            return Ok(());
+        };
+        let (shown, typed) = shown_and_typed(name);
+        let unit = Scene::key(key).map_or("", |k| k.unit);
+        Err(format!(
+            "{}: column `{shown}` looks like weather, but no column reads it, so every row \
+             would fly in its park's standard air (or the preset's): map it to its key, \
+             --column {key}={typed} (a bare number in {unit}, or a cell with its unit as --set \
+             takes one), or --column {IGNORE}={typed} to fly without it",
+            self.line
+        ))
+    }
+
+    /// The first column unread (and neither mapped to [`IGNORE`] nor kept)
+    /// whose folded name is one of `like`'s, with what `like` pairs it
+    /// with.
+    fn unread_like<'l>(
+        &self,
+        setup: &Setup,
+        like: &'l [(&str, &'l str)],
+    ) -> Option<(&String, &'l str)> {
+        // A column mapped, or kept (`--keep`, `calibrate --by`), is known
+        // to its user.
+        let mapped = |name: &String| {
+            setup.mapping.iter().any(|(_, column)| column == name) || setup.keep.contains(name)
+        };
+        (self.names.iter().zip(&self.columns))
+            .filter(|(name, c)| matches!(c, Column::Ignored) && !mapped(name))
+            .find_map(|(name, _)| {
+                let folded = columns::folded(name);
+                (like.iter())
+                    .find(|(n, _)| *n == folded)
+                    .map(|(_, with)| (name, *with))
+            })
     }
 
     /// Whether a column is `column`.
