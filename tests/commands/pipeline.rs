@@ -688,7 +688,8 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
         err.contains(
             "column `temperature` looks like weather, but no column reads it, so every row \
              would fly in its park's standard air (or the preset's): map it to its key, \
-             --column environment.temperature=temperature (a bare number in °C"
+             --column environment.temperature=temperature (bare numbers in °C, or in another \
+             unit as --column environment.temperature=temperature:UNIT)"
         ) && err.contains("--column ignore=temperature to fly without it"),
         "{err}"
     );
@@ -699,36 +700,53 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
     );
     assert_eq!(status, 2, "{err}");
     assert!(
-        err.contains("--column environment.wind=wind_speed (a bare number in m/s"),
+        err.contains("--column environment.wind=wind_speed (bare numbers in m/s"),
         "{err}"
     );
     // Mapped: 75 °F is read as it says, and the ball carries farther than
-    // in the preset's 15 °C; ignored: the preset's air.
-    let range = |args: &[&str]| {
-        let (out, err, status) = run(args, text.as_bytes());
+    // in the preset's 15 °C; ignored: the preset's air. A bare 75 in a
+    // column mapped as °F is that 75F, to the bit.
+    let bare = text.replace("75F", "75");
+    let range = |input: &str, temperature: &str, wind: &str| {
+        let args = [
+            "fly",
+            "--batch",
+            "-",
+            "--json",
+            "--column",
+            temperature,
+            "--column",
+            wind,
+        ];
+        let (out, err, status) = run(&args, input.as_bytes());
         assert_eq!(status, 0, "{err}");
         let row: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
         row["flight"]["range"].as_f64().unwrap()
     };
-    let mapped = range(&[
-        "fly",
-        "--batch",
-        "-",
-        "--json",
-        "--column",
-        temperature,
-        "--column",
-        "environment.wind=wind_speed",
-    ]);
-    let ignored = range(&[
-        "fly",
-        "--batch",
-        "-",
-        "--json",
-        "--column",
-        "ignore=temperature",
-        "--column",
-        "ignore=wind_speed",
-    ]);
+    let mapped = range(text, temperature, "environment.wind=wind_speed");
+    let ignored = range(text, "ignore=temperature", "ignore=wind_speed");
     assert!(mapped > ignored + 0.5, "{mapped} {ignored}");
+    let in_fahrenheit = "environment.temperature=temperature:F";
+    assert_eq!(
+        range(&bare, in_fahrenheit, "ignore=wind_speed"),
+        range(text, temperature, "ignore=wind_speed")
+    );
+    // A unit of another quantity, or on a column the table reads, is one line.
+    for (mapping, needle) in [
+        (
+            "environment.temperature=temperature:mph",
+            "`mph` is no unit of a temperature; it takes",
+        ),
+        (
+            "launch_speed=temperature:F",
+            "a unit is given only to a key's column",
+        ),
+    ] {
+        let (_, err, status) = run(
+            &["fly", "--batch", "-", "--column", mapping],
+            bare.as_bytes(),
+        );
+        assert_eq!(status, 2, "{err}");
+        assert!(err.contains(needle), "{err}");
+    }
 }

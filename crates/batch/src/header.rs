@@ -109,6 +109,9 @@ pub struct Header {
     pub(crate) tilt_given: bool,
     /// "line 3 (the header)": where the header is, for its messages.
     pub(crate) line: String,
+    /// The unit a mapped key column's bare numbers are in, by index
+    /// (`--column KEY=COLUMN:UNIT`).
+    pub(crate) cell_units: Vec<Option<String>>,
 }
 
 /// Every name a column may be mapped to: the table's and the keys.
@@ -162,6 +165,37 @@ const WEATHER_LIKE: [(&str, &str); 17] = [
     ("airdensity", "environment.air_density"),
 ];
 
+/// Refuses a unit on a mapping (`--column NAME=COLUMN:UNIT`) that is not
+/// a number key's, or not a unit of its quantity.
+fn check_unit(name: &str, column: &str, unit: &str) -> Result<(), String> {
+    let mapping = format!(
+        "--column {}={}:{}",
+        escape_cut(name, 40),
+        escape_cut(column, 40),
+        escape_cut(unit, 20)
+    );
+    let key = match column_of(name) {
+        Column::Input(key) => Scene::key(key).ok(),
+        _ => None,
+    };
+    let Some(key) = key else {
+        return Err(format!(
+            "{mapping}: a unit is given only to a key's column (`homerun keys`); the table's \
+             columns have their own"
+        ));
+    };
+    let quantity = key.quantity();
+    match units::read_typed(&format!("1{unit}"), quantity, quantity.si_symbol()) {
+        Ok(reading) if reading.unit.is_some() => Ok(()),
+        _ => Err(format!(
+            "{mapping}: `{}` is no unit of {}; it takes {}",
+            escape_cut(unit, 20),
+            quantity.noun(),
+            units::accepted(quantity, quantity.si_symbol())
+        )),
+    }
+}
+
 /// A column's name as a message shows it, and as the shell takes it.
 fn shown_and_typed(name: &str) -> (String, String) {
     let shown = escape_cut(name, 40);
@@ -180,7 +214,19 @@ impl Header {
         // Blank lines before it are counted: the header is named by its own.
         let line = format!("line {line} (the header)");
         let names: Vec<String> = names.into_iter().map(|n| n.trim().to_owned()).collect();
+        // Each mapping's column, and the unit its bare numbers are in
+        // (`--column environment.temperature=temp:F`).
+        let mut mapping: Vec<(&str, &str, Option<&str>)> = Vec::new();
         for (name, column) in &setup.mapping {
+            let unit_after = column.rsplit_once(':');
+            let (column, unit) = match unit_after {
+                Some((before, unit)) if !names.iter().any(|n| n == column) => (before, Some(unit)),
+                _ => (column.as_str(), None),
+            };
+            if let Some(unit) = unit {
+                check_unit(name, column, unit)?;
+            }
+            mapping.push((name, column, unit));
             // A name nothing reads would leave the column unread, quietly
             // (`ignore` says that is meant).
             if matches!(column_of(name), Column::Ignored) && name != IGNORE {
@@ -208,10 +254,12 @@ impl Header {
             }
         }
         let mut columns = Vec::with_capacity(names.len());
+        let mut cell_units = Vec::with_capacity(names.len());
         let mut given: Vec<(String, &str)> = Vec::new(); // (what, column name)
         for name in &names {
-            let mapped = setup.mapping.iter().find(|(_, c)| c == name);
-            let column = match column_of(mapped.map_or(name, |(to, _)| to)) {
+            let mapped = mapping.iter().find(|(_, c, _)| c == name);
+            cell_units.push(mapped.and_then(|(_, _, unit)| unit.map(str::to_owned)));
+            let column = match column_of(mapped.map_or(name, |(to, _, _)| to)) {
                 Column::Swing(..) if !setup.solve_swings => Column::Ignored,
                 column => column,
             };
@@ -301,6 +349,7 @@ impl Header {
             launch_only,
             direction_given,
             hit_coordinates,
+            cell_units,
         };
         header.check(setup)?;
         header.keep = (setup.keep.iter())
@@ -443,8 +492,8 @@ impl Header {
         Err(format!(
             "{}: column `{shown}` looks like weather, but no column reads it, so every row \
              would fly in its park's standard air (or the preset's): map it to its key, \
-             --column {key}={typed} (a bare number in {unit}, or a cell with its unit as --set \
-             takes one), or --column {IGNORE}={typed} to fly without it",
+             --column {key}={typed} (bare numbers in {unit}, or in another unit as --column \
+             {key}={typed}:UNIT), or --column {IGNORE}={typed} to fly without it",
             self.line
         ))
     }

@@ -301,6 +301,12 @@ fn read_cells(
                     given.note(input.name);
                 }
                 sidespin_given |= input.name == "launch.sidespin";
+                // A bare number in the unit its mapping gave the column.
+                let with_unit = match &header.cell_units[i] {
+                    Some(unit) if value.parse::<f64>().is_ok() => Some(format!("{value}{unit}")),
+                    _ => None,
+                };
+                let value = with_unit.as_deref().unwrap_or(value);
                 match input.numeric {
                     Some(key) => set_number(&mut batch, scene, (key, input.air), value),
                     None => batch.set_text(scene, input.name, value),
