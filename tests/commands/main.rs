@@ -32,6 +32,7 @@ mod swing_found;
 mod tui_support;
 mod units;
 mod units_on_input;
+mod unread_columns;
 mod write_errors;
 
 mod flights;

@@ -1,0 +1,178 @@
+//! Columns no one would mean to go unread: a spray angle or a weather
+//! column of its own name, with nothing that reads it, is refused with the
+//! mapping to give (issue 35: never a silently wrong answer).
+
+use super::pipeline::{run, sample};
+
+/// A spray angle kept as its own column (hc_x and hc_y dropped, or a
+/// tracker's Bearing) and no direction read: every row would fly to centre
+/// field, so the file is refused with the mappings to choose from. Mapped
+/// as the landing bearing, each row lands on it, as on the spray its hit
+/// coordinates give.
+#[test]
+fn a_spray_angle_no_column_reads_is_refused_until_mapped() {
+    // A record's cells (the sample quotes names and descriptions).
+    let cells = |line: &str| -> Vec<String> {
+        let (mut cells, mut cell, mut quoted) = (Vec::new(), String::new(), false);
+        for c in line.chars() {
+            match c {
+                '"' => quoted = !quoted,
+                ',' if !quoted => cells.push(std::mem::take(&mut cell)),
+                c => cell.push(c),
+            }
+        }
+        cells.push(cell);
+        cells
+    };
+    let text = sample();
+    let mut lines = text.lines();
+    let header = cells(lines.next().unwrap());
+    let at = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let (x, y, speed, angle, stand) = (
+        at("hc_x"),
+        at("hc_y"),
+        at("launch_speed"),
+        at("launch_angle"),
+        at("stand"),
+    );
+    // The sample's first rows as launch, side and spray angle (°).
+    let mut spray = String::from("launch_speed,launch_angle,stand,spray_angle\n");
+    let mut kept = String::from("launch_speed,launch_angle,stand,hc_x,hc_y\n");
+    let rows = lines.map(cells).filter(|row| row[x].parse::<f64>().is_ok());
+    for row in rows.take(6) {
+        let (hc_x, hc_y): (f64, f64) = (row[x].parse().unwrap(), row[y].parse().unwrap());
+        let degrees = ((hc_x - 125.42) / (198.27 - hc_y)).atan().to_degrees();
+        let launch = format!("{},{},{}", row[speed], row[angle], row[stand]);
+        spray += &format!("{launch},{degrees}\n");
+        kept += &format!("{launch},{hc_x},{hc_y}\n");
+    }
+    let (out, err, status) = run(&["fly", "--batch", "-"], spray.as_bytes());
+    assert_eq!(status, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains(
+            "column `spray_angle` looks like a direction, but no column gives one, so every \
+             row would fly to centre field: map it, --column landing_bearing=spray_angle"
+        ),
+        "{err}"
+    );
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--json",
+        "--column",
+        "landing_bearing=spray_angle",
+    ];
+    let (mapped, err, status) = run(&args, spray.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    let (from_coordinates, err, status) = run(&["fly", "--batch", "-", "--json"], kept.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    let direction = |line: &str| {
+        let row: serde_json::Value = serde_json::from_str(line).unwrap();
+        assert_eq!(row["direction_from"], "landing", "{row}");
+        row["flight"]["direction"].as_f64().unwrap()
+    };
+    for (a, b) in mapped.lines().zip(from_coordinates.lines()) {
+        // The same bearing, read two ways (°, or by hit coordinates).
+        assert!((direction(a) - direction(b)).abs() < 2e-4, "{a}\n{b}");
+    }
+    assert_eq!(mapped.lines().count(), 6);
+    // A direction given for every row answers it too.
+    let args = ["fly", "--batch", "-", "--set", "launch.direction=0"];
+    let (_, err, status) = run(&args, spray.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    // Both hit coordinates and a landing bearing: one too many.
+    let both = "launch_speed,launch_angle,hc_x,hc_y,landing_bearing\n100,25,100,80,10\n";
+    let (_, err, status) = run(&["fly", "--batch", "-"], both.as_bytes());
+    assert_eq!(status, 2, "{err}");
+    assert!(
+        err.contains("columns hc_x/hc_y and landing_bearing both give"),
+        "{err}"
+    );
+    let far = "launch_speed,launch_angle,landing_bearing\n100,25,200\n";
+    let (_, err, status) = run(&["fly", "--batch", "-"], far.as_bytes());
+    assert_eq!(status, 1, "{err}");
+    assert!(
+        err.contains(r#"landing_bearing = "200": expected -180 to 180° (+ toward right field)"#),
+        "{err}"
+    );
+}
+
+/// A weather column of its own name (`temperature`, `wind_speed`) that no
+/// column reads: every row would fly in the standard air, so the file is
+/// refused naming the key to map it to and its unit. Mapped, its cells are
+/// read as that key's (a bare number SI, a cell with its unit in it);
+/// `--column ignore=COLUMN` says it is meant to go unread.
+#[test]
+fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
+    let text = "launch_speed,launch_angle,temperature,wind_speed\n105,28,75F,0\n";
+    let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert_eq!(status, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains(
+            "column `temperature` looks like weather, but no column reads it, so every row \
+             would fly in its park's standard air (or the preset's): map it to its key, \
+             --column environment.temperature=temperature (bare numbers in °C, or in another \
+             unit as --column environment.temperature=temperature:UNIT)"
+        ) && err.contains("--column ignore=temperature to fly without it"),
+        "{err}"
+    );
+    let temperature = "environment.temperature=temperature";
+    let (_, err, status) = run(
+        &["fly", "--batch", "-", "--column", temperature],
+        text.as_bytes(),
+    );
+    assert_eq!(status, 2, "{err}");
+    assert!(
+        err.contains("--column environment.wind=wind_speed (bare numbers in m/s"),
+        "{err}"
+    );
+    // Mapped: 75 °F is read as it says, and the ball carries farther than
+    // in the preset's 15 °C; ignored: the preset's air. A bare 75 in a
+    // column mapped as °F is that 75F, to the bit.
+    let bare = text.replace("75F", "75");
+    let range = |input: &str, temperature: &str, wind: &str| {
+        let args = [
+            "fly",
+            "--batch",
+            "-",
+            "--json",
+            "--column",
+            temperature,
+            "--column",
+            wind,
+        ];
+        let (out, err, status) = run(&args, input.as_bytes());
+        assert_eq!(status, 0, "{err}");
+        let row: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+        row["flight"]["range"].as_f64().unwrap()
+    };
+    let mapped = range(text, temperature, "environment.wind=wind_speed");
+    let ignored = range(text, "ignore=temperature", "ignore=wind_speed");
+    assert!(mapped > ignored + 0.5, "{mapped} {ignored}");
+    let in_fahrenheit = "environment.temperature=temperature:F";
+    assert_eq!(
+        range(&bare, in_fahrenheit, "ignore=wind_speed"),
+        range(text, temperature, "ignore=wind_speed")
+    );
+    // A unit of another quantity, or on a column the table reads, is one line.
+    for (mapping, needle) in [
+        (
+            "environment.temperature=temperature:mph",
+            "`mph` is no unit of a temperature; it takes",
+        ),
+        (
+            "launch_speed=temperature:F",
+            "a unit is given only to a key's column",
+        ),
+    ] {
+        let (_, err, status) = run(
+            &["fly", "--batch", "-", "--column", mapping],
+            bare.as_bytes(),
+        );
+        assert_eq!(status, 2, "{err}");
+        assert!(err.contains(needle), "{err}");
+    }
+}
