@@ -125,20 +125,25 @@ impl SavantCells {
                     )
                 })
         };
+        // A measurement inside (low, high), said as `expected`.
+        let within = |read: f64, (low, high, expected): (f64, f64, &str)| match (low..=high)
+            .contains(&read)
+        {
+            true => Ok(read),
+            false => Err(format!(
+                "{} = {:?}: expected {expected}",
+                crate::columns::name_of(crate::columns::Becomes::Savant(column)),
+                cut(value, 80)
+            )),
+        };
         // Measurements, only compared: one that cannot be read is missing.
         let feet = || measure(value, Quantity::Distance, |ft| ft * METRES_PER_FOOT);
         match column {
             SavantColumn::HcX => self.hc_x = Some(number()?),
             SavantColumn::HcY => self.hc_y = Some(number()?),
             SavantColumn::LandingBearing => {
-                let degrees = number()?;
-                if !(-180.0..=180.0).contains(&degrees) {
-                    return Err(format!(
-                        "landing_bearing = {:?}: expected -180 to 180° (+ toward right field)",
-                        cut(value, 80)
-                    ));
-                }
-                self.bearing = Some(degrees.to_radians());
+                let range = (-180.0, 180.0, "-180 to 180° (+ toward right field)");
+                self.bearing = Some(within(number()?, range)?.to_radians());
             }
             // A distance past 10 km is no batted ball's (1e308 would print
             // 309 digits): missing, as one that cannot be read.
@@ -181,23 +186,13 @@ impl SavantCells {
                     Some(rate) => rate,
                     None => Unit::Rpm.to_si(number()?),
                 };
-                if !(0.0..=Unit::Rpm.to_si(MAX_SPIN_RPM)).contains(&rate) {
-                    return Err(format!(
-                        "hit_spin_rate = {:?}: expected 0 (none measured) to {MAX_SPIN_RPM} rpm",
-                        cut(value, 80)
-                    ));
-                }
-                self.spin_rate = Some(rate);
+                let most = Unit::Rpm.to_si(MAX_SPIN_RPM);
+                let expected = format!("0 (none measured) to {MAX_SPIN_RPM} rpm");
+                self.spin_rate = Some(within(rate, (0.0, most, &expected))?);
             }
             SavantColumn::HitSpinVector(index) => self.spin_vector[index] = Some(number()?),
             SavantColumn::HitSpinAxis => {
-                let degrees = number()?;
-                if !(0.0..=360.0).contains(&degrees) {
-                    return Err(format!(
-                        "hit_spin_axis = {:?}: expected 0 to 360°",
-                        cut(value, 80)
-                    ));
-                }
+                let degrees = within(number()?, (0.0, 360.0, "0 to 360°"))?;
                 // As its turn from pure backspin, so that 180° is exactly
                 // backspin alone.
                 self.spin_axis = Some((degrees - 180.0).to_radians());
@@ -299,13 +294,12 @@ impl SavantCells {
         }
     }
 
-    /// The spray angle (rad), if the row has both hit coordinates and they
-    /// are not the plate's own (which gives no direction).
+    /// The spray angle (rad): the landing bearing given, or the hit
+    /// coordinates' where the row has both and they are not the plate's
+    /// own (which gives no direction).
     pub(crate) fn spray(&self) -> Option<f64> {
-        if self.bearing.is_some() {
-            return self.bearing;
-        }
-        Some(spray_angle(self.hc_x?, self.hc_y?)).filter(|angle| !angle.is_nan())
+        self.bearing
+            .or_else(|| Some(spray_angle(self.hc_x?, self.hc_y?)).filter(|angle| !angle.is_nan()))
     }
 
     /// A measured spin of `rate` (rad/s) as backspin and sidespin, where

@@ -132,16 +132,16 @@ const IGNORE: &str = "ignore";
 
 /// Column names (folded: [`columns::folded`]) that say a direction the
 /// table does not read.
-const DIRECTION_LIKE: [(&str, &str); 9] = [
-    ("sprayangle", ""),
-    ("spray", ""),
-    ("bearing", ""),
-    ("direction", ""),
-    ("spraydirection", ""),
-    ("hitdirection", ""),
-    ("launchdirection", ""),
-    ("horizontalangle", ""),
-    ("horizontallaunchangle", ""),
+const DIRECTION_LIKE: [&str; 9] = [
+    "sprayangle",
+    "spray",
+    "bearing",
+    "direction",
+    "spraydirection",
+    "hitdirection",
+    "launchdirection",
+    "horizontalangle",
+    "horizontallaunchangle",
 ];
 
 /// Column names (folded) that say the weather, with the key each would be.
@@ -218,15 +218,6 @@ impl Header {
         // (`--column environment.temperature=temp:F`).
         let mut mapping: Vec<(&str, &str, Option<&str>)> = Vec::new();
         for (name, column) in &setup.mapping {
-            let unit_after = column.rsplit_once(':');
-            let (column, unit) = match unit_after {
-                Some((before, unit)) if !names.iter().any(|n| n == column) => (before, Some(unit)),
-                _ => (column.as_str(), None),
-            };
-            if let Some(unit) = unit {
-                check_unit(name, column, unit)?;
-            }
-            mapping.push((name, column, unit));
             // A name nothing reads would leave the column unread, quietly
             // (`ignore` says that is meant).
             if matches!(column_of(name), Column::Ignored) && name != IGNORE {
@@ -244,6 +235,15 @@ impl Header {
                     escape_cut(name, 40)
                 ));
             }
+            let unit_after = column.rsplit_once(':');
+            let (column, unit) = match unit_after {
+                Some((before, unit)) if !names.iter().any(|n| n == column) => (before, Some(unit)),
+                _ => (column.as_str(), None),
+            };
+            if let Some(unit) = unit {
+                check_unit(name, column, unit)?;
+            }
+            mapping.push((name, column, unit));
             if !names.iter().any(|n| n == column) {
                 return Err(format!(
                     "--column {}={}: no column `{}` in the header",
@@ -464,7 +464,8 @@ impl Header {
         if self.direction_given || self.hit_coordinates || setup.gave("launch.direction") {
             return Ok(());
         }
-        let Some((name, _)) = self.unread_like(setup, &DIRECTION_LIKE) else {
+        let direction_like = |folded: &str| DIRECTION_LIKE.contains(&folded).then_some(());
+        let Some((name, ())) = self.unread_like(setup, direction_like) else {
             return Ok(());
         };
         let (shown, typed) = shown_and_typed(name);
@@ -484,7 +485,12 @@ impl Header {
     /// guessed: mapped to its key, a bare number is SI and a cell may
     /// carry its unit.
     fn check_weather(&self, setup: &Setup) -> Result<(), String> {
-        let Some((name, key)) = self.unread_like(setup, &WEATHER_LIKE) else {
+        let key_of = |folded: &str| {
+            (WEATHER_LIKE.iter())
+                .find(|(name, _)| *name == folded)
+                .map(|(_, key)| *key)
+        };
+        let Some((name, key)) = self.unread_like(setup, key_of) else {
             return Ok(());
         };
         let (shown, typed) = shown_and_typed(name);
@@ -499,13 +505,12 @@ impl Header {
     }
 
     /// The first column unread (and neither mapped to [`IGNORE`] nor kept)
-    /// whose folded name is one of `like`'s, with what `like` pairs it
-    /// with.
-    fn unread_like<'l>(
+    /// whose folded name `like` knows, with what `like` says of it.
+    fn unread_like<T>(
         &self,
         setup: &Setup,
-        like: &'l [(&str, &'l str)],
-    ) -> Option<(&String, &'l str)> {
+        like: impl Fn(&str) -> Option<T>,
+    ) -> Option<(&String, T)> {
         // A column mapped, or kept (`--keep`, `calibrate --by`), is known
         // to its user.
         let mapped = |name: &String| {
@@ -513,12 +518,7 @@ impl Header {
         };
         (self.names.iter().zip(&self.columns))
             .filter(|(name, c)| matches!(c, Column::Ignored) && !mapped(name))
-            .find_map(|(name, _)| {
-                let folded = columns::folded(name);
-                (like.iter())
-                    .find(|(n, _)| *n == folded)
-                    .map(|(_, with)| (name, *with))
-            })
+            .find_map(|(name, _)| like(&columns::folded(name)).map(|with| (name, with)))
     }
 
     /// Whether a column is `column`.

@@ -68,7 +68,7 @@ impl Input {
         self.bytes.clear();
         self.ends.clear();
         self.records.clear();
-        self.stop = None;
+        (self.stop, self.ended) = (None, false);
         while !self.ended && self.records.len() < rows && self.bytes.len() < PIECE_BYTES {
             let (bytes, ends) = (self.bytes.len(), self.ends.len());
             match records.next(&mut self.bytes, &mut self.ends, true) {
@@ -157,7 +157,6 @@ pub(crate) fn stream<R: BufRead, T: Default + Send>(
             if !ended && sent - taken < most_in_flight {
                 // Read the next piece (on this thread) and send it to the pool.
                 let mut piece = spare.pop().unwrap_or_default();
-                piece.input.ended = false;
                 piece.input.read(records, piece_rows);
                 ended = piece.input.ended;
                 let (done, number) = (done.clone(), sent);

@@ -69,14 +69,14 @@ impl Tally {
                 whole + size
             ));
         }
-        let estimated = self.estimated;
-        if estimated > 0 {
+        if self.estimated > 0 {
             let none = match zero {
                 0 => String::new(),
                 _ => format!(" ({zero} whose hit_spin_rate of 0 is none measured)"),
             };
             parts.push(format!(
-                "spin estimated (Nathan's relation) on {estimated} of {flown} rows{none}"
+                "spin estimated (Nathan's relation) on {} of {flown} rows{none}",
+                self.estimated
             ));
         }
         if self.sprayed > 0 {
