@@ -100,9 +100,10 @@ pub enum Command {
         #[arg(long, requires = "batch")]
         summary: bool,
         /// With --batch: read the file's COLUMN as NAME (a column name that
-        /// --batch --help lists, or a key of `homerun keys`), e.g. --column
-        /// launch_speed=EV; repeatable.
-        #[arg(long, value_name = "NAME=COLUMN", requires = "batch")]
+        /// --batch --help lists, or a key of `homerun keys` with the unit of
+        /// its bare numbers, COLUMN:UNIT), e.g. --column launch_speed=EV or
+        /// --column environment.temperature=temp:F; repeatable.
+        #[arg(long, value_name = "NAME=COLUMN[:UNIT]", requires = "batch")]
         column: Vec<String>,
         /// With --batch: also write the summary as JSON to FILE (atomically),
         /// its numbers in the units of --units.
@@ -174,9 +175,10 @@ pub enum Command {
         #[arg(long, requires = "batch")]
         summary: bool,
         /// With --batch: read the file's COLUMN as NAME (a column name that
-        /// --batch --help lists, or a key of `homerun keys`), e.g. --column
-        /// launch_speed=EV; repeatable.
-        #[arg(long, value_name = "NAME=COLUMN", requires = "batch")]
+        /// --batch --help lists, or a key of `homerun keys` with the unit of
+        /// its bare numbers, COLUMN:UNIT), e.g. --column launch_speed=EV or
+        /// --column environment.temperature=temp:F; repeatable.
+        #[arg(long, value_name = "NAME=COLUMN[:UNIT]", requires = "batch")]
         column: Vec<String>,
         /// With --batch: also write the summary as JSON to FILE (atomically),
         /// its numbers in the units of --units.

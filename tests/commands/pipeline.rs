@@ -95,7 +95,7 @@ fn a_file_without_a_launch_column_is_refused_with_the_names_nearest() {
         "-",
         "--json",
         "--column",
-        "environment.temperature=temp",
+        "environment.temperature=temp:C",
     ];
     let (out, err, status) = run(&args, text.as_bytes());
     assert_eq!(status, 0, "{err}");

@@ -101,9 +101,10 @@ fn a_spray_angle_no_column_reads_is_refused_until_mapped() {
 
 /// A weather column of its own name (`temperature`, `wind_speed`) that no
 /// column reads: every row would fly in the standard air, so the file is
-/// refused naming the key to map it to and its unit. Mapped, its cells are
-/// read as that key's (a bare number SI, a cell with its unit in it);
-/// `--column ignore=COLUMN` says it is meant to go unread.
+/// refused naming the key to map it to and the units it takes. Mapped with
+/// its unit, its cells are read as that key's (a bare number in that unit,
+/// a cell with its unit in it); `--column ignore=COLUMN` says it is meant
+/// to go unread.
 #[test]
 fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
     let text = "launch_speed,launch_angle,temperature,wind_speed\n105,28,75F,0\n";
@@ -114,19 +115,22 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
         err.contains(
             "column `temperature` looks like weather, but no column reads it, so every row \
              would fly in its park's standard air (or the preset's): map it to its key, \
-             --column environment.temperature=temperature (bare numbers in °C, or in another \
-             unit as --column environment.temperature=temperature:UNIT)"
+             --column environment.temperature=temperature:UNIT with the unit of its bare \
+             numbers (C, °C, F, °F, K)"
         ) && err.contains("--column ignore=temperature to fly without it"),
         "{err}"
     );
-    let temperature = "environment.temperature=temperature";
+    let temperature = "environment.temperature=temperature:C";
     let (_, err, status) = run(
         &["fly", "--batch", "-", "--column", temperature],
         text.as_bytes(),
     );
     assert_eq!(status, 2, "{err}");
     assert!(
-        err.contains("--column environment.wind=wind_speed (bare numbers in m/s"),
+        err.contains(
+            "--column environment.wind=wind_speed:UNIT with the unit of its bare \
+             numbers (m/s, km/h, mph, ft/s)"
+        ),
         "{err}"
     );
     // Mapped: 75 °F is read as it says, and the ball carries farther than
@@ -143,13 +147,15 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
             temperature,
             "--column",
             wind,
+            "--set",
+            "environment.wind_direction=0",
         ];
         let (out, err, status) = run(&args, input.as_bytes());
         assert_eq!(status, 0, "{err}");
         let row: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
         row["flight"]["range"].as_f64().unwrap()
     };
-    let mapped = range(text, temperature, "environment.wind=wind_speed");
+    let mapped = range(text, temperature, "environment.wind=wind_speed:mph");
     let ignored = range(text, "ignore=temperature", "ignore=wind_speed");
     assert!(mapped > ignored + 0.5, "{mapped} {ignored}");
     let in_fahrenheit = "environment.temperature=temperature:F";
@@ -175,4 +181,110 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
         assert_eq!(status, 2, "{err}");
         assert!(err.contains(needle), "{err}");
     }
+}
+
+/// Another column mapped to a number key of more units than one, without
+/// its unit: read as SI, a 55 °F day would pass for 55 °C and a 50-mph
+/// launch for 50 m/s, both in range. The mapping is refused until it says
+/// the unit; with it, a bare number flies as the same number with that
+/// unit in its cell.
+#[test]
+fn a_key_column_mapped_without_its_unit_is_refused() {
+    let text = "EV,LA,temp\n50,25,55\n";
+    for (mapping, needle) in [
+        (
+            "launch.speed=EV",
+            "--column launch.speed=EV: say the unit of its bare numbers, --column \
+             launch.speed=EV:UNIT with UNIT one of m/s, km/h, mph, ft/s (a bare number is read \
+             in m/s only in a column named launch.speed)",
+        ),
+        (
+            "environment.temperature=temp",
+            "UNIT with UNIT one of C, °C, F, °F, K (a bare number is read in °C",
+        ),
+    ] {
+        let mut args = vec!["fly", "--batch", "-", "--column", mapping];
+        args.extend(["--column", "launch.angle=LA:deg", "--column"]);
+        args.push(match mapping.starts_with("launch") {
+            true => "ignore=temp",
+            false => "launch.speed=EV:mph",
+        });
+        let (out, err, status) = run(&args, text.as_bytes());
+        assert_eq!(status, 2, "{err}");
+        assert!(out.is_empty() && err.contains(needle), "{err}");
+    }
+    let flown = |input: &str, speed: &str| {
+        let args = [
+            "fly",
+            "--batch",
+            "-",
+            "--json",
+            "--column",
+            speed,
+            "--column",
+            "launch.angle=LA:deg",
+            "--column",
+            "ignore=temp",
+        ];
+        let (out, err, status) = run(&args, input.as_bytes());
+        assert_eq!(status, 0, "{err}");
+        let row: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+        (
+            row["launch"]["speed"].as_f64().unwrap(),
+            row["flight"]["range"].as_f64().unwrap(),
+        )
+    };
+    let (speed, range) = flown(text, "launch.speed=EV:mph");
+    assert_eq!(speed, 50.0 * 0.44704);
+    assert_eq!(
+        (speed, range),
+        flown("EV,LA,temp\n50mph,25,55\n", "launch.speed=EV:mph")
+    );
+    // A cell with its own unit keeps it, whatever the mapping's.
+    assert_eq!(
+        flown("EV,LA,temp\n80.4672km/h,25,55\n", "launch.speed=EV:mph").0,
+        speed
+    );
+}
+
+/// A wind's speed mapped from another column with nothing saying where it
+/// blows: every row's wind would blow toward centre field. Refused until a
+/// column or `--set` gives the direction.
+#[test]
+fn a_mapped_wind_without_its_direction_is_refused() {
+    let text = "launch_speed,launch_angle,wind_speed,wind_toward\n100,28,10,90\n";
+    let wind = ["--column", "environment.wind=wind_speed:mph"];
+    let run_with = |extra: &[&str]| {
+        let mut args = vec!["fly", "--batch", "-", "--json"];
+        args.extend(wind);
+        args.extend(extra);
+        run(&args, text.as_bytes())
+    };
+    let (out, err, status) = run_with(&["--column", "ignore=wind_toward"]);
+    assert_eq!(status, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains(
+            "--column environment.wind=wind_speed:mph: no column says where that wind blows, so \
+             every row's would blow toward centre field: map one, --column \
+             environment.wind_direction=COLUMN:UNIT"
+        ) && err.contains("--set environment.wind_direction=0 for centre field"),
+        "{err}"
+    );
+    let direction = |(out, err, status): (String, String, i32)| {
+        assert_eq!(status, 0, "{err}");
+        let row: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+        row["flight"]["direction"].as_f64().unwrap()
+    };
+    let set = [
+        "--column",
+        "ignore=wind_toward",
+        "--set",
+        "environment.wind_direction=0",
+    ];
+    let mapped = ["--column", "environment.wind_direction=wind_toward:deg"];
+    // Toward centre field the ball keeps its line; blowing toward right
+    // field (+90°) it is carried that way.
+    let (centre, right) = (direction(run_with(&set)), direction(run_with(&mapped)));
+    assert!(centre.abs() < 1e-9 && right > 0.01, "{centre} {right}");
 }

@@ -165,6 +165,17 @@ const WEATHER_LIKE: [(&str, &str); 17] = [
     ("airdensity", "environment.air_density"),
 ];
 
+/// The number key a column named `name` gives, as `homerun keys` has it
+/// (`launch.speed`, `environment.temperature`): `None` for the table's
+/// columns, which have their own units, and for text keys.
+fn number_key(name: &str) -> Option<&'static Key> {
+    match column_of(name) {
+        Column::Input(key) => Scene::key(key).ok(),
+        Column::Launch(index, Unit::Si) => Scene::key(LAUNCH_KEYS[index]).ok(),
+        _ => None,
+    }
+}
+
 /// Refuses a unit on a mapping (`--column NAME=COLUMN:UNIT`) that is not
 /// a number key's, or not a unit of its quantity.
 fn check_unit(name: &str, column: &str, unit: &str) -> Result<(), String> {
@@ -174,11 +185,7 @@ fn check_unit(name: &str, column: &str, unit: &str) -> Result<(), String> {
         escape_cut(column, 40),
         escape_cut(unit, 20)
     );
-    let key = match column_of(name) {
-        Column::Input(key) => Scene::key(key).ok(),
-        _ => None,
-    };
-    let Some(key) = key else {
+    let Some(key) = number_key(name) else {
         return Err(format!(
             "{mapping}: a unit is given only to a key's column (`homerun keys`); the table's \
              columns have their own"
@@ -194,6 +201,28 @@ fn check_unit(name: &str, column: &str, unit: &str) -> Result<(), String> {
             units::accepted(quantity, quantity.si_symbol())
         )),
     }
+}
+
+/// Refuses a mapping of another column to a number key whose quantity has
+/// more units than one (`--column environment.temperature=temp`) where
+/// the mapping does not say which its bare numbers are in: read as SI, a
+/// 55 °F day would pass for 55 °C and 10 mph for 10 m/s, in range.
+fn check_unit_said(name: &str, column: &str) -> Result<(), String> {
+    let Some(key) = number_key(name) else {
+        return Ok(());
+    };
+    let quantity = key.quantity();
+    if quantity.typed_units().len() < 2 {
+        return Ok(());
+    }
+    let (name, column) = (escape_cut(name, 40), escape_cut(column, 40));
+    Err(format!(
+        "--column {name}={column}: say the unit of its bare numbers, --column \
+         {name}={column}:UNIT with UNIT one of {} (a bare number is read in {} only in a \
+         column named {name})",
+        units::accepted(quantity, quantity.si_symbol()),
+        quantity.si_symbol()
+    ))
 }
 
 /// A column's name as a message shows it, and as the shell takes it.
@@ -240,8 +269,10 @@ impl Header {
                 Some((before, unit)) if !names.iter().any(|n| n == column) => (before, Some(unit)),
                 _ => (column.as_str(), None),
             };
-            if let Some(unit) = unit {
-                check_unit(name, column, unit)?;
+            match unit {
+                Some(unit) => check_unit(name, column, unit)?,
+                None if column != name => check_unit_said(name, column)?,
+                None => {}
             }
             mapping.push((name, column, unit));
             if !names.iter().any(|n| n == column) {
@@ -430,6 +461,7 @@ impl Header {
         }
         self.check_direction(setup)?;
         self.check_weather(setup)?;
+        self.check_wind(setup)?;
         if setup.solve_swings {
             let missing: Vec<&str> = (NEEDED_FOR_SWINGS.iter().copied())
                 .filter(|needed| {
@@ -494,13 +526,43 @@ impl Header {
             return Ok(());
         };
         let (shown, typed) = shown_and_typed(name);
-        let unit = Scene::key(key).map_or("", |k| k.unit);
+        let mapped = match Scene::key(key).map(|k| k.quantity()) {
+            Ok(quantity) if quantity.typed_units().len() > 1 => format!(
+                "--column {key}={typed}:UNIT with the unit of its bare numbers ({})",
+                units::accepted(quantity, quantity.si_symbol())
+            ),
+            _ => format!(
+                "--column {key}={typed} (bare numbers in {})",
+                Scene::key(key).map_or("", |k| k.unit)
+            ),
+        };
         Err(format!(
             "{}: column `{shown}` looks like weather, but no column reads it, so every row \
              would fly in its park's standard air (or the preset's): map it to its key, \
-             --column {key}={typed} (bare numbers in {unit}, or in another unit as --column \
-             {key}={typed}:UNIT), or --column {IGNORE}={typed} to fly without it",
+             {mapped}, or --column {IGNORE}={typed} to fly without it",
             self.line
+        ))
+    }
+
+    /// Refuses another column mapped to the wind's speed with no
+    /// direction for it (no column and no `--set`): every row's wind would
+    /// blow toward centre field. A file's own `environment.wind` column
+    /// keeps the key's documented default.
+    fn check_wind(&self, setup: &Setup) -> Result<(), String> {
+        const WIND: &str = "environment.wind";
+        const TOWARD: &str = "environment.wind_direction";
+        let Some((_, column)) = (setup.mapping.iter()).find(|(n, c)| n == WIND && c != WIND) else {
+            return Ok(());
+        };
+        if self.columns.contains(&Column::Input(TOWARD)) || setup.gave(TOWARD) {
+            return Ok(());
+        }
+        Err(format!(
+            "--column {WIND}={}: no column says where that wind blows, so every row's would \
+             blow toward centre field: map one, --column {TOWARD}=COLUMN:UNIT (where it blows \
+             toward, 0 centre field, + toward right field; a compass bearing it blows from is \
+             not that), or --set {TOWARD}=0 for centre field",
+            escape_cut(column, 40)
         ))
     }
 

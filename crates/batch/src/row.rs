@@ -247,7 +247,13 @@ fn read_cells(
     let mut converted = false;
     for &i in &header.read {
         let (column, name) = (&header.columns[i], &header.names[i]);
-        let value = cell(i);
+        // A bare number in the unit its mapping gave the column (only a
+        // key's column is given one).
+        let with_unit = match &header.cell_units[i] {
+            Some(unit) if cell(i).parse::<f64>().is_ok() => Some(format!("{}{unit}", cell(i))),
+            _ => None,
+        };
+        let value = with_unit.as_deref().unwrap_or(cell(i));
         let number = || {
             value.parse::<f64>().map_err(|_| {
                 format!(
@@ -301,12 +307,6 @@ fn read_cells(
                     given.note(input.name);
                 }
                 sidespin_given |= input.name == "launch.sidespin";
-                // A bare number in the unit its mapping gave the column.
-                let with_unit = match &header.cell_units[i] {
-                    Some(unit) if value.parse::<f64>().is_ok() => Some(format!("{value}{unit}")),
-                    _ => None,
-                };
-                let value = with_unit.as_deref().unwrap_or(value);
                 match input.numeric {
                     Some(key) => set_number(&mut batch, scene, (key, input.air), value),
                     None => batch.set_text(scene, input.name, value),
