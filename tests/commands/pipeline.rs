@@ -550,11 +550,20 @@ fn a_league_team_and_an_undefined_side_are_answered_at_no_park() {
         "{spins:?}"
     );
     assert!(
-        err.contains("1 row whose batter's side is given as not known"),
+        err.contains("1 row whose batter's side is not known (no stand, or Undefined or Switch)"),
         "{err}"
     );
     assert!(
         err.contains("2 rows whose home_team no park answers to (LIN_POT) at no park"),
+        "{err}"
+    );
+    // No side at all is the same average, counted; a row that gives its
+    // spin estimates none and is not.
+    let no_side = "launch_speed,launch_angle,spin_rpm\n95,28,\n95,28,2500\n";
+    let (_, err, status) = run(&["fly", "--batch", "-"], no_side.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    assert!(
+        err.contains("1 row whose batter's side is not known"),
         "{err}"
     );
     let nonsense = text.replace("Undefined", "X9");

@@ -288,3 +288,51 @@ fn a_mapped_wind_without_its_direction_is_refused() {
     let (centre, right) = (direction(run_with(&set)), direction(run_with(&mapped)));
     assert!(centre.abs() < 1e-9 && right > 0.01, "{centre} {right}");
 }
+
+/// Savant's columns that look like a launch value and are something else
+/// (`launch_speed_angle`, Savant's contact class 1–6; `bat_speed`;
+/// `attack_angle`) are never suggested for the launch, and are refused
+/// as one: mapped, every ball would fly at 1–6° or at the bat's speed.
+/// A name that holds the one looked for (`exit_angle`) is suggested first.
+#[test]
+fn a_lookalike_column_is_never_suggested_or_read_as_the_launch() {
+    let text = "EV,bat_speed,launch_speed_angle,attack_angle,exit_angle,stand\n100,70,6,10,28,R\n";
+    let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert_eq!(status, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains("did you mean `exit_angle` or `EV`? (--column NAME=COLUMN maps one)"),
+        "{err}"
+    );
+    for (mapping, what) in [
+        (
+            "launch_angle=launch_speed_angle",
+            "`launch_speed_angle` is Savant's contact class (1 weak to 6 barrel), not launch_angle",
+        ),
+        (
+            "launch.speed=bat_speed:mph",
+            "`bat_speed` is the bat's speed (bat tracking), not launch.speed",
+        ),
+        (
+            "launch_angle=attack_angle",
+            "`attack_angle` is the bat's path at contact (bat tracking), not launch_angle",
+        ),
+    ] {
+        let args = ["fly", "--batch", "-", "--column", mapping];
+        let (out, err, status) = run(&args, text.as_bytes());
+        assert_eq!(status, 2, "{err}");
+        assert!(out.is_empty() && err.contains(what), "{err}");
+    }
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--column",
+        "launch_speed=EV",
+        "--column",
+        "launch_angle=exit_angle",
+    ];
+    let (out, err, status) = run(&args, text.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    assert_eq!(out.lines().count(), 2);
+}

@@ -76,8 +76,6 @@ pub(crate) struct SavantCells {
     /// The landing bearing (rad), where a column gives it.
     pub bearing: Option<f64>,
     pub side: Option<Side>,
-    /// The side was given as not known ("Undefined", "Switch").
-    pub side_unknown: bool,
     /// The index of the row's park in the list.
     pub park: Option<usize>,
     /// Statcast's distance (m).
@@ -164,10 +162,7 @@ impl SavantCells {
                     // Trackman's and Yakkertech's words for a side not
                     // recorded: the estimate averages the two sides
                     // (`Side::sign`), and the summary counts the rows.
-                    "undefined" | "unknown" | "switch" | "s" | "b" | "both" => {
-                        self.side_unknown = true;
-                        return Ok(());
-                    }
+                    "undefined" | "unknown" | "switch" | "s" | "b" | "both" => return Ok(()),
                     _ => {
                         return Err(format!(
                             "stand = {:?}: expected R or L (the batter's side)",

@@ -311,6 +311,33 @@ pub const TABLE: &[Entry] = &[
     ),
 ];
 
+/// Savant's columns whose names look like a launch value's and that are
+/// something else, with what they are: never suggested for one, and
+/// refused as one (`--column launch_angle=launch_speed_angle` would fly
+/// every ball at 1–6°).
+pub const LOOKALIKES: [(&str, &str); 9] = [
+    (
+        "launch_speed_angle",
+        "Savant's contact class (1 weak to 6 barrel)",
+    ),
+    ("bat_speed", "the bat's speed (bat tracking)"),
+    ("attack_angle", "the bat's path at contact (bat tracking)"),
+    ("swing_length", "the bat's path length (bat tracking)"),
+    ("release_speed", "the pitch's speed at release"),
+    ("effective_speed", "the pitch's speed as the batter sees it"),
+    ("release_spin_rate", "the pitch's spin"),
+    ("spin_axis", "the pitch's spin axis"),
+    ("release_extension", "the pitcher's release extension"),
+];
+
+/// What a lookalike column ([`LOOKALIKES`]) is, if `name` is one.
+pub fn lookalike(name: &str) -> Option<&'static str> {
+    let name = folded(name);
+    (LOOKALIKES.iter())
+        .find(|(n, _)| folded(n) == name)
+        .map(|(_, what)| *what)
+}
+
 /// The columns a row needs for its swing to be solved.
 pub const NEEDED_FOR_SWINGS: [&str; 7] = ["bat_speed", "vx0", "vy0", "vz0", "ax", "ay", "az"];
 
@@ -388,6 +415,18 @@ pub fn column_of(name: &str) -> Column {
     }
 }
 
+/// How alike two folded names are, 0 to 1: Jaro–Winkler's, or where one
+/// holds the other (`exitangle` and `angle`, which Jaro's window misses)
+/// 0.7 and more as it holds more of it.
+fn similarity(a: &str, b: &str) -> f64 {
+    let (short, long) = if a.len() <= b.len() { (a, b) } else { (b, a) };
+    let held = match short.len() >= 4 && long.contains(short) {
+        true => 0.7 + 0.3 * short.len() as f64 / long.len() as f64,
+        false => 0.0,
+    };
+    strsim::jaro_winkler(a, b).max(held)
+}
+
 /// The header's names nearest `wanted` (any of an entry's names), best
 /// first: for "did you mean".
 pub fn nearest<'a>(wanted: &[&str], names: &'a [String]) -> Vec<&'a str> {
@@ -396,7 +435,7 @@ pub fn nearest<'a>(wanted: &[&str], names: &'a [String]) -> Vec<&'a str> {
         .map(|name| {
             let score = wanted
                 .iter()
-                .map(|w| strsim::jaro_winkler(&folded(w), &folded(name)))
+                .map(|w| similarity(&folded(w), &folded(name)))
                 .fold(0.0, f64::max);
             (score, name.as_str())
         })

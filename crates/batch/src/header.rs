@@ -269,6 +269,19 @@ impl Header {
                 Some((before, unit)) if !names.iter().any(|n| n == column) => (before, Some(unit)),
                 _ => (column.as_str(), None),
             };
+            let launch_value = match column_of(name) {
+                Column::Input(key) => key.starts_with("launch."),
+                other => matches!(other, Column::Launch(..)),
+            };
+            if let Some(what) = columns::lookalike(column).filter(|_| launch_value) {
+                return Err(format!(
+                    "--column {}={}: `{}` is {what}, not {}",
+                    escape_cut(name, 40),
+                    escape_cut(column, 40),
+                    escape_cut(column, 40),
+                    escape_cut(name, 40)
+                ));
+            }
             match unit {
                 Some(unit) => check_unit(name, column, unit)?,
                 None if column != name => check_unit_said(name, column)?,
@@ -434,9 +447,10 @@ impl Header {
                 looked.push(format!("{} or {}", names.join(", "), LAUNCH_KEYS[i]));
                 wanted.extend(names.iter().copied());
             }
-            // Names the table does not read, nearest those wanted.
+            // Names the table does not read, nearest those wanted, but for
+            // those that are something else.
             let unread: Vec<String> = (self.names.iter().zip(&self.columns))
-                .filter(|(_, c)| matches!(c, Column::Ignored))
+                .filter(|(n, c)| matches!(c, Column::Ignored) && columns::lookalike(n).is_none())
                 .map(|(n, _)| n.clone())
                 .collect();
             let near = columns::nearest(&wanted, &unread);

@@ -45,7 +45,8 @@ pub(crate) struct Job {
     pub(crate) away: Option<Away>,
     /// Its season: `game_year` (or `season`), else its date's year.
     pub(crate) season: Option<i32>,
-    /// Its batter's side was given as not known ([`SavantCells::side_unknown`]).
+    /// Its spin was estimated without its batter's side (no `stand`, or a
+    /// side not recorded): either side's average.
     pub(crate) side_unknown: bool,
     /// A fence was given (the preset's `[field]`, `field.*` by --set or a
     /// column): a row at no park is judged there.
@@ -436,7 +437,9 @@ fn read_cells(
     (job.away, job.season) = (away, savant.season());
     job.contact = contact;
     job.called = savant.called;
-    job.side_unknown = savant.side_unknown;
+    // The side moves the estimate (Nathan's ±849 rpm of sidespin): a row
+    // estimated without one, no `stand` or a side not recorded, is counted.
+    job.side_unknown = job.launch.estimates_spin() && savant.side.is_none();
     job.tracked = tracked;
     job.spray_at_plate = savant.at_plate() && !header.direction_given;
     (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);

@@ -154,8 +154,8 @@ impl Tally {
         }
         if self.side_unknown > 0 {
             parts.push(format!(
-                "{} row{} whose batter's side is given as not known (Undefined, Switch) spin-estimated \
-                 as either side's average",
+                "{} row{} whose batter's side is not known (no stand, or Undefined or Switch) \
+                 spin-estimated as either side's average",
                 self.side_unknown,
                 plural(self.side_unknown)
             ));
