@@ -668,3 +668,18 @@ fn the_hardest_hit_balls_of_2024_are_reached_in_the_swing_plane() {
         "{err}"
     );
 }
+
+/// A file whose rows have no `bat_speed` has no swing to solve: the line
+/// says none was tracked (not "0 of 0, 0.0 %") and names no bat.
+#[test]
+fn a_file_with_no_tracked_swing_says_so() {
+    let text = "launch_speed,launch_angle,bat_speed,vx0,vy0,vz0,ax,ay,az\n\
+                100,25,,5,-130,-5,-10,25,-20\n";
+    let (status, _, err) = run_homerun(&["hit", "--batch", "-"], Some(text));
+    assert_eq!(status, Some(0), "{err}");
+    assert!(
+        err.contains("swings: none tracked; not solved: 1 no bat_speed"),
+        "{err}"
+    );
+    assert!(!err.contains("bat: ;"), "{err}");
+}

@@ -326,11 +326,15 @@ impl Tally {
             return None;
         }
         let solved = swings.model_efficiency.len();
-        let mut line = format!(
-            "swings: solved {solved} of {tracked} tracked ({:.1} %, {} of them off the sweet spot)",
-            100.0 * solved as f64 / tracked.max(1) as f64,
-            swings.off_sweet_spot
-        );
+        let mut line = match tracked {
+            0 => "swings: none tracked".to_owned(),
+            _ => format!(
+                "swings: solved {solved} of {tracked} tracked ({:.1} %, {} of them off the sweet \
+                 spot)",
+                100.0 * solved as f64 / tracked as f64,
+                swings.off_sweet_spot
+            ),
+        };
         if tracked > 0 {
             let data = &swings.data_efficiency;
             let _ = write!(
@@ -365,7 +369,10 @@ impl Tally {
                 e[1], e[0], e[2]
             );
         }
-        let _ = write!(line, "; bat: {}", bats_named(&swings.bats).join(", "));
+        let bats = bats_named(&swings.bats);
+        if !bats.is_empty() {
+            let _ = write!(line, "; bat: {}", bats.join(", "));
+        }
         let reasons: Vec<String> = (swings.unsolved.iter().map(|(why, n)| format!("{n} {why}")))
             .chain(swings.untracked.iter().map(|(why, n)| format!("{n} {why}")))
             .collect();
