@@ -51,9 +51,23 @@ pub(super) fn fly(
         }
         return pretty(&json);
     }
+    // A batted ball takes what it was not given from its swing's impact:
+    // say which, as a launch given whole says nothing.
+    let given = scene.launch;
+    let taken: Vec<&str> = [
+        ("speed", given.speed),
+        ("angle", given.angle),
+        ("spin", given.spin),
+    ]
+    .into_iter()
+    .filter_map(|(name, value)| value.is_none().then_some(name))
+    .collect();
     let from = match scene.kind {
-        SceneKind::Swing => " (from the swing's impact)",
-        SceneKind::BattedBall => "",
+        SceneKind::Swing => " (from the swing's impact)".to_owned(),
+        SceneKind::BattedBall if !taken.is_empty() => {
+            format!("; {} from the swing's impact", taken.join(" and "))
+        }
+        SceneKind::BattedBall => String::new(),
     };
     let air = scene.environment.air();
     let unlanded = unlanded.map(|why| {

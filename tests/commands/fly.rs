@@ -105,6 +105,39 @@ fn missing_launch_keys_come_from_the_swing_in_any_order() {
     assert_eq!(launch.angle, 0.5);
 }
 
+/// The launch line says which values came from the swing, so that a spin
+/// no one typed is not taken for one given (an analyst's 105 mph at 28°
+/// flies the fastball impact's 1832 rpm, not an estimate).
+#[test]
+fn the_launch_line_names_what_came_from_the_swing() {
+    let first_line = |args: &[&str]| {
+        let (status, out, err) = common::run_homerun(args, None);
+        assert_eq!(status, Some(0), "{err}");
+        out.lines().next().unwrap().to_owned()
+    };
+    let speed_angle = [
+        "fly",
+        "--set",
+        "launch.speed=105mph",
+        "--set",
+        "launch.angle=28deg",
+    ];
+    let line = first_line(&speed_angle);
+    assert!(
+        line.ends_with("(28.0°); spin from the swing's impact"),
+        "{line}"
+    );
+    let line = first_line(&["fly", "--set", "launch.angle=0.5"]);
+    assert!(
+        line.ends_with("; speed and spin from the swing's impact"),
+        "{line}"
+    );
+    let line = first_line(&["fly", "--preset", "fly-ball"]);
+    assert!(!line.contains("from the swing"), "{line}");
+    let line = first_line(&["fly"]);
+    assert!(line.ends_with(" (from the swing's impact)"), "{line}");
+}
+
 #[test]
 fn a_batted_ball_preset_round_trips_through_its_toml() {
     let preset = homerun::preset::load("fly-ball", None).unwrap();
