@@ -123,17 +123,21 @@ pub fn run(
     if json {
         let value = json!({ "by": by, "groups": fits, "rows": read.rows,
             "measured": read.measured.len(), "grounders": read.grounders,
-            "skipped": skipped(&read) });
+            "in_preset_air": read.in_preset_air, "skipped": skipped(&read) });
         return Ok((super::pretty(&value), rows));
     }
     let mut text = format!(
-        "by {}: {} groups, {} of {} rows measured (launched at 10° or more, with a distance and hit coordinates; {} skipped)\n",
+        "by {}: {} group{}, {} of {} rows measured (launched at 10° or more, with a distance and hit coordinates; {} skipped)\n",
         escape_cut(by, 40),
         groups.len(),
+        if groups.len() == 1 { "" } else { "s" },
         read.measured.len(),
         read.rows,
         skipped(&read)
     );
+    if let Some(air) = preset_air(&read) {
+        text += &format!("air: {air}\n");
+    }
     for line in lines {
         text += &line;
         text.push('\n');
@@ -246,6 +250,7 @@ fn run_one(
             "grounders": read.grounders,
             "implausible": read.implausible,
             "without_spray": read.without_spray,
+            "in_preset_air": read.in_preset_air,
             "skipped": skipped(&read),
             "spin_from_swing": read.spin_from_swing,
             "fit": fit,
@@ -321,6 +326,19 @@ pub(super) fn read_source<T>(
     read(input).map_err(failed)
 }
 
+/// "the preset's air on 226 of 226 rows (at no park: …)", where rows flew
+/// in no park's air: the fit takes up that air's level with the ball's.
+fn preset_air(read: &Measurements) -> Option<String> {
+    (read.in_preset_air > 0).then(|| {
+        format!(
+            "the preset's air on {} of {} rows (at no park: no home_team or --park, a team no \
+             park answers to, or played away), whose level the fit takes up with the ball's",
+            read.in_preset_air,
+            read.measured.len()
+        )
+    })
+}
+
 fn text(
     read: &Measurements,
     fit: &Fit,
@@ -357,6 +375,9 @@ fn text(
             skipped(read)
         ),
     )];
+    if let Some(air) = preset_air(read) {
+        lines.push(("air", air));
+    }
     if let Some(from_swing) = read.spin_from_swing {
         let spin = format!(
             "the swing's impact on {from_swing} rows (solved from bat tracking), Nathan's relation on {}",

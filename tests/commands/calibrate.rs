@@ -108,6 +108,9 @@ fn calibrate_fits_the_sample_and_saves_a_preset_that_lands_on_the_median() {
     assert_eq!(status, Some(0), "{err}");
     let v: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["measured"], 239);
+    // Every row in its park's air (home_team) but Texas's of 2019, at
+    // Globe Life Park, which no bundled park is: the preset's air.
+    assert_eq!(v["in_preset_air"], 8);
     let fit = &v["fit"];
     // Measured (docs/accuracy.md): 1.0069 ± 0.0059, the median error from
     // +0.4 m to 0; the lift left as it is (--drag-only).
@@ -222,6 +225,15 @@ fn a_trackman_file_with_hang_times_fits_drag_and_lift() {
     assert_eq!(value["rows"], 40);
     assert_eq!(value["grounders"], 21);
     assert_eq!(value["measured"], 19);
+    // No home_team: every row flies in the preset's air, and the text says
+    // the fit takes up that air's level.
+    assert_eq!(value["in_preset_air"], 19);
+    let (status, out, err) = homerun(dir.path(), &["calibrate", file]);
+    assert_eq!(status, Some(0), "{err}");
+    assert!(
+        out.contains("air      the preset's air on 19 of 19 rows (at no park:"),
+        "{out}"
+    );
     let fit = &value["fit"];
     assert!(fit["lift_scale"]["value"].is_f64(), "{fit}");
     // The fit lands both medians: distance and hang time.

@@ -45,6 +45,10 @@ pub struct Measurements {
     pub without_spray: usize,
     /// Fielded where no flight comes down (a spray no direction lands on).
     pub unlanded: usize,
+    /// Measured rows at no park (no `home_team`, an unknown one, or
+    /// played away) and no neutral site's elevation: flown in the preset's
+    /// air, whose level the fit then takes up.
+    pub in_preset_air: usize,
     pub outcome: Outcome,
 }
 
@@ -203,6 +207,8 @@ pub fn measured(
                 hang_time: job.hang_time,
                 apex: job.apex,
             };
+            let sited = job.park.is_some() || job.away.is_some_and(|a| a.air_elevation.is_some());
+            made.counts.in_preset_air += usize::from(!sited);
             made.measured.push((measured, group, job.swing_solved()));
         }
         piece.answered = made.measured.len();
@@ -219,6 +225,7 @@ pub fn measured(
         read.without_spray += counts.without_spray;
         read.implausible += counts.implausible;
         read.unlanded += counts.unlanded;
+        read.in_preset_air += counts.in_preset_air;
         implausible.append(&mut made.implausible);
         for (measured, group, from_swing) in made.measured.drain(..) {
             read.measured.push(measured);
