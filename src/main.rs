@@ -19,6 +19,7 @@ fn main() -> ExitCode {
     let default = Command::Tui {
         preset: "fastball".to_owned(),
         savant: None,
+        column: Vec::new(),
         theme: None,
     };
     let command = cli.command.as_ref().unwrap_or(&default);
@@ -33,9 +34,14 @@ fn main() -> ExitCode {
         Command::Tui {
             preset,
             savant,
+            column,
             theme,
-        } => explore(&cli, (preset, savant.as_deref()), theme.or(cli.theme))
-            .map(|ending| ExitCode::from(ending.exit_status())),
+        } => explore(
+            &cli,
+            (preset, savant.as_deref(), column),
+            theme.or(cli.theme),
+        )
+        .map(|ending| ExitCode::from(ending.exit_status())),
         command => cli::run(&cli, command),
     };
     match result {
@@ -59,7 +65,7 @@ fn refuse(error: &cli::UsageError) -> ExitCode {
 /// (`None`: detected).
 fn explore(
     cli: &Cli,
-    (preset, savant): (&str, Option<&str>),
+    (preset, savant, column): (&str, Option<&str>, &[String]),
     background: Option<homerun::tui::theme::Background>,
 ) -> Result<homerun::tui::Ending, cli::UsageError> {
     let (preset, dir) = cli::explorer_preset(cli, preset)?;
@@ -70,7 +76,7 @@ fn explore(
         return Err(homerun::tui::TuiError::NoTerminal.into());
     }
     let swings = match savant {
-        Some(file) => cli::savant_swings(cli, &preset, file)?,
+        Some(file) => cli::savant_swings(cli, &preset, (file, column))?,
         None => homerun::preset::compact::CompactPresets::new(),
     };
     let parks = cli::parks_dir(cli);

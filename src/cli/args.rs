@@ -402,6 +402,10 @@ pub enum Command {
         /// one as the scene.
         #[arg(long, value_name = "FILE")]
         savant: Option<String>,
+        /// With --savant: read the file's COLUMN as NAME, as fly --batch
+        /// --column does (e.g. --column launch_speed=EV); repeatable.
+        #[arg(long, value_name = "NAME=COLUMN[:UNIT]", requires = "savant")]
+        column: Vec<String>,
         /// The colours: dark or light, for the terminal's background
         /// (default: from COLORFGBG, else dark). NO_COLOR turns colour off.
         #[arg(long, value_name = "THEME")]

@@ -42,13 +42,18 @@ pub use surface::{MAX_GRID, SURFACE_FLIGHT_STEPS};
 pub use threads::{MAX_THREADS, check_thread_count};
 pub use usage::{Parsed, error_line, parse};
 
-/// `tui --savant FILE`: the file's solved swings as presets for the
-/// explorer's picker (from `preset`'s ball and bat), with a note of how
-/// many were solved. None solved is refused: there would be nothing to pick.
-pub fn savant_swings(cli: &Cli, preset: &Preset, file: &str) -> Result<CompactPresets, UsageError> {
+/// `tui --savant FILE [--column NAME=COLUMN]…`: the file's solved swings
+/// as presets for the explorer's picker (from `preset`'s ball and bat),
+/// its columns mapped as `fly --batch` maps them, with a note of how many
+/// were solved. None solved is refused: there would be nothing to pick.
+pub fn savant_swings(
+    cli: &Cli,
+    preset: &Preset,
+    (file, column): (&str, &[String]),
+) -> Result<CompactPresets, UsageError> {
     scene::check_path("--savant", file)?;
     let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
-    let mut setup = batch_run::setup(preset, &parks, (&[], None, &[]))?;
+    let mut setup = batch_run::setup(preset, &parks, (&[], None, column))?;
     let failed = |message: String| UsageError::Savant {
         input: crate::preset::escape_cut(file, 200),
         message,

@@ -435,6 +435,37 @@ fn tui_savant_solves_the_files_swings_and_refuses_a_file_without_them() {
     assert_eq!(written.lines().count(), 1, "{written}");
 }
 
+/// `tui --savant FILE --column NAME=COLUMN` maps a renamed column as `fly
+/// --batch` does: a file whose exit speed is `EV` is refused naming it,
+/// and opens its swings once mapped.
+#[test]
+fn tui_savant_maps_a_renamed_column() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
+    let text = std::fs::read_to_string(format!("{data}savant_swings.csv")).unwrap();
+    let (header, rows) = text.split_once('\n').unwrap();
+    let header: Vec<&str> = (header.split(','))
+        .map(|c| if c == "launch_speed" { "EV" } else { c })
+        .collect();
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("renamed.csv");
+    std::fs::write(&file, format!("{}\n{rows}", header.join(","))).unwrap();
+    let file = file.to_str().unwrap();
+    let mut session = Session::start(&["tui", "--savant", file], 100, 30);
+    assert_eq!(session.exit_code(), 2);
+    let written = String::from_utf8_lossy(&session.bytes.lock().unwrap()).into_owned();
+    assert!(
+        written.contains("no launch speed column") && written.contains("did you mean `EV`?"),
+        "{written}"
+    );
+    let args = ["tui", "--savant", file, "--column", "launch_speed=EV"];
+    let mut session = Session::start(&args, 100, 30);
+    session.wait_for("Open a swing (33)");
+    session.press("\u{1b}");
+    session.wait_for_gone("Open a swing (33)");
+    session.press("q");
+    assert_eq!(session.exit_code(), 0);
+}
+
 #[test]
 fn a_fifo_among_the_presets_leaves_the_picker_and_q_working() {
     // Reading a FIFO would block until a writer came: the picker must list
