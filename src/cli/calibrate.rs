@@ -31,7 +31,8 @@ pub struct Save<'a> {
 
 /// The rows a calibration read (every record) and how its batch went:
 /// what its exit status follows from ([`exit_status`]).
-pub(super) type Rows = (usize, Outcome);
+/// The third: the groups' presets `--save` could not write (each named).
+pub(super) type Rows = (usize, Outcome, usize);
 
 /// Runs `calibrate` on `source` ("-" for stdin), with `--by` each group
 /// apart: the text (or JSON) to print, and the rows read.
@@ -47,7 +48,7 @@ pub fn run(
     let read = read_source(source, save.as_ref(), |input| {
         batch::calibrate::measured(setup, input, grouped.as_ref(), &mut note)
     })?;
-    let rows = (read.rows, read.outcome);
+    let mut rows = (read.rows, read.outcome, 0);
     let Some(by) = by else {
         let text = run_one(setup, source, (save, read), lift, json, shown)?;
         return Ok((text, rows));
@@ -92,8 +93,11 @@ pub fn run(
                     description,
                     |s| apply(&fit, s),
                 ) {
-                    Ok(path) => path.map(|p| p.display().to_string()),
-                    Err(e) => Some(format!("not saved: {e}")),
+                    Ok(path) => path.map(|p| Ok(p.display().to_string())),
+                    Err(e) => {
+                        rows.2 += 1;
+                        Some(Err(format!("not saved: {e}")))
+                    }
                 }
             }
             None => None,
@@ -112,11 +116,17 @@ pub fn run(
             d(fit.before.median_absolute),
             d(fit.after.median_absolute),
             if fit.at_bounds().is_empty() { "" } else { "  (at a bound)" },
-            saved.as_ref().map_or(String::new(), |s| format!("  saved {s}"))
+            match &saved {
+                Some(Ok(path)) => format!("  saved {path}"),
+                Some(Err(why)) => format!("  {why}"),
+                None => String::new(),
+            }
         ));
         let mut value = json!({ "group": group, "rows": measured.len(), "fit": fit });
-        if let Some(saved) = saved {
-            value["saved"] = saved.into();
+        match saved {
+            Some(Ok(path)) => value["saved"] = path.into(),
+            Some(Err(why)) => value["not_saved"] = why.into(),
+            None => {}
         }
         fits.push(value);
     }
@@ -149,12 +159,19 @@ pub fn run(
 /// a row failed (each named as it was read; the fit is of the others) or
 /// reading stopped early, 0 otherwise. Rows without a launch, grounders
 /// and rows left out of the fit are counted, not failed.
-pub(super) fn exit_status((rows, outcome): Rows) -> ExitCode {
+pub(super) fn exit_status((rows, outcome, unsaved): Rows) -> ExitCode {
     if outcome.failed > 0 {
         note(&format!(
             "{} of {rows} rows failed and were skipped (exit status 1)",
             outcome.failed
         ));
+    }
+    if unsaved > 0 {
+        note(&format!(
+            "{unsaved} group{}'s preset not saved (named above; exit status 1)",
+            if unsaved == 1 { "" } else { "s" }
+        ));
+        return ExitCode::from(1);
     }
     ExitCode::from(outcome.exit_status())
 }

@@ -55,7 +55,7 @@ pub(super) fn run(
         if let Some(path) = &saved {
             value["saved"] = path.display().to_string().into();
         }
-        return Ok((super::pretty(&value), (rows, outcome)));
+        return Ok((super::pretty(&value), (rows, outcome, 0)));
     }
     let mut text = text(&fit, saved.as_deref(), shown);
     if outcome.failed + outcome.without_launch > 0 {
@@ -71,7 +71,7 @@ pub(super) fn run(
             outcome.without_launch
         );
     }
-    Ok((text, (rows, outcome)))
+    Ok((text, (rows, outcome, 0)))
 }
 
 fn text(fit: &ImpactFit, saved: Option<&std::path::Path>, shown: Shown) -> String {

@@ -201,6 +201,34 @@ fn calibrate_by_month_fits_each_month_as_its_rows_alone() {
     );
     assert_eq!(status, Some(0), "{err}");
     assert!(out.contains("saved"), "{out}");
+    // A group whose name no preset may take (a date with slashes, a
+    // batter's "Last, First") is fitted and named, its preset not written,
+    // and the exit status says so.
+    let args = [
+        "calibrate",
+        file,
+        "--by",
+        "player_name",
+        "--save",
+        "y",
+        "--json",
+    ];
+    let (status, out, err) = homerun(dir.path(), &args);
+    assert_eq!(status, Some(1), "{err}");
+    let value: Value = serde_json::from_str(&out).unwrap();
+    let unsaved: Vec<&Value> = (value["groups"].as_array().unwrap().iter())
+        .filter(|g| g["not_saved"].is_string())
+        .collect();
+    assert!(!unsaved.is_empty(), "{out}");
+    assert!(
+        unsaved
+            .iter()
+            .all(|g| g["saved"].is_null() && g["fit"].is_object())
+    );
+    assert!(
+        err.contains("preset not saved (named above; exit status 1)"),
+        "{err}"
+    );
     // A column the file lacks is named.
     let (status, _, err) = homerun(dir.path(), &["calibrate", file, "--by", "nope"]);
     assert_eq!(status, Some(2), "{err}");
