@@ -200,18 +200,17 @@ pub enum Command {
             requires = "batch"
         )]
         spray: SprayArg,
-        /// With --batch: where each row's spin comes from: `nathan`,
-        /// Nathan's relation from its launch angle and direction; `swing`, the
-        /// impact of its swing solved from bat tracking (bat_speed and the pitch's
-        /// kinematics, as `hit --batch`), and Nathan's relation where that swing
-        /// is missing or not solved.
-        #[arg(
-            long,
-            value_name = "FROM",
-            default_value = "nathan",
-            requires = "batch"
-        )]
-        spin: SpinArg,
+        /// Where the spin comes from. With --batch, each row's: `nathan`
+        /// (the default), Nathan's relation from its launch angle and
+        /// direction; `swing`, the impact of its swing solved from bat
+        /// tracking (bat_speed and the pitch's kinematics, as `hit --batch`),
+        /// and Nathan's relation where that swing is missing or not solved.
+        /// One ball: `swing` (the default), the preset's swing's impact where
+        /// launch.spin is not given; `nathan`, Nathan's relation at its
+        /// launch angle and direction for a bat.hand batter, as a batch row
+        /// without a spin flies.
+        #[arg(long, value_name = "FROM")]
+        spin: Option<SpinArg>,
     },
     /// Fit model.drag_scale (and model.lift_scale, given hang_time or apex
     /// columns) to the measured distances of a CSV of flights, as `fly --batch`

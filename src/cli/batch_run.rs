@@ -42,7 +42,7 @@ pub(super) fn run(cli: &Cli, command: &Command) -> Option<Result<ExitCode, Usage
                 setup.spray = (*spray).into();
                 setup.one_flight = *one_flight;
                 setup.all_parks = *all_parks;
-                setup.solve_swings = *spin == SpinArg::Swing;
+                setup.solve_swings = *spin == Some(SpinArg::Swing);
             }))
         }
         Command::Hit {

@@ -24,7 +24,7 @@ pub(super) fn fly(
     ground: Ground,
     parks: &Parks,
     (all_parks, own_air): (bool, Option<GivenWeather>),
-    json: bool,
+    (json, estimated): (bool, bool),
     shown: Shown,
 ) -> String {
     let scene = &preset.scene;
@@ -49,6 +49,9 @@ pub(super) fn fly(
         if all_parks {
             json["all_parks"] = all_parks_json(&flown, parks);
         }
+        if estimated {
+            json["spin_estimated"] = true.into();
+        }
         return pretty(&json);
     }
     // A batted ball takes what it was not given from its swing's impact:
@@ -63,10 +66,20 @@ pub(super) fn fly(
     .filter_map(|(name, value)| value.is_none().then_some(name))
     .collect();
     let from = match scene.kind {
+        _ if estimated => format!(
+            "; spin estimated (Nathan's relation, a {}-handed batter)",
+            scene.bat.hand.name()
+        ),
         SceneKind::Swing => " (from the swing's impact)".to_owned(),
-        SceneKind::BattedBall if !taken.is_empty() => {
-            format!("; {} from the swing's impact", taken.join(" and "))
-        }
+        SceneKind::BattedBall if !taken.is_empty() => format!(
+            "; {} from the swing's impact{}",
+            taken.join(" and "),
+            if given.spin.is_none() {
+                " (--spin nathan estimates the spin)"
+            } else {
+                ""
+            }
+        ),
         SceneKind::BattedBall => String::new(),
     };
     let air = scene.environment.air();

@@ -295,9 +295,24 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
             park,
             all_parks,
             one_flight,
+            spin,
             ..
         } => {
             let mut preset = scene.resolve(dir, cli.units)?;
+            // `--spin nathan`: the spin a batch row without one would take.
+            let gave = |key: &str| (scene.set.iter()).any(|a| a.split('=').next() == Some(key));
+            let estimated = *spin == Some(args::SpinArg::Nathan);
+            if estimated {
+                if gave("launch.spin") {
+                    return Err(UsageError::CommandLine(
+                        "--spin nathan estimates the spin that --set launch.spin gives: drop one"
+                            .to_owned(),
+                    ));
+                }
+                let sidespin_given = gave("launch.sidespin");
+                preset.scene =
+                    crate::analysis::savant::with_estimated_spin(&preset.scene, sidespin_given);
+            }
             let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
             let generic = ground::generic_fence(&preset);
             let ground = match park {
@@ -320,7 +335,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
                 ground,
                 &parks,
                 (*all_parks, own_air),
-                *json,
+                (*json, estimated),
                 shown,
             ))
         }

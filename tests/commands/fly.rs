@@ -107,7 +107,8 @@ fn missing_launch_keys_come_from_the_swing_in_any_order() {
 
 /// The launch line says which values came from the swing, so that a spin
 /// no one typed is not taken for one given (an analyst's 105 mph at 28°
-/// flies the fastball impact's 1832 rpm, not an estimate).
+/// flies the fastball impact's 1832 rpm, not an estimate); `--spin nathan`
+/// flies the estimate a batch row without a spin takes, to the bit.
 #[test]
 fn the_launch_line_names_what_came_from_the_swing() {
     let first_line = |args: &[&str]| {
@@ -124,12 +125,48 @@ fn the_launch_line_names_what_came_from_the_swing() {
     ];
     let line = first_line(&speed_angle);
     assert!(
-        line.ends_with("(28.0°); spin from the swing's impact"),
+        line.ends_with("(28.0°); spin from the swing's impact (--spin nathan estimates the spin)"),
         "{line}"
     );
+    // The estimate, as a batch row of the same launch and side flies it.
+    let mut one = speed_angle.to_vec();
+    one.extend([
+        "--set",
+        "launch.direction=-20deg",
+        "--spin",
+        "nathan",
+        "--json",
+    ]);
+    let (status, out, err) = common::run_homerun(&one, None);
+    assert_eq!(status, Some(0), "{err}");
+    let one: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(one["spin_estimated"], true);
+    let row = "launch_speed,launch_angle,exit_direction,stand\n105,28,-20,R\n";
+    let (status, out, err) = common::run_homerun(&["fly", "--batch", "-", "--json"], Some(row));
+    assert_eq!(status, Some(0), "{err}");
+    let row: Value = serde_json::from_str(out.trim()).unwrap();
+    for key in ["spin", "sidespin", "direction"] {
+        assert_eq!(one["launch"][key], row["launch"][key], "{key}");
+    }
+    assert_eq!(one["flight"]["range"], row["flight"]["range"]);
+    let mut text = speed_angle.to_vec();
+    text.extend(["--spin", "nathan", "--set", "bat.hand=left"]);
+    let line = first_line(&text);
+    assert!(
+        line.ends_with("; spin estimated (Nathan's relation, a left-handed batter)"),
+        "{line}"
+    );
+    let (status, _, err) = common::run_homerun(
+        &["fly", "--spin", "nathan", "--set", "launch.spin=100"],
+        None,
+    );
+    assert_eq!(status, Some(2));
+    assert!(err.contains("--spin nathan estimates the spin that --set launch.spin gives"));
     let line = first_line(&["fly", "--set", "launch.angle=0.5"]);
     assert!(
-        line.ends_with("; speed and spin from the swing's impact"),
+        line.ends_with(
+            "; speed and spin from the swing's impact (--spin nathan estimates the spin)"
+        ),
         "{line}"
     );
     let line = first_line(&["fly", "--preset", "fly-ball"]);

@@ -18,7 +18,7 @@ use model::flight::{FlightOptions, FlightSummary};
 use model::frame;
 use model::launch::SceneFlight;
 use model::many;
-use model::scene::{Scene, SceneKind};
+use model::scene::{Hand, Scene, SceneKind};
 use model::spin_estimate::{SIDESPIN_PER_DIRECTION, Side, nathan_spin};
 
 /// Savant's hit coordinates (hc_x, hc_y) of home plate: the constants of
@@ -152,6 +152,29 @@ pub fn launches_as_given(scene: &Scene, row: &RowLaunch) -> bool {
         && !row.estimates_spin()
         && scene.kind == SceneKind::BattedBall
         && scene.launch.is_complete()
+}
+
+/// One ball's launch with its spin estimated as a batch row without one
+/// has it (`fly --spin nathan`): the scene's launch (given, or its swing's
+/// impact's) as a batted ball, its backspin and, unless `sidespin_given`,
+/// its sidespin from Nathan's relation at its angle and direction, for a
+/// batter of the scene's `bat.hand`.
+pub fn with_estimated_spin(scene: &Scene, sidespin_given: bool) -> Scene {
+    let mut scene = scene.with_launch(scene.batted_ball());
+    let side = match scene.bat.hand {
+        Hand::Right => Side::Right,
+        Hand::Left => Side::Left,
+    };
+    let row = RowLaunch {
+        spray: None,
+        side: Some(side),
+        estimate_backspin: true,
+        estimate_sidespin: !sidespin_given,
+        measured_spin: None,
+    };
+    let direction = scene.batted_ball().direction;
+    launch_toward(&mut scene, &row, direction);
+    scene
 }
 
 /// Launches toward `direction`, with the spin the estimate gives there
@@ -440,6 +463,30 @@ mod tests {
     use model::scene::GivenLaunch;
     use model::spin_estimate::Side;
     use numerics::ode::Tolerance;
+
+    /// `fly --spin nathan` is a batch row's estimate: the same launch, the
+    /// same spin, for the batter's side as `bat.hand` gives it.
+    #[test]
+    fn one_balls_estimate_is_a_batch_rows() {
+        let mut scene = Scene::default();
+        scene.set("launch.speed", 46.0).unwrap();
+        scene.set("launch.angle", 0.45).unwrap();
+        scene.set("launch.direction", -0.3).unwrap();
+        for (hand, side) in [(Hand::Right, Side::Right), (Hand::Left, Side::Left)] {
+            scene.bat.hand = hand;
+            let one = with_estimated_spin(&scene, false).batted_ball();
+            let (backspin, sidespin) = nathan_spin(0.45, -0.3, Some(side));
+            assert_eq!((one.spin, one.sidespin), (backspin, sidespin));
+            assert_eq!((one.speed, one.angle, one.direction), (46.0, 0.45, -0.3));
+            // A sidespin given is kept.
+            scene.set("launch.sidespin", 10.0).unwrap();
+            assert_eq!(
+                with_estimated_spin(&scene, true).batted_ball().sidespin,
+                10.0
+            );
+            scene.launch.sidespin = None;
+        }
+    }
 
     #[test]
     fn the_spray_angle_is_positive_toward_right_field() {
