@@ -11,20 +11,19 @@ fn imports() -> BTreeMap<String, BTreeSet<String>> {
     let reexported = [("Setup", "setup"), ("Header", "header"), ("Tally", "tally")];
     let mut modules: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
     let mut files = vec![];
-    for entry in std::fs::read_dir(&root)
-        .unwrap()
-        .chain(std::fs::read_dir(root.join("output")).unwrap())
-    {
-        let path = entry.unwrap().path();
-        if path.extension().is_some_and(|e| e == "rs") {
-            files.push(path);
+    for folder in ["", "output", "header"] {
+        for entry in std::fs::read_dir(root.join(folder)).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_some_and(|e| e == "rs") {
+                files.push(path);
+            }
         }
     }
     for path in files {
         // The files of a folder are its module's, one unit.
-        let folder = path.parent().unwrap() != root;
-        let name = match folder {
-            true => "output".to_owned(),
+        let folder = path.parent().unwrap();
+        let name = match folder != root {
+            true => folder.file_name().unwrap().to_str().unwrap().to_owned(),
             false => path.file_stem().unwrap().to_str().unwrap().to_owned(),
         };
         if name == "lib" || name == "tests" {
