@@ -54,6 +54,7 @@ pub fn savant_swings(
     scene::check_path("--savant", file)?;
     let parks = preset::parks::all_noted(parks_dir(cli).as_deref())?;
     let mut setup = batch_run::setup(preset, &parks, (&[], None, column))?;
+    setup.takes_set = false;
     let failed = |message: String| UsageError::Savant {
         input: crate::preset::escape_cut(file, 200),
         message,

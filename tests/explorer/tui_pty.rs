@@ -457,6 +457,8 @@ fn tui_savant_maps_a_renamed_column() {
         written.contains("no launch speed column") && written.contains("did you mean `EV`?"),
         "{written}"
     );
+    // The explorer takes no --set: its refusals offer none.
+    assert!(!written.contains("--set"), "{written}");
     let args = ["tui", "--savant", file, "--column", "launch_speed=EV"];
     let mut session = Session::start(&args, 100, 30);
     session.wait_for("Open a swing (33)");

@@ -294,13 +294,16 @@ impl Header {
                 ),
             };
             return Err(format!(
-                "{}: no launch {} column (looked for {}){near}; or --set {}=VALUE for every row",
+                "{}: no launch {} column (looked for {}){near}{}",
                 self.line,
                 (missing.iter().map(|&i| ["speed", "angle"][i]))
                     .collect::<Vec<_>>()
                     .join(" or "),
                 looked.join("; "),
-                LAUNCH_KEYS[missing[0]]
+                setup.or_set(
+                    &format!("{}=VALUE", LAUNCH_KEYS[missing[0]]),
+                    "for every row"
+                )
             ));
         }
         self.check_direction(setup)?;

@@ -41,6 +41,9 @@ pub struct Setup<'a> {
     pub escape_kept: bool,
     /// Each park's code as a CSV field, for every row's `park` column.
     pub(crate) code_fields: Vec<String>,
+    /// The command takes `--set` (the explorer's `tui --savant` does not):
+    /// only then do refusals offer it.
+    pub takes_set: bool,
 }
 
 impl<'a> Setup<'a> {
@@ -61,6 +64,15 @@ impl<'a> Setup<'a> {
             swing_columns: false,
             escape_kept: false,
             code_fields: parks.parks.iter().map(|p| quoted(&p.code)).collect(),
+            takes_set: true,
+        }
+    }
+
+    /// "; or --set KEY=VALUE {what}" where the command takes `--set`.
+    pub(crate) fn or_set(&self, assignment: &str, what: &str) -> String {
+        match self.takes_set {
+            true => format!("; or --set {assignment} {what}"),
+            false => String::new(),
         }
     }
 

@@ -214,8 +214,9 @@ impl Header {
             "{}: column `{shown}` looks like a direction, but no column gives one, so every row \
              would fly to centre field: map it, --column landing_bearing={typed} (where the ball \
              came down, ° + toward right field) or --column exit_direction={typed} (where it \
-             left the bat); or --set launch.direction=0 flies every row to centre field",
-            self.line
+             left the bat){}",
+            self.line,
+            setup.or_set("launch.direction=0", "flies every row to centre field")
         ))
     }
 
@@ -270,8 +271,9 @@ impl Header {
             "--column {WIND}={}: no column says where that wind blows, so every row's would \
              blow toward centre field: map one, --column {TOWARD}=COLUMN:UNIT (where it blows \
              toward, 0 centre field, + toward right field; a compass bearing it blows from is \
-             not that), or --set {TOWARD}=0 for centre field",
-            escape_cut(column, 40)
+             not that){}",
+            escape_cut(column, 40),
+            setup.or_set(&format!("{TOWARD}=0"), "for centre field")
         ))
     }
 
