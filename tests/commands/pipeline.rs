@@ -557,6 +557,23 @@ fn a_league_team_and_an_undefined_side_are_answered_at_no_park() {
         err.contains("2 rows whose home_team no park answers to (LIN_POT) at no park"),
         "{err}"
     );
+    // The summary file counts them as the text does.
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("summary.json");
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--summary-file",
+        file.to_str().unwrap(),
+    ];
+    let (_, err, status) = run(&args, text.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    assert_eq!(summary["side_unknown"], 1);
+    assert_eq!(summary["at_unknown_park"], 2);
+    assert!(summary.get("spray_unsolved").is_none());
     // No side at all is the same average, counted; a row that gives its
     // spin estimates none and is not.
     let no_side = "launch_speed,launch_angle,spin_rpm\n95,28,\n95,28,2500\n";

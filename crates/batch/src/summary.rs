@@ -527,6 +527,17 @@ impl Tally {
             value["spin_measured"] =
                 json!({ "whole": whole, "size_alone": size, "rate_zero": zero });
         }
+        // The rows answered on an assumption, as the text names them.
+        for (name, rows) in [
+            ("side_unknown", self.side_unknown),
+            ("spray_unsolved", self.unsolved),
+            ("without_spray", self.without_spray),
+            ("at_unknown_park", self.at_unknown_park),
+        ] {
+            if rows > 0 {
+                value[name] = rows.into();
+            }
+        }
         if !self.differences.is_empty() {
             let (median, median_abs) = d(&self.differences);
             value["difference"] = json!({ "rows": self.differences.len(),
