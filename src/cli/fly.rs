@@ -2,6 +2,7 @@
 //! from `launch.*`, or a swing's launch from its impact); and `fly --batch`,
 //! one launch per CSV row (see [`super::batch`]).
 
+use super::SpinArg;
 use super::ground::{
     FlownToFence, Ground, all_parks_json, all_parks_table, clearing_json, clearing_text,
     parks_json, parks_text,
@@ -24,10 +25,11 @@ pub(super) fn fly(
     ground: Ground,
     parks: &Parks,
     (all_parks, own_air): (bool, Option<GivenWeather>),
-    (json, estimated): (bool, bool),
+    (json, spin): (bool, Option<SpinArg>),
     shown: Shown,
 ) -> String {
     let scene = &preset.scene;
+    let estimated = spin == Some(SpinArg::Nathan);
     let fences: Vec<&park::Fence> = parks.parks.iter().map(|p| &p.fence).collect();
     let own_air = own_air.map(|given| (parks, given));
     let flown = FlownToFence::new(scene, ground.fence(), &fences, own_air);
@@ -74,7 +76,8 @@ pub(super) fn fly(
         SceneKind::BattedBall if !taken.is_empty() => format!(
             "; {} from the swing's impact{}",
             taken.join(" and "),
-            if given.spin.is_none() {
+            // Unless the swing's spin was asked for.
+            if given.spin.is_none() && spin.is_none() {
                 " (--spin nathan estimates the spin)"
             } else {
                 ""

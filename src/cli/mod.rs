@@ -336,7 +336,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
                 ground,
                 &parks,
                 (*all_parks, own_air),
-                (*json, estimated),
+                (*json, *spin),
                 shown,
             ))
         }

@@ -169,6 +169,12 @@ fn the_launch_line_names_what_came_from_the_swing() {
         ),
         "{line}"
     );
+    // Asked for, the swing's spin needs no pointer to the estimate.
+    let line = first_line(&["fly", "--set", "launch.angle=0.5", "--spin", "swing"]);
+    assert!(
+        line.ends_with("; speed and spin from the swing's impact"),
+        "{line}"
+    );
     let line = first_line(&["fly", "--preset", "fly-ball"]);
     assert!(!line.contains("from the swing"), "{line}");
     let line = first_line(&["fly"]);
