@@ -226,15 +226,29 @@ fn bad_input_is_named() {
         err.contains("no bat_speed, vx0, vy0, vz0, ax, ay, az columns"),
         "{err}"
     );
-    // A cell out of its range: the row is named and skipped, exit 1.
+    // A tracking cell out of its range: the cell is named, the row's swing
+    // not solved, its ball flown from its launch (issue 35, item 7: every
+    // ball in play with a launch gets an answer), exit 0.
     let rows = sample();
     let mut bad = as_given(&rows[0]);
     bad[14] = "fast".to_owned();
     let (code, out, err) = hit_batch(&narrow(&[bad, as_given(&rows[1])]));
-    assert_eq!(code, Some(1));
-    assert_eq!(out.len(), 1);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(out.len(), 2);
+    assert_eq!(out[0]["solved"], false);
+    assert_eq!(
+        out[0]["reason"],
+        "a tracking cell outside its range (named above)"
+    );
+    assert!(out[0]["flight"]["range"].as_f64().is_some(), "{}", out[0]);
     assert!(
-        err.contains(r#"line 2: bat_speed = "fast": expected a number from 0 to 150; skipped"#),
+        err.contains(
+            r#"line 2: bat_speed = "fast": expected a number from 0 to 150; its swing not solved"#
+        ),
+        "{err}"
+    );
+    assert!(
+        err.contains("not solved: 1 a tracking cell outside its range (named above)"),
         "{err}"
     );
     // A tilt past the bat's (bat.tilt's ±60°) is named, not solved.
@@ -247,10 +261,11 @@ fn bad_input_is_named() {
         lines.next().unwrap()
     );
     let (code, out, err) = hit_batch(&input);
-    assert_eq!((code, out.len()), (Some(1), 1));
+    assert_eq!((code, out.len()), (Some(0), 2));
+    assert_eq!(out[0]["solved"], false);
     assert!(
         err.contains(
-            r#"line 2: swing_path_tilt = "70": expected a number from -60 to 60; skipped"#
+            r#"line 2: swing_path_tilt = "70": expected a number from -60 to 60; its swing not solved"#
         ),
         "{err}"
     );

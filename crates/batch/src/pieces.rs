@@ -98,6 +98,8 @@ pub(crate) struct Piece<T> {
     pub flown: Vec<Result<RowFlight, String>>,
     /// The rows that failed: their line and why, in line order.
     pub failed: Vec<(usize, String)>,
+    /// Rows answered with a cell left out, named: their line and why.
+    pub noted: Vec<(usize, String)>,
     /// Rows answered (each given its answer by the finish).
     pub answered: usize,
     pub without_launch: usize,
@@ -149,7 +151,7 @@ pub(crate) fn stream<R: BufRead, T: Default + Send>(
     let (done, back) = mpsc::channel::<(usize, Worked<T>)>();
     let mut spare: Vec<Box<Piece<T>>> = Vec::new();
     let mut waiting: BTreeMap<usize, Box<Piece<T>>> = BTreeMap::new();
-    let (mut sent, mut taken) = (0, 0);
+    let (mut sent, mut taken, mut noted) = (0, 0, 0);
     let mut ended = false;
     let finish = &finish;
     let taking = rayon::in_place_scope(|scope| -> Result<(), String> {
@@ -193,6 +195,14 @@ pub(crate) fn stream<R: BufRead, T: Default + Send>(
                         note("more bad rows: counted, not named");
                     }
                 }
+                for (line, reason) in &piece.noted {
+                    noted += 1;
+                    if noted <= MAX_ROW_MESSAGES {
+                        note(&format!("line {line}: {reason}; its swing not solved"));
+                    } else if noted == MAX_ROW_MESSAGES + 1 {
+                        note("more tracking cells outside their range: counted, not named");
+                    }
+                }
                 outcome.without_launch += piece.without_launch;
                 if !take(&mut piece)? {
                     // The reader has what it wanted (`| head`): the
@@ -234,6 +244,7 @@ fn wait<P>(back: &mpsc::Receiver<P>) -> Result<P, String> {
 impl<T> Piece<T> {
     fn work(&mut self, (setup, header): (&Setup, &Header), stage: Stage) {
         self.failed.clear();
+        self.noted.clear();
         self.jobs.clear();
         self.flown.clear();
         (self.answered, self.without_launch) = (0, 0);
@@ -260,7 +271,12 @@ impl<T> Piece<T> {
                 )
             };
             match row {
-                Row::Job => {}
+                Row::Job => {
+                    let job = self.jobs.last().expect("the row's job");
+                    if let Some(why) = &job.swing_note {
+                        self.noted.push((line, why.clone()));
+                    }
+                }
                 Row::Bad { line, reason } => self.failed.push((line, reason)),
                 Row::NoLaunch => self.without_launch += 1,
             }

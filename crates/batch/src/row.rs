@@ -39,6 +39,9 @@ pub(crate) struct Job {
     /// league's team in a Trackman file): the row is at no park, and the
     /// summary names the code, where the row was refused before.
     pub(crate) unknown_park: Option<String>,
+    /// Its first tracking cell outside its range, named: the ball flies,
+    /// its swing is not solved.
+    pub(crate) swing_note: Option<String>,
     /// Its `home_team`'s park, where the row was played elsewhere (the
     /// park was not home on its date, or not for all its season): the row
     /// is at no park, and the summary names the park and the season.
@@ -184,6 +187,7 @@ pub(crate) fn parse_row(
         park: None,
         earlier: None,
         unknown_park: None,
+        swing_note: None,
         away: None,
         season: None,
         side_unknown: false,
@@ -236,6 +240,7 @@ fn read_cells(
         given,
         fence_given,
         unknown_park,
+        swing_note,
         ..
     } = job;
     let mut savant = SavantCells::default();
@@ -277,7 +282,18 @@ fn read_cells(
                     *unknown_park = Some(cut(value, 20));
                 }
             }),
-            Column::Swing(column, range) => tracked.read((column, range), value),
+            // A tracking cell no swing takes (a measurement's glitch, as
+            // an attack direction of -145°): the ball still flies from its
+            // launch, the swing is not solved, and the cell is named.
+            Column::Swing(column, range) => {
+                if let Err(why) = tracked.read((column, range), value)
+                    && !tracked.refused
+                {
+                    tracked.refused = true;
+                    *swing_note = Some(why);
+                }
+                Ok(())
+            }
             // A launch.* cell as `--set` takes it (`103mph`).
             Column::Launch(index, Unit::Si) => {
                 spin_given |= index == 2;

@@ -29,12 +29,16 @@ pub(crate) struct SwingCells {
     pub spin_axis: Option<f64>,
     /// `release_speed` (mph).
     pub release_speed: Option<f64>,
+    /// A cell outside its column's range (named on its own line): the row
+    /// flies, its swing is not solved.
+    pub refused: bool,
 }
 
 /// Why a row with a launch has no swing to solve.
 pub(crate) const NO_BAT_SPEED: &str = "no bat_speed (the swing was not tracked)";
 pub(crate) const NO_PITCH: &str = "no pitch kinematics (vx0, vy0, vz0, ax, ay, az)";
 pub(crate) const PITCH_SHORT: &str = "the pitch's kinematics never reach the plate";
+pub(crate) const REFUSED_CELL: &str = "a tracking cell outside its range (named above)";
 
 impl SwingCells {
     /// Reads one (trimmed, non-empty) cell: a number in the column's range,
@@ -78,6 +82,9 @@ impl SwingCells {
         spray: Option<f64>,
         side: Option<Side>,
     ) -> Result<TrackedSwing, &'static str> {
+        if self.refused {
+            return Err(REFUSED_CELL);
+        }
         let bat_speed = self.bat_speed.ok_or(NO_BAT_SPEED)?;
         let all = |v: [Option<f64>; 3]| Some([v[0]?, v[1]?, v[2]?]);
         let fit = PitchFit {
