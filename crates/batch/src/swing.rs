@@ -38,7 +38,7 @@ pub(crate) struct SwingCells {
 pub(crate) const NO_BAT_SPEED: &str = "no bat_speed (the swing was not tracked)";
 pub(crate) const NO_PITCH: &str = "no pitch kinematics (vx0, vy0, vz0, ax, ay, az)";
 pub(crate) const PITCH_SHORT: &str = "the pitch's kinematics never reach the plate";
-pub(crate) const REFUSED_CELL: &str = "a tracking cell outside its range (named above)";
+pub(crate) const REFUSED_CELL: &str = "a tracking cell outside its range";
 
 impl SwingCells {
     /// Reads one (trimmed, non-empty) cell: a number in the column's range,
