@@ -101,8 +101,9 @@ pub enum Command {
         summary: bool,
         /// With --batch: read the file's COLUMN as NAME (a column name that
         /// --batch --help lists, or a key of `homerun keys` with the unit of
-        /// its bare numbers, COLUMN:UNIT), e.g. --column launch_speed=EV or
-        /// --column environment.temperature=temp:F; repeatable.
+        /// its bare numbers, COLUMN:UNIT), e.g. --column launch_speed=EV,
+        /// --column launch_speed=EV:km/h or --column
+        /// environment.temperature=temp:F; repeatable.
         #[arg(long, value_name = "NAME=COLUMN[:UNIT]", requires = "batch")]
         column: Vec<String>,
         /// With --batch: also write the summary as JSON to FILE (atomically),
@@ -176,8 +177,9 @@ pub enum Command {
         summary: bool,
         /// With --batch: read the file's COLUMN as NAME (a column name that
         /// --batch --help lists, or a key of `homerun keys` with the unit of
-        /// its bare numbers, COLUMN:UNIT), e.g. --column launch_speed=EV or
-        /// --column environment.temperature=temp:F; repeatable.
+        /// its bare numbers, COLUMN:UNIT), e.g. --column launch_speed=EV,
+        /// --column launch_speed=EV:km/h or --column
+        /// environment.temperature=temp:F; repeatable.
         #[arg(long, value_name = "NAME=COLUMN[:UNIT]", requires = "batch")]
         column: Vec<String>,
         /// With --batch: also write the summary as JSON to FILE (atomically),

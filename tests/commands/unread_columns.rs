@@ -163,7 +163,8 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
         range(&bare, in_fahrenheit, "ignore=wind_speed"),
         range(text, temperature, "ignore=wind_speed")
     );
-    // A unit of another quantity, or on a column the table reads, is one line.
+    // A unit of another quantity, or on a column whose cells take none, is
+    // one line.
     for (mapping, needle) in [
         (
             "environment.temperature=temperature:mph",
@@ -171,7 +172,11 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
         ),
         (
             "launch_speed=temperature:F",
-            "a unit is given only to a key's column",
+            "`F` is no unit of a speed; it takes",
+        ),
+        (
+            "stand=temperature:F",
+            "a unit is given only to a key's column (`homerun keys`) or to a measurement's",
         ),
     ] {
         let (_, err, status) = run(
@@ -335,4 +340,35 @@ fn a_lookalike_column_is_never_suggested_or_read_as_the_launch() {
     let (out, err, status) = run(&args, text.as_bytes());
     assert_eq!(status, 0, "{err}");
     assert_eq!(out.lines().count(), 2);
+}
+
+/// A measurement's column of the table (Statcast's mph, ° and ft) mapped
+/// from a file in other units says them: an exit speed in km/h and a
+/// distance in metres fly and compare as the same row in Statcast's units.
+#[test]
+fn a_measurement_mapped_with_its_unit_is_read_in_it() {
+    let statcast = "launch_speed,launch_angle,hit_distance_sc\n100,28,393.7\n";
+    let metric = "EV,LA,dist\n160.9344,28,120\n";
+    let flown = |text: &str, args: &[&str]| {
+        let mut all = vec!["fly", "--batch", "-", "--json"];
+        all.extend(args);
+        let (out, err, status) = run(&all, text.as_bytes());
+        assert_eq!(status, 0, "{err}");
+        serde_json::from_str::<serde_json::Value>(out.trim()).unwrap()
+    };
+    let a = flown(statcast, &[]);
+    let mapped = [
+        "--column",
+        "launch_speed=EV:km/h",
+        "--column",
+        "launch_angle=LA",
+        "--column",
+        "hit_distance_sc=dist:m",
+    ];
+    let b = flown(metric, &mapped);
+    let speed = |v: &serde_json::Value| v["launch"]["speed"].as_f64().unwrap();
+    assert!((speed(&a) - speed(&b)).abs() < 1e-9, "{a} {b}");
+    let distance = |v: &serde_json::Value| v["statcast"]["distance"].as_f64().unwrap();
+    assert!((distance(&a) - 393.7 * 0.3048).abs() < 1e-9);
+    assert_eq!(distance(&b), 120.0);
 }

@@ -9,7 +9,8 @@ use preset::{FIELD_KEYS, escape_cut};
 
 use super::Header;
 use crate::Setup;
-use crate::columns::{self, Column, LAUNCH_KEYS, Unit, column_of};
+use crate::columns::{self, Column, LAUNCH_KEYS, SavantColumn, Unit, column_of};
+use units::Quantity;
 
 /// Every name a column may be mapped to: the table's and the keys.
 fn readable_names() -> Vec<String> {
@@ -82,13 +83,25 @@ fn check_unit(name: &str, column: &str, unit: &str) -> Result<(), String> {
         escape_cut(column, 40),
         escape_cut(unit, 20)
     );
-    let Some(key) = number_key(name) else {
+    // A key's quantity, or that of a table column whose cells may carry
+    // a unit (Statcast's in mph, ° and ft: a file's exit speeds in km/h,
+    // its distances in metres).
+    let quantity = match (number_key(name), column_of(name)) {
+        (Some(key), _) => Some(key.quantity()),
+        (None, Column::Launch(_, unit)) => unit.quantity(),
+        (None, Column::Savant(SavantColumn::Distance | SavantColumn::Apex)) => {
+            Some(Quantity::Distance)
+        }
+        (None, Column::Savant(SavantColumn::HitSpinRate)) => Some(Quantity::Spin),
+        _ => None,
+    };
+    let Some(quantity) = quantity else {
         return Err(format!(
-            "{mapping}: a unit is given only to a key's column (`homerun keys`); the table's \
-             columns have their own"
+            "{mapping}: a unit is given only to a key's column (`homerun keys`) or to a \
+             measurement's (launch_speed, launch_angle, spin_rpm, hit_distance_sc, apex, \
+             hit_spin_rate); this column's cells are read as they are"
         ));
     };
-    let quantity = key.quantity();
     match units::read_typed(&format!("1{unit}"), quantity, quantity.si_symbol()) {
         Ok(reading) if reading.unit.is_some() => Ok(()),
         _ => Err(format!(
