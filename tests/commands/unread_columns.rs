@@ -372,3 +372,32 @@ fn a_measurement_mapped_with_its_unit_is_read_in_it() {
     assert!((distance(&a) - 393.7 * 0.3048).abs() < 1e-9);
     assert_eq!(distance(&b), 120.0);
 }
+
+/// An exit speed past any batted ball's (130 mph; Statcast's fastest are
+/// under 123) is a column in another unit, as a metric Trackman export's
+/// km/h under the same `ExitSpeed`: the row is refused naming the mapping
+/// that reads it, and mapped so, the file flies.
+#[test]
+fn an_exit_speed_past_any_batted_balls_names_the_km_h_mapping() {
+    let metric = "ExitSpeed,Angle\n158.3,28\n120,20\n";
+    let (out, err, status) = run(&["fly", "--batch", "-"], metric.as_bytes());
+    assert_eq!(status, 1, "{err}");
+    assert_eq!(out.lines().count(), 2, "{out}");
+    assert!(
+        err.contains(
+            "line 2: ExitSpeed = \"158.3\": 158.3 mph, faster than any batted ball measured (130 \
+             mph at most); a column in km/h is mapped so: --column launch_speed=ExitSpeed:km/h"
+        ),
+        "{err}"
+    );
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--column",
+        "launch_speed=ExitSpeed:km/h",
+    ];
+    let (out, err, status) = run(&args, metric.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    assert_eq!(out.lines().count(), 3, "{out}");
+}

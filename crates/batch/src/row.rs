@@ -311,6 +311,12 @@ fn read_cells(
                         .map(|v| unit.to_si(v))
                         .map_err(|e| unit_unknown(name, value, (quantity, unit)).unwrap_or(e)),
                 };
+                // A measured exit speed past any batted ball's is a column in
+                // another unit (a metric Trackman file's km/h), not a ball.
+                let si = si.and_then(|si| match index == 0 && si > FASTEST_BATTED_BALL {
+                    true => Err(too_fast(name, value, si, header.cell_units[i].is_some())),
+                    false => Ok(si),
+                });
                 si.map(|si| {
                     converted = true;
                     spin_given |= index == 2;
@@ -460,6 +466,29 @@ fn read_cells(
     job.spray_at_plate = savant.at_plate() && !header.direction_given;
     (job.statcast, job.hang_time, job.apex) = (savant.distance, savant.hang_time, savant.apex);
     Ok(())
+}
+
+/// The fastest a measured batted ball may be (m/s): 130 mph. Statcast's
+/// fastest are under 123 mph (Oneil Cruz's 122.4 in 2022, Giancarlo
+/// Stanton's 122.2 in 2018; MLB.com's exit velocity leaderboards).
+const FASTEST_BATTED_BALL: f64 = 130.0 * 0.44704;
+
+/// Why an exit speed past [`FASTEST_BATTED_BALL`] is refused, with the
+/// mapping that reads a column of km/h where the column's unit was taken.
+fn too_fast(name: &str, value: &str, si: f64, unit_mapped: bool) -> String {
+    let hint = match unit_mapped {
+        true => String::new(),
+        false => format!(
+            "; a column in km/h is mapped so: --column launch_speed={}:km/h",
+            escape_cut(name, 40)
+        ),
+    };
+    format!(
+        "{} = {:?}: {:.1} mph, faster than any batted ball measured (130 mph at most){hint}",
+        escape_cut(name, 80),
+        cut(value, 80),
+        si / 0.44704
+    )
 }
 
 /// Why a Statcast cell with a unit after its number (`45kph`, `28deg` in
