@@ -468,9 +468,9 @@ fn read_cells(
     Ok(())
 }
 
-/// The fastest a measured batted ball may be (m/s): 130 mph. Statcast's
-/// fastest are under 123 mph (Oneil Cruz's 122.4 in 2022, Giancarlo
-/// Stanton's 122.2 in 2018; MLB.com's exit velocity leaderboards).
+/// The fastest a measured batted ball may be (m/s): 130 mph, with room
+/// above Statcast's fastest since 2015, all under 123 mph (Oneil Cruz's
+/// and Giancarlo Stanton's; MLB.com's exit velocity leaderboards).
 const FASTEST_BATTED_BALL: f64 = 130.0 * 0.44704;
 
 /// Why an exit speed past [`FASTEST_BATTED_BALL`] is refused, with the
