@@ -401,3 +401,61 @@ fn an_exit_speed_past_any_batted_balls_names_the_km_h_mapping() {
     assert_eq!(status, 0, "{err}");
     assert_eq!(out.lines().count(), 3, "{out}");
 }
+
+/// A distance column in metres read as feet (a metric Trackman export's
+/// `Distance`) makes every difference wrong, while the flights are right:
+/// where most balls in the air measure under half their flight, the
+/// summary says so and names the mapping; mapped, the line is gone.
+#[test]
+fn distances_in_metres_read_as_feet_are_named() {
+    let text = std::fs::read_to_string("tests/data/trackman_2024_measured_spin.csv").unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    let at = header.split(',').position(|c| c == "Distance").unwrap();
+    let mut metric = vec![header.to_owned()];
+    for line in lines {
+        let mut cells: Vec<String> = line.split(',').map(str::to_owned).collect();
+        if let Ok(feet) = cells[at].parse::<f64>() {
+            cells[at] = format!("{}", feet * 0.3048);
+        }
+        metric.push(cells.join(","));
+    }
+    let metric = metric.join("\n") + "\n";
+    let (_, err, status) = run(&["fly", "--batch", "-"], metric.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    assert!(
+        err.contains("Distance is under half the flight's distance on")
+            && err.contains("a column in metres? map it, --column hit_distance_sc=Distance:m"),
+        "{err}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("summary.json");
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--summary-file",
+        file.to_str().unwrap(),
+    ];
+    run(&args, metric.as_bytes());
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    let under_half = &summary["distance_under_half"];
+    let (short, of) = (under_half["rows"].as_u64(), under_half["of"].as_u64());
+    assert!(
+        of >= Some(10) && short.zip(of).is_some_and(|(s, o)| 2 * s > o),
+        "{summary}"
+    );
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--column",
+        "hit_distance_sc=Distance:m",
+    ];
+    let (_, err, status) = run(&args, metric.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    assert!(!err.contains("under half"), "{err}");
+    let (_, err, _) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert!(!err.contains("under half"), "{err}");
+}

@@ -40,6 +40,7 @@ impl Tally {
             lines.push(format!("{n} empty line{} skipped", plural(n)));
         }
         lines.push(self.outcome_line(setup, shown));
+        lines.extend(self.metres_line());
         lines.extend(self.home_runs_line());
         if self.failed > 0 {
             lines.push(format!(
@@ -301,6 +302,20 @@ impl Tally {
         preset::escape_cut(&self.distance_column, 40)
     }
 
+    /// Where most balls in the air measured under half their flight: a
+    /// distance column in metres read as feet (a metric Trackman export's
+    /// `Distance`), which makes every difference wrong.
+    fn metres_line(&self) -> Option<String> {
+        let (n, short) = (self.compared_in_air, self.under_half);
+        (n >= 10 && 2 * short > n).then(|| {
+            let column = self.distance_shown();
+            format!(
+                "{column} is under half the flight's distance on {short} of {n} balls launched at \
+                 20° and up: a column in metres? map it, --column hit_distance_sc={column}:m"
+            )
+        })
+    }
+
     /// "40 home runs (events) the model calls short or foul at their park:
     /// lines 10, 14, …", so that an analyst can find them.
     fn home_runs_line(&self) -> Option<String> {
@@ -526,6 +541,10 @@ impl Tally {
         if whole + size + zero > 0 {
             value["spin_measured"] =
                 json!({ "whole": whole, "size_alone": size, "rate_zero": zero });
+        }
+        if self.metres_line().is_some() {
+            value["distance_under_half"] =
+                json!({ "rows": self.under_half, "of": self.compared_in_air });
         }
         // The rows answered on an assumption, as the text names them.
         for (name, rows) in [

@@ -100,6 +100,11 @@ pub struct Tally {
     pub(crate) unknown_parks: Vec<(String, usize)>,
     /// Rows whose batter's side was given as not known.
     pub(crate) side_unknown: usize,
+    /// Balls in the air (20° and up, flown past 60 m) with a measured
+    /// distance, and those whose measured distance is under half the
+    /// flight's: most of them so is a column in metres read as feet.
+    pub(crate) compared_in_air: usize,
+    pub(crate) under_half: usize,
     /// Rows judged at a park's earlier walls: by park and walls (index).
     pub(crate) at_earlier_walls: BTreeMap<(usize, usize), usize>,
     /// Rows played where their home_team's park was not home.
@@ -214,6 +219,11 @@ impl Tally {
             }
         }
         if let Some(d) = difference {
+            let range = flown.flight.range;
+            if angle >= 20f64.to_radians() && range > 60.0 {
+                self.compared_in_air += 1;
+                self.under_half += usize::from(range - d < 0.5 * range);
+            }
             self.differences.push(d);
             self.by_band[band_index(angle)].push(d);
             if angle >= LOWEST_FLIGHT {
@@ -292,6 +302,8 @@ impl Tally {
             (&mut self.at_plate, other.at_plate),
             (&mut self.at_no_park, other.at_no_park),
             (&mut self.side_unknown, other.side_unknown),
+            (&mut self.compared_in_air, other.compared_in_air),
+            (&mut self.under_half, other.under_half),
             (&mut self.from_plate, other.from_plate),
             (&mut self.plate_unusable, other.plate_unusable),
             (&mut self.home_runs, other.home_runs),
