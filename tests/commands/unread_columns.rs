@@ -2,7 +2,7 @@
 //! column of its own name, with nothing that reads it, is refused with the
 //! mapping to give (issue 35: never a silently wrong answer).
 
-use super::pipeline::{run, sample};
+use super::pipeline::{run, sample, summary_of};
 
 /// A spray angle kept as its own column (hc_x and hc_y dropped, or a
 /// tracker's Bearing) and no direction read: every row would fly to centre
@@ -428,18 +428,7 @@ fn distances_in_metres_read_as_feet_are_named() {
             && err.contains("a column in metres? map it, --column hit_distance_sc=Distance:m"),
         "{err}"
     );
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("summary.json");
-    let args = [
-        "fly",
-        "--batch",
-        "-",
-        "--summary-file",
-        file.to_str().unwrap(),
-    ];
-    run(&args, metric.as_bytes());
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    let (summary, _) = summary_of(metric.as_bytes());
     let under_half = &summary["distance_under_half"];
     let (short, of) = (under_half["rows"].as_u64(), under_half["of"].as_u64());
     assert!(
