@@ -409,18 +409,7 @@ fn an_exit_speed_past_any_batted_balls_names_the_km_h_mapping() {
 #[test]
 fn distances_in_metres_read_as_feet_are_named() {
     let text = std::fs::read_to_string("tests/data/trackman_2024_measured_spin.csv").unwrap();
-    let mut lines = text.lines();
-    let header = lines.next().unwrap();
-    let at = header.split(',').position(|c| c == "Distance").unwrap();
-    let mut metric = vec![header.to_owned()];
-    for line in lines {
-        let mut cells: Vec<String> = line.split(',').map(str::to_owned).collect();
-        if let Ok(feet) = cells[at].parse::<f64>() {
-            cells[at] = format!("{}", feet * 0.3048);
-        }
-        metric.push(cells.join(","));
-    }
-    let metric = metric.join("\n") + "\n";
+    let metric = with_column(&text, "Distance", |feet| feet * 0.3048);
     let (_, err, status) = run(&["fly", "--batch", "-"], metric.as_bytes());
     assert_eq!(status, 0, "{err}");
     assert!(
@@ -447,4 +436,59 @@ fn distances_in_metres_read_as_feet_are_named() {
     assert!(!err.contains("under half"), "{err}");
     let (_, err, _) = run(&["fly", "--batch", "-"], text.as_bytes());
     assert!(!err.contains("under half"), "{err}");
+}
+
+/// Launch angles in radians read as degrees: a whole file of batted balls
+/// within ±1.6° (line drives alone rise 10–25°). The summary says so and
+/// names the mapping; mapped, the rows fly as the file in degrees does.
+#[test]
+fn launch_angles_in_radians_read_as_degrees_are_named() {
+    let text = sample();
+    let radians = with_column(&text, "\"launch_angle\"", f64::to_radians);
+    let (summary, err) = summary_of(radians.as_bytes());
+    assert!(
+        err.contains(
+            "lies within ±1.6°: a column in radians read as degrees? map it, --column \
+             launch_angle=COLUMN:rad"
+        ),
+        "{err}"
+    );
+    assert_eq!(summary["launch_angles_within_1_6_deg"], true);
+    let args = [
+        "fly",
+        "--batch",
+        "-",
+        "--column",
+        "launch_angle=launch_angle:rad",
+    ];
+    let (mapped, err, status) = run(&args, radians.as_bytes());
+    assert_eq!(status, 0, "{err}");
+    assert!(!err.contains("radians"), "{err}");
+    let (given, err, _) = run(&["fly", "--batch", "-"], text.as_bytes());
+    assert!(!err.contains("radians"), "{err}");
+    // The same launches, but for the last bits of a degree's conversion.
+    let angle = |out: &str| -> Vec<String> {
+        out.lines()
+            .skip(1)
+            .map(|l| l.split(',').nth(2).unwrap().to_owned())
+            .collect()
+    };
+    assert_eq!(angle(&mapped), angle(&given));
+}
+
+/// `text` (a CSV whose cells hold no comma) with each number of column
+/// `name` (as the header writes it, quotes and all) changed by `change`.
+fn with_column(text: &str, name: &str, change: impl Fn(f64) -> f64) -> String {
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    let at = header.split(',').position(|c| c == name).unwrap();
+    let mut changed = vec![header.to_owned()];
+    for line in lines {
+        let mut cells: Vec<String> = line.split(',').map(str::to_owned).collect();
+        if let Ok(number) = cells[at].trim_matches('"').parse::<f64>() {
+            cells[at] = format!("{}", change(number));
+        }
+        changed.push(cells.join(","));
+    }
+    changed.join("\n") + "\n"
 }

@@ -41,6 +41,7 @@ impl Tally {
         }
         lines.push(self.outcome_line(setup, shown));
         lines.extend(self.metres_line());
+        lines.extend(self.radians_line());
         lines.extend(self.home_runs_line());
         if self.failed > 0 {
             lines.push(format!(
@@ -316,6 +317,19 @@ impl Tally {
         })
     }
 
+    /// Where every launch of a file of batted balls lies within ±1.6°
+    /// (none steeper than a radian's π/2 read as degrees), though line
+    /// drives alone rise 10–25°: a column in radians read as degrees.
+    fn radians_line(&self) -> Option<String> {
+        let rows = self.answered;
+        (rows >= 50 && self.steepest < 1.6f64.to_radians()).then(|| {
+            format!(
+                "every launch angle of the {rows} rows lies within ±1.6°: a column in radians \
+                 read as degrees? map it, --column launch_angle=COLUMN:rad"
+            )
+        })
+    }
+
     /// "40 home runs (events) the model calls short or foul at their park:
     /// lines 10, 14, …", so that an analyst can find them.
     fn home_runs_line(&self) -> Option<String> {
@@ -541,6 +555,9 @@ impl Tally {
         if whole + size + zero > 0 {
             value["spin_measured"] =
                 json!({ "whole": whole, "size_alone": size, "rate_zero": zero });
+        }
+        if self.radians_line().is_some() {
+            value["launch_angles_within_1_6_deg"] = true.into();
         }
         if self.metres_line().is_some() {
             value["distance_under_half"] =

@@ -105,6 +105,9 @@ pub struct Tally {
     /// flight's: most of them so is a column in metres read as feet.
     pub(crate) compared_in_air: usize,
     pub(crate) under_half: usize,
+    /// The steepest launch flown (rad, either way): under 1.6° on a whole
+    /// file is a column in radians read as degrees.
+    pub(crate) steepest: f64,
     /// Rows judged at a park's earlier walls: by park and walls (index).
     pub(crate) at_earlier_walls: BTreeMap<(usize, usize), usize>,
     /// Rows played where their home_team's park was not home.
@@ -205,6 +208,7 @@ impl Tally {
             self.outcomes[at] += 1;
         }
         let angle = flown.launch.angle;
+        self.steepest = self.steepest.max(angle.abs());
         let difference = flown.difference(job);
         let called = job.called;
         if called.home_run {
@@ -288,6 +292,7 @@ impl Tally {
 
     /// Adds another piece's tally.
     pub(crate) fn add(&mut self, other: &Tally) {
+        self.steepest = self.steepest.max(other.steepest);
         self.at_unknown_park += other.at_unknown_park;
         self.away.add(&other.away);
         for (code, rows) in &other.unknown_parks {
