@@ -184,5 +184,7 @@ fn run_batch(
         crate::preset::atomic_file::write(path, text.as_bytes())
             .map_err(|e| refused(&path.display().to_string(), e.to_string()))?;
     }
-    Ok(ExitCode::from(outcome.exit_status()))
+    // A column read in the wrong unit (named above) makes every row suspect.
+    let suspect = u8::from(tally.suspect());
+    Ok(ExitCode::from(outcome.exit_status().max(suspect)))
 }

@@ -410,14 +410,16 @@ fn an_exit_speed_past_any_batted_balls_names_the_km_h_mapping() {
 fn distances_in_metres_read_as_feet_are_named() {
     let text = std::fs::read_to_string("tests/data/trackman_2024_measured_spin.csv").unwrap();
     let metric = with_column(&text, "Distance", |feet| feet * 0.3048);
-    let (_, err, status) = run(&["fly", "--batch", "-"], metric.as_bytes());
-    assert_eq!(status, 0, "{err}");
+    // The rows are written; the exit status says they are suspect.
+    let (out, err, status) = run(&["fly", "--batch", "-"], metric.as_bytes());
+    assert_eq!((status, out.lines().count()), (1, 67), "{err}");
     assert!(
         err.contains("Distance is under half the flight's distance on")
             && err.contains("a column in metres? map it, --column hit_distance_sc=Distance:m"),
         "{err}"
     );
-    let (summary, _) = summary_of(metric.as_bytes());
+    let (summary, _, status) = summary_of(metric.as_bytes());
+    assert_eq!(status, 1);
     let under_half = &summary["distance_under_half"];
     let (short, of) = (under_half["rows"].as_u64(), under_half["of"].as_u64());
     assert!(
@@ -445,11 +447,12 @@ fn distances_in_metres_read_as_feet_are_named() {
 fn launch_angles_in_radians_read_as_degrees_are_named() {
     let text = sample();
     let radians = with_column(&text, "\"launch_angle\"", f64::to_radians);
-    let (summary, err) = summary_of(radians.as_bytes());
+    let (summary, err, status) = summary_of(radians.as_bytes());
+    assert_eq!(status, 1, "{err}");
     assert!(
         err.contains(
             "lies within ±1.6°: a column in radians read as degrees? map it, --column \
-             launch_angle=COLUMN:rad"
+             launch_angle=COLUMN:rad (exit status 1)"
         ),
         "{err}"
     );

@@ -312,7 +312,8 @@ impl Tally {
             let column = self.distance_shown();
             format!(
                 "{column} is under half the flight's distance on {short} of {n} balls launched at \
-                 20° and up: a column in metres? map it, --column hit_distance_sc={column}:m"
+                 20° and up: a column in metres? map it, --column hit_distance_sc={column}:m \
+                 (exit status 1)"
             )
         })
     }
@@ -325,9 +326,16 @@ impl Tally {
         (rows >= 50 && self.steepest < 1.6f64.to_radians()).then(|| {
             format!(
                 "every launch angle of the {rows} rows lies within ±1.6°: a column in radians \
-                 read as degrees? map it, --column launch_angle=COLUMN:rad"
+                 read as degrees? map it, --column launch_angle=COLUMN:rad (exit status 1)"
             )
         })
+    }
+
+    /// Whether a column looks read in the wrong unit ([`Tally::radians_line`],
+    /// [`Tally::metres_line`]): the rows are written, and the exit status
+    /// says they are suspect.
+    pub fn suspect(&self) -> bool {
+        self.radians_line().is_some() || self.metres_line().is_some()
     }
 
     /// "40 home runs (events) the model calls short or foul at their park:
