@@ -250,7 +250,9 @@ fn a_measured_spin_out_of_range_names_its_row() {
         "{err}"
     );
     assert!(
-        err.contains(r#"line 6: hit_spin_rate = "25mph": not a number; skipped"#),
+        err.contains(
+            r#"line 6: hit_spin_rate = "25mph": `mph` measures a speed, not a spin rate; it takes rad/s, rpm (a bare number is rpm); skipped"#
+        ),
         "{err}"
     );
 }

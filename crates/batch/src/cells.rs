@@ -10,7 +10,7 @@ use model::park::{AtHome, Day, Played, neutral_site};
 use model::scene::Scene;
 use model::spin_estimate::Side;
 use nalgebra::Vector3;
-use preset::cut;
+use preset::{cut, escape_cut};
 use units::Quantity;
 
 use crate::Setup;
@@ -179,7 +179,10 @@ impl SavantCells {
                 // rpm, or with its unit as `--set` takes one (`262rad/s`).
                 let rate = match measure(value, Quantity::Spin, |rpm| Unit::Rpm.to_si(rpm)) {
                     Some(rate) => rate,
-                    None => Unit::Rpm.to_si(number()?),
+                    None => Unit::Rpm.to_si(number().map_err(|e| {
+                        let name = "hit_spin_rate";
+                        unit_unknown(name, value, (Quantity::Spin, Unit::Rpm)).unwrap_or(e)
+                    })?),
                 };
                 let most = Unit::Rpm.to_si(MAX_SPIN_RPM);
                 let expected = format!("0 (none measured) to {MAX_SPIN_RPM} rpm");
@@ -335,4 +338,37 @@ impl SavantCells {
             .zip(self.hc_y)
             .is_some_and(|(x, y)| spray_angle(x, y).is_nan())
     }
+}
+
+/// Why a Statcast cell with a unit after its number (`45kph`, `28deg` in
+/// `launch_speed`) cannot be read: the unit named, and those accepted.
+pub(crate) fn unit_unknown(
+    name: &str,
+    value: &str,
+    (quantity, unit): (Quantity, Unit),
+) -> Option<String> {
+    let why = match units::read_typed(value, quantity, quantity.si_symbol()) {
+        Err(units::TypedError::UnknownUnit { unit }) => {
+            format!("unknown unit `{}`", cut(&unit, 20))
+        }
+        Err(units::TypedError::OtherQuantity {
+            unit,
+            quantity: other,
+        }) => {
+            format!(
+                "`{}` measures {}, not {}",
+                cut(&unit, 20),
+                other.noun(),
+                quantity.noun()
+            )
+        }
+        _ => return None,
+    };
+    Some(format!(
+        "{} = {:?}: {why}; it takes {} (a bare number is {})",
+        escape_cut(name, 80),
+        cut(value, 80),
+        units::accepted(quantity, quantity.si_symbol()),
+        unit.name()
+    ))
 }

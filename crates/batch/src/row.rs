@@ -7,11 +7,11 @@ use model::keys::{InputBatch, InputError, Key, out_of_range_shown};
 use model::park::GivenWeather;
 use model::scene::{Scene, UnknownHand};
 use preset::{FIELD_KEYS, Fence, cut, escape_cut};
-use units::{Quantity, UnitSystem, significant};
+use units::{UnitSystem, significant};
 
 use crate::Setup;
 use crate::away::Away;
-use crate::cells::{CONTACT_HEIGHT, ContactFrom, SavantCells, measure};
+use crate::cells::{CONTACT_HEIGHT, ContactFrom, SavantCells, measure, unit_unknown};
 use crate::columns::{Column, LAUNCH_KEYS, SavantColumn, Unit};
 use crate::header::{Header, launch_key};
 use crate::kinds::Called;
@@ -489,33 +489,4 @@ fn too_fast(name: &str, value: &str, si: f64, unit_mapped: bool) -> String {
         cut(value, 80),
         si / 0.44704
     )
-}
-
-/// Why a Statcast cell with a unit after its number (`45kph`, `28deg` in
-/// `launch_speed`) cannot be read: the unit named, and those accepted.
-fn unit_unknown(name: &str, value: &str, (quantity, unit): (Quantity, Unit)) -> Option<String> {
-    let why = match units::read_typed(value, quantity, quantity.si_symbol()) {
-        Err(units::TypedError::UnknownUnit { unit }) => {
-            format!("unknown unit `{}`", cut(&unit, 20))
-        }
-        Err(units::TypedError::OtherQuantity {
-            unit,
-            quantity: other,
-        }) => {
-            format!(
-                "`{}` measures {}, not {}",
-                cut(&unit, 20),
-                other.noun(),
-                quantity.noun()
-            )
-        }
-        _ => return None,
-    };
-    Some(format!(
-        "{} = {:?}: {why}; it takes {} (a bare number is {})",
-        escape_cut(name, 80),
-        cut(value, 80),
-        units::accepted(quantity, quantity.si_symbol()),
-        unit.name()
-    ))
 }
