@@ -29,9 +29,6 @@ pub(crate) struct SwingCells {
     pub spin_axis: Option<f64>,
     /// `release_speed` (mph).
     pub release_speed: Option<f64>,
-    /// A cell outside its column's range (named on its own line): the row
-    /// flies, its swing is not solved.
-    pub refused: bool,
 }
 
 /// Why a row with a launch has no swing to solve.
@@ -82,9 +79,6 @@ impl SwingCells {
         spray: Option<f64>,
         side: Option<Side>,
     ) -> Result<TrackedSwing, &'static str> {
-        if self.refused {
-            return Err(REFUSED_CELL);
-        }
         let bat_speed = self.bat_speed.ok_or(NO_BAT_SPEED)?;
         let all = |v: [Option<f64>; 3]| Some([v[0]?, v[1]?, v[2]?]);
         let fit = PitchFit {

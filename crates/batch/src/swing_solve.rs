@@ -4,7 +4,7 @@
 
 use crate::row::Job;
 use crate::setup::Priors;
-use crate::swing::RowSwing;
+use crate::swing::{REFUSED_CELL, RowSwing};
 use analysis::bat_tracking::{self, TrackedSwing, savant_squared_up};
 use analysis::precision::Purpose;
 use analysis::savant::{DirectionFrom, RowLaunch, Spray};
@@ -23,6 +23,10 @@ impl Job {
     /// The row's tracked swing, with its measured launch, spray and side;
     /// or why it has none.
     pub(crate) fn tracked_swing(&self) -> Result<TrackedSwing, &'static str> {
+        // A tracking cell outside its range (named as read): no swing.
+        if self.swing_note.is_some() {
+            return Err(REFUSED_CELL);
+        }
         let launch = self.scene.launch;
         let measured = (
             launch.speed.unwrap_or(f64::NAN),
