@@ -31,6 +31,14 @@ impl Unit {
         }
     }
 
+    /// `si` in this unit: [`Unit::to_si`]'s inverse.
+    pub fn from_si(self, si: f64) -> f64 {
+        match self.quantity() {
+            None => si,
+            Some(quantity) => quantity.unit(UnitSystem::Imperial, "").show(si),
+        }
+    }
+
     pub fn quantity(self) -> Option<Quantity> {
         match self {
             Unit::Si => None,

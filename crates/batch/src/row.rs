@@ -287,9 +287,8 @@ fn read_cells(
             // launch, the swing is not solved, and the cell is named.
             Column::Swing(column, range) => {
                 if let Err(why) = tracked.read((column, range), value)
-                    && !tracked.refused
+                    && swing_note.is_none()
                 {
-                    tracked.refused = true;
                     *swing_note = Some(why);
                 }
                 Ok(())
@@ -313,9 +312,12 @@ fn read_cells(
                 };
                 // A measured exit speed past any batted ball's is a column in
                 // another unit (a metric Trackman file's km/h), not a ball.
-                let si = si.and_then(|si| match index == 0 && si > FASTEST_BATTED_BALL {
-                    true => Err(too_fast(name, value, si, header.cell_units[i].is_some())),
-                    false => Ok(si),
+                let si = si.and_then(|si| {
+                    let mph = Unit::Mph.from_si(si);
+                    match index == 0 && mph > FASTEST_BATTED_BALL_MPH {
+                        true => Err(too_fast(name, value, mph, header.cell_units[i].is_some())),
+                        false => Ok(si),
+                    }
                 });
                 si.map(|si| {
                     converted = true;
@@ -468,14 +470,15 @@ fn read_cells(
     Ok(())
 }
 
-/// The fastest a measured batted ball may be (m/s): 130 mph, with room
-/// above Statcast's fastest since 2015, all under 123 mph (Oneil Cruz's
-/// and Giancarlo Stanton's; MLB.com's exit velocity leaderboards).
-const FASTEST_BATTED_BALL: f64 = 130.0 * 0.44704;
+/// The fastest a measured batted ball may be (mph), with room above
+/// Statcast's fastest since 2015, all under 123 mph (Oneil Cruz's and
+/// Giancarlo Stanton's; MLB.com's exit velocity leaderboards).
+const FASTEST_BATTED_BALL_MPH: f64 = 130.0;
 
-/// Why an exit speed past [`FASTEST_BATTED_BALL`] is refused, with the
-/// mapping that reads a column of km/h where the column's unit was taken.
-fn too_fast(name: &str, value: &str, si: f64, unit_mapped: bool) -> String {
+/// Why an exit speed of `mph`, past [`FASTEST_BATTED_BALL_MPH`], is
+/// refused, with the mapping that reads a column of km/h where the
+/// column's unit was taken.
+fn too_fast(name: &str, value: &str, mph: f64, unit_mapped: bool) -> String {
     let hint = match unit_mapped {
         true => String::new(),
         false => format!(
@@ -484,9 +487,9 @@ fn too_fast(name: &str, value: &str, si: f64, unit_mapped: bool) -> String {
         ),
     };
     format!(
-        "{} = {:?}: {:.1} mph, faster than any batted ball measured (130 mph at most){hint}",
+        "{} = {:?}: {mph:.1} mph, faster than any batted ball measured \
+         ({FASTEST_BATTED_BALL_MPH} mph at most){hint}",
         escape_cut(name, 80),
         cut(value, 80),
-        si / 0.44704
     )
 }
