@@ -4,6 +4,17 @@
 
 use super::pipeline::{run, sample, summary_of};
 
+/// `homerun fly --batch -` with `args` after, `stdin` piped in: (stdout,
+/// stderr, status).
+fn fly(args: &[&str], stdin: &str) -> (String, String, i32) {
+    let all: Vec<&str> = ["fly", "--batch", "-"]
+        .iter()
+        .chain(args)
+        .copied()
+        .collect();
+    run(&all, stdin.as_bytes())
+}
+
 /// A spray angle kept as its own column (hc_x and hc_y dropped, or a
 /// tracker's Bearing) and no direction read: every row would fly to centre
 /// field, so the file is refused with the mappings to choose from. Mapped
@@ -46,7 +57,7 @@ fn a_spray_angle_no_column_reads_is_refused_until_mapped() {
         spray += &format!("{launch},{degrees}\n");
         kept += &format!("{launch},{hc_x},{hc_y}\n");
     }
-    let (out, err, status) = run(&["fly", "--batch", "-"], spray.as_bytes());
+    let (out, err, status) = fly(&[], &spray);
     assert_eq!(status, 2, "{err}");
     assert!(out.is_empty());
     assert!(
@@ -56,17 +67,10 @@ fn a_spray_angle_no_column_reads_is_refused_until_mapped() {
         ),
         "{err}"
     );
-    let args = [
-        "fly",
-        "--batch",
-        "-",
-        "--json",
-        "--column",
-        "landing_bearing=spray_angle",
-    ];
-    let (mapped, err, status) = run(&args, spray.as_bytes());
+    let args = ["--json", "--column", "landing_bearing=spray_angle"];
+    let (mapped, err, status) = fly(&args, &spray);
     assert_eq!(status, 0, "{err}");
-    let (from_coordinates, err, status) = run(&["fly", "--batch", "-", "--json"], kept.as_bytes());
+    let (from_coordinates, err, status) = fly(&["--json"], &kept);
     assert_eq!(status, 0, "{err}");
     let direction = |line: &str| {
         let row: serde_json::Value = serde_json::from_str(line).unwrap();
@@ -79,19 +83,19 @@ fn a_spray_angle_no_column_reads_is_refused_until_mapped() {
     }
     assert_eq!(mapped.lines().count(), 6);
     // A direction given for every row answers it too.
-    let args = ["fly", "--batch", "-", "--set", "launch.direction=0"];
-    let (_, err, status) = run(&args, spray.as_bytes());
+    let args = ["--set", "launch.direction=0"];
+    let (_, err, status) = fly(&args, &spray);
     assert_eq!(status, 0, "{err}");
     // Both hit coordinates and a landing bearing: one too many.
     let both = "launch_speed,launch_angle,hc_x,hc_y,landing_bearing\n100,25,100,80,10\n";
-    let (_, err, status) = run(&["fly", "--batch", "-"], both.as_bytes());
+    let (_, err, status) = fly(&[], both);
     assert_eq!(status, 2, "{err}");
     assert!(
         err.contains("columns hc_x/hc_y and landing_bearing both give"),
         "{err}"
     );
     let far = "launch_speed,launch_angle,landing_bearing\n100,25,200\n";
-    let (_, err, status) = run(&["fly", "--batch", "-"], far.as_bytes());
+    let (_, err, status) = fly(&[], far);
     assert_eq!(status, 1, "{err}");
     assert!(
         err.contains(r#"landing_bearing = "200": expected -180 to 180° (+ toward right field)"#),
@@ -108,7 +112,7 @@ fn a_spray_angle_no_column_reads_is_refused_until_mapped() {
 #[test]
 fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
     let text = "launch_speed,launch_angle,temperature,wind_speed\n105,28,75F,0\n";
-    let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    let (out, err, status) = fly(&[], text);
     assert_eq!(status, 2, "{err}");
     assert!(out.is_empty());
     assert!(
@@ -121,10 +125,7 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
         "{err}"
     );
     let temperature = "environment.temperature=temperature:C";
-    let (_, err, status) = run(
-        &["fly", "--batch", "-", "--column", temperature],
-        text.as_bytes(),
-    );
+    let (_, err, status) = fly(&["--column", temperature], text);
     assert_eq!(status, 2, "{err}");
     assert!(
         err.contains(
@@ -139,9 +140,6 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
     let bare = text.replace("75F", "75");
     let range = |input: &str, temperature: &str, wind: &str| {
         let args = [
-            "fly",
-            "--batch",
-            "-",
             "--json",
             "--column",
             temperature,
@@ -150,7 +148,7 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
             "--set",
             "environment.wind_direction=0",
         ];
-        let (out, err, status) = run(&args, input.as_bytes());
+        let (out, err, status) = fly(&args, input);
         assert_eq!(status, 0, "{err}");
         let row: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
         row["flight"]["range"].as_f64().unwrap()
@@ -179,10 +177,7 @@ fn a_weather_column_no_column_reads_is_refused_until_mapped_or_ignored() {
             "a unit is given only to a key's column (`homerun keys`) or to a measurement's",
         ),
     ] {
-        let (_, err, status) = run(
-            &["fly", "--batch", "-", "--column", mapping],
-            bare.as_bytes(),
-        );
+        let (_, err, status) = fly(&["--column", mapping], &bare);
         assert_eq!(status, 2, "{err}");
         assert!(err.contains(needle), "{err}");
     }
@@ -208,21 +203,18 @@ fn a_key_column_mapped_without_its_unit_is_refused() {
             "UNIT with UNIT one of C, °C, F, °F, K (a bare number is read in °C",
         ),
     ] {
-        let mut args = vec!["fly", "--batch", "-", "--column", mapping];
+        let mut args = vec!["--column", mapping];
         args.extend(["--column", "launch.angle=LA:deg", "--column"]);
         args.push(match mapping.starts_with("launch") {
             true => "ignore=temp",
             false => "launch.speed=EV:mph",
         });
-        let (out, err, status) = run(&args, text.as_bytes());
+        let (out, err, status) = fly(&args, text);
         assert_eq!(status, 2, "{err}");
         assert!(out.is_empty() && err.contains(needle), "{err}");
     }
     let flown = |input: &str, speed: &str| {
         let args = [
-            "fly",
-            "--batch",
-            "-",
             "--json",
             "--column",
             speed,
@@ -231,7 +223,7 @@ fn a_key_column_mapped_without_its_unit_is_refused() {
             "--column",
             "ignore=temp",
         ];
-        let (out, err, status) = run(&args, input.as_bytes());
+        let (out, err, status) = fly(&args, input);
         assert_eq!(status, 0, "{err}");
         let row: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
         (
@@ -260,10 +252,10 @@ fn a_mapped_wind_without_its_direction_is_refused() {
     let text = "launch_speed,launch_angle,wind_speed,wind_toward\n100,28,10,90\n";
     let wind = ["--column", "environment.wind=wind_speed:mph"];
     let run_with = |extra: &[&str]| {
-        let mut args = vec!["fly", "--batch", "-", "--json"];
+        let mut args = vec!["--json"];
         args.extend(wind);
         args.extend(extra);
-        run(&args, text.as_bytes())
+        fly(&args, text)
     };
     let (out, err, status) = run_with(&["--column", "ignore=wind_toward"]);
     assert_eq!(status, 2, "{err}");
@@ -302,7 +294,7 @@ fn a_mapped_wind_without_its_direction_is_refused() {
 #[test]
 fn a_lookalike_column_is_never_suggested_or_read_as_the_launch() {
     let text = "EV,bat_speed,launch_speed_angle,attack_angle,exit_angle,stand\n100,70,6,10,28,R\n";
-    let (out, err, status) = run(&["fly", "--batch", "-"], text.as_bytes());
+    let (out, err, status) = fly(&[], text);
     assert_eq!(status, 2, "{err}");
     assert!(out.is_empty());
     assert!(
@@ -323,21 +315,18 @@ fn a_lookalike_column_is_never_suggested_or_read_as_the_launch() {
             "`attack_angle` is the bat's path at contact (bat tracking), not launch_angle",
         ),
     ] {
-        let args = ["fly", "--batch", "-", "--column", mapping];
-        let (out, err, status) = run(&args, text.as_bytes());
+        let args = ["--column", mapping];
+        let (out, err, status) = fly(&args, text);
         assert_eq!(status, 2, "{err}");
         assert!(out.is_empty() && err.contains(what), "{err}");
     }
     let args = [
-        "fly",
-        "--batch",
-        "-",
         "--column",
         "launch_speed=EV",
         "--column",
         "launch_angle=exit_angle",
     ];
-    let (out, err, status) = run(&args, text.as_bytes());
+    let (out, err, status) = fly(&args, text);
     assert_eq!(status, 0, "{err}");
     assert_eq!(out.lines().count(), 2);
 }
@@ -350,9 +339,9 @@ fn a_measurement_mapped_with_its_unit_is_read_in_it() {
     let statcast = "launch_speed,launch_angle,hit_distance_sc\n100,28,393.7\n";
     let metric = "EV,LA,dist\n160.9344,28,120\n";
     let flown = |text: &str, args: &[&str]| {
-        let mut all = vec!["fly", "--batch", "-", "--json"];
+        let mut all = vec!["--json"];
         all.extend(args);
-        let (out, err, status) = run(&all, text.as_bytes());
+        let (out, err, status) = fly(&all, text);
         assert_eq!(status, 0, "{err}");
         serde_json::from_str::<serde_json::Value>(out.trim()).unwrap()
     };
@@ -380,7 +369,7 @@ fn a_measurement_mapped_with_its_unit_is_read_in_it() {
 #[test]
 fn an_exit_speed_past_any_batted_balls_names_the_km_h_mapping() {
     let metric = "ExitSpeed,Angle\n158.3,28\n120,20\n";
-    let (out, err, status) = run(&["fly", "--batch", "-"], metric.as_bytes());
+    let (out, err, status) = fly(&[], metric);
     assert_eq!(status, 1, "{err}");
     assert_eq!(out.lines().count(), 2, "{out}");
     assert!(
@@ -390,14 +379,8 @@ fn an_exit_speed_past_any_batted_balls_names_the_km_h_mapping() {
         ),
         "{err}"
     );
-    let args = [
-        "fly",
-        "--batch",
-        "-",
-        "--column",
-        "launch_speed=ExitSpeed:km/h",
-    ];
-    let (out, err, status) = run(&args, metric.as_bytes());
+    let args = ["--column", "launch_speed=ExitSpeed:km/h"];
+    let (out, err, status) = fly(&args, metric);
     assert_eq!(status, 0, "{err}");
     assert_eq!(out.lines().count(), 3, "{out}");
 }
@@ -411,7 +394,7 @@ fn distances_in_metres_read_as_feet_are_named() {
     let text = std::fs::read_to_string("tests/data/trackman_2024_measured_spin.csv").unwrap();
     let metric = with_column(&text, "Distance", |feet| feet * 0.3048);
     // The rows are written; the exit status says they are suspect.
-    let (out, err, status) = run(&["fly", "--batch", "-"], metric.as_bytes());
+    let (out, err, status) = fly(&[], &metric);
     assert_eq!((status, out.lines().count()), (1, 67), "{err}");
     assert!(
         err.contains("Distance is under half the flight's distance on")
@@ -426,17 +409,11 @@ fn distances_in_metres_read_as_feet_are_named() {
         of >= Some(10) && short.zip(of).is_some_and(|(s, o)| 2 * s > o),
         "{summary}"
     );
-    let args = [
-        "fly",
-        "--batch",
-        "-",
-        "--column",
-        "hit_distance_sc=Distance:m",
-    ];
-    let (_, err, status) = run(&args, metric.as_bytes());
+    let args = ["--column", "hit_distance_sc=Distance:m"];
+    let (_, err, status) = fly(&args, &metric);
     assert_eq!(status, 0, "{err}");
     assert!(!err.contains("under half"), "{err}");
-    let (_, err, _) = run(&["fly", "--batch", "-"], text.as_bytes());
+    let (_, err, _) = fly(&[], &text);
     assert!(!err.contains("under half"), "{err}");
 }
 
@@ -457,17 +434,11 @@ fn launch_angles_in_radians_read_as_degrees_are_named() {
         "{err}"
     );
     assert_eq!(summary["launch_angles_within_1_6_deg"], true);
-    let args = [
-        "fly",
-        "--batch",
-        "-",
-        "--column",
-        "launch_angle=launch_angle:rad",
-    ];
-    let (mapped, err, status) = run(&args, radians.as_bytes());
+    let args = ["--column", "launch_angle=launch_angle:rad"];
+    let (mapped, err, status) = fly(&args, &radians);
     assert_eq!(status, 0, "{err}");
     assert!(!err.contains("radians"), "{err}");
-    let (given, err, _) = run(&["fly", "--batch", "-"], text.as_bytes());
+    let (given, err, _) = fly(&[], &text);
     assert!(!err.contains("radians"), "{err}");
     // The same launches, but for the last bits of a degree's conversion.
     let angle = |out: &str| -> Vec<String> {
