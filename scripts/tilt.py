@@ -15,6 +15,8 @@ DATA_DIR (default ../shared/data) holds the files of its README:
   - braves-2018-04-batted-balls-hang-time.csv (danhogan/batted-ball @ e5ffdc8):
     2018, Trackman's measured launch direction, hang time and spin rate;
   - statcast-2024-04-balls-in-play.csv (teajay/baseball @ 8ddb6bc): April 2024;
+  - statcast-2025-bat-tracking-three-hitters.csv (Matart930/Rolling-xwOBA-Dashboard
+    @ f055c23): 2025, the balls in play of three hitters over a whole season;
   - trackman-2024-25-potters-batted-balls.csv (carson3m/TrackmanAnalyticsProgram
     @ cd0579a) and yakkertech-2025-kcl-batted-balls.csv
     (NoahLippman/Kernelytics-Projects @ 65df256): measured spin axes.
@@ -178,6 +180,15 @@ def season_2024(data):
                        usecols=cols, low_memory=False)
 
 
+def season_2025(data):
+    """Three hitters' 2025 (Altuve, Springer, Schwarber; March to November):
+    a second Hawk-Eye season, read as 2024's."""
+    cols = ["launch_speed", "launch_angle", "hit_distance_sc", "hc_x", "hc_y", "stand",
+            "home_team", "plate_z", "events", "bb_type"]
+    return pd.read_csv(os.path.join(data, "statcast-2025-bat-tracking-three-hitters.csv"),
+                       usecols=cols, low_memory=False)
+
+
 def season_2019():
     return pd.read_csv("tests/data/savant_home_runs.csv")
 
@@ -227,6 +238,7 @@ def main(data):
             (season_2018(data), ["measured_spin", "PLAY_OUTCOME", "HANG_TIME"]),
         "2019 (home runs, the committed sample)": (season_2019(), ["events"]),
         "2024 (March 28 – April 30)": (season_2024(data), ["events", "bb_type"]),
+        "2025 (three hitters, March 27 – November 1)": (season_2025(data), ["events", "bb_type"]),
     }
     # The 2018 set's measured spin against the estimate, by band: the
     # factor that scales an estimate to the measured size (an independent

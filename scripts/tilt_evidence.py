@@ -298,9 +298,12 @@ def angle_sensitivity(data, out):
     out.append("**8. Half a degree of launch angle** (each ball flown at its measured angle + δ, "
                "binned by the measured angle; model − measured, ft):\n")
     out.append(T.HEADER)
-    for name, frame, column in [("2018", T.season_2018(data), "LAUNCH_ANGLE"),
-                                ("2024", season_2024(data), "launch_angle")]:
-        for delta in (0.0, -0.5, -1.0):
+    for name, frame, column, deltas in [
+            ("2018", T.season_2018(data), "LAUNCH_ANGLE", (0.0, -0.5, -1.0)),
+            ("2024", season_2024(data), "launch_angle", (0.0, -0.5, -1.0)),
+            ("2025 (three hitters)", T.season_2025(data).dropna(subset=["launch_speed"])
+             .reset_index(drop=True), "launch_angle", (0.0, -0.5, -1.0, -1.5))]:
+        for delta in deltas:
             g = frame.copy()
             g[column] = g[column] + delta
             rows = T.fly(g, keep=["HANG_TIME"] if "HANG_TIME" in g else [])
