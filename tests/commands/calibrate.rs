@@ -340,3 +340,49 @@ fn calibrating_with_the_swing_s_spin_fits_the_flights_fly_gives() {
         calibrated["fit"]["before"]["median"]
     );
 }
+
+/// tests/data/savant_2025_spin_past_bound.csv: line 602 of
+/// statcast-2025-bat-tracking-three-hitters.csv (Schwarber, 2025-05-14, an
+/// infield-fly popup at 72°). Its swing's impact spins the ball at 1006.6
+/// rad/s, past the 1000 rad/s that a spin given as input may have; the
+/// impact's spin is an output of the validated swing, so `fly --batch
+/// --spin swing` flies it, and `calibrate --spin swing` fits it as one of
+/// those flights (it failed the row, exit 1, naming `launch.spin`).
+#[test]
+fn a_swings_spin_past_an_inputs_bound_is_fitted_as_it_is_flown() {
+    let dir = tempfile::tempdir().unwrap();
+    let popup = "tests/data/savant_2025_spin_past_bound.csv";
+    let (status, out, err) = homerun(
+        dir.path(),
+        &["fly", "--batch", popup, "--spin", "swing", "--json"],
+    );
+    assert_eq!(status, Some(0), "{err}");
+    let row: Value = serde_json::from_str(out.trim()).unwrap();
+    let spin = row["launch"]["spin"].as_f64().unwrap();
+    assert!((spin - 1006.64).abs() < 0.01, "{spin}");
+    assert_eq!(row["spin_estimated"], false);
+    // The popup among the every-20th sample: one more row measured.
+    let sample = std::fs::read_to_string("tests/data/savant_2025_every_20th.csv").unwrap();
+    let extra = std::fs::read_to_string(popup).unwrap();
+    let both = dir.path().join("both.csv");
+    let row_line = extra.lines().nth(1).unwrap();
+    std::fs::write(&both, format!("{}{row_line}\n", sample)).unwrap();
+    let fit = |file: &str| {
+        let (status, out, err) = homerun(
+            dir.path(),
+            &["calibrate", file, "--spin", "swing", "--json"],
+        );
+        assert_eq!(status, Some(0), "{err}");
+        assert!(!err.contains("launch.spin"), "{err}");
+        serde_json::from_str::<Value>(&out).unwrap()
+    };
+    let alone = fit("tests/data/savant_2025_every_20th.csv");
+    let with = fit(both.to_str().unwrap());
+    let count = |v: &Value, key: &str| v[key].as_u64().unwrap();
+    assert_eq!(count(&with, "rows"), count(&alone, "rows") + 1);
+    assert_eq!(count(&with, "measured"), count(&alone, "measured") + 1);
+    assert_eq!(
+        count(&with, "spin_from_swing"),
+        count(&alone, "spin_from_swing") + 1
+    );
+}

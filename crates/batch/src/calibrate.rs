@@ -12,6 +12,7 @@ use analysis::precision::Purpose;
 use analysis::savant;
 
 use crate::columns::SavantColumn;
+use crate::flights::check_launch;
 use crate::header::header_of;
 use crate::pieces::{Outcome, Piece, Stage, stream};
 use crate::read::Records;
@@ -196,8 +197,9 @@ pub fn measured(
                 made.counts.unlanded += 1;
                 continue;
             }
-            if let Err(e) = launched.scene.validate() {
-                piece.failed.push((job.line, e.to_string()));
+            // Checked as `fly --batch` checks it before its flight.
+            if let Err(why) = check_launch(job, &launched.scene) {
+                piece.failed.push((job.line, why));
                 made.late_failed += 1;
                 continue;
             }

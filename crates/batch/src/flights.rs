@@ -281,11 +281,28 @@ fn ready<'f>(
     launched: savant::Launched,
     own: &'f park::Fence,
 ) -> Result<Ready<'f>, String> {
-    // The row was validated whole when it was read; only its launch moved,
-    // if it did (a spin estimated, a direction solved).
-    let moved = launched.scene.launch != job.scene.launch;
+    check_launch(job, &launched.scene)?;
+    let (flight, launch, _) = launch::scene_start(&launched.scene);
+    Ok(Ready {
+        scene: launched.scene,
+        flight,
+        launch,
+        flights: launched.flights,
+        direction_from: job.direction_from(launched.direction_from),
+        own,
+    })
+}
+
+/// A row's launch as [`savant::launch_many`] completed it, checked before
+/// it is flown or fitted. The row was validated whole when it was read, so
+/// only a launch that moved since (a spin estimated, a direction solved) is
+/// checked again; a swing's impact, solved before, is an output of that
+/// validated swing, not an input held to an input's bounds (a popup's spin
+/// can pass 1000 rad/s).
+pub(crate) fn check_launch(job: &Job, launched: &Scene) -> Result<(), String> {
+    let moved = launched.launch != job.scene.launch;
     let checked = if moved {
-        launched.scene.validate_changed_launch()
+        launched.validate_changed_launch()
     } else {
         Ok(())
     };
@@ -295,14 +312,5 @@ fn ready<'f>(
         } else {
             e.to_string()
         }
-    })?;
-    let (flight, launch, _) = launch::scene_start(&launched.scene);
-    Ok(Ready {
-        scene: launched.scene,
-        flight,
-        launch,
-        flights: launched.flights,
-        direction_from: job.direction_from(launched.direction_from),
-        own,
     })
 }
