@@ -13,7 +13,10 @@ flown). A research script (pandas, numpy; never run by the tests).
     cargo build --release
     /tmp/venv/bin/python scripts/attack_angles.py [FILE] > table.md
 
-FILE defaults to ../shared/data/statcast-2025-bat-tracking-three-hitters.csv.
+FILE defaults to ../shared/data/statcast-2025-bat-tracking-three-hitters.csv;
+a second file (default ../shared/data/statcast-2024-04-balls-in-play.csv, a
+season without measured swings) is solved the 2024 way beside it, at the
+prior's ψ and at the measured swings' steeper ψ given to every row.
 """
 import io
 import subprocess
@@ -106,6 +109,48 @@ def main(path):
                   + " | ".join(cells) + f" | {e:.1f} |")
 
 
+def one_at_a_time(path):
+    """Which measurement moves the line drives: one column dropped at a
+    time (the rest measured), and the prior with ψ = 14° given."""
+    data = pd.read_csv(path, low_memory=False)
+    data = data[data.launch_speed.notna()].reset_index(drop=True)
+    line_drive = (data.launch_angle >= 10) & (data.launch_angle < 20)
+    print("\n10–20°, one measurement dropped at a time (medians of each run's solved rows):\n")
+    print("| swing | backspin (rpm) | carry (ft) |\n|---|---|---|")
+    for label, drop, extra in [("all measured", [], []),
+                               ("without attack_direction", ["attack_direction"], []),
+                               ("without attack_angle", ["attack_angle"], []),
+                               ("without swing_path_tilt", ["swing_path_tilt"], []),
+                               ("none measured (the prior)", MEASURED, []),
+                               ("none measured, ψ = 14° given", MEASURED,
+                                ["--set", "bat.swing_angle=14deg"])]:
+        r = solve(data.drop(columns=drop), extra)
+        ok = r.bat_speed.notna() & r.solved & line_drive
+        print(f"| {label} | {(r['launch.spin'] * RPM)[ok].median():,.0f} | "
+              f"{(r['difference'] / FT)[ok].median():+.1f} |")
+
+
+def beside(path, psi):
+    """The same solve on a season without measured swings: the carry by band
+    at the prior's ψ and at `psi` (°) given to every row."""
+    data = pd.read_csv(path, low_memory=False)
+    data = data[data.launch_speed.notna()].reset_index(drop=True)
+    band = pd.cut(data.launch_angle, EDGES, labels=LABELS, right=False)
+    print(f"\n`{path}`, solved the 2024 way (carry, ft; each run over its own solved rows):\n")
+    print("| ψ | solved | " + " | ".join(LABELS[1:]) + " | median \\|e\\| |\n|---|---|"
+          + "---|" * (len(LABELS) - 1) + "---|")
+    for label, extra in [("the prior, 9.13°", []),
+                         (f"{psi}° for every row", ["--set", f"bat.swing_angle={psi}deg"])]:
+        r = solve(data, extra)
+        tracked = r.bat_speed.notna()
+        ok = tracked & r.solved
+        carry = r["difference"] / FT
+        cells = [f"{carry[ok & (band == b)].median():+.1f}" for b in LABELS[1:]]
+        e = carry[ok & (data.launch_angle >= 10)].abs().median()
+        print(f"| {label} | {100.0 * ok.sum() / tracked.sum():.1f} % | " + " | ".join(cells)
+              + f" | {e:.1f} |")
+
+
 def share(rows, sel):
     n = sel.sum()
     return f"{100.0 * rows.solved[sel].mean():.1f} %" if n else ""
@@ -114,3 +159,7 @@ def share(rows, sel):
 if __name__ == "__main__":
     main(sys.argv[1] if len(sys.argv) > 1
          else "../shared/data/statcast-2025-bat-tracking-three-hitters.csv")
+    one_at_a_time(sys.argv[1] if len(sys.argv) > 1
+                  else "../shared/data/statcast-2025-bat-tracking-three-hitters.csv")
+    beside(sys.argv[2] if len(sys.argv) > 2
+           else "../shared/data/statcast-2024-04-balls-in-play.csv", 14)
