@@ -243,3 +243,46 @@ fn a_2025_popup_past_the_square_bats_reach_is_reached_by_its_lead() {
     assert_eq!(line["impact"]["bat"], "preset");
     assert!(err.contains("swings: solved 1 of 1 tracked"), "{err}");
 }
+
+/// What a measured attack angle changes (docs/bat-tracking.md, *What the
+/// measured swing changes*): the paper's mechanism, row by row. At the same
+/// measured launch, a swing rising more steeply than the prior's 9.13°
+/// lifts the ball with less undercut and so spins it with less backspin; a
+/// flatter one needs more of both. On the committed 2025 sample, every row
+/// launched at 8–30° and solved both ways (its attack angle read, and
+/// ignored) says so.
+#[test]
+fn a_steeper_swing_lifts_a_line_drive_with_less_undercut_and_backspin() {
+    let sample = "tests/data/savant_2025_every_20th.csv";
+    let solve = |more: &[&str]| {
+        let mut args = vec!["hit", "--batch", sample, "--json"];
+        args.extend_from_slice(more);
+        let (code, out, err) = run_homerun(&args, None);
+        assert_eq!(code, Some(0), "{err}");
+        json_lines(&out)
+    };
+    let measured = solve(&[]);
+    let prior = solve(&["--column", "ignore=attack_angle"]);
+    assert_eq!(measured.len(), prior.len());
+    let number = |row: &Value, part: &str, key: &str| row[part][key].as_f64().unwrap();
+    let mut compared = (0, 0);
+    for (m, p) in measured.iter().zip(&prior) {
+        let angle = number(m, "launch", "angle").to_degrees();
+        if m["solved"] != true || p["solved"] != true || !(8.0..30.0).contains(&angle) {
+            continue;
+        }
+        assert_eq!(m["swing"]["from"]["angle"], "measured");
+        assert_eq!(p["swing"]["from"]["angle"], "prior");
+        let steeper = number(m, "swing", "angle") > number(p, "swing", "angle");
+        let less_undercut = number(m, "impact", "undercut") < number(p, "impact", "undercut");
+        let less_backspin = number(m, "launch", "spin") < number(p, "launch", "spin");
+        assert_eq!(less_undercut, steeper, "line {}", m["line"]);
+        assert_eq!(less_backspin, steeper, "line {}", m["line"]);
+        match steeper {
+            true => compared.0 += 1,
+            false => compared.1 += 1,
+        }
+    }
+    // Both ways are in the sample: 8 steeper than the prior, 4 flatter.
+    assert_eq!(compared, (8, 4));
+}
