@@ -60,6 +60,8 @@ pub fn run(
     let options = Purpose::Readout.flight_options();
     let d = |m: f64| shown.value(Quantity::Distance, m, 1);
     let (mut lines, mut fits) = (Vec::new(), Vec::new());
+    // The groups fitted without the lift asked for, by why.
+    let mut without_lift: BTreeMap<&str, Vec<String>> = BTreeMap::new();
     for (group, measured) in &groups {
         let name = escape_cut(if group.is_empty() { "(empty)" } else { group }, 24);
         let fit = match measured.len() {
@@ -102,6 +104,9 @@ pub fn run(
             }
             None => None,
         };
+        if let (true, None, Some(why)) = (lift, fit.lift_scale, fit.why_no_lift) {
+            without_lift.entry(why).or_default().push(name.clone());
+        }
         let lift = fit.lift_scale.map_or(String::new(), |l| {
             format!("  model.lift_scale = {:.4} ± {:.4}", l.value, l.uncertainty)
         });
@@ -151,6 +156,9 @@ pub fn run(
     for line in lines {
         text += &line;
         text.push('\n');
+    }
+    for (why, names) in without_lift {
+        text += &format!("lift not fitted for {}: {why}\n", names.join(", "));
     }
     Ok((text, rows))
 }

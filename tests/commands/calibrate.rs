@@ -386,3 +386,47 @@ fn a_swings_spin_past_an_inputs_bound_is_fitted_as_it_is_flown() {
         count(&alone, "spin_from_swing") + 1
     );
 }
+
+/// tests/data/savant_2025_march.csv: the March rows of
+/// statcast-2025-bat-tracking-three-hitters.csv (31, as they are; 16 in the
+/// air with a distance). Two factors fitted to so few rows followed their
+/// scatter: lift 0.03 ± 0.64, correlated +0.98 with the drag, which `--save`
+/// would have written as a preset's lift. A lift the bands cannot tell
+/// from half or one and a half of the model's (± 0.5 or more) is not
+/// fitted; the drag alone is, and the text says why, grouped or not.
+#[test]
+fn a_lift_the_bands_leave_undetermined_is_not_fitted() {
+    let dir = tempfile::tempdir().unwrap();
+    let march = "tests/data/savant_2025_march.csv";
+    let (status, out, err) = homerun(dir.path(), &["calibrate", march, "--json"]);
+    assert_eq!(status, Some(0), "{err}");
+    let value: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(value["measured"], 16);
+    let fit = &value["fit"];
+    assert_eq!(fit["lift_scale"], Value::Null);
+    assert!(
+        fit["why_no_lift"]
+            .as_str()
+            .unwrap()
+            .contains("undetermined"),
+        "{fit}"
+    );
+    // The drag alone brings the median to zero.
+    let drag = fit["drag_scale"]["value"].as_f64().unwrap();
+    assert!((drag - 1.209).abs() < 0.001, "{drag}");
+    assert!(
+        fit["after"]["median"].as_f64().unwrap().abs() < 0.05,
+        "{fit}"
+    );
+    let (status, out, err) = homerun(dir.path(), &["calibrate", march, "--by", "month"]);
+    assert_eq!(status, Some(0), "{err}");
+    assert!(
+        out.contains("2025-03          16 rows  model.drag_scale = 1.2090"),
+        "{out}"
+    );
+    assert!(!out.contains("model.lift_scale"), "{out}");
+    assert!(
+        out.contains("lift not fitted for 2025-03: the launch-angle bands leave it undetermined"),
+        "{out}"
+    );
+}

@@ -26,6 +26,17 @@ pub const BAND_EDGES: [f64; 6] = [10.0, 20.0, 25.0, 30.0, 35.0, 50.0];
 const FEW_BANDS: &str = "the distances fill fewer than three launch-angle bands that part drag \
      from lift (a hang_time or apex column would fit it)";
 
+/// Why the lift was not fitted where the bands leave it undetermined.
+const UNDETERMINED: &str = "the launch-angle bands leave it undetermined (past ± 0.5: half the \
+     lift as likely as one and a half; more rows, or a hang_time or apex column, would fit it)";
+
+/// The lift factor's uncertainty past which the bands are taken not to
+/// determine it: at one standard deviation they could not tell half the
+/// model's lift from one and a half, and a fit there follows the few rows'
+/// scatter (a month of 16 rows fitted 0.03 ± 0.64), which `--save` would
+/// write as a preset's lift.
+const UNDETERMINED_LIFT: f64 = 0.5;
+
 /// The distance errors (m) in each band, before and after the fit.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Bands {
@@ -160,6 +171,12 @@ pub(super) fn fit(
     if !(det > 0.0 && drag_variance.is_finite() && lift_variance.is_finite()) {
         return Ok(Fit {
             why_no_lift: Some(FEW_BANDS),
+            ..drag_only
+        });
+    }
+    if lift_variance.sqrt() > UNDETERMINED_LIFT {
+        return Ok(Fit {
+            why_no_lift: Some(UNDETERMINED),
             ..drag_only
         });
     }
