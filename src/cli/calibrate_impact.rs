@@ -9,6 +9,7 @@ use crate::analysis::bat_tracking::{self, ImpactFit};
 use crate::cli::UsageError;
 use crate::preset::escape_cut;
 use crate::units::Quantity;
+use batch::calibrate::FEWEST_ROWS;
 use batch::{Setup, Shown};
 
 /// The quantile of q matched.
@@ -26,6 +27,14 @@ pub(super) fn run(
     let (swings, rows, outcome) = read_source(source, save.as_ref(), |input| {
         batch::calibrate::tracked_swings(setup, input, &mut |m| eprintln!("homerun: {m}"))
     })?;
+    // The same minimum as every fit (five swings fitted a bat before).
+    if !swings.is_empty() && swings.len() < FEWEST_ROWS {
+        let message = format!(
+            "{} tracked swings: too few to fit (at least {FEWEST_ROWS})",
+            swings.len()
+        );
+        return Err(failed(source, message));
+    }
     let base = &setup.base.scene;
     let fit = bat_tracking::fit_effective_mass(base, &swings, QUANTILE).ok_or_else(|| {
         let message = "no row has a tracked swing (bat_speed and the pitch's kinematics)";
@@ -93,6 +102,15 @@ fn text(fit: &ImpactFit, saved: Option<&std::path::Path>, shown: Shown) -> Strin
         percent(fit.quantile),
         fit.ceiling_after,
     );
+    // With few rows the quantile by the nearest rank is the top row's.
+    let last = fit.rows.saturating_sub(1);
+    if (fit.quantile * last as f64).round() as usize == last {
+        text += &format!(
+            "(of {} swings the {:.0}th percentile is the most efficient one's: the fit follows that swing)\n",
+            fit.rows,
+            percent(fit.quantile)
+        );
+    }
     text += &format!(
         "by approach speed (V_pitch + V_bat), the data's q at its {:.0}th percentile against the\n\
          model's median ceiling, each in a fifth of the rows:\n\

@@ -430,3 +430,45 @@ fn a_lift_the_bands_leave_undetermined_is_not_fitted() {
         "{out}"
     );
 }
+
+/// `calibrate --impact` needs the minimum every fit needs (it fitted five
+/// swings a bat), and says when its 99th percentile is one swing's: on the
+/// 35 of the committed sample the fit follows the most efficient.
+#[test]
+fn the_bats_fit_needs_every_fits_minimum_and_names_a_one_swing_percentile() {
+    let dir = tempfile::tempdir().unwrap();
+    let sample = std::fs::read_to_string("tests/data/savant_swings.csv").unwrap();
+    let five: String = sample.lines().take(6).map(|l| format!("{l}\n")).collect();
+    let few = dir.path().join("five.csv");
+    std::fs::write(&few, five).unwrap();
+    let (status, out, err) = homerun(
+        dir.path(),
+        &["calibrate", "--impact", few.to_str().unwrap()],
+    );
+    assert_eq!(status, Some(2), "{out}");
+    assert!(
+        err.contains("5 tracked swings: too few to fit (at least 10)"),
+        "{err}"
+    );
+    let (status, out, err) = homerun(
+        dir.path(),
+        &["calibrate", "--impact", "tests/data/savant_swings.csv"],
+    );
+    assert_eq!(status, Some(0), "{err}");
+    assert!(
+        out.contains("(of 35 swings the 99th percentile is the most efficient one's"),
+        "{out}"
+    );
+    // A hundred-odd swings have a percentile of their own.
+    let (status, out, err) = homerun(
+        dir.path(),
+        &[
+            "calibrate",
+            "--impact",
+            "tests/data/savant_2024_held_out_110.csv",
+        ],
+    );
+    assert_eq!(status, Some(0), "{err}");
+    assert!(out.starts_with("118 tracked swings"), "{out}");
+    assert!(!out.contains("most efficient one's"), "{out}");
+}
