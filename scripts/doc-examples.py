@@ -19,7 +19,9 @@ BINARY = "target/release/homerun"
 
 
 def runnable(command):
-    return not any(s in command for s in ("$", "\\", ".csv", ".toml", "--svg"))
+    # A file of the repository's own (tests/data/) runs as written.
+    committed = all(".csv" not in w or w.startswith("tests/data/") for w in command.split())
+    return committed and not any(s in command for s in ("$", "\\", ".toml", "--svg"))
 
 
 def agrees(shown, printed):
