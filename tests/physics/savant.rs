@@ -159,7 +159,7 @@ fn a_savant_export_is_read_as_it_comes() {
         err.contains("spin estimated (Nathan's relation) on 3 of 3 rows"),
         "{err}"
     );
-    assert!(err.contains("1 rows without hit coordinates"), "{err}");
+    assert!(err.contains("1 row without hit coordinates"), "{err}");
     // Parks by home_team, aliases too.
     let parks: Vec<&str> = rows
         .iter()

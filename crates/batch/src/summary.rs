@@ -45,9 +45,10 @@ impl Tally {
         lines.extend(self.home_runs_line());
         if self.failed > 0 {
             lines.push(format!(
-                "{} of {} rows failed and were skipped (exit status 1)",
+                "{} of {} row{} failed and were skipped (exit status 1)",
                 self.failed,
-                self.failed + self.answered
+                self.failed + self.answered,
+                plural(self.failed + self.answered)
             ));
         }
         lines
@@ -67,8 +68,9 @@ impl Tally {
                 _ => format!(" ({size} of them its size alone, about the estimate's axis)"),
             };
             parts.push(format!(
-                "spin measured (hit_spin_rate) on {} of {flown} rows{alone}",
-                whole + size
+                "spin measured (hit_spin_rate) on {} of {flown} row{}{alone}",
+                whole + size,
+                plural(flown)
             ));
         }
         if self.estimated > 0 {
@@ -77,22 +79,25 @@ impl Tally {
                 _ => format!(" ({zero} whose hit_spin_rate of 0 is none measured)"),
             };
             parts.push(format!(
-                "spin estimated (Nathan's relation) on {} of {flown} rows{none}",
-                self.estimated
+                "spin estimated (Nathan's relation) on {} of {flown} row{}{none}",
+                self.estimated,
+                plural(flown)
             ));
         }
         if self.sprayed > 0 {
             parts.push(match setup.spray {
                 Spray::Landing => format!(
-                    "spray taken as the landing bearing on {} rows (launch direction solved, \
+                    "spray taken as the landing bearing on {} row{} (launch direction solved, \
                      {:.1} flights a row)",
                     self.sprayed,
+                    plural(self.sprayed),
                     self.solve_flights as f64 / self.sprayed as f64
                 ),
                 Spray::Launch => {
                     format!(
-                        "spray taken as the launch direction on {} rows",
-                        self.sprayed
+                        "spray taken as the launch direction on {} row{}",
+                        self.sprayed,
+                        plural(self.sprayed)
                     )
                 }
             });
@@ -107,8 +112,9 @@ impl Tally {
         }
         if self.without_spray > 0 {
             parts.push(format!(
-                "{} rows without hit coordinates flown toward the preset's direction",
-                self.without_spray
+                "{} row{} without hit coordinates flown toward the preset's direction",
+                self.without_spray,
+                plural(self.without_spray)
             ));
         }
         if self.at_plate > 0 {
@@ -121,8 +127,9 @@ impl Tally {
         }
         if self.from_plate > 0 {
             parts.push(format!(
-                "flown from the pitch's height at the plate (plate_z) on {} rows",
-                self.from_plate
+                "flown from the pitch's height at the plate (plate_z) on {} row{}",
+                self.from_plate,
+                plural(self.from_plate)
             ));
         }
         if self.plate_unusable > 0 {
@@ -276,9 +283,10 @@ impl Tally {
             let distance = self.distance_shown();
             let _ = write!(
                 line,
-                "; against {distance} ({} rows): median difference {:+.1} {}, median \
+                "; against {distance} ({} row{}): median difference {:+.1} {}, median \
                  |difference| {:.1} {}",
                 self.differences.len(),
+                plural(self.differences.len()),
                 unit.show(self.differences.median()),
                 unit.symbol,
                 unit.show(self.differences.median_abs()),
