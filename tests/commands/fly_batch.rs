@@ -481,3 +481,25 @@ fn a_ball_fouled_back_flies_and_lands_foul() {
     }
     assert_eq!(out.lines().count(), 2);
 }
+
+/// A file with bat tracking flown with Nathan's spin says what reads it:
+/// `--spin swing` (or `hit --batch`) solves each row's swing from
+/// `bat_speed`; with it, the word is not needed.
+#[test]
+fn bat_tracking_left_unread_is_named_with_what_reads_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let sample = "tests/data/savant_swings.csv";
+    let line = "bat_speed (bat tracking) is not read by this run: --spin swing, or hit --batch";
+    let out = homerun(dir.path())
+        .args(["fly", "--batch", sample])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stderr).contains(line));
+    let out = homerun(dir.path())
+        .args(["fly", "--batch", sample, "--spin", "swing"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("bat_speed (bat tracking)"));
+}

@@ -154,6 +154,14 @@ fn announce(header: &Header, setup: &Setup, note: &mut dyn FnMut(&str)) {
             if ignored.len() == 1 { "is" } else { "are" },
             shown.join(", ")
         ));
+        // Bat tracking left unread is worth a word: it is what a swing's
+        // spin is solved from (docs/bat-tracking.md).
+        if !setup.solve_swings && ignored.contains(&"bat_speed") {
+            note(
+                "bat_speed (bat tracking) is not read by this run: --spin swing, or hit --batch, \
+                 solves each row's swing from it",
+            );
+        }
     }
     let swing_columns = header.swing_columns();
     for (index, key) in columns::LAUNCH_KEYS.iter().enumerate() {
