@@ -169,10 +169,7 @@ pub fn run(
 /// and rows left out of the fit are counted, not failed.
 pub(super) fn exit_status((rows, outcome, unsaved): Rows) -> ExitCode {
     if outcome.failed > 0 {
-        note(&format!(
-            "{} of {rows} rows failed and were skipped (exit status 1)",
-            outcome.failed
-        ));
+        note(&batch::rows_failed(outcome.failed, rows));
     }
     if unsaved > 0 {
         note(&format!(

@@ -301,9 +301,7 @@ pub fn render(cli: &Cli, command: &Command) -> Result<String, UsageError> {
         } => {
             let mut preset = scene.resolve(dir, cli.units)?;
             // `--spin nathan`: the spin a batch row without one would take.
-            let gave = |key: &str| {
-                (scene.set.iter()).any(|a| a.split('=').next().map(str::trim) == Some(key))
-            };
+            let gave = |key: &str| batch::assigned_keys(&scene.set).any(|k| k == key);
             let estimated = *spin == Some(args::SpinArg::Nathan);
             if estimated {
                 if gave("launch.spin") {

@@ -3,22 +3,12 @@
 //! rows are named by their line, Statcast's units are converted, and a row
 //! flies from its pitch's height. (The single ball: fly.rs.)
 
-use crate::common;
 use std::f64::consts::TAU;
 use std::path::Path;
 
-use assert_cmd::Command;
 use serde_json::Value;
 
-fn homerun(presets: &Path) -> Command {
-    let mut command = common::assert_command();
-    command.arg("--presets-dir").arg(presets);
-    command
-}
-
-fn relative(a: f64, b: f64) -> f64 {
-    (a - b).abs() / b.abs()
-}
+use crate::fly::{homerun, relative};
 
 /// `fly --batch` on `input` (through stdin), with extra arguments.
 fn batch(dir: &Path, input: &str, args: &[&str]) -> (Option<i32>, String, String) {
@@ -287,54 +277,6 @@ fn an_empty_input_a_file_and_hostile_input() {
 }
 
 #[test]
-fn fly_at_hits_launch_prints_hits_flight() {
-    // The commands, not only the library: `fly` given the launch `hit`
-    // reports for the fastball flies `hit`'s flight.
-    let dir = tempfile::tempdir().unwrap();
-    let run = |args: &[&str]| -> Value {
-        let out = homerun(dir.path()).args(args).output().unwrap();
-        assert!(out.status.success(), "{args:?}");
-        serde_json::from_slice(&out.stdout).unwrap()
-    };
-    let hit = run(&["hit", "--json"]);
-    let launch = |k: &str| format!("{:?}", hit["impact"][k].as_f64().unwrap());
-    let sets = [
-        format!("launch.speed={}", launch("launch_speed")),
-        format!("launch.angle={}", launch("launch_angle")),
-        format!("launch.spin={}", launch("launch_spin")),
-    ];
-    // The paper's models, chosen: a batted ball would fly Nathan's.
-    let mut args = vec![
-        "fly",
-        "--json",
-        "--set",
-        "model.drag=sawicki2003",
-        "--set",
-        "model.lift=sawicki2003",
-    ];
-    for set in &sets {
-        args.extend(["--set", set.as_str()]);
-    }
-    let fly = run(&args);
-    assert_eq!(fly["scene"], "batted_ball", "{fly}");
-    for key in [
-        "range",
-        "flight_time",
-        "apex",
-        "landing_speed",
-        "landing_angle",
-    ] {
-        let (a, b) = (
-            fly["flight"][key].as_f64().unwrap(),
-            hit["flight"][key].as_f64().unwrap(),
-        );
-        assert!(relative(a, b) < 1e-12, "{key}: fly {a} vs hit {b}");
-    }
-    // Table II's fastball: 134.70 m.
-    assert!((fly["flight"]["range"].as_f64().unwrap() - 134.699).abs() < 1e-3);
-}
-
-#[test]
 fn a_header_without_inputs_is_refused_and_long_values_are_read_whole() {
     let dir = tempfile::tempdir().unwrap();
     // Separated by `;`: no column is an input, so every row would have
@@ -376,38 +318,6 @@ fn a_header_without_inputs_is_refused_and_long_values_are_read_whole() {
     assert!(
         err.contains("line 2: 1 field where the header has 2"),
         "{err}"
-    );
-}
-
-#[test]
-fn a_batted_balls_figure_names_its_launch_not_a_pitch_and_bat() {
-    let dir = tempfile::tempdir().unwrap();
-    let second_line = |args: &[&str]| {
-        let out = homerun(dir.path()).args(args).output().unwrap();
-        assert!(out.status.success(), "{args:?}");
-        String::from_utf8(out.stdout)
-            .unwrap()
-            .lines()
-            .nth(1)
-            .unwrap()
-            .to_owned()
-    };
-    // 103 mph, 28°, 2500 rpm: the fly-ball preset's launch in both units.
-    let si = second_line(&["figure", "3", "--preset", "fly-ball"]);
-    assert!(
-        si.starts_with(
-            "preset fly-ball: launch 46.04512 m/s, 0.488692 rad, spin 261.799388 rad/s;"
-        ),
-        "{si}"
-    );
-    let imperial = second_line(&["figure", "4", "--preset", "fly-ball", "--units", "imperial"]);
-    assert!(
-        imperial.starts_with("preset fly-ball: launch 103 mph, 28°, spin 2500 rpm;"),
-        "{imperial}"
-    );
-    assert!(
-        !si.contains("pitch") && !imperial.contains("bat "),
-        "{si}\n{imperial}"
     );
 }
 

@@ -43,9 +43,9 @@ mod words;
 
 pub use analysis::shown::Shown;
 pub use header::{Header, columns_help};
-pub use pieces::Outcome;
+pub use pieces::{Outcome, rows_failed};
 pub use read::{MAX_RECORD_BYTES, open};
-pub use setup::{Setup, quoted};
+pub use setup::{Setup, assigned_keys, quoted};
 pub use summary::band_name;
 pub use tally::Tally;
 

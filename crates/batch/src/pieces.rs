@@ -129,6 +129,15 @@ impl Outcome {
     }
 }
 
+/// "3 of 248 rows failed and were skipped (exit status 1)": the closing
+/// word on `failed` rows of `rows`, every command's.
+pub fn rows_failed(failed: usize, rows: usize) -> String {
+    format!(
+        "{failed} of {rows} row{} failed and were skipped (exit status 1)",
+        crate::words::plural(rows)
+    )
+}
+
 /// Bad rows named one by one; past these only counted.
 const MAX_ROW_MESSAGES: usize = 100;
 

@@ -79,8 +79,7 @@ impl<'a> Setup<'a> {
     /// Notes `--set`'s assignments: their keys, and the air among them.
     pub fn given(&mut self, assignments: &[String]) {
         self.given = GivenWeather::of_assignments(assignments);
-        let keys = assignments.iter().filter_map(|a| a.split_once('='));
-        self.given_keys = keys.map(|(key, _)| key.trim().to_owned()).collect();
+        self.given_keys = assigned_keys(assignments).map(str::to_owned).collect();
     }
 
     /// Whether `--set` gave `key`.
@@ -113,6 +112,13 @@ pub fn quoted(field: &str) -> String {
     } else {
         field.to_owned()
     }
+}
+
+/// The keys `--set`'s `key=value` assignments give, trimmed.
+pub fn assigned_keys(assignments: &[String]) -> impl Iterator<Item = &str> {
+    (assignments.iter())
+        .filter_map(|a| a.split_once('='))
+        .map(|(key, _)| key.trim())
 }
 
 #[cfg(test)]

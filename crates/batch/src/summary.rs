@@ -44,12 +44,8 @@ impl Tally {
         lines.extend(self.radians_line());
         lines.extend(self.home_runs_line());
         if self.failed > 0 {
-            lines.push(format!(
-                "{} of {} row{} failed and were skipped (exit status 1)",
-                self.failed,
-                self.failed + self.answered,
-                plural(self.failed + self.answered)
-            ));
+            let rows = self.failed + self.answered;
+            lines.push(crate::pieces::rows_failed(self.failed, rows));
         }
         lines
     }

@@ -98,7 +98,8 @@ pub struct Tally {
     /// first few such codes with their rows.
     pub(crate) at_unknown_park: usize,
     pub(crate) unknown_parks: Vec<(String, usize)>,
-    /// Rows whose batter's side was given as not known.
+    /// Rows whose spin was estimated without the batter's side (no
+    /// `stand`, or a side not recorded).
     pub(crate) side_unknown: usize,
     /// Balls in the air (20° and up, flown past 60 m) with a measured
     /// distance, and those whose measured distance is under half the
